@@ -1,0 +1,47 @@
+"""The ``soccer-sim`` command line.
+
+Each sub-command lives in its own module under :mod:`experiments.commands`,
+which exposes ``register(subparsers)``: it adds its parser and sets
+``func(args) -> int`` as the parser's default. This module only wires them up,
+so adding a command never means editing another command's code.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from collections.abc import Sequence
+
+#: Modules that each contribute one top-level sub-command.
+COMMAND_MODULES: tuple[str, ...] = (
+    "experiments.commands.play",
+    "experiments.commands.formation",
+    "experiments.commands.bench",
+)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """Return the parser with every sub-command registered."""
+    parser = argparse.ArgumentParser(
+        prog="soccer-sim",
+        description="2D 11v11 soccer simulator for point robots and a lab for multi-robot role assignment.",
+    )
+    subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
+    for module_name in COMMAND_MODULES:
+        importlib.import_module(module_name).register(subparsers)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of the ``soccer-sim`` console script; returns the exit status."""
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    if not hasattr(args, "func"):
+        parser.print_help()
+        return 2
+    return int(args.func(args) or 0)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
