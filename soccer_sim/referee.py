@@ -1,0 +1,518 @@
+"""The referee: play modes, restarts, goals, offside, the goalkeeper's catch and time.
+
+The match loop calls the referee at fixed points of every cycle (see soccer_sim.match):
+``kick_mask`` before kicks are applied, ``on_commands`` after them (with the players whose
+kick was applied and the goalkeepers' catch requests), ``apply_moves`` for kick-off
+placement, and ``after_step`` once the physics has moved everything. The referee reads and
+writes the :class:`~soccer_sim.state.WorldState` arrays directly (absolute frame, metres,
+metres per cycle) and appends to the :class:`~soccer_sim.state.EventLog`.
+
+Cycle bookkeeping: ``state.mode_start`` is the first cycle in which the teams act under the
+current play mode. A mode set while judging cycle ``c`` starts at ``c + 1``; the opening
+kick-off starts at the cycle of :meth:`Referee.start`. The first half is cycles
+``0 .. half_cycles - 1``; half time is called in ``after_step`` of its last cycle, so the
+second half begins at ``cycle == half_cycles``; time over is called in ``after_step`` of
+the match's last cycle.
+
+Decisions where the rules leave room:
+
+* **No last touch.** When the ball goes out and nobody has touched it since the last
+  kick-off, the restart goes to the team defending the half where it left: a kick-in for
+  that team, or a goal kick (never a corner) at a goal line.
+* **Last touch** is the last player that kicked the ball or whose body touched it; when
+  several bodies touch it in one cycle the one nearest the ball afterwards counts.
+* **Set plays** keep the ball on its spot until the mode team kicks it; body touches do not
+  take a set play. Opponents are pushed to ``set_play_clearance`` every cycle (at a kick-off
+  to the larger of that and the centre-circle radius); players pushed by the referee lose
+  their velocity. There is no double-touch rule and opponents need not leave the penalty
+  area at a goal kick.
+* **Kick-off** positions: after a goal, players standing in the opponents' half are
+  reflected across the halfway line; ``apply_moves`` targets are clamped onto it instead.
+* **Catch area.** A point robot has no orientation, so the catch rectangle
+  (``catch_length`` x ``catch_width``) is aligned from the goalkeeper towards the ball: the
+  ball's centre lies on its axis and the catch succeeds when the centre-to-centre distance is
+  at most ``catch_length`` (the width never excludes a ball on the axis). Goalkeeper and
+  ball must both be inside the goalkeeper's own penalty area, the mode must be play on, and
+  ``catch_ban_cycles`` must have passed since the last judged attempt (successful or not).
+  A goalkeeper that kicks in a cycle cannot also catch in it. While holding, the goalkeeper
+  (and the ball) is kept inside its penalty area.
+* **Offside** is judged for kicks in play on, at free kicks, at kick-offs and by a
+  goalkeeper releasing a held ball; kicks from kick-ins, corners and goal kicks, and cycles
+  in which both teams kick, clear all marks instead.
+* **Events.** ``GOAL``: team = scoring team, player = last toucher (of the other team on an
+  own goal, then ``detail`` = 1). ``OUT``: team/player = last toucher, detail 0 for a
+  touchline, 1 for a goal line. ``PASS``: team/player = passer, detail = receiver index.
+  ``TOUCH``: a body touch, recorded once per continuous contact. ``SET_PLAY``: team = mode
+  team (NO_TEAM in play on), detail = the PlayMode value.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from soccer_sim.config import MatchConfig
+from soccer_sim.offside import mark_offside_positions
+from soccer_sim.restarts import (
+    clamp_into_own_half,
+    clamp_into_penalty_area,
+    corner_spot,
+    goal_kick_spot,
+    in_penalty_area,
+    keep_in_own_half,
+    line_crossing,
+    mirror_into_own_half,
+    penalty_area_edge_spot,
+    push_clear_of_spot,
+    push_out_of_circle,
+)
+from soccer_sim.state import (
+    AWAY,
+    HOME,
+    NO_PLAYER,
+    NO_TEAM,
+    SET_PLAYS,
+    EventKind,
+    EventLog,
+    PlayMode,
+    WorldState,
+)
+
+_PLAY_ON = PlayMode.PLAY_ON
+_KICK_OFF = PlayMode.KICK_OFF
+_GOALIE_HOLDS = PlayMode.GOALIE_HOLDS
+_TIME_OVER = PlayMode.TIME_OVER
+_OFFSIDE_MODES = frozenset({PlayMode.PLAY_ON, PlayMode.FREE_KICK, PlayMode.KICK_OFF, PlayMode.GOALIE_HOLDS})
+"""Modes in which a kick can put team-mates offside (not kick-ins, corners, goal kicks)."""
+_NEVER = -(10**9)
+
+
+class Referee:
+    """Applies the rules of the game to a :class:`WorldState`, recording events in ``events``.
+
+    One referee serves one match; it keeps a little memory between cycles (the set-play spot,
+    offside marks, catch bans, the last player on the ball for passes, the ball's previous
+    position to tell where it crossed a line).
+    """
+
+    def __init__(self, config: MatchConfig, events: EventLog) -> None:
+        self.config = config
+        self.events = events
+        f, p, r = config.field, config.physics, config.rules
+        n = config.players_per_team
+        self._n = n
+        self._goal_x = f.half_length + p.ball_radius  # whole ball beyond the goal line
+        self._touch_y = f.half_width + p.ball_radius  # whole ball beyond the touchline
+        self._post_y = f.goal_width / 2.0
+        self._kick_off_radius = max(r.set_play_clearance, f.centre_circle_radius)
+        self._half_end = r.half_cycles
+        self._match_end = config.total_cycles
+        self._goalie_rows = (r.goalie_index, n + r.goalie_index)
+        self._shot_reach = 1.0 / (1.0 - p.ball_decay) if p.ball_decay < 1.0 else math.inf
+        # Cached read-only kick masks (kick_mask returns one of these, never a new array).
+        self._mask_all = self._frozen(np.ones(2 * n, dtype=bool))
+        self._mask_none = self._frozen(np.zeros(2 * n, dtype=bool))
+        team_masks = []
+        for team in (HOME, AWAY):
+            m = np.zeros(2 * n, dtype=bool)
+            m[team * n:(team + 1) * n] = True
+            team_masks.append(self._frozen(m))
+        self._mask_team = tuple(team_masks)
+        self._mask_row = []
+        for row in range(2 * n):
+            m = np.zeros(2 * n, dtype=bool)
+            m[row] = True
+            self._mask_row.append(self._frozen(m))
+        # Memory between cycles.
+        self._spot = (0.0, 0.0)
+        self._prev_ball = (math.nan, math.nan)
+        self._offside = np.zeros(2 * n, dtype=bool)
+        self._offside_pending = False
+        self._last_catch_attempt = [_NEVER, _NEVER]
+        self._pass_from = NO_PLAYER
+        self._touching: tuple[int, ...] = ()
+
+    @staticmethod
+    def _frozen(a: np.ndarray) -> np.ndarray:
+        a.flags.writeable = False
+        return a
+
+    # ------------------------------------------------------------------ public API
+
+    def start(self, state: WorldState) -> None:
+        """Opening kick-off: home kicks off, ball still on the centre spot, every player moved
+        into its own half and the away team out of the centre circle; SET_PLAY event."""
+        self._check_state(state)
+        self._kick_off(state, HOME, first_cycle=state.cycle)
+
+    def kick_mask(self, state: WorldState) -> np.ndarray:
+        """(2n,) bool: which players may kick now. Returns a cached read-only array.
+
+        Play on: everybody. Set plays: the mode team. Goalkeeper holding: the holder only.
+        Time over: nobody.
+        """
+        mode = state.play_mode
+        if mode == _PLAY_ON:
+            return self._mask_all
+        if mode == _GOALIE_HOLDS:
+            holder = state.ball_holder
+            row = holder if holder != NO_PLAYER else self._goalie_rows[state.mode_team]
+            return self._mask_row[row]
+        if mode == _TIME_OVER or state.mode_team == NO_TEAM:
+            return self._mask_none
+        return self._mask_team[state.mode_team]
+
+    def apply_moves(self, state: WorldState, team: int, targets: np.ndarray) -> None:
+        """KICK_OFF only, before the kick: teleport ``team``'s players to ``targets`` ((n, 2),
+        absolute frame), clamped into the team's own half of the field (lines included), the
+        non-kicking team kept out of the centre circle. Moved players stop. Ignored in any other
+        play mode."""
+        if state.play_mode != _KICK_OFF:
+            return
+        n = self._n
+        targets = np.asarray(targets, dtype=float)
+        if targets.shape != (n, 2) or not np.isfinite(targets).all():
+            raise ValueError(f"kick-off move targets for team {team} must be a finite ({n}, 2) array, "
+                             f"got shape {targets.shape}")
+        rows = slice(team * n, (team + 1) * n)
+        block = state.pos[rows]
+        block[:] = targets
+        clamp_into_own_half(block, state.attack_direction(team), self.config.field)
+        if team != state.mode_team:
+            direction = state.attack_direction(team)
+            push_out_of_circle(block, 0.0, 0.0, self._kick_off_radius, (-float(direction), 0.0))
+        state.vel[rows] = 0.0
+
+    def on_commands(self, state: WorldState, kickers: np.ndarray, catch_requests: np.ndarray) -> None:
+        """Judge this cycle's kicks (already applied to ``state.ball_vel``) and catch requests.
+
+        ``kickers``: int array of the player rows whose kick was applied. ``catch_requests``:
+        (2,) bool, whether the home / away goalkeeper asked to catch.
+        """
+        has_kick = len(kickers) > 0
+        if not has_kick and not (catch_requests[0] or catch_requests[1]):
+            return
+        if state.play_mode == _TIME_OVER:
+            return
+        if has_kick:
+            self._judge_kicks(state, np.sort(np.asarray(kickers, dtype=np.int64)))
+        for team in (HOME, AWAY):
+            if catch_requests[team]:
+                self._judge_catch(state, team, kickers)
+
+    def after_step(self, state: WorldState, touchers: np.ndarray) -> None:
+        """Judge the cycle after the physics step: touches, goals, outs, offside, set plays,
+        the goalkeeper's holding time, half time and time over. ``touchers``: int array of the
+        rows whose body touched the ball during the step."""
+        mode = state.play_mode
+        if mode == _TIME_OVER:
+            return
+        if mode == _PLAY_ON:
+            if len(touchers):
+                self._judge_touches(state, touchers)
+            elif self._touching:
+                self._touching = ()
+            bx, by = state.ball.tolist()
+            if bx > self._goal_x or bx < -self._goal_x or by > self._touch_y or by < -self._touch_y:
+                self._ball_left_field(state, bx, by)
+            elif self._offside_pending:
+                self._check_offside_approach(state)
+        elif mode == _GOALIE_HOLDS:
+            self._keep_holder_in_area(state)
+        else:
+            self._keep_set_play(state)
+        cycles_done = state.cycle + 1
+        if cycles_done >= self._match_end:
+            self._time_over(state)
+        elif cycles_done == self._half_end:
+            self._half_time(state)
+        ball = state.ball
+        self._prev_ball = (float(ball[0]), float(ball[1]))
+
+    # ------------------------------------------------------------------ play modes
+
+    def _set_mode(self, state: WorldState, mode: PlayMode, team: int, *, player: int = NO_PLAYER,
+                  first_cycle: int | None = None) -> None:
+        """Switch the play mode and record the SET_PLAY event."""
+        state.play_mode = mode
+        state.mode_team = team if mode != _PLAY_ON else NO_TEAM
+        state.mode_start = state.cycle + 1 if first_cycle is None else first_cycle
+        self.events.add(state.cycle, EventKind.SET_PLAY, state.mode_team, player,
+                        float(state.ball[0]), float(state.ball[1]), int(mode))
+
+    def _restart(self, state: WorldState, mode: PlayMode, team: int, x: float, y: float) -> None:
+        """Begin a set play for ``team`` with the ball still at (x, y)."""
+        self._spot = (x, y)
+        state.ball[0], state.ball[1] = x, y
+        state.ball_vel[:] = 0.0
+        state.ball_holder = NO_PLAYER
+        self._clear_offside()
+        self._pass_from = NO_PLAYER
+        self._touching = ()
+        self._prev_ball = (x, y)
+        self._set_mode(state, mode, team)
+        self._keep_set_play(state)
+
+    def _kick_off(self, state: WorldState, team: int, first_cycle: int | None = None) -> None:
+        """Kick-off for ``team``: ball on the centre spot, both teams in their own halves
+        (players in the wrong half reflected across the halfway line)."""
+        n = self._n
+        for t in (HOME, AWAY):
+            mirror_into_own_half(state.pos[t * n:(t + 1) * n], state.attack_direction(t))
+        state.vel[:] = 0.0
+        state.last_touch = NO_PLAYER
+        self._spot = (0.0, 0.0)
+        state.ball[:] = 0.0
+        state.ball_vel[:] = 0.0
+        state.ball_holder = NO_PLAYER
+        self._clear_offside()
+        self._pass_from = NO_PLAYER
+        self._touching = ()
+        self._prev_ball = (0.0, 0.0)
+        self._set_mode(state, _KICK_OFF, team, first_cycle=first_cycle)
+        self._keep_set_play(state)
+
+    def _keep_set_play(self, state: WorldState) -> None:
+        """Every cycle of a set play: ball still on its spot, opponents cleared, kick-off halves
+        kept; after ``set_play_timeout`` cycles the ball is dropped (play on)."""
+        sx, sy = self._spot
+        state.ball[0], state.ball[1] = sx, sy
+        state.ball_vel[:] = 0.0
+        n = self._n
+        team = state.mode_team
+        other = 1 - team
+        block = state.pos[other * n:(other + 1) * n]
+        if state.play_mode == _KICK_OFF:
+            moved = np.zeros(2 * n, dtype=bool)
+            for t in (HOME, AWAY):
+                moved[t * n:(t + 1) * n] = keep_in_own_half(state.pos[t * n:(t + 1) * n], state.attack_direction(t))
+            direction = state.attack_direction(other)
+            moved[other * n:(other + 1) * n] |= push_out_of_circle(
+                block, sx, sy, self._kick_off_radius, (-float(direction), 0.0))
+            state.vel[moved] = 0.0
+        else:
+            moved = push_clear_of_spot(block, sx, sy, self.config.rules.set_play_clearance, self.config.field)
+            state.vel[other * n:(other + 1) * n][moved] = 0.0
+        if state.cycle - state.mode_start + 1 >= self.config.rules.set_play_timeout:
+            self.events.add(state.cycle, EventKind.DROP_BALL, NO_TEAM, NO_PLAYER, sx, sy, int(state.play_mode))
+            self._set_mode(state, _PLAY_ON, NO_TEAM)
+
+    def _half_time(self, state: WorldState) -> None:
+        """Swap ends: every position and velocity rotated by 180°, away kicks off."""
+        self.events.add(state.cycle, EventKind.HALF_TIME, NO_TEAM, NO_PLAYER,
+                        float(state.ball[0]), float(state.ball[1]), 0)
+        state.half = 1
+        state.home_attacks = -state.home_attacks
+        np.negative(state.pos, out=state.pos)
+        self._last_catch_attempt = [_NEVER, _NEVER]
+        self._kick_off(state, AWAY)
+
+    def _time_over(self, state: WorldState) -> None:
+        self.events.add(state.cycle, EventKind.TIME_OVER, NO_TEAM, NO_PLAYER,
+                        float(state.ball[0]), float(state.ball[1]), 0)
+        state.ball_holder = NO_PLAYER
+        self._clear_offside()
+        self._set_mode(state, _TIME_OVER, NO_TEAM)
+
+    # ------------------------------------------------------------------ ball out, goals
+
+    def _ball_left_field(self, state: WorldState, bx: float, by: float) -> None:
+        """The whole ball is beyond a goal line or touchline: goal, kick-in, corner or goal kick."""
+        px, py = self._prev_ball
+        line, x, y = line_crossing(px, py, bx, by, self._goal_x, self._touch_y)
+        f = self.config.field
+        last = state.last_touch
+        last_team = state.team_of(last) if last != NO_PLAYER else NO_TEAM
+        last_index = last - last_team * self._n if last != NO_PLAYER else NO_PLAYER
+        if line == "goal_line":
+            goal_side = 1 if x > 0 else -1
+            defender = HOME if state.attack_direction(HOME) == -goal_side else AWAY
+            attacker = 1 - defender
+            if abs(y) < self._post_y:
+                self._goal(state, attacker, last_team, last_index, x, y)
+                return
+            self.events.add(state.cycle, EventKind.OUT, last_team, last_index, x, y, 1)
+            if last_team == defender:
+                sx, sy = corner_spot(f, goal_side, y)
+                self._restart(state, PlayMode.CORNER_KICK, attacker, sx, sy)
+            else:
+                sx, sy = goal_kick_spot(f, goal_side, y)
+                self._restart(state, PlayMode.GOAL_KICK, defender, sx, sy)
+            return
+        self.events.add(state.cycle, EventKind.OUT, last_team, last_index, x, y, 0)
+        x = min(max(x, -f.half_length), f.half_length)
+        y = math.copysign(f.half_width, y)
+        if last_team == NO_TEAM:
+            taker = HOME if state.attack_direction(HOME) * x <= 0.0 else AWAY
+        else:
+            taker = 1 - last_team
+        self._restart(state, PlayMode.KICK_IN, taker, x, y)
+
+    def _goal(self, state: WorldState, scorer: int, last_team: int, last_index: int, x: float, y: float) -> None:
+        own_goal = last_team != NO_TEAM and last_team != scorer
+        state.score[scorer] += 1
+        self.events.add(state.cycle, EventKind.GOAL, scorer, last_index, x, y, int(own_goal))
+        self._kick_off(state, 1 - scorer)
+
+    # ------------------------------------------------------------------ kicks, touches, passes
+
+    def _judge_kicks(self, state: WorldState, kickers: np.ndarray) -> None:
+        """KICK (and SHOT / PASS) events, set plays taken, held balls released, offside marks."""
+        n = self._n
+        mode = state.play_mode
+        bx, by = float(state.ball[0]), float(state.ball[1])
+        teams = set()
+        for row in kickers.tolist():
+            team = HOME if row < n else AWAY
+            teams.add(team)
+            if self._offside_pending and self._offside[row]:
+                self.events.add(state.cycle, EventKind.KICK, team, row - team * n, bx, by, 0)
+                self._call_offside(state, row)
+                return
+            self.events.add(state.cycle, EventKind.KICK, team, row - team * n, bx, by, 0)
+            self._received(state, row, bx, by)
+            state.last_touch = row
+        for team in sorted(teams):
+            if self._is_shot(state, team, bx, by):
+                first = next(r for r in kickers.tolist() if (HOME if r < n else AWAY) == team)
+                self.events.add(state.cycle, EventKind.SHOT, team, first - team * n, bx, by, 0)
+        if mode == _GOALIE_HOLDS:
+            state.ball_holder = NO_PLAYER
+        kicked_team = next(iter(teams)) if len(teams) == 1 else NO_TEAM
+        if mode != _PLAY_ON:
+            first = int(kickers[0])
+            self._set_mode(state, _PLAY_ON, NO_TEAM, player=first - state.team_of(first) * n)
+        if self.config.rules.offside and kicked_team != NO_TEAM and mode in _OFFSIDE_MODES:
+            self._offside_pending = mark_offside_positions(
+                state.pos, n, kicked_team, state.attack_direction(kicked_team), bx, kickers, self._offside)
+        else:
+            self._clear_offside()
+
+    def _received(self, state: WorldState, row: int, x: float, y: float) -> None:
+        """Player ``row`` played the ball: a PASS if the previous player on it was a team-mate."""
+        prev = self._pass_from
+        n = self._n
+        if prev != NO_PLAYER and prev != row and (prev < n) == (row < n):
+            team = HOME if row < n else AWAY
+            self.events.add(state.cycle, EventKind.PASS, team, prev - team * n, x, y, row - team * n)
+        self._pass_from = row
+
+    def _judge_touches(self, state: WorldState, touchers: np.ndarray) -> None:
+        """Body touches in play on: offside, TOUCH and PASS events, last touch."""
+        rows = sorted(set(int(r) for r in touchers))
+        n = self._n
+        bx, by = float(state.ball[0]), float(state.ball[1])
+        if self._offside_pending:
+            for row in rows:
+                if self._offside[row]:
+                    self._call_offside(state, row)
+                    return
+            self._clear_offside()
+        previous = self._touching
+        for row in rows:
+            if row not in previous:
+                team = HOME if row < n else AWAY
+                self.events.add(state.cycle, EventKind.TOUCH, team, row - team * n, bx, by, 0)
+            self._received(state, row, bx, by)
+        if len(rows) == 1:
+            state.last_touch = rows[0]
+        else:
+            d = np.hypot(state.pos[rows, 0] - bx, state.pos[rows, 1] - by)
+            state.last_touch = rows[int(np.argmin(d))]
+        self._pass_from = state.last_touch
+        self._touching = tuple(rows)
+
+    def _is_shot(self, state: WorldState, team: int, bx: float, by: float) -> bool:
+        """Whether the ball's unhindered path (decaying geometrically) takes the whole ball over
+        the goal line of ``team``'s opponents between the posts."""
+        direction = state.attack_direction(team)
+        vx, vy = float(state.ball_vel[0]), float(state.ball_vel[1])
+        if direction * vx <= 0.0:
+            return False
+        t = (direction * self._goal_x - bx) / vx  # path parameter, in units of the kick velocity
+        if t < 0.0 or t >= self._shot_reach:
+            return False
+        return abs(by + t * vy) < self._post_y
+
+    # ------------------------------------------------------------------ offside
+
+    def _clear_offside(self) -> None:
+        if self._offside_pending:
+            self._offside[:] = False
+            self._offside_pending = False
+
+    def _check_offside_approach(self, state: WorldState) -> None:
+        """A marked player within ``offside_active_distance`` of the ball is penalised."""
+        rows = np.flatnonzero(self._offside)
+        d = np.hypot(state.pos[rows, 0] - state.ball[0], state.pos[rows, 1] - state.ball[1])
+        near = d <= self.config.rules.offside_active_distance
+        if near.any():
+            self._call_offside(state, int(rows[int(np.argmax(near))]))
+
+    def _call_offside(self, state: WorldState, row: int) -> None:
+        """OFFSIDE event and an indirect free kick for the defenders at the offender's position."""
+        n = self._n
+        team = HOME if row < n else AWAY
+        f = self.config.field
+        x = min(max(float(state.pos[row, 0]), -f.half_length), f.half_length)
+        y = min(max(float(state.pos[row, 1]), -f.half_width), f.half_width)
+        self.events.add(state.cycle, EventKind.OFFSIDE, team, row - team * n, x, y, 0)
+        self._restart(state, PlayMode.FREE_KICK, 1 - team, x, y)
+
+    # ------------------------------------------------------------------ goalkeeper
+
+    def _judge_catch(self, state: WorldState, team: int, kickers: np.ndarray) -> None:
+        """A catch request by ``team``'s goalkeeper (see the module docstring for the area)."""
+        if state.play_mode != _PLAY_ON or state.ball_holder != NO_PLAYER:
+            return
+        rows = self._goalie_rows
+        row = rows[team]
+        if row in kickers:
+            return
+        if state.cycle - self._last_catch_attempt[team] <= self.config.rules.catch_ban_cycles:
+            return
+        self._last_catch_attempt[team] = state.cycle
+        f = self.config.field
+        direction = state.attack_direction(team)
+        gx, gy = float(state.pos[row, 0]), float(state.pos[row, 1])
+        bx, by = float(state.ball[0]), float(state.ball[1])
+        if not (in_penalty_area(f, direction, gx, gy) and in_penalty_area(f, direction, bx, by)):
+            return
+        if math.hypot(bx - gx, by - gy) > self.config.rules.catch_length:
+            return
+        n = self._n
+        self._clear_offside()
+        self._received(state, row, bx, by)
+        state.last_touch = row
+        state.ball_holder = row
+        state.ball_vel[:] = 0.0
+        state.ball[0], state.ball[1] = gx, gy
+        self.events.add(state.cycle, EventKind.CATCH, team, row - team * n, bx, by, 0)
+        self._set_mode(state, _GOALIE_HOLDS, team, player=row - team * n)
+
+    def _keep_holder_in_area(self, state: WorldState) -> None:
+        """Keep the holding goalkeeper (and the ball) in its penalty area; punish holding too long."""
+        row = state.ball_holder
+        team = state.mode_team
+        f = self.config.field
+        direction = state.attack_direction(team)
+        if row == NO_PLAYER:
+            row = self._goalie_rows[team]
+        gx, gy = clamp_into_penalty_area(f, direction, float(state.pos[row, 0]), float(state.pos[row, 1]))
+        state.pos[row, 0], state.pos[row, 1] = gx, gy
+        state.ball[0], state.ball[1] = gx, gy
+        state.ball_vel[:] = 0.0
+        if state.cycle - state.mode_start + 1 >= self.config.rules.goalie_hold_cycles:
+            x, y = penalty_area_edge_spot(f, direction, gx, gy)
+            self._restart(state, PlayMode.FREE_KICK, 1 - team, x, y)
+
+    # ------------------------------------------------------------------ checks
+
+    def _check_state(self, state: WorldState) -> None:
+        n2 = 2 * self._n
+        for name, shape in (("pos", (n2, 2)), ("vel", (n2, 2)), ("ball", (2,)), ("ball_vel", (2,))):
+            arr = getattr(state, name)
+            if getattr(arr, "shape", None) != shape:
+                raise ValueError(f"WorldState.{name} must have shape {shape} for {self._n} players per team, "
+                                 f"got {getattr(arr, 'shape', type(arr).__name__)}")
