@@ -1,0 +1,32 @@
+"""Role assignment: which robot goes to which target.
+
+A pure numpy/scipy library (no soccer): give robot and target positions, or a
+robot x target cost matrix, and a method name; get back the target of every
+robot and the distance it travels.
+
+>>> from agents.assignment import assign
+>>> result = assign([[0, 0], [10, 0]], [[9, 1], [1, 1]], method="mmdr")
+>>> result.target_of.tolist()
+[1, 0]
+
+Methods (see :data:`METHODS`): SCRAM's ``"mmdr"`` (lexicographic bottleneck:
+collision-free and dynamically consistent) and ``"mmd+msd2"`` (smallest
+makespan, then least sum of squared distances: collision-free), from
+"SCRAM: Scalable Collision-avoiding Role Assignment with Minimal-makespan for
+Formational Positioning"; and the baselines ``"msd"``, ``"msd2"``,
+``"bottleneck"``, ``"greedy"``, ``"random"``.
+"""
+
+from .api import MMDR_ALGORITHMS, METHOD_ALIASES, METHODS, assign, assign_costs
+from .errors import AssignmentError
+from .result import AssignmentResult
+
+__all__ = [
+    "METHODS",
+    "METHOD_ALIASES",
+    "MMDR_ALGORITHMS",
+    "AssignmentError",
+    "AssignmentResult",
+    "assign",
+    "assign_costs",
+]

@@ -1,0 +1,198 @@
+"""The front door: :func:`assign` (points) and :func:`assign_costs` (cost matrices).
+
+Both reduce the problem to "rows <= cols" (transposing when robots outnumber
+targets, so that every target gets a robot and the extra robots get ``-1``),
+call one solver, and wrap the answer in an :class:`AssignmentResult`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+
+from .baselines import greedy_assignment, min_sum_assignment, random_assignment
+from .errors import AssignmentError
+from .geometry import dense_distances
+from .graphs import dense_to_graph
+from .lexicographic_reference import bitvector_assignment, brute_force_assignment, subset_dp_assignment
+from .matching import maximum_matching
+from .result import AssignmentResult
+from .scram import bottleneck_assignment, mmd_msd2_assignment, mmdr_assignment
+
+#: Method names accepted by :func:`assign` and :func:`assign_costs`.
+METHODS: tuple[str, ...] = ("mmdr", "mmd+msd2", "msd", "msd2", "bottleneck", "greedy", "random")
+#: Other spellings of method names.
+METHOD_ALIASES: dict[str, str] = {"mmd-msd2": "mmd+msd2"}
+#: Algorithms for ``method="mmdr"``; all give assignments with the same sorted distances.
+MMDR_ALGORITHMS: tuple[str, ...] = ("fast", "bitvector", "dp", "brute")
+#: Geometric problems with at least this many robot-target pairs use the k-d tree path
+#: (for mmdr "fast", mmd+msd2 and bottleneck); smaller ones build the dense matrix.
+SPARSE_MIN_PAIRS = 150 * 150
+
+_MMDR_SOLVERS: dict[str, Callable[[np.ndarray], np.ndarray]] = {
+    "fast": mmdr_assignment,
+    "bitvector": bitvector_assignment,
+    "dp": subset_dp_assignment,
+    "brute": brute_force_assignment,
+}
+
+
+def _method_key(method: str, algorithm: str | None) -> str:
+    """Canonical method name, or ``"mmdr/<algorithm>"``; raises on unknown names."""
+    key = METHOD_ALIASES.get(method, method)
+    if key not in METHODS:
+        raise AssignmentError(
+            f"unknown assignment method {method!r}; valid methods: {', '.join(METHODS)} "
+            f"(alias: {', '.join(METHOD_ALIASES)})"
+        )
+    if key == "mmdr":
+        algorithm = "fast" if algorithm is None else algorithm
+        if algorithm not in _MMDR_SOLVERS:
+            raise AssignmentError(
+                f"unknown mmdr algorithm {algorithm!r}; valid algorithms: {', '.join(MMDR_ALGORITHMS)}"
+            )
+        return "mmdr/" + algorithm
+    if algorithm is not None:
+        raise AssignmentError(f"algorithm= only applies to method 'mmdr', not {method!r}")
+    return key
+
+
+def _solve_dense(key: str, lengths: np.ndarray, squared: np.ndarray, rng: object) -> np.ndarray:
+    """Target index of every row of a dense problem with ``rows <= cols``."""
+    if key == "mmd+msd2":
+        return mmd_msd2_assignment(lengths, squared)
+    if key == "mmdr/fast":
+        return mmdr_assignment(lengths)
+    if key == "msd":
+        return min_sum_assignment(lengths)
+    if key == "msd2":
+        return min_sum_assignment(squared)
+    if key == "bottleneck":
+        return bottleneck_assignment(lengths)[1]
+    if key == "greedy":
+        return greedy_assignment(lengths)
+    if key == "random":
+        if rng is None:
+            raise AssignmentError("method 'random' needs rng= (a numpy Generator or an integer seed)")
+        return random_assignment(lengths, np.random.default_rng(rng))
+    return _MMDR_SOLVERS[key[5:]](lengths)
+
+
+def _check_feasible(lengths: np.ndarray) -> None:
+    """Raise unless the finite entries of ``lengths`` (rows <= cols) admit a complete assignment."""
+    indptr, indices, pair_lengths = dense_to_graph(lengths)
+    n_rows, n_cols = lengths.shape
+    col_of_row = np.full(n_rows, -1, dtype=np.int64)
+    row_of_col = np.full(n_cols, -1, dtype=np.int64)
+    size = maximum_matching(indptr, indices, pair_lengths, np.inf, col_of_row, row_of_col)
+    if size < n_rows:
+        side = "robots" if n_rows == lengths.shape[0] else "targets"
+        raise AssignmentError(
+            f"no feasible complete assignment: the allowed (finite-cost) pairs let at most "
+            f"{size} of the {n_rows} {side} be matched"
+        )
+
+
+def _result(
+    col_of_row: np.ndarray, length_of_row: np.ndarray, transposed: bool, n: int, m: int, method: str
+) -> AssignmentResult:
+    if not transposed:
+        return AssignmentResult(col_of_row, length_of_row, method)
+    target_of = np.full(n, -1, dtype=np.int64)
+    target_of[col_of_row] = np.arange(m)
+    distances = np.full(n, np.nan)
+    distances[col_of_row] = length_of_row
+    return AssignmentResult(target_of, distances, method)
+
+
+def _empty(n: int, method: str) -> AssignmentResult:
+    return AssignmentResult(np.full(n, -1, dtype=np.int64), np.full(n, np.nan), method)
+
+
+def assign(
+    robots: object,
+    targets: object,
+    method: str = "mmdr",
+    *,
+    algorithm: str | None = None,
+    rng: object = None,
+) -> AssignmentResult:
+    """Send robots to targets, travelling in straight lines (Euclidean distance).
+
+    Args:
+        robots: ``(n, d)`` robot positions (any unit, any d >= 1; 2 or 3 typically).
+        targets: ``(m, d)`` target positions in the same frame and unit.
+        method: one of :data:`METHODS` (``"mmd-msd2"`` is an alias of ``"mmd+msd2"``).
+        algorithm: for ``"mmdr"`` only, one of :data:`MMDR_ALGORITHMS` (default ``"fast"``).
+        rng: for ``"random"`` only, a ``numpy.random.Generator`` or an integer seed.
+
+    When ``n <= m`` every robot gets a target; when ``n > m`` every target gets
+    a robot and the other robots get ``-1``. Ties are broken deterministically.
+
+    Raises:
+        AssignmentError: (a ``ValueError``) for non-finite coordinates, arrays
+            that are not 2-D, different dimensions d, unknown method names.
+    """
+    key = _method_key(method, algorithm)
+    name = key[:4] if key.startswith("mmdr") else key
+    r = robots if type(robots) is np.ndarray and robots.dtype == np.float64 and robots.ndim == 2 else None
+    t = targets if type(targets) is np.ndarray and targets.dtype == np.float64 and targets.ndim == 2 else None
+    if r is None or t is None or r.shape[1] != t.shape[1] or not (
+        np.isfinite(r).all() and np.isfinite(t).all()
+    ):
+        from .validation import as_points, check_point_pair
+
+        r, t = check_point_pair(as_points(robots, "robots"), as_points(targets, "targets"))
+    n, m = r.shape[0], t.shape[0]
+    if n == 0 or m == 0:
+        return _empty(n, name)
+    transposed = n > m
+    rows, cols = (t, r) if transposed else (r, t)
+    n_rows = rows.shape[0]
+    if n_rows * cols.shape[0] >= SPARSE_MIN_PAIRS and key in ("mmdr/fast", "mmd+msd2", "bottleneck"):
+        from . import sparse
+
+        solver = {"mmdr/fast": sparse.sparse_mmdr, "mmd+msd2": sparse.sparse_mmd_msd2}.get(
+            key, sparse.sparse_bottleneck
+        )
+        col_of_row, length_of_row = solver(np.ascontiguousarray(rows), np.ascontiguousarray(cols))
+        return _result(col_of_row, length_of_row, transposed, n, m, name)
+    lengths, squared = dense_distances(rows, cols)
+    col_of_row = _solve_dense(key, lengths, squared, rng)
+    return _result(col_of_row, lengths[np.arange(n_rows), col_of_row], transposed, n, m, name)
+
+
+def assign_costs(
+    costs: object,
+    method: str = "mmdr",
+    *,
+    algorithm: str | None = None,
+    rng: object = None,
+) -> AssignmentResult:
+    """Assign robots (rows) to targets (columns) of a travel-cost matrix.
+
+    ``costs[i, j] >= 0`` is the cost (distance, time...) of sending robot ``i``
+    to target ``j``; ``+inf`` forbids the pair. "Squared distance" objectives
+    (msd2, mmd+msd2) square the costs. ``result.distances`` holds the costs of
+    the chosen pairs. Arguments and rectangular behaviour as in :func:`assign`.
+
+    Raises:
+        AssignmentError: for NaN or negative costs, a matrix that is not 2-D,
+            unknown method names, or forbidden pairs that leave no complete
+            assignment (the message says how many robots could be served).
+    """
+    from .validation import as_costs
+
+    key = _method_key(method, algorithm)
+    name = key[:4] if key.startswith("mmdr") else key
+    matrix = as_costs(costs)
+    n, m = matrix.shape
+    if n == 0 or m == 0:
+        return _empty(n, name)
+    transposed = n > m
+    lengths = np.ascontiguousarray(matrix.T) if transposed else matrix
+    if not np.isfinite(lengths).all():
+        _check_feasible(lengths)
+    col_of_row = _solve_dense(key, lengths, lengths * lengths, rng)
+    return _result(col_of_row, lengths[np.arange(lengths.shape[0]), col_of_row], transposed, n, m, name)

@@ -1,0 +1,13 @@
+"""The one exception type of the assignment library."""
+
+from __future__ import annotations
+
+
+class AssignmentError(ValueError):
+    """An assignment problem that cannot be solved as given.
+
+    Raised for malformed input (NaN or infinite coordinates, NaN costs, wrong
+    array dimensions, mismatched point dimensions, unknown method names) and for
+    cost matrices whose forbidden pairs (``inf``) leave no complete assignment.
+    It subclasses :class:`ValueError` so callers may catch either.
+    """

@@ -1,0 +1,66 @@
+"""SCRAM's two assignment functions (and the plain bottleneck) on dense matrices.
+
+From "SCRAM: Scalable Collision-avoiding Role Assignment with Minimal-makespan
+for Formational Positioning" (MacAlpine, Price, Stone):
+
+- MMDR (minimum maximal distance, recursive): the lexicographic bottleneck
+  assignment, see :mod:`.lexicographic`.
+- MMD+MSD²: the smallest makespan first, then the least sum of squared
+  distances among the assignments using only pairs no longer than it.
+
+Inputs: ``lengths`` ``(rows, cols)`` with ``rows <= cols`` and ``inf`` for
+forbidden pairs, ``squared`` the squared lengths; a complete assignment must
+exist (checked by the caller). Outputs: the target index of every row.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.optimize import linear_sum_assignment
+
+from .bottleneck import bottleneck_matching
+from .graphs import dense_to_graph, pad_with_dummy_rows
+from .lexicographic import lexicographic_refine
+
+
+def bottleneck_assignment(lengths: np.ndarray) -> tuple[float, np.ndarray]:
+    """Return ``(makespan, col_of_row)`` of an assignment with the smallest makespan."""
+    indptr, indices, pair_lengths = dense_to_graph(lengths)
+    value, col_of_row, _ = bottleneck_matching(indptr, indices, pair_lengths, lengths.shape[1])
+    return value, col_of_row
+
+
+def mmd_msd2_assignment(lengths: np.ndarray, squared: np.ndarray) -> np.ndarray:
+    """MMD+MSD²: least sum of squares among the assignments of smallest makespan."""
+    value, _ = bottleneck_assignment(lengths)
+    allowed = np.where(lengths <= value, squared, np.inf)
+    return linear_sum_assignment(allowed)[1].astype(np.int64, copy=False)
+
+
+def mmdr_assignment(lengths: np.ndarray) -> np.ndarray:
+    """MMDR: the exact lexicographic bottleneck assignment (bottleneck, then refinement)."""
+    n_rows, n_cols = lengths.shape
+    indptr, indices, pair_lengths = dense_to_graph(lengths)
+    value, col_of_row, row_of_col = bottleneck_matching(indptr, indices, pair_lengths, n_cols)
+    return refine_to_lexicographic(indptr, indices, pair_lengths, value, col_of_row, row_of_col)
+
+
+def refine_to_lexicographic(
+    indptr: np.ndarray,
+    indices: np.ndarray,
+    lengths: np.ndarray,
+    value: float,
+    col_of_row: np.ndarray,
+    row_of_col: np.ndarray,
+) -> np.ndarray:
+    """Lexicographic refinement of a bottleneck matching; pads rectangular problems first."""
+    n_rows = indptr.shape[0] - 1
+    n_cols = row_of_col.shape[0]
+    if n_rows < n_cols:
+        indptr, indices, lengths = pad_with_dummy_rows(indptr, indices, lengths, n_cols, -np.inf)
+        free_cols = np.flatnonzero(row_of_col < 0)
+        col_of_row = np.concatenate([col_of_row, free_cols])
+        row_of_col = row_of_col.copy()
+        row_of_col[free_cols] = np.arange(n_rows, n_cols)
+    lexicographic_refine(indptr, indices, lengths, value, col_of_row, row_of_col)
+    return col_of_row[:n_rows]

@@ -1,0 +1,73 @@
+"""Input checks: turn user arrays into clean float64 arrays or explain what is wrong.
+
+The checks are written for the hot path (the simulator calls the library every
+cycle): a handful of attribute reads and one vectorised finiteness test per
+array; the detailed diagnosis only runs once something is known to be wrong.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .errors import AssignmentError
+
+
+def as_points(points: object, name: str) -> np.ndarray:
+    """Return ``points`` as a C-contiguous float64 array of shape ``(count, d)``.
+
+    An empty input (``[]`` or shape ``(0,)``) becomes shape ``(0, 0)``; its
+    dimension is taken from the other point set by :func:`check_point_pair`.
+    """
+    try:
+        array = np.ascontiguousarray(points, dtype=np.float64)
+    except (TypeError, ValueError) as exc:
+        raise AssignmentError(f"{name} must be an array of numbers of shape (count, d): {exc}") from None
+    if array.ndim != 2:
+        if array.size == 0:
+            return array.reshape(0, 0)
+        raise AssignmentError(f"{name} must have shape (count, d), got an array of shape {array.shape}")
+    if not np.isfinite(array).all():
+        bad = np.argwhere(~np.isfinite(array))[0]
+        raise AssignmentError(
+            f"{name}[{bad[0]}, {bad[1]}] is {array[bad[0], bad[1]]!r}: coordinates must be finite"
+        )
+    return array
+
+
+def check_point_pair(robots: np.ndarray, targets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Check that both point sets live in the same space; fix up empty sets."""
+    if robots.shape[1] == targets.shape[1]:
+        if robots.shape[1] == 0 and robots.shape[0] and targets.shape[0]:
+            raise AssignmentError("points must have at least one coordinate (d >= 1)")
+        return robots, targets
+    if robots.shape[0] == 0:
+        return robots.reshape(0, targets.shape[1]), targets
+    if targets.shape[0] == 0:
+        return robots, targets.reshape(0, robots.shape[1])
+    raise AssignmentError(
+        f"robots are {robots.shape[1]}-dimensional but targets are {targets.shape[1]}-dimensional"
+    )
+
+
+def as_costs(costs: object) -> np.ndarray:
+    """Return ``costs`` as a C-contiguous float64 ``(n, m)`` matrix.
+
+    ``+inf`` marks a forbidden pair and is kept; NaN and ``-inf`` are rejected,
+    as are negative costs (distances and travel costs cannot be negative, and
+    the lexicographic methods order pairs by cost).
+    """
+    try:
+        matrix = np.ascontiguousarray(costs, dtype=np.float64)
+    except (TypeError, ValueError) as exc:
+        raise AssignmentError(f"costs must be a numeric matrix of shape (robots, targets): {exc}") from None
+    if matrix.ndim != 2:
+        if matrix.size == 0:
+            return matrix.reshape(0, 0)
+        raise AssignmentError(f"costs must be a 2-D matrix (robots, targets), got shape {matrix.shape}")
+    if matrix.size and not (matrix >= 0).all():
+        bad_mask = ~(matrix >= 0)
+        i, j = np.argwhere(bad_mask)[0]
+        value = matrix[i, j]
+        what = "NaN" if np.isnan(value) else f"negative ({value!r})"
+        raise AssignmentError(f"costs[{i}, {j}] is {what}: costs must be >= 0, or +inf for a forbidden pair")
+    return matrix
