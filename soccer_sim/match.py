@@ -1,0 +1,300 @@
+"""The match loop: teams decide, the match applies the motion rules, pymunk resolves
+collisions, the referee judges, recorders observe.
+
+One cycle (100 ms of game time by default):
+
+1. each team gets its team-relative view and returns a command, validated and turned back
+   into the absolute frame (:mod:`soccer_sim.view`);
+2. before a kick-off, teams may place their players (``TeamCommand.move``);
+3. kicks by players allowed by the referee with the ball within reach (or held);
+4. the referee judges the kicks and the goalkeepers' catch requests;
+5. dashes, stamina and movement noise (:mod:`soccer_sim.kinematics`);
+6. the collision solver moves everything for one cycle, in as many sub-steps as needed so
+   that nothing that could hit something moves more than ``max_substep_distance`` per
+   sub-step; players are kept within the field plus its margin;
+7. velocity decay and ball noise;
+8. the referee judges goals, outs, restarts, offside and time;
+9. the cycle counter advances and recorders observe.
+
+A match is a pure function of (teams, config, seed): all randomness comes from generators
+spawned from ``numpy.random.SeedSequence(seed)`` (the physics noise first, then one per
+team, home first), and nothing else is random.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from soccer_sim.config import MatchConfig
+from soccer_sim.kinematics import CycleNoise, Kinematics
+from soccer_sim.physics import BodyBlock, Physics
+from soccer_sim.recorder import Recorder
+from soccer_sim.referee import Referee
+from soccer_sim.registry import resolve_team
+from soccer_sim.state import AWAY, HOME, NO_PLAYER, EventLog, PlayMode, WorldState
+from soccer_sim.statistics import StatisticsRecorder, TeamStatistics
+from soccer_sim.team import SideInfo, Team, TeamError
+from soccer_sim.view import TeamFrame
+
+_KICK_OFF = PlayMode.KICK_OFF
+_TIME_OVER = PlayMode.TIME_OVER
+_NO_KICKERS = np.zeros(0, dtype=np.int64)
+
+
+@dataclass
+class MatchResult:
+    """The outcome of a match."""
+
+    score: tuple[int, int]
+    """(home goals, away goals)."""
+    events: EventLog
+    statistics: tuple[TeamStatistics, TeamStatistics]
+    """(home, away) statistics."""
+    state: WorldState
+    """The final world state."""
+    team_names: tuple[str, str]
+    seed: int
+    cycles: int
+    """Cycles played."""
+
+
+def initial_positions(config: MatchConfig) -> np.ndarray:
+    """(2n, 2) opening line-up, absolute frame: each team spread over its own half in three
+    lines (the goalkeeper on its goal line's centre); the referee's kick-off and the teams'
+    ``move`` commands refine it."""
+    n = config.players_per_team
+    half_length, half_width = config.field.half_length, config.field.half_width
+    goalie = config.rules.goalie_index
+    own = np.zeros((n, 2))
+    outfield = [i for i in range(n) if i != goalie]
+    own[goalie] = (-half_length + 1.0, 0.0)
+    depths = (0.7, 0.45, 0.2)
+    for line, depth in enumerate(depths):
+        members = outfield[line::len(depths)]
+        for k, i in enumerate(members):
+            own[i] = (-half_length * depth, half_width * (2.0 * (k + 1) / (len(members) + 1) - 1.0) * 0.8)
+    return np.concatenate([own, -own])
+
+
+class Match:
+    """One match between two teams; :meth:`run` plays it to the end.
+
+    Attributes recorders may read: ``state``, ``events``, ``config``, ``teams``,
+    ``team_names``, ``teammate_contacts`` and the rows of the last cycle's ``kickers`` and
+    ``touchers``.
+    """
+
+    def __init__(self, home: Team | str | type, away: Team | str | type, seed: int = 0,
+                 config: MatchConfig | None = None, recorders: Iterable[Recorder] = ()) -> None:
+        if config is None:
+            config = MatchConfig()
+        if not isinstance(config, MatchConfig):
+            raise TypeError(f"config must be a MatchConfig, got {type(config).__name__}")
+        if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+            raise ValueError(f"seed must be a non-negative integer, got {seed!r}")
+        self.config = config
+        self.seed = int(seed)
+        (home_team, home_name), (away_team, away_name) = resolve_team(home), resolve_team(away)
+        if home_team is away_team:
+            raise ValueError("the same team object cannot play both sides; pass two instances (or names)")
+        self.teams: tuple[Team, Team] = (home_team, away_team)
+        self.team_names = (home_name, away_name)
+
+        n = config.players_per_team
+        physics_seq, home_seq, away_seq = np.random.SeedSequence(self.seed).spawn(3)
+        self._team_seeds = (home_seq, away_seq)
+        self.block = BodyBlock(n)
+        self.block.pos[:] = initial_positions(config)
+        self.state = WorldState(pos=self.block.pos, vel=self.block.vel,
+                                stamina=np.full(2 * n, float(config.stamina.maximum)),
+                                ball=self.block.ball, ball_vel=self.block.ball_vel)
+        self.events = EventLog()
+        self.referee = Referee(config, self.events)
+        self.physics = Physics(config, self.block)
+        self.kinematics = Kinematics(config)
+        self.noise = CycleNoise(np.random.default_rng(physics_seq), 2 * n)
+        self.commands = np.zeros((2 * n, 4))
+        """Absolute commands of this cycle: per player row ``[dash_x, dash_y, kick_x, kick_y]``."""
+        self._dash = self.commands[:, 0:2]
+        self._kick = self.commands[:, 2:4]
+        self.frames = (TeamFrame(HOME, home_name, n, self.block, self.commands),
+                       TeamFrame(AWAY, away_name, n, self.block, self.commands))
+        self.statistics = StatisticsRecorder()
+        self.recorders: tuple[Recorder, ...] = (self.statistics, *recorders)
+        self.kickers = _NO_KICKERS
+        self.touchers = _NO_KICKERS
+        self._catch = np.zeros(2, dtype=bool)
+        phys, fld = config.physics, config.field
+        self._kickable = phys.kickable_distance
+        self._max_substep = phys.max_substep_distance
+        self._ball_reach = phys.player_radius + phys.ball_radius + phys.player_speed_max + phys.max_substep_distance
+        self._post_reach = fld.goal_post_radius + phys.ball_radius + phys.max_substep_distance
+        self._post_x, self._post_y = fld.half_length, fld.goal_width / 2 + fld.goal_post_radius
+        limit = np.array([fld.half_length + fld.margin, fld.half_width + fld.margin])
+        self._pos_low, self._pos_high = -limit, limit
+        self._started = False
+
+    @property
+    def teammate_contacts(self) -> Sequence[int]:
+        """New contacts between teammates so far, (home, away)."""
+        return self.physics.teammate_contacts
+
+    # ------------------------------------------------------------------------------------
+    def run(self) -> MatchResult:
+        """Play the whole match and return its result."""
+        self.start()
+        state, total = self.state, self.config.total_cycles
+        while state.cycle < total and state.play_mode != _TIME_OVER:
+            self.step()
+        return self.finish()
+
+    def start(self) -> None:
+        """Reset the teams, let the referee set up the opening kick-off, notify recorders."""
+        if self._started:
+            raise RuntimeError("a Match can be played only once; create a new one")
+        self._started = True
+        n = self.config.players_per_team
+        for team in (HOME, AWAY):
+            info = SideInfo(team=team, name=self.team_names[team], opponent_name=self.team_names[1 - team],
+                            players_per_team=n, goalie_index=self.config.rules.goalie_index)
+            rng = np.random.default_rng(self._team_seeds[team])
+            try:
+                self.teams[team].reset(info, self.config, rng)
+            except Exception as exc:
+                raise TeamError(self.team_names[team], f"reset() raised {type(exc).__name__}: {exc}") from exc
+        self.referee.start(self.state)
+        self._sync_state()
+        for recorder in self.recorders:
+            recorder.on_start(self)
+
+    def finish(self) -> MatchResult:
+        """Notify recorders of the end and assemble the result."""
+        for recorder in self.recorders:
+            recorder.on_end(self)
+        state = self.state
+        assert self.statistics.result is not None
+        return MatchResult(score=(int(state.score[0]), int(state.score[1])), events=self.events,
+                           statistics=self.statistics.result, state=state, team_names=self.team_names,
+                           seed=self.seed, cycles=state.cycle)
+
+    def step(self) -> None:
+        """Simulate one cycle."""
+        state, referee, kin = self.state, self.referee, self.kinematics
+        self._sync_state()
+        self.noise.draw()
+
+        # 1-2. Teams decide; kick-off placement.
+        moves = self._collect_commands()
+        if state.play_mode == _KICK_OFF:
+            for team in (HOME, AWAY):
+                if moves[team] is not None:
+                    referee.apply_moves(state, team, moves[team])
+            self._sync_state()
+
+        # 3-4. Kicks, then the referee judges kicks and catches.
+        dist = kin.ball_distances(state.pos, state.ball)
+        holder = state.ball_holder
+        kickers = self._kickers(dist, referee.kick_mask(state), holder)
+        if kickers.size:
+            kin.kick(kickers, state.pos, state.ball, state.ball_vel, self._kick, dist, holder, self.noise.kick)
+            state.last_touch = int(kickers[np.argmin(dist[kickers])])
+        self.kickers = kickers
+        referee.on_commands(state, kickers, self._catch)
+
+        # 5. Dashes.
+        self._sync_state()
+        fastest = kin.dash(state.vel, state.stamina, self._dash, self.noise.players)
+
+        # 6. Collision solving. A held ball does not collide, nor in the cycle it is released
+        # (it lies on the goalkeeper's centre until the kick carries it away).
+        released = holder != NO_PLAYER
+        holder = state.ball_holder
+        physics = self.physics
+        physics.set_ball_collides(holder == NO_PLAYER and not released)
+        if holder == NO_PLAYER:
+            fastest = max(fastest, self._relevant_ball_speed(float(dist.min())))
+        substeps = max(1, math.ceil(fastest / self._max_substep))
+        self.touchers = physics.step(substeps)
+        np.clip(state.pos, self._pos_low, self._pos_high, out=state.pos)
+        if holder != NO_PLAYER:
+            state.ball[:] = state.pos[holder]
+            state.ball_vel[:] = 0.0
+
+        # 7-9. Decay, the referee, time, observers.
+        kin.decay(state.vel, state.ball_vel, self.noise.ball)
+        referee.after_step(state, self.touchers)
+        state.cycle += 1
+        for recorder in self.recorders:
+            recorder.on_cycle(self)
+
+    # ------------------------------------------------------------------------------------
+    def _collect_commands(self) -> list[np.ndarray | None]:
+        state = self.state
+        moves: list[np.ndarray | None] = [None, None]
+        for team in (HOME, AWAY):
+            frame = self.frames[team]
+            view = frame.update_view(state)
+            try:
+                command = self.teams[team].act(view)
+            except Exception as exc:
+                raise TeamError(frame.name, f"act() raised {type(exc).__name__}: {exc}") from exc
+            self._catch[team], moves[team] = frame.read_command(command, state)
+        return moves
+
+    def _kickers(self, dist: np.ndarray, mask: np.ndarray, holder: int) -> np.ndarray:
+        """Rows that kick this cycle: allowed by the referee, ball within reach (or held), and a
+        non-zero kick vector."""
+        candidates = np.flatnonzero((dist <= self._kickable) & mask)
+        if holder != NO_PLAYER and mask[holder] and holder not in candidates:
+            candidates = np.append(candidates, holder)
+        if not candidates.size:
+            return _NO_KICKERS
+        kick = self._kick
+        rows = [row for row in candidates.tolist() if kick[row, 0] != 0.0 or kick[row, 1] != 0.0]
+        if len(rows) == candidates.size:
+            return candidates
+        return np.array(rows, dtype=np.int64) if rows else _NO_KICKERS
+
+    def _relevant_ball_speed(self, nearest_player: float) -> float:
+        """The ball's speed if it could hit a player or a post this cycle, else 0: a ball in
+        free flight needs no sub-steps however fast it goes."""
+        vx, vy = self.state.ball_vel.tolist()
+        speed = math.hypot(vx, vy)
+        if nearest_player - speed <= self._ball_reach:
+            return speed
+        bx, by = self.state.ball.tolist()
+        post_distance = math.hypot(self._post_x - abs(bx), self._post_y - abs(by))
+        return speed if post_distance - speed <= self._post_reach else 0.0
+
+    def _sync_state(self) -> None:
+        """Re-attach the state's arrays to the body block if someone replaced them (the loop
+        and pymunk work on the block; replacing an array instead of writing into it would
+        otherwise be lost)."""
+        state, block = self.state, self.block
+        if state.pos is not block.pos:
+            block.pos[:] = state.pos
+            state.pos = block.pos
+        if state.vel is not block.vel:
+            block.vel[:] = state.vel
+            state.vel = block.vel
+        if state.ball is not block.ball:
+            block.ball[:] = state.ball
+            state.ball = block.ball
+        if state.ball_vel is not block.ball_vel:
+            block.ball_vel[:] = state.ball_vel
+            state.ball_vel = block.ball_vel
+
+
+def run_match(home: Team | str | type, away: Team | str | type, seed: int = 0,
+              config: MatchConfig | None = None, recorders: Iterable[Recorder] = ()) -> MatchResult:
+    """Play a whole match and return its :class:`MatchResult`.
+
+    ``home`` and ``away`` are Team objects, Team classes, registered names (``"chaser"``) or
+    ``package.module:Attribute`` paths. The result is a pure function of the teams, the
+    config and the seed.
+    """
+    return Match(home, away, seed=seed, config=config, recorders=recorders).run()

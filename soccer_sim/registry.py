@@ -1,0 +1,87 @@
+"""Finding teams by name.
+
+A team is named either by a registered name (a Python entry point in the group
+``soccer_sim.teams``, which any installed package can declare) or by a path
+``package.module:Attribute`` (the attribute may be dotted). The attribute may be a Team
+instance, a class, or a factory called without arguments. The two built-in teams
+(``idle``, ``chaser``) resolve even from a plain checkout where the package's entry points
+are not installed.
+"""
+
+from __future__ import annotations
+
+import importlib
+from importlib import metadata
+from typing import Any
+
+from soccer_sim.team import Team
+
+ENTRY_POINT_GROUP = "soccer_sim.teams"
+
+BUILTIN_TEAMS: dict[str, str] = {
+    "idle": "soccer_sim.trivial_teams:IdleTeam",
+    "chaser": "soccer_sim.trivial_teams:ChaserTeam",
+}
+"""Teams shipped in soccer_sim itself (also declared as entry points in pyproject.toml)."""
+
+
+class TeamNotFoundError(LookupError):
+    """A team name or path could not be resolved; the message lists the available names."""
+
+
+def available_teams() -> dict[str, str]:
+    """Registered team names -> ``module:attribute`` targets (entry points override built-ins)."""
+    teams = dict(BUILTIN_TEAMS)
+    for entry_point in metadata.entry_points(group=ENTRY_POINT_GROUP):
+        teams[entry_point.name] = entry_point.value
+    return dict(sorted(teams.items()))
+
+
+def _load_path(path: str) -> Any:
+    module_name, _, attribute = path.partition(":")
+    if not module_name or not attribute:
+        raise TeamNotFoundError(f"team path {path!r} must look like 'package.module:Attribute'")
+    try:
+        target: Any = importlib.import_module(module_name)
+    except ImportError as exc:
+        raise TeamNotFoundError(f"team path {path!r}: cannot import module {module_name!r} ({exc})") from exc
+    for part in attribute.split("."):
+        try:
+            target = getattr(target, part)
+        except AttributeError as exc:
+            raise TeamNotFoundError(f"team path {path!r}: {module_name!r} has no attribute {attribute!r}") from exc
+    return target
+
+
+def _instantiate(target: Any, name: str) -> Team:
+    if isinstance(target, Team) and not isinstance(target, type):
+        return target
+    if callable(target):
+        team = target()
+        if isinstance(team, Team):
+            return team
+        raise TeamNotFoundError(f"team {name!r}: calling {target!r} gave {type(team).__name__}, "
+                                "which lacks reset(side_info, config, rng) and act(view)")
+    raise TeamNotFoundError(f"team {name!r}: {target!r} is neither a Team nor a class/factory making one")
+
+
+def resolve_team(spec: Team | str | type) -> tuple[Team, str]:
+    """Return (team instance, display name) for a Team object, a class, a registered name or a
+    ``package.module:Attribute`` path. Unknown names raise :class:`TeamNotFoundError` listing
+    the registered ones."""
+    if isinstance(spec, str):
+        if ":" in spec:
+            return _instantiate(_load_path(spec), spec), spec
+        teams = available_teams()
+        if spec not in teams:
+            raise TeamNotFoundError(
+                f"unknown team {spec!r}; registered teams: {', '.join(teams) or '(none)'}; "
+                "or give a path 'package.module:Attribute'"
+            )
+        return _instantiate(_load_path(teams[spec]), spec), spec
+    if isinstance(spec, type):
+        return _instantiate(spec, spec.__name__), spec.__name__
+    if isinstance(spec, Team):
+        return spec, str(getattr(spec, "name", type(spec).__name__))
+    raise TeamNotFoundError(f"cannot use {spec!r} as a team: expected a team name, a path "
+                            "'package.module:Attribute', a Team class or a Team object")

@@ -1,0 +1,106 @@
+"""Per-team match statistics, collected by a recorder that observes the match loop.
+
+* goals, kicks, shots and passes come from the event log;
+* possession share: the fraction of the cycles with a last toucher (in any play mode) in
+  which that toucher belonged to the team;
+* teammate contacts: new body contacts between two players of the team (the collision solver
+  counts them; the role-assignment literature expects good assignment to avoid them);
+* distance run: the sum over cycles of every player's displacement (m). Jumps longer than
+  ``RELOCATION_FACTOR * player_speed_max`` in one cycle are the referee placing players
+  (restarts, half time), not running, and are left out;
+* plus whatever the team reports through an optional ``statistics() -> dict`` method.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from soccer_sim.state import AWAY, HOME, EventKind
+
+if TYPE_CHECKING:
+    from soccer_sim.match import Match
+
+RELOCATION_FACTOR = 3.0
+"""A displacement above this many times the player speed limit in one cycle is a relocation."""
+
+
+@dataclass
+class TeamStatistics:
+    """What one team did in a match (see the module docstring for definitions)."""
+
+    goals: int = 0
+    shots: int = 0
+    kicks: int = 0
+    passes: int = 0
+    possession: float = 0.0
+    """Share of the possession, in [0, 1]; the two teams' shares add up to 1 (0 if nobody touched the ball)."""
+    teammate_contacts: int = 0
+    distance_run: float = 0.0
+    """Total over the team's players (m)."""
+    reported: dict[str, float] = field(default_factory=dict)
+    """Figures the team reported itself (``Team.statistics()``), e.g. role switches."""
+
+    def as_dict(self) -> dict[str, float]:
+        """All figures in one flat dict (the team's own figures last)."""
+        values: dict[str, float] = {
+            "goals": self.goals, "shots": self.shots, "kicks": self.kicks, "passes": self.passes,
+            "possession": self.possession, "teammate_contacts": self.teammate_contacts,
+            "distance_run": self.distance_run,
+        }
+        values.update(self.reported)
+        return values
+
+
+class StatisticsRecorder:
+    """Collects :class:`TeamStatistics` for both teams; ``result`` is set by ``on_end``."""
+
+    def __init__(self) -> None:
+        self.result: tuple[TeamStatistics, TeamStatistics] | None = None
+
+    def on_start(self, match: Match) -> None:
+        state = match.state
+        self._n = state.players_per_team
+        self._relocation = RELOCATION_FACTOR * match.config.physics.player_speed_max
+        self._previous = state.pos.copy()
+        self._step = np.empty(2 * self._n)
+        self._distance = np.zeros(2 * self._n)
+        self._possession = [0, 0]
+
+    def on_cycle(self, match: Match) -> None:
+        state = match.state
+        delta = np.subtract(state.pos, self._previous, out=self._previous)
+        step = np.hypot(delta[:, 0], delta[:, 1], out=self._step)
+        if step.max() > self._relocation:
+            step[step > self._relocation] = 0.0
+        self._distance += step
+        np.copyto(self._previous, state.pos)
+        toucher = state.last_touch
+        if toucher >= 0:
+            self._possession[0 if toucher < self._n else 1] += 1
+
+    def on_end(self, match: Match) -> None:
+        events = match.events.as_arrays()
+        kinds, teams = events["kind"], events["team"]
+        touched = sum(self._possession)
+        n = self._n
+        stats = []
+        for team in (HOME, AWAY):
+            mine = teams == team
+            reported = {}
+            report = getattr(match.teams[team], "statistics", None)
+            if callable(report):
+                reported = {str(k): float(v) for k, v in dict(report()).items()}
+            stats.append(TeamStatistics(
+                goals=int(match.state.score[team]),
+                shots=int(np.count_nonzero(mine & (kinds == EventKind.SHOT))),
+                kicks=int(np.count_nonzero(mine & (kinds == EventKind.KICK))),
+                passes=int(np.count_nonzero(mine & (kinds == EventKind.PASS))),
+                possession=self._possession[team] / touched if touched else 0.0,
+                teammate_contacts=int(match.teammate_contacts[team]),
+                distance_run=float(self._distance[team * n:(team + 1) * n].sum()),
+                reported=reported,
+            ))
+        self.result = (stats[0], stats[1])

@@ -1,0 +1,122 @@
+"""The interface between a team and the match: what a team sees and what it may command.
+
+A team is any object with ``reset(side_info, config, rng)`` and ``act(view) -> TeamCommand``
+(see :class:`Team`). Everything a team sees is in its *own* frame: it attacks towards +x
+and its own goal line is at ``x = -field.length / 2``; the match converts the commands
+back (see :mod:`soccer_sim.view`). Units: metres, cycles, metres per cycle (m/cycle) and
+metres per cycle² for accelerations.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Protocol, runtime_checkable
+
+import numpy as np
+
+from soccer_sim.state import NO_PLAYER, PlayMode
+
+if TYPE_CHECKING:
+    from soccer_sim.config import MatchConfig
+
+
+class TeamError(Exception):
+    """A team misbehaved: its ``act``/``reset`` raised, or it returned a malformed command.
+
+    ``team_name`` names the team and ``player`` is the index (within the team) of the player
+    whose command is wrong, or None when the whole command is at fault. The original
+    exception, if any, is chained as ``__cause__``.
+    """
+
+    def __init__(self, team_name: str, message: str, player: int | None = None) -> None:
+        where = f"team {team_name!r}" + (f", player {player}" if player is not None else "")
+        super().__init__(f"{where}: {message}")
+        self.team_name = team_name
+        self.player = player
+
+
+@dataclass(frozen=True)
+class SideInfo:
+    """Who a team is in this match (given to :meth:`Team.reset`)."""
+
+    team: int
+    """HOME (0) or AWAY (1): the team's index in scores, statistics and events."""
+    name: str
+    """The team's name in this match (the registry name, or the class name)."""
+    opponent_name: str
+    players_per_team: int
+    goalie_index: int
+    """Index of the team's goalkeeper within the team (the only player whose catch counts)."""
+
+
+@dataclass(eq=False)
+class TeamView:
+    """What a team sees at one cycle, in its own frame (attacking +x, own goal at -x).
+
+    The match owns these arrays and overwrites them every cycle, so a team must copy
+    anything it wants to keep across cycles. Positions in metres, velocities in m/cycle.
+    """
+
+    own_pos: np.ndarray
+    """(n, 2) positions of the team's players; row i is player i (row goalie_index is the goalkeeper)."""
+    own_vel: np.ndarray
+    """(n, 2) velocities of the team's players."""
+    opp_pos: np.ndarray
+    """(n, 2) positions of the opponents."""
+    opp_vel: np.ndarray
+    """(n, 2) velocities of the opponents."""
+    ball: np.ndarray
+    """(2,) ball position."""
+    ball_vel: np.ndarray
+    """(2,) ball velocity."""
+    stamina: np.ndarray
+    """(n,) stamina of the team's players (see config.StaminaConfig)."""
+    play_mode: PlayMode = PlayMode.KICK_OFF
+    mode_ours: bool = False
+    """True when the current set play (or the goalkeeper's hold) belongs to this team."""
+    score: tuple[int, int] = (0, 0)
+    """(ours, theirs)."""
+    cycle: int = 0
+    half: int = 0
+    """0 for the first half, 1 for the second (the match swaps ends; the view never changes side)."""
+    ball_holder: int = NO_PLAYER
+    """Index (within this team) of our goalkeeper if it holds the ball, else NO_PLAYER (-1)."""
+
+
+@dataclass
+class TeamCommand:
+    """What a team asks its players to do this cycle (own frame, like the view).
+
+    The match clips every request to the physical limits (config.PhysicsConfig and the
+    stamina model), so a team may simply ask for "as much as possible".
+    """
+
+    dash: np.ndarray
+    """(n, 2) requested acceleration per player (m/cycle²)."""
+    kick: np.ndarray
+    """(n, 2) requested change of the ball's velocity per player (m/cycle); applied only for
+    players that can kick (ball within the kickable distance, set-play rules permitting).
+    An all-zero row means "do not kick"."""
+    catch: bool = False
+    """The goalkeeper tries to catch the ball this cycle."""
+    move: np.ndarray | None = None
+    """(n, 2) placement targets, honoured only before a kick-off (the referee clamps them
+    into the team's own half)."""
+
+
+@runtime_checkable
+class Team(Protocol):
+    """A team: called once before the match, then once per cycle.
+
+    Optionally a team may define ``statistics() -> dict[str, float]``: figures it reports
+    (role switches, ...) that are merged into its match statistics.
+    """
+
+    def reset(self, side_info: SideInfo, config: MatchConfig, rng: np.random.Generator) -> None:
+        """Prepare for a new match. ``rng`` is the team's own seeded generator: use it (and no
+        other source of randomness) so that matches stay reproducible."""
+        ...
+
+    def act(self, view: TeamView) -> TeamCommand:
+        """Decide this cycle's command from the team-relative view."""
+        ...

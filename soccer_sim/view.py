@@ -1,0 +1,117 @@
+"""Team-relative views and the conversion of team commands back to the absolute frame.
+
+Every team sees the world as if it attacked towards +x. When a team attacks towards -x in
+the absolute frame (the away team in the first half, the home team in the second), its
+frame is the absolute one turned by 180° about the centre spot: ``(x, y) -> (-x, -y)`` for
+positions and vectors alike. A rotation (not a reflection) keeps left and right as the
+players see them, and it is its own inverse, so commands go back with the same sign.
+
+Each team has a :class:`TeamFrame` that owns its view's arrays and overwrites them every
+cycle (one numpy call for all positions and velocities); teams must copy what they keep.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from soccer_sim.physics import BodyBlock
+from soccer_sim.state import NO_PLAYER, WorldState
+from soccer_sim.team import TeamCommand, TeamError, TeamView
+
+
+class TeamFrame:
+    """One team's window on the world: builds its :class:`TeamView` and reads its commands.
+
+    ``commands`` is the match's (2n, 4) absolute command buffer (``[dash_x, dash_y, kick_x,
+    kick_y]`` per player row); this team writes its own rows.
+    """
+
+    def __init__(self, team: int, name: str, players_per_team: int, block: BodyBlock,
+                 commands: np.ndarray) -> None:
+        n = players_per_team
+        self.team = team
+        self.name = name
+        self.n = n
+        self.rows = slice(team * n, (team + 1) * n)
+        self._offset = team * n
+        self._block = block
+        self._mirror = np.empty_like(block.dynamic)
+        own, opp = self._mirror[self.rows], self._mirror[(1 - team) * n:(2 - team) * n]
+        ball_row = self._mirror[2 * n]
+        self.view = TeamView(
+            own_pos=own[:, 0:2], own_vel=own[:, 2:4], opp_pos=opp[:, 0:2], opp_vel=opp[:, 2:4],
+            ball=ball_row[0:2], ball_vel=ball_row[2:4], stamina=np.empty(n),
+        )
+        self._commands = commands[self.rows]
+        self._dash = self._commands[:, 0:2]
+        self._kick = self._commands[:, 2:4]
+
+    def sign(self, state: WorldState) -> int:
+        """+1 if this team attacks towards +x now (its frame is the absolute one), else -1."""
+        return state.attack_direction(self.team)
+
+    def update_view(self, state: WorldState) -> TeamView:
+        """Refresh and return the team's view of ``state`` (arrays overwritten in place)."""
+        if self.sign(state) > 0:
+            np.copyto(self._mirror, self._block.dynamic)
+        else:
+            np.negative(self._block.dynamic, out=self._mirror)
+        view = self.view
+        team = self.team
+        np.copyto(view.stamina, state.stamina[self.rows])
+        view.play_mode = state.play_mode
+        view.mode_ours = state.mode_team == team
+        score = state.score.tolist()
+        view.score = (score[team], score[1 - team])
+        view.cycle = state.cycle
+        view.half = state.half
+        holder = state.ball_holder - self._offset
+        view.ball_holder = holder if 0 <= holder < self.n else NO_PLAYER
+        return view
+
+    def read_command(self, command: object, state: WorldState) -> tuple[bool, np.ndarray | None]:
+        """Validate ``command`` and write its dash and kick, in the absolute frame, into this
+        team's rows of the command buffer; return (catch request, absolute move targets or None).
+
+        Raises :class:`TeamError` naming the team (and player) for a malformed command.
+        """
+        sign = self.sign(state)
+        if not isinstance(command, TeamCommand):
+            raise TeamError(self.name, f"act() must return a TeamCommand, got {type(command).__name__}")
+        self._write(command.dash, "dash", sign, self._dash)
+        self._write(command.kick, "kick", sign, self._kick)
+        if not math.isfinite(self._commands.sum()):
+            for field_name, values in (("dash", self._dash), ("kick", self._kick)):
+                self._check_finite(values, field_name)
+        move = command.move
+        if move is not None:
+            move = self._as_array(move, "move") * sign
+            self._check_finite(move, "move")
+        return bool(command.catch), move
+
+    def _as_array(self, values: object, field_name: str) -> np.ndarray:
+        if not isinstance(values, np.ndarray):
+            try:
+                values = np.asarray(values, dtype=np.float64)
+            except (TypeError, ValueError) as exc:
+                raise TeamError(self.name, f"command.{field_name} is not a numeric array ({exc})") from exc
+        if values.shape != (self.n, 2):
+            raise TeamError(self.name, f"command.{field_name} must have shape ({self.n}, 2), got {values.shape}")
+        if values.dtype.kind not in "fi":
+            raise TeamError(self.name, f"command.{field_name} must be numeric, got dtype {values.dtype}")
+        return values
+
+    def _write(self, values: object, field_name: str, sign: int, out: np.ndarray) -> None:
+        values = self._as_array(values, field_name)
+        if sign > 0:
+            np.copyto(out, values)
+        else:
+            np.negative(values, out=out)
+
+    def _check_finite(self, values: np.ndarray, field_name: str) -> None:
+        bad = np.flatnonzero(~np.isfinite(values).all(axis=1))
+        if bad.size:
+            raise TeamError(self.name, f"command.{field_name} is not finite: {values[bad[0]].tolist()}",
+                            player=int(bad[0]))
