@@ -126,6 +126,9 @@ class Referee:
             self._mask_row.append(self._frozen(m))
         # Memory between cycles.
         self._spot = (0.0, 0.0)
+        self._spot_owner: tuple[int, int, int] | None = None
+        """(mode, team, start) of the set play ``_spot`` belongs to; a set play the referee did
+        not begin itself (a state built or loaded elsewhere) takes the ball's position as spot."""
         self._prev_ball = (math.nan, math.nan)
         self._offside = np.zeros(2 * n, dtype=bool)
         self._offside_pending = False
@@ -238,6 +241,7 @@ class Referee:
         state.play_mode = mode
         state.mode_team = team if mode != _PLAY_ON else NO_TEAM
         state.mode_start = state.cycle + 1 if first_cycle is None else first_cycle
+        self._spot_owner = (mode, state.mode_team, state.mode_start)
         self.events.add(state.cycle, EventKind.SET_PLAY, state.mode_team, player,
                         float(state.ball[0]), float(state.ball[1]), int(mode))
 
@@ -276,6 +280,9 @@ class Referee:
     def _keep_set_play(self, state: WorldState) -> None:
         """Every cycle of a set play: ball still on its spot, opponents cleared, kick-off halves
         kept; after ``set_play_timeout`` cycles the ball is dropped (play on)."""
+        if self._spot_owner != (state.play_mode, state.mode_team, state.mode_start):
+            self._spot = (float(state.ball[0]), float(state.ball[1]))
+            self._spot_owner = (state.play_mode, state.mode_team, state.mode_start)
         sx, sy = self._spot
         state.ball[0], state.ball[1] = sx, sy
         state.ball_vel[:] = 0.0
