@@ -1,0 +1,148 @@
+"""``soccer-sim formation ...``: check, draw and import formation files.
+
+* ``validate FILE``: read a formation or formation set and report what it
+  holds (samples, triangles, symmetry); exit 1 if it is malformed.
+* ``show FILE --ball X Y --out picture.png``: draw the field, triangulation,
+  samples and the interpolated positions for one ball position.
+* ``import helios FILE OUT``: convert a helios-base / agent2d JSON formation
+  into this project's layout.
+
+FILE may also be the name of a built-in formation set (e.g. ``4-3-3``).
+Errors print one line naming the file and the problem: exit status 1 for a
+malformed formation, 2 for a file that cannot be read or written.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from pathlib import Path
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:
+    parser = subparsers.add_parser("formation", help="validate, draw or import formation files")
+    actions = parser.add_subparsers(dest="formation_action", metavar="ACTION", required=True)
+
+    validate = actions.add_parser("validate", help="check a formation or formation-set file")
+    validate.add_argument("file", metavar="FILE", help="formation JSON file (ours or helios-base's) or built-in name")
+    validate.add_argument(
+        "--require-symmetry", action="store_true", help="also fail if the samples are not mirror-symmetric"
+    )
+    validate.set_defaults(func=run_validate)
+
+    show = actions.add_parser("show", help="draw a formation for one ball position")
+    show.add_argument("file", metavar="FILE", help="formation JSON file or built-in name")
+    show.add_argument("--ball", nargs=2, type=float, metavar=("X", "Y"), default=(0.0, 0.0),
+                      help="ball position in metres, team-relative frame (default: 0 0)")
+    show.add_argument("--situation", default="normal",
+                      help="which formation of a set to draw (normal, attack, defend, our_set_play, their_set_play)")
+    show.add_argument("--out", required=True, metavar="PICTURE", help="output picture, e.g. picture.png")
+    show.set_defaults(func=run_show)
+
+    imports = actions.add_parser("import", help="convert another program's formation file")
+    imports.add_argument("layout", choices=["helios"], help="layout of the input file")
+    imports.add_argument("file", metavar="FILE", help="input file")
+    imports.add_argument("out", metavar="OUT", help="output file (this project's JSON layout)")
+    imports.set_defaults(func=run_import)
+
+
+def run_validate(args: argparse.Namespace) -> int:
+    from formations import Formation, FormationError
+    from formations.symmetry import asymmetries
+
+    try:
+        item = _read(args.file)
+    except FormationError as error:
+        return _fail(str(error), 1)
+    except OSError as error:
+        return _fail(_os_message(args.file, error), 2)
+    formations = [("", item)] if isinstance(item, Formation) else [
+        (f"[{situation.value}] ", formation) for situation, formation in item.own_formations().items()
+    ]
+    if not isinstance(item, Formation):
+        print(f"{args.file}: formation set {item.name!r} with {len(formations)} situations")
+    broken = 0
+    for label, formation in formations:
+        problems = asymmetries(formation, tolerance=1e-6)
+        symmetry = "mirror-symmetric" if not problems else f"{len(problems)} asymmetries"
+        print(
+            f"{args.file}: {label}{formation.name or 'formation'}: {len(formation.roles)} roles, "
+            f"{formation.n_samples} samples, {len(formation.triangles)} triangles, {symmetry}"
+        )
+        for problem in problems[:5]:
+            print(f"    {problem.describe()}")
+        if problems and args.require_symmetry:
+            broken += 1
+    if broken:
+        return _fail(f"{args.file}: {broken} formation(s) are not mirror-symmetric", 1)
+    print(f"{args.file}: OK")
+    return 0
+
+
+def run_show(args: argparse.Namespace) -> int:
+    from formations import Formation, FormationError
+    from formations.plotting import save_picture
+
+    try:
+        item = _read(args.file)
+    except FormationError as error:
+        return _fail(str(error), 1)
+    except OSError as error:
+        return _fail(_os_message(args.file, error), 2)
+    if isinstance(item, Formation):
+        formation = item
+    else:
+        try:
+            formation = item.formation(args.situation)
+        except ValueError as error:
+            return _fail(f"{args.file}: {error}", 2)
+    ball = (float(args.ball[0]), float(args.ball[1]))
+    try:
+        positions = save_picture(formation, ball, args.out)
+    except (OSError, ValueError) as error:
+        return _fail(_os_message(args.out, error) if isinstance(error, OSError) else f"{args.out}: {error}", 2)
+    print(f"wrote {args.out}")
+    for role, (x, y) in zip(formation.roles, positions):
+        print(f"  {role.number:>2} {role.name:<26} ({x:7.2f}, {y:7.2f})")
+    return 0
+
+
+def run_import(args: argparse.Namespace) -> int:
+    from formations import FormationError
+    from formations.files import read_json, save
+    from formations.helios import formation_from_helios, is_helios_layout
+
+    try:
+        document = read_json(args.file)
+        if not isinstance(document, dict) or not is_helios_layout(document):
+            raise FormationError(args.file, "not a helios-base formation (no 'method' field at the top level)")
+        formation = formation_from_helios(document, args.file, name=Path(args.file).stem)
+    except FormationError as error:
+        return _fail(str(error), 1)
+    except OSError as error:
+        return _fail(_os_message(args.file, error), 2)
+    try:
+        save(formation, args.out)
+    except OSError as error:
+        return _fail(_os_message(args.out, error), 2)
+    print(f"wrote {args.out}: {len(formation.roles)} roles, {formation.n_samples} samples")
+    return 0
+
+
+def _read(name: str):
+    """Read FILE, or the built-in set of that name if no such file exists."""
+    from formations import builtin_names, load_builtin, read_any
+
+    if not os.path.exists(name) and name in builtin_names():
+        return load_builtin(name)
+    return read_any(name)
+
+
+def _os_message(path: str, error: OSError) -> str:
+    return f"{path}: {error.strerror or error}"
+
+
+def _fail(message: str, status: int) -> int:
+    print(f"error: {message}", file=sys.stderr)
+    return status

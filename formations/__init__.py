@@ -1,0 +1,46 @@
+"""Delaunay-triangulated formations: where each player should stand for any ball position.
+
+A :class:`Formation` holds samples (a ball position with one position per
+role), triangulates the ball positions once, and interpolates role positions
+for any ball position in microseconds. A :class:`FormationSet` holds one
+formation per game :class:`Situation`. Coordinates are metres in the
+team-relative frame: origin at the centre spot, attacking towards +x, y to the
+left (see :mod:`formations.field`).
+
+This package is pure: it imports only numpy and scipy (matplotlib lazily, for
+pictures), never the simulator.
+
+>>> import formations
+>>> team = formations.load_builtin("4-3-3")
+>>> team.positions((10.0, -5.0), "attack").shape
+(11, 2)
+"""
+
+from formations.builtin import builtin_names, load_builtin
+from formations.errors import FormationError
+from formations.field import STANDARD_FIELD, FieldDimensions
+from formations.files import load, load_set, read_any, save
+from formations.formation import Formation
+from formations.formation_set import FormationSet, Situation, parse_situation
+from formations.roles import ROLE_KINDS, Role
+from formations.symmetry import asymmetries, mirror_complete
+
+__all__ = [
+    "Formation",
+    "FormationError",
+    "FormationSet",
+    "FieldDimensions",
+    "ROLE_KINDS",
+    "Role",
+    "STANDARD_FIELD",
+    "Situation",
+    "asymmetries",
+    "builtin_names",
+    "load",
+    "load_builtin",
+    "load_set",
+    "mirror_complete",
+    "parse_situation",
+    "read_any",
+    "save",
+]

@@ -1,0 +1,304 @@
+"""The built-in formation sets, generated from a compact parametric design.
+
+Run ``python -m formations.design`` to (re)write ``formations/data/*.json``;
+the test-suite checks that the shipped files equal what this module produces.
+
+Design. Every role belongs to a *line* (goalkeeper, defence, midfield,
+attack) and has a nominal lateral slot (metres, + to the left). For a ball at
+(bx, by) and a *style* (one per situation):
+
+* each line's depth is ``clip(base + gain * bx, lo, hi)`` plus the role's own
+  offset, so the block moves up and down with the ball while the lines keep
+  their order;
+* each role's lateral position is ``slot * width + shift * by``: the team
+  slides towards the ball side, and width grows in attack and shrinks in
+  defence;
+* when defending, the back line stays ``behind_ball`` metres goal-side of the
+  ball;
+* set plays add rules: at a kick-off everyone stands in our own half, and at
+  the opponents' set plays everyone but the goalkeeper keeps 9.15 m (plus a
+  margin) from the ball;
+* the goalkeeper stays in the goal area, sliding a little with the ball.
+
+Samples are laid out on staggered columns (a half-spacing offset between
+neighbouring columns) that reach every corner, both touchlines, both penalty
+areas and the centre spot. The staggering matters: on a rectangular grid,
+four samples can lie on one empty circle, and Delaunay's arbitrary choice of
+diagonal would then break the left/right symmetry of the interpolation. The
+design is evaluated on the left half (y >= 0) and completed by
+:func:`formations.symmetry.mirror_complete`, so the data is exactly
+symmetric.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from formations.field import STANDARD_FIELD
+from formations.files import save
+from formations.formation import Formation
+from formations.formation_set import FormationSet, Situation
+from formations.roles import Role
+from formations.symmetry import mirror_complete
+
+HALF_LENGTH = STANDARD_FIELD.half_length
+HALF_WIDTH = STANDARD_FIELD.half_width
+
+SAMPLE_COLUMNS_X: tuple[float, ...] = (
+    -HALF_LENGTH, -45.0, -36.0, -27.0, -18.0, -9.0, 0.0, 9.0, 18.0, 27.0, 36.0, 45.0, HALF_LENGTH,
+)
+"""x of the sample columns: goal lines, the penalty-area lines (|x| = 36) and 9 m steps."""
+EVEN_COLUMN_Y: tuple[float, ...] = (0.0, 12.0, 24.0, HALF_WIDTH)
+"""Ball y (left half) in even-numbered columns: centre line to touchline."""
+ODD_COLUMN_Y: tuple[float, ...] = (6.0, 18.0, 30.0)
+"""Ball y (left half) in odd-numbered columns, offset by half a spacing."""
+
+PLAYER_X_LIMIT = HALF_LENGTH - 1.0
+"""Players are kept this far inside the goal lines (|x|, metres)."""
+PLAYER_Y_LIMIT = HALF_WIDTH - 1.5
+"""Players are kept this far inside the touchlines (|y|, metres)."""
+SET_PLAY_DISTANCE = STANDARD_FIELD.centre_circle_radius + 0.5
+"""Distance kept from the ball at the opponents' set plays (rule: 9.15 m)."""
+KICK_OFF_MARGIN = 0.5
+"""At a kick-off (ball on the centre spot) players stand at x <= -this."""
+POSITION_DECIMALS = 2
+"""Positions are rounded to centimetres in the shipped files."""
+
+
+@dataclass(frozen=True)
+class Line:
+    """Depth of a line of players: ``clip(base + gain * bx, lo, hi)``, metres."""
+
+    base: float
+    gain: float
+    lo: float
+    hi: float
+
+    def depth(self, bx: float) -> float:
+        return min(max(self.base + self.gain * bx, self.lo), self.hi)
+
+
+@dataclass(frozen=True)
+class Style:
+    """How the team shapes itself in one situation."""
+
+    defence: Line
+    midfield: Line
+    attack: Line
+    width: float
+    """Multiplier of the lateral slots."""
+    wide_width: float
+    """Multiplier of the lateral slots of wide roles (full backs, wingers)."""
+    shift: dict[str, float]
+    """Per line, how much of the ball's y the line follows."""
+    full_back_push: float = 0.0
+    """Extra depth of full backs (metres), to overlap in attack."""
+    behind_ball: float | None = None
+    """If set, the back line stays this many metres behind the ball."""
+    kick_off: bool = False
+    """Keep everyone in our half when the ball is near the centre spot."""
+    keep_away: bool = False
+    """Keep outfield players SET_PLAY_DISTANCE from the ball."""
+
+
+@dataclass(frozen=True)
+class RoleDesign:
+    """A role and its place in the design."""
+
+    role: Role
+    line: str
+    """"goalkeeper", "defence", "midfield" or "attack"."""
+    slot: float = 0.0
+    """Nominal y, metres (+ to the left)."""
+    depth_offset: float = 0.0
+    """Metres ahead (+) of or behind (-) the line."""
+    wide: bool = False
+    full_back: bool = False
+
+
+NORMAL = Style(
+    defence=Line(-19.0, 0.5, -45.0, 10.0),
+    midfield=Line(-5.0, 0.55, -36.0, 28.0),
+    attack=Line(9.0, 0.55, -20.0, 42.0),
+    width=1.0,
+    wide_width=1.0,
+    shift={"defence": 0.35, "midfield": 0.45, "attack": 0.4},
+)
+ATTACK = Style(
+    defence=Line(-12.0, 0.55, -38.0, 20.0),
+    midfield=Line(2.0, 0.6, -28.0, 35.0),
+    attack=Line(15.0, 0.55, -12.0, 46.0),
+    width=1.15,
+    wide_width=1.35,
+    shift={"defence": 0.3, "midfield": 0.35, "attack": 0.3},
+    full_back_push=8.0,
+)
+DEFEND = Style(
+    defence=Line(-25.0, 0.45, -47.0, -2.0),
+    midfield=Line(-13.0, 0.5, -41.0, 12.0),
+    attack=Line(0.0, 0.45, -28.0, 26.0),
+    width=0.8,
+    wide_width=0.8,
+    shift={"defence": 0.45, "midfield": 0.55, "attack": 0.45},
+    behind_ball=4.0,
+)
+OUR_SET_PLAY = Style(**{**ATTACK.__dict__, "kick_off": True})
+THEIR_SET_PLAY = Style(**{**DEFEND.__dict__, "kick_off": True, "keep_away": True})
+
+STYLES: dict[Situation, Style] = {
+    Situation.NORMAL: NORMAL,
+    Situation.ATTACK: ATTACK,
+    Situation.DEFEND: DEFEND,
+    Situation.OUR_SET_PLAY: OUR_SET_PLAY,
+    Situation.THEIR_SET_PLAY: THEIR_SET_PLAY,
+}
+
+
+def _gk() -> RoleDesign:
+    return RoleDesign(Role(1, "goalkeeper", "goalkeeper"), "goalkeeper")
+
+
+@dataclass(frozen=True)
+class System:
+    """A playing system: its roles and a description."""
+
+    name: str
+    description: str
+    roles: tuple[RoleDesign, ...] = field(default_factory=tuple)
+
+
+SYSTEMS: dict[str, System] = {
+    "4-3-3": System(
+        "4-3-3",
+        "Four defenders, a holding midfielder with two central midfielders, two wingers and a centre forward.",
+        (
+            _gk(),
+            RoleDesign(Role(2, "right back", "defender", 3), "defence", -21.0, wide=True, full_back=True),
+            RoleDesign(Role(3, "left back", "defender", 2), "defence", 21.0, wide=True, full_back=True),
+            RoleDesign(Role(4, "right centre back", "defender", 5), "defence", -7.5),
+            RoleDesign(Role(5, "left centre back", "defender", 4), "defence", 7.5),
+            RoleDesign(Role(6, "defensive midfielder", "midfielder"), "midfield", 0.0, -6.0),
+            RoleDesign(Role(7, "right winger", "forward", 11), "attack", -23.0, -2.0, wide=True),
+            RoleDesign(Role(8, "right central midfielder", "midfielder", 10), "midfield", -13.0),
+            RoleDesign(Role(9, "centre forward", "forward"), "attack", 0.0, 2.0),
+            RoleDesign(Role(10, "left central midfielder", "midfielder", 8), "midfield", 13.0),
+            RoleDesign(Role(11, "left winger", "forward", 7), "attack", 23.0, -2.0, wide=True),
+        ),
+    ),
+    "4-4-2": System(
+        "4-4-2",
+        "Four defenders, a flat midfield four with wide midfielders, and two strikers.",
+        (
+            _gk(),
+            RoleDesign(Role(2, "right back", "defender", 3), "defence", -21.0, wide=True, full_back=True),
+            RoleDesign(Role(3, "left back", "defender", 2), "defence", 21.0, wide=True, full_back=True),
+            RoleDesign(Role(4, "right centre back", "defender", 5), "defence", -7.5),
+            RoleDesign(Role(5, "left centre back", "defender", 4), "defence", 7.5),
+            RoleDesign(Role(6, "right central midfielder", "midfielder", 8), "midfield", -8.0, -2.0),
+            RoleDesign(Role(7, "right midfielder", "midfielder", 11), "midfield", -24.0, wide=True),
+            RoleDesign(Role(8, "left central midfielder", "midfielder", 6), "midfield", 8.0, -2.0),
+            RoleDesign(Role(9, "right striker", "forward", 10), "attack", -7.0),
+            RoleDesign(Role(10, "left striker", "forward", 9), "attack", 7.0),
+            RoleDesign(Role(11, "left midfielder", "midfielder", 7), "midfield", 24.0, wide=True),
+        ),
+    ),
+}
+"""The built-in systems, by name."""
+
+
+def sample_balls_left_half() -> np.ndarray:
+    """(n, 2) ball positions of the design with y >= 0 (the rest are mirrored)."""
+    balls = []
+    for column, x in enumerate(SAMPLE_COLUMNS_X):
+        for y in EVEN_COLUMN_Y if column % 2 == 0 else ODD_COLUMN_Y:
+            balls.append((x, y))
+    return np.array(balls, dtype=np.float64)
+
+
+def goalkeeper_position(bx: float, by: float) -> tuple[float, float]:
+    """In the goal area: 1 m off the line, coming out a little as the ball advances."""
+    x = -HALF_LENGTH + 1.0 + 0.035 * (bx + HALF_LENGTH)
+    y = 0.12 * by
+    return x, y
+
+
+def role_position(design: RoleDesign, style: Style, bx: float, by: float) -> tuple[float, float]:
+    """Position of one role for ball (bx, by) in *style*, before set-play rules."""
+    if design.line == "goalkeeper":
+        return goalkeeper_position(bx, by)
+    line: Line = getattr(style, design.line)
+    x = line.depth(bx) + design.depth_offset
+    if design.full_back:
+        x += style.full_back_push
+    if design.line == "defence" and style.behind_ball is not None:
+        x = min(x, bx - style.behind_ball)
+    width = style.wide_width if design.wide else style.width
+    y = design.slot * width + style.shift[design.line] * by
+    return x, y
+
+
+def team_positions(system: System, style: Style, bx: float, by: float) -> np.ndarray:
+    """(11, 2) positions of *system* for ball (bx, by) in *style*."""
+    positions = np.array([role_position(d, style, bx, by) for d in system.roles])
+    outfield = np.array([d.line != "goalkeeper" for d in system.roles])
+    if style.kick_off:
+        # Near the centre spot everyone is in our half; the limit relaxes
+        # with the ball's distance from the spot, keeping positions continuous.
+        limit = -KICK_OFF_MARGIN + math.hypot(bx, by)
+        positions[outfield, 0] = np.minimum(positions[outfield, 0], limit)
+    if style.keep_away:
+        offset = positions - (bx, by)
+        distance = np.hypot(offset[:, 0], offset[:, 1])
+        close = outfield & (distance < SET_PLAY_DISTANCE)
+        safe = np.where(distance > 1e-9, distance, 1.0)
+        # Players on the ball itself step back towards our goal.
+        direction = np.where(distance[:, None] > 1e-9, offset / safe[:, None], (-1.0, 0.0))
+        positions[close] = (bx, by) + direction[close] * SET_PLAY_DISTANCE
+    positions[:, 0] = np.clip(positions[:, 0], -PLAYER_X_LIMIT, PLAYER_X_LIMIT)
+    positions[outfield, 1] = np.clip(positions[outfield, 1], -PLAYER_Y_LIMIT, PLAYER_Y_LIMIT)
+    return positions
+
+
+def design_formation(system: System, situation: Situation) -> Formation:
+    """The symmetric formation of *system* in *situation*."""
+    style = STYLES[situation]
+    balls = sample_balls_left_half()
+    positions = np.array([team_positions(system, style, bx, by) for bx, by in balls])
+    positions = np.round(positions, POSITION_DECIMALS) + 0.0  # + 0.0 turns -0.0 into 0.0
+    name = f"{system.name} {situation.value.replace('_', ' ')}"
+    half = Formation([d.role for d in system.roles], balls, positions, name=name, description=system.description)
+    return mirror_complete(half)
+
+
+def design_set(name: str) -> FormationSet:
+    """The built-in formation set *name* (one of :data:`SYSTEMS`)."""
+    system = SYSTEMS[name]
+    formations = {situation: design_formation(system, situation) for situation in Situation}
+    return FormationSet(system.name, formations, description=system.description)
+
+
+def data_directory() -> Path:
+    """Where the built-in sets are stored (inside the package)."""
+    return Path(__file__).resolve().parent / "data"
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Write every built-in set to ``formations/data/NAME.json`` (or --out DIR)."""
+    parser = argparse.ArgumentParser(description="Generate the built-in formation sets.")
+    parser.add_argument("--out", type=Path, default=data_directory(), help="output directory")
+    args = parser.parse_args(argv)
+    args.out.mkdir(parents=True, exist_ok=True)
+    for name in SYSTEMS:
+        path = args.out / f"{name}.json"
+        save(design_set(name), path)
+        print(f"wrote {path}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

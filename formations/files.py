@@ -1,0 +1,310 @@
+"""Reading and writing formations as JSON.
+
+The package's own layout (documented in ``docs/formations.md``) is one JSON
+object, either a single formation::
+
+    {"format": "soccer-sim-formation", "version": 1,
+     "name": "...", "description": "...",
+     "roles": [{"number": 1, "name": "goalkeeper", "kind": "goalkeeper"},
+               {"number": 2, "name": "right back", "kind": "defender", "partner": 3}, ...],
+     "samples": [{"ball": [x, y], "positions": {"1": [x, y], "2": [x, y], ...}}, ...]}
+
+or a formation set, whose ``formations`` maps situation names to objects with
+the same ``name``/``description``/``roles``/``samples`` members::
+
+    {"format": "soccer-sim-formation-set", "version": 1, "name": "4-3-3",
+     "description": "...", "formations": {"normal": {...}, "attack": {...}, ...}}
+
+Coordinates are metres in the team-relative frame (:mod:`formations.field`).
+:func:`load` also reads helios-base / agent2d JSON formation files (see
+:mod:`formations.helios`). Every problem is reported as a
+:class:`~formations.errors.FormationError` naming the file and the sample,
+role or formation at fault; a missing or unreadable file raises ``OSError``.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from formations.errors import FormationError
+from formations.formation import Formation
+from formations.formation_set import FormationSet
+from formations.roles import Role
+
+FORMAT_FORMATION = "soccer-sim-formation"
+"""Value of ``format`` in a single-formation file."""
+FORMAT_SET = "soccer-sim-formation-set"
+"""Value of ``format`` in a formation-set file."""
+FORMAT_VERSION = 1
+"""Layout version written by :func:`save` and the only one :func:`load` reads."""
+
+_FORMATION_KEYS = {"format", "version", "name", "description", "roles", "samples"}
+_SET_KEYS = {"format", "version", "name", "description", "formations"}
+_ROLE_KEYS = {"number", "name", "kind", "partner"}
+_SAMPLE_KEYS = {"ball", "positions"}
+
+
+# ----------------------------------------------------------------- reading
+def read_json(path: str | os.PathLike[str]) -> Any:
+    """Parse the JSON file at *path*; FormationError (naming the file) if it is not JSON."""
+    text = Path(path).read_text(encoding="utf-8")
+    try:
+        return json.loads(text)
+    except json.JSONDecodeError as error:
+        raise FormationError(
+            str(path), f"invalid JSON: {error.msg} (line {error.lineno}, column {error.colno})"
+        ) from None
+
+
+def read_any(path: str | os.PathLike[str]) -> Formation | FormationSet:
+    """Read a formation (our layout or helios-base's) or a formation set from *path*."""
+    from formations.helios import formation_from_helios, is_helios_layout
+
+    source = str(path)
+    document = read_json(path)
+    if not isinstance(document, dict):
+        raise FormationError(source, f"expected a JSON object at the top level, got {_json_type(document)}")
+    if is_helios_layout(document):
+        return formation_from_helios(document, source, name=Path(path).stem)
+    layout = document.get("format")
+    if layout == FORMAT_FORMATION:
+        return formation_from_dict(document, source)
+    if layout == FORMAT_SET:
+        return formation_set_from_dict(document, source)
+    raise FormationError(
+        source,
+        f"unknown layout: 'format' is {layout!r}, expected {FORMAT_FORMATION!r} or {FORMAT_SET!r} "
+        "(or a helios-base file with 'method': 'DelaunayTriangulation')",
+    )
+
+
+def load(path: str | os.PathLike[str]) -> Formation:
+    """Read one formation from *path*, in our JSON layout or helios-base's."""
+    result = read_any(path)
+    if isinstance(result, FormationSet):
+        raise FormationError(str(path), "this file holds a formation set; read it with formations.load_set")
+    return result
+
+
+def load_set(path: str | os.PathLike[str]) -> FormationSet:
+    """Read a formation set from *path* (our set layout)."""
+    result = read_any(path)
+    if not isinstance(result, FormationSet):
+        raise FormationError(str(path), "this file holds a single formation, not a formation set")
+    return result
+
+
+def formation_from_dict(document: dict[str, Any], source: str) -> Formation:
+    """Build a :class:`Formation` from the parsed JSON object of our layout."""
+    _check_version(document, source)
+    _reject_unknown_keys(document, _FORMATION_KEYS, source, None)
+    name = _optional_string(document, "name", source)
+    description = _optional_string(document, "description", source)
+    roles = _parse_roles(_require(document, "roles", list, source, None), source)
+    balls, positions = _parse_samples(_require(document, "samples", list, source, None), roles, source)
+    return Formation(roles, balls, positions, name=name, description=description, source=source)
+
+
+def formation_set_from_dict(document: dict[str, Any], source: str) -> FormationSet:
+    """Build a :class:`FormationSet` from the parsed JSON object of our set layout."""
+    _check_version(document, source)
+    _reject_unknown_keys(document, _SET_KEYS, source, None)
+    name = _optional_string(document, "name", source)
+    description = _optional_string(document, "description", source)
+    members = _require(document, "formations", dict, source, None)
+    formations: dict[str, Formation] = {}
+    for situation, member in members.items():
+        where = f"formation {situation!r}"
+        if not isinstance(member, dict):
+            raise FormationError(source, f"expected an object, got {_json_type(member)}", where)
+        try:
+            formations[situation] = formation_from_dict(member, source)
+        except FormationError as error:
+            raise error.within(where) from None
+    return FormationSet(name, formations, description=description, source=source)
+
+
+def _parse_roles(items: list[Any], source: str) -> list[Role]:
+    roles = []
+    for i, item in enumerate(items):
+        where = f"role entry {i}"
+        if not isinstance(item, dict):
+            raise FormationError(source, f"expected an object, got {_json_type(item)}", where)
+        number = item.get("number")
+        if isinstance(number, int) and not isinstance(number, bool):
+            where = f"role {number}"
+        _reject_unknown_keys(item, _ROLE_KEYS, source, where)
+        number = _require(item, "number", int, source, where)
+        name = _require(item, "name", str, source, where)
+        kind = _require(item, "kind", str, source, where)
+        partner = item.get("partner")
+        if partner is not None and (not isinstance(partner, int) or isinstance(partner, bool)):
+            raise FormationError(source, f"'partner' must be a role number or null, got {partner!r}", where)
+        roles.append(Role(number, name, kind, partner))
+    return roles
+
+
+def _parse_samples(items: list[Any], roles: list[Role], source: str) -> tuple[np.ndarray, np.ndarray]:
+    numbers = [role.number for role in roles]
+    keys = {str(n): j for j, n in enumerate(numbers)}
+    balls = np.empty((len(items), 2))
+    positions = np.empty((len(items), len(roles), 2))
+    for i, item in enumerate(items):
+        where = f"sample {i}"
+        if not isinstance(item, dict):
+            raise FormationError(source, f"expected an object, got {_json_type(item)}", where)
+        _reject_unknown_keys(item, _SAMPLE_KEYS, source, where)
+        balls[i] = _parse_point(_require(item, "ball", object, source, where), source, f"{where}, ball")
+        given = _require(item, "positions", dict, source, where)
+        for key in given:
+            if key not in keys:
+                raise FormationError(source, f"role {key} is not one of the declared roles {numbers}", where)
+        for key, j in keys.items():
+            if key not in given:
+                raise FormationError(source, f"missing the position of role {key}", where)
+            positions[i, j] = _parse_point(given[key], source, f"{where}, role {key}")
+    return balls, positions
+
+
+def _parse_point(value: Any, source: str, where: str) -> tuple[float, float]:
+    if not isinstance(value, list) or len(value) != 2:
+        raise FormationError(source, f"a position must be a list [x, y] of two numbers, got {value!r}", where)
+    return _number(value[0], source, where), _number(value[1], source, where)
+
+
+def _number(value: Any, source: str, where: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise FormationError(source, f"coordinate {value!r} is not a number", where)
+    number = float(value)
+    if not math.isfinite(number):
+        raise FormationError(source, f"coordinate {value!r} is not a finite number", where)
+    return number
+
+
+# ----------------------------------------------------------------- writing
+def formation_to_dict(formation: Formation, *, header: bool = True) -> dict[str, Any]:
+    """The JSON object of *formation* in our layout (``header`` adds format/version)."""
+    document: dict[str, Any] = {}
+    if header:
+        document.update(format=FORMAT_FORMATION, version=FORMAT_VERSION)
+    document["name"] = formation.name
+    document["description"] = formation.description
+    document["roles"] = [_role_to_dict(role) for role in formation.roles]
+    numbers = [str(role.number) for role in formation.roles]
+    document["samples"] = [
+        {
+            "ball": [float(ball[0]), float(ball[1])],
+            "positions": {n: [float(p[0]), float(p[1])] for n, p in zip(numbers, positions)},
+        }
+        for ball, positions in zip(formation.balls, formation.sample_positions)
+    ]
+    return document
+
+
+def formation_set_to_dict(formation_set: FormationSet) -> dict[str, Any]:
+    """The JSON object of *formation_set* in our set layout."""
+    return {
+        "format": FORMAT_SET,
+        "version": FORMAT_VERSION,
+        "name": formation_set.name,
+        "description": formation_set.description,
+        "formations": {
+            situation.value: formation_to_dict(formation, header=False)
+            for situation, formation in formation_set.own_formations().items()
+        },
+    }
+
+
+def dumps(item: Formation | FormationSet) -> str:
+    """JSON text of a formation or set: readable, one sample per line, floats round-trip exactly."""
+    if isinstance(item, FormationSet):
+        document = formation_set_to_dict(item)
+    elif isinstance(item, Formation):
+        document = formation_to_dict(item)
+    else:
+        raise TypeError(f"expected a Formation or FormationSet, got {type(item).__name__}")
+    return _format(document, 0) + "\n"
+
+
+def save(item: Formation | FormationSet, path: str | os.PathLike[str]) -> None:
+    """Write a formation or a formation set to *path* in our JSON layout."""
+    Path(path).write_text(dumps(item), encoding="utf-8")
+
+
+def _role_to_dict(role: Role) -> dict[str, Any]:
+    entry: dict[str, Any] = {"number": role.number, "name": role.name, "kind": role.kind}
+    if role.partner is not None:
+        entry["partner"] = role.partner
+    return entry
+
+
+def _format(value: Any, depth: int) -> str:
+    """Indent containers down to samples and roles, which stay on one line each."""
+    pad = "  " * (depth + 1)
+    if isinstance(value, dict) and not ({"ball", "positions"} <= value.keys() or "number" in value):
+        if not value:
+            return "{}"
+        items = [f"{pad}{json.dumps(k)}: {_format(v, depth + 1)}" for k, v in value.items()]
+        return "{\n" + ",\n".join(items) + "\n" + "  " * depth + "}"
+    if isinstance(value, list) and value and isinstance(value[0], dict):
+        items = [pad + _format(v, depth + 1) for v in value]
+        return "[\n" + ",\n".join(items) + "\n" + "  " * depth + "]"
+    return json.dumps(value, allow_nan=False)
+
+
+# ----------------------------------------------------------------- helpers
+def _check_version(document: dict[str, Any], source: str) -> None:
+    version = document.get("version", FORMAT_VERSION)
+    if version != FORMAT_VERSION:
+        raise FormationError(source, f"unsupported layout version {version!r} (this library reads {FORMAT_VERSION})")
+
+
+def _reject_unknown_keys(item: dict[str, Any], allowed: set[str], source: str, where: str | None) -> None:
+    unknown = sorted(set(item) - allowed)
+    if unknown:
+        raise FormationError(
+            source, f"unknown field(s) {', '.join(map(repr, unknown))} (allowed: {', '.join(sorted(allowed))})", where
+        )
+
+
+def _require(item: dict[str, Any], key: str, kind: type, source: str, where: str | None) -> Any:
+    if key not in item:
+        raise FormationError(source, f"missing field {key!r}", where)
+    value = item[key]
+    if kind is object:
+        return value
+    if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
+        raise FormationError(source, f"field {key!r} must be {_TYPE_NAMES[kind]}, got {_json_type(value)}", where)
+    return value
+
+
+def _optional_string(item: dict[str, Any], key: str, source: str) -> str:
+    value = item.get(key, "")
+    if not isinstance(value, str):
+        raise FormationError(source, f"field {key!r} must be a string, got {_json_type(value)}")
+    return value
+
+
+_TYPE_NAMES = {int: "an integer", str: "a string", list: "a list", dict: "an object", float: "a number"}
+
+
+def _json_type(value: Any) -> str:
+    if value is None:
+        return "null"
+    if isinstance(value, bool):
+        return "a boolean"
+    if isinstance(value, (int, float)):
+        return f"the number {value!r}"
+    if isinstance(value, str):
+        return f"the string {value!r}"
+    if isinstance(value, list):
+        return "a list"
+    if isinstance(value, dict):
+        return "an object"
+    return type(value).__name__
