@@ -369,44 +369,49 @@ class Referee:
         n = self._n
         mode = state.play_mode
         bx, by = float(state.ball[0]), float(state.ball[1])
-        teams = set()
-        for row in kickers.tolist():
+        rows = kickers.tolist()
+        for row in rows:
             team = HOME if row < n else AWAY
-            teams.add(team)
-            if self._offside_pending and self._offside[row]:
-                self.events.add(state.cycle, EventKind.KICK, team, row - team * n, bx, by, 0)
-                self._call_offside(state, row)
-                return
             self.events.add(state.cycle, EventKind.KICK, team, row - team * n, bx, by, 0)
-            self._received(state, row, bx, by)
-            state.last_touch = row
-        for team in sorted(teams):
+        if self._offside_pending:
+            for row in rows:
+                if self._offside[row]:
+                    self._call_offside(state, row)
+                    return
+        self._played(state, rows, state.last_touch, bx, by)
+        teams = sorted({HOME if row < n else AWAY for row in rows})
+        for team in teams:
             if self._is_shot(state, team, bx, by):
-                first = next(r for r in kickers.tolist() if (HOME if r < n else AWAY) == team)
-                self.events.add(state.cycle, EventKind.SHOT, team, first - team * n, bx, by, 0)
+                shooter = next(r for r in rows if (HOME if r < n else AWAY) == team)
+                self.events.add(state.cycle, EventKind.SHOT, team, shooter - team * n, bx, by, 0)
         if mode == _GOALIE_HOLDS:
             state.ball_holder = NO_PLAYER
-        kicked_team = next(iter(teams)) if len(teams) == 1 else NO_TEAM
         if mode != _PLAY_ON:
-            first = int(kickers[0])
+            first = rows[0]
             self._set_mode(state, _PLAY_ON, NO_TEAM, player=first - state.team_of(first) * n)
-        if self.config.rules.offside and kicked_team != NO_TEAM and mode in _OFFSIDE_MODES:
+        if self.config.rules.offside and len(teams) == 1 and mode in _OFFSIDE_MODES:
+            team = teams[0]
             self._offside_pending = mark_offside_positions(
-                state.pos, n, kicked_team, state.attack_direction(kicked_team), bx, kickers, self._offside)
+                state.pos, n, team, state.attack_direction(team), bx, kickers, self._offside)
         else:
             self._clear_offside()
 
-    def _received(self, state: WorldState, row: int, x: float, y: float) -> None:
-        """Player ``row`` played the ball: a PASS if the previous player on it was a team-mate."""
+    def _played(self, state: WorldState, rows: list[int], main: int, x: float, y: float) -> None:
+        """``rows`` (sorted) played the ball together this cycle, ``main`` (one of them if
+        possible) counting as the player now on the ball. A PASS event if the previous player
+        on the ball is a team-mate of ``main`` that is not among ``rows``."""
+        if main not in rows:
+            main = rows[0]
         prev = self._pass_from
         n = self._n
-        if prev != NO_PLAYER and prev != row and (prev < n) == (row < n):
-            team = HOME if row < n else AWAY
-            self.events.add(state.cycle, EventKind.PASS, team, prev - team * n, x, y, row - team * n)
-        self._pass_from = row
+        if prev != NO_PLAYER and prev not in rows and (prev < n) == (main < n):
+            team = HOME if main < n else AWAY
+            self.events.add(state.cycle, EventKind.PASS, team, prev - team * n, x, y, main - team * n)
+        self._pass_from = main
 
     def _judge_touches(self, state: WorldState, touchers: np.ndarray) -> None:
-        """Body touches in play on: offside, TOUCH and PASS events, last touch."""
+        """Body touches in play on: offside, TOUCH and PASS events, last touch (the toucher
+        nearest the ball when several touched it)."""
         rows = sorted(set(int(r) for r in touchers))
         n = self._n
         bx, by = float(state.ball[0]), float(state.ball[1])
@@ -421,13 +426,13 @@ class Referee:
             if row not in previous:
                 team = HOME if row < n else AWAY
                 self.events.add(state.cycle, EventKind.TOUCH, team, row - team * n, bx, by, 0)
-            self._received(state, row, bx, by)
         if len(rows) == 1:
-            state.last_touch = rows[0]
+            nearest = rows[0]
         else:
             d = np.hypot(state.pos[rows, 0] - bx, state.pos[rows, 1] - by)
-            state.last_touch = rows[int(np.argmin(d))]
-        self._pass_from = state.last_touch
+            nearest = rows[int(np.argmin(d))]
+        state.last_touch = nearest
+        self._played(state, rows, nearest, bx, by)
         self._touching = tuple(rows)
 
     def _is_shot(self, state: WorldState, team: int, bx: float, by: float) -> bool:
@@ -490,7 +495,7 @@ class Referee:
             return
         n = self._n
         self._clear_offside()
-        self._received(state, row, bx, by)
+        self._played(state, [row], row, bx, by)
         state.last_touch = row
         state.ball_holder = row
         state.ball_vel[:] = 0.0

@@ -1,0 +1,126 @@
+"""The goalkeeper's catch (area, penalty area, ban), holding time limit and release."""
+
+import pytest
+
+from soccer_sim.config import MatchConfig
+from soccer_sim.state import AWAY, HOME, NO_PLAYER, EventKind, PlayMode
+from tests.soccer_sim.referee_world import N, catch, config_with, kick, kinds, make_world, step
+
+CFG = MatchConfig()
+HL = CFG.field.half_length
+PA = CFG.field.penalty_area_length
+GK = 0  # home goalkeeper row; home defends -x in the first half
+
+
+def keeper_world(gk=(-48.0, 2.0), ball=(-47.0, 2.5), **kw):
+    return make_world(ball=ball, ball_vel=(-1.0, 0.2), moves={GK: gk}, last_touch=N + 9, **kw)
+
+
+def test_legal_catch_makes_the_goalkeeper_hold_the_ball():
+    ref, st, ev = keeper_world()
+    catch(ref, st, HOME)
+    assert (st.play_mode, st.mode_team, st.ball_holder) == (PlayMode.GOALIE_HOLDS, HOME, GK)
+    assert not st.ball_vel.any() and st.ball.tolist() == [-48.0, 2.0]
+    assert st.last_touch == GK
+    [(cycle, team, player, x, y, _)] = ev.of_kind(EventKind.CATCH)
+    assert (cycle, team, player, x, y) == (100, HOME, 0, -47.0, 2.5)
+    assert kinds(ev) == [EventKind.CATCH, EventKind.SET_PLAY]
+
+
+@pytest.mark.parametrize("distance, caught", [(CFG.rules.catch_length - 0.01, True), (CFG.rules.catch_length + 0.01, False)])
+def test_catch_reach_is_the_catch_length(distance, caught):
+    ref, st, ev = keeper_world(gk=(-45.0, 0.0), ball=(-45.0 + 0.6 * distance, 0.8 * distance))
+    catch(ref, st, HOME)
+    assert (st.play_mode == PlayMode.GOALIE_HOLDS) == caught
+
+
+@pytest.mark.parametrize("gk, ball", [
+    ((-HL + PA - 0.5, 0.0), (-HL + PA + 0.3, 0.0)),  # ball just outside the penalty area
+    ((-HL + PA + 0.3, 0.0), (-HL + PA - 0.5, 0.0)),  # goalkeeper just outside it
+    ((HL - 3.0, 0.0), (HL - 2.5, 0.0)),  # in the opponents' penalty area
+])
+def test_no_catch_outside_the_own_penalty_area(gk, ball):
+    ref, st, ev = keeper_world(gk=gk, ball=ball)
+    catch(ref, st, HOME)
+    assert st.play_mode == PlayMode.PLAY_ON and st.ball_holder == NO_PLAYER
+    assert EventKind.CATCH not in kinds(ev)
+
+
+def test_only_the_goalkeeper_of_the_requesting_team_catches():
+    ref, st, ev = keeper_world()
+    catch(ref, st, AWAY)  # the away goalkeeper is far away at the other end
+    assert st.play_mode == PlayMode.PLAY_ON
+
+
+def test_away_goalkeeper_catches_in_its_own_area_after_half_time():
+    ref, st, ev = make_world(ball=(-47.0, 0.0), home_attacks=-1, moves={N: (-47.5, 0.5)})
+    catch(ref, st, AWAY)
+    assert (st.play_mode, st.mode_team, st.ball_holder) == (PlayMode.GOALIE_HOLDS, AWAY, N)
+
+
+def test_catch_ban_after_a_failed_attempt():
+    ban = CFG.rules.catch_ban_cycles
+    ref, st, ev = keeper_world(ball=(-44.0, 2.0))  # out of reach: the attempt fails
+    catch(ref, st, HOME)
+    assert st.play_mode == PlayMode.PLAY_ON
+    st.ball[:] = (-47.5, 2.0)  # now within reach, but banned
+    for _ in range(ban):
+        step(ref, st)
+        catch(ref, st, HOME)
+        assert st.play_mode == PlayMode.PLAY_ON
+    step(ref, st)
+    catch(ref, st, HOME)
+    assert st.play_mode == PlayMode.GOALIE_HOLDS
+    assert ev.of_kind(EventKind.CATCH)[0][0] == 100 + ban + 1
+
+
+def test_no_catch_at_set_plays():
+    ref, st, ev = keeper_world(mode=PlayMode.FREE_KICK, mode_team=AWAY)
+    catch(ref, st, HOME)
+    assert st.play_mode == PlayMode.FREE_KICK and st.ball_holder == NO_PLAYER
+
+
+def test_holding_too_long_gives_the_opponents_a_free_kick_on_the_penalty_area_edge():
+    hold = 20
+    ref, st, ev = keeper_world(gk=(-40.0, 5.0), ball=(-40.5, 5.0), config=config_with(goalie_hold_cycles=hold))
+    catch(ref, st, HOME)  # at cycle 100: the goalkeeper may kick in cycles 101..120
+    for _ in range(hold + 1):  # the catch cycle 100, then 101..120
+        assert st.play_mode == PlayMode.GOALIE_HOLDS
+        step(ref, st)
+    assert (st.play_mode, st.mode_team, st.ball_holder) == (PlayMode.FREE_KICK, AWAY, NO_PLAYER)
+    # (-40, 5) is 3.5 m from the front line (x = -36) and 15.16 m from the side line.
+    assert st.ball.tolist() == [-HL + PA, 5.0]
+    assert ev.of_kind(EventKind.SET_PLAY)[-1][5] == int(PlayMode.FREE_KICK)
+
+
+def test_free_kick_after_holding_goes_to_the_nearer_side_line():
+    ref, st, ev = keeper_world(gk=(-50.0, -18.0), ball=(-50.0, -18.5), config=config_with(goalie_hold_cycles=1))
+    catch(ref, st, HOME)
+    step(ref, st)
+    step(ref, st)
+    assert st.ball.tolist() == [-50.0, -CFG.field.penalty_area_width / 2]
+
+
+def test_holding_goalkeeper_is_kept_inside_its_penalty_area():
+    ref, st, ev = keeper_world()
+    catch(ref, st, HOME)
+    st.pos[GK] = (-30.0, 25.0)  # walked out of the area
+    step(ref, st)
+    assert st.pos[GK].tolist() == [-HL + PA, CFG.field.penalty_area_width / 2]
+    assert st.ball.tolist() == st.pos[GK].tolist()
+
+
+def test_kicking_releases_the_ball():
+    ref, st, ev = keeper_world()
+    catch(ref, st, HOME)
+    step(ref, st)
+    kick(ref, st, [GK], (2.5, 0.0))
+    assert (st.play_mode, st.ball_holder) == (PlayMode.PLAY_ON, NO_PLAYER)
+    assert st.ball_vel.tolist() == [2.5, 0.0]
+    assert set(kinds(ev)) >= {EventKind.CATCH, EventKind.KICK}
+
+
+def test_goalkeeper_that_kicks_cannot_catch_in_the_same_cycle():
+    ref, st, ev = keeper_world()
+    kick(ref, st, [GK], (1.0, 0.0), catch=(True, False))
+    assert st.play_mode == PlayMode.PLAY_ON
