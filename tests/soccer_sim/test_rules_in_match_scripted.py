@@ -1,0 +1,196 @@
+"""The referee's rules in whole matches (physics included), played by small scripted teams.
+
+The teams work in their own frame (attacking +x); the assertions read the absolute-frame
+events and states the match produces.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from soccer_sim import AWAY, HOME, EventKind, MatchConfig, PlayMode, RuleConfig, TeamCommand, run_match
+
+STRIKER = 9
+RUNNER = 10
+
+
+def config(cycles: int, **rules) -> MatchConfig:
+    return replace(MatchConfig(), rules=replace(RuleConfig(), **rules), max_cycles=cycles)
+
+
+class Idle:
+    """Stands still; the goalkeeper optionally tries to catch every cycle and never lets go."""
+
+    def __init__(self, catch: bool = False) -> None:
+        self.catch = catch
+
+    def reset(self, side_info, config, rng) -> None:
+        n = side_info.players_per_team
+        self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)), catch=self.catch)
+
+    def act(self, view) -> TeamCommand:
+        return self.command
+
+
+class Keeper:
+    """Only the goalkeeper moves: it shadows the ball along a line 1.5 m in front of its goal
+    and asks to catch whenever the ball is within reach. It never lets go of a caught ball."""
+
+    def reset(self, side_info, config, rng) -> None:
+        n = side_info.players_per_team
+        self.goalie = side_info.goalie_index
+        self.line_x = -config.field.half_length + 1.5
+        self.reach = config.rules.catch_length
+        self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
+
+    def act(self, view) -> TeamCommand:
+        me = view.own_pos[self.goalie]
+        spot = np.array([self.line_x, np.clip(view.ball[1], -6.0, 6.0)])
+        self.command.dash[self.goalie] = (spot - me) * 100.0
+        self.command.catch = math.dist(me, view.ball) < self.reach
+        return self.command
+
+
+class Striker:
+    """Player STRIKER dribbles the ball towards ``target`` (own frame) and, once within
+    ``shoot_from`` metres of it, kicks it there as hard as it can. Optionally player RUNNER
+    first runs to ``runner_spot`` and the striker passes to it after ``pass_after`` cycles."""
+
+    def __init__(self, target, shoot_from: float = 30.0, runner_spot=None, pass_after: int = 10**9) -> None:
+        self.target = np.asarray(target, dtype=float)
+        self.shoot_from = shoot_from
+        self.runner_spot = None if runner_spot is None else np.asarray(runner_spot, dtype=float)
+        self.pass_after = pass_after
+
+    def reset(self, side_info, config, rng) -> None:
+        self.n = side_info.players_per_team
+        self.kick_max = config.physics.kick_speed_max
+        self.passed = False
+
+    def act(self, view) -> TeamCommand:
+        n = self.n
+        dash, kick = np.zeros((n, 2)), np.zeros((n, 2))
+        move = None
+        if view.play_mode == PlayMode.KICK_OFF:
+            move = view.own_pos.copy()
+            move[STRIKER] = (-0.6, 0.0)
+        to_ball = view.ball - view.own_pos[STRIKER]
+        dash[STRIKER] = to_ball * 100.0
+        if self.runner_spot is not None:
+            if not self.passed or view.play_mode != PlayMode.PLAY_ON:
+                dash[RUNNER] = (self.runner_spot - view.own_pos[RUNNER]) * 100.0
+            else:
+                dash[RUNNER] = (view.ball - view.own_pos[RUNNER]) * 100.0
+        if view.cycle >= self.pass_after and self.runner_spot is not None:
+            aim = view.own_pos[RUNNER]
+            speed = self.kick_max
+            self.passed = True
+        else:
+            aim = self.target
+            far = math.dist(view.ball, aim) > self.shoot_from
+            speed = 0.6 if far else self.kick_max
+        direction = aim - view.ball
+        length = float(np.linalg.norm(direction))
+        if length > 1e-6:
+            kick[STRIKER] = direction / length * speed - view.ball_vel
+        return TeamCommand(dash=dash, kick=kick, move=move)
+
+
+class ModeLog:
+    """Recorder: the play mode, its team and the ball at the end of every cycle."""
+
+    def on_start(self, match) -> None:
+        self.rows = []
+
+    def on_cycle(self, match) -> None:
+        st = match.state
+        self.rows.append((st.cycle - 1, st.play_mode, st.mode_team, float(st.ball[0]), float(st.ball[1])))
+
+    def on_end(self, match) -> None:
+        pass
+
+    def first(self, mode: PlayMode):
+        return next(row for row in self.rows if row[1] == mode)
+
+
+def events_of(result, kind):
+    return result.events.of_kind(kind)
+
+
+def test_striker_scores_and_the_conceding_team_kicks_off():
+    log = ModeLog()
+    result = run_match(Striker(target=(60.0, 4.0)), Idle(), seed=1, config=config(400), recorders=[log])
+    assert result.score[0] >= 1 and result.score[1] == 0
+    cycle, team, player, x, y, own_goal = events_of(result, EventKind.GOAL)[0]
+    assert (team, player, own_goal) == (HOME, STRIKER, 0)
+    assert x > 52.5 and abs(y) < 7.01
+    assert any(e[1] == HOME and e[2] == STRIKER and e[0] < cycle for e in events_of(result, EventKind.SHOT))
+    # The idle away team never takes its kick-off: the ball is dropped after the timeout.
+    after = [(c, k, t, d) for c, k, t, d in zip(result.events.cycle, result.events.kind, result.events.team,
+                                                result.events.detail) if c >= cycle]
+    assert after[1] == (cycle, EventKind.SET_PLAY, AWAY, PlayMode.KICK_OFF)
+    drop = events_of(result, EventKind.DROP_BALL)[0]
+    assert drop[0] == cycle + MatchConfig().rules.set_play_timeout
+    kick_off = [row for row in log.rows if row[0] == cycle][0]
+    assert kick_off[1:] == (PlayMode.KICK_OFF, AWAY, 0.0, 0.0)
+    state = result.state
+    assert state.play_mode == PlayMode.TIME_OVER and result.cycles == 400
+
+
+def test_kicking_the_ball_over_the_touchline_gives_the_opponents_a_kick_in():
+    log = ModeLog()
+    result = run_match(Striker(target=(20.0, 60.0), shoot_from=80.0), Idle(), seed=2, config=config(200), recorders=[log])
+    [out, *_] = events_of(result, EventKind.OUT)
+    cycle, team, player, x, y, line = out
+    assert (team, player, line) == (HOME, STRIKER, 0)
+    _, mode, mode_team, bx, by = [row for row in log.rows if row[0] == cycle][0]
+    assert (mode, mode_team) == (PlayMode.KICK_IN, AWAY)
+    assert by == 34.0 and bx == pytest.approx(x)
+
+
+def test_kicking_wide_over_the_goal_line_gives_a_goal_kick_and_ends_swap_at_half_time():
+    log = ModeLog()
+    result = run_match(Striker(target=(60.0, 20.0)), Idle(), seed=3, config=config(600, half_cycles=300), recorders=[log])
+    kicks = [row for row in log.rows if row[1] == PlayMode.GOAL_KICK]
+    assert kicks, "the ball never went out over the goal line"
+    first_half = [row for row in kicks if row[0] < 300]
+    second_half = [row for row in kicks if row[0] >= 300]
+    # Away defends +x in the first half and -x in the second: goal kicks at its goal-area corner.
+    assert first_half and all(row[2] == AWAY and (row[3], row[4]) == (47.0, 9.16) for row in first_half)
+    assert second_half and all(row[2] == AWAY and (row[3], row[4]) == (-47.0, -9.16) for row in second_half)
+    [half_time] = events_of(result, EventKind.HALF_TIME)
+    assert half_time[0] == 299
+    assert log.rows[299][1:3] == (PlayMode.KICK_OFF, AWAY)
+
+
+def test_goalkeeper_catches_a_shot_and_is_punished_for_holding_it():
+    hold = 30
+    log = ModeLog()
+    result = run_match(Striker(target=(60.0, 0.0)), Keeper(), seed=4,
+                       config=config(400, goalie_hold_cycles=hold), recorders=[log])
+    catches = events_of(result, EventKind.CATCH)
+    assert catches and catches[0][1:3] == (AWAY, 0)
+    caught_at = catches[0][0]
+    free_kick = log.first(PlayMode.FREE_KICK)
+    assert free_kick[0] == caught_at + hold and free_kick[2] == HOME
+    assert all(row[1] == PlayMode.GOALIE_HOLDS for row in log.rows[caught_at:caught_at + hold])
+    # The free kick is on the edge of the away penalty area (x = 36 in the first half).
+    assert free_kick[3] == pytest.approx(36.0) or abs(free_kick[4]) == pytest.approx(20.16)
+    assert EventKind.GOAL not in set(result.events.kind[: result.events.cycle.index(caught_at) + 1])
+
+
+@pytest.mark.parametrize("offside", [True, False])
+def test_pass_to_a_player_beyond_the_defence_is_offside_only_with_the_rule_on(offside):
+    team = Striker(target=(30.0, -10.0), shoot_from=0.0, runner_spot=(45.0, 15.0), pass_after=100)
+    result = run_match(team, Idle(), seed=5, config=config(200, offside=offside))
+    calls = events_of(result, EventKind.OFFSIDE)
+    if offside:
+        assert calls and calls[0][1:3] == (HOME, RUNNER)
+        assert calls[0][3] > 36.75  # beyond the second-last defender
+    else:
+        assert calls == []
+        assert any(e[1] == HOME and e[2] == STRIKER and e[5] == RUNNER for e in events_of(result, EventKind.PASS))
