@@ -37,6 +37,26 @@ def dense_to_graph(lengths_matrix: np.ndarray) -> tuple[np.ndarray, np.ndarray, 
     return indptr, indices, lengths
 
 
+@njit(cache=True, nogil=True)
+def sorted_pair_order(n_rows: int, rows: np.ndarray, cols: np.ndarray, lengths: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Return ``(indptr, order)``: ``order`` sorts pairs by row, then length, then target index."""
+    indptr = np.zeros(n_rows + 1, dtype=np.int64)
+    for e in range(rows.shape[0]):
+        indptr[rows[e] + 1] += 1
+    for r in range(n_rows):
+        indptr[r + 1] += indptr[r]
+    fill = indptr[:-1].copy()
+    order = np.empty(rows.shape[0], dtype=np.int64)
+    for e in range(rows.shape[0]):
+        order[fill[rows[e]]] = e
+        fill[rows[e]] += 1
+    for r in range(n_rows):
+        segment = order[indptr[r] : indptr[r + 1]]
+        by_col = segment[np.argsort(cols[segment], kind="mergesort")]
+        order[indptr[r] : indptr[r + 1]] = by_col[np.argsort(lengths[by_col], kind="mergesort")]
+    return indptr, order
+
+
 def pairs_to_graph(
     n_rows: int, rows: np.ndarray, cols: np.ndarray, lengths: np.ndarray, *extra: np.ndarray
 ) -> tuple[np.ndarray, ...]:
@@ -45,9 +65,7 @@ def pairs_to_graph(
     Returns ``(indptr, indices, lengths, *extra)`` with each row sorted by
     increasing length, ties by target index.
     """
-    order = np.lexsort((cols, lengths, rows))
-    indptr = np.zeros(n_rows + 1, dtype=np.int64)
-    np.cumsum(np.bincount(rows, minlength=n_rows), out=indptr[1:])
+    indptr, order = sorted_pair_order(n_rows, rows, cols, lengths)
     return (indptr, cols[order], lengths[order], *(array[order] for array in extra))
 
 
