@@ -35,7 +35,7 @@ import numpy as np
 from formations.errors import FormationError
 from formations.formation import Formation
 from formations.formation_set import FormationSet
-from formations.roles import Role
+from formations.roles import Role, check_roles
 
 FORMAT_FORMATION = "soccer-sim-formation"
 """Value of ``format`` in a single-formation file."""
@@ -107,6 +107,7 @@ def formation_from_dict(document: dict[str, Any], source: str) -> Formation:
     name = _optional_string(document, "name", source)
     description = _optional_string(document, "description", source)
     roles = _parse_roles(_require(document, "roles", list, source, None), source)
+    check_roles(roles, source)  # before the samples, which refer to the roles
     balls, positions = _parse_samples(_require(document, "samples", list, source, None), roles, source)
     return Formation(roles, balls, positions, name=name, description=description, source=source)
 

@@ -1,0 +1,126 @@
+"""Our JSON layout round-trips; helios-base files import."""
+
+from __future__ import annotations
+
+import copy
+import json
+
+import numpy as np
+import pytest
+
+import formations
+from formations import Formation, FormationError, FormationSet, Situation
+from formations.files import dumps
+
+from formation_samples import small_document
+
+
+def test_formation_round_trip_is_exact(tmp_path, random_formation):
+    path = tmp_path / "random.json"
+    random_formation.save(path)
+    loaded = formations.load(path)
+    assert loaded.roles == random_formation.roles
+    assert loaded.name == random_formation.name
+    assert np.array_equal(loaded.balls, random_formation.balls)
+    assert np.array_equal(loaded.sample_positions, random_formation.sample_positions)
+    assert dumps(loaded) == dumps(random_formation)
+
+
+def test_formation_set_round_trip(tmp_path):
+    original = formations.load_builtin("4-4-2")
+    path = tmp_path / "set.json"
+    formations.save(original, path)
+    loaded = formations.load_set(path)
+    assert loaded.name == "4-4-2" and loaded.situations == original.situations
+    for situation in Situation:
+        a, b = original.formation(situation), loaded.formation(situation)
+        assert np.array_equal(a.sample_positions, b.sample_positions)
+        assert np.array_equal(a.positions((12.5, -3.0)), b.positions((12.5, -3.0)))
+
+
+def test_layout_is_readable_one_sample_per_line(random_formation):
+    text = dumps(random_formation)
+    lines = text.splitlines()
+    sample_lines = [line for line in lines if line.strip().startswith('{"ball"')]
+    assert len(sample_lines) == random_formation.n_samples
+    assert json.loads(text)["format"] == "soccer-sim-formation"
+
+
+def test_small_document_loads(write_json):
+    formation = formations.load(write_json("small.json", small_document()))
+    assert formation.role_numbers == (1, 2, 3)
+    assert formation.role(2).partner == 3
+    np.testing.assert_allclose(formation.positions((30.0, 0.0))[1], (0.0, -15.0))
+
+
+def test_load_and_load_set_refuse_the_other_kind(tmp_path, write_json):
+    single = write_json("single.json", small_document())
+    with pytest.raises(FormationError, match="single.json.*not a formation set"):
+        formations.load_set(single)
+    set_path = tmp_path / "set.json"
+    formations.save(formations.load_builtin("4-3-3"), set_path)
+    with pytest.raises(FormationError, match="set.json.*formation set"):
+        formations.load(set_path)
+    assert isinstance(formations.read_any(set_path), FormationSet)
+
+
+# ----------------------------------------------------------------- helios
+HELIOS_ROLES = [
+    {"number": 1, "name": "Keeper", "type": "G", "side": "C", "pair": 0},
+    {"number": 2, "name": "BackLeft", "type": "DF", "side": "L", "pair": -1},
+    {"number": 3, "name": "BackRight", "type": "DF", "side": "R", "pair": 2},
+    {"number": 4, "name": "Stopper", "type": "DF", "side": "C", "pair": 0},
+    {"number": 5, "name": "MidLeft", "type": "MF", "side": "L", "pair": -1},
+    {"number": 6, "name": "MidRight", "type": "MF", "side": "R", "pair": 5},
+    {"number": 7, "name": "Pivot", "type": "MF", "side": "C", "pair": 0},
+    {"number": 8, "name": "Playmaker", "type": "MF", "side": "C", "pair": 0},
+    {"number": 9, "name": "WingLeft", "type": "FW", "side": "L", "pair": -1},
+    {"number": 10, "name": "WingRight", "type": "FW", "side": "R", "pair": 9},
+    {"number": 11, "name": "Target", "type": "FW", "side": "C", "pair": 0},
+]
+
+
+def helios_sample(index: int, bx: float, by: float) -> dict:
+    """A sample in the server frame (y to the right): the team shifts with the ball."""
+    base = {
+        1: (-50, 0), 2: (-30, -15), 3: (-30, 15), 4: (-35, 0), 5: (-10, -20), 6: (-10, 20),
+        7: (-15, 0), 8: (-5, 0), 9: (10, -25), 10: (10, 25), 11: (15, 0),
+    }
+    sample = {"index": index, "ball": {"x": bx, "y": by}}
+    for number, (x, y) in base.items():
+        gain = 0.0 if number == 1 else 0.5
+        sample[str(number)] = {"x": x + gain * bx, "y": y + 0.3 * by}
+    return sample
+
+
+def helios_document() -> dict:
+    balls = [(0, 0), (-40, -25), (-40, 25), (40, -25), (40, 25), (20, 0)]
+    return {
+        "version": "test",
+        "method": "DelaunayTriangulation",
+        "role": copy.deepcopy(HELIOS_ROLES),
+        "data": [helios_sample(i, x, y) for i, (x, y) in enumerate(balls)],
+    }
+
+
+def test_helios_layout_imports_with_y_mirrored_to_our_frame(write_json):
+    formation = formations.load(write_json("helios.json", helios_document()))
+    assert formation.name == "helios"
+    assert [r.kind for r in formation.roles][:2] == ["goalkeeper", "defender"]
+    assert formation.role(2).partner == 3 and formation.role(3).partner == 2
+    assert formation.role(9).partner == 10 and formation.role(4).partner is None
+    # Server y = -25 is to the player's left, which is +y in our frame.
+    assert (-40.0, 25.0) in [tuple(b) for b in formation.balls.tolist()]
+    left_back = formation.positions((0.0, 0.0))[formation.index_of(2)]
+    np.testing.assert_allclose(left_back, (-30.0, 15.0))
+    # At server ball (40, -25) the server wing-left stands at (30, -32.5): ours (30, 32.5).
+    np.testing.assert_allclose(formation.positions((40.0, 25.0))[formation.index_of(9)], (30.0, 32.5))
+
+
+def test_helios_import_then_save_round_trips(tmp_path, write_json):
+    imported = formations.load(write_json("helios.json", helios_document()))
+    out = tmp_path / "ours.json"
+    imported.save(out)
+    again = formations.load(out)
+    assert again.roles == imported.roles
+    assert np.array_equal(again.sample_positions, imported.sample_positions)
