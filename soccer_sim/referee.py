@@ -88,6 +88,13 @@ _OFFSIDE_MODES = frozenset({PlayMode.PLAY_ON, PlayMode.FREE_KICK, PlayMode.KICK_
 _NEVER = -(10**9)
 
 
+def _nearest_distance(block: np.ndarray, x: float, y: float) -> float:
+    """Distance from (x, y) to the nearest of the positions ``block`` ((k, 2))."""
+    dx = block[:, 0] - x
+    dy = block[:, 1] - y
+    return math.sqrt(float((dx * dx + dy * dy).min()))
+
+
 class Referee:
     """Applies the rules of the game to a :class:`WorldState`, recording events in ``events``.
 
@@ -105,6 +112,7 @@ class Referee:
         self._goal_x = f.half_length + p.ball_radius  # whole ball beyond the goal line
         self._touch_y = f.half_width + p.ball_radius  # whole ball beyond the touchline
         self._post_y = f.goal_width / 2.0
+        self._clearance = r.set_play_clearance
         self._kick_off_radius = max(r.set_play_clearance, f.centre_circle_radius)
         self._half_end = r.half_cycles
         self._match_end = config.total_cycles
@@ -287,23 +295,38 @@ class Referee:
         state.ball[0], state.ball[1] = sx, sy
         state.ball_vel[:] = 0.0
         n = self._n
-        team = state.mode_team
-        other = 1 - team
-        block = state.pos[other * n:(other + 1) * n]
+        other = 1 - state.mode_team
+        rows = slice(other * n, (other + 1) * n)
+        block = state.pos[rows]
         if state.play_mode == _KICK_OFF:
-            moved = np.zeros(2 * n, dtype=bool)
-            for t in (HOME, AWAY):
-                moved[t * n:(t + 1) * n] = keep_in_own_half(state.pos[t * n:(t + 1) * n], state.attack_direction(t))
-            direction = state.attack_direction(other)
-            moved[other * n:(other + 1) * n] |= push_out_of_circle(
-                block, sx, sy, self._kick_off_radius, (-float(direction), 0.0))
-            state.vel[moved] = 0.0
-        else:
-            moved = push_clear_of_spot(block, sx, sy, self.config.rules.set_play_clearance, self.config.field)
-            state.vel[other * n:(other + 1) * n][moved] = 0.0
+            self._keep_kick_off_positions(state, other, sx, sy)
+        elif _nearest_distance(block, sx, sy) < self._clearance:
+            moved = push_clear_of_spot(block, sx, sy, self._clearance, self.config.field)
+            state.vel[rows][moved] = 0.0
         if state.cycle - state.mode_start + 1 >= self.config.rules.set_play_timeout:
             self.events.add(state.cycle, EventKind.DROP_BALL, NO_TEAM, NO_PLAYER, sx, sy, int(state.play_mode))
             self._set_mode(state, _PLAY_ON, NO_TEAM)
+
+    def _keep_kick_off_positions(self, state: WorldState, other: int, sx: float, sy: float) -> None:
+        """Both teams in their own half (offenders put on the halfway line), the team not
+        kicking off outside the centre circle (pushed radially); moved players stop."""
+        n = self._n
+        pos = state.pos
+        home_x, away_x = pos[:n, 0], pos[n:, 0]
+        if state.home_attacks > 0:
+            wrong_half = home_x.max() > 0.0 or away_x.min() < 0.0
+        else:
+            wrong_half = home_x.min() < 0.0 or away_x.max() > 0.0
+        block = pos[other * n:(other + 1) * n]
+        if not wrong_half and _nearest_distance(block, sx, sy) >= self._kick_off_radius:
+            return
+        moved = np.zeros(2 * n, dtype=bool)
+        for t in (HOME, AWAY):
+            moved[t * n:(t + 1) * n] = keep_in_own_half(pos[t * n:(t + 1) * n], state.attack_direction(t))
+        direction = state.attack_direction(other)
+        moved[other * n:(other + 1) * n] |= push_out_of_circle(
+            block, sx, sy, self._kick_off_radius, (-float(direction), 0.0))
+        state.vel[moved] = 0.0
 
     def _half_time(self, state: WorldState) -> None:
         """Swap ends: every position and velocity rotated by 180°, away kicks off."""
