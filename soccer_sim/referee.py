@@ -21,11 +21,15 @@ Decisions where the rules leave room:
   that team, or a goal kick (never a corner) at a goal line.
 * **Last touch** is the last player that kicked the ball or whose body touched it; when
   several bodies touch it in one cycle the one nearest the ball afterwards counts.
+* **Restart spots** are chosen in :mod:`soccer_sim.restarts` (kick-in where the ball's
+  centre crossed the touchline, corner point, goal-area corner, penalty-area edge); the
+  free kick for offside is taken at the offender's position clamped into the field.
 * **Set plays** keep the ball on its spot until the mode team kicks it; body touches do not
-  take a set play. Opponents are pushed to ``set_play_clearance`` every cycle (at a kick-off
+  take a set play and are not judged (no TOUCH/PASS events, no last touch). Opponents are pushed to ``set_play_clearance`` every cycle (at a kick-off
   to the larger of that and the centre-circle radius); players pushed by the referee lose
   their velocity. There is no double-touch rule and opponents need not leave the penalty
-  area at a goal kick.
+  area at a goal kick. Free kicks are indirect in name only: a goal scored straight from
+  a free kick or a kick-off counts.
 * **Kick-off** positions: after a goal, players standing in the opponents' half are
   reflected across the halfway line; ``apply_moves`` targets are clamped onto it instead.
 * **Catch area.** A point robot has no orientation, so the catch rectangle
@@ -35,7 +39,9 @@ Decisions where the rules leave room:
   ball must both be inside the goalkeeper's own penalty area, the mode must be play on, and
   ``catch_ban_cycles`` must have passed since the last judged attempt (successful or not).
   A goalkeeper that kicks in a cycle cannot also catch in it. While holding, the goalkeeper
-  (and the ball) is kept inside its penalty area.
+  (and the ball) is kept inside its penalty area; opponents are not kept away, and the
+  held ball does not collide. Holding for ``goalie_hold_cycles`` cycles gives the opponents
+  a free kick on the nearest point of the penalty area's front or side line.
 * **Offside** is judged for kicks in play on, at free kicks, at kick-offs and by a
   goalkeeper releasing a held ball; kicks from kick-ins, corners and goal kicks, and cycles
   in which both teams kick, clear all marks instead.
@@ -43,7 +49,10 @@ Decisions where the rules leave room:
   own goal, then ``detail`` = 1). ``OUT``: team/player = last toucher, detail 0 for a
   touchline, 1 for a goal line. ``PASS``: team/player = passer, detail = receiver index.
   ``TOUCH``: a body touch, recorded once per continuous contact. ``SET_PLAY``: team = mode
-  team (NO_TEAM in play on), detail = the PlayMode value.
+  team (NO_TEAM in play on), player = the kicker when a kick started play on, detail = the
+  PlayMode value. ``DROP_BALL``: detail = the set play that timed out. ``OFFSIDE``: the
+  offender and its position. ``SHOT``: the first kicker of the shooting team (also has its
+  ``KICK`` event). Event positions are the ball's, absolute frame.
 """
 
 from __future__ import annotations
@@ -72,7 +81,6 @@ from soccer_sim.state import (
     HOME,
     NO_PLAYER,
     NO_TEAM,
-    SET_PLAYS,
     EventKind,
     EventLog,
     PlayMode,

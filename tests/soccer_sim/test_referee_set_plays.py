@@ -7,7 +7,7 @@ from soccer_sim.config import MatchConfig
 from soccer_sim.state import AWAY, HOME, NO_PLAYER, NO_TEAM, EventKind, EventLog, PlayMode, WorldState
 from soccer_sim.referee import Referee
 from tests.soccer_sim.referee_world import (
-    N, NO_TOUCH, config_with, default_positions, kick, kinds, make_world, set_play_modes, step,
+    N, config_with, default_positions, kick, kinds, make_world, set_play_modes, step,
 )
 
 CFG = MatchConfig()
