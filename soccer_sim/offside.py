@@ -9,11 +9,13 @@ marked player is penalised.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
 
 
 def mark_offside_positions(pos: np.ndarray, n: int, team: int, direction: int, ball_x: float,
-                           kickers: np.ndarray, out: np.ndarray) -> bool:
+                           kickers: Sequence[int] | np.ndarray, out: np.ndarray) -> bool:
     """Write into ``out`` ((2n,) bool) which players of ``team`` are in an offside position.
 
     ``pos`` is the (2n, 2) absolute player positions (home rows first), ``direction`` the
@@ -24,15 +26,17 @@ def mark_offside_positions(pos: np.ndarray, n: int, team: int, direction: int, b
     """
     own = slice(0, n) if team == 0 else slice(n, 2 * n)
     opp = slice(n, 2 * n) if team == 0 else slice(0, n)
-    depth = direction * pos[own, 0]  # distance towards the opponents' goal line
-    opp_depth = direction * pos[opp, 0]
     if n >= 2:
-        second_last = float(np.partition(opp_depth, n - 2)[n - 2])
+        # Second-last opponent: the second-largest depth among the opponents.
+        opp_x = pos[opp, 0]
+        second_last = (float(np.partition(opp_x, n - 2)[n - 2]) if direction > 0
+                       else -float(np.partition(opp_x, 1)[1]))
     else:
         second_last = float("inf")
+    # The offside line: the halfway line, the ball or the second-last opponent, whichever is deepest.
+    line = max(0.0, direction * ball_x, second_last)
     out[:] = False
     marks = out[own]
-    np.logical_and(depth > 0.0, depth > direction * ball_x, out=marks)
-    marks &= depth > second_last
+    np.greater(pos[own, 0] * direction, line, out=marks)
     out[kickers] = False
     return bool(marks.any())

@@ -215,7 +215,7 @@ class Referee:
         if state.play_mode == _TIME_OVER:
             return
         if has_kick:
-            self._judge_kicks(state, np.sort(np.asarray(kickers, dtype=np.int64)))
+            self._judge_kicks(state, sorted(int(row) for row in kickers))
         for team in (HOME, AWAY):
             if catch_requests[team]:
                 self._judge_catch(state, team, kickers)
@@ -395,12 +395,12 @@ class Referee:
 
     # ------------------------------------------------------------------ kicks, touches, passes
 
-    def _judge_kicks(self, state: WorldState, kickers: np.ndarray) -> None:
-        """KICK (and SHOT / PASS) events, set plays taken, held balls released, offside marks."""
+    def _judge_kicks(self, state: WorldState, rows: list[int]) -> None:
+        """KICK (and SHOT / PASS) events, set plays taken, held balls released, offside marks.
+        ``rows``: the kickers' rows, sorted."""
         n = self._n
         mode = state.play_mode
-        bx, by = float(state.ball[0]), float(state.ball[1])
-        rows = kickers.tolist()
+        bx, by = state.ball.tolist()
         for row in rows:
             team = HOME if row < n else AWAY
             self.events.add(state.cycle, EventKind.KICK, team, row - team * n, bx, by, 0)
@@ -423,7 +423,7 @@ class Referee:
         if self.config.rules.offside and len(teams) == 1 and mode in _OFFSIDE_MODES:
             team = teams[0]
             self._offside_pending = mark_offside_positions(
-                state.pos, n, team, state.attack_direction(team), bx, kickers, self._offside)
+                state.pos, n, team, state.attack_direction(team), bx, rows, self._offside)
         else:
             self._clear_offside()
 
