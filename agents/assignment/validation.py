@@ -29,7 +29,7 @@ def as_points(points: object, name: str) -> np.ndarray:
     if not np.isfinite(array).all():
         bad = np.argwhere(~np.isfinite(array))[0]
         raise AssignmentError(
-            f"{name}[{bad[0]}, {bad[1]}] is {array[bad[0], bad[1]]!r}: coordinates must be finite"
+            f"{name}[{bad[0]}, {bad[1]}] is {float(array[bad[0], bad[1]])}: coordinates must be finite"
         )
     return array
 
@@ -68,6 +68,6 @@ def as_costs(costs: object) -> np.ndarray:
         bad_mask = ~(matrix >= 0)
         i, j = np.argwhere(bad_mask)[0]
         value = matrix[i, j]
-        what = "NaN" if np.isnan(value) else f"negative ({value!r})"
+        what = "NaN" if np.isnan(value) else f"negative ({float(value)})"
         raise AssignmentError(f"costs[{i}, {j}] is {what}: costs must be >= 0, or +inf for a forbidden pair")
     return matrix

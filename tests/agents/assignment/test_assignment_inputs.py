@@ -1,0 +1,171 @@
+"""Front door behaviour: bad input, empty input, rectangular problems, determinism, names."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from agents.assignment import (
+    METHODS,
+    MMDR_ALGORITHMS,
+    AssignmentError,
+    AssignmentResult,
+    assign,
+    assign_costs,
+)
+
+ROBOTS = np.array([[0.0, 0.0], [10.0, 0.0], [5.0, 5.0]])
+TARGETS = np.array([[9.0, 1.0], [1.0, 1.0], [5.0, 4.0]])
+
+
+def test_methods_are_exactly_the_documented_names():
+    assert METHODS == ("mmdr", "mmd+msd2", "msd", "msd2", "bottleneck", "greedy", "random")
+    assert MMDR_ALGORITHMS == ("fast", "bitvector", "dp", "brute")
+
+
+def test_small_example_and_summary_figures():
+    result = assign(ROBOTS, TARGETS, "mmdr")
+    assert isinstance(result, AssignmentResult)
+    assert result.target_of.tolist() == [1, 0, 2]
+    np.testing.assert_allclose(result.distances, [np.sqrt(2), np.sqrt(2), 1.0])
+    assert result.makespan == pytest.approx(np.sqrt(2))
+    assert result.total == pytest.approx(2 * np.sqrt(2) + 1)
+    assert result.total_squared == pytest.approx(5.0)
+    assert result.method == "mmdr"
+
+
+def test_alias_and_lists_are_accepted():
+    a = assign(ROBOTS.tolist(), TARGETS.tolist(), "mmd-msd2")
+    b = assign(ROBOTS, TARGETS, "mmd+msd2")
+    assert a.method == b.method == "mmd+msd2"
+    assert a.target_of.tolist() == b.target_of.tolist()
+    ints = assign(ROBOTS.astype(int), TARGETS.astype(np.float32), "mmdr")
+    assert ints.target_of.tolist() == [1, 0, 2]
+
+
+@pytest.mark.parametrize(
+    ("robots", "targets", "message"),
+    [
+        ([[0.0, np.nan]], [[1.0, 1.0]], r"robots\[0, 1\] is nan"),
+        ([[0.0, 0.0]], [[1.0, np.inf]], r"targets\[0, 1\] is inf"),
+        ([0.0, 1.0], [[1.0, 1.0]], r"robots must have shape \(count, d\)"),
+        (np.zeros((2, 2, 2)), [[1.0, 1.0]], r"robots must have shape \(count, d\)"),
+        ([[0.0, 0.0]], [[1.0, 1.0, 1.0]], "2-dimensional but targets are 3-dimensional"),
+        ([["a", "b"]], [[1.0, 1.0]], "robots must be an array of numbers"),
+    ],
+)
+def test_bad_points_are_rejected_with_a_message(robots, targets, message):
+    with pytest.raises(AssignmentError, match=message):
+        assign(robots, targets)
+    with pytest.raises(ValueError):
+        assign(robots, targets)
+
+
+@pytest.mark.parametrize(
+    ("costs", "message"),
+    [
+        ([[1.0, np.nan]], r"costs\[0, 1\] is NaN"),
+        ([[1.0, -2.0]], r"costs\[0, 1\] is negative"),
+        ([[1.0, -np.inf]], r"costs\[0, 1\] is negative"),
+        ([1.0, 2.0], "costs must be a 2-D matrix"),
+        ([[1.0, np.inf], [2.0, np.inf]], "no feasible complete assignment.*at most 1 of the 2 robots"),
+        ([[np.inf, np.inf, np.inf], [1.0, 2.0, 3.0]], "no feasible complete assignment"),
+        ([[np.inf, 1.0, 1.0], [np.inf, 1.0, 1.0], [np.inf, 1.0, 1.0]], "at most 2 of the 3"),
+    ],
+)
+def test_bad_costs_are_rejected_with_a_message(costs, message):
+    for method in METHODS:
+        with pytest.raises(AssignmentError, match=message):
+            assign_costs(costs, method, rng=0)
+
+
+def test_unknown_names_list_the_valid_ones():
+    with pytest.raises(AssignmentError, match="unknown assignment method 'hungarian'.*mmdr, mmd\\+msd2, msd"):
+        assign(ROBOTS, TARGETS, "hungarian")
+    with pytest.raises(AssignmentError, match="unknown mmdr algorithm 'magic'.*fast, bitvector, dp, brute"):
+        assign(ROBOTS, TARGETS, "mmdr", algorithm="magic")
+    with pytest.raises(AssignmentError, match="only applies to method 'mmdr'"):
+        assign(ROBOTS, TARGETS, "msd", algorithm="fast")
+    with pytest.raises(AssignmentError, match="needs rng="):
+        assign(ROBOTS, TARGETS, "random")
+
+
+def test_size_limits_of_the_reference_algorithms():
+    rng = np.random.default_rng(0)
+    with pytest.raises(AssignmentError, match="brute force would enumerate"):
+        assign(rng.random((9, 2)), rng.random((9, 2)), "mmdr", algorithm="brute")
+    with pytest.raises(AssignmentError, match="at most 20 targets"):
+        assign(rng.random((3, 2)), rng.random((21, 2)), "mmdr", algorithm="dp")
+
+
+@pytest.mark.parametrize("method", METHODS)
+@pytest.mark.parametrize(("n", "m"), [(0, 0), (0, 3), (3, 0)])
+def test_empty_problems_give_empty_results(method, n, m):
+    result = assign(np.zeros((n, 2)), np.zeros((m, 2)), method, rng=0)
+    assert result.target_of.tolist() == [-1] * n
+    assert np.isnan(result.distances).all() and result.distances.shape == (n,)
+    assert result.makespan == 0.0 and result.total == 0.0
+    assert assign([], [], method, rng=0).target_of.shape == (0,)
+    assert assign_costs(np.zeros((n, m)), method, rng=0).target_of.shape == (n,)
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_rectangular_problems(method):
+    rng = np.random.default_rng(3)
+    robots, targets = rng.uniform(0, 10, (7, 2)), rng.uniform(0, 10, (4, 2))
+    more_robots = assign(robots, targets, method, rng=1)
+    served = more_robots.target_of >= 0
+    assert sorted(more_robots.target_of[served].tolist()) == [0, 1, 2, 3]
+    assert (more_robots.target_of[~served] == -1).all() and np.isnan(more_robots.distances[~served]).all()
+    more_targets = assign(targets, robots, method, rng=1)
+    assert (more_targets.target_of >= 0).all() and len(set(more_targets.target_of.tolist())) == 4
+    if method != "random":
+        # The same pairs, seen from the other side.
+        pairs_a = {(i, int(j)) for i, j in enumerate(more_robots.target_of) if j >= 0}
+        pairs_b = {(int(j), i) for i, j in enumerate(more_targets.target_of)}
+        if method not in ("greedy",):  # greedy's tie order depends on the side, the rest are unique here
+            assert pairs_a == pairs_b
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_same_input_same_output(method):
+    rng = np.random.default_rng(11)
+    robots = rng.integers(0, 4, (9, 2)).astype(float)  # many ties
+    targets = rng.integers(0, 4, (9, 2)).astype(float)
+    first = assign(robots, targets, method, rng=5)
+    for _ in range(3):
+        again = assign(robots.copy(), targets.copy(), method, rng=5)
+        np.testing.assert_array_equal(again.target_of, first.target_of)
+
+
+def test_random_depends_on_the_seed_only():
+    rng = np.random.default_rng(0)
+    robots, targets = rng.random((20, 2)), rng.random((20, 2))
+    a = assign(robots, targets, "random", rng=1).target_of
+    b = assign(robots, targets, "random", rng=np.random.default_rng(1)).target_of
+    c = assign(robots, targets, "random", rng=2).target_of
+    np.testing.assert_array_equal(a, b)
+    assert not np.array_equal(a, c)
+    assert sorted(a.tolist()) == list(range(20))
+
+
+def test_forbidden_pairs_are_never_used():
+    costs = np.array([[1.0, np.inf, 5.0], [np.inf, 1.0, np.inf], [2.0, 2.0, np.inf]])
+    for method in METHODS:
+        for algorithm in (MMDR_ALGORITHMS if method == "mmdr" else (None,)):
+            result = assign_costs(costs, method, algorithm=algorithm, rng=3)
+            assert result.target_of.tolist() == [2, 1, 0], (method, algorithm)
+            assert result.distances.tolist() == [5.0, 1.0, 2.0]
+
+
+def test_greedy_completes_around_forbidden_pairs():
+    # Greedy takes (0, 0) first, which would leave robot 1 with no allowed target.
+    costs = np.array([[1.0, 2.0], [3.0, np.inf]])
+    assert assign_costs(costs, "greedy").target_of.tolist() == [1, 0]
+
+
+def test_three_dimensional_and_one_dimensional_points():
+    robots = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 10.0]])
+    targets = np.array([[0.0, 1.0, 10.0], [0.0, 1.0, 0.0]])
+    assert assign(robots, targets, "mmdr").target_of.tolist() == [1, 0]
+    assert assign([[0.0], [5.0]], [[6.0], [1.0]], "mmdr").target_of.tolist() == [1, 0]
