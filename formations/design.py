@@ -251,17 +251,26 @@ def team_positions(system: System, style: Style, bx: float, by: float) -> np.nda
         # with the ball's distance from the spot, keeping positions continuous.
         limit = -KICK_OFF_MARGIN + math.hypot(bx, by)
         positions[outfield, 0] = np.minimum(positions[outfield, 0], limit)
-    if style.keep_away:
-        offset = positions - (bx, by)
-        distance = np.hypot(offset[:, 0], offset[:, 1])
-        close = outfield & (distance < SET_PLAY_DISTANCE)
-        safe = np.where(distance > 1e-9, distance, 1.0)
-        # Players on the ball itself step back towards our goal.
-        direction = np.where(distance[:, None] > 1e-9, offset / safe[:, None], (-1.0, 0.0))
-        positions[close] = (bx, by) + direction[close] * SET_PLAY_DISTANCE
     positions[:, 0] = np.clip(positions[:, 0], -PLAYER_X_LIMIT, PLAYER_X_LIMIT)
     positions[outfield, 1] = np.clip(positions[outfield, 1], -PLAYER_Y_LIMIT, PLAYER_Y_LIMIT)
+    if style.keep_away:
+        _keep_away_from_ball(positions, outfield, bx, by)
     return positions
+
+
+_CIRCLE = np.column_stack((np.cos(np.linspace(0, 2 * np.pi, 720, endpoint=False)),
+                           np.sin(np.linspace(0, 2 * np.pi, 720, endpoint=False))))
+
+
+def _keep_away_from_ball(positions: np.ndarray, movable: np.ndarray, bx: float, by: float) -> None:
+    """Move movable players closer than SET_PLAY_DISTANCE to the ball onto the
+    nearest point of that circle that lies inside the players' limits."""
+    ring = (bx, by) + SET_PLAY_DISTANCE * _CIRCLE
+    inside = (np.abs(ring[:, 0]) <= PLAYER_X_LIMIT) & (np.abs(ring[:, 1]) <= PLAYER_Y_LIMIT)
+    ring = ring[inside]
+    distance = np.hypot(positions[:, 0] - bx, positions[:, 1] - by)
+    for i in np.flatnonzero(movable & (distance < SET_PLAY_DISTANCE)):
+        positions[i] = ring[np.argmin(np.hypot(*(ring - positions[i]).T))]
 
 
 def design_formation(system: System, situation: Situation) -> Formation:
