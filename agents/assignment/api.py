@@ -13,7 +13,7 @@ import numpy as np
 
 from .baselines import greedy_assignment, min_sum_assignment, random_assignment
 from .errors import AssignmentError
-from .geometry import dense_distances
+from .geometry import dense_distances, pair_squared_distances
 from .graphs import dense_to_graph
 from .lexicographic_reference import bitvector_assignment, brute_force_assignment, subset_dp_assignment
 from .matching import maximum_matching
@@ -157,6 +157,10 @@ def assign(
             key, sparse.sparse_bottleneck
         )
         col_of_row, length_of_row = solver(np.ascontiguousarray(rows), np.ascontiguousarray(cols))
+        return _result(col_of_row, length_of_row, transposed, n, m, name)
+    if key == "random" and rng is not None:  # needs no distance matrix
+        col_of_row = np.random.default_rng(rng).permutation(cols.shape[0])[:n_rows]
+        length_of_row = np.sqrt(pair_squared_distances(rows, cols, np.arange(n_rows), col_of_row))
         return _result(col_of_row, length_of_row, transposed, n, m, name)
     lengths, squared = dense_distances(rows, cols)
     col_of_row = _solve_dense(key, lengths, squared, rng)
