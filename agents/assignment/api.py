@@ -79,15 +79,17 @@ def _solve_dense(key: str, lengths: np.ndarray, squared: np.ndarray, rng: object
     return _MMDR_SOLVERS[key[5:]](lengths)
 
 
-def _check_feasible(lengths: np.ndarray) -> None:
-    """Raise unless the finite entries of ``lengths`` (rows <= cols) admit a complete assignment."""
+def _check_feasible(lengths: np.ndarray, side: str) -> None:
+    """Raise unless the finite entries of ``lengths`` (rows <= cols) admit a complete assignment.
+
+    ``side`` names what the rows are ("robots", or "targets" for a transposed problem).
+    """
     indptr, indices, pair_lengths = dense_to_graph(lengths)
     n_rows, n_cols = lengths.shape
     col_of_row = np.full(n_rows, -1, dtype=np.int64)
     row_of_col = np.full(n_cols, -1, dtype=np.int64)
     size = maximum_matching(indptr, indices, pair_lengths, np.inf, col_of_row, row_of_col)
     if size < n_rows:
-        side = "robots" if n_rows == lengths.shape[0] else "targets"
         raise AssignmentError(
             f"no feasible complete assignment: the allowed (finite-cost) pairs let at most "
             f"{size} of the {n_rows} {side} be matched"
@@ -136,8 +138,11 @@ def assign(
     """
     key = _method_key(method, algorithm)
     name = key[:4] if key.startswith("mmdr") else key
+    # Fast path for clean float64 arrays (the simulator's case); anything else goes through validation.
     r = robots if type(robots) is np.ndarray and robots.dtype == np.float64 and robots.ndim == 2 else None
     t = targets if type(targets) is np.ndarray and targets.dtype == np.float64 and targets.ndim == 2 else None
+    if r is not None and t is not None and not (r.flags.c_contiguous and t.flags.c_contiguous):
+        r = None
     if r is None or t is None or r.shape[1] != t.shape[1] or not (
         np.isfinite(r).all() and np.isfinite(t).all()
     ):
@@ -197,6 +202,6 @@ def assign_costs(
     transposed = n > m
     lengths = np.ascontiguousarray(matrix.T) if transposed else matrix
     if not np.isfinite(lengths).all():
-        _check_feasible(lengths)
+        _check_feasible(lengths, "targets" if transposed else "robots")
     col_of_row = _solve_dense(key, lengths, lengths * lengths, rng)
     return _result(col_of_row, lengths[np.arange(lengths.shape[0]), col_of_row], transposed, n, m, name)

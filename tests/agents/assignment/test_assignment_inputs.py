@@ -70,7 +70,8 @@ def test_bad_points_are_rejected_with_a_message(robots, targets, message):
         ([1.0, 2.0], "costs must be a 2-D matrix"),
         ([[1.0, np.inf], [2.0, np.inf]], "no feasible complete assignment.*at most 1 of the 2 robots"),
         ([[np.inf, np.inf, np.inf], [1.0, 2.0, 3.0]], "no feasible complete assignment"),
-        ([[np.inf, 1.0, 1.0], [np.inf, 1.0, 1.0], [np.inf, 1.0, 1.0]], "at most 2 of the 3"),
+        ([[np.inf, 1.0, 1.0], [np.inf, 1.0, 1.0], [np.inf, 1.0, 1.0]], "at most 2 of the 3 robots"),
+        ([[np.inf, np.inf], [np.inf, 1.0], [np.inf, 2.0]], "at most 1 of the 2 targets"),
     ],
 )
 def test_bad_costs_are_rejected_with_a_message(costs, message):
@@ -169,3 +170,11 @@ def test_three_dimensional_and_one_dimensional_points():
     targets = np.array([[0.0, 1.0, 10.0], [0.0, 1.0, 0.0]])
     assert assign(robots, targets, "mmdr").target_of.tolist() == [1, 0]
     assert assign([[0.0], [5.0]], [[6.0], [1.0]], "mmdr").target_of.tolist() == [1, 0]
+
+
+def test_non_contiguous_and_read_only_arrays():
+    robots = np.asfortranarray(ROBOTS)
+    targets = np.array(TARGETS.T).T  # a transposed view, not C-contiguous
+    targets.flags.writeable = False
+    assert assign(robots, targets, "mmdr").target_of.tolist() == [1, 0, 2]
+    assert assign(robots[::1], targets, "mmd+msd2").target_of.tolist() == [1, 0, 2]
