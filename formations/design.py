@@ -50,7 +50,19 @@ HALF_LENGTH = STANDARD_FIELD.half_length
 HALF_WIDTH = STANDARD_FIELD.half_width
 
 SAMPLE_COLUMNS_X: tuple[float, ...] = (
-    -HALF_LENGTH, -45.0, -36.0, -27.0, -18.0, -9.0, 0.0, 9.0, 18.0, 27.0, 36.0, 45.0, HALF_LENGTH,
+    -HALF_LENGTH,
+    -45.0,
+    -36.0,
+    -27.0,
+    -18.0,
+    -9.0,
+    0.0,
+    9.0,
+    18.0,
+    27.0,
+    36.0,
+    45.0,
+    HALF_LENGTH,
 )
 """x of the sample columns: goal lines, the penalty-area lines (|x| = 36) and 9 m steps."""
 EVEN_COLUMN_Y: tuple[float, ...] = (0.0, 12.0, 24.0, HALF_WIDTH)
@@ -258,8 +270,9 @@ def team_positions(system: System, style: Style, bx: float, by: float) -> np.nda
     return positions
 
 
-_CIRCLE = np.column_stack((np.cos(np.linspace(0, 2 * np.pi, 720, endpoint=False)),
-                           np.sin(np.linspace(0, 2 * np.pi, 720, endpoint=False))))
+_CIRCLE = np.column_stack(
+    (np.cos(np.linspace(0, 2 * np.pi, 720, endpoint=False)), np.sin(np.linspace(0, 2 * np.pi, 720, endpoint=False)))
+)
 
 
 def _keep_away_from_ball(positions: np.ndarray, movable: np.ndarray, bx: float, by: float) -> None:

@@ -48,9 +48,7 @@ def formation_from_helios(document: dict[str, Any], source: str, *, name: str = 
     """Convert a parsed helios-base JSON formation into a :class:`Formation`."""
     method = document.get("method")
     if method != HELIOS_METHOD:
-        raise FormationError(
-            source, f"helios formation method {method!r} is not supported (only {HELIOS_METHOD!r})"
-        )
+        raise FormationError(source, f"helios formation method {method!r} is not supported (only {HELIOS_METHOD!r})")
     role_items = document.get("role")
     if not isinstance(role_items, list):
         raise FormationError(source, "missing 'role' list")
@@ -146,7 +144,7 @@ def _parse_data(items: list[Any], source: str) -> tuple[np.ndarray, np.ndarray]:
 
 def _point(value: Any, source: str, where: str) -> tuple[float, float]:
     if not isinstance(value, dict) or "x" not in value or "y" not in value:
-        raise FormationError(source, f"a position must be an object {{\"x\": ..., \"y\": ...}}, got {value!r}", where)
+        raise FormationError(source, f'a position must be an object {{"x": ..., "y": ...}}, got {value!r}', where)
     coords = []
     for axis in ("x", "y"):
         v = value[axis]

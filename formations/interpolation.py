@@ -59,7 +59,9 @@ class TriangleInterpolator:
         self._affine = _affine_maps(simplices, transform, self.values)
         self._affine_list = list(self._affine)
         self._affine_transposed = np.ascontiguousarray(self._affine.transpose(0, 2, 1))
-        self._bary = [tuple(float(v) for v in (t[0, 0], t[0, 1], t[1, 0], t[1, 1], t[2, 0], t[2, 1])) for t in transform]
+        self._bary = [
+            tuple(float(v) for v in (t[0, 0], t[0, 1], t[1, 0], t[1, 1], t[2, 0], t[2, 1])) for t in transform
+        ]
         self._build_grid(tri.points)
         self._build_hull(tri)
 
@@ -268,9 +270,14 @@ class TriangleInterpolator:
         best_d2 = np.full(k, np.inf)
         for j in range(int(count.max(initial=0))):
             rows = np.flatnonzero(count > j)
-            edge = np.where(in_grid[rows], self._cell_edge_table[cell[rows], min(j, self._cell_edge_table.shape[1] - 1)], j)
+            edge = np.where(
+                in_grid[rows], self._cell_edge_table[cell[rows], min(j, self._cell_edge_table.shape[1] - 1)], j
+            )
             s, d2 = _nearest_on_segments(
-                points[rows, 0], points[rows, 1], self._hull_start[edge], self._hull_delta[edge],
+                points[rows, 0],
+                points[rows, 1],
+                self._hull_start[edge],
+                self._hull_delta[edge],
                 self._hull_inv_length2[edge],
             )
             better = d2 < best_d2[rows]

@@ -35,13 +35,31 @@ def draw_field(ax: Any, field: FieldDimensions = STANDARD_FIELD) -> None:
     ax.add_patch(Circle((0, 0), field.centre_circle_radius, **line))
     for sign in (-1.0, 1.0):
         goal_line = sign * hl
-        for depth, width in ((field.penalty_area_depth, field.penalty_area_width), (field.goal_area_depth, field.goal_area_width)):
+        for depth, width in (
+            (field.penalty_area_depth, field.penalty_area_width),
+            (field.goal_area_depth, field.goal_area_width),
+        ):
             x = goal_line if sign < 0 else goal_line - depth
             ax.add_patch(Rectangle((x, -width / 2), depth, width, **line))
-        ax.add_patch(Rectangle((goal_line if sign > 0 else goal_line - 1.5, -field.goal_width / 2), 1.5, field.goal_width, **line))
+        ax.add_patch(
+            Rectangle(
+                (goal_line if sign > 0 else goal_line - 1.5, -field.goal_width / 2), 1.5, field.goal_width, **line
+            )
+        )
         spot = goal_line - sign * 11.0
         ax.plot([spot], [0], marker=".", color="white", zorder=1)
-        ax.add_patch(Arc((spot, 0), 18.3, 18.3, theta1=(-53 if sign < 0 else 127), theta2=(53 if sign < 0 else 233), edgecolor="white", linewidth=1.2, zorder=1))
+        ax.add_patch(
+            Arc(
+                (spot, 0),
+                18.3,
+                18.3,
+                theta1=(-53 if sign < 0 else 127),
+                theta2=(53 if sign < 0 else 233),
+                edgecolor="white",
+                linewidth=1.2,
+                zorder=1,
+            )
+        )
     ax.set_xlim(-hl - 6, hl + 6)
     ax.set_ylim(-hw - 5, hw + 5)
     ax.set_aspect("equal")
@@ -65,9 +83,23 @@ def draw_formation(ax: Any, formation: Formation, ball_xy: tuple[float, float]) 
     ax.plot([bx], [by], "o", color="white", markeredgecolor="black", markersize=8, zorder=6, label="ball")
     positions = formation.positions((bx, by))
     for role, (x, y) in zip(formation.roles, positions):
-        ax.plot([x], [y], "o", color=KIND_COLOURS.get(role.kind, "grey"), markeredgecolor="white", markersize=11, zorder=5)
-        ax.annotate(str(role.number), (x, y), ha="center", va="center", fontsize=7, color="white", weight="bold", zorder=7)
-        ax.annotate(role.name, (x, y), xytext=(0, -11), textcoords="offset points", ha="center", va="top", fontsize=6, color="white", zorder=7)
+        ax.plot(
+            [x], [y], "o", color=KIND_COLOURS.get(role.kind, "grey"), markeredgecolor="white", markersize=11, zorder=5
+        )
+        ax.annotate(
+            str(role.number), (x, y), ha="center", va="center", fontsize=7, color="white", weight="bold", zorder=7
+        )
+        ax.annotate(
+            role.name,
+            (x, y),
+            xytext=(0, -11),
+            textcoords="offset points",
+            ha="center",
+            va="top",
+            fontsize=6,
+            color="white",
+            zorder=7,
+        )
     return positions
 
 

@@ -55,9 +55,7 @@ def check_roles(roles: Sequence[Role], source: str) -> None:
         if not isinstance(role.name, str) or not role.name.strip():
             raise FormationError(source, "role name must be a non-empty string", where)
         if role.kind not in ROLE_KINDS:
-            raise FormationError(
-                source, f"unknown kind {role.kind!r} (expected one of {', '.join(ROLE_KINDS)})", where
-            )
+            raise FormationError(source, f"unknown kind {role.kind!r} (expected one of {', '.join(ROLE_KINDS)})", where)
         by_number[role.number] = role
     goalkeepers = [r.number for r in roles if r.kind == "goalkeeper"]
     if len(goalkeepers) > 1:

@@ -64,9 +64,7 @@ def mirror_complete(formation: Formation, *, name: str | None = None) -> Formati
     side_balls = balls[side]
     mirrored_balls = side_balls * np.array([1.0, -1.0])
     all_balls = np.concatenate((axis_balls, side_balls, mirrored_balls))
-    all_positions = np.concatenate(
-        (axis_positions, positions[side], mirror_positions(positions[side], perm))
-    )
+    all_positions = np.concatenate((axis_positions, positions[side], mirror_positions(positions[side], perm)))
     return Formation(
         formation.roles,
         all_balls,

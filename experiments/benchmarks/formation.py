@@ -22,8 +22,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--batch", type=int, default=200, help="calls per timed batch (default 200)")
     parser.add_argument("--repeats", type=int, default=5, help="vectorised calls timed; the best is reported")
     parser.add_argument("--seed", type=int, default=0, help="seed of the random ball positions")
-    parser.add_argument("--set", dest="sets", action="append", metavar="NAME",
-                        help="only this built-in set (repeatable; default: all)")
+    parser.add_argument(
+        "--set", dest="sets", action="append", metavar="NAME", help="only this built-in set (repeatable; default: all)"
+    )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -80,8 +81,14 @@ def run(args: argparse.Namespace) -> int:
             worst_single = max(worst_single, single_in, single_out)
             worst_many = max(worst_many, best)
             table.add_row(
-                name, situation.value, str(formation.n_samples), str(len(formation.triangles)),
-                f"{single_in:.2f}", f"{single_out:.2f}", f"{best:.4f}", f"{best / len(many) * 1e6:.3f}",
+                name,
+                situation.value,
+                str(formation.n_samples),
+                str(len(formation.triangles)),
+                f"{single_in:.2f}",
+                f"{single_out:.2f}",
+                f"{best:.4f}",
+                f"{best / len(many) * 1e6:.3f}",
             )
     console.print(table)
     console.print(

@@ -33,10 +33,19 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 
     show = actions.add_parser("show", help="draw a formation for one ball position")
     show.add_argument("file", metavar="FILE", help="formation JSON file or built-in name")
-    show.add_argument("--ball", nargs=2, type=float, metavar=("X", "Y"), default=(0.0, 0.0),
-                      help="ball position in metres, team-relative frame (default: 0 0)")
-    show.add_argument("--situation", default="normal",
-                      help="which formation of a set to draw (normal, attack, defend, our_set_play, their_set_play)")
+    show.add_argument(
+        "--ball",
+        nargs=2,
+        type=float,
+        metavar=("X", "Y"),
+        default=(0.0, 0.0),
+        help="ball position in metres, team-relative frame (default: 0 0)",
+    )
+    show.add_argument(
+        "--situation",
+        default="normal",
+        help="which formation of a set to draw (normal, attack, defend, our_set_play, their_set_play)",
+    )
     show.add_argument("--out", required=True, metavar="PICTURE", help="output picture, e.g. picture.png")
     show.set_defaults(func=run_show)
 
@@ -57,9 +66,11 @@ def run_validate(args: argparse.Namespace) -> int:
         return _fail(str(error), 1)
     except OSError as error:
         return _fail(_os_message(args.file, error), 2)
-    formations = [("", item)] if isinstance(item, Formation) else [
-        (f"[{situation.value}] ", formation) for situation, formation in item.own_formations().items()
-    ]
+    formations = (
+        [("", item)]
+        if isinstance(item, Formation)
+        else [(f"[{situation.value}] ", formation) for situation, formation in item.own_formations().items()]
+    )
     if not isinstance(item, Formation):
         print(f"{args.file}: formation set {item.name!r} with {len(formations)} situations")
     broken = 0

@@ -14,8 +14,16 @@ def eleven_roles() -> list[Role]:
     roles = [Role(1, "keeper", "goalkeeper")]
     roles += [Role(2, "right back", "defender", 3), Role(3, "left back", "defender", 2)]
     roles += [Role(4, "centre back", "defender"), Role(5, "sweeper", "defender")]
-    roles += [Role(6, "right mid", "midfielder", 8), Role(7, "holding mid", "midfielder"), Role(8, "left mid", "midfielder", 6)]
-    roles += [Role(9, "striker", "forward"), Role(10, "right forward", "forward", 11), Role(11, "left forward", "forward", 10)]
+    roles += [
+        Role(6, "right mid", "midfielder", 8),
+        Role(7, "holding mid", "midfielder"),
+        Role(8, "left mid", "midfielder", 6),
+    ]
+    roles += [
+        Role(9, "striker", "forward"),
+        Role(10, "right forward", "forward", 11),
+        Role(11, "left forward", "forward", 10),
+    ]
     return roles
 
 

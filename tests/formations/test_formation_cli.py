@@ -87,7 +87,9 @@ def test_import_helios(tmp_path, write_json, capsys):
 def test_benchmark_runs_and_reports(capsys):
     parser = argparse.ArgumentParser()
     formation_bench.add_arguments(parser)
-    args = parser.parse_args(["--queries", "2000", "--single", "400", "--batch", "100", "--repeats", "1", "--set", "4-3-3"])
+    args = parser.parse_args(
+        ["--queries", "2000", "--single", "400", "--batch", "100", "--repeats", "1", "--set", "4-3-3"]
+    )
     assert formation_bench.run(args) == 0
     out = capsys.readouterr().out
     assert "their_set_play" in out and "slowest single-query median" in out

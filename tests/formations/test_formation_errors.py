@@ -49,17 +49,33 @@ BAD_DOCUMENTS: list[tuple[str, Mutation, str]] = [
     ("extra role position", _set(["samples", 1, "positions", "12"], [0.0, 0.0]), r"sample 1: role 12 is not one of"),
     ("sample without positions", _delete(["samples", 3, "positions"]), r"sample 3: missing field 'positions'"),
     ("sample without ball", _delete(["samples", 0, "ball"]), r"sample 0: missing field 'ball'"),
-    ("NaN coordinate", _set(["samples", 1, "positions", "2"], [float("nan"), 1.0]), r"sample 1, role 2: .*not a finite"),
+    (
+        "NaN coordinate",
+        _set(["samples", 1, "positions", "2"], [float("nan"), 1.0]),
+        r"sample 1, role 2: .*not a finite",
+    ),
     ("infinite ball", _set(["samples", 2, "ball"], [0.0, float("inf")]), r"sample 2, ball: .*not a finite"),
-    ("string coordinate", _set(["samples", 0, "positions", "1"], ["-50", 0.0]), r"sample 0, role 1: coordinate '-50' is not a number"),
+    (
+        "string coordinate",
+        _set(["samples", 0, "positions", "1"], ["-50", 0.0]),
+        r"sample 0, role 1: coordinate '-50' is not a number",
+    ),
     ("boolean coordinate", _set(["samples", 0, "positions", "1"], [True, 0.0]), r"sample 0, role 1: coordinate True"),
-    ("three coordinates", _set(["samples", 3, "positions", "2"], [1.0, 2.0, 3.0]), r"sample 3, role 2: a position must be"),
+    (
+        "three coordinates",
+        _set(["samples", 3, "positions", "2"], [1.0, 2.0, 3.0]),
+        r"sample 3, role 2: a position must be",
+    ),
     ("duplicate ball", _set(["samples", 3, "ball"], [0.0, 20.0]), r"sample 3: .*0 m from that of sample 2"),
     ("nearly duplicate ball", _set(["samples", 3, "ball"], [0.3, 19.8]), r"sample 3: .*0.361 m from that of sample 2"),
     ("two samples", _samples([[0.0, 0.0], [10.0, 0.0]]), r"at least 3 samples.*got 2"),
     ("no samples", _samples([]), r"at least 3 samples.*got 0"),
     ("collinear samples", _samples([[0.0, 0.0], [10.0, 5.0], [20.0, 10.0], [-30.0, -15.0]]), r"lie on one line"),
-    ("ball far outside", _set(["samples", 1, "ball"], [80.0, 0.0]), r"sample 1, ball: position \(80, 0\) is far outside"),
+    (
+        "ball far outside",
+        _set(["samples", 1, "ball"], [80.0, 0.0]),
+        r"sample 1, ball: position \(80, 0\) is far outside",
+    ),
     ("player far outside", _set(["samples", 2, "positions", "3"], [0.0, -3400.0]), r"sample 2, role 3: .*far outside"),
     ("unknown role kind", _set(["roles", 1, "kind"], "winger"), r"role 2: unknown kind 'winger'"),
     ("duplicate role number", _set(["roles", 2, "number"], 2), r"role 2: .*(used twice|unknown)"),
@@ -90,7 +106,7 @@ def test_bad_document_is_reported_with_file_and_culprit(write_json, label, mutat
 @pytest.mark.parametrize(
     "text, message",
     [
-        ("{\"format\": \"soccer-sim-formation\", ", r"invalid JSON: .*line 1"),
+        ('{"format": "soccer-sim-formation", ', r"invalid JSON: .*line 1"),
         ("", r"invalid JSON"),
         ("[1, 2, 3]", r"expected a JSON object at the top level, got a list"),
     ],
@@ -140,8 +156,12 @@ def test_error_inside_a_set_file_names_the_situation(tmp_path, write_json):
     bad = small_document()
     del bad["samples"][1]["positions"]["2"]
     good = small_document()
-    document = {"format": "soccer-sim-formation-set", "version": 1, "name": "x",
-                "formations": {"normal": good, "attack": bad}}
+    document = {
+        "format": "soccer-sim-formation-set",
+        "version": 1,
+        "name": "x",
+        "formations": {"normal": good, "attack": bad},
+    }
     path = write_json("set.json", document)
     with pytest.raises(FormationError, match=r"set.json: formation 'attack', sample 1: missing the position of role 2"):
         formations.load_set(path)

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import formations
-from formations import Formation, FormationError, FormationSet, Situation
+from formations import FormationError, FormationSet, Situation
 from formations.files import dumps
 
 from formation_samples import small_document
@@ -83,8 +83,17 @@ HELIOS_ROLES = [
 def helios_sample(index: int, bx: float, by: float) -> dict:
     """A sample in the server frame (y to the right): the team shifts with the ball."""
     base = {
-        1: (-50, 0), 2: (-30, -15), 3: (-30, 15), 4: (-35, 0), 5: (-10, -20), 6: (-10, 20),
-        7: (-15, 0), 8: (-5, 0), 9: (10, -25), 10: (10, 25), 11: (15, 0),
+        1: (-50, 0),
+        2: (-30, -15),
+        3: (-30, 15),
+        4: (-35, 0),
+        5: (-10, -20),
+        6: (-10, 20),
+        7: (-15, 0),
+        8: (-5, 0),
+        9: (10, -25),
+        10: (10, 25),
+        11: (15, 0),
     }
     sample = {"index": index, "ball": {"x": bx, "y": by}}
     for number, (x, y) in base.items():
