@@ -42,9 +42,12 @@ Decisions where the rules leave room:
   (and the ball) is kept inside its penalty area; opponents are not kept away, and the
   held ball does not collide. Holding for ``goalie_hold_cycles`` cycles gives the opponents
   a free kick on the nearest point of the penalty area's front or side line.
-* **Offside** is judged for kicks in play on, at free kicks, at kick-offs and by a
-  goalkeeper releasing a held ball; kicks from kick-ins, corners and goal kicks, and cycles
-  in which both teams kick, clear all marks instead.
+* **Offside** positions are judged whenever one team plays the ball: a kick in play on, at
+  a free kick, at a kick-off or by a goalkeeper releasing a held ball, and a body touch in
+  play on (a deflection off a team-mate counts as playing it, and a kicker's own touch in
+  the cycle of its kick re-judges the positions rather than clearing them). Kicks from
+  kick-ins, corners and goal kicks, and cycles in which both teams play the ball, clear
+  all marks instead; so does the goalkeeper's catch.
 * **Events.** ``GOAL``: team = scoring team, player = last toucher (of the other team on an
   own goal, then ``detail`` = 1). ``OUT``: team/player = last toucher, detail 0 for a
   touchline, 1 for a goal line. ``PASS``: team/player = passer, detail = receiver index.
@@ -96,13 +99,6 @@ _OFFSIDE_MODES = frozenset({PlayMode.PLAY_ON, PlayMode.FREE_KICK, PlayMode.KICK_
 _NEVER = -(10**9)
 
 
-def _nearest_distance(block: np.ndarray, x: float, y: float) -> float:
-    """Distance from (x, y) to the nearest of the positions ``block`` ((k, 2))."""
-    dx = block[:, 0] - x
-    dy = block[:, 1] - y
-    return math.sqrt(float((dx * dx + dy * dy).min()))
-
-
 class Referee:
     """Applies the rules of the game to a :class:`WorldState`, recording events in ``events``.
 
@@ -125,6 +121,9 @@ class Referee:
         self._half_end = r.half_cycles
         self._match_end = config.total_cycles
         self._goalie_rows = (r.goalie_index, n + r.goalie_index)
+        home_rows = np.repeat([1.0, -1.0], n)
+        self._row_direction = {1: home_rows, -1: -home_rows}
+        """Attack direction of every player row, keyed by ``state.home_attacks``."""
         self._shot_reach = 1.0 / (1.0 - p.ball_decay) if p.ball_decay < 1.0 else math.inf
         # Cached read-only kick masks (kick_mask returns one of these, never a new array).
         self._mask_all = self._frozen(np.ones(2 * n, dtype=bool))
@@ -277,9 +276,7 @@ class Referee:
     def _kick_off(self, state: WorldState, team: int, first_cycle: int | None = None) -> None:
         """Kick-off for ``team``: ball on the centre spot, both teams in their own halves
         (players in the wrong half reflected across the halfway line)."""
-        n = self._n
-        for t in (HOME, AWAY):
-            mirror_into_own_half(state.pos[t * n:(t + 1) * n], state.attack_direction(t))
+        mirror_into_own_half(state.pos, self._row_direction[state.home_attacks])
         state.vel[:] = 0.0
         state.last_touch = NO_PLAYER
         self._spot = (0.0, 0.0)
@@ -305,12 +302,12 @@ class Referee:
         n = self._n
         other = 1 - state.mode_team
         rows = slice(other * n, (other + 1) * n)
-        block = state.pos[rows]
         if state.play_mode == _KICK_OFF:
             self._keep_kick_off_positions(state, other, sx, sy)
-        elif _nearest_distance(block, sx, sy) < self._clearance:
-            moved = push_clear_of_spot(block, sx, sy, self._clearance, self.config.field)
-            state.vel[rows][moved] = 0.0
+        else:
+            moved = push_clear_of_spot(state.pos[rows], sx, sy, self._clearance, self.config.field)
+            if moved.any():
+                state.vel[rows][moved] = 0.0
         if state.cycle - state.mode_start + 1 >= self.config.rules.set_play_timeout:
             self.events.add(state.cycle, EventKind.DROP_BALL, NO_TEAM, NO_PLAYER, sx, sy, int(state.play_mode))
             self._set_mode(state, _PLAY_ON, NO_TEAM)
@@ -320,21 +317,14 @@ class Referee:
         kicking off outside the centre circle (pushed radially); moved players stop."""
         n = self._n
         pos = state.pos
-        home_x, away_x = pos[:n, 0], pos[n:, 0]
-        if state.home_attacks > 0:
-            wrong_half = home_x.max() > 0.0 or away_x.min() < 0.0
-        else:
-            wrong_half = home_x.min() < 0.0 or away_x.max() > 0.0
-        block = pos[other * n:(other + 1) * n]
-        if not wrong_half and _nearest_distance(block, sx, sy) >= self._kick_off_radius:
-            return
-        moved = np.zeros(2 * n, dtype=bool)
-        for t in (HOME, AWAY):
-            moved[t * n:(t + 1) * n] = keep_in_own_half(pos[t * n:(t + 1) * n], state.attack_direction(t))
-        direction = state.attack_direction(other)
-        moved[other * n:(other + 1) * n] |= push_out_of_circle(
-            block, sx, sy, self._kick_off_radius, (-float(direction), 0.0))
-        state.vel[moved] = 0.0
+        rows = slice(other * n, (other + 1) * n)
+        moved = keep_in_own_half(pos, self._row_direction[state.home_attacks])
+        if moved is not None:
+            state.vel[moved] = 0.0
+        fallback = (-float(state.attack_direction(other)), 0.0)
+        pushed = push_out_of_circle(pos[rows], sx, sy, self._kick_off_radius, fallback)
+        if pushed.any():
+            state.vel[rows][pushed] = 0.0
 
     def _half_time(self, state: WorldState) -> None:
         """Swap ends: every position and velocity rotated by 180°, away kicks off."""
@@ -420,12 +410,7 @@ class Referee:
         if mode != _PLAY_ON:
             first = rows[0]
             self._set_mode(state, _PLAY_ON, NO_TEAM, player=first - state.team_of(first) * n)
-        if self.config.rules.offside and len(teams) == 1 and mode in _OFFSIDE_MODES:
-            team = teams[0]
-            self._offside_pending = mark_offside_positions(
-                state.pos, n, team, state.attack_direction(team), bx, rows, self._offside)
-        else:
-            self._clear_offside()
+        self._judge_offside_positions(state, rows, mode, bx)
 
     def _played(self, state: WorldState, rows: list[int], main: int, x: float, y: float) -> None:
         """``rows`` (sorted) played the ball together this cycle, ``main`` (one of them if
@@ -451,7 +436,7 @@ class Referee:
                 if self._offside[row]:
                     self._call_offside(state, row)
                     return
-            self._clear_offside()
+        self._judge_offside_positions(state, rows, _PLAY_ON, bx)
         previous = self._touching
         for row in rows:
             if row not in previous:
@@ -479,6 +464,19 @@ class Referee:
         return abs(by + t * vy) < self._post_y
 
     # ------------------------------------------------------------------ offside
+
+    def _judge_offside_positions(self, state: WorldState, rows: list[int], mode: PlayMode, ball_x: float) -> None:
+        """``rows`` played the ball (kick or body touch) in ``mode``: when they are of one team
+        and the mode allows offside, mark their team-mates in offside positions afresh;
+        otherwise clear all marks."""
+        n = self._n
+        team = HOME if rows[0] < n else AWAY
+        one_team = (rows[-1] < n) == (team == HOME)
+        if self.config.rules.offside and one_team and mode in _OFFSIDE_MODES:
+            self._offside_pending = mark_offside_positions(
+                state.pos, n, team, state.attack_direction(team), ball_x, rows, self._offside)
+        else:
+            self._clear_offside()
 
     def _clear_offside(self) -> None:
         if self._offside_pending:

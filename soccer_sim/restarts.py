@@ -92,18 +92,31 @@ def penalty_area_edge_spot(field: FieldConfig, direction: int, x: float, y: floa
     return x, math.copysign(half_w, y)
 
 
-def mirror_into_own_half(block: np.ndarray, direction: int) -> np.ndarray:
-    """Reflect the players of ``block`` ((k, 2) rows of one team) standing in the opponents'
-    half across the halfway line. Returns the bool mask of moved rows."""
-    x = block[:, 0]
-    wrong = direction * x > 0.0
-    x[wrong] = -x[wrong]
+def mirror_into_own_half(pos: np.ndarray, direction: int | np.ndarray) -> np.ndarray:
+    """Reflect the players of ``pos`` ((k, 2) rows) standing in the opponents' half across the
+    halfway line. ``direction``: the attack direction, one for all rows or one per row.
+    Returns the bool mask of moved rows."""
+    depth = pos[:, 0] * direction
+    wrong = depth > 0.0
+    if wrong.any():
+        pos[:, 0] = -np.abs(depth) * direction
     return wrong
 
 
+def keep_in_own_half(pos: np.ndarray, direction: int | np.ndarray) -> np.ndarray | None:
+    """Move the players of ``pos`` ((k, 2) rows) standing in the opponents' half onto the
+    halfway line. ``direction``: the attack direction, one for all rows or one per row.
+    Returns the bool mask of moved rows, or None if nobody was moved (the common case)."""
+    depth = pos[:, 0] * direction
+    if depth.max() <= 0.0:
+        return None
+    pos[:, 0] = np.minimum(depth, 0.0) * direction
+    return depth > 0.0
+
+
 def clamp_into_own_half(block: np.ndarray, direction: int, field: FieldConfig) -> np.ndarray:
-    """Clamp the players of ``block`` into their own half of the field (lines included).
-    Returns the bool mask of moved rows."""
+    """Clamp the players of ``block`` ((k, 2) rows of one team) into their own half of the
+    field (lines included). Returns the bool mask of moved rows."""
     depth = direction * block[:, 0]
     new_depth = np.clip(depth, -field.half_length, 0.0)
     y = block[:, 1]
@@ -114,31 +127,26 @@ def clamp_into_own_half(block: np.ndarray, direction: int, field: FieldConfig) -
     return moved
 
 
-def keep_in_own_half(block: np.ndarray, direction: int) -> np.ndarray:
-    """Move the players of ``block`` that stand in the opponents' half onto the halfway line.
-    Returns the bool mask of moved rows."""
-    x = block[:, 0]
-    wrong = direction * x > 0.0
-    x[wrong] = 0.0
-    return wrong
-
-
 def push_out_of_circle(block: np.ndarray, cx: float, cy: float, radius: float,
                        fallback: tuple[float, float]) -> np.ndarray:
-    """Move the players of ``block`` closer than ``radius`` to (cx, cy) radially out onto the
-    circle. A player exactly on the centre goes along the unit vector ``fallback``.
-    Returns the bool mask of moved rows."""
-    dx = block[:, 0] - cx
-    dy = block[:, 1] - cy
-    dist = np.hypot(dx, dy)
-    inside = dist < radius
+    """Move the players of ``block`` ((k, 2) rows) closer than ``radius`` to (cx, cy) radially
+    out onto the circle; players elsewhere are left bit-for-bit unchanged. A player exactly on
+    the centre goes along the unit vector ``fallback``. Returns the bool mask of moved rows."""
+    diff = block - np.array((cx, cy))
+    d2 = (diff * diff).sum(axis=1)
+    inside = d2 < radius * radius
     if not inside.any():
         return inside
-    d = dist[inside]
-    ux = np.where(d > 0.0, dx[inside] / np.where(d > 0.0, d, 1.0), fallback[0])
-    uy = np.where(d > 0.0, dy[inside] / np.where(d > 0.0, d, 1.0), fallback[1])
-    block[inside, 0] = cx + radius * ux
-    block[inside, 1] = cy + radius * uy
+    out = diff[inside]
+    d = np.sqrt(d2[inside])
+    if not d.all():  # somebody stands exactly on the centre
+        centred = d == 0.0
+        out[centred] = fallback
+        d[centred] = 1.0
+    out *= (radius / d)[:, None]
+    out[:, 0] += cx
+    out[:, 1] += cy
+    block[inside] = out
     return inside
 
 

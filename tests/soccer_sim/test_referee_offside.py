@@ -132,3 +132,18 @@ def test_offside_for_the_away_team_attacking_minus_x():
     run_towards_ball(ref, st, N + 10)
     [(_, team, player, _, _, _)] = ev.of_kind(EventKind.OFFSIDE)
     assert (team, player, st.mode_team) == (AWAY, 10, HOME)
+
+
+def test_the_kickers_own_touch_after_its_kick_keeps_the_team_mate_offside():
+    ref, st, ev = world(striker_x=30.0)
+    kick(ref, st, [KICKER], (1.0, 0.0))
+    step(ref, st, touchers=[KICKER])  # the ball brushes the kicker's body as it leaves
+    run_towards_ball(ref, st, 10)
+    assert [e[2] for e in ev.of_kind(EventKind.OFFSIDE)] == [10]
+
+
+def test_a_deflection_off_a_team_mate_counts_as_playing_the_ball():
+    ref, st, ev = world(striker_x=30.0)
+    step(ref, st, touchers=[KICKER])  # no kick: the ball bounced off the team-mate
+    run_towards_ball(ref, st, 10)
+    assert [e[2] for e in ev.of_kind(EventKind.OFFSIDE)] == [10]
