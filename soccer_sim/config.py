@@ -114,6 +114,16 @@ class PhysicsConfig:
     """Uniform ball-movement noise per axis, as a fraction of the ball's speed."""
     kick_noise: float = 0.05
     """Uniform kick noise per axis, as a fraction of the kick's velocity change."""
+    player_mass: float = 70.0
+    """Mass of a player's body (kg); only the ratio to ``ball_mass`` matters in collisions."""
+    ball_mass: float = 0.43
+    """Mass of the ball (kg)."""
+    player_restitution: float = 0.2
+    """Bounciness of a player's body in collisions (0: dead stop, 1: perfectly elastic). The
+    restitution of a contact is the product of the two bodies' values."""
+    ball_restitution: float = 0.8
+    """Bounciness of the ball; goal posts are perfectly elastic, so the ball keeps this fraction
+    of its normal speed off a post and ``ball_restitution * player_restitution`` off a player."""
     max_substep_distance: float = 0.3
     """Physics sub-steps are added until no body moves further than this in one sub-step (m),
     so that a full-speed ball cannot pass through a player."""
@@ -122,10 +132,11 @@ class PhysicsConfig:
         _require_positive(
             self, "cycle_seconds", "player_radius", "ball_radius", "player_speed_max", "player_accel_max",
             "ball_speed_max", "kick_speed_max", "kickable_margin", "max_substep_distance",
+            "player_mass", "ball_mass",
         )
         _require_fraction(
             self, "player_decay", "ball_decay", "kick_distance_penalty", "kick_angle_penalty",
-            "player_noise", "ball_noise", "kick_noise",
+            "player_noise", "ball_noise", "kick_noise", "player_restitution", "ball_restitution",
         )
         if self.max_substep_distance > 2 * self.ball_radius + 2 * self.player_radius:
             raise ConfigError("PhysicsConfig.max_substep_distance must not exceed the ball-player contact diameter")

@@ -10,8 +10,8 @@ One cycle (100 ms of game time by default):
 4. the referee judges the kicks and the goalkeepers' catch requests;
 5. dashes, stamina and movement noise (:mod:`soccer_sim.kinematics`);
 6. the collision solver moves everything for one cycle, in as many sub-steps as needed so
-   that nothing that could hit something moves more than ``max_substep_distance`` per
-   sub-step; players are kept within the field plus its margin;
+   that nothing can pass through anything (:class:`~soccer_sim.physics.SubstepPlanner`);
+   players are kept within the field plus its margin;
 7. velocity decay and ball noise;
 8. the referee judges goals, outs, restarts, offside and time;
 9. the cycle counter advances and recorders observe.
@@ -31,7 +31,7 @@ import numpy as np
 
 from soccer_sim.config import MatchConfig
 from soccer_sim.kinematics import CycleNoise, Kinematics
-from soccer_sim.physics import BodyBlock, Physics
+from soccer_sim.physics import BodyBlock, Physics, SubstepPlanner
 from soccer_sim.recorder import Recorder
 from soccer_sim.referee import Referee
 from soccer_sim.registry import resolve_team
@@ -128,14 +128,8 @@ class Match:
         self.kickers = _NO_KICKERS
         self.touchers = _NO_KICKERS
         self._catch = np.zeros(2, dtype=bool)
-        phys, fld = config.physics, config.field
-        self._kickable = phys.kickable_distance
-        self._max_substep = phys.max_substep_distance
-        self._ball_reach = phys.player_radius + phys.ball_radius + phys.player_speed_max + phys.max_substep_distance
-        self._post_reach = fld.goal_post_radius + phys.ball_radius + phys.max_substep_distance
-        self._post_x, self._post_y = fld.half_length, fld.goal_width / 2 + fld.goal_post_radius
-        limit = np.array([fld.half_length + fld.margin, fld.half_width + fld.margin])
-        self._pos_low, self._pos_high = -limit, limit
+        self._kicker_rows = np.zeros(2 * n, dtype=np.int64)
+        self._substeps = SubstepPlanner(config)
         self._started = False
 
     @property
@@ -196,12 +190,16 @@ class Match:
             self._sync_state()
 
         # 3-4. Kicks, then the referee judges kicks and catches.
-        dist = kin.ball_distances(state.pos, state.ball)
         holder = state.ball_holder
-        kickers = self._kickers(dist, referee.kick_mask(state), holder)
-        if kickers.size:
+        count, nearest = kin.kick_candidates(state.pos, state.ball, self._kick, referee.kick_mask(state), holder,
+                                             self._kicker_rows)
+        if count:
+            kickers = self._kicker_rows[:count].copy()
+            dist = kin.ball_distance
             kin.kick(kickers, state.pos, state.ball, state.ball_vel, self._kick, dist, holder, self.noise.kick)
-            state.last_touch = int(kickers[np.argmin(dist[kickers])])
+            state.last_touch = int(kickers[np.argmin(dist[kickers])]) if count > 1 else int(kickers[0])
+        else:
+            kickers = _NO_KICKERS
         self.kickers = kickers
         referee.on_commands(state, kickers, self._catch)
 
@@ -216,10 +214,12 @@ class Match:
         physics = self.physics
         physics.set_ball_collides(holder == NO_PLAYER and not released)
         if holder == NO_PLAYER:
-            fastest = max(fastest, self._relevant_ball_speed(float(dist.min())))
-        substeps = max(1, math.ceil(fastest / self._max_substep))
-        self.touchers = physics.step(substeps)
-        np.clip(state.pos, self._pos_low, self._pos_high, out=state.pos)
+            bx, by = state.ball.tolist()
+            vx, vy = state.ball_vel.tolist()
+            substeps = self._substeps.count(fastest, bx, by, math.hypot(vx, vy), nearest)
+        else:
+            substeps = self._substeps.count(fastest, 0.0, 0.0, 0.0, nearest)
+        self.touchers = physics.step(substeps, kickers)
         if holder != NO_PLAYER:
             state.ball[:] = state.pos[holder]
             state.ball_vel[:] = 0.0
@@ -244,31 +244,6 @@ class Match:
                 raise TeamError(frame.name, f"act() raised {type(exc).__name__}: {exc}") from exc
             self._catch[team], moves[team] = frame.read_command(command, state)
         return moves
-
-    def _kickers(self, dist: np.ndarray, mask: np.ndarray, holder: int) -> np.ndarray:
-        """Rows that kick this cycle: allowed by the referee, ball within reach (or held), and a
-        non-zero kick vector."""
-        candidates = np.flatnonzero((dist <= self._kickable) & mask)
-        if holder != NO_PLAYER and mask[holder] and holder not in candidates:
-            candidates = np.append(candidates, holder)
-        if not candidates.size:
-            return _NO_KICKERS
-        kick = self._kick
-        rows = [row for row in candidates.tolist() if kick[row, 0] != 0.0 or kick[row, 1] != 0.0]
-        if len(rows) == candidates.size:
-            return candidates
-        return np.array(rows, dtype=np.int64) if rows else _NO_KICKERS
-
-    def _relevant_ball_speed(self, nearest_player: float) -> float:
-        """The ball's speed if it could hit a player or a post this cycle, else 0: a ball in
-        free flight needs no sub-steps however fast it goes."""
-        vx, vy = self.state.ball_vel.tolist()
-        speed = math.hypot(vx, vy)
-        if nearest_player - speed <= self._ball_reach:
-            return speed
-        bx, by = self.state.ball.tolist()
-        post_distance = math.hypot(self._post_x - abs(bx), self._post_y - abs(by))
-        return speed if post_distance - speed <= self._post_reach else 0.0
 
     def _sync_state(self) -> None:
         """Re-attach the state's arrays to the body block if someone replaced them (the loop

@@ -18,6 +18,7 @@ import math
 import numpy as np
 import pymunk
 import pymunk.batch as pbatch
+from numba import njit
 
 from soccer_sim.config import MatchConfig
 
@@ -27,10 +28,19 @@ HOME_PLAYER, AWAY_PLAYER, BALL, POST = 1, 2, 3, 4
 _BODY_FIELDS = pbatch.BodyFields.POSITION | pbatch.BodyFields.VELOCITY
 _NO_TOUCHERS = np.zeros(0, dtype=np.int64)
 _NO_COLLISIONS = pymunk.ShapeFilter(categories=0, mask=0)
-_SOLVER_ITERATIONS = 6
-"""Constraint-solver iterations per sub-step: circles with no friction converge fast."""
+_ALL_COLLISIONS = pymunk.ShapeFilter()
+_KICK_GROUP = pymunk.ShapeFilter(group=1)
+"""Shapes sharing a non-zero group never collide: the ball and this cycle's kickers."""
+_SOLVER_ITERATIONS = 3
+"""Constraint-solver iterations per sub-step: frictionless circles converge fast, and the
+sub-steps repeat the solve anyway."""
 _COLLISION_SLOP = 0.005
 """Overlap (m) pymunk tolerates between touching bodies before pushing them apart."""
+CONTACT_BEGIN_GAP = 0.01
+"""Two teammates come into contact when the gap between their bodies drops below this (m)..."""
+CONTACT_END_GAP = 0.05
+"""...and the contact ends when the gap grows beyond this (m); the hysteresis keeps a pair
+jostling at the threshold from counting as many contacts."""
 
 
 class BodyBlock:
@@ -54,11 +64,51 @@ class BodyBlock:
         """Players and ball (the rows a team-relative view mirrors)."""
 
 
+class SubstepPlanner:
+    """How many equal sub-steps a cycle needs so that nothing can pass through anything.
+
+    Players: none may move more than ``max_substep_distance`` per sub-step (two players
+    closing head-on then close by at most two such distances, the sum of their radii).
+    The ball: its speed *relative to a player running at it* (ball speed + player speed
+    limit) is what must stay within ``max_substep_distance`` per sub-step, and near a goal
+    post its own displacement must stay within the ball-post contact distance (a post is
+    thin). A ball that cannot reach any player or post this cycle needs no sub-steps at all,
+    however fast it flies.
+    """
+
+    def __init__(self, config: MatchConfig) -> None:
+        phys, fld = config.physics, config.field
+        self._max_substep = phys.max_substep_distance
+        self._player_speed_max = phys.player_speed_max
+        self._player_reach = phys.player_radius + phys.ball_radius + phys.player_speed_max + phys.max_substep_distance
+        self._post_contact = fld.goal_post_radius + phys.ball_radius
+        self._post_step = min(self._max_substep, self._post_contact)
+        self._post_x, self._post_y = fld.half_length, fld.goal_width / 2 + fld.goal_post_radius
+
+    def count(self, fastest_player: float, ball_x: float, ball_y: float, ball_speed: float,
+              nearest_player: float) -> int:
+        """Sub-steps for a cycle whose fastest player moves ``fastest_player`` (m/cycle) and
+        whose free ball at (ball_x, ball_y) moves ``ball_speed``, ``nearest_player`` metres
+        (centre to centre) from the nearest player. Pass ``ball_speed = 0`` for a held ball."""
+        substeps = math.ceil(fastest_player / self._max_substep)
+        if ball_speed > 0.0:
+            if nearest_player - ball_speed <= self._player_reach:
+                substeps = max(substeps, math.ceil((ball_speed + self._player_speed_max) / self._max_substep))
+            post_distance = math.hypot(self._post_x - abs(ball_x), self._post_y - abs(ball_y))
+            if post_distance - ball_speed <= self._post_contact + self._max_substep:
+                substeps = max(substeps, math.ceil(ball_speed / self._post_step))
+        return max(1, substeps)
+
+
 class Physics:
     """A pymunk space mirroring a :class:`BodyBlock`; steps one cycle at a time.
 
-    Counts contacts between teammates (a new contact between two players of the same team
-    is one contact) and collects the players whose body touched the ball during a step.
+    Collects the players whose body began touching the ball during a step (a pymunk
+    collision callback: rare, so cheap), and counts contacts between teammates: a pair of
+    players of one team comes into contact when the gap between their bodies at the end of
+    a cycle is below ``CONTACT_BEGIN_GAP`` and was not in contact before. (Counting them in
+    a collision callback instead cost more than the rest of the cycle's physics: in a
+    scrum, teammates touch several times per cycle.)
     """
 
     def __init__(self, config: MatchConfig, block: BodyBlock) -> None:
@@ -68,10 +118,17 @@ class Physics:
         self.space = space = pymunk.Space()
         space.iterations = _SOLVER_ITERATIONS
         space.collision_slop = _COLLISION_SLOP
-        self.teammate_contacts = [0, 0]
-        """New contacts between two players of the same team, per team (home, away)."""
+        self.teammate_contacts = np.zeros(2, dtype=np.int64)
+        """Contacts begun between two players of the same team, per team (home, away)."""
+        self._in_contact = np.zeros((2 * n, 2 * n), dtype=np.bool_)
+        diameter = 2.0 * phys.player_radius
+        self._after_params = np.array([
+            n, (diameter + CONTACT_BEGIN_GAP) ** 2, (diameter + CONTACT_END_GAP) ** 2,
+            fld.half_length + fld.margin, fld.half_width + fld.margin,
+        ])
         self._touchers: list[int] = []
         self._ball_collides = True
+        self._player_shapes: list[pymunk.Circle] = []
 
         bodies: list[pymunk.Body] = []
         for row in range(2 * n):
@@ -83,6 +140,7 @@ class Physics:
             shape.row = row  # read back by the ball-touch callback
             space.add(body, shape)
             bodies.append(body)
+            self._player_shapes.append(shape)
         self.ball_body = pymunk.Body(phys.ball_mass, math.inf)
         self.ball_shape = pymunk.Circle(self.ball_body, phys.ball_radius)
         self.ball_shape.collision_type = BALL
@@ -100,14 +158,10 @@ class Physics:
                 post.friction = 0.0
                 space.add(post)
 
-        space.on_collision(HOME_PLAYER, HOME_PLAYER, begin=self._teammate_begin, data=0)
-        space.on_collision(AWAY_PLAYER, AWAY_PLAYER, begin=self._teammate_begin, data=1)
         space.on_collision(BALL, HOME_PLAYER, begin=self._ball_begin)
         space.on_collision(BALL, AWAY_PLAYER, begin=self._ball_begin)
 
-        self._write = pbatch.Buffer()
-        self._write.set_float_buf(block.data.reshape(-1))
-        self._read = pbatch.Buffer()
+        self._bulk = _BulkBodies(space, block.data)
         self._check_layout(bodies)
 
     def _check_layout(self, bodies: list[pymunk.Body]) -> None:
@@ -119,10 +173,7 @@ class Physics:
         if ids.shape[0] != self.block.data.shape[0] or list(ids[: len(expected)]) != expected:
             raise RuntimeError("pymunk iterates bodies in an unexpected order; the bulk body layout is invalid")
 
-    # --- collision callbacks (called by pymunk during step) -------------------------------
-    def _teammate_begin(self, arbiter: pymunk.Arbiter, space: pymunk.Space, team: int) -> None:
-        self.teammate_contacts[team] += 1
-
+    # --- collision callback (called by pymunk during step) ---------------------------------
     def _ball_begin(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
         self._touchers.append(arbiter.shapes[1].row)
 
@@ -130,30 +181,134 @@ class Physics:
     def set_ball_collides(self, collides: bool) -> None:
         """Switch the ball's collisions off while a goalkeeper holds it (and back on after)."""
         if collides != self._ball_collides:
-            self.ball_shape.filter = pymunk.ShapeFilter() if collides else _NO_COLLISIONS
+            self.ball_shape.filter = _ALL_COLLISIONS if collides else _NO_COLLISIONS
             self._ball_collides = collides
 
-    def step(self, substeps: int) -> np.ndarray:
+    def step(self, substeps: int, kickers: np.ndarray = _NO_TOUCHERS) -> np.ndarray:
         """Advance one cycle in ``substeps`` equal sub-steps; return the rows of the players whose
         body began touching the ball (in order of first contact, no repeats).
 
+        The players in ``kickers`` (rows that kicked this cycle) do not collide with the ball
+        during this cycle: a kick plays the ball around the kicker's body, never into it.
         Reads the block into pymunk first (so whatever the match or the referee wrote is
-        used) and writes the result back into the block.
+        used) and writes the result back into the block; then keeps the players within the
+        field plus its margin and counts new teammate contacts.
         """
-        space = self.space
-        pbatch.set_space_bodies(space, _BODY_FIELDS, self._write)
-        if substeps == 1:
-            space.step(1.0)
-        else:
-            dt = 1.0 / substeps
-            for _ in range(substeps):
-                space.step(dt)
-        read = self._read
-        read.clear()
-        pbatch.get_space_bodies(space, _BODY_FIELDS, read)
-        self.block.data.reshape(-1)[:] = np.frombuffer(read.float_buf(), dtype=np.float64)
+        ghosts = kickers.size and self._ball_collides
+        if ghosts:
+            self.ball_shape.filter = _KICK_GROUP
+            for row in kickers.tolist():
+                self._player_shapes[row].filter = _KICK_GROUP
+        bulk = self._bulk
+        bulk.write()
+        bulk.step(substeps)
+        bulk.read()
+        _after_step(self.block.data, self._in_contact, self._after_params, self.teammate_contacts)
+        if ghosts:
+            self.ball_shape.filter = _ALL_COLLISIONS
+            for row in kickers.tolist():
+                self._player_shapes[row].filter = _ALL_COLLISIONS
         if not self._touchers:
             return _NO_TOUCHERS
         rows = np.fromiter(dict.fromkeys(self._touchers), dtype=np.int64)
         self._touchers.clear()
         return rows
+
+
+class _BulkBodies:
+    """Bulk transfer between a :class:`BodyBlock` and pymunk, and the bare C step.
+
+    Does what ``pymunk.batch.set_space_bodies``/``get_space_bodies`` and ``Space.step`` do,
+    with the C-side argument structures built once instead of on every call (together they
+    cost several microseconds per cycle otherwise). ``Space.step``'s Python bookkeeping
+    (deferred additions and removals, post-step callbacks) is never needed here.
+    The result of the first read is checked against ``pymunk.batch`` itself.
+    """
+
+    def __init__(self, space: pymunk.Space, data: np.ndarray) -> None:
+        from pymunk._chipmunk import ffi, lib
+
+        self._space_ptr = space._space
+        self._each_body = lib.cpSpaceEachBody
+        self._cp_step = lib.cpSpaceStep
+        self._flat = data.reshape(-1)
+        self._write_buffer = pbatch.Buffer()
+        self._write_buffer.set_float_buf(self._flat)
+        self._read_buffer = pbatch.Buffer()
+        self._write_array = self._write_buffer._float_arr
+        self._read_array = self._read_buffer._float_arr
+        self._write_fn = ffi.addressof(lib, "pmSpaceBodySetIteratorFuncBatched")
+        self._read_fn = ffi.addressof(lib, "pmSpaceBodyGetIteratorFuncBatched")
+        self._write_data = self._batch_data(ffi, self._write_buffer)
+        self._read_data = self._batch_data(ffi, self._read_buffer)
+        # Size pymunk's read array once (after that it is refilled in place), and check the
+        # shortcut against pymunk.batch: write the block, read it back both ways.
+        self.write()
+        pbatch.get_space_bodies(space, _BODY_FIELDS, self._read_buffer)
+        self._read_view = np.frombuffer(self._read_buffer.float_buf(), dtype=np.float64)
+        if self._read_view.shape != self._flat.shape:
+            raise RuntimeError("pymunk returned an unexpected amount of body data")
+        expected = self._flat.copy()
+        if not np.array_equal(self._read_view, expected):
+            raise RuntimeError("bulk body write does not match pymunk.batch; pymunk internals changed")
+        self.read()
+        if not np.array_equal(self._flat, expected):
+            raise RuntimeError("bulk body read does not match pymunk.batch; pymunk internals changed")
+
+    @staticmethod
+    def _batch_data(ffi: object, buffer: pbatch.Buffer) -> object:
+        data = ffi.new("pmBatchedData *")
+        data.fields = _BODY_FIELDS.value
+        data.floatArray = buffer._float_arr
+        data.intArray = buffer._int_arr
+        return data
+
+    def write(self) -> None:
+        """Block -> pymunk (positions and velocities of every body)."""
+        array = self._write_array
+        array.num = 0
+        self._each_body(self._space_ptr, self._write_fn, self._write_data)
+        array.num = array.max
+
+    def read(self) -> None:
+        """pymunk -> block."""
+        array = self._read_array
+        address = array.arr
+        array.num = 0
+        self._each_body(self._space_ptr, self._read_fn, self._read_data)
+        if array.arr != address:  # pymunk grew its array: re-wrap it (never expected)
+            self._read_view = np.frombuffer(self._read_buffer.float_buf(), dtype=np.float64)
+        np.copyto(self._flat, self._read_view)
+
+    def step(self, substeps: int) -> None:
+        """One cycle (a total dt of 1) in ``substeps`` equal steps."""
+        step, pointer, dt = self._cp_step, self._space_ptr, 1.0 / substeps
+        for _ in range(substeps):
+            step(pointer, dt)
+
+
+@njit(cache=True, nogil=True)
+def _after_step(data: np.ndarray, in_contact: np.ndarray, params: np.ndarray,
+                counts: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Clamp the players (block rows 0..2n-1) into the field plus margin, update the teammate
+    contact matrix and add the contacts that began to ``counts`` (per team). ``params``:
+    players per team, squared centre distance below which a contact begins, squared distance
+    above which it ends, largest |x| and |y| of a player."""
+    n = int(params[0])
+    begin2, end2, x_max, y_max = params[1], params[2], params[3], params[4]
+    for i in range(2 * n):
+        data[i, 0] = min(max(data[i, 0], -x_max), x_max)
+        data[i, 1] = min(max(data[i, 1], -y_max), y_max)
+    for team in range(2):
+        first = team * n
+        for i in range(first, first + n):
+            xi, yi = data[i, 0], data[i, 1]
+            for j in range(i + 1, first + n):
+                dx, dy = data[j, 0] - xi, data[j, 1] - yi
+                d2 = dx * dx + dy * dy
+                if in_contact[i, j]:
+                    if d2 > end2:
+                        in_contact[i, j] = False
+                elif d2 < begin2:
+                    in_contact[i, j] = True
+                    counts[team] += 1

@@ -13,10 +13,12 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 import numpy as np
+from numba import njit
 
 from soccer_sim.state import AWAY, HOME, EventKind
 
@@ -65,18 +67,12 @@ class StatisticsRecorder:
         self._n = state.players_per_team
         self._relocation = RELOCATION_FACTOR * match.config.physics.player_speed_max
         self._previous = state.pos.copy()
-        self._step = np.empty(2 * self._n)
         self._distance = np.zeros(2 * self._n)
         self._possession = [0, 0]
 
     def on_cycle(self, match: Match) -> None:
         state = match.state
-        delta = np.subtract(state.pos, self._previous, out=self._previous)
-        step = np.hypot(delta[:, 0], delta[:, 1], out=self._step)
-        if step.max() > self._relocation:
-            step[step > self._relocation] = 0.0
-        self._distance += step
-        np.copyto(self._previous, state.pos)
+        _add_distances(state.pos, self._previous, self._distance, self._relocation)
         toucher = state.last_touch
         if toucher >= 0:
             self._possession[0 if toucher < self._n else 1] += 1
@@ -104,3 +100,17 @@ class StatisticsRecorder:
                 reported=reported,
             ))
         self.result = (stats[0], stats[1])
+
+
+@njit(cache=True, nogil=True)
+def _add_distances(pos: np.ndarray, previous: np.ndarray, distance: np.ndarray,
+                   relocation: float) -> None:  # pragma: no cover - compiled
+    """Add each player's displacement since ``previous`` to ``distance`` (relocations left out)
+    and remember the positions."""
+    for i in range(pos.shape[0]):
+        dx, dy = pos[i, 0] - previous[i, 0], pos[i, 1] - previous[i, 1]
+        step = math.sqrt(dx * dx + dy * dy)
+        if step <= relocation:
+            distance[i] += step
+        previous[i, 0] = pos[i, 0]
+        previous[i, 1] = pos[i, 1]

@@ -48,5 +48,7 @@ class ChaserTeam:
         vx, vy = view.ball_vel.tolist()
         dx, dy = self._goal_x - bx, -by
         scale = self._kick_speed / max(math.hypot(dx, dy), 1e-9)
-        command.kick[:] = (dx * scale - vx, dy * scale - vy)
+        kick = command.kick
+        kick[:, 0] = dx * scale - vx
+        kick[:, 1] = dy * scale - vy
         return command

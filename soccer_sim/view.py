@@ -20,6 +20,8 @@ from soccer_sim.physics import BodyBlock
 from soccer_sim.state import NO_PLAYER, WorldState
 from soccer_sim.team import TeamCommand, TeamError, TeamView
 
+_add_reduce = np.add.reduce
+
 
 class TeamFrame:
     """One team's window on the world: builds its :class:`TeamView` and reads its commands.
@@ -45,8 +47,10 @@ class TeamFrame:
             ball=ball_row[0:2], ball_vel=ball_row[2:4], stamina=np.empty(n),
         )
         self._commands = commands[self.rows]
+        self._flat_commands = self._commands.reshape(-1)  # a view: the rows are contiguous
         self._dash = self._commands[:, 0:2]
         self._kick = self._commands[:, 2:4]
+        self._shape = (n, 2)
 
     def sign(self, state: WorldState) -> int:
         """+1 if this team attacks towards +x now (its frame is the absolute one), else -1."""
@@ -77,17 +81,26 @@ class TeamFrame:
 
         Raises :class:`TeamError` naming the team (and player) for a malformed command.
         """
-        sign = self.sign(state)
         if not isinstance(command, TeamCommand):
             raise TeamError(self.name, f"act() must return a TeamCommand, got {type(command).__name__}")
-        self._write(command.dash, "dash", sign, self._dash)
-        self._write(command.kick, "kick", sign, self._kick)
-        if not math.isfinite(self._commands.sum()):
+        dash, kick = command.dash, command.kick
+        # Fast path: float arrays of the right shape (anything else is converted or rejected).
+        if type(dash) is not np.ndarray or dash.shape != self._shape or dash.dtype != np.float64:
+            dash = self._as_array(dash, "dash")
+        if type(kick) is not np.ndarray or kick.shape != self._shape or kick.dtype != np.float64:
+            kick = self._as_array(kick, "kick")
+        if state.attack_direction(self.team) > 0:
+            np.copyto(self._dash, dash)
+            np.copyto(self._kick, kick)
+        else:
+            np.negative(dash, out=self._dash)
+            np.negative(kick, out=self._kick)
+        if not math.isfinite(_add_reduce(self._flat_commands)):
             for field_name, values in (("dash", self._dash), ("kick", self._kick)):
                 self._check_finite(values, field_name)
         move = command.move
         if move is not None:
-            move = self._as_array(move, "move") * sign
+            move = self._as_array(move, "move") * self.sign(state)
             self._check_finite(move, "move")
         return bool(command.catch), move
 
@@ -102,13 +115,6 @@ class TeamFrame:
         if values.dtype.kind not in "fi":
             raise TeamError(self.name, f"command.{field_name} must be numeric, got dtype {values.dtype}")
         return values
-
-    def _write(self, values: object, field_name: str, sign: int, out: np.ndarray) -> None:
-        values = self._as_array(values, field_name)
-        if sign > 0:
-            np.copyto(out, values)
-        else:
-            np.negative(values, out=out)
 
     def _check_finite(self, values: np.ndarray, field_name: str) -> None:
         bad = np.flatnonzero(~np.isfinite(values).all(axis=1))
