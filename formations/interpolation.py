@@ -59,9 +59,8 @@ class TriangleInterpolator:
         self._affine = _affine_maps(simplices, transform, self.values)
         self._affine_list = list(self._affine)
         self._affine_transposed = np.ascontiguousarray(self._affine.transpose(0, 2, 1))
-        self._bary = [
-            tuple(float(v) for v in (t[0, 0], t[0, 1], t[1, 0], t[1, 1], t[2, 0], t[2, 1])) for t in transform
-        ]
+        # (T00, T01, T10, T11, r0, r1) per triangle as Python floats for the scalar point test.
+        self._bary = [tuple(row) for row in transform.reshape(len(transform), 6).tolist()]
         self._build_grid(tri.points)
         self._build_hull(tri)
 
@@ -131,12 +130,16 @@ class TriangleInterpolator:
         _, dist2 = _nearest_on_segments(centres[:, 0:1], centres[:, 1:2], start, delta, self._hull_inv_length2)
         dist = np.sqrt(dist2)
         bound = dist.min(axis=1, keepdims=True) + 2.0 * self._cell_half_diagonal + 1e-9
-        candidates = dist <= bound
+        count = np.count_nonzero(dist <= bound, axis=1)
+        # The candidates are the nearest `count` edges of each cell's centre.
         order = np.argsort(dist, axis=1, kind="stable")
-        self._cell_edges = [tuple(int(e) for e in row[mask[row]]) for row, mask in zip(order, candidates)]
-        width = max(len(c) for c in self._cell_edges)
-        self._cell_edge_count = np.array([len(c) for c in self._cell_edges], dtype=np.intp)
-        self._cell_edge_table = np.array([c + (c[0],) * (width - len(c)) for c in self._cell_edges], dtype=np.intp)
+        self._cell_edges = [tuple(row[:c]) for row, c in zip(order.tolist(), count.tolist())]
+        width = int(count.max())
+        self._cell_edge_count = count.astype(np.intp)
+        table = order[:, :width].copy()
+        unused = np.arange(width)[None, :] >= count[:, None]
+        table[unused] = np.broadcast_to(order[:, :1], table.shape)[unused]
+        self._cell_edge_table = table
         # The triangle that owns each hull edge: Delaunay.neighbors is -1
         # opposite a boundary edge.
         owner = {}

@@ -13,7 +13,7 @@ from scipy.spatial import Delaunay, QhullError
 from formations.errors import FormationError
 
 COLLINEAR_TOLERANCE = 1e-6
-"""Relative spread (smallest / largest singular value of the centred ball
+"""Relative spread (smaller / larger principal standard deviation of the ball
 positions) below which the samples are treated as lying on one line."""
 
 
@@ -25,9 +25,7 @@ def triangulate(balls: np.ndarray, source: str) -> Delaunay:
     n = len(balls)
     if n < 3:
         raise FormationError(source, f"a formation needs at least 3 samples to be triangulated, got {n}")
-    centred = balls - balls.mean(axis=0)
-    singular = np.linalg.svd(centred, compute_uv=False)
-    if singular[0] == 0.0 or singular[1] <= COLLINEAR_TOLERANCE * singular[0]:
+    if _flatness(balls) <= COLLINEAR_TOLERANCE:
         raise FormationError(
             source, f"the ball positions of all {n} samples lie on one line, so they cannot be triangulated"
         )
@@ -53,3 +51,16 @@ def triangulate(balls: np.ndarray, source: str) -> Delaunay:
 def hull_edges(tri: Delaunay) -> np.ndarray:
     """Sample indices (E, 2) of the convex hull's boundary segments."""
     return np.asarray(tri.convex_hull, dtype=np.intp)
+
+
+def _flatness(points: np.ndarray) -> float:
+    """Ratio of the smaller to the larger principal spread of (n, 2) points
+    (0 when they lie on one line). Closed form for the 2 x 2 covariance, which
+    avoids a LAPACK call (and its thread start-up) for a tiny problem."""
+    dx = points[:, 0] - points[:, 0].mean()
+    dy = points[:, 1] - points[:, 1].mean()
+    sxx, syy, sxy = float(np.sum(dx * dx)), float(np.sum(dy * dy)), float(np.sum(dx * dy))
+    mean = 0.5 * (sxx + syy)
+    spread = float(np.hypot(0.5 * (sxx - syy), sxy))
+    largest, smallest = mean + spread, max(mean - spread, 0.0)
+    return 0.0 if largest <= 0.0 else float(np.sqrt(smallest / largest))
