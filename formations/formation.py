@@ -141,6 +141,14 @@ class Formation:
 
         save(self, path)
 
+    def __reduce__(self):
+        # Pickle the definition only (a few kB): the triangulation and lookup
+        # tables are rebuilt on unpickling in a few milliseconds.
+        return (
+            _rebuild,
+            (self.roles, self._balls.copy(), self._positions.copy(), self.name, self.description, self.source),
+        )
+
     def __repr__(self) -> str:
         return (
             f"Formation(name={self.name!r}, roles={len(self.roles)}, samples={self.n_samples}, "
@@ -153,3 +161,9 @@ def _as_float_array(data: ArrayLike, source: str, what: str) -> np.ndarray:
         return np.array(data, dtype=np.float64, copy=True)
     except (TypeError, ValueError) as error:
         raise FormationError(source, f"{what} are not an array of numbers ({error})") from None
+
+
+def _rebuild(
+    roles: tuple[Role, ...], balls: np.ndarray, positions: np.ndarray, name: str, description: str, source: str
+) -> Formation:
+    return Formation(roles, balls, positions, name=name, description=description, source=source)

@@ -271,11 +271,11 @@ class TriangleInterpolator:
         best_edge = np.zeros(k, dtype=np.intp)
         best_s = np.zeros(k, dtype=np.float64)
         best_d2 = np.full(k, np.inf)
+        table_width = self._cell_edge_table.shape[1]
         for j in range(int(count.max(initial=0))):
             rows = np.flatnonzero(count > j)
-            edge = np.where(
-                in_grid[rows], self._cell_edge_table[cell[rows], min(j, self._cell_edge_table.shape[1] - 1)], j
-            )
+            # Round j tries a cell's j-th candidate; points beyond the grid try hull edge j.
+            edge = np.where(in_grid[rows], self._cell_edge_table[cell[rows], min(j, table_width - 1)], j)
             s, d2 = _nearest_on_segments(
                 points[rows, 0],
                 points[rows, 1],

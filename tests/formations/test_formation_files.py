@@ -38,6 +38,17 @@ def test_formation_set_round_trip(tmp_path):
         assert np.array_equal(a.positions((12.5, -3.0)), b.positions((12.5, -3.0)))
 
 
+def test_formations_pickle_compactly():
+    import pickle
+
+    team = formations.load_builtin("4-3-3")
+    data = pickle.dumps(team)
+    assert len(data) < 200_000  # the definition, not the lookup tables
+    again = pickle.loads(data)
+    for situation in Situation:
+        np.testing.assert_array_equal(again.positions((7.0, -3.0), situation), team.positions((7.0, -3.0), situation))
+
+
 def test_layout_is_readable_one_sample_per_line(random_formation):
     text = dumps(random_formation)
     lines = text.splitlines()
