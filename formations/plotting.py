@@ -81,6 +81,10 @@ def draw_formation(ax: Any, formation: Formation, ball_xy: tuple[float, float]) 
         ax.plot([bx, covered[0]], [by, covered[1]], ":", color="white", zorder=4)
         ax.plot([covered[0]], [covered[1]], "x", color="white", zorder=4, label="projection on hull")
     ax.plot([bx], [by], "o", color="white", markeredgecolor="black", markersize=8, zorder=6, label="ball")
+    x0, x1 = ax.get_xlim()
+    y0, y1 = ax.get_ylim()
+    ax.set_xlim(min(x0, bx - 3.0), max(x1, bx + 3.0))  # keep a ball far out of play in the picture
+    ax.set_ylim(min(y0, by - 3.0), max(y1, by + 3.0))
     positions = formation.positions((bx, by))
     for role, (x, y) in zip(formation.roles, positions):
         ax.plot(
