@@ -132,21 +132,21 @@ def push_out_of_circle(block: np.ndarray, cx: float, cy: float, radius: float,
     """Move the players of ``block`` ((k, 2) rows) closer than ``radius`` to (cx, cy) radially
     out onto the circle; players elsewhere are left bit-for-bit unchanged. A player exactly on
     the centre goes along the unit vector ``fallback``. Returns the bool mask of moved rows."""
-    diff = block - np.array((cx, cy))
-    d2 = (diff * diff).sum(axis=1)
+    centre = np.array((cx, cy))
+    diff = block - centre
+    d2 = np.einsum("ij,ij->i", diff, diff)
     inside = d2 < radius * radius
     if not inside.any():
         return inside
-    out = diff[inside]
-    d = np.sqrt(d2[inside])
+    d = np.sqrt(d2, out=d2)
     if not d.all():  # somebody stands exactly on the centre
         centred = d == 0.0
-        out[centred] = fallback
+        diff[centred] = fallback
         d[centred] = 1.0
-    out *= (radius / d)[:, None]
-    out[:, 0] += cx
-    out[:, 1] += cy
-    block[inside] = out
+    np.divide(radius, d, out=d)
+    diff *= d[:, None]
+    diff += centre
+    np.copyto(block, diff, where=inside[:, None])
     return inside
 
 

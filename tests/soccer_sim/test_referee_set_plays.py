@@ -195,3 +195,12 @@ def test_time_over_with_a_match_shorter_than_a_half():
     ref, st, ev = make_world(cycle=9, config=replace(MatchConfig(), max_cycles=10))
     step(ref, st)
     assert st.play_mode == PlayMode.TIME_OVER and st.half == 0
+
+
+def test_a_defender_standing_on_the_centre_spot_is_pushed_back_into_its_own_half():
+    ref, st, ev = make_world(mode=PlayMode.KICK_OFF, mode_team=HOME)
+    st.pos[N + 2] = (0.0, 0.0)  # away defends +x
+    st.pos[N + 3] = (0.0, 9.15)  # on the circle already: stays exactly where it is
+    step(ref, st)
+    assert st.pos[N + 2].tolist() == [CFG.field.centre_circle_radius, 0.0]
+    assert st.pos[N + 3].tolist() == [0.0, 9.15]
