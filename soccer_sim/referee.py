@@ -260,8 +260,10 @@ class Referee:
         self.events.add(state.cycle, EventKind.SET_PLAY, state.mode_team, player,
                         float(state.ball[0]), float(state.ball[1]), int(mode))
 
-    def _restart(self, state: WorldState, mode: PlayMode, team: int, x: float, y: float) -> None:
-        """Begin a set play for ``team`` with the ball still at (x, y)."""
+    def _restart(self, state: WorldState, mode: PlayMode, team: int, x: float, y: float,
+                 first_cycle: int | None = None) -> None:
+        """Begin a set play for ``team`` with the ball still at (x, y); forget the offside
+        marks and the passer (a restart interrupts every pass)."""
         self._spot = (x, y)
         state.ball[0], state.ball[1] = x, y
         state.ball_vel[:] = 0.0
@@ -270,25 +272,16 @@ class Referee:
         self._pass_from = NO_PLAYER
         self._touching = ()
         self._prev_ball = (x, y)
-        self._set_mode(state, mode, team)
+        self._set_mode(state, mode, team, first_cycle=first_cycle)
         self._keep_set_play(state)
 
     def _kick_off(self, state: WorldState, team: int, first_cycle: int | None = None) -> None:
-        """Kick-off for ``team``: ball on the centre spot, both teams in their own halves
-        (players in the wrong half reflected across the halfway line)."""
+        """Kick-off for ``team``: ball on the centre spot, everybody stopped, both teams in
+        their own halves (players in the wrong half reflected across the halfway line)."""
         mirror_into_own_half(state.pos, self._row_direction[state.home_attacks])
         state.vel[:] = 0.0
         state.last_touch = NO_PLAYER
-        self._spot = (0.0, 0.0)
-        state.ball[:] = 0.0
-        state.ball_vel[:] = 0.0
-        state.ball_holder = NO_PLAYER
-        self._clear_offside()
-        self._pass_from = NO_PLAYER
-        self._touching = ()
-        self._prev_ball = (0.0, 0.0)
-        self._set_mode(state, _KICK_OFF, team, first_cycle=first_cycle)
-        self._keep_set_play(state)
+        self._restart(state, _KICK_OFF, team, 0.0, 0.0, first_cycle)
 
     def _keep_set_play(self, state: WorldState) -> None:
         """Every cycle of a set play: ball still on its spot, opponents cleared, kick-off halves
