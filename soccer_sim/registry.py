@@ -57,7 +57,11 @@ def _instantiate(target: Any, name: str) -> Team:
     if isinstance(target, Team) and not isinstance(target, type):
         return target
     if callable(target):
-        team = target()
+        try:
+            team = target()
+        except Exception as exc:
+            raise TeamNotFoundError(f"team {name!r}: calling {target!r} without arguments failed: "
+                                    f"{type(exc).__name__}: {exc}") from exc
         if isinstance(team, Team):
             return team
         raise TeamNotFoundError(f"team {name!r}: calling {target!r} gave {type(team).__name__}, "

@@ -12,15 +12,13 @@ cycle (one numpy call for all positions and velocities); teams must copy what th
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
+from numba import njit
 
 from soccer_sim.physics import BodyBlock
 from soccer_sim.state import NO_PLAYER, WorldState
 from soccer_sim.team import TeamCommand, TeamError, TeamView
 
-_add_reduce = np.add.reduce
 
 
 class TeamFrame:
@@ -47,7 +45,6 @@ class TeamFrame:
             ball=ball_row[0:2], ball_vel=ball_row[2:4], stamina=np.empty(n),
         )
         self._commands = commands[self.rows]
-        self._flat_commands = self._commands.reshape(-1)  # a view: the rows are contiguous
         self._dash = self._commands[:, 0:2]
         self._kick = self._commands[:, 2:4]
         self._shape = (n, 2)
@@ -89,15 +86,10 @@ class TeamFrame:
             dash = self._as_array(dash, "dash")
         if type(kick) is not np.ndarray or kick.shape != self._shape or kick.dtype != np.float64:
             kick = self._as_array(kick, "kick")
-        if state.attack_direction(self.team) > 0:
-            np.copyto(self._dash, dash)
-            np.copyto(self._kick, kick)
-        else:
-            np.negative(dash, out=self._dash)
-            np.negative(kick, out=self._kick)
-        if not math.isfinite(_add_reduce(self._flat_commands)):
-            for field_name, values in (("dash", self._dash), ("kick", self._kick)):
-                self._check_finite(values, field_name)
+        bad = _store_command(dash, kick, float(self.sign(state)), self._commands)
+        if bad >= 0:
+            field_name, values = ("dash", dash) if bad < self.n else ("kick", kick)
+            self._check_finite(values, field_name)
         move = command.move
         if move is not None:
             move = self._as_array(move, "move") * self.sign(state)
@@ -105,19 +97,40 @@ class TeamFrame:
         return bool(command.catch), move
 
     def _as_array(self, values: object, field_name: str) -> np.ndarray:
-        if not isinstance(values, np.ndarray):
-            try:
-                values = np.asarray(values, dtype=np.float64)
-            except (TypeError, ValueError) as exc:
-                raise TeamError(self.name, f"command.{field_name} is not a numeric array ({exc})") from exc
-        if values.shape != (self.n, 2):
-            raise TeamError(self.name, f"command.{field_name} must have shape ({self.n}, 2), got {values.shape}")
-        if values.dtype.kind not in "fi":
+        """``values`` as an (n, 2) float64 array, or a TeamError saying why it cannot be one."""
+        if isinstance(values, np.ndarray) and values.dtype.kind not in "fiu":
             raise TeamError(self.name, f"command.{field_name} must be numeric, got dtype {values.dtype}")
-        return values
+        try:
+            array = np.asarray(values, dtype=np.float64)
+        except (TypeError, ValueError) as exc:
+            raise TeamError(self.name, f"command.{field_name} is not a numeric array ({exc})") from exc
+        if array.shape != self._shape:
+            raise TeamError(self.name, f"command.{field_name} must have shape {self._shape}, got {array.shape}")
+        return array
 
     def _check_finite(self, values: np.ndarray, field_name: str) -> None:
         bad = np.flatnonzero(~np.isfinite(values).all(axis=1))
         if bad.size:
             raise TeamError(self.name, f"command.{field_name} is not finite: {values[bad[0]].tolist()}",
                             player=int(bad[0]))
+
+
+@njit(cache=True, nogil=True)
+def _store_command(dash: np.ndarray, kick: np.ndarray, sign: float,
+                   out: np.ndarray) -> int:  # pragma: no cover - compiled
+    """Write ``sign * dash`` and ``sign * kick`` into ``out`` ((n, 4) rows ``[dash, kick]``);
+    return -1 if every value is finite, else the first bad row (plus n if it is in ``kick``)."""
+    n = dash.shape[0]
+    bad = -1
+    for i in range(n):
+        for k in range(2):
+            d = dash[i, k]
+            c = kick[i, k]
+            out[i, k] = sign * d
+            out[i, 2 + k] = sign * c
+            if bad < 0:
+                if not np.isfinite(d):
+                    bad = i
+                elif not np.isfinite(c):
+                    bad = n + i
+    return bad

@@ -1,0 +1,49 @@
+"""Impossible configurations are rejected with a ConfigError naming the field."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import pytest
+
+from soccer_sim import ConfigError, FieldConfig, MatchConfig, PhysicsConfig, RuleConfig, StaminaConfig, run_match
+
+
+@pytest.mark.parametrize("make, fragment", [
+    (lambda: FieldConfig(length=-105.0), "FieldConfig.length must be a positive"),
+    (lambda: FieldConfig(width=0.0), "FieldConfig.width must be a positive"),
+    (lambda: FieldConfig(goal_width=80.0), "goal_width"),
+    (lambda: FieldConfig(penalty_area_length=60.0), "penalty_area_length"),
+    (lambda: PhysicsConfig(player_radius=-0.3), "PhysicsConfig.player_radius"),
+    (lambda: PhysicsConfig(ball_decay=1.5), "PhysicsConfig.ball_decay must be within"),
+    (lambda: PhysicsConfig(player_mass=0.0), "PhysicsConfig.player_mass"),
+    (lambda: PhysicsConfig(ball_restitution=2.0), "PhysicsConfig.ball_restitution"),
+    (lambda: PhysicsConfig(max_substep_distance=5.0), "max_substep_distance"),
+    (lambda: PhysicsConfig(player_speed_max=float("nan")), "player_speed_max"),
+    (lambda: StaminaConfig(maximum=-1.0), "StaminaConfig.maximum"),
+    (lambda: RuleConfig(half_cycles=0), "RuleConfig.half_cycles"),
+])
+def test_impossible_parts_are_rejected(make, fragment: str) -> None:
+    with pytest.raises(ConfigError, match=fragment):
+        make().validate()
+
+
+def test_match_config_validates_on_construction() -> None:
+    with pytest.raises(ConfigError, match="players_per_team"):
+        MatchConfig(players_per_team=0)
+    with pytest.raises(ConfigError, match="goalie_index"):
+        MatchConfig(players_per_team=3, rules=RuleConfig(goalie_index=5))
+    with pytest.raises(ConfigError, match="max_cycles"):
+        MatchConfig(max_cycles=-4)
+    with pytest.raises(ConfigError, match="goal_width"):
+        replace(MatchConfig(), field=replace(FieldConfig(), goal_width=70.0))
+
+
+def test_small_valid_configs_play() -> None:
+    config = MatchConfig(players_per_team=3, max_cycles=200,
+                         field=FieldConfig(length=40.0, width=25.0, goal_width=5.0, penalty_area_length=8.0,
+                                           penalty_area_width=15.0, goal_area_length=3.0, goal_area_width=8.0,
+                                           centre_circle_radius=4.0))
+    result = run_match("chaser", "chaser", seed=2, config=config)
+    assert result.state.pos.shape == (6, 2)
+    assert result.cycles == 200

@@ -1,0 +1,147 @@
+"""run_match end to end: result fields, score against events, statistics, recorders, cycles."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from core_helpers import Scripted
+
+from soccer_sim import (AWAY, HOME, EventKind, Match, MatchConfig, MatchResult, PlayMode, TeamCommand,
+                        TeamStatistics, run_match)
+from soccer_sim.trivial_teams import ChaserTeam
+
+
+@pytest.fixture(scope="module")
+def chaser_match() -> MatchResult:
+    return run_match("chaser", "chaser", seed=3, config=MatchConfig(max_cycles=1500))
+
+
+def test_result_has_score_events_statistics_and_final_state(chaser_match: MatchResult) -> None:
+    result = chaser_match
+    assert isinstance(result.score, tuple) and len(result.score) == 2
+    assert result.team_names == ("chaser", "chaser")
+    assert result.cycles == 1500 == result.state.cycle
+    assert result.state.play_mode == PlayMode.TIME_OVER
+    goals = result.events.of_kind(EventKind.GOAL)
+    assert sum(1 for g in goals if g[1] == HOME) == result.score[0]
+    assert sum(1 for g in goals if g[1] == AWAY) == result.score[1]
+    assert sum(result.score) > 0  # chasers do score
+    home, away = result.statistics
+    assert isinstance(home, TeamStatistics)
+    assert (home.goals, away.goals) == result.score
+
+
+def test_statistics_are_consistent_with_the_events(chaser_match: MatchResult) -> None:
+    result = chaser_match
+    events = result.events.as_arrays()
+    for team, stats in zip((HOME, AWAY), result.statistics):
+        mine = events["team"] == team
+        assert stats.kicks == np.count_nonzero(mine & (events["kind"] == EventKind.KICK)) > 0
+        assert stats.shots == np.count_nonzero(mine & (events["kind"] == EventKind.SHOT))
+        assert stats.passes == np.count_nonzero(mine & (events["kind"] == EventKind.PASS))
+        assert stats.teammate_contacts > 0  # eleven chasers bump into each other
+        # Eleven players running most of 1500 cycles at up to 1.05 m/cycle.
+        assert 1000.0 < stats.distance_run < 11 * 1500 * 1.05
+    assert result.statistics[0].possession + result.statistics[1].possession == pytest.approx(1.0)
+
+
+def test_idle_players_run_nowhere_and_concede(chaser_match: MatchResult) -> None:
+    result = run_match("chaser", "idle", seed=1, config=MatchConfig(max_cycles=1500))
+    assert result.score[0] > 0 and result.score[1] == 0
+    assert result.statistics[1].distance_run < 0.05 * result.statistics[0].distance_run
+    assert result.statistics[1].kicks == 0
+
+
+def test_max_cycles_and_recorders_see_every_cycle() -> None:
+    calls: list[str] = []
+
+    class Counter:
+        def on_start(self, match: Match) -> None:
+            calls.append(f"start {match.state.cycle}")
+
+        def on_cycle(self, match: Match) -> None:
+            calls.append("cycle")
+
+        def on_end(self, match: Match) -> None:
+            calls.append(f"end {match.state.cycle}")
+
+    run_match("idle", "idle", config=MatchConfig(max_cycles=25), recorders=[Counter()])
+    assert calls[0] == "start 0" and calls[-1] == "end 25"
+    assert calls.count("cycle") == 25
+
+
+def test_team_reported_statistics_are_merged() -> None:
+    class Reporting(ChaserTeam):
+        def statistics(self) -> dict[str, float]:
+            return {"role_switches": 7}
+
+    result = run_match(Reporting(), "idle", config=MatchConfig(max_cycles=10))
+    assert result.statistics[0].reported == {"role_switches": 7.0}
+    assert result.statistics[0].as_dict()["role_switches"] == 7.0
+    assert "role_switches" not in result.statistics[1].as_dict()
+
+
+def test_kick_off_moves_place_players_in_their_own_half() -> None:
+    n = MatchConfig().players_per_team
+    targets = np.column_stack([np.linspace(-40, -5, n), np.linspace(-20, 20, n)])
+    home = Scripted(move=targets)
+    result = run_match(home, Scripted(), config=MatchConfig(max_cycles=2))
+    assert np.allclose(result.state.pos[:n], targets, atol=1e-6)
+    # Away's targets are in its own frame: the same numbers land turned around.
+    away = Scripted(move=targets)
+    result = run_match(Scripted(), away, config=MatchConfig(max_cycles=2))
+    assert np.allclose(result.state.pos[n:], -targets, atol=1e-6)
+
+
+def test_each_team_gets_its_own_seeded_rng_and_side_info() -> None:
+    home, away = Scripted(), Scripted()
+    match = Match(home, away, seed=11, config=MatchConfig(max_cycles=1))
+    match.run()
+    assert home.side_info.team == HOME and away.side_info.team == AWAY
+    assert home.side_info.players_per_team == 11 and home.side_info.goalie_index == 0
+    a, b = home.rng.random(), away.rng.random()
+    assert a != b
+    again_home = Scripted()
+    Match(again_home, Scripted(), seed=11, config=MatchConfig(max_cycles=1)).run()
+    assert np.isclose(again_home.rng.random(), a)
+
+
+def test_a_match_is_played_once_and_a_team_object_plays_one_side() -> None:
+    match = Match("idle", "idle", config=MatchConfig(max_cycles=1))
+    match.run()
+    with pytest.raises(RuntimeError, match="only once"):
+        match.run()
+    team = ChaserTeam()
+    with pytest.raises(ValueError, match="both sides"):
+        Match(team, team)
+    with pytest.raises(ValueError, match="seed"):
+        Match("idle", "idle", seed=-1)
+    with pytest.raises(TypeError, match="MatchConfig"):
+        Match("idle", "idle", config={"max_cycles": 3})
+
+
+def test_referee_replacing_state_arrays_is_picked_up() -> None:
+    """The state arrays are the authority even if someone rebinds them instead of writing."""
+    match = Match("idle", "idle", config=MatchConfig(max_cycles=5))
+    match.start()
+    moved = match.state.pos.copy()
+    moved[5] = (-20.0, 10.0)
+    match.state.pos = moved
+    match.step()
+    assert match.state.pos is match.block.pos
+    assert np.allclose(match.state.pos[5], (-20.0, 10.0))
+
+
+def test_chaser_kicks_towards_the_opponents_goal_in_its_own_frame() -> None:
+    from soccer_sim.config import MatchConfig as Config
+    from soccer_sim.team import SideInfo, TeamView
+
+    team = ChaserTeam()
+    team.reset(SideInfo(AWAY, "c", "x", 2, 0), Config(players_per_team=2), np.random.default_rng(0))
+    view = TeamView(own_pos=np.array([[-1.0, 0.0], [-10.0, 5.0]]), own_vel=np.zeros((2, 2)),
+                    opp_pos=np.zeros((2, 2)), opp_vel=np.zeros((2, 2)), ball=np.array([0.0, 0.0]),
+                    ball_vel=np.zeros(2), stamina=np.ones(2))
+    command = team.act(view)
+    assert isinstance(command, TeamCommand)
+    assert np.allclose(command.kick, [[2.7, 0.0], [2.7, 0.0]])
+    assert command.dash[0, 0] > 0 and command.dash[1, 0] > 0 and command.dash[1, 1] < 0

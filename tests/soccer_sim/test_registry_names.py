@@ -1,0 +1,57 @@
+"""Resolving teams by registered name, module path, class or object."""
+
+from __future__ import annotations
+
+import pytest
+
+from soccer_sim import TeamNotFoundError, available_teams, resolve_team
+from soccer_sim.trivial_teams import ChaserTeam, IdleTeam
+
+
+def test_builtin_names_resolve_without_installation() -> None:
+    team, name = resolve_team("chaser")
+    assert isinstance(team, ChaserTeam) and name == "chaser"
+    team, name = resolve_team("idle")
+    assert isinstance(team, IdleTeam) and name == "idle"
+    assert {"chaser", "idle"} <= set(available_teams())
+
+
+def test_each_resolution_makes_a_fresh_team() -> None:
+    assert resolve_team("chaser")[0] is not resolve_team("chaser")[0]
+
+
+def test_module_paths_classes_and_objects() -> None:
+    team, name = resolve_team("soccer_sim.trivial_teams:ChaserTeam")
+    assert isinstance(team, ChaserTeam) and name == "soccer_sim.trivial_teams:ChaserTeam"
+    team, name = resolve_team(IdleTeam)
+    assert isinstance(team, IdleTeam) and name == "IdleTeam"
+    existing = ChaserTeam()
+    assert resolve_team(existing) == (existing, "ChaserTeam")
+    existing.name = "my chaser"
+    assert resolve_team(existing)[1] == "my chaser"
+
+
+def test_unknown_name_lists_the_available_ones() -> None:
+    with pytest.raises(TeamNotFoundError) as info:
+        resolve_team("chasr")
+    message = str(info.value)
+    assert "'chasr'" in message and "chaser" in message and "idle" in message
+
+
+@pytest.mark.parametrize("path, fragment", [
+    ("no_such_module_xyz:Team", "cannot import module 'no_such_module_xyz'"),
+    ("soccer_sim.trivial_teams:NoSuchTeam", "has no attribute 'NoSuchTeam'"),
+    ("soccer_sim.trivial_teams:", "must look like"),
+    ("soccer_sim.trivial_teams:math", "neither a Team nor a class"),
+    ("soccer_sim.trivial_teams:TeamCommand", "without arguments failed"),
+])
+def test_bad_paths_say_what_is_wrong(path: str, fragment: str) -> None:
+    with pytest.raises(TeamNotFoundError, match=fragment):
+        resolve_team(path)
+
+
+def test_non_teams_are_rejected() -> None:
+    with pytest.raises(TeamNotFoundError, match="cannot use 42"):
+        resolve_team(42)
+    with pytest.raises(TeamNotFoundError, match="lacks reset"):
+        resolve_team(dict)
