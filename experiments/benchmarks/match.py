@@ -1,0 +1,65 @@
+"""``soccer-sim bench match``: wall time of whole matches between two teams.
+
+Reports the median and fastest time per match and the microseconds per cycle (everything
+included: both teams, views, commands, motion rules, pymunk, referee, statistics), after
+one warm-up match that pays for imports and for loading the compiled kernels. ``--profile``
+adds a cProfile top list of one more match.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--home", default="chaser", help="home team (default: chaser)")
+    parser.add_argument("--away", default="chaser", help="away team (default: chaser)")
+    parser.add_argument("--matches", type=int, default=5, help="timed matches (default: 5)")
+    parser.add_argument("--cycles", type=int, default=None, help="cycles per match (default: a full match)")
+    parser.add_argument("--seed", type=int, default=0, help="seed of the first match; match i uses seed + i")
+    parser.add_argument("--profile", action="store_true", help="also print a cProfile top list of one match")
+    parser.add_argument("--top", type=int, default=25, help="entries in the profile top list (default: 25)")
+
+
+def run(args: argparse.Namespace) -> int:
+    import cProfile
+    import io
+    import pstats
+    import statistics
+    import time
+
+    from rich.console import Console
+    from rich.table import Table
+
+    from soccer_sim import MatchConfig, run_match
+
+    console = Console()
+    if args.matches < 1:
+        console.print("[red]error:[/red] --matches must be at least 1")
+        return 2
+    config = MatchConfig(max_cycles=args.cycles)
+    run_match(args.home, args.away, seed=args.seed, config=MatchConfig(max_cycles=200))  # warm-up
+    times, cycles, goals = [], [], []
+    for i in range(args.matches):
+        start = time.perf_counter()
+        result = run_match(args.home, args.away, seed=args.seed + i, config=config)
+        times.append(time.perf_counter() - start)
+        cycles.append(result.cycles)
+        goals.append(sum(result.score))
+    median = statistics.median(times)
+    per_cycle = [t / c * 1e6 for t, c in zip(times, cycles)]
+    table = Table(title=f"{args.home} vs {args.away}: {args.matches} matches of {cycles[0]} cycles")
+    for column in ("median s / match", "min s / match", "median µs / cycle", "min µs / cycle", "goals / match"):
+        table.add_column(column, justify="right")
+    table.add_row(f"{median:.3f}", f"{min(times):.3f}", f"{statistics.median(per_cycle):.1f}",
+                  f"{min(per_cycle):.1f}", f"{statistics.mean(goals):.1f}")
+    console.print(table)
+    if args.profile:
+        profiler = cProfile.Profile()
+        profiler.enable()
+        run_match(args.home, args.away, seed=args.seed, config=config)
+        profiler.disable()
+        out = io.StringIO()
+        pstats.Stats(profiler, stream=out).sort_stats("tottime").print_stats(args.top)
+        console.print(out.getvalue(), markup=False, highlight=False)
+    return 0
