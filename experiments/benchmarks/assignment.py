@@ -42,6 +42,9 @@ SIZE_LIMITS: dict[str, tuple[int, str]] = {
 
 #: Growth exponent used to predict the next size's runtime from the previous one.
 GROWTH: dict[str, float] = {
+    "mmd+msd2": 2.0,  # k-d tree candidate graph: a few tens of pairs per robot
+    "mmdr (fast)": 2.0,
+    "bottleneck": 2.0,
     "mmdr (bitvector)": 4.0,
     "mmdr (dp)": 8.0,
     "msd": 3.0,  # dense shortest augmenting path (scipy)
