@@ -39,4 +39,4 @@ def mark_offside_positions(pos: np.ndarray, n: int, team: int, direction: int, b
     marks = out[own]
     np.greater(pos[own, 0] * direction, line, out=marks)
     out[kickers] = False
-    return bool(marks.any())
+    return np.count_nonzero(marks) > 0

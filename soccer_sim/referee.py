@@ -25,11 +25,12 @@ Decisions where the rules leave room:
   centre crossed the touchline, corner point, goal-area corner, penalty-area edge); the
   free kick for offside is taken at the offender's position clamped into the field.
 * **Set plays** keep the ball on its spot until the mode team kicks it; body touches do not
-  take a set play and are not judged (no TOUCH/PASS events, no last touch). Opponents are pushed to ``set_play_clearance`` every cycle (at a kick-off
-  to the larger of that and the centre-circle radius); players pushed by the referee lose
-  their velocity. There is no double-touch rule and opponents need not leave the penalty
-  area at a goal kick. Free kicks are indirect in name only: a goal scored straight from
-  a free kick or a kick-off counts.
+  take a set play and are not judged (no TOUCH/PASS events, no last touch). Opponents are
+  pushed to ``set_play_clearance`` every cycle (at a kick-off to the larger of that and the
+  centre-circle radius); players pushed by the referee lose their velocity. There is no
+  double-touch rule and opponents need not leave the penalty area at a goal kick. Free
+  kicks are indirect in name only: a goal scored straight from a free kick or a kick-off
+  counts.
 * **Kick-off** positions: after a goal, players standing in the opponents' half are
   reflected across the halfway line; ``apply_moves`` targets are clamped onto it instead.
 * **Catch area.** A point robot has no orientation, so the catch rectangle
@@ -117,6 +118,7 @@ class Referee:
         self._touch_y = f.half_width + p.ball_radius  # whole ball beyond the touchline
         self._post_y = f.goal_width / 2.0
         self._clearance = r.set_play_clearance
+        self._offside_reach2 = r.offside_active_distance ** 2
         self._kick_off_radius = max(r.set_play_clearance, f.centre_circle_radius)
         self._half_end = r.half_cycles
         self._match_end = config.total_cycles
@@ -147,6 +149,8 @@ class Referee:
         self._prev_ball = (math.nan, math.nan)
         self._offside = np.zeros(2 * n, dtype=bool)
         self._offside_pending = False
+        self._offside_rows = np.zeros(0, dtype=np.int64)
+        """Rows of ``_offside`` that are marked (while ``_offside_pending``)."""
         self._last_catch_attempt = [_NEVER, _NEVER]
         self._pass_from = NO_PLAYER
         self._touching: tuple[int, ...] = ()
@@ -299,7 +303,7 @@ class Referee:
             self._keep_kick_off_positions(state, other, sx, sy)
         else:
             moved = push_clear_of_spot(state.pos[rows], sx, sy, self._clearance, self.config.field)
-            if moved.any():
+            if moved is not None:
                 state.vel[rows][moved] = 0.0
         if state.cycle - state.mode_start + 1 >= self.config.rules.set_play_timeout:
             self.events.add(state.cycle, EventKind.DROP_BALL, NO_TEAM, NO_PLAYER, sx, sy, int(state.play_mode))
@@ -316,7 +320,7 @@ class Referee:
             state.vel[moved] = 0.0
         fallback = (-float(state.attack_direction(other)), 0.0)
         pushed = push_out_of_circle(pos[rows], sx, sy, self._kick_off_radius, fallback)
-        if pushed.any():
+        if pushed is not None:
             state.vel[rows][pushed] = 0.0
 
     def _half_time(self, state: WorldState) -> None:
@@ -468,6 +472,8 @@ class Referee:
         if self.config.rules.offside and one_team and mode in _OFFSIDE_MODES:
             self._offside_pending = mark_offside_positions(
                 state.pos, n, team, state.attack_direction(team), ball_x, rows, self._offside)
+            if self._offside_pending:
+                self._offside_rows = np.flatnonzero(self._offside)
         else:
             self._clear_offside()
 
@@ -477,12 +483,14 @@ class Referee:
             self._offside_pending = False
 
     def _check_offside_approach(self, state: WorldState) -> None:
-        """A marked player within ``offside_active_distance`` of the ball is penalised."""
-        rows = np.flatnonzero(self._offside)
-        d = np.hypot(state.pos[rows, 0] - state.ball[0], state.pos[rows, 1] - state.ball[1])
-        near = d <= self.config.rules.offside_active_distance
-        if near.any():
-            self._call_offside(state, int(rows[int(np.argmax(near))]))
+        """A marked player within ``offside_active_distance`` of the ball is penalised (the
+        nearest, if several are)."""
+        rows = self._offside_rows
+        diff = state.pos[rows] - state.ball
+        d2 = (diff * diff).sum(axis=1)
+        nearest = int(d2.argmin())
+        if d2[nearest] <= self._offside_reach2:
+            self._call_offside(state, int(rows[nearest]))
 
     def _call_offside(self, state: WorldState, row: int) -> None:
         """OFFSIDE event and an indirect free kick for the defenders at the offender's position."""
