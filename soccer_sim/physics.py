@@ -36,6 +36,11 @@ _SOLVER_ITERATIONS = 3
 sub-steps repeat the solve anyway."""
 _COLLISION_SLOP = 0.005
 """Overlap (m) pymunk tolerates between touching bodies before pushing them apart."""
+_HASH_CELL = 2.0
+"""Cell size (m) of pymunk's spatial hash, a few player diameters: in the scrums the
+trivial teams produce, the hash is about a tenth faster than the default bounding-box tree."""
+_HASH_CELLS = 1000
+"""Number of cells of the spatial hash table."""
 CONTACT_BEGIN_GAP = 0.01
 """Two teammates come into contact when the gap between their bodies drops below this (m)..."""
 CONTACT_END_GAP = 0.05
@@ -118,6 +123,7 @@ class Physics:
         self.space = space = pymunk.Space()
         space.iterations = _SOLVER_ITERATIONS
         space.collision_slop = _COLLISION_SLOP
+        space.use_spatial_hash(_HASH_CELL, _HASH_CELLS)
         self.teammate_contacts = np.zeros(2, dtype=np.int64)
         """Contacts begun between two players of the same team, per team (home, away)."""
         self._in_contact = np.zeros((2 * n, 2 * n), dtype=np.bool_)

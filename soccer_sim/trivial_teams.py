@@ -38,6 +38,7 @@ class ChaserTeam:
         self._goal_x = config.field.half_length
         self._kick_speed = config.physics.kick_speed_max
         self._command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
+        self._kick_row = np.zeros(2)
 
     def act(self, view: TeamView) -> TeamCommand:
         command = self._command
@@ -48,7 +49,8 @@ class ChaserTeam:
         vx, vy = view.ball_vel.tolist()
         dx, dy = self._goal_x - bx, -by
         scale = self._kick_speed / max(math.hypot(dx, dy), 1e-9)
-        kick = command.kick
-        kick[:, 0] = dx * scale - vx
-        kick[:, 1] = dy * scale - vy
+        row = self._kick_row
+        row[0] = dx * scale - vx
+        row[1] = dy * scale - vy
+        command.kick[...] = row
         return command

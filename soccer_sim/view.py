@@ -55,13 +55,9 @@ class TeamFrame:
 
     def update_view(self, state: WorldState) -> TeamView:
         """Refresh and return the team's view of ``state`` (arrays overwritten in place)."""
-        if self.sign(state) > 0:
-            np.copyto(self._mirror, self._block.dynamic)
-        else:
-            np.negative(self._block.dynamic, out=self._mirror)
         view = self.view
         team = self.team
-        np.copyto(view.stamina, state.stamina[self.rows])
+        _mirror(self._block.dynamic, float(self.sign(state)), self._mirror, state.stamina, self._offset, view.stamina)
         view.play_mode = state.play_mode
         view.mode_ours = state.mode_team == team
         score = state.score.tolist()
@@ -134,3 +130,14 @@ def _store_command(dash: np.ndarray, kick: np.ndarray, sign: float,
                 elif not np.isfinite(c):
                     bad = n + i
     return bad
+
+
+@njit(cache=True, nogil=True)
+def _mirror(bodies: np.ndarray, sign: float, out: np.ndarray, stamina: np.ndarray, first: int,
+            stamina_out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """``out = sign * bodies`` and this team's stamina (rows ``first`` onwards) into ``stamina_out``."""
+    for i in range(bodies.shape[0]):
+        for k in range(bodies.shape[1]):
+            out[i, k] = sign * bodies[i, k]
+    for i in range(stamina_out.shape[0]):
+        stamina_out[i] = stamina[first + i]
