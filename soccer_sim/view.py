@@ -49,15 +49,12 @@ class TeamFrame:
         self._kick = self._commands[:, 2:4]
         self._shape = (n, 2)
 
-    def sign(self, state: WorldState) -> int:
-        """+1 if this team attacks towards +x now (its frame is the absolute one), else -1."""
-        return state.attack_direction(self.team)
-
-    def update_view(self, state: WorldState) -> TeamView:
-        """Refresh and return the team's view of ``state`` (arrays overwritten in place)."""
+    def update_view(self, state: WorldState, sign: int) -> TeamView:
+        """Refresh and return the team's view of ``state`` (arrays overwritten in place).
+        ``sign``: the team's attack direction, ``state.attack_direction(team)``."""
         view = self.view
         team = self.team
-        _mirror(self._block.dynamic, float(self.sign(state)), self._mirror, state.stamina, self._offset, view.stamina)
+        _mirror(self._block.dynamic, float(sign), self._mirror, state.stamina, self._offset, view.stamina)
         view.play_mode = state.play_mode
         view.mode_ours = state.mode_team == team
         score = state.score.tolist()
@@ -68,9 +65,10 @@ class TeamFrame:
         view.ball_holder = holder if 0 <= holder < self.n else NO_PLAYER
         return view
 
-    def read_command(self, command: object, state: WorldState) -> tuple[bool, np.ndarray | None]:
+    def read_command(self, command: object, sign: int) -> tuple[bool, np.ndarray | None]:
         """Validate ``command`` and write its dash and kick, in the absolute frame, into this
         team's rows of the command buffer; return (catch request, absolute move targets or None).
+        ``sign``: the team's attack direction, as for :meth:`update_view`.
 
         Raises :class:`TeamError` naming the team (and player) for a malformed command.
         """
@@ -82,13 +80,13 @@ class TeamFrame:
             dash = self._as_array(dash, "dash")
         if type(kick) is not np.ndarray or kick.shape != self._shape or kick.dtype != np.float64:
             kick = self._as_array(kick, "kick")
-        bad = _store_command(dash, kick, float(self.sign(state)), self._commands)
+        bad = _store_command(dash, kick, float(sign), self._commands)
         if bad >= 0:
             field_name, values = ("dash", dash) if bad < self.n else ("kick", kick)
             self._check_finite(values, field_name)
         move = command.move
         if move is not None:
-            move = self._as_array(move, "move") * self.sign(state)
+            move = self._as_array(move, "move") * sign
             self._check_finite(move, "move")
         return bool(command.catch), move
 

@@ -17,6 +17,10 @@ from soccer_sim.view import TeamFrame
 N = 4
 
 
+def view_of(frame: TeamFrame, state: WorldState):
+    return frame.update_view(state, state.attack_direction(frame.team))
+
+
 def make_world(n: int = N) -> tuple[BodyBlock, WorldState, np.ndarray]:
     block = BodyBlock(n)
     state = WorldState(pos=block.pos, vel=block.vel, stamina=np.arange(2 * n, dtype=float),
@@ -37,8 +41,8 @@ worlds = arrays(np.float64, (2 * N + 1, 4), elements=finite)
 def test_away_view_is_the_absolute_world_turned_180_degrees(values: np.ndarray) -> None:
     block, state, commands = make_world()
     fill(block, values)
-    home = TeamFrame(HOME, "h", N, block, commands).update_view(state)
-    away = TeamFrame(AWAY, "a", N, block, commands).update_view(state)
+    home = view_of(TeamFrame(HOME, "h", N, block, commands), state)
+    away = view_of(TeamFrame(AWAY, "a", N, block, commands), state)
     assert np.array_equal(home.own_pos, state.pos[:N]) and np.array_equal(home.opp_vel, state.vel[N:])
     assert np.array_equal(home.ball, state.ball) and np.array_equal(home.ball_vel, state.ball_vel)
     assert np.array_equal(away.own_pos, -state.pos[N:]) and np.array_equal(away.own_vel, -state.vel[N:])
@@ -61,8 +65,8 @@ def test_mirrored_worlds_look_the_same_to_the_mirrored_teams(values: np.ndarray)
     mirror_state.score[:] = (1, 2)
     mirror_state.mode_team = AWAY
     state.mode_team = HOME
-    seen = TeamFrame(HOME, "h", N, block, commands).update_view(state)
-    mirrored = TeamFrame(AWAY, "a", N, mirror_block, mirror_commands).update_view(mirror_state)
+    seen = view_of(TeamFrame(HOME, "h", N, block, commands), state)
+    mirrored = view_of(TeamFrame(AWAY, "a", N, mirror_block, mirror_commands), mirror_state)
     for name in ("own_pos", "own_vel", "opp_pos", "opp_vel", "ball", "ball_vel", "stamina"):
         assert np.array_equal(getattr(seen, name), getattr(mirrored, name)), name
     assert seen.score == mirrored.score == (2, 1)
@@ -75,8 +79,8 @@ def test_after_half_time_the_home_team_is_the_mirrored_one() -> None:
     block.pos[N] = (-7.0, 1.0)
     state.home_attacks = -1
     state.half = 1
-    home = TeamFrame(HOME, "h", N, block, commands).update_view(state)
-    away = TeamFrame(AWAY, "a", N, block, commands).update_view(state)
+    home = view_of(TeamFrame(HOME, "h", N, block, commands), state)
+    away = view_of(TeamFrame(AWAY, "a", N, block, commands), state)
     assert home.own_pos[0].tolist() == [-10.0, -3.0]
     assert away.own_pos[0].tolist() == [-7.0, 1.0]
     assert home.half == away.half == 1
@@ -89,14 +93,16 @@ def test_commands_are_turned_back_into_the_absolute_frame() -> None:
     move = np.ones((N, 2))
     for team, sign in ((HOME, 1.0), (AWAY, -1.0)):
         frame = TeamFrame(team, "t", N, block, commands)
-        catch, moved = frame.read_command(TeamCommand(dash=dash, kick=kick, catch=True, move=move), state)
+        command = TeamCommand(dash=dash, kick=kick, catch=True, move=move)
+        catch, moved = frame.read_command(command, state.attack_direction(team))
         rows = slice(team * N, (team + 1) * N)
         assert np.array_equal(commands[rows, 0:2], sign * dash)
         assert np.array_equal(commands[rows, 2:4], sign * kick)
         assert catch is True
         assert np.array_equal(moved, sign * move)
     state.home_attacks = -1  # second half: home is now the mirrored team
-    TeamFrame(HOME, "t", N, block, commands).read_command(TeamCommand(dash=dash, kick=kick), state)
+    TeamFrame(HOME, "t", N, block, commands).read_command(TeamCommand(dash=dash, kick=kick),
+                                                          state.attack_direction(HOME))
     assert np.array_equal(commands[:N, 0:2], -dash)
 
 
@@ -107,10 +113,10 @@ def test_view_reports_play_mode_score_cycle_and_holder_in_team_terms() -> None:
     state.score[:] = (3, 1)
     state.cycle = 77
     state.ball_holder = N + 2
-    home = TeamFrame(HOME, "h", N, block, commands).update_view(state)
+    home = view_of(TeamFrame(HOME, "h", N, block, commands), state)
     assert (home.play_mode, home.mode_ours, home.score, home.cycle, home.ball_holder) == \
         (PlayMode.GOALIE_HOLDS, False, (3, 1), 77, NO_PLAYER)
-    away = TeamFrame(AWAY, "a", N, block, commands).update_view(state)
+    away = view_of(TeamFrame(AWAY, "a", N, block, commands), state)
     assert (away.mode_ours, away.score, away.ball_holder) == (True, (1, 3), 2)
 
 
