@@ -1,0 +1,35 @@
+"""The example programs run as documented and their teams behave as described."""
+
+from __future__ import annotations
+
+import runpy
+from pathlib import Path
+
+import numpy as np
+
+import soccer_sim
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+
+
+def test_assign_robots_prints_every_method(capsys) -> None:
+    runpy.run_path(str(EXAMPLES / "assign_robots.py"), run_name="__main__")
+    lines = capsys.readouterr().out.splitlines()
+    methods = [line.split()[0] for line in lines[1:]]
+    from agents.assignment import METHODS
+
+    assert methods == list(METHODS)
+    makespans = {line.split()[0]: float(line.split()[1]) for line in lines[1:]}
+    # Minimal-makespan methods can never be beaten on makespan by a baseline.
+    assert makespans["mmdr"] == makespans["mmd+msd2"] == min(makespans.values())
+
+
+def test_formation_team_keeps_its_shape_against_chaser() -> None:
+    module = runpy.run_path(str(EXAMPLES / "formation_team.py"))
+    team = module["FormationTeam"]()
+    result = soccer_sim.run_match(team, "chaser", seed=3, config=soccer_sim.MatchConfig(max_cycles=400))
+    assert result.cycles == 400
+    own = result.state.pos[:11]
+    # Unlike the chaser, a formation team stays spread over the field.
+    spread = np.ptp(own, axis=0)
+    assert spread[0] > 20.0 and spread[1] > 20.0
