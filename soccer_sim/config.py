@@ -126,7 +126,9 @@ class PhysicsConfig:
     of its normal speed off a post and ``ball_restitution * player_restitution`` off a player."""
     max_substep_distance: float = 0.3
     """Physics sub-steps are added until no body moves further than this in one sub-step (m),
-    so that a full-speed ball cannot pass through a player."""
+    so that a full-speed ball cannot pass through a player. Motion is measured relative to the
+    bodies it could meet in the cycle (see soccer_sim.physics.SubstepPlanner): a body far from
+    everything cannot pass through anything, whatever its speed."""
 
     def validate(self) -> None:
         _require_positive(

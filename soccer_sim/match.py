@@ -24,7 +24,6 @@ team, home first), and nothing else is random.
 from __future__ import annotations
 
 import gc
-import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
@@ -200,7 +199,7 @@ class Match:
 
         # 3-4. Kicks, then the referee judges kicks and catches.
         holder = state.ball_holder
-        count, nearest = kin.kick_candidates(state.pos, state.ball, self._kick, referee.kick_mask(state), holder,
+        count, _ = kin.kick_candidates(state.pos, state.ball, self._kick, referee.kick_mask(state), holder,
                                              self._kicker_rows)
         if count:
             kickers = self._kicker_rows[:count].copy()
@@ -214,7 +213,7 @@ class Match:
 
         # 5. Dashes.
         self._sync_state()
-        fastest = kin.dash(state.vel, state.stamina, self._dash, self.noise.players)
+        kin.dash(state.vel, state.stamina, self._dash, self.noise.players)
 
         # 6. Collision solving. A held ball does not collide, nor in the cycle it is released
         # (it lies on the goalkeeper's centre until the kick carries it away).
@@ -222,12 +221,7 @@ class Match:
         holder = state.ball_holder
         physics = self.physics
         physics.set_ball_collides(holder == NO_PLAYER and not released)
-        if holder == NO_PLAYER:
-            bx, by = state.ball.tolist()
-            vx, vy = state.ball_vel.tolist()
-            substeps = self._substeps.count(fastest, bx, by, math.hypot(vx, vy), nearest)
-        else:
-            substeps = self._substeps.count(fastest, 0.0, 0.0, 0.0, nearest)
+        substeps = self._substeps.count(self.block.dynamic, holder == NO_PLAYER)
         self.touchers = physics.step(substeps, kickers)
         if holder != NO_PLAYER:
             state.ball[:] = state.pos[holder]

@@ -175,6 +175,10 @@ def test_ball_decays_by_the_ball_decay_each_cycle() -> None:
     assert block.vel[0, 0] == pytest.approx(PHYS.player_decay)
 
 
+def planned(block: BodyBlock, ball_free: bool = True) -> int:
+    return SubstepPlanner(CONFIG).count(block.dynamic, ball_free)
+
+
 @pytest.mark.parametrize("player_speed", [0.0, 1.05])
 def test_full_speed_ball_does_not_pass_through_a_player(player_speed: float) -> None:
     block, physics = world()
@@ -182,7 +186,8 @@ def test_full_speed_ball_does_not_pass_through_a_player(player_speed: float) -> 
     block.vel[0] = (-player_speed, 0.0)  # running at the ball makes it worse
     block.ball[:] = (-1.2, 0.0)
     block.ball_vel[:] = (PHYS.ball_speed_max, 0.0)
-    substeps = SubstepPlanner(CONFIG).count(player_speed, -1.2, 0.0, PHYS.ball_speed_max, nearest_player=1.2)
+    substeps = planned(block)
+    assert substeps == math.ceil((PHYS.ball_speed_max + player_speed) / PHYS.max_substep_distance)
     touchers = physics.step(substeps)
     assert block.ball[0] < block.pos[0, 0]  # still on the near side
     assert block.ball_vel[0] < 0.0  # bounced back
@@ -199,31 +204,61 @@ def test_without_substeps_the_same_ball_would_tunnel() -> None:
     assert block.ball[0] > 1.0
 
 
-def test_substeps_follow_the_fastest_body_that_can_hit_something() -> None:
-    planner = SubstepPlanner(CONFIG)
+@pytest.mark.parametrize("speed", [0.4, 0.7, 1.05])
+def test_players_running_head_on_do_not_pass_through_each_other(speed: float) -> None:
+    block, physics = world()
+    block.pos[0], block.vel[0] = (-0.8 * speed, 0.0), (speed, 0.0)
+    block.pos[N], block.vel[N] = (0.8 * speed, 0.0), (-speed, 0.0)
+    substeps = planned(block)
+    assert substeps == math.ceil(2 * speed / (2 * PHYS.max_substep_distance) - 1e-9)
+    physics.step(substeps)
+    assert block.pos[0, 0] < block.pos[N, 0]
+    if speed > PHYS.max_substep_distance:  # the control: one step would let them swap sides
+        block2, physics2 = world()
+        block2.data[:] = 0.0
+        block2.pos[:] = FAR
+        block2.pos[0], block2.vel[0] = (-0.8 * speed, 0.0), (speed, 0.0)
+        block2.pos[N], block2.vel[N] = (0.8 * speed, 0.0), (-speed, 0.0)
+        physics2.step(1)
+        assert block2.pos[0, 0] > block2.pos[N, 0]
+
+
+def test_substeps_follow_closing_speeds_of_bodies_that_can_meet() -> None:
     step = PHYS.max_substep_distance
-    assert planner.count(0.0, 0.0, 0.0, 0.0, 10.0) == 1
-    assert planner.count(PHYS.player_speed_max, 0.0, 0.0, 0.0, 10.0) == math.ceil(1.05 / step)
-    # A fast ball near a player: its speed relative to a player running at it counts.
-    assert planner.count(0.0, 0.0, 0.0, 3.0, 2.0) == math.ceil((3.0 + 1.05) / step)
-    # The same ball in free flight needs no sub-steps.
-    assert planner.count(0.0, 0.0, 0.0, 3.0, 20.0) == 1
+    block, _ = world()
+    assert planned(block) == 1
+    # A lone sprinter, and two players running side by side, need no sub-steps.
+    block.vel[0] = (1.05, 0.0)
+    block.pos[1], block.vel[1] = block.pos[0] + (0.0, 0.7), (1.05, 0.0)
+    assert planned(block) == 1
+    # Head-on towards a teammate within reach.
+    block.pos[2], block.vel[2] = block.pos[0] + (2.0, 0.0), (-1.05, 0.0)
+    assert planned(block) == math.ceil(2.1 / (2 * step))
+    # A fast ball near a player: the closing speed counts...
+    block.ball[:] = block.pos[5] + (2.0, 0.0)
+    block.ball_vel[:] = (-3.0, 0.0)
+    assert planned(block) == math.ceil(3.0 / step)
+    # ...not while a goalkeeper holds it...
+    assert planned(block, ball_free=False) == math.ceil(2.1 / (2 * step))
+    # ...and not in free flight.
+    block.ball[:] = (0.0, 20.0)
+    assert planned(block) == math.ceil(2.1 / (2 * step))
     # Near a thin goal post the ball may move at most the ball-post contact distance.
+    block.vel[:] = 0.0
+    block.ball[:] = (CONFIG.field.half_length - 2.0, CONFIG.field.goal_width / 2)
+    block.ball_vel[:] = (3.0, 0.0)
     contact = CONFIG.field.goal_post_radius + PHYS.ball_radius
-    assert planner.count(0.0, CONFIG.field.half_length - 2.0, CONFIG.field.goal_width / 2, 3.0, 20.0) == \
-        math.ceil(3.0 / contact)
+    assert planned(block) == math.ceil(3.0 / contact)
 
 
 @pytest.mark.parametrize("offset", [0.01, 0.05, 0.1])
 def test_ball_bounces_off_a_goal_post(offset: float) -> None:
     block, physics = world()
-    planner = SubstepPlanner(CONFIG)
     post_y = CONFIG.field.goal_width / 2 + CONFIG.field.goal_post_radius
     block.ball[:] = (CONFIG.field.half_length - 3.0, post_y + offset)
     block.ball_vel[:] = (2.9, 0.0)
     for _ in range(2):
-        x, y = block.ball.tolist()
-        physics.step(planner.count(0.0, x, y, math.hypot(*block.ball_vel), 30.0))
+        physics.step(planned(block))
     # Deflected (by more than 30 degrees, outwards) rather than passing through.
     vx, vy = block.ball_vel.tolist()
     assert math.atan2(vy, vx) > math.radians(30)
@@ -292,8 +327,7 @@ def test_a_kick_plays_the_ball_around_the_kicker_but_not_through_others() -> Non
     block.pos[1] = (-1.4, 0.0)  # ...and a teammate behind it
     block.ball[:] = (0.5, 0.0)
     block.ball_vel[:] = (-2.0, 0.0)  # kicked back through the kicker
-    planner = SubstepPlanner(CONFIG)
-    touchers = physics.step(planner.count(0.0, 0.5, 0.0, 2.0, 0.5), kickers=np.array([0]))
+    touchers = physics.step(planned(block), kickers=np.array([0]))
     assert touchers.tolist() == [1]  # the kicker let it through; the teammate stopped it
     assert block.ball[0] > -1.4
     # After the kick cycle the kicker collides with the ball again.
