@@ -7,6 +7,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
 from core_helpers import TrajectoryHash
 
 from soccer_sim import MatchConfig, run_match
@@ -48,3 +49,18 @@ def test_noise_comes_only_from_the_seed() -> None:
     second = trajectory(9, "chaser", "idle")
     assert first == second
     assert first != trajectory(10, "chaser", "idle")
+
+
+@pytest.mark.slow
+def test_full_match_is_bit_identical_across_processes() -> None:
+    script = (
+        "import sys; sys.path[:0] = [{root!r}, {tests!r}]\n"
+        "from core_helpers import TrajectoryHash\n"
+        "from soccer_sim import run_match\n"
+        "r = TrajectoryHash(); run_match('chaser', 'chaser', seed=21, recorders=[r]); print(r.hexdigest())\n"
+    ).format(root=str(ROOT), tests=str(Path(__file__).parent))
+    runs = [subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True,
+                           cwd=ROOT, timeout=600).stdout.strip() for _ in range(2)]
+    here = TrajectoryHash()
+    run_match("chaser", "chaser", seed=21, recorders=[here])
+    assert runs[0] == runs[1] == here.hexdigest()

@@ -145,3 +145,18 @@ def test_chaser_kicks_towards_the_opponents_goal_in_its_own_frame() -> None:
     assert isinstance(command, TeamCommand)
     assert np.allclose(command.kick, [[2.7, 0.0], [2.7, 0.0]])
     assert command.dash[0, 0] > 0 and command.dash[1, 0] > 0 and command.dash[1, 1] < 0
+
+
+def test_distance_run_counts_running_not_standing() -> None:
+    from core_helpers import quiet_config
+
+    def run_right(view):
+        dash = np.zeros((11, 2))
+        dash[1] = (1.0, 0.0)  # along the left wing: nobody in the way
+        return dash, np.zeros((11, 2))
+
+    result = run_match(Scripted(run_right), Scripted(), config=quiet_config(max_cycles=30))
+    # 1.0 m in the first cycle, then the speed limit: v = 0.4 v + 1.0 is clipped to 1.05.
+    assert result.statistics[0].distance_run == pytest.approx(1.0 + 29 * 1.05)
+    assert result.statistics[1].distance_run == 0.0
+    assert result.statistics[0].possession == result.statistics[1].possession == 0.0  # nobody touched the ball
