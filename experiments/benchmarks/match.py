@@ -61,5 +61,5 @@ def run(args: argparse.Namespace) -> int:
         profiler.disable()
         out = io.StringIO()
         pstats.Stats(profiler, stream=out).sort_stats("tottime").print_stats(args.top)
-        console.print(out.getvalue(), markup=False, highlight=False)
+        print(out.getvalue())
     return 0
