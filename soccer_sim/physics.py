@@ -7,8 +7,9 @@ bodies were added), so writing the whole world into pymunk and reading it back a
 call each, with no per-body Python objects.
 
 Units: pymunk's time unit is one cycle, so velocities are m/cycle and one cycle is a total
-``dt`` of 1, split into sub-steps when something moves fast (so that a full-speed ball
-cannot jump over a player between two collision checks).
+``dt`` of 1, split into sub-steps when bodies that can meet close in fast (so that a
+full-speed ball cannot jump over a player between two collision checks; see
+:class:`SubstepPlanner`).
 """
 
 from __future__ import annotations
@@ -53,8 +54,8 @@ class BodyBlock:
     """The world's bodies as one contiguous float array, shaped like pymunk's bulk data.
 
     ``data`` has one row ``[x, y, vx, vy]`` per pymunk body: rows 0..2n-1 the players
-    (home first), row 2n the ball, then pymunk's static body (the goal posts' anchor, never
-    written). ``pos``/``vel``/``ball``/``ball_vel`` are views into it, used as the
+    (home first), row 2n the ball, then pymunk's static body (the goal posts' anchor, always
+    at rest at the origin). ``pos``/``vel``/``ball``/``ball_vel`` are views into it, used as the
     :class:`~soccer_sim.state.WorldState` arrays.
     """
 
