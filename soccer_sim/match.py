@@ -215,12 +215,11 @@ class Match:
         self._sync_state()
         kin.dash(state.vel, state.stamina, self._dash, self.noise.players)
 
-        # 6. Collision solving. A held ball does not collide, nor in the cycle it is released
-        # (it lies on the goalkeeper's centre until the kick carries it away).
-        released = holder != NO_PLAYER
+        # 6. Collision solving. A held ball does not collide; when the goalkeeper kicks it away
+        # it passes through the goalkeeper's body like any kicked ball passes its kicker.
         holder = state.ball_holder
         physics = self.physics
-        physics.set_ball_collides(holder == NO_PLAYER and not released)
+        physics.set_ball_collides(holder == NO_PLAYER)
         substeps = self._substeps.count(self.block.dynamic, holder == NO_PLAYER)
         self.touchers = physics.step(substeps, kickers)
         if holder != NO_PLAYER:

@@ -160,3 +160,31 @@ def test_distance_run_counts_running_not_standing() -> None:
     assert result.statistics[0].distance_run == pytest.approx(1.0 + 29 * 1.05)
     assert result.statistics[1].distance_run == 0.0
     assert result.statistics[0].possession == result.statistics[1].possession == 0.0  # nobody touched the ball
+
+
+def test_goalkeeper_kicks_a_held_ball_away_through_its_own_body() -> None:
+    from core_helpers import quiet_config
+
+    from soccer_sim.state import NO_PLAYER
+
+    def clear(view):
+        kick = np.zeros((11, 2))
+        if view.ball_holder == 0:
+            kick[0] = (2.0, 0.5)  # own frame: away from the own goal
+        return np.zeros((11, 2)), kick
+
+    match = Match(Scripted(clear), Scripted(), config=quiet_config(max_cycles=10))
+    match.start()
+    state = match.state
+    state.pos[0] = (-48.0, 2.0)
+    state.play_mode, state.mode_team, state.ball_holder = PlayMode.GOALIE_HOLDS, HOME, 0
+    state.ball[:] = state.pos[0]
+    state.ball_vel[:] = 0.0
+    match.step()
+    assert state.ball_holder == NO_PLAYER and state.play_mode == PlayMode.PLAY_ON
+    assert 0 not in match.touchers.tolist()
+    assert state.ball[0] == pytest.approx(-46.0) and state.ball[1] == pytest.approx(2.5)
+    assert state.ball_vel[0] == pytest.approx(2.0 * CONFIG_BALL_DECAY)
+
+
+CONFIG_BALL_DECAY = MatchConfig().physics.ball_decay
