@@ -1,0 +1,25 @@
+"""``soccer-sim play`` and ``soccer-sim bench match`` end to end (short matches)."""
+
+from __future__ import annotations
+
+from experiments.cli import main
+
+
+def test_play_prints_score_and_statistics(capsys) -> None:
+    assert main(["play", "chaser", "idle", "--seed", "2", "--cycles", "300"]) == 0
+    out = capsys.readouterr().out
+    assert "chaser" in out and "idle" in out and "300 cycles" in out
+    for row in ("goals", "possession", "teammate contacts", "distance run"):
+        assert row in out
+
+
+def test_play_defaults_and_bad_team(capsys) -> None:
+    assert main(["play", "nobody", "--cycles", "5"]) == 2
+    out = capsys.readouterr().out
+    assert "unknown team 'nobody'" in out and "chaser" in out
+
+
+def test_bench_match_reports_times(capsys) -> None:
+    assert main(["bench", "match", "--matches", "2", "--cycles", "100", "--profile", "--top", "5"]) == 0
+    out = capsys.readouterr().out
+    assert "µs" in out and "100 cycles" in out and "function calls" in out
