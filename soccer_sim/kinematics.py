@@ -1,8 +1,8 @@
 """Motion rules applied between the teams' commands and the collision solver.
 
-All players are handled at once on (2n, 2) arrays in the absolute frame; the ball with
-scalar math (one body: plain floats are cheaper than numpy calls). Units: metres, m/cycle,
-m/cycle². The rules follow the RoboCup 2D soccer simulator's model:
+All players are handled at once on (2n, 2) arrays in the absolute frame (player rows as in
+:class:`~soccer_sim.state.WorldState`). Units: metres, m/cycle, m/cycle². The rules follow
+the RoboCup 2D soccer simulator's model:
 
 * **Dash**: the requested acceleration is clipped to ``player_accel_max`` times an effort
   that falls linearly from 1 to ``min_effort`` as stamina drops below ``tired_fraction`` of
@@ -22,7 +22,8 @@ random stream does not depend on what happened (see :class:`CycleNoise`).
 
 The per-player rules are compiled loops (numba): written as some twenty small numpy calls
 the dash alone cost about 15 microseconds per cycle, a third of a cycle's budget; compiled,
-each rule costs about one microsecond (mostly the call itself).
+each rule costs about one microsecond (mostly the call itself). The kick, applied by a few
+players at most, is plain scalar Python.
 """
 
 from __future__ import annotations
@@ -30,7 +31,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-
 from numba import njit
 
 from soccer_sim.config import MatchConfig
