@@ -51,12 +51,18 @@ Decisions where the rules leave room:
   all marks instead; so does the goalkeeper's catch.
 * **Events.** ``GOAL``: team = scoring team, player = last toucher (of the other team on an
   own goal, then ``detail`` = 1). ``OUT``: team/player = last toucher, detail 0 for a
-  touchline, 1 for a goal line. ``PASS``: team/player = passer, detail = receiver index.
+  touchline, 1 for a goal line. ``PASS``: team/player = passer, detail = receiver index; a
+  pass begins with a kick (a ball bouncing off one player's body to a team-mate is not a
+  pass) and is received by a team-mate's kick, body touch or catch.
   ``TOUCH``: a body touch, recorded once per continuous contact. ``SET_PLAY``: team = mode
   team (NO_TEAM in play on), player = the kicker when a kick started play on, detail = the
   PlayMode value. ``DROP_BALL``: detail = the set play that timed out. ``OFFSIDE``: the
   offender and its position. ``SHOT``: the first kicker of the shooting team (also has its
-  ``KICK`` event). Event positions are the ball's, absolute frame.
+  ``KICK`` event), detail 0. Every goal is also a shot: a goal not preceded by a SHOT of the
+  scoring team since the opponents last played the ball (a kick whose noiseless path fell
+  short or wide, but the ball's noise carried it in, or a goal off a body) records a SHOT
+  with detail 1 in the goal's cycle, just before the GOAL, for the scorer, at the spot
+  where its team last played the ball. Other event positions are the ball's, absolute frame.
 """
 
 from __future__ import annotations
@@ -153,6 +159,12 @@ class Referee:
         """Rows of ``_offside`` that are marked (while ``_offside_pending``)."""
         self._last_catch_attempt = [_NEVER, _NEVER]
         self._pass_from = NO_PLAYER
+        """Row of the player whose kick the ball is travelling from (a pass begins with a kick),
+        or NO_PLAYER."""
+        self._shot_pending = [False, False]
+        """Per team: its latest kick was a SHOT and the opponents have not played the ball since."""
+        self._play_spot = [(math.nan, math.nan), (math.nan, math.nan)]
+        """Per team: where the ball was when the team last played it (kick, touch or catch)."""
         self._touching: tuple[int, ...] = ()
 
     @staticmethod
@@ -274,6 +286,7 @@ class Referee:
         state.ball_holder = NO_PLAYER
         self._clear_offside()
         self._pass_from = NO_PLAYER
+        self._shot_pending = [False, False]
         self._touching = ()
         self._prev_ball = (x, y)
         self._set_mode(state, mode, team, first_cycle=first_cycle)
@@ -376,6 +389,11 @@ class Referee:
 
     def _goal(self, state: WorldState, scorer: int, last_team: int, last_index: int, x: float, y: float) -> None:
         own_goal = last_team != NO_TEAM and last_team != scorer
+        if last_team == scorer and not self._shot_pending[scorer]:
+            # Every goal is a shot, also one whose kick looked short of the line or wide when it
+            # was taken (the ball's noise carried it in) or that went in off a body.
+            sx, sy = self._play_spot[scorer]
+            self.events.add(state.cycle, EventKind.SHOT, scorer, last_index, sx, sy, 1)
         state.score[scorer] += 1
         self.events.add(state.cycle, EventKind.GOAL, scorer, last_index, x, y, int(own_goal))
         self._kick_off(state, 1 - scorer)
@@ -396,10 +414,12 @@ class Referee:
                 if self._offside[row]:
                     self._call_offside(state, row)
                     return
-        self._played(state, rows, state.last_touch, bx, by)
+        self._played(state, rows, state.last_touch, bx, by, kicked=True)
         teams = sorted({HOME if row < n else AWAY for row in rows})
         for team in teams:
-            if self._is_shot(state, team, bx, by):
+            shot = self._is_shot(state, team, bx, by)
+            self._shot_pending[team] = shot
+            if shot:
                 shooter = next(r for r in rows if (HOME if r < n else AWAY) == team)
                 self.events.add(state.cycle, EventKind.SHOT, team, shooter - team * n, bx, by, 0)
         if mode == _GOALIE_HOLDS:
@@ -409,10 +429,14 @@ class Referee:
             self._set_mode(state, _PLAY_ON, NO_TEAM, player=first - state.team_of(first) * n)
         self._judge_offside_positions(state, rows, mode, bx)
 
-    def _played(self, state: WorldState, rows: list[int], main: int, x: float, y: float) -> None:
-        """``rows`` (sorted) played the ball together this cycle, ``main`` (one of them if
-        possible) counting as the player now on the ball. A PASS event if the previous player
-        on the ball is a team-mate of ``main`` that is not among ``rows``."""
+    def _played(self, state: WorldState, rows: list[int], main: int, x: float, y: float, *,
+                kicked: bool = False) -> None:
+        """``rows`` (sorted) played the ball together at (x, y) this cycle (``kicked``: by a kick,
+        else by a body touch or a catch), ``main`` (one of them if possible) counting as the
+        player now on the ball. A PASS event if the ball comes from the kick of a team-mate of
+        ``main`` that is not among ``rows``. A kick can start the next pass; a touch by anyone
+        but the passer ends the pass (a ball bouncing between team-mates is not passed). The
+        opponents of the players in ``rows`` lose their pending shot."""
         if main not in rows:
             main = rows[0]
         prev = self._pass_from
@@ -420,7 +444,15 @@ class Referee:
         if prev != NO_PLAYER and prev not in rows and (prev < n) == (main < n):
             team = HOME if main < n else AWAY
             self.events.add(state.cycle, EventKind.PASS, team, prev - team * n, x, y, main - team * n)
-        self._pass_from = main
+        if kicked:
+            self._pass_from = main
+        elif prev not in rows:
+            self._pass_from = NO_PLAYER
+        involved = (rows[0] < n, rows[-1] >= n)  # home / away players among rows (sorted)
+        for team in (HOME, AWAY):
+            if involved[team]:
+                self._play_spot[team] = (x, y)
+                self._shot_pending[1 - team] = False
 
     def _judge_touches(self, state: WorldState, touchers: np.ndarray) -> None:
         """Body touches in play on: offside, TOUCH and PASS events, last touch (the toucher

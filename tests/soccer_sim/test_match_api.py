@@ -43,6 +43,11 @@ def test_statistics_are_consistent_with_the_events(chaser_match: MatchResult) ->
         # Eleven players running most of 1500 cycles at up to 1.05 m/cycle.
         assert 1000.0 < stats.distance_run < 11 * 1500 * 1.05
     assert result.statistics[0].possession + result.statistics[1].possession == pytest.approx(1.0)
+    # Every goal (own goals aside) is a shot, even when the ball's noise carried in a kick
+    # whose noiseless path fell short.
+    goals = result.events.of_kind(EventKind.GOAL)
+    for team, stats in zip((HOME, AWAY), result.statistics):
+        assert stats.shots >= sum(1 for g in goals if g[1] == team and g[5] == 0)
 
 
 def test_idle_players_run_nowhere_and_concede(chaser_match: MatchResult) -> None:
@@ -50,6 +55,8 @@ def test_idle_players_run_nowhere_and_concede(chaser_match: MatchResult) -> None
     assert result.score[0] > 0 and result.score[1] == 0
     assert result.statistics[1].distance_run < 0.05 * result.statistics[0].distance_run
     assert result.statistics[1].kicks == 0
+    assert result.statistics[1].passes == 0  # balls bouncing between idle bodies are not passes
+    assert result.statistics[0].shots >= result.score[0]
 
 
 def test_max_cycles_and_recorders_see_every_cycle() -> None:

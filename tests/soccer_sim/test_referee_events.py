@@ -112,3 +112,64 @@ def test_every_play_mode_change_is_a_set_play_event(mode):
     ref, st, ev = make_world(ball=(0.0, 20.0), mode=mode, mode_team=AWAY)
     kick(ref, st, [N + 1], (1.0, 0.0))
     assert [(e[1], e[2], e[5]) for e in ev.of_kind(EventKind.SET_PLAY)] == [(-1, 1, int(PlayMode.PLAY_ON))]
+
+
+def goal_after(ref, st, ball_y=2.0):
+    """Let the ball cross the home team's target goal line at ``ball_y`` (home attacks +x)."""
+    step(ref, st)
+    st.ball[:] = (GOAL_LINE + 0.2, ball_y)
+    step(ref, st)
+
+
+def test_a_goal_from_a_kick_that_looked_short_counts_as_a_shot():
+    """The ball's noise can carry a kick whose noiseless path stops short over the line: every
+    goal is a shot, recorded just before the GOAL for the scorer where it kicked."""
+    ref, st, ev = make_world(ball=(20.0, 0.0), moves={9: (19.5, 0.0)}, config=config_with(offside=False))
+    kick(ref, st, [9], ((GOAL_LINE - 20.0) / REACH * 0.9, 0.0))
+    assert shots(ev) == []
+    goal_after(ref, st)
+    assert kinds(ev)[-3:] == [EventKind.SHOT, EventKind.GOAL, EventKind.SET_PLAY]
+    [(cycle, team, player, x, y, detail)] = shots(ev)
+    assert (cycle, team, player, x, y, detail) == (101, HOME, 9, 20.0, 0.0, 1)
+
+
+def test_a_goal_from_a_recorded_shot_is_not_counted_twice():
+    ref, st, ev = make_world(ball=(20.0, 0.0), moves={9: (19.5, 0.0)}, config=config_with(offside=False))
+    kick(ref, st, [9], (2.5, 0.0))
+    step(ref, st, touchers=[10])  # deflected in by a team-mate's body: still the same attempt
+    goal_after(ref, st)
+    assert [(e[2], e[5]) for e in shots(ev)] == [(9, 0)]
+    assert tuple(st.score) == (1, 0)
+
+
+def test_a_shot_touched_by_an_opponent_then_scored_by_a_touch_counts_again():
+    ref, st, ev = make_world(ball=(20.0, 0.0), moves={9: (19.5, 0.0)}, config=config_with(offside=False))
+    kick(ref, st, [9], (2.5, 0.0))
+    step(ref, st, touchers=[N + 3])  # the opponents play the ball...
+    st.ball[:] = (45.0, 1.0)
+    step(ref, st, touchers=[10])  # ...and a team-mate bundles the rebound in
+    goal_after(ref, st)
+    assert [(e[2], e[3], e[5]) for e in shots(ev)] == [(9, 20.0, 0), (10, 45.0, 1)]
+
+
+def test_an_own_goal_is_nobody_s_shot():
+    ref, st, ev = make_world(ball=(50.0, 0.0), config=config_with(offside=False))
+    step(ref, st, touchers=[N + 3])  # an away defender deflects the ball into its own goal
+    goal_after(ref, st)
+    assert tuple(st.score) == (1, 0) and shots(ev) == []
+
+
+def test_a_ball_bouncing_off_a_body_to_a_team_mate_is_not_a_pass():
+    ref, st, ev = make_world(ball=(-10.0, 0.0), config=config_with(offside=False))
+    step(ref, st, touchers=[4])
+    step(ref, st, touchers=[5])
+    assert ev.of_kind(EventKind.PASS) == []
+
+
+def test_the_passer_dribbling_on_keeps_its_pass_going():
+    ref, st, ev = make_world(ball=(-10.0, 0.0), config=config_with(offside=False))
+    kick(ref, st, [4], (0.5, 0.0))
+    step(ref, st, touchers=[4])  # the kicker runs into its own ball
+    step(ref, st)
+    step(ref, st, touchers=[7])
+    assert [(e[2], e[5]) for e in ev.of_kind(EventKind.PASS)] == [(4, 7)]
