@@ -98,7 +98,8 @@ class TeamCommand:
     players that can kick (ball within the kickable distance, set-play rules permitting).
     An all-zero row means "do not kick"."""
     catch: bool = False
-    """The goalkeeper tries to catch the ball this cycle."""
+    """The goalkeeper tries to catch the ball this cycle (a bool, Python or numpy; 0 and 1 are
+    accepted too, anything else is a TeamError)."""
     move: np.ndarray | None = None
     """(n, 2) placement targets, honoured only before a kick-off (the referee clamps them
     into the team's own half)."""

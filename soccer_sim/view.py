@@ -20,7 +20,6 @@ from soccer_sim.state import NO_PLAYER, WorldState
 from soccer_sim.team import TeamCommand, TeamError, TeamView
 
 
-
 class TeamFrame:
     """One team's window on the world: builds its :class:`TeamView` and reads its commands.
 
@@ -88,15 +87,28 @@ class TeamFrame:
         if move is not None:
             move = self._as_array(move, "move") * sign
             self._check_finite(move, "move")
-        return bool(command.catch), move
+        catch = command.catch
+        if type(catch) is not bool:
+            catch = self._as_flag(catch, "catch")
+        return catch, move
+
+    def _as_flag(self, value: object, field_name: str) -> bool:
+        """``value`` as a bool if it is one (Python or numpy) or the integer 0 or 1, else a TeamError."""
+        if isinstance(value, np.bool_):
+            return bool(value)
+        if isinstance(value, (int, np.integer)) and value in (0, 1):
+            return bool(value)
+        raise TeamError(self.name, f"command.{field_name} must be a bool, got {value!r} ({type(value).__name__})")
 
     def _as_array(self, values: object, field_name: str) -> np.ndarray:
         """``values`` as an (n, 2) float64 array, or a TeamError saying why it cannot be one."""
+        if values is None:
+            raise TeamError(self.name, f"command.{field_name} is None; expected an array of shape {self._shape}")
         if isinstance(values, np.ndarray) and values.dtype.kind not in "fiu":
             raise TeamError(self.name, f"command.{field_name} must be numeric, got dtype {values.dtype}")
         try:
             array = np.asarray(values, dtype=np.float64)
-        except (TypeError, ValueError) as exc:
+        except (TypeError, ValueError, OverflowError) as exc:
             raise TeamError(self.name, f"command.{field_name} is not a numeric array ({exc})") from exc
         if array.shape != self._shape:
             raise TeamError(self.name, f"command.{field_name} must have shape {self._shape}, got {array.shape}")

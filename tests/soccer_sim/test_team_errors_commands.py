@@ -100,3 +100,42 @@ def test_bad_move_targets_are_rejected() -> None:
 
     with pytest.raises(TeamError, match="player 2: command.move is not finite"):
         run_match(Mover(), "idle", config=CONFIG)
+
+
+def test_missing_object_and_overflowing_arrays_are_rejected() -> None:
+    with pytest.raises(TeamError, match=r"command.dash is None; expected an array of shape \(11, 2\)"):
+        play(lambda view: (None, zeros()))
+    with pytest.raises(TeamError, match="command.kick must be numeric, got dtype object"):
+        play(lambda view: (zeros(), np.zeros((N, 2), dtype=object)))
+    with pytest.raises(TeamError, match="command.dash is not a numeric array"):
+        play(lambda view: ([[10**400, 0]] * N, zeros()))
+
+
+class Catcher(Scripted):
+    def __init__(self, catch) -> None:
+        super().__init__()
+        self.catch_value = catch
+        self.name = "keeper"
+
+    def act(self, view):
+        return TeamCommand(dash=zeros(), kick=zeros(), catch=self.catch_value)
+
+
+@pytest.mark.parametrize("catch", [np.array([True, False]), "no", None, 0.5, 2])
+def test_a_catch_request_that_is_not_a_bool_is_rejected(catch) -> None:
+    with pytest.raises(TeamError, match=r"team 'keeper': command.catch must be a bool, got"):
+        run_match("idle", Catcher(catch), config=CONFIG)
+
+
+@pytest.mark.parametrize("catch", [True, False, np.bool_(True), 1, 0, np.int64(1)])
+def test_bool_like_catch_requests_are_accepted(catch) -> None:
+    run_match("idle", Catcher(catch), config=CONFIG)
+
+
+def test_move_targets_of_the_wrong_shape_are_rejected() -> None:
+    class Mover(Scripted):
+        def act(self, view):
+            return TeamCommand(dash=zeros(), kick=zeros(), move=np.zeros((3, 2)))
+
+    with pytest.raises(TeamError, match=r"team 'Mover': command.move must have shape \(11, 2\), got \(3, 2\)"):
+        run_match(Mover(), "idle", config=CONFIG)
