@@ -10,12 +10,15 @@ from __future__ import annotations
 
 import argparse
 
+from experiments.commands.play import positive_int
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--home", default="chaser", help="home team (default: chaser)")
     parser.add_argument("--away", default="chaser", help="away team (default: chaser)")
-    parser.add_argument("--matches", type=int, default=5, help="timed matches (default: 5)")
-    parser.add_argument("--cycles", type=int, default=None, help="cycles per match (default: a full match)")
+    parser.add_argument("--matches", type=positive_int, default=5, help="timed matches (default: 5)")
+    parser.add_argument("--cycles", type=positive_int, default=None,
+                        help="cycles per match (default: a full match)")
     parser.add_argument("--seed", type=int, default=0, help="seed of the first match; match i uses seed + i")
     parser.add_argument("--profile", action="store_true", help="also print a cProfile top list of one match")
     parser.add_argument("--top", type=int, default=25, help="entries in the profile top list (default: 25)")
@@ -31,14 +34,15 @@ def run(args: argparse.Namespace) -> int:
     from rich.console import Console
     from rich.table import Table
 
-    from soccer_sim import MatchConfig, run_match
+    from soccer_sim import ConfigError, MatchConfig, TeamError, TeamNotFoundError, run_match
 
     console = Console()
-    if args.matches < 1:
-        console.print("[red]error:[/red] --matches must be at least 1")
-        return 2
     config = MatchConfig(max_cycles=args.cycles)
-    run_match(args.home, args.away, seed=args.seed, config=MatchConfig(max_cycles=200))  # warm-up
+    try:  # the warm-up match also checks the teams and the seed
+        run_match(args.home, args.away, seed=args.seed, config=MatchConfig(max_cycles=200))
+    except (TeamNotFoundError, TeamError, ConfigError, ValueError) as exc:
+        console.print(f"[red]error:[/red] {exc}")
+        return 2
     times, cycles, goals = [], [], []
     for i in range(args.matches):
         start = time.perf_counter()

@@ -14,12 +14,13 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("home", nargs="?", default="chaser", help="home team (default: chaser)")
     parser.add_argument("away", nargs="?", default="chaser", help="away team (default: chaser)")
     parser.add_argument("--seed", type=int, default=0, help="match seed (default: 0)")
-    parser.add_argument("--cycles", type=_positive_int, default=None,
+    parser.add_argument("--cycles", type=positive_int, default=None,
                         help="stop after this many cycles (default: the full two halves)")
     parser.set_defaults(func=run)
 
 
-def _positive_int(text: str) -> int:
+def positive_int(text: str) -> int:
+    """argparse type: a positive integer (shared by the commands and benchmarks that play matches)."""
     value = int(text)
     if value <= 0:
         raise argparse.ArgumentTypeError(f"must be a positive integer, got {text}")

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import pytest
+
 from experiments.cli import main
 
 
@@ -23,3 +25,13 @@ def test_bench_match_reports_times(capsys) -> None:
     assert main(["bench", "match", "--matches", "2", "--cycles", "100", "--profile", "--top", "5"]) == 0
     out = capsys.readouterr().out
     assert "µs" in out and "100 cycles" in out and "function calls" in out
+
+
+def test_bench_match_rejects_bad_arguments_with_a_message(capsys) -> None:
+    assert main(["bench", "match", "--home", "nobody", "--matches", "1", "--cycles", "10"]) == 2
+    assert "unknown team 'nobody'" in capsys.readouterr().out
+    for bad in (["--cycles", "0"], ["--matches", "-1"]):
+        with pytest.raises(SystemExit) as usage_error:
+            main(["bench", "match", *bad])
+        assert usage_error.value.code == 2
+        assert "must be a positive integer" in capsys.readouterr().err
