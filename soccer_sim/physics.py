@@ -50,6 +50,17 @@ CONTACT_END_GAP = 0.05
 jostling at the threshold from counting as many contacts."""
 
 
+class PymunkChangedError(RuntimeError):
+    """The installed pymunk does not behave like the pymunk 7 releases the bulk body transfer
+    was written for (see :class:`_BulkBodies`)."""
+
+    def __init__(self, detail: str) -> None:
+        super().__init__(
+            f"soccer_sim cannot exchange body data with pymunk {pymunk.version}: {detail}. The bulk "
+            "transfer relies on pymunk 7 internals (pymunk._chipmunk, Space._space, pymunk.batch.Buffer; "
+            "tested with 7.1 and 7.3); install a supported release: pip install 'pymunk>=7.1,<8'")
+
+
 class BodyBlock:
     """The world's bodies as one contiguous float array, shaped like pymunk's bulk data.
 
@@ -177,7 +188,7 @@ class Physics:
         ids = np.frombuffer(buffer.int_buf(), dtype=np.uintp)
         expected = [b.id for b in bodies]
         if ids.shape[0] != self.block.data.shape[0] or list(ids[: len(expected)]) != expected:
-            raise RuntimeError("pymunk iterates bodies in an unexpected order; the bulk body layout is invalid")
+            raise PymunkChangedError("it iterates the bodies in an unexpected order")
 
     # --- collision callback (called by pymunk during step) ---------------------------------
     def _ball_begin(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
@@ -228,38 +239,56 @@ class _BulkBodies:
     with the C-side argument structures built once instead of on every call (together they
     cost several microseconds per cycle otherwise). ``Space.step``'s Python bookkeeping
     (deferred additions and removals, post-step callbacks) is never needed here.
-    The result of the first read is checked against ``pymunk.batch`` itself.
+
+    This reaches into pymunk's private parts (``pymunk._chipmunk``, ``Space._space``,
+    ``pymunk.batch.Buffer``'s C arrays), so it is checked when built: any of them missing,
+    or a round trip disagreeing with the public ``pymunk.batch``, raises
+    :class:`PymunkChangedError` naming the supported pymunk releases.
     """
 
     def __init__(self, space: pymunk.Space, data: np.ndarray) -> None:
-        from pymunk._chipmunk import ffi, lib
-
-        self._space_ptr = space._space
-        self._each_body = lib.cpSpaceEachBody
-        self._cp_step = lib.cpSpaceStep
         self._flat = data.reshape(-1)
-        self._write_buffer = pbatch.Buffer()
-        self._write_buffer.set_float_buf(self._flat)
-        self._read_buffer = pbatch.Buffer()
-        self._write_array = self._write_buffer._float_arr
-        self._read_array = self._read_buffer._float_arr
-        self._write_fn = ffi.addressof(lib, "pmSpaceBodySetIteratorFuncBatched")
-        self._read_fn = ffi.addressof(lib, "pmSpaceBodyGetIteratorFuncBatched")
-        self._write_data = self._batch_data(ffi, self._write_buffer)
-        self._read_data = self._batch_data(ffi, self._read_buffer)
-        # Size pymunk's read array once (after that it is refilled in place), and check the
-        # shortcut against pymunk.batch: write the block, read it back both ways.
+        try:
+            from pymunk._chipmunk import ffi, lib
+
+            self._space_ptr = space._space
+            self._each_body = lib.cpSpaceEachBody
+            self._cp_step = lib.cpSpaceStep
+            self._write_buffer = pbatch.Buffer()
+            self._write_buffer.set_float_buf(self._flat)
+            self._read_buffer = pbatch.Buffer()
+            self._write_array = self._write_buffer._float_arr
+            self._read_array = self._read_buffer._float_arr
+            self._write_fn = ffi.addressof(lib, "pmSpaceBodySetIteratorFuncBatched")
+            self._read_fn = ffi.addressof(lib, "pmSpaceBodyGetIteratorFuncBatched")
+            self._write_data = self._batch_data(ffi, self._write_buffer)
+            self._read_data = self._batch_data(ffi, self._read_buffer)
+        except Exception as exc:  # a missing module, attribute, C function or struct
+            raise PymunkChangedError(f"{type(exc).__name__}: {exc}") from exc
+        self._check_against_pymunk_batch(space)
+
+    def _check_against_pymunk_batch(self, space: pymunk.Space) -> None:
+        """Write a test pattern (a distinct value in every field of every moving body) with the
+        shortcut, read it back with ``pymunk.batch`` and with the shortcut, then restore the
+        block. Also sizes pymunk's read array once; later reads refill it in place."""
+        original = self._flat.copy()
+        pattern = np.zeros_like(self._flat)
+        moving = self._flat.size - 4  # the last row is the static body: it stays at rest
+        pattern[:moving] = np.arange(1.0, moving + 1.0) * 0.5
+        self._flat[:] = pattern
         self.write()
         pbatch.get_space_bodies(space, _BODY_FIELDS, self._read_buffer)
         self._read_view = np.frombuffer(self._read_buffer.float_buf(), dtype=np.float64)
         if self._read_view.shape != self._flat.shape:
-            raise RuntimeError("pymunk returned an unexpected amount of body data")
-        expected = self._flat.copy()
-        if not np.array_equal(self._read_view, expected):
-            raise RuntimeError("bulk body write does not match pymunk.batch; pymunk internals changed")
+            raise PymunkChangedError("pymunk.batch returned an unexpected amount of body data")
+        if not np.array_equal(self._read_view, pattern):
+            raise PymunkChangedError("the bulk write does not give what pymunk.batch reads back")
+        self._flat[:] = 0.0
         self.read()
-        if not np.array_equal(self._flat, expected):
-            raise RuntimeError("bulk body read does not match pymunk.batch; pymunk internals changed")
+        if not np.array_equal(self._flat, pattern):
+            raise PymunkChangedError("the bulk read does not give what pymunk.batch reads")
+        self._flat[:] = original
+        self.write()
 
     @staticmethod
     def _batch_data(ffi: object, buffer: pbatch.Buffer) -> object:

@@ -334,3 +334,46 @@ def test_a_kick_plays_the_ball_around_the_kicker_but_not_through_others() -> Non
     block.ball[:] = (0.5, 0.0)
     block.ball_vel[:] = (-1.0, 0.0)
     assert physics.step(4).tolist() == [0]
+
+
+# --- the bulk body transfer's dependence on pymunk internals ----------------------------------
+def test_bulk_transfer_round_trips_every_field_of_every_body() -> None:
+    block, physics = world()
+    rng = np.random.default_rng(5)
+    block.dynamic[:] = rng.uniform(-50.0, 50.0, block.dynamic.shape)  # players and ball
+    expected = block.dynamic.copy()
+    bodies = physics.space.bodies  # in the order they were added: the players, then the ball
+    physics._bulk.write()
+    got = np.array([[*b.position, *b.velocity] for b in bodies])
+    assert np.array_equal(got, expected)
+    for body in bodies:
+        body.position = (body.position.x + 1.0, body.position.y)
+        body.velocity = (body.velocity.x, body.velocity.y - 2.0)
+    physics._bulk.read()
+    assert np.array_equal(block.dynamic[:, 0], expected[:, 0] + 1.0)
+    assert np.array_equal(block.dynamic[:, 3], expected[:, 3] - 2.0)
+    assert np.array_equal(block.dynamic[:, [1, 2]], expected[:, [1, 2]])
+    assert block.data[-1].tolist() == [0.0, 0.0, 0.0, 0.0]  # the static body stays at rest
+
+
+def test_a_changed_pymunk_fails_loudly_naming_the_supported_versions(monkeypatch) -> None:
+    import pymunk.batch
+
+    from soccer_sim.physics import PymunkChangedError
+
+    class WithoutInternals:  # a Buffer whose private arrays were renamed
+        def set_float_buf(self, buffer) -> None:
+            pass
+
+    monkeypatch.setattr(pymunk.batch, "Buffer", WithoutInternals)
+    with pytest.raises(PymunkChangedError, match=r"pymunk 7 internals.*pymunk>=7.1,<8") as info:
+        world()
+    assert "AttributeError" in str(info.value)
+    monkeypatch.undo()
+
+    def reads_nothing_back(space, fields, buffer) -> None:  # a batch read laid out differently
+        buffer.set_float_buf(np.zeros((2 * N + 1) * 4))
+
+    monkeypatch.setattr(pymunk.batch, "get_space_bodies", reads_nothing_back)
+    with pytest.raises(PymunkChangedError, match="unexpected amount of body data"):
+        world()
