@@ -14,11 +14,25 @@ attack) and has a nominal lateral slot (metres, + to the left). For a ball at
   slides towards the ball side, and width grows in attack and shrinks in
   defence;
 * when defending, the back line stays ``behind_ball`` metres goal-side of the
-  ball;
-* set plays add rules: at a kick-off everyone stands in our own half, and at
-  the opponents' set plays everyone but the goalkeeper keeps 9.15 m (plus a
-  margin) from the ball;
+  ball, but never deeper than the line's lowest depth (so it does not collapse
+  onto the goalkeeper when the ball reaches our goal line);
+* in attack the full backs overlap, more so the farther up the ball is;
+* set plays add rules: at a kick-off everyone stands in our own half, the lines
+  staggered behind the halfway line, and at our kick-off the kick-off takers
+  stand at the ball; at the opponents' set plays everyone but the goalkeeper
+  keeps 9.15 m (plus a margin) from the ball;
 * the goalkeeper stays in the goal area, sliding a little with the ball.
+
+Keeping clear of the ball at the opponents' set plays cannot hold for every
+ball position: a formation is a continuous map from ball positions to each
+player's position, so (by Brouwer's fixed-point theorem) every player has some
+ball position at which his target *is* the ball, and near it the interpolated
+target passes close to the ball. The style of the opponents' set plays
+(:data:`THEIR_SET_PLAY`) places those points where the opponents never restart
+play in a match: inside our own half, away from the touchlines, the centre
+spot and the front edge of our penalty area. At every real restart spot (kick
+off, kick-ins, corners, goal kicks, free kicks in their half or on our penalty
+area's edge) the interpolated positions keep the distance.
 
 Samples are laid out on staggered columns (a half-spacing offset between
 neighbouring columns) that reach every corner, both touchlines, both penalty
@@ -74,10 +88,22 @@ PLAYER_X_LIMIT = HALF_LENGTH - 1.0
 """Players are kept this far inside the goal lines (|x|, metres)."""
 PLAYER_Y_LIMIT = HALF_WIDTH - 1.5
 """Players are kept this far inside the touchlines (|y|, metres)."""
-SET_PLAY_DISTANCE = STANDARD_FIELD.centre_circle_radius + 0.5
-"""Distance kept from the ball at the opponents' set plays (rule: 9.15 m)."""
+SET_PLAY_DISTANCE = STANDARD_FIELD.centre_circle_radius + 2.0
+"""Distance kept from the ball at the samples of the opponents' set plays
+(rule: 9.15 m). The metre of margin absorbs the interpolation between samples:
+the straight line between two points of a circle cuts inside it."""
 KICK_OFF_MARGIN = 0.5
 """At a kick-off (ball on the centre spot) players stand at x <= -this."""
+KICK_OFF_LINE_GAP: dict[str, float] = {"defence": 14.0, "midfield": 7.0, "attack": 0.0}
+"""At a kick-off each line stands at least this many metres further behind the
+halfway line than KICK_OFF_MARGIN (the limits relax with the ball's distance
+from the centre spot)."""
+KICK_OFF_TAKER_REACH = 9.0
+"""Metres from the centre spot within which kick-off takers are drawn to their
+kick-off spot (fully at the spot, not at all this far away). The nearest other
+samples are farther, so only the centre-spot sample is affected."""
+FULL_BACK_PUSH_RAMP = (-20.0, 10.0)
+"""Ball x (metres) over which the full backs' overlap grows from none to full."""
 POSITION_DECIMALS = 2
 """Positions are rounded to centimetres in the shipped files."""
 
@@ -109,11 +135,14 @@ class Style:
     shift: dict[str, float]
     """Per line, how much of the ball's y the line follows."""
     full_back_push: float = 0.0
-    """Extra depth of full backs (metres), to overlap in attack."""
+    """Extra depth of full backs (metres) when the ball is far up, to overlap in attack."""
     behind_ball: float | None = None
-    """If set, the back line stays this many metres behind the ball."""
+    """If set, the back line stays this many metres behind the ball (but no
+    deeper than ``defence.lo``)."""
     kick_off: bool = False
     """Keep everyone in our half when the ball is near the centre spot."""
+    kick_off_takers: bool = False
+    """Put the kick-off takers at their kick-off spots (our kick-off)."""
     keep_away: bool = False
     """Keep outfield players SET_PLAY_DISTANCE from the ball."""
 
@@ -131,6 +160,8 @@ class RoleDesign:
     """Metres ahead (+) of or behind (-) the line."""
     wide: bool = False
     full_back: bool = False
+    kick_off_spot: tuple[float, float] | None = None
+    """Where this role stands to take our kick-off (metres), or None."""
 
 
 NORMAL = Style(
@@ -159,8 +190,21 @@ DEFEND = Style(
     shift={"defence": 0.45, "midfield": 0.55, "attack": 0.45},
     behind_ball=4.0,
 )
-OUR_SET_PLAY = Style(**{**ATTACK.__dict__, "kick_off": True})
-THEIR_SET_PLAY = Style(**{**DEFEND.__dict__, "kick_off": True, "keep_away": True})
+OUR_SET_PLAY = Style(**{**ATTACK.__dict__, "kick_off": True, "kick_off_takers": True})
+THEIR_SET_PLAY = Style(
+    defence=Line(-25.0, 0.45, -47.0, -2.0),
+    midfield=Line(-15.0, 0.5, -36.0, 10.0),
+    attack=Line(-9.0, 0.45, -28.0, 16.0),
+    width=0.8,
+    wide_width=0.8,
+    shift={"defence": 0.35, "midfield": 0.5, "attack": 0.45},
+    behind_ball=SET_PLAY_DISTANCE,
+    kick_off=True,
+    keep_away=True,
+)
+"""Like DEFEND, with the midfield and attack lines lower, so that each
+player's target meets the ball (see the module docstring) only for ball
+positions in our half where the opponents never restart play."""
 
 STYLES: dict[Situation, Style] = {
     Situation.NORMAL: NORMAL,
@@ -197,7 +241,7 @@ SYSTEMS: dict[str, System] = {
             RoleDesign(Role(6, "defensive midfielder", "midfielder"), "midfield", 0.0, -6.0),
             RoleDesign(Role(7, "right winger", "forward", 11), "attack", -23.0, -2.0, wide=True),
             RoleDesign(Role(8, "right central midfielder", "midfielder", 10), "midfield", -13.0),
-            RoleDesign(Role(9, "centre forward", "forward"), "attack", 0.0, 2.0),
+            RoleDesign(Role(9, "centre forward", "forward"), "attack", 0.0, 2.0, kick_off_spot=(-0.5, 0.0)),
             RoleDesign(Role(10, "left central midfielder", "midfielder", 8), "midfield", 13.0),
             RoleDesign(Role(11, "left winger", "forward", 7), "attack", 23.0, -2.0, wide=True),
         ),
@@ -214,8 +258,8 @@ SYSTEMS: dict[str, System] = {
             RoleDesign(Role(6, "right central midfielder", "midfielder", 8), "midfield", -8.0, -2.0),
             RoleDesign(Role(7, "right midfielder", "midfielder", 11), "midfield", -24.0, wide=True),
             RoleDesign(Role(8, "left central midfielder", "midfielder", 6), "midfield", 8.0, -2.0),
-            RoleDesign(Role(9, "right striker", "forward", 10), "attack", -7.0),
-            RoleDesign(Role(10, "left striker", "forward", 9), "attack", 7.0),
+            RoleDesign(Role(9, "right striker", "forward", 10), "attack", -7.0, kick_off_spot=(-0.5, -1.2)),
+            RoleDesign(Role(10, "left striker", "forward", 9), "attack", 7.0, kick_off_spot=(-0.5, 1.2)),
             RoleDesign(Role(11, "left midfielder", "midfielder", 7), "midfield", 24.0, wide=True),
         ),
     ),
@@ -244,13 +288,21 @@ def role_position(design: RoleDesign, style: Style, bx: float, by: float) -> tup
     if design.line == "goalkeeper":
         return goalkeeper_position(bx, by)
     line: Line = getattr(style, design.line)
-    x = line.depth(bx) + design.depth_offset
+    depth = line.depth(bx)
+    if style.kick_off:
+        depth = min(depth, -KICK_OFF_MARGIN - KICK_OFF_LINE_GAP[design.line] + math.hypot(bx, by))
+    x = depth + design.depth_offset
     if design.full_back:
-        x += style.full_back_push
+        start, end = FULL_BACK_PUSH_RAMP
+        x += style.full_back_push * min(max((bx - start) / (end - start), 0.0), 1.0)
     if design.line == "defence" and style.behind_ball is not None:
-        x = min(x, bx - style.behind_ball)
+        x = max(min(x, bx - style.behind_ball), style.defence.lo)
     width = style.wide_width if design.wide else style.width
     y = design.slot * width + style.shift[design.line] * by
+    if style.kick_off_takers and design.kick_off_spot is not None:
+        pull = max(0.0, 1.0 - math.hypot(bx, by) / KICK_OFF_TAKER_REACH)
+        x += pull * (design.kick_off_spot[0] - x)
+        y += pull * (design.kick_off_spot[1] - y)
     return x, y
 
 
@@ -266,24 +318,47 @@ def team_positions(system: System, style: Style, bx: float, by: float) -> np.nda
     positions[:, 0] = np.clip(positions[:, 0], -PLAYER_X_LIMIT, PLAYER_X_LIMIT)
     positions[outfield, 1] = np.clip(positions[outfield, 1], -PLAYER_Y_LIMIT, PLAYER_Y_LIMIT)
     if style.keep_away:
+        positions[outfield, 1] = _clear_of_touchline_ball(positions[outfield, 1], by)
         _keep_away_from_ball(positions, outfield, bx, by)
     return positions
 
 
-_CIRCLE = np.column_stack(
-    (np.cos(np.linspace(0, 2 * np.pi, 720, endpoint=False)), np.sin(np.linspace(0, 2 * np.pi, 720, endpoint=False)))
-)
+def _clear_of_touchline_ball(y: np.ndarray, by: float) -> np.ndarray:
+    """Lateral positions squeezed towards the middle so that nobody is within
+    SET_PLAY_DISTANCE (sideways) of a ball on a touchline.
+
+    Every player's target meets a ball on the touchline at some x (he stands
+    ahead of a ball on our goal line and behind one on theirs), so at kick-ins
+    only a lateral gap can keep him clear. A smooth, strictly increasing
+    squeeze (``cap * tanh(y / cap)``) keeps the players' left-to-right order;
+    the cap on the ball's side shrinks to HALF_WIDTH - SET_PLAY_DISTANCE - 1 m
+    as the ball reaches that touchline.
+    """
+    tight = HALF_WIDTH - SET_PLAY_DISTANCE - 1.0
+    loose = PLAYER_Y_LIMIT
+    left_cap = loose - (loose - tight) * max(by, 0.0) / HALF_WIDTH
+    right_cap = loose - (loose - tight) * max(-by, 0.0) / HALF_WIDTH
+    cap = np.where(y >= 0.0, left_cap, right_cap)
+    return cap * np.tanh(y / cap)
 
 
 def _keep_away_from_ball(positions: np.ndarray, movable: np.ndarray, bx: float, by: float) -> None:
-    """Move movable players closer than SET_PLAY_DISTANCE to the ball onto the
-    nearest point of that circle that lies inside the players' limits."""
-    ring = (bx, by) + SET_PLAY_DISTANCE * _CIRCLE
-    inside = (np.abs(ring[:, 0]) <= PLAYER_X_LIMIT) & (np.abs(ring[:, 1]) <= PLAYER_Y_LIMIT)
-    ring = ring[inside]
-    distance = np.hypot(positions[:, 0] - bx, positions[:, 1] - by)
-    for i in np.flatnonzero(movable & (distance < SET_PLAY_DISTANCE)):
-        positions[i] = ring[np.argmin(np.hypot(*(ring - positions[i]).T))]
+    """Push movable players near the ball radially outwards, in place.
+
+    A player at distance r < 2 * SET_PLAY_DISTANCE from the ball moves to
+    distance SET_PLAY_DISTANCE + r / 2 along the same direction: nobody stays
+    within SET_PLAY_DISTANCE, players farther than twice that do not move, and
+    (unlike projecting everyone onto the circle) two players never end on the
+    same spot because their order along each ray is kept. Positions are then
+    clipped to the players' limits.
+    """
+    offset = positions - (bx, by)
+    distance = np.hypot(offset[:, 0], offset[:, 1])
+    near = movable & (distance < 2.0 * SET_PLAY_DISTANCE)
+    scale = (SET_PLAY_DISTANCE + 0.5 * distance[near]) / np.maximum(distance[near], 1e-9)
+    positions[near] = (bx, by) + offset[near] * scale[:, None]
+    positions[:, 0] = np.clip(positions[:, 0], -PLAYER_X_LIMIT, PLAYER_X_LIMIT)
+    positions[:, 1] = np.clip(positions[:, 1], -PLAYER_Y_LIMIT, PLAYER_Y_LIMIT)
 
 
 def design_formation(system: System, situation: Situation) -> Formation:

@@ -105,17 +105,57 @@ def test_width_in_attack_and_compactness_in_defence(name):
 
 
 @pytest.mark.parametrize("name", NAMES)
-def test_kick_offs_and_their_set_plays(name):
+def test_kick_offs(name):
     team = formations.load_builtin(name)
     ours = team.positions((0.0, 0.0), "our_kickoff")
     theirs = team.positions((0.0, 0.0), "their_kickoff")
     assert np.all(ours[:, 0] <= -0.5) and np.all(theirs[:, 0] <= -0.5)
+    # Our kick-off taker stands at the ball; at theirs everybody is outside the centre circle.
+    assert np.hypot(*ours.T).min() <= 1.5
     assert np.all(np.hypot(*theirs.T) >= STANDARD_FIELD.centre_circle_radius)
-    formation = team.formation(Situation.THEIR_SET_PLAY)
+
+
+def their_restart_spots() -> dict[str, np.ndarray]:
+    """Ball positions (team-relative) where the opponents restart play in a match."""
+    xs = np.linspace(-HL, HL, 211)
+    their_half = np.array([(x, y) for x in np.linspace(0.0, HL, 36) for y in np.linspace(-HW, HW, 35)])
+    return {
+        "kick-off": np.array([[0.0, 0.0]]),
+        "kick-ins": np.vstack([np.column_stack((xs, np.full_like(xs, side))) for side in (-HW, HW)]),
+        "corners": np.array([[-HL, -HW], [-HL, HW]]),
+        "goal kicks": np.array([[HL - STANDARD_FIELD.goal_area_depth, s * STANDARD_FIELD.goal_area_width / 2] for s in (-1, 1)]),
+        "free kicks in their half": their_half,
+    }
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_everyone_keeps_clear_at_their_restarts(name):
+    formation = formations.load_builtin(name).formation(Situation.THEIR_SET_PLAY)
     outfield = ~kinds(formation, "goalkeeper")
-    for ball, positions in zip(formation.balls, formation.sample_positions):
+    in_our_box = (formation.balls[:, 0] < -HL + STANDARD_FIELD.penalty_area_depth) & (
+        np.abs(formation.balls[:, 1]) < STANDARD_FIELD.penalty_area_width / 2
+    )
+    for ball, positions in zip(formation.balls[~in_our_box], formation.sample_positions[~in_our_box]):
         distance = np.hypot(*(positions[outfield] - ball).T)
         assert distance.min() >= SET_PLAY_DISTANCE - 0.01, ball
+    # Between the samples too (interpolated), wherever the opponents can restart play.
+    for label, balls in their_restart_spots().items():
+        positions = formation.positions_many(balls)[:, outfield]
+        distance = np.linalg.norm(positions - balls[:, None, :], axis=-1)
+        worst = int(distance.min(axis=1).argmin())
+        assert distance.min() >= STANDARD_FIELD.centre_circle_radius, (label, balls[worst].tolist())
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_no_two_players_on_the_same_spot(name):
+    balls = np.vstack((GRID, [(x, y) for x in (-60.0, -53.0, 0.0, 54.0, 62.0) for y in (-45.0, -35.0, 0.0, 35.0, 45.0)]))
+    pairs = np.triu_indices(11, 1)
+    for situation, formation in formations.load_builtin(name).own_formations().items():
+        positions = formation.positions_many(balls)
+        gaps = np.linalg.norm(positions[:, pairs[0]] - positions[:, pairs[1]], axis=-1)
+        ball, pair = np.unravel_index(int(gaps.argmin()), gaps.shape)
+        where = (situation.value, balls[ball].tolist(), formation.roles[pairs[0][pair]].name, formation.roles[pairs[1][pair]].name)
+        assert gaps.min() >= 1.5, where
 
 
 def test_systems_have_eleven_roles_with_shirt_numbers():
