@@ -117,8 +117,11 @@ class Formation:
     def positions(self, ball_xy: ArrayLike) -> np.ndarray:
         """(roles, 2) target positions for one ball position (x, y) in metres.
 
-        Cheap enough to call every cycle: a few microseconds.
+        Cheap enough to call every cycle: a few microseconds. Raises
+        ValueError for anything but two finite numbers.
         """
+        if len(ball_xy) != 2:
+            raise ValueError(f"a ball position is two numbers (x, y), got {len(ball_xy)}: {ball_xy!r}")
         return self._interpolator.value(float(ball_xy[0]), float(ball_xy[1])).reshape(self._n_roles, 2)
 
     def positions_many(self, balls: ArrayLike) -> np.ndarray:

@@ -15,6 +15,7 @@ malformed formation, 2 for a file that cannot be read or written.
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import sys
 from pathlib import Path
@@ -109,6 +110,8 @@ def run_show(args: argparse.Namespace) -> int:
         except ValueError as error:
             return _fail(f"{args.file}: {error}", 2)
     ball = (float(args.ball[0]), float(args.ball[1]))
+    if not all(math.isfinite(v) for v in ball):
+        return _fail(f"--ball must be two finite numbers (metres), got {ball[0]:g} {ball[1]:g}", 2)
     try:
         positions = save_picture(formation, ball, args.out)
     except (OSError, ValueError) as error:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import re
 
 import pytest
 
@@ -11,6 +12,7 @@ import formations
 from experiments.benchmarks import formation as formation_bench
 from experiments.commands import formation as formation_command
 from formation_samples import small_document
+from test_formation_errors import BAD_DOCUMENTS, HELIOS_BAD
 from test_formation_files import helios_document
 
 
@@ -41,6 +43,24 @@ def test_validate_bad_file_prints_one_line_and_exits_1(write_json, capsys):
     err = capsys.readouterr().err.strip()
     assert err.count("\n") == 0
     assert err.startswith("error: ") and str(path) in err and "sample 2, role 2" in err
+
+
+@pytest.mark.parametrize("label, mutate, message", BAD_DOCUMENTS + HELIOS_BAD, ids=[c[0] for c in BAD_DOCUMENTS + HELIOS_BAD])
+def test_every_bad_input_is_one_line_and_exit_1(write_json, capsys, label, mutate, message):
+    document = helios_document() if (label, mutate, message) in HELIOS_BAD else small_document()
+    mutate(document)
+    path = write_json("bad.json", document)
+    assert run("formation", "validate", str(path)) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith(f"error: {path}: ")
+    assert re.search(message, err), err
+
+
+def test_show_rejects_a_non_finite_ball(tmp_path, capsys):
+    assert run("formation", "show", "4-3-3", "--ball", "nan", "0", "--out", str(tmp_path / "x.png")) == 2
+    err = capsys.readouterr().err
+    assert err.strip() == "error: --ball must be two finite numbers (metres), got nan 0"
+    assert not (tmp_path / "x.png").exists()
 
 
 def test_validate_missing_file_exits_2(tmp_path, capsys):

@@ -144,3 +144,49 @@ def test_helios_import_then_save_round_trips(tmp_path, write_json):
     again = formations.load(out)
     assert again.roles == imported.roles
     assert np.array_equal(again.sample_positions, imported.sample_positions)
+
+
+def helios_text_mutual_pairs() -> str:
+    """A helios-base file written the way its tools write one: a timestamp
+    version string, ``"key" : value`` spacing, roles whose ``pair`` fields name
+    each other (rather than -1), ``side`` letters, ``-0.00`` and balls 2 m
+    beyond the field lines (where helios places its corner samples)."""
+    roles = [
+        (1, "Goalie", "G", "C", 0),
+        (2, "CenterBack", "DF", "L", 3),
+        (3, "CenterBack", "DF", "R", 2),
+        (4, "SideBack", "DF", "L", 5),
+        (5, "SideBack", "DF", "R", 4),
+        (6, "DefensiveHalf", "MF", "C", 0),
+        (7, "OffensiveHalf", "MF", "L", 8),
+        (8, "OffensiveHalf", "MF", "R", 7),
+        (9, "SideForward", "FW", "L", 10),
+        (10, "SideForward", "FW", "R", 9),
+        (11, "CenterForward", "FW", "C", 0),
+    ]
+    role_lines = ",\n".join(
+        f'    {{ "number" : {n}, "name" : "{name}", "type" : "{kind}", "side" : "{side}", "pair" : {pair} }}'
+        for n, name, kind, side, pair in roles
+    )
+    samples = []
+    for index, (bx, by) in enumerate([(0.0, 0.0), (54.5, -36.0), (54.5, 36.0), (-54.5, 0.0), (-20.0, -25.0)]):
+        entries = [f'"index" : {index}', f'"ball" : {{ "x" : {bx:.2f}, "y" : {by:.2f} }}']
+        for n in range(1, 12):
+            x = -50.0 if n == 1 else -40.0 + 7.0 * n + 0.4 * bx
+            y = -0.0 if n == 1 else (n % 3 - 1) * 12.0 + 0.3 * by
+            entries.append(f'"{n}" : {{ "x" : {x:.2f}, "y" : {y:.2f} }}')
+        samples.append("    {\n      " + ",\n      ".join(entries) + "\n    }")
+    return (
+        '{\n  "version" : "20240527-202716",\n  "method" : "DelaunayTriangulation",\n'
+        f'  "role" : [\n{role_lines}\n  ],\n  "data" : [\n' + ",\n".join(samples) + "\n  ]\n}\n"
+    )
+
+
+def test_helios_file_with_mutual_pairs_as_its_tools_write_it(write_json):
+    formation = formations.load(write_json("normal-formation.conf", helios_text_mutual_pairs()))
+    assert formation.name == "normal-formation" and formation.n_samples == 5
+    assert [formation.role(n).partner for n in range(1, 12)] == [None, 3, 2, 5, 4, None, 8, 7, 10, 9, None]
+    assert formation.role(6).kind == "midfielder" and formation.role(11).kind == "forward"
+    # helios y grows to the right: its corner sample (54.5, -36) is our (54.5, 36).
+    row = [tuple(b) for b in formation.balls.tolist()].index((54.5, 36.0))
+    np.testing.assert_allclose(formation.sample_positions[row, formation.index_of(4)], (-40.0 + 28.0 + 21.8, -0.0 + 10.8))

@@ -128,3 +128,16 @@ def test_non_finite_ball_is_rejected(random_formation):
         random_formation.positions_many(np.array([[0.0, 0.0], [np.inf, 1.0]]))
     with pytest.raises(ValueError, match="shape"):
         random_formation.positions_many(np.zeros((3, 3)))
+    with pytest.raises(ValueError, match=r"two numbers \(x, y\), got 3"):
+        random_formation.positions((1.0, 2.0, 3.0))
+
+
+def test_far_outside_the_field_is_the_nearest_hull_edge_value():
+    formation = builtin_formation()
+    far = np.array([[200.0, -150.0], [-1e6, 3e5], [0.0, 1e9]])
+    hull_points = np.array([formation.nearest_covered_ball(b) for b in far])
+    # The nearest points of the field-shaped hull: a corner, a corner, the touchline.
+    np.testing.assert_allclose(hull_points, [[52.5, -34.0], [-52.5, 34.0], [0.0, 34.0]], atol=1e-9)
+    np.testing.assert_allclose(formation.positions_many(far), formation.positions_many(hull_points), atol=1e-9)
+    for ball, hull_point in zip(far, hull_points):
+        np.testing.assert_allclose(formation.positions(ball), formation.positions(hull_point), atol=1e-9)
