@@ -195,3 +195,55 @@ def test_goalkeeper_kicks_a_held_ball_away_through_its_own_body() -> None:
 
 
 CONFIG_BALL_DECAY = MatchConfig().physics.ball_decay
+
+
+class RuleWatcher:
+    """Recorder checking, after every cycle of a real match, what the referee must guarantee."""
+
+    def on_start(self, match: Match) -> None:
+        self.broken: list[str] = []
+        self.mode_cycles = 0
+        self.previous = (match.state.play_mode, match.state.mode_start)
+
+    def on_cycle(self, match: Match) -> None:
+        state, config = match.state, match.config
+        f, n = config.field, state.players_per_team
+        cycle = state.cycle - 1
+        if np.abs(state.pos[:, 0]).max() > f.half_length + f.margin or np.abs(state.pos[:, 1]).max() > f.half_width + f.margin:
+            self.broken.append(f"{cycle}: a player beyond the field's margin")
+        out_x = abs(state.ball[0]) > f.half_length + config.physics.ball_radius
+        out_y = abs(state.ball[1]) > f.half_width + config.physics.ball_radius
+        if state.play_mode != PlayMode.TIME_OVER and (out_x or out_y):
+            self.broken.append(f"{cycle}: the ball left the field and play went on")
+        mode = state.play_mode
+        if mode not in (PlayMode.PLAY_ON, PlayMode.TIME_OVER):
+            if cycle - state.mode_start + 1 > config.rules.set_play_timeout:
+                self.broken.append(f"{cycle}: {mode.name} outlasted its time limit")
+        if mode == PlayMode.GOALIE_HOLDS:
+            row = state.ball_holder
+            if row != state.mode_team * n + config.rules.goalie_index:
+                self.broken.append(f"{cycle}: the ball is held by row {row}, not the goalkeeper")
+            depth = state.attack_direction(state.mode_team) * state.pos[row, 0] + f.half_length
+            if not (0 <= depth <= f.penalty_area_length and abs(state.pos[row, 1]) <= f.penalty_area_width / 2):
+                self.broken.append(f"{cycle}: the goalkeeper holds the ball outside its penalty area")
+        if mode in (PlayMode.KICK_OFF, PlayMode.KICK_IN, PlayMode.CORNER_KICK, PlayMode.GOAL_KICK, PlayMode.FREE_KICK):
+            other = slice((1 - state.mode_team) * n, (2 - state.mode_team) * n)
+            gap = np.hypot(*(state.pos[other] - state.ball).T).min()
+            if gap < config.rules.set_play_clearance - 1e-9:
+                self.broken.append(f"{cycle}: an opponent {gap:.2f} m from the ball at a {mode.name}")
+
+    def on_end(self, match: Match) -> None:
+        pass
+
+
+@pytest.mark.parametrize("home, away, seed", [("chaser", "chaser", 5), ("chaser", "idle", 6)])
+def test_a_real_match_keeps_the_rules_every_cycle(home: str, away: str, seed: int) -> None:
+    watcher = RuleWatcher()
+    result = run_match(home, away, seed=seed, config=MatchConfig(max_cycles=2000), recorders=[watcher])
+    assert watcher.broken == []
+    events = list(zip(result.events.cycle, result.events.kind, result.events.team, result.events.detail))
+    goals = [i for i, e in enumerate(events) if e[1] == EventKind.GOAL]
+    assert goals
+    for i in goals:  # the team that conceded kicks off, in the goal's cycle
+        cycle, _, scorer, _ = events[i]
+        assert events[i + 1] == (cycle, EventKind.SET_PLAY, 1 - scorer, PlayMode.KICK_OFF)
