@@ -21,6 +21,7 @@ import numpy as np
 from numba import njit
 
 from soccer_sim.state import AWAY, HOME, EventKind
+from soccer_sim.team import TeamError
 
 if TYPE_CHECKING:
     from soccer_sim.match import Match
@@ -85,10 +86,7 @@ class StatisticsRecorder:
         stats = []
         for team in (HOME, AWAY):
             mine = teams == team
-            reported = {}
-            report = getattr(match.teams[team], "statistics", None)
-            if callable(report):
-                reported = {str(k): float(v) for k, v in dict(report()).items()}
+            reported = _reported_figures(match.teams[team], match.team_names[team])
             stats.append(TeamStatistics(
                 goals=int(match.state.score[team]),
                 shots=int(np.count_nonzero(mine & (kinds == EventKind.SHOT))),
@@ -100,6 +98,20 @@ class StatisticsRecorder:
                 reported=reported,
             ))
         self.result = (stats[0], stats[1])
+
+
+def _reported_figures(team: object, name: str) -> dict[str, float]:
+    """The figures ``team.statistics()`` reports (none if it has no such method), as floats;
+    a TeamError naming the team if the method fails or reports something that is not a number."""
+    report = getattr(team, "statistics", None)
+    if not callable(report):
+        return {}
+    try:
+        figures = report()
+        return {str(key): float(value) for key, value in dict(figures).items()}
+    except Exception as exc:
+        raise TeamError(name, f"statistics() must return a dict of numbers; it failed with "
+                              f"{type(exc).__name__}: {exc}") from exc
 
 
 @njit(cache=True, nogil=True)

@@ -139,3 +139,16 @@ def test_move_targets_of_the_wrong_shape_are_rejected() -> None:
 
     with pytest.raises(TeamError, match=r"team 'Mover': command.move must have shape \(11, 2\), got \(3, 2\)"):
         run_match(Mover(), "idle", config=CONFIG)
+
+
+@pytest.mark.parametrize("report, cause", [({"role_switches": "many"}, "ValueError"), ([1, 2], "TypeError"),
+                                           (ZeroDivisionError("x"), "ZeroDivisionError")])
+def test_statistics_that_are_not_numbers_name_the_team(report, cause) -> None:
+    class Reporting(Scripted):
+        def statistics(self):
+            if isinstance(report, Exception):
+                raise report
+            return report
+
+    with pytest.raises(TeamError, match=rf"team 'Reporting': statistics\(\) must return a dict of numbers.*{cause}"):
+        run_match(Reporting(), "idle", config=CONFIG)
