@@ -58,15 +58,12 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 
 
 def run_validate(args: argparse.Namespace) -> int:
-    from formations import Formation, FormationError
+    from formations import Formation
     from formations.symmetry import asymmetries
 
-    try:
-        item = _read(args.file)
-    except FormationError as error:
-        return _fail(str(error), 1)
-    except OSError as error:
-        return _fail(_os_message(args.file, error), 2)
+    item = _read(args.file)
+    if isinstance(item, int):
+        return item
     formations = (
         [("", item)]
         if isinstance(item, Formation)
@@ -93,15 +90,12 @@ def run_validate(args: argparse.Namespace) -> int:
 
 
 def run_show(args: argparse.Namespace) -> int:
-    from formations import Formation, FormationError
+    from formations import Formation
     from formations.plotting import save_picture
 
-    try:
-        item = _read(args.file)
-    except FormationError as error:
-        return _fail(str(error), 1)
-    except OSError as error:
-        return _fail(_os_message(args.file, error), 2)
+    item = _read(args.file)
+    if isinstance(item, int):
+        return item
     if isinstance(item, Formation):
         formation = item
     else:
@@ -145,12 +139,19 @@ def run_import(args: argparse.Namespace) -> int:
 
 
 def _read(name: str):
-    """Read FILE, or the built-in set of that name if no such file exists."""
-    from formations import builtin_names, load_builtin, read_any
+    """The formation or set in FILE (or the built-in set of that name if no
+    such file exists), or the exit status after printing why it cannot be read:
+    1 for a malformed formation, 2 for an unreadable file."""
+    from formations import FormationError, builtin_names, load_builtin, read_any
 
-    if not os.path.exists(name) and name in builtin_names():
-        return load_builtin(name)
-    return read_any(name)
+    try:
+        if not os.path.exists(name) and name in builtin_names():
+            return load_builtin(name)
+        return read_any(name)
+    except FormationError as error:
+        return _fail(str(error), 1)
+    except OSError as error:
+        return _fail(_os_message(name, error), 2)
 
 
 def _os_message(path: str, error: OSError) -> str:
