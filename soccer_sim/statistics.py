@@ -36,8 +36,11 @@ class TeamStatistics:
 
     goals: int = 0
     shots: int = 0
+    """Kicks whose noiseless path crosses the opponents' goal line between the posts, plus every
+    goal scored without such a kick (see the SHOT event in :mod:`soccer_sim.referee`)."""
     kicks: int = 0
     passes: int = 0
+    """Kicks received by a team-mate (kick, body touch or catch) with no opponent touch between."""
     possession: float = 0.0
     """Share of the possession, in [0, 1]; the two teams' shares add up to 1 (0 if nobody touched the ball)."""
     teammate_contacts: int = 0
