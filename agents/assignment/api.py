@@ -18,6 +18,7 @@ from .graphs import dense_to_graph
 from .lexicographic_reference import bitvector_assignment, brute_force_assignment, subset_dp_assignment
 from .matching import maximum_matching
 from .result import AssignmentResult
+from .validation import MAX_COORDINATE, as_costs, as_points, check_point_pair, check_squares
 from .scram import bottleneck_assignment, mmd_msd2_assignment, mmdr_assignment
 
 #: Method names accepted by :func:`assign` and :func:`assign_costs`.
@@ -58,6 +59,16 @@ def _method_key(method: str, algorithm: str | None) -> str:
     return key
 
 
+def _generator(rng: object) -> np.random.Generator:
+    """The random generator of method ``"random"`` from its ``rng=`` argument."""
+    if rng is None:
+        raise AssignmentError("method 'random' needs rng= (a numpy Generator or an integer seed)")
+    try:
+        return np.random.default_rng(rng)
+    except (TypeError, ValueError) as exc:
+        raise AssignmentError(f"rng must be a numpy Generator or a non-negative integer seed, got {rng!r}: {exc}") from None
+
+
 def _solve_dense(key: str, lengths: np.ndarray, squared: np.ndarray, rng: object) -> np.ndarray:
     """Target index of every row of a dense problem with ``rows <= cols``."""
     if key == "mmd+msd2":
@@ -73,9 +84,7 @@ def _solve_dense(key: str, lengths: np.ndarray, squared: np.ndarray, rng: object
     if key == "greedy":
         return greedy_assignment(lengths)
     if key == "random":
-        if rng is None:
-            raise AssignmentError("method 'random' needs rng= (a numpy Generator or an integer seed)")
-        return random_assignment(lengths, np.random.default_rng(rng))
+        return random_assignment(lengths, _generator(rng))
     return _MMDR_SOLVERS[key[5:]](lengths)
 
 
@@ -138,16 +147,25 @@ def assign(
     """
     key = _method_key(method, algorithm)
     name = key[:4] if key.startswith("mmdr") else key
-    # Fast path for clean float64 arrays (the simulator's case); anything else goes through validation.
-    r = robots if type(robots) is np.ndarray and robots.dtype == np.float64 and robots.ndim == 2 else None
-    t = targets if type(targets) is np.ndarray and targets.dtype == np.float64 and targets.ndim == 2 else None
-    if r is not None and t is not None and not (r.flags.c_contiguous and t.flags.c_contiguous):
-        r = None
-    if r is None or t is None or r.shape[1] != t.shape[1] or not (
-        np.isfinite(r).all() and np.isfinite(t).all()
+    # Fast path for clean, non-empty float64 arrays (the simulator's case); anything else goes
+    # through validation, which explains what is wrong.
+    if (
+        type(robots) is np.ndarray
+        and type(targets) is np.ndarray
+        and robots.dtype == np.float64
+        and targets.dtype == np.float64
+        and robots.ndim == 2
+        and targets.ndim == 2
+        and robots.flags.c_contiguous
+        and targets.flags.c_contiguous
+        and robots.shape[1] == targets.shape[1]
+        and robots.size
+        and targets.size
+        and np.abs(robots).max() <= MAX_COORDINATE  # also False for NaN
+        and np.abs(targets).max() <= MAX_COORDINATE
     ):
-        from .validation import as_points, check_point_pair
-
+        r, t = robots, targets
+    else:
         r, t = check_point_pair(as_points(robots, "robots"), as_points(targets, "targets"))
     n, m = r.shape[0], t.shape[0]
     if n == 0 or m == 0:
@@ -164,7 +182,7 @@ def assign(
         col_of_row, length_of_row = solver(np.ascontiguousarray(rows), np.ascontiguousarray(cols))
         return _result(col_of_row, length_of_row, transposed, n, m, name)
     if key == "random" and rng is not None:  # needs no distance matrix
-        col_of_row = np.random.default_rng(rng).permutation(cols.shape[0])[:n_rows]
+        col_of_row = _generator(rng).permutation(cols.shape[0])[:n_rows]
         length_of_row = np.sqrt(pair_squared_distances(rows, cols, np.arange(n_rows), col_of_row))
         return _result(col_of_row, length_of_row, transposed, n, m, name)
     lengths, squared = dense_distances(rows, cols)
@@ -191,8 +209,6 @@ def assign_costs(
             unknown method names, or forbidden pairs that leave no complete
             assignment (the message says how many robots could be served).
     """
-    from .validation import as_costs
-
     key = _method_key(method, algorithm)
     name = key[:4] if key.startswith("mmdr") else key
     matrix = as_costs(costs)
@@ -203,5 +219,9 @@ def assign_costs(
     lengths = np.ascontiguousarray(matrix.T) if transposed else matrix
     if not np.isfinite(lengths).all():
         _check_feasible(lengths, "targets" if transposed else "robots")
-    col_of_row = _solve_dense(key, lengths, lengths * lengths, rng)
+    with np.errstate(over="ignore"):
+        squared = lengths * lengths
+    if key in ("msd2", "mmd+msd2"):
+        check_squares(matrix, key)
+    col_of_row = _solve_dense(key, lengths, squared, rng)
     return _result(col_of_row, lengths[np.arange(lengths.shape[0]), col_of_row], transposed, n, m, name)

@@ -80,28 +80,64 @@ def edge_rows(indptr: np.ndarray) -> np.ndarray:
 
 
 @njit(cache=True, nogil=True)
-def pad_with_dummy_rows(
-    indptr: np.ndarray, indices: np.ndarray, lengths: np.ndarray, n_cols: int, dummy_length: float
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Append ``n_cols - n_rows`` dummy rows joined to every target by ``dummy_length``.
+def square_up(
+    indptr: np.ndarray,
+    indices: np.ndarray,
+    lengths: np.ndarray,
+    n_cols: int,
+    threshold: float,
+    pad_length: float,
+    col_of_row: np.ndarray,
+    row_of_col: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Square graph whose perfect matchings are the complete assignments of a graph with fewer rows.
 
-    Turns a problem with fewer robots than targets into a square one whose
-    perfect matchings are exactly the original complete assignments plus dummy
-    robots parked on the unused targets.
+    For ``n`` rows and ``m > n`` targets the result has ``n + m`` rows and
+    ``n + m`` columns: the original rows and targets, one "target copy" row
+    ``n + c`` per target ``c`` and one "robot copy" column ``m + r`` per robot
+    ``r``. Target copy ``n + c`` is joined to target ``c`` (the target stays
+    unused) and to the robot copy ``m + r`` of every robot ``r`` with a pair
+    ``(r, c)`` no longer than ``threshold`` (robot ``r`` took it); these padding
+    pairs have length ``pad_length``. Every perfect matching restricted to the
+    original rows is a complete assignment, and every complete assignment
+    extends to one, so the padding costs ``2 * pairs + m`` pairs rather than
+    the ``(m - n) * m`` of identical dummy robots joined to every target.
+
+    Returns ``(indptr, indices, lengths, col_of_row, row_of_col)``, the last
+    two extending the complete matching ``col_of_row``/``row_of_col``.
     """
     n_rows = indptr.shape[0] - 1
-    extra = n_cols - n_rows
+    size = n_rows + n_cols
     n_edges = indptr[-1]
-    new_indptr = np.empty(n_cols + 1, dtype=np.int64)
+    per_col = np.zeros(n_cols, dtype=np.int64)
+    for e in range(n_edges):
+        if lengths[e] <= threshold:
+            per_col[indices[e]] += 1
+    new_indptr = np.empty(size + 1, dtype=np.int64)
     new_indptr[: n_rows + 1] = indptr
-    for k in range(extra):
-        new_indptr[n_rows + 1 + k] = n_edges + (k + 1) * n_cols
-    new_indices = np.empty(n_edges + extra * n_cols, dtype=np.int64)
-    new_lengths = np.empty(n_edges + extra * n_cols)
+    for c in range(n_cols):
+        new_indptr[n_rows + c + 1] = new_indptr[n_rows + c] + 1 + per_col[c]
+    new_indices = np.empty(new_indptr[-1], dtype=np.int64)
+    new_lengths = np.full(new_indptr[-1], pad_length)
     new_indices[:n_edges] = indices
     new_lengths[:n_edges] = lengths
-    for k in range(extra):
-        for j in range(n_cols):
-            new_indices[n_edges + k * n_cols + j] = j
-            new_lengths[n_edges + k * n_cols + j] = dummy_length
-    return new_indptr, new_indices, new_lengths
+    fill = new_indptr[n_rows:-1].copy()
+    for c in range(n_cols):  # the target itself first: lowest index among equal lengths
+        new_indices[fill[c]] = c
+        fill[c] += 1
+    for r in range(n_rows):  # then robot copies in increasing robot order
+        for e in range(indptr[r], indptr[r + 1]):
+            if lengths[e] <= threshold:
+                c = indices[e]
+                new_indices[fill[c]] = n_cols + r
+                fill[c] += 1
+    new_col_of_row = np.empty(size, dtype=np.int64)
+    new_row_of_col = np.empty(size, dtype=np.int64)
+    new_col_of_row[:n_rows] = col_of_row
+    for r in range(n_rows):
+        new_row_of_col[n_cols + r] = n_rows + col_of_row[r]
+    for c in range(n_cols):
+        r = row_of_col[c]
+        new_row_of_col[c] = r if r >= 0 else n_rows + c
+        new_col_of_row[n_rows + c] = n_cols + r if r >= 0 else c
+    return new_indptr, new_indices, new_lengths, new_col_of_row, new_row_of_col

@@ -212,8 +212,8 @@ def lexicographic_refine(
 ) -> None:
     """Turn a perfect matching into a lexicographic bottleneck one, in place.
 
-    The graph must be square (pad rectangular problems with dummy rows of
-    length ``-inf``), ``col_of_row``/``row_of_col`` a perfect matching using
+    The graph must be square (square up rectangular problems with
+    :func:`.graphs.square_up`, padding length ``-inf``), ``col_of_row``/``row_of_col`` a perfect matching using
     pairs no longer than ``threshold`` (normally the bottleneck value); only
     those pairs are considered. Lengths of ``-inf`` are never refined.
     """

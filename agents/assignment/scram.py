@@ -19,7 +19,7 @@ import numpy as np
 from scipy.optimize import linear_sum_assignment
 
 from .bottleneck import bottleneck_matching
-from .graphs import dense_to_graph, pad_with_dummy_rows
+from .graphs import dense_to_graph, square_up
 from .lexicographic import lexicographic_refine
 
 
@@ -53,14 +53,12 @@ def refine_to_lexicographic(
     col_of_row: np.ndarray,
     row_of_col: np.ndarray,
 ) -> np.ndarray:
-    """Lexicographic refinement of a bottleneck matching; pads rectangular problems first."""
+    """Lexicographic refinement of a bottleneck matching; squares up rectangular problems first."""
     n_rows = indptr.shape[0] - 1
     n_cols = row_of_col.shape[0]
     if n_rows < n_cols:
-        indptr, indices, lengths = pad_with_dummy_rows(indptr, indices, lengths, n_cols, -np.inf)
-        free_cols = np.flatnonzero(row_of_col < 0)
-        col_of_row = np.concatenate([col_of_row, free_cols])
-        row_of_col = row_of_col.copy()
-        row_of_col[free_cols] = np.arange(n_rows, n_cols)
+        indptr, indices, lengths, col_of_row, row_of_col = square_up(
+            indptr, indices, lengths, n_cols, value, -np.inf, col_of_row, row_of_col
+        )
     lexicographic_refine(indptr, indices, lengths, value, col_of_row, row_of_col)
     return col_of_row[:n_rows]

@@ -11,6 +11,10 @@ import numpy as np
 
 from .errors import AssignmentError
 
+#: Largest coordinate magnitude accepted: squared distances between points this far
+#: apart stay finite in float64 (about 1.8e308).
+MAX_COORDINATE = 1e150
+
 
 def as_points(points: object, name: str) -> np.ndarray:
     """Return ``points`` as a C-contiguous float64 array of shape ``(count, d)``.
@@ -19,7 +23,7 @@ def as_points(points: object, name: str) -> np.ndarray:
     dimension is taken from the other point set by :func:`check_point_pair`.
     """
     try:
-        array = np.ascontiguousarray(points, dtype=np.float64)
+        array = np.asarray(points, dtype=np.float64)
     except (TypeError, ValueError) as exc:
         raise AssignmentError(f"{name} must be an array of numbers of shape (count, d): {exc}") from None
     if array.ndim != 2:
@@ -31,7 +35,13 @@ def as_points(points: object, name: str) -> np.ndarray:
         raise AssignmentError(
             f"{name}[{bad[0]}, {bad[1]}] is {float(array[bad[0], bad[1]])}: coordinates must be finite"
         )
-    return array
+    if array.size and np.abs(array).max() > MAX_COORDINATE:
+        i, j = np.unravel_index(np.argmax(np.abs(array)), array.shape)
+        raise AssignmentError(
+            f"{name}[{i}, {j}] is {float(array[i, j]):g}: coordinates must be at most {MAX_COORDINATE:g} "
+            "in magnitude (squared distances must stay finite)"
+        )
+    return np.ascontiguousarray(array)
 
 
 def check_point_pair(robots: np.ndarray, targets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -57,7 +67,7 @@ def as_costs(costs: object) -> np.ndarray:
     the lexicographic methods order pairs by cost).
     """
     try:
-        matrix = np.ascontiguousarray(costs, dtype=np.float64)
+        matrix = np.asarray(costs, dtype=np.float64)
     except (TypeError, ValueError) as exc:
         raise AssignmentError(f"costs must be a numeric matrix of shape (robots, targets): {exc}") from None
     if matrix.ndim != 2:
@@ -70,4 +80,16 @@ def as_costs(costs: object) -> np.ndarray:
         value = matrix[i, j]
         what = "NaN" if np.isnan(value) else f"negative ({float(value)})"
         raise AssignmentError(f"costs[{i}, {j}] is {what}: costs must be >= 0, or +inf for a forbidden pair")
-    return matrix
+    return np.ascontiguousarray(matrix)
+
+
+def check_squares(costs: np.ndarray, method: str) -> None:
+    """Raise if a finite cost overflows to ``inf`` when squared (methods that square costs)."""
+    limit = np.sqrt(np.finfo(np.float64).max)
+    too_large = np.isfinite(costs) & (costs > limit)
+    if too_large.any():
+        i, j = np.argwhere(too_large)[0]
+        raise AssignmentError(
+            f"costs[{i}, {j}] is {float(costs[i, j]):g}: method {method!r} squares the costs, so finite "
+            f"costs must be at most {limit:.4g}"
+        )

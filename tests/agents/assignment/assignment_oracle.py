@@ -119,3 +119,44 @@ def has_collision(robots: np.ndarray, targets: np.ndarray, target_of: np.ndarray
         if paths_meet(robots[x], targets[target_of[x]], robots[y], targets[target_of[y]]):
             return True
     return False
+
+
+# References for sizes beyond brute force, built on SciPy's dense solver only.
+
+
+def _rows_fewer(costs: np.ndarray) -> np.ndarray:
+    return costs.T if costs.shape[0] > costs.shape[1] else costs
+
+
+def scipy_min_sum(costs: np.ndarray) -> float:
+    """Least total of a complete assignment (inf = forbidden), by linear_sum_assignment."""
+    from scipy.optimize import linear_sum_assignment
+
+    matrix = _rows_fewer(costs)
+    rows, cols = linear_sum_assignment(matrix)
+    return float(matrix[rows, cols].sum())
+
+
+def threshold_bottleneck(costs: np.ndarray) -> float:
+    """Smallest makespan of a complete assignment: binary search over the distinct costs,
+    each threshold tested by a 0/1 linear_sum_assignment (optimum 0 iff a complete
+    assignment uses only pairs no longer than the threshold)."""
+    from scipy.optimize import linear_sum_assignment
+
+    matrix = _rows_fewer(costs)
+    values = np.unique(matrix[np.isfinite(matrix)])
+    lo, hi = 0, values.size - 1
+    while lo < hi:
+        mid = (lo + hi) // 2
+        over = (matrix > values[mid]).astype(float)
+        rows, cols = linear_sum_assignment(over)
+        if over[rows, cols].sum() == 0:
+            hi = mid
+        else:
+            lo = mid + 1
+    return float(values[lo])
+
+
+def chosen_costs(target_of: np.ndarray, costs: np.ndarray) -> np.ndarray:
+    served = target_of >= 0
+    return costs[np.flatnonzero(served), target_of[served]]

@@ -52,6 +52,11 @@ def test_alias_and_lists_are_accepted():
         (np.zeros((2, 2, 2)), [[1.0, 1.0]], r"robots must have shape \(count, d\)"),
         ([[0.0, 0.0]], [[1.0, 1.0, 1.0]], "2-dimensional but targets are 3-dimensional"),
         ([["a", "b"]], [[1.0, 1.0]], "robots must be an array of numbers"),
+        (7.0, [[1.0, 1.0]], r"robots must have shape \(count, d\), got an array of shape \(\)"),
+        (np.zeros((2, 0)), np.zeros((3, 0)), r"at least one coordinate"),
+        # Finite, but the squared distance would overflow to inf (a forbidden pair).
+        (np.array([[1e300, 0.0]]), np.array([[-1e300, 0.0]]), r"robots\[0, 0\] is 1e\+300: coordinates must be at most"),
+        (np.array([[0.0, 0.0], [1.0, 1.0]]), np.array([[0.0, -2e150], [1.0, 1.0]]), r"targets\[0, 1\] is -2e\+150"),
     ],
 )
 def test_bad_points_are_rejected_with_a_message(robots, targets, message):
@@ -78,6 +83,22 @@ def test_bad_costs_are_rejected_with_a_message(costs, message):
     for method in METHODS:
         with pytest.raises(AssignmentError, match=message):
             assign_costs(costs, method, rng=0)
+
+
+@pytest.mark.parametrize("method", ["msd2", "mmd+msd2"])
+def test_costs_whose_squares_overflow_are_rejected_by_squaring_methods(method):
+    costs = [[1.0, 1e200], [1e200, 1.0]]
+    with pytest.raises(AssignmentError, match=r"costs\[0, 1\] is 1e\+200: method .* squares the costs"):
+        assign_costs(costs, method)
+    assert assign_costs(costs, "mmdr").target_of.tolist() == [0, 1]  # the others do not square
+
+
+@pytest.mark.parametrize("rng", ["abc", -1, 1.5])
+def test_bad_random_generator_is_rejected(rng):
+    with pytest.raises(AssignmentError, match="rng must be a numpy Generator or a non-negative integer seed"):
+        assign(ROBOTS, TARGETS, "random", rng=rng)
+    with pytest.raises(AssignmentError, match="rng must be"):
+        assign_costs(np.ones((2, 2)), "random", rng=rng)
 
 
 def test_unknown_names_list_the_valid_ones():
@@ -137,6 +158,40 @@ def test_same_input_same_output(method):
     for _ in range(3):
         again = assign(robots.copy(), targets.copy(), method, rng=5)
         np.testing.assert_array_equal(again.target_of, first.target_of)
+
+
+_DETERMINISM_SCRIPT = """
+import hashlib
+import numpy as np
+from agents.assignment import METHODS, assign, assign_costs
+digest = hashlib.sha256()
+rng = np.random.default_rng(7)
+for n, m, side in [(10, 10, 3), (30, 25, 4), (200, 200, 5), (180, 260, 3), (12, 9, 2)]:
+    robots = rng.integers(0, side, (n, 2)).astype(float)
+    targets = rng.integers(0, side, (m, 2)).astype(float)
+    costs = np.round(np.sqrt(((robots[:, None] - targets[None]) ** 2).sum(-1)))
+    for method in METHODS:
+        digest.update(assign(robots, targets, method, rng=3).target_of.tobytes())
+        digest.update(assign_costs(costs, method, rng=3).target_of.tobytes())
+print(digest.hexdigest())
+"""
+
+
+def test_same_output_across_processes():
+    """Tie-heavy grids, dense and k-d tree paths, every method: identical in fresh interpreters."""
+    import os
+    import subprocess
+    import sys
+
+    outputs = set()
+    for hash_seed in ("1", "2"):
+        env = dict(os.environ, PYTHONHASHSEED=hash_seed)
+        done = subprocess.run(
+            [sys.executable, "-c", _DETERMINISM_SCRIPT], capture_output=True, text=True, env=env, check=True,
+            cwd=os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))),
+        )
+        outputs.add(done.stdout.strip())
+    assert len(outputs) == 1 and len(outputs.pop()) == 64
 
 
 def test_random_depends_on_the_seed_only():
