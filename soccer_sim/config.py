@@ -226,10 +226,12 @@ class MatchConfig:
         self.validate()
 
     def validate(self) -> None:
-        self.field.validate()
-        self.physics.validate()
-        self.stamina.validate()
-        self.rules.validate()
+        for name, kind in (("field", FieldConfig), ("physics", PhysicsConfig), ("stamina", StaminaConfig),
+                           ("rules", RuleConfig)):
+            part = getattr(self, name)
+            if not isinstance(part, kind):
+                raise ConfigError(f"MatchConfig.{name} must be a {kind.__name__}, got {type(part).__name__}")
+            part.validate()
         if not (isinstance(self.players_per_team, int) and 1 <= self.players_per_team):
             raise ConfigError(f"MatchConfig.players_per_team must be a positive integer, got {self.players_per_team!r}")
         if self.rules.goalie_index >= self.players_per_team:

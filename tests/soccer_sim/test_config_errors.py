@@ -47,3 +47,10 @@ def test_small_valid_configs_play() -> None:
     result = run_match("chaser", "chaser", seed=2, config=config)
     assert result.state.pos.shape == (6, 2)
     assert result.cycles == 200
+
+
+def test_parts_of_the_wrong_type_are_named() -> None:
+    with pytest.raises(ConfigError, match="MatchConfig.field must be a FieldConfig, got dict"):
+        MatchConfig(field={"length": 100.0})
+    with pytest.raises(ConfigError, match="MatchConfig.rules must be a RuleConfig, got PhysicsConfig"):
+        MatchConfig(rules=PhysicsConfig())
