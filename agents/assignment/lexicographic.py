@@ -45,6 +45,34 @@ _INF_INT = np.iinfo(np.int64).max // 4
 
 
 @njit(cache=True, nogil=True)
+def _flip_path(
+    end_col: int,
+    start: int,
+    pred_edge: np.ndarray,
+    rows_of_edge: np.ndarray,
+    col_of_row: np.ndarray,
+    edge_of_row: np.ndarray,
+    row_of_col: np.ndarray,
+) -> None:
+    """Augment along the path found by a search from free row ``start`` to free target ``end_col``.
+
+    ``pred_edge[c]`` is the pair by which the search reached target ``c``;
+    walking back from ``end_col``, every row on the path takes that target.
+    """
+    c = end_col
+    while True:
+        e_in = pred_edge[c]
+        row = rows_of_edge[e_in]
+        previous = col_of_row[row]
+        col_of_row[row] = c
+        edge_of_row[row] = e_in
+        row_of_col[c] = row
+        if row == start:
+            return
+        c = previous
+
+
+@njit(cache=True, nogil=True)
 def _repair(
     start: int,
     indptr: np.ndarray,
@@ -77,16 +105,8 @@ def _repair(
             pred_edge[c] = e
             r2 = row_of_col[c]
             if r2 < 0:
-                while True:
-                    e_in = pred_edge[c]
-                    row = rows_of_edge[e_in]
-                    previous = col_of_row[row]
-                    col_of_row[row] = c
-                    edge_of_row[row] = e_in
-                    row_of_col[c] = row
-                    if row == start:
-                        return True
-                    c = previous
+                _flip_path(c, start, pred_edge, rows_of_edge, col_of_row, edge_of_row, row_of_col)
+                return True
             queue[tail] = r2
             tail += 1
     return False
@@ -177,18 +197,7 @@ def _min_count_matching(
             if c != final:
                 u[row_of_col[c]] += delta
         u[start] += final_dist
-        # Flip the augmenting path back to the start row.
-        c = final
-        while True:
-            e_in = pred_edge[c]
-            r = rows_of_edge[e_in]
-            previous = col_of_row[r]
-            col_of_row[r] = c
-            edge_of_row[r] = e_in
-            row_of_col[c] = r
-            if r == start:
-                break
-            c = previous
+        _flip_path(final, start, pred_edge, rows_of_edge, col_of_row, edge_of_row, row_of_col)
     # Keep only tight pairs: their perfect matchings are exactly the optimal ones.
     for e in range(alive.shape[0]):
         if alive[e]:
