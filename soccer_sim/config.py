@@ -13,6 +13,7 @@ construction) rejects impossible values with a message naming the field.
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass, fields
 from dataclasses import field as default_of
 
@@ -21,17 +22,27 @@ class ConfigError(ValueError):
     """A configuration value is impossible (negative size, goal wider than the field, ...)."""
 
 
+def _is_integer(value: object) -> bool:
+    """True for Python and numpy integers (not bools)."""
+    return isinstance(value, numbers.Integral) and not isinstance(value, bool)
+
+
+def _is_real(value: object) -> bool:
+    """True for Python and numpy real numbers (not bools)."""
+    return isinstance(value, numbers.Real) and not isinstance(value, bool)
+
+
 def _require_positive(owner: object, *names: str) -> None:
     for name in names:
         value = getattr(owner, name)
-        if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
+        if not (_is_real(value) and math.isfinite(value) and value > 0):
             raise ConfigError(f"{type(owner).__name__}.{name} must be a positive finite number, got {value!r}")
 
 
 def _require_fraction(owner: object, *names: str) -> None:
     for name in names:
         value = getattr(owner, name)
-        if not (isinstance(value, (int, float)) and 0.0 <= value <= 1.0):
+        if not (_is_real(value) and 0.0 <= value <= 1.0):
             raise ConfigError(f"{type(owner).__name__}.{name} must be within [0, 1], got {value!r}")
 
 
@@ -201,12 +212,12 @@ class RuleConfig:
     def validate(self) -> None:
         for name in ("half_cycles", "set_play_timeout", "goalie_hold_cycles"):
             value = getattr(self, name)
-            if not (isinstance(value, int) and value > 0):
+            if not (_is_integer(value) and value > 0):
                 raise ConfigError(f"RuleConfig.{name} must be a positive integer, got {value!r}")
-        if not (isinstance(self.catch_ban_cycles, int) and self.catch_ban_cycles >= 0):
+        if not (_is_integer(self.catch_ban_cycles) and self.catch_ban_cycles >= 0):
             raise ConfigError(f"RuleConfig.catch_ban_cycles must be a non-negative integer, got {self.catch_ban_cycles!r}")
         _require_positive(self, "offside_active_distance", "set_play_clearance", "catch_length", "catch_width")
-        if not (isinstance(self.goalie_index, int) and 0 <= self.goalie_index):
+        if not (_is_integer(self.goalie_index) and 0 <= self.goalie_index):
             raise ConfigError(f"RuleConfig.goalie_index must be a non-negative integer, got {self.goalie_index!r}")
 
 
@@ -232,11 +243,11 @@ class MatchConfig:
             if not isinstance(part, kind):
                 raise ConfigError(f"MatchConfig.{name} must be a {kind.__name__}, got {type(part).__name__}")
             part.validate()
-        if not (isinstance(self.players_per_team, int) and 1 <= self.players_per_team):
+        if not (_is_integer(self.players_per_team) and 1 <= self.players_per_team):
             raise ConfigError(f"MatchConfig.players_per_team must be a positive integer, got {self.players_per_team!r}")
         if self.rules.goalie_index >= self.players_per_team:
             raise ConfigError("RuleConfig.goalie_index must index a player of the team")
-        if self.max_cycles is not None and not (isinstance(self.max_cycles, int) and self.max_cycles > 0):
+        if self.max_cycles is not None and not (_is_integer(self.max_cycles) and self.max_cycles > 0):
             raise ConfigError(f"MatchConfig.max_cycles must be None or a positive integer, got {self.max_cycles!r}")
 
     @property

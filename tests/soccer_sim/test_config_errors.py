@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+import numpy as np
 import pytest
 
 from soccer_sim import ConfigError, FieldConfig, MatchConfig, PhysicsConfig, RuleConfig, StaminaConfig, run_match
@@ -54,3 +55,13 @@ def test_parts_of_the_wrong_type_are_named() -> None:
         MatchConfig(field={"length": 100.0})
     with pytest.raises(ConfigError, match="MatchConfig.rules must be a RuleConfig, got PhysicsConfig"):
         MatchConfig(rules=PhysicsConfig())
+
+
+def test_numpy_numbers_are_accepted_and_bools_are_not() -> None:
+    config = MatchConfig(max_cycles=np.int64(50), rules=RuleConfig(half_cycles=np.int32(25)))
+    assert config.total_cycles == 50
+    assert PhysicsConfig(ball_decay=np.float32(0.9)).ball_decay == pytest.approx(0.9)
+    with pytest.raises(ConfigError, match="max_cycles"):
+        MatchConfig(max_cycles=True)
+    with pytest.raises(ConfigError, match="player_radius"):
+        MatchConfig(physics=PhysicsConfig(player_radius=True))
