@@ -19,6 +19,18 @@ from .matching import maximum_matching
 
 
 @njit(cache=True, nogil=True)
+def _distinct_sorted(values: np.ndarray) -> np.ndarray:
+    """Sorted distinct values (``np.unique`` without its long compile time under numba)."""
+    out = np.sort(values)
+    count = 0
+    for k in range(out.shape[0]):
+        if count == 0 or out[k] != out[count - 1]:
+            out[count] = out[k]
+            count += 1
+    return out[:count]
+
+
+@njit(cache=True, nogil=True)
 def bottleneck_matching(
     indptr: np.ndarray, indices: np.ndarray, lengths: np.ndarray, n_cols: int
 ) -> tuple[float, np.ndarray, np.ndarray]:
@@ -47,28 +59,25 @@ def bottleneck_matching(
                 column_min[indices[e]] = lengths[e]
         for c in range(n_cols):
             lower = max(lower, column_min[c])
-    values = np.unique(lengths[lengths >= lower])
-    work_col = np.empty(n_rows, dtype=np.int64)
-    work_row = np.empty(n_cols, dtype=np.int64)
-    best_col = np.empty(n_rows, dtype=np.int64)
-    best_row = np.empty(n_cols, dtype=np.int64)
+    values = _distinct_sorted(lengths[lengths >= lower])
+    best_col = fail_col
+    best_row = fail_row
     # Invariant: probes at index <= lo fail (lo = -1: nothing known), hi succeeds (hi = len: unknown).
     lo = -1
     hi = values.shape[0]
     step = 1
     probe = 0
     while hi - lo > 1:
-        work_col[:] = fail_col
-        work_row[:] = fail_row
+        # (Copies, not slice assignments: those cost seconds of numba compile time.)
+        work_col = fail_col.copy()
+        work_row = fail_row.copy()
         size = maximum_matching(indptr, indices, lengths, values[probe], work_col, work_row)
         if size == n_rows:
             hi = probe
-            best_col[:] = work_col
-            best_row[:] = work_row
+            best_col, best_row = work_col, work_row
         else:
             lo = probe
-            fail_col[:] = work_col
-            fail_row[:] = work_row
+            fail_col, fail_row = work_col, work_row
         if hi == values.shape[0]:  # still galloping upwards
             step *= 2
             probe = min(lo + step, values.shape[0] - 1)

@@ -53,7 +53,9 @@ def sorted_pair_order(n_rows: int, rows: np.ndarray, cols: np.ndarray, lengths: 
     for r in range(n_rows):
         segment = order[indptr[r] : indptr[r + 1]]
         by_col = segment[np.argsort(cols[segment], kind="mergesort")]
-        order[indptr[r] : indptr[r + 1]] = by_col[np.argsort(lengths[by_col], kind="mergesort")]
+        by_length = by_col[np.argsort(lengths[by_col], kind="mergesort")]
+        for k in range(by_length.shape[0]):  # a loop, not a slice assignment (slow to compile)
+            order[indptr[r] + k] = by_length[k]
     return indptr, order
 
 
@@ -113,14 +115,17 @@ def square_up(
     for e in range(n_edges):
         if lengths[e] <= threshold:
             per_col[indices[e]] += 1
+    # Loops rather than slice assignments, which take seconds to compile under numba.
     new_indptr = np.empty(size + 1, dtype=np.int64)
-    new_indptr[: n_rows + 1] = indptr
+    for r in range(n_rows + 1):
+        new_indptr[r] = indptr[r]
     for c in range(n_cols):
         new_indptr[n_rows + c + 1] = new_indptr[n_rows + c] + 1 + per_col[c]
     new_indices = np.empty(new_indptr[-1], dtype=np.int64)
     new_lengths = np.full(new_indptr[-1], pad_length)
-    new_indices[:n_edges] = indices
-    new_lengths[:n_edges] = lengths
+    for e in range(n_edges):
+        new_indices[e] = indices[e]
+        new_lengths[e] = lengths[e]
     fill = new_indptr[n_rows:-1].copy()
     for c in range(n_cols):  # the target itself first: lowest index among equal lengths
         new_indices[fill[c]] = c
@@ -133,8 +138,8 @@ def square_up(
                 fill[c] += 1
     new_col_of_row = np.empty(size, dtype=np.int64)
     new_row_of_col = np.empty(size, dtype=np.int64)
-    new_col_of_row[:n_rows] = col_of_row
     for r in range(n_rows):
+        new_col_of_row[r] = col_of_row[r]
         new_row_of_col[n_cols + r] = n_rows + col_of_row[r]
     for c in range(n_cols):
         r = row_of_col[c]
