@@ -69,8 +69,14 @@ def _generator(rng: object) -> np.random.Generator:
         raise AssignmentError(f"rng must be a numpy Generator or a non-negative integer seed, got {rng!r}: {exc}") from None
 
 
-def _solve_dense(key: str, lengths: np.ndarray, squared: np.ndarray, rng: object) -> np.ndarray:
-    """Target index of every row of a dense problem with ``rows <= cols``."""
+def _solve_dense(
+    key: str, lengths: np.ndarray, squared: np.ndarray | None, generator: np.random.Generator | None
+) -> np.ndarray:
+    """Target index of every row of a dense problem with ``rows <= cols``.
+
+    ``squared`` (the squared lengths) is needed by ``msd2`` and ``mmd+msd2`` only,
+    ``generator`` by ``random`` only.
+    """
     if key == "mmd+msd2":
         return mmd_msd2_assignment(lengths, squared)
     if key == "mmdr/fast":
@@ -84,7 +90,7 @@ def _solve_dense(key: str, lengths: np.ndarray, squared: np.ndarray, rng: object
     if key == "greedy":
         return greedy_assignment(lengths)
     if key == "random":
-        return random_assignment(lengths, _generator(rng))
+        return random_assignment(lengths, generator)
     return _MMDR_SOLVERS[key[5:]](lengths)
 
 
@@ -142,11 +148,14 @@ def assign(
     a robot and the other robots get ``-1``. Ties are broken deterministically.
 
     Raises:
-        AssignmentError: (a ``ValueError``) for non-finite coordinates, arrays
-            that are not 2-D, different dimensions d, unknown method names.
+        AssignmentError: (a ``ValueError``) for non-finite coordinates or
+            coordinates above ``MAX_COORDINATE`` (1e150) in magnitude, arrays
+            that are not 2-D, different dimensions d, unknown method or
+            algorithm names, ``"random"`` without a valid ``rng``.
     """
     key = _method_key(method, algorithm)
     name = key[:4] if key.startswith("mmdr") else key
+    generator = _generator(rng) if key == "random" else None
     # Fast path for clean, non-empty float64 arrays (the simulator's case); anything else goes
     # through validation, which explains what is wrong.
     if (
@@ -181,12 +190,12 @@ def assign(
         )
         col_of_row, length_of_row = solver(np.ascontiguousarray(rows), np.ascontiguousarray(cols))
         return _result(col_of_row, length_of_row, transposed, n, m, name)
-    if key == "random" and rng is not None:  # needs no distance matrix
-        col_of_row = _generator(rng).permutation(cols.shape[0])[:n_rows]
+    if generator is not None:  # random: needs no distance matrix
+        col_of_row = generator.permutation(cols.shape[0])[:n_rows]
         length_of_row = np.sqrt(pair_squared_distances(rows, cols, np.arange(n_rows), col_of_row))
         return _result(col_of_row, length_of_row, transposed, n, m, name)
     lengths, squared = dense_distances(rows, cols)
-    col_of_row = _solve_dense(key, lengths, squared, rng)
+    col_of_row = _solve_dense(key, lengths, squared, None)
     return _result(col_of_row, lengths[np.arange(n_rows), col_of_row], transposed, n, m, name)
 
 
@@ -206,11 +215,14 @@ def assign_costs(
 
     Raises:
         AssignmentError: for NaN or negative costs, a matrix that is not 2-D,
-            unknown method names, or forbidden pairs that leave no complete
-            assignment (the message says how many robots could be served).
+            unknown method or algorithm names, ``"random"`` without a valid
+            ``rng``, finite costs whose squares overflow (msd2, mmd+msd2), or
+            forbidden pairs that leave no complete assignment (the message
+            says how many robots could be served).
     """
     key = _method_key(method, algorithm)
     name = key[:4] if key.startswith("mmdr") else key
+    generator = _generator(rng) if key == "random" else None
     matrix = as_costs(costs)
     n, m = matrix.shape
     if n == 0 or m == 0:
@@ -219,9 +231,9 @@ def assign_costs(
     lengths = np.ascontiguousarray(matrix.T) if transposed else matrix
     if not np.isfinite(lengths).all():
         _check_feasible(lengths, "targets" if transposed else "robots")
-    with np.errstate(over="ignore"):
-        squared = lengths * lengths
+    squared = None
     if key in ("msd2", "mmd+msd2"):
         check_squares(matrix, key)
-    col_of_row = _solve_dense(key, lengths, squared, rng)
+        squared = lengths * lengths
+    col_of_row = _solve_dense(key, lengths, squared, generator)
     return _result(col_of_row, lengths[np.arange(lengths.shape[0]), col_of_row], transposed, n, m, name)

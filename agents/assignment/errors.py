@@ -6,8 +6,9 @@ from __future__ import annotations
 class AssignmentError(ValueError):
     """An assignment problem that cannot be solved as given.
 
-    Raised for malformed input (NaN or infinite coordinates, NaN costs, wrong
-    array dimensions, mismatched point dimensions, unknown method names) and for
-    cost matrices whose forbidden pairs (``inf``) leave no complete assignment.
+    Raised for malformed input (NaN, infinite or overflowing coordinates, NaN
+    or negative costs, wrong array dimensions, mismatched point dimensions,
+    unknown method names, a missing or invalid ``rng``) and for cost matrices
+    whose forbidden pairs (``inf``) leave no complete assignment.
     It subclasses :class:`ValueError` so callers may catch either.
     """

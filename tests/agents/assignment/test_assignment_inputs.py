@@ -110,6 +110,8 @@ def test_unknown_names_list_the_valid_ones():
         assign(ROBOTS, TARGETS, "msd", algorithm="fast")
     with pytest.raises(AssignmentError, match="needs rng="):
         assign(ROBOTS, TARGETS, "random")
+    with pytest.raises(AssignmentError, match="needs rng="):
+        assign_costs(np.zeros((0, 3)), "random")  # even when there is nothing to assign
 
 
 def test_size_limits_of_the_reference_algorithms():
