@@ -72,6 +72,32 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--seed", type=int, default=2013, help="seed of the random instances (default: %(default)s)")
 
 
+class BenchmarkArgumentError(ValueError):
+    """A command-line value the benchmark cannot use; the message says which and why."""
+
+
+def _parse_sizes(text: str) -> list[int]:
+    """``"10,100"`` -> ``[10, 100]``; every size must be a positive integer."""
+    sizes = []
+    for part in (p.strip() for p in text.split(",")):
+        if not part:
+            continue
+        if not part.isdigit() or int(part) < 1:
+            raise BenchmarkArgumentError(f"--sizes: {part!r} is not a positive integer (e.g. --sizes 10,100,1000)")
+        sizes.append(int(part))
+    return sizes
+
+
+def _parse_methods(text: str) -> set[str]:
+    """Row labels chosen with ``--methods`` (empty: all); unknown labels are an error."""
+    wanted = {part.strip() for part in text.split(",") if part.strip()}
+    unknown = sorted(wanted - {label for label, *_ in RUNTIME_ROWS})
+    if unknown:
+        valid = ", ".join(repr(label) for label, *_ in RUNTIME_ROWS)
+        raise BenchmarkArgumentError(f"--methods: unknown row label(s) {', '.join(map(repr, unknown))}; valid: {valid}")
+    return wanted
+
+
 def _grid_instance(rng, n: int, side: int, d: int = 2):
     robots = rng.integers(0, side, (n, d)).astype(float)
     targets = rng.integers(0, side, (n, d)).astype(float)
@@ -107,8 +133,8 @@ def _runtime_table(args, console) -> None:
 
     from agents.assignment import assign
 
-    sizes = [int(s) for s in args.sizes.split(",") if s.strip()]
-    wanted = {s.strip() for s in args.methods.split(",") if s.strip()}
+    sizes = _parse_sizes(args.sizes)
+    wanted = _parse_methods(args.methods)
     rows = [row for row in RUNTIME_ROWS if not wanted or row[0] in wanted]
     table = Table(title="Median time of one assign() call in milliseconds "
                         "(n robots, n targets, random integer points on an n² x n² grid)")
@@ -196,6 +222,12 @@ def run(args: argparse.Namespace) -> int:
     from rich.console import Console
 
     console = Console()
+    try:
+        _parse_sizes(args.sizes)
+        _parse_methods(args.methods)
+    except BenchmarkArgumentError as exc:
+        Console(stderr=True).print(f"error: {exc}", style="red", markup=False)
+        return 2
     if args.sizes.strip():
         _runtime_table(args, console)
     if args.quality_instances > 0:

@@ -35,3 +35,12 @@ def test_time_limit_skips_with_a_prediction(capsys):
     assert bench.run(args) == 0
     out = " ".join(capsys.readouterr().out.split())  # undo the console's line wrapping
     assert "msd: predicted" in out and "over the 0.0001 s limit" in out
+
+
+def test_bad_arguments_are_explained(capsys):
+    assert bench.run(_args(sizes="10", quality_instances=0, methods="msd,hungarian")) == 2
+    err = " ".join(capsys.readouterr().err.split())
+    assert "--methods: unknown row label(s) 'hungarian'" in err and "'mmdr (fast)'" in err
+    assert bench.run(_args(sizes="10,1x0", quality_instances=0)) == 2
+    assert "--sizes: '1x0' is not a positive integer" in capsys.readouterr().err
+    assert bench.run(_args(sizes="0", quality_instances=0)) == 2
