@@ -44,7 +44,9 @@ def _greedy(lengths: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
 def greedy_assignment(lengths: np.ndarray) -> np.ndarray:
     """Repeatedly take the shortest remaining robot-target pair.
 
-    Ties go to the lower robot index, then the lower target index. When
+    Ties go to the lower row index, then the lower column index (rows are
+    the robots, or the targets when robots outnumber targets and the front
+    door transposes the problem). When
     forbidden pairs make the greedy choices a dead end, the few robots left
     over are served by augmenting paths (which may move some greedy choices).
     """

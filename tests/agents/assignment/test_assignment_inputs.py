@@ -134,6 +134,15 @@ def test_empty_problems_give_empty_results(method, n, m):
 
 
 @pytest.mark.parametrize("method", METHODS)
+def test_one_robot_one_target(method):
+    for algorithm in MMDR_ALGORITHMS if method == "mmdr" else (None,):
+        result = assign([[0.0, 0.0, 1.0]], [[3.0, 4.0, 1.0]], method, algorithm=algorithm, rng=0)
+        assert result.target_of.tolist() == [0] and result.distances.tolist() == [5.0]
+        assert result.makespan == 5.0 and result.total_squared == 25.0
+        assert assign_costs([[0.0]], method, algorithm=algorithm, rng=0).target_of.tolist() == [0]
+
+
+@pytest.mark.parametrize("method", METHODS)
 def test_rectangular_problems(method):
     rng = np.random.default_rng(3)
     robots, targets = rng.uniform(0, 10, (7, 2)), rng.uniform(0, 10, (4, 2))
