@@ -184,8 +184,10 @@ class Match:
                            seed=self.seed, cycles=state.cycle)
 
     def step(self) -> None:
-        """Simulate one cycle."""
+        """Simulate one cycle; a RuntimeError once the referee has called time."""
         state, referee, kin = self.state, self.referee, self.kinematics
+        if state.play_mode == _TIME_OVER:
+            raise RuntimeError(f"the match is over (time over after cycle {state.cycle}); no more cycles")
         self._sync_state()
         self.noise.draw()
 

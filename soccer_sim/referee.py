@@ -38,7 +38,8 @@ Decisions where the rules leave room:
   ball's centre lies on its axis and the catch succeeds when the centre-to-centre distance is
   at most ``catch_length`` (the width never excludes a ball on the axis). Goalkeeper and
   ball must both be inside the goalkeeper's own penalty area, the mode must be play on, and
-  ``catch_ban_cycles`` must have passed since the last judged attempt (successful or not).
+  ``catch_ban_cycles`` must have passed since the last attempt made with goalkeeper and ball
+  in the area (successful or not; requests outside the area are ignored and start no ban).
   A goalkeeper that kicks in a cycle cannot also catch in it. While holding, the goalkeeper
   (and the ball) is kept inside its penalty area; opponents are not kept away, and the
   held ball does not collide. Holding for ``goalie_hold_cycles`` cycles gives the opponents
@@ -337,7 +338,8 @@ class Referee:
             state.vel[rows][pushed] = 0.0
 
     def _half_time(self, state: WorldState) -> None:
-        """Swap ends: every position and velocity rotated by 180°, away kicks off."""
+        """Swap ends: every player position rotated by 180° about the centre spot; away kicks off
+        (the kick-off stops the ball and the players)."""
         self.events.add(state.cycle, EventKind.HALF_TIME, NO_TEAM, NO_PLAYER,
                         float(state.ball[0]), float(state.ball[1]), 0)
         state.half = 1
@@ -546,13 +548,13 @@ class Referee:
             return
         if state.cycle - self._last_catch_attempt[team] <= self.config.rules.catch_ban_cycles:
             return
-        self._last_catch_attempt[team] = state.cycle
         f = self.config.field
         direction = state.attack_direction(team)
         gx, gy = float(state.pos[row, 0]), float(state.pos[row, 1])
         bx, by = float(state.ball[0]), float(state.ball[1])
         if not (in_penalty_area(f, direction, gx, gy) and in_penalty_area(f, direction, bx, by)):
-            return
+            return  # not a catch situation: no attempt, no ban
+        self._last_catch_attempt[team] = state.cycle
         if math.hypot(bx - gx, by - gy) > self.config.rules.catch_length:
             return
         n = self._n

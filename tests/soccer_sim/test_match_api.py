@@ -118,6 +118,9 @@ def test_a_match_is_played_once_and_a_team_object_plays_one_side() -> None:
     match.run()
     with pytest.raises(RuntimeError, match="only once"):
         match.run()
+    assert match.state.play_mode == PlayMode.TIME_OVER
+    with pytest.raises(RuntimeError, match="match is over"):
+        match.step()
     team = ChaserTeam()
     with pytest.raises(ValueError, match="both sides"):
         Match(team, team)

@@ -74,6 +74,17 @@ def test_catch_ban_after_a_failed_attempt():
     assert ev.of_kind(EventKind.CATCH)[0][0] == 100 + ban + 1
 
 
+def test_requests_outside_the_penalty_area_start_no_ban():
+    # A team that asks to catch every cycle must still catch once the ball arrives.
+    ref, st, ev = keeper_world(ball=(-HL + PA + 3.0, 2.0))  # ball outside the area
+    catch(ref, st, HOME)
+    assert st.play_mode == PlayMode.PLAY_ON
+    step(ref, st)
+    st.ball[:] = (-47.5, 2.0)  # the next cycle the ball is within reach
+    catch(ref, st, HOME)
+    assert st.play_mode == PlayMode.GOALIE_HOLDS
+
+
 def test_no_catch_at_set_plays():
     ref, st, ev = keeper_world(mode=PlayMode.FREE_KICK, mode_team=AWAY)
     catch(ref, st, HOME)
