@@ -1,4 +1,4 @@
-"""A custom team in forty lines: hold a built-in formation, assign roles with MMD+MSD² every
+"""A custom team in a few lines: hold a built-in formation, assign roles with MMD+MSD² every
 cycle, send the nearest player to the ball, and kick at the opponents' goal.
 
 It plays a short match against the built-in ``chaser`` team and prints the result.

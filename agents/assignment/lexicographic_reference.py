@@ -31,6 +31,9 @@ from .errors import AssignmentError
 
 #: Largest number of targets :func:`subset_dp_assignment` accepts (memory ~ 2^m * n * 2 bytes).
 DP_MAX_TARGETS = 20
+#: Largest number of robot-target pairs :func:`bitvector_assignment` accepts. Its weights are
+#: n*m integers of up to n*m bits, so memory grows as (n*m)^2 / 16 bytes: about 0.6 GB here.
+BITVECTOR_MAX_PAIRS = 100_000
 #: Largest number of complete assignments :func:`brute_force_assignment` enumerates (8!).
 BRUTE_FORCE_MAX_ASSIGNMENTS = math.factorial(8)
 
@@ -38,6 +41,11 @@ BRUTE_FORCE_MAX_ASSIGNMENTS = math.factorial(8)
 def bitvector_assignment(costs: np.ndarray) -> np.ndarray:
     """Lexicographic bottleneck assignment via one exact power-of-two-weighted assignment."""
     n, m = costs.shape
+    if n * m > BITVECTOR_MAX_PAIRS:
+        raise AssignmentError(
+            f"algorithm 'bitvector' handles at most {BITVECTOR_MAX_PAIRS:,} robot-target pairs "
+            f"(its weights need about (n*m)^2/16 bytes), got {n} x {m}; use algorithm='fast'"
+        )
     flat = costs.ravel()
     finite = np.flatnonzero(np.isfinite(flat))
     order = finite[np.argsort(flat[finite], kind="mergesort")]

@@ -40,6 +40,16 @@ SIZE_LIMITS: dict[str, tuple[int, str]] = {
     "mmdr (dp)": (20, "subset dynamic programming needs 2^n states; limited to n <= 20"),
 }
 
+
+def _size_limits() -> dict[str, tuple[int, str]]:
+    """SIZE_LIMITS plus the bitvector algorithm's memory limit (imported only when running)."""
+    import math
+
+    from agents.assignment.lexicographic_reference import BITVECTOR_MAX_PAIRS
+
+    reason = f"bitvector weights need about (n*m)^2/16 bytes; limited to n*m <= {BITVECTOR_MAX_PAIRS:,}"
+    return {**SIZE_LIMITS, "mmdr (bitvector)": (math.isqrt(BITVECTOR_MAX_PAIRS), reason)}
+
 #: Growth exponent used to predict the next size's runtime from the previous one.
 GROWTH: dict[str, float] = {
     "mmd+msd2": 2.0,  # k-d tree candidate graph: a few tens of pairs per robot
@@ -148,12 +158,13 @@ def _runtime_table(args, console) -> None:
     warm = _grid_instance(rng, 6, 36)
     for _, method, algorithm in rows:
         assign(*warm, method=method, algorithm=algorithm, rng=0 if method == "random" else None)
+    size_limits = _size_limits()
     for label, method, algorithm in rows:
         cells = []
         previous: tuple[int, float] | None = None
         skipped_reason = None
         for n in sizes:
-            limit = SIZE_LIMITS.get(label)
+            limit = size_limits.get(label)
             if skipped_reason is None and limit and n > limit[0]:
                 skipped_reason = limit[1]
             if skipped_reason is None and label in DENSE_ROWS and 3 * 8 * n * n > DENSE_MEMORY_LIMIT:

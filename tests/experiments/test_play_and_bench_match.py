@@ -35,3 +35,14 @@ def test_bench_match_rejects_bad_arguments_with_a_message(capsys) -> None:
             main(["bench", "match", *bad])
         assert usage_error.value.code == 2
         assert "must be a positive integer" in capsys.readouterr().err
+
+
+def test_play_finds_a_team_module_in_the_working_directory(tmp_path, monkeypatch, capsys) -> None:
+    package = tmp_path / "my_local_teams"
+    package.mkdir()
+    (package / "__init__.py").write_text("")
+    (package / "squad.py").write_text("from soccer_sim.trivial_teams import ChaserTeam as Squad\n")
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr("sys.path", [p for p in __import__("sys").path if p not in ("", ".", str(tmp_path))])
+    assert main(["play", "my_local_teams.squad:Squad", "idle", "--cycles", "50"]) == 0
+    assert "my_local_teams.squad:Squad" in capsys.readouterr().out

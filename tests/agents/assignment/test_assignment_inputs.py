@@ -120,6 +120,8 @@ def test_size_limits_of_the_reference_algorithms():
         assign(rng.random((9, 2)), rng.random((9, 2)), "mmdr", algorithm="brute")
     with pytest.raises(AssignmentError, match="at most 20 targets"):
         assign(rng.random((3, 2)), rng.random((21, 2)), "mmdr", algorithm="dp")
+    with pytest.raises(AssignmentError, match="at most 100,000 robot-target pairs.*got 317 x 317"):
+        assign(rng.random((317, 2)), rng.random((317, 2)), "mmdr", algorithm="bitvector")
 
 
 @pytest.mark.parametrize("method", METHODS)
