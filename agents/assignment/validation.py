@@ -16,20 +16,29 @@ from .errors import AssignmentError
 MAX_COORDINATE = 1e150
 
 
+def _as_float_matrix(value: object, name: str, if_not_numeric: str, if_not_2d: str) -> np.ndarray:
+    """``value`` as a 2-D float64 array (any empty input becomes shape ``(0, 0)``); the two
+    texts say what ``name`` must be when it is not numeric / not two-dimensional."""
+    try:
+        array = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError) as exc:
+        raise AssignmentError(f"{name} {if_not_numeric}: {exc}") from None
+    if array.ndim != 2:
+        if array.size == 0:
+            return array.reshape(0, 0)
+        raise AssignmentError(f"{name} {if_not_2d}, got an array of shape {array.shape}")
+    return array
+
+
 def as_points(points: object, name: str) -> np.ndarray:
     """Return ``points`` as a C-contiguous float64 array of shape ``(count, d)``.
 
     An empty input (``[]`` or shape ``(0,)``) becomes shape ``(0, 0)``; its
     dimension is taken from the other point set by :func:`check_point_pair`.
     """
-    try:
-        array = np.asarray(points, dtype=np.float64)
-    except (TypeError, ValueError) as exc:
-        raise AssignmentError(f"{name} must be an array of numbers of shape (count, d): {exc}") from None
-    if array.ndim != 2:
-        if array.size == 0:
-            return array.reshape(0, 0)
-        raise AssignmentError(f"{name} must have shape (count, d), got an array of shape {array.shape}")
+    array = _as_float_matrix(
+        points, name, "must be an array of numbers of shape (count, d)", "must have shape (count, d)"
+    )
     if not np.isfinite(array).all():
         bad = np.argwhere(~np.isfinite(array))[0]
         raise AssignmentError(
@@ -66,14 +75,9 @@ def as_costs(costs: object) -> np.ndarray:
     as are negative costs (distances and travel costs cannot be negative, and
     the lexicographic methods order pairs by cost).
     """
-    try:
-        matrix = np.asarray(costs, dtype=np.float64)
-    except (TypeError, ValueError) as exc:
-        raise AssignmentError(f"costs must be a numeric matrix of shape (robots, targets): {exc}") from None
-    if matrix.ndim != 2:
-        if matrix.size == 0:
-            return matrix.reshape(0, 0)
-        raise AssignmentError(f"costs must be a 2-D matrix (robots, targets), got shape {matrix.shape}")
+    matrix = _as_float_matrix(
+        costs, "costs", "must be a numeric matrix of shape (robots, targets)", "must be a 2-D matrix (robots, targets)"
+    )
     if matrix.size and not (matrix >= 0).all():
         bad_mask = ~(matrix >= 0)
         i, j = np.argwhere(bad_mask)[0]
