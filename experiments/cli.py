@@ -19,6 +19,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "experiments.commands.play",
     "experiments.commands.formation",
     "experiments.commands.bench",
+    "experiments.commands.experiment",
 )
 
 
