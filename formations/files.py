@@ -16,8 +16,9 @@ the same ``name``/``description``/``roles``/``samples`` members::
      "description": "...", "formations": {"normal": {...}, "attack": {...}, ...}}
 
 Coordinates are metres in the team-relative frame (:mod:`formations.field`).
-:func:`load` also reads helios-base / agent2d JSON formation files (see
-:mod:`formations.helios`). Every problem is reported as a
+:func:`load` also reads helios-base / agent2d formation files, in their JSON
+layout (:mod:`formations.helios`) or agent2d's text layouts
+(:mod:`formations.helios_text`). Every problem is reported as a
 :class:`~formations.errors.FormationError` naming the file and the sample,
 role or formation at fault; a missing or unreadable file raises ``OSError``.
 """
@@ -51,23 +52,52 @@ _SAMPLE_KEYS = {"ball", "positions"}
 
 
 # ----------------------------------------------------------------- reading
-def read_json(path: str | os.PathLike[str]) -> Any:
-    """Parse the JSON file at *path*; FormationError (naming the file) if it is not JSON."""
-    text = Path(path).read_text(encoding="utf-8")
+def read_text(path: str | os.PathLike[str]) -> str:
+    """The text of the file at *path*; FormationError (naming the file) if it is not UTF-8 text."""
+    data = Path(path).read_bytes()
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError as error:
+        raise FormationError(str(path), f"not a text file (byte {error.start} is not UTF-8)") from None
+
+
+def parse_json(text: str, source: str) -> Any:
+    """Parse JSON *text* read from *source*; FormationError (naming it) if it is not JSON."""
     try:
         return json.loads(text)
     except json.JSONDecodeError as error:
         raise FormationError(
-            str(path), f"invalid JSON: {error.msg} (line {error.lineno}, column {error.colno})"
+            source, f"invalid JSON: {error.msg} (line {error.lineno}, column {error.colno})"
         ) from None
 
 
+def read_json(path: str | os.PathLike[str]) -> Any:
+    """Parse the JSON file at *path*; FormationError (naming the file) if it is not JSON."""
+    return parse_json(read_text(path), str(path))
+
+
+def looks_like_json(text: str) -> bool:
+    """True if *text* is empty or starts (after white space) like a JSON object or list."""
+    stripped = text.lstrip()
+    return not stripped or stripped[0] in "{["
+
+
 def read_any(path: str | os.PathLike[str]) -> Formation | FormationSet:
-    """Read a formation (our layout or helios-base's) or a formation set from *path*."""
+    """Read a formation or a formation set from *path*.
+
+    The layout is recognised by the content, whatever the file is called: our
+    JSON layouts, helios-base's JSON layout, or agent2d's text layouts
+    (``Formation DelaunayTriangulation 2``, ``Formation Static``, ...; see
+    :mod:`formations.helios_text`).
+    """
     from formations.helios import formation_from_helios, is_helios_layout
+    from formations.helios_text import formation_from_helios_text
 
     source = str(path)
-    document = read_json(path)
+    text = read_text(path)
+    if not looks_like_json(text):
+        return formation_from_helios_text(text, source, name=Path(path).stem)
+    document = parse_json(text, source)
     if not isinstance(document, dict):
         raise FormationError(source, f"expected a JSON object at the top level, got {_json_type(document)}")
     if is_helios_layout(document):

@@ -26,15 +26,13 @@ import numpy as np
 
 from formations.errors import FormationError
 from formations.formation import Formation
+from formations.helios_roles import HELIOS_KINDS, ROLE_COUNT, partners_from_pairs, server_to_team_frame
 from formations.roles import Role
 
 HELIOS_METHOD = "DelaunayTriangulation"
 """The only helios formation method whose samples mean what ours mean."""
 
-HELIOS_KINDS = {"G": "goalkeeper", "DF": "defender", "MF": "midfielder", "FW": "forward"}
-"""helios role type -> our role kind."""
-
-HELIOS_ROLE_COUNT = 11
+HELIOS_ROLE_COUNT = ROLE_COUNT
 
 _ROLE_KEYS = {"number", "name", "type", "side", "pair"}
 
@@ -57,9 +55,7 @@ def formation_from_helios(document: dict[str, Any], source: str, *, name: str = 
         raise FormationError(source, "missing 'data' list")
     roles = _parse_roles(role_items, source)
     balls, positions = _parse_data(data_items, source)
-    # Server frame (y to the right) -> team-relative frame (y to the left).
-    balls[:, 1] *= -1.0
-    positions[:, :, 1] *= -1.0
+    server_to_team_frame(balls, positions)
     return Formation(
         roles,
         balls,
@@ -98,22 +94,9 @@ def _parse_roles(items: list[Any], source: str) -> list[Role]:
     missing = sorted(set(range(1, HELIOS_ROLE_COUNT + 1)) - set(entries))
     if missing:
         raise FormationError(source, f"roles {missing} are missing (a helios formation has roles 1..11)")
-    partners: dict[int, int] = {}
-    for number, item in entries.items():
-        pair = item["pair"]
-        if pair <= 0:
-            continue
-        where = f"role {number}"
-        if pair == number:
-            raise FormationError(source, "a role cannot be paired with itself", where)
-        if entries[pair]["pair"] not in (-1, number):
-            raise FormationError(
-                source, f"pairs with role {pair}, but role {pair} has pair {entries[pair]['pair']}", where
-            )
-        if pair in partners and partners[pair] != number:
-            raise FormationError(source, f"role {pair} is paired with both {partners[pair]} and {number}", where)
-        partners[number] = pair
-        partners[pair] = number
+    partners = partners_from_pairs(
+        {number: item["pair"] for number, item in entries.items()}, source, lambda number: f"role {number}"
+    )
     return [
         Role(n, entries[n]["name"], HELIOS_KINDS[entries[n]["type"]], partners.get(n))
         for n in range(1, HELIOS_ROLE_COUNT + 1)

@@ -1,0 +1,118 @@
+"""Roles of agent2d / helios-base formations: kinds from role names, partners from pairs.
+
+Both helios layouts (librcsc's JSON files and agent2d's text files) give every
+role a *pair* (the text layout calls it the symmetry number): 0 for a central
+role, -1 for a side role that another role mirrors, and n > 0 for the mirror of
+role n. Both become :attr:`~formations.roles.Role.partner` links that name each
+other.
+
+The text layouts (except version 3) give no role type, only a name such as
+``CenterBack``; :func:`kind_from_name` maps the names agent2d-based teams use
+onto our kinds, and :func:`kind_from_depth` places any other name (agent2d's
+``Sample``, for instance) by where the role stands.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Mapping
+
+import numpy as np
+
+from formations.errors import FormationError
+from formations.field import STANDARD_FIELD
+
+ROLE_COUNT = 11
+"""agent2d formations always have roles 1..11."""
+
+HELIOS_KINDS = {"G": "goalkeeper", "DF": "defender", "MF": "midfielder", "FW": "forward"}
+"""helios role type (JSON ``type``, text version 3 type column) -> our role kind."""
+
+NAME_KINDS: tuple[tuple[str, str], ...] = (
+    # Checked in order on the lower-case name with spaces, '-' and '_' removed;
+    # the first suffix that matches wins (so "HalfBack" is a defender).
+    ("goalie", "goalkeeper"),
+    ("goalkeeper", "goalkeeper"),
+    ("keeper", "goalkeeper"),
+    ("back", "defender"),
+    ("defender", "defender"),
+    ("defense", "defender"),
+    ("defence", "defender"),
+    ("sweeper", "defender"),
+    ("stopper", "defender"),
+    ("libero", "defender"),
+    ("half", "midfielder"),
+    ("midfielder", "midfielder"),
+    ("midfield", "midfielder"),
+    ("mid", "midfielder"),
+    ("volante", "midfielder"),
+    ("forward", "forward"),
+    ("striker", "forward"),
+    ("attacker", "forward"),
+    ("winger", "forward"),
+    ("wing", "forward"),
+)
+"""Name suffix -> kind: Goalie, *Back, *Half, *Forward and the other names of the table."""
+
+DEPTH_THIRD = STANDARD_FIELD.length / 6.0
+"""A role of unknown name whose mean x is below -this (m) is a defender, above +this a
+forward, and a midfielder in between (the field's thirds)."""
+
+
+def kind_from_name(name: str) -> str | None:
+    """Our kind for an agent2d role name (``CenterBack`` -> defender), or None if unknown."""
+    key = re.sub(r"[\s_\-]+", "", name).lower()
+    for suffix, kind in NAME_KINDS:
+        if key.endswith(suffix):
+            return kind
+    return None
+
+
+def kind_from_depth(mean_x: float) -> str:
+    """Kind of a role of unknown name from its mean x over the samples (metres, our frame)."""
+    if mean_x < -DEPTH_THIRD:
+        return "defender"
+    if mean_x > DEPTH_THIRD:
+        return "forward"
+    return "midfielder"
+
+
+def partners_from_pairs(
+    pairs: Mapping[int, int], source: str, where: Callable[[int], str], field: str = "pair"
+) -> dict[int, int]:
+    """Role number -> partner number from helios pairs (0 central, -1 mirrored, n mirror of n).
+
+    *pairs* maps every role number to its pair value, already checked to be -1, 0
+    or a role number; *where* names a role in error messages and *field* is the
+    name of the pair column. Raises :class:`FormationError` for a role paired
+    with itself, a pair that the other role contradicts, or two roles mirroring
+    the same role.
+    """
+    partners: dict[int, int] = {}
+    for number, pair in pairs.items():
+        if pair <= 0:
+            continue
+        if pair == number:
+            raise FormationError(source, "a role cannot be paired with itself", where(number))
+        other = pairs.get(pair)
+        if other is None:
+            raise FormationError(source, f"{field} {pair} names no role of this formation", where(number))
+        if other not in (-1, number):
+            raise FormationError(source, f"pairs with role {pair}, but role {pair} has {field} {other}", where(number))
+        if pair in partners and partners[pair] != number:
+            raise FormationError(source, f"role {pair} is paired with both {partners[pair]} and {number}", where(number))
+        partners[number] = pair
+        partners[pair] = number
+    return partners
+
+
+def server_to_team_frame(balls: np.ndarray, positions: np.ndarray) -> None:
+    """Convert helios coordinates to ours in place.
+
+    helios formations are written in the soccer server's frame for the team
+    attacking towards +x, whose y axis points to the *right* of a player
+    facing the opponent goal; ours points to the left, so y is negated and x
+    kept (a helios left back at y < 0 stays a left back at y > 0 here).
+    """
+    balls[:, 1] *= -1.0
+    positions[..., 1] *= -1.0

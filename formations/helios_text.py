@@ -1,0 +1,425 @@
+"""Import of agent2d's text formation layouts (the ``formations-dt/*.conf`` files).
+
+agent2d-based teams (helios-base and the teams built on it) ship their
+formations as text, recognised by the first line (blank lines and lines
+starting with ``#`` or ``//`` are skipped everywhere)::
+
+    Formation DelaunayTriangulation 2
+    Begin Roles
+    1 Goalie 0                   number, name, symmetry
+    2 CenterBack -1
+    3 CenterBack 2
+    ...
+    End Roles
+    Begin Samples 2 115          layout version of the samples, sample count
+    ----- 0 -----
+    Ball 54.5 -36
+    1 -50 0                      number, x, y: one line per player 1..11
+    ...
+    End Samples
+    End
+
+Other layouts read here:
+
+* ``Formation DelaunayTriangulation`` (no version, or ``1``): one line of
+  eleven ``name symmetry`` pairs, then one line per sample of 24 numbers
+  (ball x y, then x y of players 1..11), then ``End``.
+* ``Formation DelaunayTriangulation 3``: role lines ``number type name
+  symmetry marker setplay_marker`` where the type (G, DF, MF, FW) gives the
+  kind; the samples as in version 2.
+* ``Formation Static``: one line ``number name x y`` per player; the same
+  positions for every ball position (agent2d's ``before-kick-off.conf``).
+  It becomes a formation whose four samples, at the field's corners, all hold
+  those positions, so every ball position gives them exactly.
+
+A ``Begin Constraints`` block after the samples (edges helios's editor forces
+into its triangulation) is skipped: our triangulation is plain Delaunay.
+
+The symmetry number is agent2d's pair: 0 a central role, -1 a side role that
+another mirrors, n > 0 the mirror of role n (see :mod:`formations.helios_roles`).
+Coordinates are the soccer server's and are converted to ours by negating y,
+exactly as for helios's JSON files. Every problem is a
+:class:`~formations.errors.FormationError` naming the file and the line.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from formations.errors import FormationError
+from formations.field import STANDARD_FIELD
+from formations.formation import Formation
+from formations.helios_roles import (
+    HELIOS_KINDS,
+    ROLE_COUNT,
+    kind_from_depth,
+    kind_from_name,
+    partners_from_pairs,
+    server_to_team_frame,
+)
+from formations.roles import Role
+
+DT_METHOD = "DelaunayTriangulation"
+STATIC_METHOD = "Static"
+DT_VERSIONS = (1, 2, 3)
+"""Versions of the ``Formation DelaunayTriangulation`` layout this module reads."""
+HEADER_EXAMPLES = "'Formation DelaunayTriangulation 2' or 'Formation Static'"
+
+STATIC_BALLS = np.array(
+    [
+        (-STANDARD_FIELD.half_length, -STANDARD_FIELD.half_width),
+        (-STANDARD_FIELD.half_length, STANDARD_FIELD.half_width),
+        (STANDARD_FIELD.half_length, -STANDARD_FIELD.half_width),
+        (STANDARD_FIELD.half_length, STANDARD_FIELD.half_width),
+    ]
+)
+"""Ball positions of the samples a static formation becomes (the field's corners)."""
+
+_NUMBER = re.compile(r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?")
+_INTEGER = re.compile(r"[+-]?\d+")
+_SAMPLE_HEADER = re.compile(r"-+\s*(\S+)\s*-+")
+_ALL_ROLES = range(1, ROLE_COUNT + 1)
+
+
+def is_helios_text(text: str) -> bool:
+    """True if the first meaningful line of *text* is an agent2d ``Formation ...`` header."""
+    for line in _content_lines(text):
+        return line.tokens[0] == "Formation"
+    return False
+
+
+def formation_from_helios_text(text: str, source: str, *, name: str = "") -> Formation:
+    """Parse agent2d's text formation *text* (read from *source*) into a :class:`Formation`."""
+    reader = _Reader(text, source)
+    header = reader.next("the header line (" + HEADER_EXAMPLES + ")")
+    method, version = _parse_header(reader, header)
+    if method == STATIC_METHOD:
+        parsed = _parse_static(reader)
+        layout = "Formation Static"
+    else:
+        parsed = _parse_dt_v1(reader) if version == 1 else _parse_dt(reader, version)
+        layout = f"Formation {DT_METHOD} {version}"
+    return _build(parsed, source, name, f"imported from agent2d formation {source} ({layout})")
+
+
+# ----------------------------------------------------------------- lines
+@dataclass(frozen=True)
+class _Line:
+    number: int
+    """1-based line number in the file."""
+    text: str
+    tokens: list[str]
+
+
+def _content_lines(text: str) -> list[_Line]:
+    lines = []
+    for number, raw in enumerate(text.splitlines(), start=1):
+        stripped = raw.strip()
+        if not stripped or stripped.startswith("#") or stripped.startswith("//"):
+            continue
+        lines.append(_Line(number, stripped, stripped.split()))
+    return lines
+
+
+class _Reader:
+    """The meaningful lines of a file, read one at a time; errors name the line."""
+
+    def __init__(self, text: str, source: str) -> None:
+        self.source = source
+        self.lines = _content_lines(text)
+        self.last_number = max(len(text.splitlines()), 1)
+        self.index = 0
+
+    def peek(self) -> _Line | None:
+        return self.lines[self.index] if self.index < len(self.lines) else None
+
+    def next(self, expected: str) -> _Line:
+        line = self.peek()
+        if line is None:
+            raise FormationError(self.source, f"the file ends where {expected} was expected", f"line {self.last_number}")
+        self.index += 1
+        return line
+
+    def error(self, line: _Line | None, problem: str) -> FormationError:
+        number = line.number if line is not None else self.last_number
+        return FormationError(self.source, problem, f"line {number}")
+
+    def number(self, line: _Line, token: str, what: str) -> float:
+        if not _NUMBER.fullmatch(token):
+            raise self.error(line, f"{token!r} is not a number ({what})")
+        return float(token)
+
+    def integer(self, line: _Line, token: str, what: str) -> int:
+        if not _INTEGER.fullmatch(token):
+            raise self.error(line, f"{token!r} is not an integer ({what})")
+        return int(token)
+
+    def role_number(self, line: _Line, token: str, what: str) -> int:
+        number = self.integer(line, token, what)
+        if number not in _ALL_ROLES:
+            raise self.error(line, f"{what} {number} is out of range (agent2d numbers players 1..{ROLE_COUNT})")
+        return number
+
+
+def _is_tag(line: _Line | None, *words: str) -> bool:
+    return line is not None and line.tokens[: len(words)] == list(words)
+
+
+# ----------------------------------------------------------------- parsing
+@dataclass
+class _Parsed:
+    """What a text layout says, before conversion to our frame and roles."""
+
+    names: dict[int, str] = field(default_factory=dict)
+    pairs: dict[int, int] = field(default_factory=dict)
+    types: dict[int, str] = field(default_factory=dict)
+    role_lines: dict[int, int] = field(default_factory=dict)
+    balls: list[tuple[float, float]] = field(default_factory=list)
+    positions: list[np.ndarray] = field(default_factory=list)
+    sample_lines: list[int] = field(default_factory=list)
+    static: bool = False
+
+
+def _parse_header(reader: _Reader, line: _Line) -> tuple[str, int]:
+    tokens = line.tokens
+    if tokens[0] != "Formation":
+        raise reader.error(
+            line, f"unknown layout header {line.text[:60]!r}: expected a JSON formation or an agent2d header "
+            f"such as {HEADER_EXAMPLES}"
+        )
+    if len(tokens) < 2:
+        raise reader.error(line, f"the header names no formation method (expected {HEADER_EXAMPLES})")
+    if len(tokens) > 3:
+        raise reader.error(line, f"unexpected text after the header: {' '.join(tokens[3:])!r}")
+    method = tokens[1]
+    version = reader.integer(line, tokens[2], "layout version") if len(tokens) == 3 else None
+    if method == STATIC_METHOD:
+        return method, version or 1
+    if method != DT_METHOD:
+        raise reader.error(
+            line, f"formation method {method!r} is not supported: only {DT_METHOD} and {STATIC_METHOD} "
+            "formations are samples of positions per ball position"
+        )
+    version = 1 if version in (None, 0) else version
+    if version not in DT_VERSIONS:
+        raise reader.error(line, f"{DT_METHOD} layout version {version} is not supported (versions 1, 2 and 3 are)")
+    return method, version
+
+
+def _parse_dt(reader: _Reader, version: int) -> _Parsed:
+    parsed = _Parsed()
+    _parse_roles_block(reader, parsed, version)
+    _parse_samples_block(reader, parsed)
+    _parse_trailer(reader)
+    return parsed
+
+
+def _parse_roles_block(reader: _Reader, parsed: _Parsed, version: int) -> None:
+    begin = reader.next("'Begin Roles'")
+    if not _is_tag(begin, "Begin", "Roles") or len(begin.tokens) != 2:
+        raise reader.error(begin, f"expected 'Begin Roles', found {begin.text!r}")
+    columns = "number name symmetry" if version == 2 else "number type name symmetry marker setplay_marker"
+    while True:
+        line = reader.next("a role line or 'End Roles'")
+        if _is_tag(line, "End", "Roles"):
+            break
+        if _is_tag(line, "Begin", "Samples"):
+            raise reader.error(line, f"'End Roles' is missing before 'Begin Samples' (roles begin on line {begin.number})")
+        if len(line.tokens) != len(columns.split()):
+            raise reader.error(line, f"a role line is '{columns}', found {line.text!r}")
+        if version == 2:
+            number_token, role_name, pair_token = line.tokens
+        else:
+            number_token, role_type, role_name, pair_token = line.tokens[:4]
+        number = reader.role_number(line, number_token, "role number")
+        if number in parsed.names:
+            raise reader.error(line, f"role {number} is declared twice (first on line {parsed.role_lines[number]})")
+        if version == 3:
+            if role_type not in HELIOS_KINDS:
+                raise reader.error(line, f"role type {role_type!r} of role {number} is not one of {', '.join(HELIOS_KINDS)}")
+            parsed.types[number] = HELIOS_KINDS[role_type]
+        parsed.pairs[number] = _pair(reader, line, pair_token, number)
+        parsed.names[number] = role_name
+        parsed.role_lines[number] = line.number
+    missing = sorted(set(_ALL_ROLES) - set(parsed.names))
+    if missing:
+        raise reader.error(line, f"roles {missing} are missing (an agent2d formation declares roles 1..{ROLE_COUNT})")
+
+
+def _pair(reader: _Reader, line: _Line, token: str, number: int) -> int:
+    pair = reader.integer(line, token, f"symmetry number of role {number}")
+    if not -1 <= pair <= ROLE_COUNT:
+        raise reader.error(line, f"symmetry number {pair} of role {number} must be -1, 0 or a role number 1..{ROLE_COUNT}")
+    return pair
+
+
+def _parse_samples_block(reader: _Reader, parsed: _Parsed) -> None:
+    begin = reader.next("'Begin Samples 2 N'")
+    if not _is_tag(begin, "Begin", "Samples") or len(begin.tokens) != 4:
+        raise reader.error(begin, f"expected 'Begin Samples 2 N' (N the number of samples), found {begin.text!r}")
+    sample_version = reader.integer(begin, begin.tokens[2], "sample layout version")
+    if sample_version != 2:
+        raise reader.error(begin, f"sample layout version {sample_version} is not supported (version 2 is)")
+    count = reader.integer(begin, begin.tokens[3], "number of samples")
+    if count < 0:
+        raise reader.error(begin, f"the number of samples must not be negative, got {count}")
+    for k in range(count):
+        line = reader.next(f"'----- {k} -----' (sample {k} of the {count} announced on line {begin.number})")
+        if _is_tag(line, "End", "Samples"):
+            raise reader.error(line, f"only {k} samples precede 'End Samples', but line {begin.number} announces {count}")
+        _parse_sample(reader, parsed, line, k)
+    after = reader.peek()
+    if after is not None and _SAMPLE_HEADER.fullmatch(after.text):
+        raise reader.error(after, f"more samples than the {count} announced on line {begin.number}")
+    if _is_tag(after, "End", "Samples"):
+        reader.next("'End Samples'")
+
+
+def _parse_sample(reader: _Reader, parsed: _Parsed, header: _Line, k: int) -> None:
+    match = _SAMPLE_HEADER.fullmatch(header.text)
+    if match is None:
+        raise reader.error(header, f"expected the sample header '----- {k} -----', found {header.text!r}")
+    index = reader.integer(header, match.group(1), "sample index")
+    if index != k:
+        raise reader.error(header, f"sample header says {index}, expected {k} (samples are numbered from 0 in order)")
+    ball = reader.next(f"the 'Ball x y' line of sample {k}")
+    if ball.tokens[0] != "Ball" or len(ball.tokens) != 3:
+        raise reader.error(ball, f"expected 'Ball x y' for sample {k}, found {ball.text!r}")
+    bx = reader.number(ball, ball.tokens[1], f"ball x of sample {k}")
+    by = reader.number(ball, ball.tokens[2], f"ball y of sample {k}")
+    positions = np.full((ROLE_COUNT, 2), np.nan)
+    seen: dict[int, int] = {}
+    while (line := reader.peek()) is not None and _INTEGER.fullmatch(line.tokens[0]):
+        reader.next("a player line")
+        if len(line.tokens) != 3:
+            raise reader.error(line, f"a player line is 'number x y', found {line.text!r} (sample {k})")
+        number = reader.role_number(line, line.tokens[0], "player number")
+        if number in seen:
+            raise reader.error(line, f"player {number} is given twice in sample {k} (also on line {seen[number]})")
+        seen[number] = line.number
+        positions[number - 1] = (
+            reader.number(line, line.tokens[1], f"x of player {number} in sample {k}"),
+            reader.number(line, line.tokens[2], f"y of player {number} in sample {k}"),
+        )
+    missing = sorted(set(_ALL_ROLES) - set(seen))
+    if missing:
+        found = f"found {line.text!r}" if line is not None else "the file ends"
+        raise reader.error(
+            line, f"sample {k} (line {header.number}) has no position for player(s) {missing}: {found} instead"
+        )
+    parsed.balls.append((bx, by))
+    parsed.positions.append(positions)
+    parsed.sample_lines.append(header.number)
+
+
+def _parse_trailer(reader: _Reader) -> None:
+    """Skip an optional constraints block and the closing 'End'; nothing may follow."""
+    line = reader.peek()
+    if _is_tag(line, "Begin", "Constraints"):
+        reader.next("'Begin Constraints'")
+        while not _is_tag(reader.next(f"'End Constraints' (constraints begin on line {line.number})"), "End", "Constraints"):
+            pass
+        line = reader.peek()
+    if line is not None and line.tokens == ["End"]:
+        reader.next("'End'")
+        line = reader.peek()
+    if line is not None:
+        raise reader.error(line, f"unexpected line after the samples: {line.text!r}")
+
+
+def _parse_dt_v1(reader: _Reader) -> _Parsed:
+    parsed = _Parsed()
+    roles = reader.next("the role line (11 'name symmetry' pairs)")
+    if len(roles.tokens) != 2 * ROLE_COUNT:
+        raise reader.error(roles, f"the role line holds 11 'name symmetry' pairs (22 fields), found {len(roles.tokens)}")
+    for number in _ALL_ROLES:
+        parsed.names[number] = roles.tokens[2 * number - 2]
+        parsed.pairs[number] = _pair(reader, roles, roles.tokens[2 * number - 1], number)
+        parsed.role_lines[number] = roles.number
+    fields = 2 + 2 * ROLE_COUNT
+    while (line := reader.peek()) is not None and line.tokens != ["End"]:
+        reader.next("a sample line")
+        k = len(parsed.balls)
+        if len(line.tokens) != fields:
+            raise reader.error(
+                line, f"sample {k} has {len(line.tokens)} numbers, expected {fields} (ball x y, then x y of players 1..11)"
+            )
+        values = [reader.number(line, token, _v1_field(i, k)) for i, token in enumerate(line.tokens)]
+        parsed.balls.append((values[0], values[1]))
+        parsed.positions.append(np.array(values[2:]).reshape(ROLE_COUNT, 2))
+        parsed.sample_lines.append(line.number)
+    if line is not None:
+        reader.next("'End'")
+        _parse_trailer(reader)
+    return parsed
+
+
+def _v1_field(i: int, k: int) -> str:
+    axis = "xy"[i % 2]
+    return f"ball {axis} of sample {k}" if i < 2 else f"{axis} of player {i // 2} in sample {k}"
+
+
+def _parse_static(reader: _Reader) -> _Parsed:
+    parsed = _Parsed(static=True)
+    positions = np.full((ROLE_COUNT, 2), np.nan)
+    while (line := reader.peek()) is not None and line.tokens != ["End"]:
+        reader.next("a player line")
+        if len(line.tokens) != 4:
+            raise reader.error(line, f"a static formation line is 'number name x y', found {line.text!r}")
+        number = reader.role_number(line, line.tokens[0], "player number")
+        if number in parsed.names:
+            raise reader.error(line, f"player {number} is given twice (also on line {parsed.role_lines[number]})")
+        parsed.names[number] = line.tokens[1]
+        parsed.pairs[number] = 0
+        parsed.role_lines[number] = line.number
+        positions[number - 1] = (
+            reader.number(line, line.tokens[2], f"x of player {number}"),
+            reader.number(line, line.tokens[3], f"y of player {number}"),
+        )
+    missing = sorted(set(_ALL_ROLES) - set(parsed.names))
+    if missing:
+        raise reader.error(line, f"players {missing} have no position (a static formation lists players 1..{ROLE_COUNT})")
+    if line is not None:
+        reader.next("'End'")
+        _parse_trailer(reader)
+    for ball in STATIC_BALLS:
+        parsed.balls.append((float(ball[0]), float(ball[1])))  # the corners: the same in either frame
+        parsed.positions.append(positions)
+        parsed.sample_lines.append(min(parsed.role_lines.values()))
+    return parsed
+
+
+# ----------------------------------------------------------------- building
+def _build(parsed: _Parsed, source: str, name: str, description: str) -> Formation:
+    balls = np.array(parsed.balls, dtype=np.float64).reshape(-1, 2)
+    positions = np.array(parsed.positions, dtype=np.float64).reshape(-1, ROLE_COUNT, 2)
+    server_to_team_frame(balls, positions)
+    partners = partners_from_pairs(
+        parsed.pairs, source, lambda n: f"line {parsed.role_lines[n]}, role {n}", field="symmetry number"
+    )
+    roles = []
+    for number in _ALL_ROLES:
+        role_name = parsed.names[number]
+        kind = parsed.types.get(number) or kind_from_name(role_name)
+        if kind is None:
+            kind = kind_from_depth(float(positions[:, number - 1, 0].mean())) if len(positions) else "midfielder"
+        roles.append(Role(number, role_name, kind, partners.get(number)))
+    try:
+        return Formation(roles, balls, positions, name=name, description=description, source=source)
+    except FormationError as error:
+        raise _locate(error, parsed) from None
+
+
+def _locate(error: FormationError, parsed: _Parsed) -> FormationError:
+    """Prefix the line of the sample (or, for a static formation, the role) an error names."""
+    match = re.match(r"sample (\d+)(?:, role (\d+))?", error.where or "")
+    if match is None:
+        return error
+    if parsed.static and match.group(2):
+        line = parsed.role_lines[int(match.group(2))]
+        return FormationError(error.source, error.problem, f"line {line}, role {match.group(2)}")
+    line = parsed.sample_lines[int(match.group(1))]
+    return FormationError(error.source, error.problem, f"line {line}, {error.where}")
