@@ -18,6 +18,10 @@ from dataclasses import dataclass, fields
 from dataclasses import field as default_of
 
 
+BODY_BALL_CONTACTS = ("rcssserver", "rigid")
+"""The values of :attr:`PhysicsConfig.body_ball_contact`."""
+
+
 class ConfigError(ValueError):
     """A configuration value is impossible (negative size, goal wider than the field, ...)."""
 
@@ -103,8 +107,21 @@ class PhysicsConfig:
     ball_radius: float = 0.085
     player_speed_max: float = 1.05
     """Largest player speed (m/cycle)."""
-    player_accel_max: float = 1.0
-    """Largest dash acceleration with full stamina (m/cycle²)."""
+    dash_power_max: float = 100.0
+    """Largest dash power (rcssserver ``maxpower``); stamina is paid in power units."""
+    dash_power_rate: float = 0.006
+    """Acceleration per unit of dash power at full effort (m/cycle² per power unit;
+    rcssserver ``dash_power_rate``): a full-power dash accelerates by 0.6 m/cycle²."""
+    side_dash_rate: float = 0.4
+    """Power fraction of a dash at 90° to the player's direction of motion (rcssserver 17
+    ``side_dash_rate``; see :mod:`soccer_sim.kinematics` for an orientation-less robot)."""
+    back_dash_rate: float = 0.7
+    """Power fraction of a dash straight against the player's direction of motion
+    (rcssserver 17 ``back_dash_rate``)."""
+    dash_heading_speed: float = 0.2
+    """Speed (m/cycle) from which a moving robot's direction of motion counts fully as its
+    heading for the side/back dash rates; below it the rates blend linearly towards 1 (a
+    robot at rest dashes equally well in every direction). No rcssserver counterpart."""
     player_decay: float = 0.4
     """Fraction of a player's velocity kept from one cycle to the next."""
     ball_decay: float = 0.94
@@ -112,7 +129,13 @@ class PhysicsConfig:
     ball_speed_max: float = 3.0
     """Largest ball speed (m/cycle)."""
     kick_speed_max: float = 2.7
-    """Largest velocity change one kick can give the ball (m/cycle), before effectiveness."""
+    """Largest velocity change the kicks of one cycle can give the ball together (m/cycle):
+    each kick is clipped to it before effectiveness, and so is their sum (rcssserver
+    ``ball_accel_max``: all kicks on the ball in a cycle add into one acceleration that is
+    capped)."""
+    cap_summed_kicks: bool = True
+    """Cap the sum of a cycle's kicks at ``kick_speed_max`` (rcssserver). False caps each kick
+    alone, so two kickers can exceed the limit (the simulator's behaviour before 0.2)."""
     kickable_margin: float = 0.7
     """The ball is kickable when its surface is within this distance of the player's surface (m)."""
     kick_distance_penalty: float = 0.25
@@ -135,6 +158,16 @@ class PhysicsConfig:
     ball_restitution: float = 0.8
     """Bounciness of the ball; goal posts are perfectly elastic, so the ball keeps this fraction
     of its normal speed off a post and ``ball_restitution * player_restitution`` off a player."""
+    body_ball_contact: str = "rcssserver"
+    """How a player's body and the ball meet. ``"rcssserver"``: when they would overlap, both
+    are put back where they first touched along this cycle's paths and both velocities are
+    multiplied by ``collision_velocity_factor``, so a body can stop or deflect the ball but
+    never propel it. ``"rigid"``: the collision solver treats them as rigid discs with the
+    restitutions above, so a running player pushes the ball ahead at its own speed (the
+    simulator's behaviour before 0.2)."""
+    collision_velocity_factor: float = -0.1
+    """Factor on the ball's and the player's velocities after a body-ball contact
+    (rcssserver: -0.1); within [-1, 0]."""
     max_substep_distance: float = 0.3
     """Physics sub-steps are added until no body moves further than this in one sub-step (m),
     so that a full-speed ball cannot pass through a player. Motion is measured relative to the
@@ -143,16 +176,31 @@ class PhysicsConfig:
 
     def validate(self) -> None:
         _require_positive(
-            self, "cycle_seconds", "player_radius", "ball_radius", "player_speed_max", "player_accel_max",
-            "ball_speed_max", "kick_speed_max", "kickable_margin", "max_substep_distance",
-            "player_mass", "ball_mass",
+            self, "cycle_seconds", "player_radius", "ball_radius", "player_speed_max", "dash_power_max",
+            "dash_power_rate", "dash_heading_speed", "ball_speed_max", "kick_speed_max", "kickable_margin",
+            "max_substep_distance", "player_mass", "ball_mass",
         )
         _require_fraction(
             self, "player_decay", "ball_decay", "kick_distance_penalty", "kick_angle_penalty",
             "player_noise", "ball_noise", "kick_noise", "player_restitution", "ball_restitution",
+            "side_dash_rate", "back_dash_rate",
         )
+        if not isinstance(self.cap_summed_kicks, bool):
+            raise ConfigError(f"PhysicsConfig.cap_summed_kicks must be a bool, got {self.cap_summed_kicks!r}")
+        if self.body_ball_contact not in BODY_BALL_CONTACTS:
+            raise ConfigError(f"PhysicsConfig.body_ball_contact must be one of {', '.join(BODY_BALL_CONTACTS)}, "
+                              f"got {self.body_ball_contact!r}")
+        if not (_is_real(self.collision_velocity_factor) and -1.0 <= self.collision_velocity_factor <= 0.0):
+            raise ConfigError("PhysicsConfig.collision_velocity_factor must be within [-1, 0], "
+                              f"got {self.collision_velocity_factor!r}")
         if self.max_substep_distance > 2 * self.ball_radius + 2 * self.player_radius:
             raise ConfigError("PhysicsConfig.max_substep_distance must not exceed the ball-player contact diameter")
+
+    @property
+    def player_accel_max(self) -> float:
+        """Largest dash acceleration at full effort, straight ahead (m/cycle²):
+        ``dash_power_max * dash_power_rate``."""
+        return self.dash_power_max * self.dash_power_rate
 
     @property
     def kickable_distance(self) -> float:
@@ -162,25 +210,67 @@ class PhysicsConfig:
 
 @dataclass(frozen=True)
 class StaminaConfig:
-    """Stamina: dashing drains it, it recovers every cycle, and low stamina weakens acceleration.
+    """Stamina, effort and recovery, as the RoboCup 2D simulator (rcssserver) models them.
 
-    Dashing at acceleration ``a`` (m/cycle²) costs ``a * cost_per_accel`` stamina, so a
-    full-strength dash costs 100 units, like a full-power dash in the RoboCup simulator.
+    Every player has a stamina (starts at ``maximum``), an effort (the fraction of the dash
+    power that turns into acceleration, starts at ``effort_max``), a recovery rate (starts
+    at 1) and a capacity (starts at ``capacity``). A dash of power p costs p stamina and may
+    use at most the current stamina plus ``extra_stamina``. After the dashes of a cycle,
+    every player's stamina model is updated: below ``recover_dec_thr * maximum`` the recovery
+    rate falls by ``recover_dec`` (never below ``recover_min``; it never rises again within
+    a half); below ``effort_dec_thr * maximum`` the effort falls by ``effort_dec`` (never
+    below ``effort_min``); at or above ``effort_inc_thr * maximum`` it rises by
+    ``effort_inc`` (never above ``effort_max``); then stamina recovers by
+    ``recovery * recovery_per_cycle`` (up to ``maximum``), paid from the capacity: once the
+    capacity is spent, stamina no longer recovers. Everything is restored at half time.
+    Defaults: rcssserver's (``stamina_max``, ``stamina_inc_max``, ``extra_stamina``,
+    ``stamina_capacity``, ``recover_*``, ``effort_*`` of the default player type).
     """
 
     maximum: float = 8000.0
+    """Largest stamina (rcssserver ``stamina_max``)."""
     recovery_per_cycle: float = 45.0
-    cost_per_accel: float = 100.0
-    tired_fraction: float = 0.25
-    """Below this fraction of ``maximum`` the acceleration limit shrinks in proportion."""
-    min_effort: float = 0.3
-    """Acceleration limit, as a fraction of the full one, when stamina is empty."""
+    """Stamina recovered per cycle at recovery rate 1 (rcssserver ``stamina_inc_max``)."""
+    extra_stamina: float = 50.0
+    """Dash power a player may use beyond its current stamina (rcssserver ``extra_stamina``)."""
+    capacity: float | None = 130600.0
+    """Stamina a player can recover in one half (rcssserver ``stamina_capacity``); None for no limit."""
+    recover_dec_thr: float = 0.3
+    """Fraction of ``maximum`` below which the recovery rate falls."""
+    recover_dec: float = 0.002
+    """Fall of the recovery rate per cycle spent below its threshold."""
+    recover_min: float = 0.5
+    """Lowest recovery rate."""
+    effort_dec_thr: float = 0.3
+    """Fraction of ``maximum`` below which the effort falls."""
+    effort_dec: float = 0.005
+    """Fall of the effort per cycle spent below its threshold."""
+    effort_min: float = 0.6
+    """Lowest effort."""
+    effort_inc_thr: float = 0.6
+    """Fraction of ``maximum`` at or above which the effort recovers."""
+    effort_inc: float = 0.01
+    """Rise of the effort per cycle spent above its threshold."""
+    effort_max: float = 1.0
+    """Highest (and initial) effort."""
 
     def validate(self) -> None:
-        _require_positive(self, "maximum", "cost_per_accel")
-        if not (self.recovery_per_cycle >= 0):
-            raise ConfigError(f"StaminaConfig.recovery_per_cycle must be >= 0, got {self.recovery_per_cycle!r}")
-        _require_fraction(self, "tired_fraction", "min_effort")
+        _require_positive(self, "maximum")
+        for name in ("recovery_per_cycle", "extra_stamina", "recover_dec", "effort_dec", "effort_inc"):
+            value = getattr(self, name)
+            if not (_is_real(value) and math.isfinite(value) and value >= 0):
+                raise ConfigError(f"StaminaConfig.{name} must be a finite number >= 0, got {value!r}")
+        if self.capacity is not None and not (_is_real(self.capacity) and self.capacity >= 0):
+            raise ConfigError(f"StaminaConfig.capacity must be None or a number >= 0, got {self.capacity!r}")
+        _require_fraction(self, "recover_dec_thr", "recover_min", "effort_dec_thr", "effort_min",
+                          "effort_inc_thr", "effort_max")
+        if self.effort_min > self.effort_max:
+            raise ConfigError(f"StaminaConfig.effort_min ({self.effort_min}) must not exceed effort_max ({self.effort_max})")
+
+    @property
+    def capacity_or_inf(self) -> float:
+        """``capacity`` as a number (infinite when unlimited)."""
+        return math.inf if self.capacity is None else float(self.capacity)
 
 
 @dataclass(frozen=True)
@@ -191,8 +281,10 @@ class RuleConfig:
     """Length of one half; a match is two halves and the teams swap ends at half time."""
     offside: bool = True
     """Whether the offside rule is enforced."""
-    offside_active_distance: float = 2.5
-    """A player in an offside position is penalised when it comes this close to the ball (m)."""
+    offside_active_distance: float | None = None
+    """None (rcssserver since 2011): a player in an offside position is penalised only when it
+    plays the ball (kick, body touch or catch). A distance (m; the simulator's rule before
+    0.2 used 2.5): also when it comes that close to the ball."""
     set_play_clearance: float = 9.15
     """Opponents are kept at least this far from the ball at set plays (m)."""
     set_play_timeout: int = 100
@@ -208,6 +300,26 @@ class RuleConfig:
     get an indirect free kick."""
     goalie_index: int = 0
     """Index (within its team, 0-based) of each team's goalkeeper; shirt number 1."""
+    back_pass_rule: bool = True
+    """A goalkeeper may not catch a ball kicked to it by a team-mate (the last touch was that
+    team-mate's kick): the attempt gives the opponents an indirect free kick (rcssserver
+    ``back_passes``)."""
+    goal_pause_cycles: int = 50
+    """Cycles of pause (play mode AFTER_GOAL) between a goal and the next kick-off, in which
+    nobody may kick and teams may place their players with ``TeamCommand.move`` (rcssserver
+    waits 50 cycles after a goal). 0: the kick-off follows at once."""
+    corner_inset: float = 1.0
+    """A corner kick is taken this far inside the corner along both lines (m; rcssserver
+    ``corner_kick_margin``)."""
+    stuck_ball_radius: float = 3.0
+    """The ball counts as stuck while it stays within this distance of where it was when it
+    last moved away further (m; rcssserver ``ball_stuck_area``)."""
+    stuck_ball_cycles: int | None = 100
+    """A ball stuck for this many cycles of play on is dropped where it lies (both teams may
+    play it at once). None: never."""
+    goal_kick_leaves_area: bool = True
+    """A goal kick must leave the penalty area before anybody plays it again; a kick or
+    touch before that retakes the goal kick (rcssserver)."""
 
     def validate(self) -> None:
         for name in ("half_cycles", "set_play_timeout", "goalie_hold_cycles"):
@@ -216,7 +328,18 @@ class RuleConfig:
                 raise ConfigError(f"RuleConfig.{name} must be a positive integer, got {value!r}")
         if not (_is_integer(self.catch_ban_cycles) and self.catch_ban_cycles >= 0):
             raise ConfigError(f"RuleConfig.catch_ban_cycles must be a non-negative integer, got {self.catch_ban_cycles!r}")
-        _require_positive(self, "offside_active_distance", "set_play_clearance", "catch_length", "catch_width")
+        _require_positive(self, "set_play_clearance", "catch_length", "catch_width", "stuck_ball_radius")
+        if self.offside_active_distance is not None:
+            _require_positive(self, "offside_active_distance")
+        if not (_is_real(self.corner_inset) and 0.0 <= self.corner_inset):
+            raise ConfigError(f"RuleConfig.corner_inset must be a number >= 0, got {self.corner_inset!r}")
+        if not (_is_integer(self.goal_pause_cycles) and self.goal_pause_cycles >= 0):
+            raise ConfigError(f"RuleConfig.goal_pause_cycles must be a non-negative integer, got {self.goal_pause_cycles!r}")
+        if self.stuck_ball_cycles is not None and not (_is_integer(self.stuck_ball_cycles) and self.stuck_ball_cycles > 0):
+            raise ConfigError(f"RuleConfig.stuck_ball_cycles must be None or a positive integer, got {self.stuck_ball_cycles!r}")
+        for name in ("offside", "back_pass_rule", "goal_kick_leaves_area"):
+            if not isinstance(getattr(self, name), bool):
+                raise ConfigError(f"RuleConfig.{name} must be a bool, got {getattr(self, name)!r}")
         if not (_is_integer(self.goalie_index) and 0 <= self.goalie_index):
             raise ConfigError(f"RuleConfig.goalie_index must be a non-negative integer, got {self.goalie_index!r}")
 

@@ -2,27 +2,38 @@
 
 All players are handled at once on (2n, 2) arrays in the absolute frame (player rows as in
 :class:`~soccer_sim.state.WorldState`). Units: metres, m/cycle, m/cycle². The rules follow
-the RoboCup 2D soccer simulator's model:
+the RoboCup 2D soccer simulator (rcssserver):
 
-* **Dash**: the requested acceleration is clipped to ``player_accel_max`` times an effort
-  that falls linearly from 1 to ``min_effort`` as stamina drops below ``tired_fraction`` of
-  the maximum; stamina pays ``cost_per_accel`` per m/cycle² and recovers every cycle; the
-  velocity gets the acceleration, gets uniform noise proportional to its speed and is
-  clipped to ``player_speed_max``. Stamina never drops below zero before the recovery.
+* **Dash**: a team requests an acceleration; the match finds the dash power that gives it,
+  ``power = |a| / (dash_power_rate * effort * dir_rate)``, clipped to ``dash_power_max`` and to
+  the player's stamina plus ``extra_stamina``, pays that power in stamina, and applies
+  ``power * dash_power_rate * effort * dir_rate`` in the requested direction. ``dir_rate`` is
+  rcssserver's rule for a dash at angle θ to the body: ``1`` straight ahead falling linearly
+  to ``side_dash_rate`` at 90° and changing linearly to ``back_dash_rate`` at 180°. A point
+  robot has no body direction, so θ is measured from its direction of motion, weighted by
+  ``min(1, speed / dash_heading_speed)`` (a robot at rest dashes equally well every way;
+  reversing at speed costs like rcssserver's back dash). The velocity then gets uniform noise
+  proportional to its speed and is clipped to ``player_speed_max``.
+* **Stamina** (after the dashes, every player): recovery rate and effort fall below their
+  thresholds and effort recovers above its own; stamina recovers by ``recovery *
+  recovery_per_cycle`` paid from the half's capacity (see config.StaminaConfig). A player
+  who sprints until its stamina is spent keeps dashing with ``recover_min *
+  recovery_per_cycle + extra_stamina`` power per cycle at ``effort_min``: about 0.44 m/cycle.
 * **Kick**: a player whose centre is within ``kickable_distance`` of the ball's centre may
   change the ball's velocity by at most ``kick_speed_max`` times an effectiveness that loses
   ``kick_distance_penalty`` at the far edge of the kickable margin and ``kick_angle_penalty``
-  when kicking straight back through itself. Kicks of several players add up; kick noise is
-  proportional to the total change; the ball's speed is clipped to ``ball_speed_max``.
+  when kicking straight back through itself. The kicks of one cycle add up and the sum is
+  capped at ``kick_speed_max`` (``cap_summed_kicks``); kick noise is proportional to the total
+  change; the ball's speed is clipped to ``ball_speed_max``.
 * **Decay**: after the move, velocities are multiplied by the players' and the ball's
   decay; the ball gets noise proportional to its speed.
 
 Noise is uniform in ``[-1, 1)`` per axis, drawn by the caller in one block per cycle so the
 random stream does not depend on what happened (see :class:`CycleNoise`).
 
-The per-player rules are compiled loops (numba): written as some twenty small numpy calls
-the dash alone cost about 15 microseconds per cycle, a third of a cycle's budget; compiled,
-each rule costs about one microsecond (mostly the call itself). The kick, applied by a few
+The per-player rules are compiled loops (numba): written as small numpy calls the dash
+alone cost about 15 microseconds per cycle, a third of a cycle's budget; compiled, each
+rule costs about one microsecond (mostly the call itself). The kick, applied by a few
 players at most, is plain scalar Python.
 """
 
@@ -66,18 +77,15 @@ class Kinematics:
         self.phys = phys
         self.kickable_distance = phys.kickable_distance
         self._touch_distance = phys.player_radius + phys.ball_radius
-        # Acceleration limit = min(slope * stamina + base, accel_max): the effort ramp below
-        # tired_fraction * maximum, written as one affine map.
-        tired = stam.tired_fraction * stam.maximum
-        if tired > 0:
-            slope = phys.player_accel_max * (1.0 - stam.min_effort) / tired
-            base = phys.player_accel_max * stam.min_effort
-        else:
-            slope, base = 0.0, phys.player_accel_max
         self._dash_params = np.array([
-            slope, base, phys.player_accel_max, stam.cost_per_accel, stam.recovery_per_cycle,
-            stam.maximum, phys.player_speed_max, phys.player_noise,
+            phys.dash_power_rate, phys.dash_power_max, phys.side_dash_rate, phys.back_dash_rate,
+            phys.dash_heading_speed, stam.extra_stamina, phys.player_speed_max, phys.player_noise,
+            stam.maximum, stam.recovery_per_cycle,
+            stam.recover_dec_thr * stam.maximum, stam.recover_dec, stam.recover_min,
+            stam.effort_dec_thr * stam.maximum, stam.effort_dec, stam.effort_min,
+            stam.effort_inc_thr * stam.maximum, stam.effort_inc, stam.effort_max,
         ])
+        self._stamina_config = stam
         self._decay_params = np.array([phys.player_decay, phys.ball_decay, phys.ball_noise, phys.ball_speed_max])
         self.ball_distance = np.empty(n2)
         """Centre distance of every player to the ball (m), from the last :meth:`kick_candidates`."""
@@ -126,7 +134,12 @@ class Kinematics:
                     effect -= phys.kick_angle_penalty * angle / math.pi
             dvx += kx * effect
             dvy += ky * effect
-        change = math.hypot(dvx, dvy) * phys.kick_noise
+        change = math.hypot(dvx, dvy)
+        if change > kick_max and phys.cap_summed_kicks:
+            dvx *= kick_max / change
+            dvy *= kick_max / change
+            change = kick_max
+        change *= phys.kick_noise
         vx = float(ball_vel[0]) + dvx + (2.0 * float(noise[0]) - 1.0) * change
         vy = float(ball_vel[1]) + dvy + (2.0 * float(noise[1]) - 1.0) * change
         speed = math.hypot(vx, vy)
@@ -136,11 +149,25 @@ class Kinematics:
         ball_vel[0] = vx
         ball_vel[1] = vy
 
-    # --- dashes -----------------------------------------------------------------------------
-    def dash(self, vel: np.ndarray, stamina: np.ndarray, dash: np.ndarray, noise: np.ndarray) -> float:
-        """Apply dash requests ``dash`` (2n, 2; clipped in place to what was applied) to ``vel``
-        and ``stamina`` (in place); return the largest resulting player speed (m/cycle)."""
-        return _dash_kernel(vel, stamina, dash, noise, self._dash_params, self.player_speed)
+    # --- dashes and stamina ----------------------------------------------------------------
+    def dash(self, vel: np.ndarray, stamina: np.ndarray, effort: np.ndarray, recovery: np.ndarray,
+             capacity: np.ndarray, dash: np.ndarray, noise: np.ndarray) -> float:
+        """Apply dash requests ``dash`` (2n, 2; overwritten with the accelerations applied) to
+        ``vel``, pay them from ``stamina``, then update every player's stamina model
+        (``stamina``, ``effort``, ``recovery``, ``capacity``, all (2n,), in place); return the
+        largest resulting player speed (m/cycle)."""
+        return _dash_kernel(vel, stamina, effort, recovery, capacity, dash, noise, self._dash_params,
+                            self.player_speed)
+
+    def restore(self, stamina: np.ndarray, effort: np.ndarray, recovery: np.ndarray,
+                capacity: np.ndarray) -> None:
+        """Fresh players (the start of a match and of the second half): stamina at its maximum,
+        effort at ``effort_max``, recovery 1, the half's full capacity."""
+        stam = self._stamina_config
+        stamina[:] = stam.maximum
+        effort[:] = stam.effort_max
+        recovery[:] = 1.0
+        capacity[:] = stam.capacity_or_inf
 
     # --- decay ------------------------------------------------------------------------------
     def decay(self, vel: np.ndarray, ball_vel: np.ndarray, noise: np.ndarray) -> None:
@@ -149,31 +176,60 @@ class Kinematics:
 
 
 @njit(cache=True, nogil=True)
-def _dash_kernel(vel: np.ndarray, stamina: np.ndarray, dash: np.ndarray, noise: np.ndarray,
-                 params: np.ndarray, speed_out: np.ndarray) -> float:  # pragma: no cover - compiled
-    """The dash rule for every player row (see the module docstring); returns the top speed.
-
-    ``params``: limit slope and base (acceleration limit per unit stamina and at zero
-    stamina), accel_max, stamina cost per m/cycle², recovery per cycle, stamina maximum,
-    speed_max, movement noise fraction.
-    """
-    slope, base, accel_max, cost, recovery, stamina_max, speed_max, noise_frac = (
-        params[0], params[1], params[2], params[3], params[4], params[5], params[6], params[7])
+def _dash_kernel(vel: np.ndarray, stamina: np.ndarray, effort: np.ndarray, recovery: np.ndarray,
+                 capacity: np.ndarray, dash: np.ndarray, noise: np.ndarray, params: np.ndarray,
+                 speed_out: np.ndarray) -> float:  # pragma: no cover - compiled
+    """The dash and stamina rules for every player row (see the module docstring); returns the
+    top speed. ``params``: see ``Kinematics.__init__`` (power rate, power max, side and back
+    dash rates, heading speed, extra stamina, speed max, noise fraction, stamina max and
+    increment, recovery threshold/decrement/minimum, effort decrement threshold/decrement/
+    minimum, effort increment threshold/increment/maximum)."""
+    power_rate, power_max, side_rate, back_rate, heading_speed = params[0], params[1], params[2], params[3], params[4]
+    extra, speed_max, noise_frac, stamina_max, inc_max = params[5], params[6], params[7], params[8], params[9]
+    rec_thr, rec_dec, rec_min = params[10], params[11], params[12]
+    eff_dec_thr, eff_dec, eff_min = params[13], params[14], params[15]
+    eff_inc_thr, eff_inc, eff_max = params[16], params[17], params[18]
     fastest = 0.0
     for i in range(vel.shape[0]):
         ax, ay = dash[i, 0], dash[i, 1]
         size = math.sqrt(ax * ax + ay * ay)
-        limit = min(stamina[i] * slope + base, accel_max)
-        if size > limit:
-            shrink = limit / size
+        vx, vy = vel[i, 0], vel[i, 1]
+        if size > 0.0:
+            rate = 1.0
+            speed = math.sqrt(vx * vx + vy * vy)
+            if speed > 0.0:
+                cos = min(1.0, max(-1.0, (ax * vx + ay * vy) / (size * speed)))
+                angle = math.degrees(math.acos(cos))
+                if angle > 90.0:
+                    dir_rate = back_rate - (back_rate - side_rate) * (1.0 - (angle - 90.0) / 90.0)
+                else:
+                    dir_rate = side_rate + (1.0 - side_rate) * (1.0 - angle / 90.0)
+                weight = min(1.0, speed / heading_speed)
+                rate = 1.0 - weight * (1.0 - dir_rate)
+            per_power = power_rate * effort[i] * rate
+            power = size / per_power if per_power > 0.0 else 0.0
+            power = max(0.0, min(power, power_max, stamina[i] + extra))
+            stamina[i] = max(0.0, stamina[i] - power)
+            shrink = power * per_power / size
             ax *= shrink
             ay *= shrink
-            size = limit
         dash[i, 0] = ax
         dash[i, 1] = ay
-        stamina[i] = min(max(stamina[i] - size * cost, 0.0) + recovery, stamina_max)
-        vx = vel[i, 0] + ax
-        vy = vel[i, 1] + ay
+        # The stamina model, in rcssserver's order: recovery and effort fall below their
+        # thresholds, effort rises above its own, then stamina recovers from the capacity.
+        st = stamina[i]
+        if st <= rec_thr and recovery[i] > rec_min:
+            recovery[i] = max(rec_min, recovery[i] - rec_dec)
+        if st <= eff_dec_thr and effort[i] > eff_min:
+            effort[i] = max(eff_min, effort[i] - eff_dec)
+        if st >= eff_inc_thr and effort[i] < eff_max:
+            effort[i] = min(eff_max, effort[i] + eff_inc)
+        gain = min(recovery[i] * inc_max, stamina_max - st, capacity[i])
+        if gain > 0.0:
+            capacity[i] -= gain
+            stamina[i] = st + gain
+        vx += ax
+        vy += ay
         amount = math.sqrt(vx * vx + vy * vy) * noise_frac
         vx += (2.0 * noise[i, 0] - 1.0) * amount
         vy += (2.0 * noise[i, 1] - 1.0) * amount

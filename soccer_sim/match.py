@@ -5,10 +5,12 @@ One cycle (100 ms of game time by default):
 
 1. each team gets its team-relative view and returns a command, validated and turned back
    into the absolute frame (:mod:`soccer_sim.view`);
-2. before a kick-off, teams may place their players (``TeamCommand.move``);
+2. before a kick-off and in the pause after a goal, teams may place their players
+   (``TeamCommand.move``);
 3. kicks by players allowed by the referee with the ball within reach (or held);
 4. the referee judges the kicks and the goalkeepers' catch requests;
-5. dashes, stamina and movement noise (:mod:`soccer_sim.kinematics`);
+5. dashes, the stamina model and movement noise (:mod:`soccer_sim.kinematics`; players are
+   restored at the start of each half);
 6. the collision solver moves everything for one cycle, in as many sub-steps as needed so
    that nothing can pass through anything (:class:`~soccer_sim.physics.SubstepPlanner`);
    players are kept within the field plus its margin;
@@ -42,6 +44,7 @@ from soccer_sim.view import TeamFrame
 
 _KICK_OFF = PlayMode.KICK_OFF
 _TIME_OVER = PlayMode.TIME_OVER
+_AFTER_GOAL = PlayMode.AFTER_GOAL
 _NO_KICKERS = np.zeros(0, dtype=np.int64)
 
 
@@ -109,13 +112,14 @@ class Match:
         self._team_seeds = (home_seq, away_seq)
         self.block = BodyBlock(n)
         self.block.pos[:] = initial_positions(config)
-        self.state = WorldState(pos=self.block.pos, vel=self.block.vel,
-                                stamina=np.full(2 * n, float(config.stamina.maximum)),
-                                ball=self.block.ball, ball_vel=self.block.ball_vel)
+        self.state = WorldState(pos=self.block.pos, vel=self.block.vel, stamina=np.empty(2 * n),
+                                ball=self.block.ball, ball_vel=self.block.ball_vel, effort=np.empty(2 * n),
+                                recovery=np.empty(2 * n), capacity=np.empty(2 * n))
         self.events = EventLog()
         self.referee = Referee(config, self.events)
         self.physics = Physics(config, self.block)
         self.kinematics = Kinematics(config)
+        self._restore_players()
         self.noise = CycleNoise(np.random.default_rng(physics_seq), 2 * n)
         self.commands = np.zeros((2 * n, 4))
         """Absolute commands of this cycle: per player row ``[dash_x, dash_y, kick_x, kick_y]``."""
@@ -193,7 +197,7 @@ class Match:
 
         # 1-2. Teams decide; kick-off placement.
         moves = self._collect_commands()
-        if state.play_mode == _KICK_OFF:
+        if state.play_mode == _KICK_OFF or state.play_mode == _AFTER_GOAL:
             for team in (HOME, AWAY):
                 if moves[team] is not None:
                     referee.apply_moves(state, team, moves[team])
@@ -215,7 +219,8 @@ class Match:
 
         # 5. Dashes.
         self._sync_state()
-        kin.dash(state.vel, state.stamina, self._dash, self.noise.players)
+        kin.dash(state.vel, state.stamina, state.effort, state.recovery, state.capacity, self._dash,
+                 self.noise.players)
 
         # 6. Collision solving. A held ball does not collide; when the goalkeeper kicks it away
         # it passes through the goalkeeper's body like any kicked ball passes its kicker.
@@ -230,7 +235,10 @@ class Match:
 
         # 7-9. Decay, the referee, time, observers.
         kin.decay(state.vel, state.ball_vel, self.noise.ball)
+        half = state.half
         referee.after_step(state, self.touchers)
+        if state.half != half:
+            self._restore_players()  # players come back fresh for the second half
         state.cycle += 1
         for recorder in self.recorders:
             recorder.on_cycle(self)
@@ -250,6 +258,10 @@ class Match:
             self._catch[team], moves[team] = frame.read_command(command, sign)
             sign = -sign
         return moves
+
+    def _restore_players(self) -> None:
+        state = self.state
+        self.kinematics.restore(state.stamina, state.effort, state.recovery, state.capacity)
 
     def _sync_state(self) -> None:
         """Re-attach the state's arrays to the body block if someone replaced them (the loop

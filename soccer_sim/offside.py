@@ -4,7 +4,7 @@ A team-mate of the kicker is in an offside position when its centre is (strictly
 opponents' half, nearer the opponents' goal line than the ball and nearer than the
 second-last opponent. Being level with the ball or with the second-last opponent is not
 offside. The referee (soccer_sim.referee) decides which kicks mark players and when a
-marked player is penalised.
+marked player is penalised (when it plays the ball), with a free kick on the offside line.
 """
 
 from __future__ import annotations
@@ -15,14 +15,14 @@ import numpy as np
 
 
 def mark_offside_positions(pos: np.ndarray, n: int, team: int, direction: int, ball_x: float,
-                           kickers: Sequence[int] | np.ndarray, out: np.ndarray) -> bool:
+                           kickers: Sequence[int] | np.ndarray, out: np.ndarray) -> float | None:
     """Write into ``out`` ((2n,) bool) which players of ``team`` are in an offside position.
 
     ``pos`` is the (2n, 2) absolute player positions (home rows first), ``direction`` the
     kicking team's attack direction (+1 towards +x), ``ball_x`` the ball's x when kicked and
     ``kickers`` the rows that kicked (never marked). With a single opponent there is no
     second-last opponent; the opponents' goal line takes its place, so nobody is offside.
-    Returns whether any player was marked.
+    Returns the offside line's x (absolute frame) if any player was marked, else None.
     """
     own = slice(0, n) if team == 0 else slice(n, 2 * n)
     opp = slice(n, 2 * n) if team == 0 else slice(0, n)
@@ -39,4 +39,4 @@ def mark_offside_positions(pos: np.ndarray, n: int, team: int, direction: int, b
     marks = out[own]
     np.greater(pos[own, 0] * direction, line, out=marks)
     out[kickers] = False
-    return np.count_nonzero(marks) > 0
+    return direction * line if np.count_nonzero(marks) > 0 else None

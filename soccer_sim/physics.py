@@ -32,6 +32,14 @@ _NO_COLLISIONS = pymunk.ShapeFilter(categories=0, mask=0)
 _ALL_COLLISIONS = pymunk.ShapeFilter()
 _KICK_GROUP = pymunk.ShapeFilter(group=1)
 """Shapes sharing a non-zero group never collide: the ball and this cycle's kickers."""
+_PLAYER_BIT, _BALL_BIT, _POST_BIT = 0b001, 0b010, 0b100
+_PLAYER_NOT_BALL = pymunk.ShapeFilter(categories=_PLAYER_BIT, mask=_PLAYER_BIT | _POST_BIT)
+_BALL_NOT_PLAYER = pymunk.ShapeFilter(categories=_BALL_BIT, mask=_POST_BIT)
+"""With rcssserver body-ball contacts, pymunk never sees the ball meet a player: the match
+resolves those contacts itself (see :func:`_resolve_ball_contacts`)."""
+_CONTACT_PASSES = 3
+"""Rounds of body-ball contact resolution per cycle (the first finds the earliest contact on
+the ball's path; later ones catch players that ran into the ball's corrected position)."""
 _SOLVER_ITERATIONS = 3
 """Constraint-solver iterations per sub-step: frictionless circles converge fast, and the
 sub-steps repeat the solve anyway."""
@@ -91,7 +99,10 @@ class SubstepPlanner:
 
     * two players: at most twice the distance (each may move it, head-on: then they close by
       at most the sum of their radii when it is 0.3 m, so their centres cannot cross);
-    * the ball and a player: at most the distance itself (below their contact distance);
+    * the ball and a player, when the collision solver handles them (``body_ball_contact =
+      "rigid"``): at most the distance itself (below their contact distance); with
+      rcssserver contacts the match sweeps the ball's path against every player's exactly,
+      whatever their speeds, so these pairs need no sub-steps;
     * the ball and a goal post: at most the ball-post contact distance (a post is thin).
 
     Pairs that cannot meet impose nothing, so a fast ball in free flight or a sprinter in
@@ -107,6 +118,7 @@ class SubstepPlanner:
             phys.player_radius, phys.ball_radius, phys.max_substep_distance,
             post_contact, min(phys.max_substep_distance, post_contact),
             fld.half_length, fld.goal_width / 2 + fld.goal_post_radius,
+            1.0 if phys.body_ball_contact == "rigid" else 0.0,
         ])
 
     def count(self, bodies: np.ndarray, ball_free: bool) -> int:
@@ -131,6 +143,15 @@ class Physics:
         phys, fld = config.physics, config.field
         n = config.players_per_team
         self.block = block
+        self._rigid_ball = phys.body_ball_contact == "rigid"
+        self._ball_filter = _ALL_COLLISIONS if self._rigid_ball else _BALL_NOT_PLAYER
+        player_filter = _ALL_COLLISIONS if self._rigid_ball else _PLAYER_NOT_BALL
+        self._before = np.zeros_like(block.dynamic)
+        """The players and the ball as they were before this cycle's move (contact sweeps)."""
+        self._ghost = np.zeros(2 * n, dtype=np.bool_)
+        """This cycle's kickers: their bodies let the ball pass (a kick plays it around them)."""
+        self._contact_rows = np.zeros(_CONTACT_PASSES, dtype=np.int64)
+        self._contact_params = np.array([phys.player_radius + phys.ball_radius, phys.collision_velocity_factor])
         self.space = space = pymunk.Space()
         space.iterations = _SOLVER_ITERATIONS
         space.collision_slop = _COLLISION_SLOP
@@ -155,6 +176,7 @@ class Physics:
             shape.elasticity = phys.player_restitution
             shape.friction = 0.0
             shape.row = row  # read back by the ball-touch callback
+            shape.filter = player_filter
             space.add(body, shape)
             bodies.append(body)
             self._player_shapes.append(shape)
@@ -163,6 +185,7 @@ class Physics:
         self.ball_shape.collision_type = BALL
         self.ball_shape.elasticity = phys.ball_restitution
         self.ball_shape.friction = 0.0
+        self.ball_shape.filter = self._ball_filter
         space.add(self.ball_body, self.ball_shape)
         bodies.append(self.ball_body)
         for sx in (-1.0, 1.0):
@@ -175,8 +198,9 @@ class Physics:
                 post.friction = 0.0
                 space.add(post)
 
-        space.on_collision(BALL, HOME_PLAYER, begin=self._ball_begin)
-        space.on_collision(BALL, AWAY_PLAYER, begin=self._ball_begin)
+        if self._rigid_ball:
+            space.on_collision(BALL, HOME_PLAYER, begin=self._ball_begin)
+            space.on_collision(BALL, AWAY_PLAYER, begin=self._ball_begin)
 
         self._bulk = _BulkBodies(space, block.data)
         self._check_layout(bodies)
@@ -198,7 +222,7 @@ class Physics:
     def set_ball_collides(self, collides: bool) -> None:
         """Switch the ball's collisions off while a goalkeeper holds it (and back on after)."""
         if collides != self._ball_collides:
-            self.ball_shape.filter = _ALL_COLLISIONS if collides else _NO_COLLISIONS
+            self.ball_shape.filter = self._ball_filter if collides else _NO_COLLISIONS
             self._ball_collides = collides
 
     def step(self, substeps: int, kickers: np.ndarray = _NO_TOUCHERS) -> np.ndarray:
@@ -211,6 +235,8 @@ class Physics:
         used) and writes the result back into the block; then keeps the players within the
         field plus its margin and counts new teammate contacts.
         """
+        if not self._rigid_ball:
+            return self._step_with_rcssserver_contacts(substeps, kickers)
         ghosts = kickers.size and self._ball_collides
         if ghosts:
             self.ball_shape.filter = _KICK_GROUP
@@ -230,6 +256,28 @@ class Physics:
         rows = np.fromiter(dict.fromkeys(self._touchers), dtype=np.int64)
         self._touchers.clear()
         return rows
+
+    def _step_with_rcssserver_contacts(self, substeps: int, kickers: np.ndarray) -> np.ndarray:
+        """:meth:`step` when pymunk moves the players (and the ball off the posts) but the
+        body-ball contacts follow rcssserver (:func:`_resolve_ball_contacts`)."""
+        dynamic = self.block.dynamic
+        np.copyto(self._before, dynamic)
+        bulk = self._bulk
+        bulk.write()
+        bulk.step(substeps)
+        bulk.read()
+        count = 0
+        if self._ball_collides:
+            ghost = self._ghost
+            if kickers.size:
+                ghost[kickers] = True
+            count = _resolve_ball_contacts(self._before, dynamic, ghost, self._contact_params, self._contact_rows)
+            if kickers.size:
+                ghost[kickers] = False
+        _after_step(self.block.data, self._in_contact, self._after_params, self.teammate_contacts)
+        if count == 0:
+            return _NO_TOUCHERS
+        return np.unique(self._contact_rows[:count]) if count > 1 else self._contact_rows[:1].copy()
 
 
 class _BulkBodies:
@@ -355,6 +403,7 @@ def _substeps_needed(bodies: np.ndarray, ball_free: bool, params: np.ndarray) ->
     distance, ball-post contact distance, largest ball step near a post, post |x|, post |y|."""
     r_player, r_ball, step, post_contact, post_step, post_x, post_y = (
         params[0], params[1], params[2], params[3], params[4], params[5], params[6])
+    ball_meets_players = params[7] > 0.0
     n2 = bodies.shape[0] - 1
     need = 1.0
     pair_step = 2.0 * step
@@ -369,7 +418,7 @@ def _substeps_needed(bodies: np.ndarray, ball_free: bool, params: np.ndarray) ->
                     need = closing / pair_step
     if ball_free:
         bx, by, bu, bw = bodies[n2, 0], bodies[n2, 1], bodies[n2, 2], bodies[n2, 3]
-        for j in range(n2):
+        for j in range(n2 if ball_meets_players else 0):
             du, dw = bu - bodies[j, 2], bw - bodies[j, 3]
             closing = math.sqrt(du * du + dw * dw)
             if closing > step * need:
@@ -382,3 +431,82 @@ def _substeps_needed(bodies: np.ndarray, ball_free: bool, params: np.ndarray) ->
             if math.sqrt(dx * dx + dy * dy) - post_contact <= speed:
                 need = speed / post_step
     return int(math.ceil(need - 1e-9))
+
+
+@njit(cache=True, nogil=True)
+def _resolve_ball_contacts(before: np.ndarray, after: np.ndarray, ghost: np.ndarray, params: np.ndarray,
+                           rows_out: np.ndarray) -> int:  # pragma: no cover - compiled
+    """rcssserver's body-ball contact rule, applied to a cycle's motion; returns how many
+    contacts it resolved (their player rows in ``rows_out``).
+
+    ``before``/``after``: block rows ``[x, y, vx, vy]`` of the players then the ball, at the
+    start and the end of the cycle's move (``after`` is corrected in place). Each body is taken
+    to move in a straight line between the two, so the sweep is exact for any speed: the
+    earliest moment the ball's disc meets a player's disc (``params[0]``: the sum of the radii)
+    is found, and both are put back where they were at that moment, with their velocities
+    multiplied by ``params[1]`` (-0.1). A player already overlapping the ball at the start
+    pushes it out radially. Further rounds put back any player that ran into the ball's
+    corrected position later in the cycle (along the player's own path, the ball staying).
+    Rows with ``ghost`` set (this cycle's kickers) are passed through.
+    """
+    contact, factor = params[0], params[1]
+    contact2 = contact * contact
+    n2 = after.shape[0] - 1
+    count = 0
+    b0x, b0y = before[n2, 0], before[n2, 1]
+    dbx, dby = after[n2, 0] - b0x, after[n2, 1] - b0y
+    for round_ in range(rows_out.shape[0]):
+        best_t, best = 2.0, -1
+        for i in range(n2):
+            if ghost[i]:
+                continue
+            p0x, p0y = before[i, 0], before[i, 1]
+            rx, ry = b0x - p0x, b0y - p0y
+            drx, dry = dbx - (after[i, 0] - p0x), dby - (after[i, 1] - p0y)
+            c = rx * rx + ry * ry - contact2
+            if c <= 0.0:
+                t = 0.0
+            else:
+                a = drx * drx + dry * dry
+                b = rx * drx + ry * dry
+                if a == 0.0 or b >= 0.0:
+                    continue
+                disc = b * b - a * c
+                if disc < 0.0:
+                    continue
+                t = (-b - math.sqrt(disc)) / a
+                if t > 1.0:
+                    continue
+            if t < best_t:
+                best_t, best = t, i
+        if best < 0:
+            break
+        t = best_t
+        px = before[best, 0] + t * (after[best, 0] - before[best, 0])
+        py = before[best, 1] + t * (after[best, 1] - before[best, 1])
+        bx, by = b0x + t * dbx, b0y + t * dby
+        ox, oy = bx - px, by - py
+        gap = math.sqrt(ox * ox + oy * oy)
+        if gap < contact:  # overlapping from the start: push the ball out radially
+            if gap > 1e-12:
+                bx, by = px + ox * contact / gap, py + oy * contact / gap
+            else:
+                bx, by = px + contact, py
+        after[best, 0], after[best, 1] = px, py
+        after[best, 2] *= factor
+        after[best, 3] *= factor
+        after[n2, 0], after[n2, 1] = bx, by
+        if round_ == 0:
+            after[n2, 2] *= factor
+            after[n2, 3] *= factor
+        rows_out[count] = best
+        count += 1
+        ghost[best] = True  # resolved: not met again this cycle
+        # Later rounds: the ball stays at its corrected position for the whole sweep.
+        b0x, b0y, dbx, dby = bx, by, 0.0, 0.0
+        for k in range(n2):
+            before[k, 0] = before[k, 0] + t * (after[k, 0] - before[k, 0])
+            before[k, 1] = before[k, 1] + t * (after[k, 1] - before[k, 1])
+    for k in range(count):
+        ghost[rows_out[k]] = False
+    return count

@@ -83,6 +83,8 @@ from soccer_sim.restarts import (
     keep_in_own_half,
     line_crossing,
     mirror_into_own_half,
+    out_of_goal_area,
+    push_out_of_penalty_area,
     penalty_area_edge_spot,
     push_clear_of_spot,
     push_out_of_circle,
@@ -102,6 +104,8 @@ _PLAY_ON = PlayMode.PLAY_ON
 _KICK_OFF = PlayMode.KICK_OFF
 _GOALIE_HOLDS = PlayMode.GOALIE_HOLDS
 _TIME_OVER = PlayMode.TIME_OVER
+_AFTER_GOAL = PlayMode.AFTER_GOAL
+_GOAL_KICK = PlayMode.GOAL_KICK
 _OFFSIDE_MODES = frozenset({PlayMode.PLAY_ON, PlayMode.FREE_KICK, PlayMode.KICK_OFF, PlayMode.GOALIE_HOLDS})
 """Modes in which a kick can put team-mates offside (not kick-ins, corners, goal kicks)."""
 _NEVER = -(10**9)
@@ -125,7 +129,7 @@ class Referee:
         self._touch_y = f.half_width + p.ball_radius  # whole ball beyond the touchline
         self._post_y = f.goal_width / 2.0
         self._clearance = r.set_play_clearance
-        self._offside_reach2 = r.offside_active_distance ** 2
+        self._offside_reach2 = None if r.offside_active_distance is None else r.offside_active_distance ** 2
         self._kick_off_radius = max(r.set_play_clearance, f.centre_circle_radius)
         self._half_end = r.half_cycles
         self._match_end = config.total_cycles
@@ -167,6 +171,15 @@ class Referee:
         self._play_spot = [(math.nan, math.nan), (math.nan, math.nan)]
         """Per team: where the ball was when the team last played it (kick, touch or catch)."""
         self._touching: tuple[int, ...] = ()
+        self._offside_line = 0.0
+        """x of the offside line (absolute frame) when the current marks were made."""
+        self._stuck_cycles = r.stuck_ball_cycles
+        self._stuck_radius2 = r.stuck_ball_radius ** 2
+        self._goal_kick_pending: tuple[int, float, float] | None = None
+        """(team, spot) of a goal kick taken whose ball has not yet left the penalty area."""
+        self._stuck_anchor = (math.nan, math.nan)
+        self._stuck_since = 0
+        """The ball has stayed within ``stuck_ball_radius`` of ``_stuck_anchor`` since this cycle."""
 
     @staticmethod
     def _frozen(a: np.ndarray) -> np.ndarray:
@@ -194,16 +207,16 @@ class Referee:
             holder = state.ball_holder
             row = holder if holder != NO_PLAYER else self._goalie_rows[state.mode_team]
             return self._mask_row[row]
-        if mode == _TIME_OVER or state.mode_team == NO_TEAM:
+        if mode == _TIME_OVER or mode == _AFTER_GOAL or state.mode_team == NO_TEAM:
             return self._mask_none
         return self._mask_team[state.mode_team]
 
     def apply_moves(self, state: WorldState, team: int, targets: np.ndarray) -> None:
-        """KICK_OFF only, before the kick: teleport ``team``'s players to ``targets`` ((n, 2),
-        absolute frame), clamped into the team's own half of the field (lines included), the
-        non-kicking team kept out of the centre circle. Moved players stop. Ignored in any other
-        play mode."""
-        if state.play_mode != _KICK_OFF:
+        """KICK_OFF (before the kick) and AFTER_GOAL only: teleport ``team``'s players to
+        ``targets`` ((n, 2), absolute frame), clamped into the team's own half of the field
+        (lines included), the team not kicking off kept out of the centre circle. Moved players
+        stop. Ignored in any other play mode."""
+        if state.play_mode != _KICK_OFF and state.play_mode != _AFTER_GOAL:
             return
         n = self._n
         targets = np.asarray(targets, dtype=float)
@@ -251,10 +264,17 @@ class Referee:
             bx, by = state.ball.tolist()
             if bx > self._goal_x or bx < -self._goal_x or by > self._touch_y or by < -self._touch_y:
                 self._ball_left_field(state, bx, by)
-            elif self._offside_pending:
-                self._check_offside_approach(state)
+            else:
+                if self._offside_pending and self._offside_reach2 is not None:
+                    self._check_offside_approach(state)
+                if self._goal_kick_pending is not None:
+                    self._check_goal_kick_left_area(state, bx, by)
+                if self._stuck_cycles is not None and state.play_mode == _PLAY_ON:
+                    self._check_stuck_ball(state, bx, by)
         elif mode == _GOALIE_HOLDS:
             self._keep_holder_in_area(state)
+        elif mode == _AFTER_GOAL:
+            self._keep_goal_pause(state)
         else:
             self._keep_set_play(state)
         cycles_done = state.cycle + 1
@@ -273,6 +293,8 @@ class Referee:
         state.play_mode = mode
         state.mode_team = team if mode != _PLAY_ON else NO_TEAM
         state.mode_start = state.cycle + 1 if first_cycle is None else first_cycle
+        self._stuck_anchor = (float(state.ball[0]), float(state.ball[1]))
+        self._stuck_since = state.mode_start
         self._spot_owner = (mode, state.mode_team, state.mode_start)
         self.events.add(state.cycle, EventKind.SET_PLAY, state.mode_team, player,
                         float(state.ball[0]), float(state.ball[1]), int(mode))
@@ -289,14 +311,24 @@ class Referee:
         self._pass_from = NO_PLAYER
         self._shot_pending = [False, False]
         self._touching = ()
+        self._goal_kick_pending = None
         self._prev_ball = (x, y)
         self._set_mode(state, mode, team, first_cycle=first_cycle)
-        self._keep_set_play(state)
+        if mode == _AFTER_GOAL:
+            self._keep_goal_pause(state)
+        else:
+            self._keep_set_play(state)
 
-    def _kick_off(self, state: WorldState, team: int, first_cycle: int | None = None) -> None:
+    def _kick_off(self, state: WorldState, team: int, first_cycle: int | None = None, *,
+                  after_pause: bool = False) -> None:
         """Kick-off for ``team``: ball on the centre spot, everybody stopped, both teams in
-        their own halves (players in the wrong half reflected across the halfway line)."""
-        mirror_into_own_half(state.pos, self._row_direction[state.home_attacks])
+        their own halves. Players in the wrong half are put on the halfway line after the
+        pause that follows a goal (they had the pause to get back), else reflected across it."""
+        directions = self._row_direction[state.home_attacks]
+        if after_pause:
+            keep_in_own_half(state.pos, directions)
+        else:
+            mirror_into_own_half(state.pos, directions)
         state.vel[:] = 0.0
         state.last_touch = NO_PLAYER
         self._restart(state, _KICK_OFF, team, 0.0, 0.0, first_cycle)
@@ -316,9 +348,14 @@ class Referee:
         if state.play_mode == _KICK_OFF:
             self._keep_kick_off_positions(state, other, sx, sy)
         else:
-            moved = push_clear_of_spot(state.pos[rows], sx, sy, self._clearance, self.config.field)
+            block = state.pos[rows]
+            moved = push_clear_of_spot(block, sx, sy, self._clearance, self.config.field)
             if moved is not None:
                 state.vel[rows][moved] = 0.0
+            if state.play_mode == _GOAL_KICK and self.config.rules.goal_kick_leaves_area:
+                moved = push_out_of_penalty_area(block, -state.attack_direction(other), self.config.field)
+                if moved is not None:
+                    state.vel[rows][moved] = 0.0
         if state.cycle - state.mode_start + 1 >= self.config.rules.set_play_timeout:
             self.events.add(state.cycle, EventKind.DROP_BALL, NO_TEAM, NO_PLAYER, sx, sy, int(state.play_mode))
             self._set_mode(state, _PLAY_ON, NO_TEAM)
@@ -336,6 +373,14 @@ class Referee:
         pushed = push_out_of_circle(pos[rows], sx, sy, self._kick_off_radius, fallback)
         if pushed is not None:
             state.vel[rows][pushed] = 0.0
+
+    def _keep_goal_pause(self, state: WorldState) -> None:
+        """Every cycle of the pause after a goal: the ball waits on the centre spot; at the end
+        of the pause the team that conceded kicks off."""
+        state.ball[:] = 0.0
+        state.ball_vel[:] = 0.0
+        if state.cycle - state.mode_start + 1 >= self.config.rules.goal_pause_cycles:
+            self._kick_off(state, state.mode_team, after_pause=True)
 
     def _half_time(self, state: WorldState) -> None:
         """Swap ends: every player position rotated by 180° about the centre spot; away kicks off
@@ -374,7 +419,7 @@ class Referee:
                 return
             self.events.add(state.cycle, EventKind.OUT, last_team, last_index, x, y, 1)
             if last_team == defender:
-                sx, sy = corner_spot(f, goal_side, y)
+                sx, sy = corner_spot(f, goal_side, y, self.config.rules.corner_inset)
                 self._restart(state, PlayMode.CORNER_KICK, attacker, sx, sy)
             else:
                 sx, sy = goal_kick_spot(f, goal_side, y)
@@ -398,7 +443,10 @@ class Referee:
             self.events.add(state.cycle, EventKind.SHOT, scorer, last_index, sx, sy, 1)
         state.score[scorer] += 1
         self.events.add(state.cycle, EventKind.GOAL, scorer, last_index, x, y, int(own_goal))
-        self._kick_off(state, 1 - scorer)
+        if self.config.rules.goal_pause_cycles > 0:
+            self._restart(state, _AFTER_GOAL, 1 - scorer, 0.0, 0.0)
+        else:
+            self._kick_off(state, 1 - scorer)
 
     # ------------------------------------------------------------------ kicks, touches, passes
 
@@ -416,6 +464,9 @@ class Referee:
                 if self._offside[row]:
                     self._call_offside(state, row)
                     return
+        if self._goal_kick_pending is not None:
+            self._retake_goal_kick(state)
+            return
         self._played(state, rows, state.last_touch, bx, by, kicked=True)
         teams = sorted({HOME if row < n else AWAY for row in rows})
         for team in teams:
@@ -429,6 +480,8 @@ class Referee:
         if mode != _PLAY_ON:
             first = rows[0]
             self._set_mode(state, _PLAY_ON, NO_TEAM, player=first - state.team_of(first) * n)
+            if mode == _GOAL_KICK and self.config.rules.goal_kick_leaves_area:
+                self._goal_kick_pending = (state.team_of(first), bx, by)
         self._judge_offside_positions(state, rows, mode, bx)
 
     def _played(self, state: WorldState, rows: list[int], main: int, x: float, y: float, *,
@@ -467,6 +520,9 @@ class Referee:
                 if self._offside[row]:
                     self._call_offside(state, row)
                     return
+        if self._goal_kick_pending is not None:
+            self._retake_goal_kick(state)
+            return
         self._judge_offside_positions(state, rows, _PLAY_ON, bx)
         previous = self._touching
         for row in rows:
@@ -504,10 +560,12 @@ class Referee:
         team = HOME if rows[0] < n else AWAY
         one_team = (rows[-1] < n) == (team == HOME)
         if self.config.rules.offside and one_team and mode in _OFFSIDE_MODES:
-            self._offside_pending = mark_offside_positions(
+            line = mark_offside_positions(
                 state.pos, n, team, state.attack_direction(team), ball_x, rows, self._offside)
-            if self._offside_pending:
+            self._offside_pending = line is not None
+            if line is not None:
                 self._offside_rows = np.flatnonzero(self._offside)
+                self._offside_line = line
         else:
             self._clear_offside()
 
@@ -527,14 +585,52 @@ class Referee:
             self._call_offside(state, int(rows[nearest]))
 
     def _call_offside(self, state: WorldState, row: int) -> None:
-        """OFFSIDE event and an indirect free kick for the defenders at the offender's position."""
+        """OFFSIDE event (at the offender's position) and an indirect free kick for the
+        defenders on the offside line (as it was when the ball was played), level with the
+        offender."""
         n = self._n
         team = HOME if row < n else AWAY
         f = self.config.field
         x = min(max(float(state.pos[row, 0]), -f.half_length), f.half_length)
         y = min(max(float(state.pos[row, 1]), -f.half_width), f.half_width)
         self.events.add(state.cycle, EventKind.OFFSIDE, team, row - team * n, x, y, 0)
-        self._restart(state, PlayMode.FREE_KICK, 1 - team, x, y)
+        self._restart(state, PlayMode.FREE_KICK, 1 - team, self._offside_line, y)
+
+    # ------------------------------------------------------------------ goal kicks, stuck ball
+
+    def _check_goal_kick_left_area(self, state: WorldState, bx: float, by: float) -> None:
+        """The goal kick's ball is in play once it has left the penalty area."""
+        team = self._goal_kick_pending[0]
+        if not in_penalty_area(self.config.field, state.attack_direction(team), bx, by):
+            self._goal_kick_pending = None
+
+    def _retake_goal_kick(self, state: WorldState) -> None:
+        """The ball was played before it left the penalty area: the goal kick is taken again."""
+        team, x, y = self._goal_kick_pending
+        self._restart(state, _GOAL_KICK, team, x, y)
+
+    def _check_stuck_ball(self, state: WorldState, bx: float, by: float) -> None:
+        """Drop the ball where it lies when it has stayed within ``stuck_ball_radius`` for
+        ``stuck_ball_cycles`` cycles of play on: DROP_BALL event (detail PLAY_ON), every player
+        within that radius pushed out to it, play goes on with the ball still."""
+        ax, ay = self._stuck_anchor
+        if (bx - ax) ** 2 + (by - ay) ** 2 > self._stuck_radius2:
+            self._stuck_anchor = (bx, by)
+            self._stuck_since = state.cycle
+            return
+        if state.cycle - self._stuck_since + 1 < self._stuck_cycles:
+            return
+        self.events.add(state.cycle, EventKind.DROP_BALL, NO_TEAM, NO_PLAYER, bx, by, int(_PLAY_ON))
+        radius = self.config.rules.stuck_ball_radius
+        moved = push_clear_of_spot(state.pos, bx, by, radius, self.config.field)
+        if moved is not None:
+            state.vel[moved] = 0.0
+        state.ball_vel[:] = 0.0
+        self._clear_offside()
+        self._pass_from = NO_PLAYER
+        self._touching = ()
+        self._stuck_anchor = (bx, by)
+        self._stuck_since = state.cycle + 1
 
     # ------------------------------------------------------------------ goalkeeper
 
@@ -558,6 +654,13 @@ class Referee:
         if math.hypot(bx - gx, by - gy) > self.config.rules.catch_length:
             return
         n = self._n
+        passer = self._pass_from
+        if (self.config.rules.back_pass_rule and passer != NO_PLAYER and passer != row
+                and state.team_of(passer) == team):
+            self.events.add(state.cycle, EventKind.BACK_PASS, team, row - team * n, bx, by, passer - team * n)
+            x, y = out_of_goal_area(f, direction, bx, by)
+            self._restart(state, PlayMode.FREE_KICK, 1 - team, x, y)
+            return
         self._clear_offside()
         self._played(state, [row], row, bx, by)
         state.last_touch = row

@@ -57,9 +57,39 @@ def _crossing_fraction(a0: float, a1: float, limit: float) -> float:
     return min(max(t, 0.0), 1.0)
 
 
-def corner_spot(field: FieldConfig, goal_side: float, y: float) -> tuple[float, float]:
-    """Corner point at the goal line ``goal_side`` (+1: x > 0) nearer to ``y``."""
-    return goal_side * field.half_length, math.copysign(field.half_width, y)
+def corner_spot(field: FieldConfig, goal_side: float, y: float, inset: float = 0.0) -> tuple[float, float]:
+    """Corner kick spot at the goal line ``goal_side`` (+1: x > 0), in the corner nearer to
+    ``y``, ``inset`` metres inside the field along both lines."""
+    return goal_side * (field.half_length - inset), math.copysign(field.half_width - inset, y)
+
+
+def out_of_goal_area(field: FieldConfig, direction: int, x: float, y: float) -> tuple[float, float]:
+    """(x, y), or, if it lies inside the goal area defended by the team attacking
+    ``direction``, the point on the goal area's front line level with it (where an indirect
+    free kick inside the goal area is taken)."""
+    front = field.half_length - field.goal_area_length
+    if -direction * x > front and abs(y) < field.goal_area_width / 2.0:
+        return -direction * front, y
+    return x, y
+
+
+def push_out_of_penalty_area(block: np.ndarray, direction: int, field: FieldConfig) -> np.ndarray | None:
+    """Move the players of ``block`` ((k, 2) rows) standing inside the penalty area defended
+    by the team attacking ``direction`` onto its nearest front or side line (just outside).
+    Returns the bool mask of moved rows, or None if nobody was moved."""
+    depth = -direction * block[:, 0]  # distance towards that goal line from the halfway line
+    front = field.half_length - field.penalty_area_length
+    half_w = field.penalty_area_width / 2.0
+    inside = (depth > front) & (np.abs(block[:, 1]) < half_w)
+    if not np.count_nonzero(inside):
+        return None
+    to_front = depth - front
+    to_side = half_w - np.abs(block[:, 1])
+    via_front = inside & (to_front <= to_side)
+    via_side = inside & ~via_front
+    block[via_front, 0] = -direction * front
+    block[via_side, 1] = np.copysign(half_w, block[via_side, 1])
+    return inside
 
 
 def goal_kick_spot(field: FieldConfig, goal_side: float, y: float) -> tuple[float, float]:

@@ -37,6 +37,10 @@ class PlayMode(IntEnum):
     GOALIE_HOLDS = 6
     """The mode team's goalkeeper holds the ball and must kick it away in time."""
     TIME_OVER = 7
+    AFTER_GOAL = 8
+    """The pause between a goal and the kick-off (``RuleConfig.goal_pause_cycles``): nobody may
+    kick; ``mode_team`` is the team that will kick off; teams may place their players with
+    ``TeamCommand.move`` (into their own half)."""
 
 
 SET_PLAYS = frozenset({PlayMode.KICK_OFF, PlayMode.KICK_IN, PlayMode.CORNER_KICK, PlayMode.GOAL_KICK, PlayMode.FREE_KICK})
@@ -64,6 +68,9 @@ class EventKind(IntEnum):
     TIME_OVER = 10
     TOUCH = 11
     """The ball bounced off a player's body (not a kick)."""
+    BACK_PASS = 12
+    """A goalkeeper tried to catch a ball kicked to it by a team-mate; the opponents get an
+    indirect free kick (the following SET_PLAY event)."""
 
 
 @dataclass
@@ -147,6 +154,13 @@ class WorldState:
     """Player row (0..2n-1) of the goalkeeper holding the ball, or NO_PLAYER."""
     last_touch: int = NO_PLAYER
     """Player row that last kicked or touched the ball, or NO_PLAYER."""
+    effort: np.ndarray | None = None
+    """(2n,) effort of each player: the fraction of dash power that becomes acceleration
+    (see config.StaminaConfig); None in hand-built states that do not need it."""
+    recovery: np.ndarray | None = None
+    """(2n,) stamina recovery rate of each player (see config.StaminaConfig)."""
+    capacity: np.ndarray | None = None
+    """(2n,) stamina each player can still recover in this half (inf: unlimited)."""
 
     @property
     def players_per_team(self) -> int:

@@ -81,6 +81,20 @@ class TeamView:
     """0 for the first half, 1 for the second (the match swaps ends; the view never changes side)."""
     ball_holder: int = NO_PLAYER
     """Index (within this team) of our goalkeeper if it holds the ball, else NO_PLAYER (-1)."""
+    effort: np.ndarray | None = None
+    """(n,) effort of the team's players: the fraction of dash power that becomes acceleration
+    (1 when fresh, down to ``StaminaConfig.effort_min`` when tired). A view built by hand
+    without it gets fresh players (ones)."""
+    capacity: np.ndarray | None = None
+    """(n,) stamina each player can still recover in this half (inf: unlimited; the default
+    of a view built by hand)."""
+
+    def __post_init__(self) -> None:
+        n = len(self.stamina)
+        if self.effort is None:
+            self.effort = np.ones(n)
+        if self.capacity is None:
+            self.capacity = np.full(n, np.inf)
 
 
 @dataclass
@@ -101,8 +115,8 @@ class TeamCommand:
     """The goalkeeper tries to catch the ball this cycle (a bool, Python or numpy; 0 and 1 are
     accepted too, anything else is a TeamError)."""
     move: np.ndarray | None = None
-    """(n, 2) placement targets, honoured only before a kick-off (the referee clamps them
-    into the team's own half)."""
+    """(n, 2) placement targets, honoured only before a kick-off and in the pause after a goal
+    (play modes KICK_OFF and AFTER_GOAL; the referee clamps them into the team's own half)."""
 
 
 @runtime_checkable

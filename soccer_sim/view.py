@@ -41,19 +41,26 @@ class TeamFrame:
         ball_row = self._mirror[2 * n]
         self.view = TeamView(
             own_pos=own[:, 0:2], own_vel=own[:, 2:4], opp_pos=opp[:, 0:2], opp_vel=opp[:, 2:4],
-            ball=ball_row[0:2], ball_vel=ball_row[2:4], stamina=np.empty(n),
+            ball=ball_row[0:2], ball_vel=ball_row[2:4], stamina=np.empty(n), effort=np.empty(n),
+            capacity=np.empty(n),
         )
         self._commands = commands[self.rows]
         self._dash = self._commands[:, 0:2]
         self._kick = self._commands[:, 2:4]
         self._shape = (n, 2)
+        # Stand-ins for hand-built states without a stamina model: fresh players.
+        self._fresh_effort = np.ones(2 * n)
+        self._fresh_capacity = np.full(2 * n, np.inf)
 
     def update_view(self, state: WorldState, sign: int) -> TeamView:
         """Refresh and return the team's view of ``state`` (arrays overwritten in place).
         ``sign``: the team's attack direction, ``state.attack_direction(team)``."""
         view = self.view
         team = self.team
-        _mirror(self._block.dynamic, float(sign), self._mirror, state.stamina, self._offset, view.stamina)
+        effort = state.effort if state.effort is not None else self._fresh_effort
+        capacity = state.capacity if state.capacity is not None else self._fresh_capacity
+        _mirror(self._block.dynamic, float(sign), self._mirror, self._offset, state.stamina, effort, capacity,
+                view.stamina, view.effort, view.capacity)
         view.play_mode = state.play_mode
         view.mode_ours = state.mode_team == team
         score = state.score.tolist()
@@ -143,11 +150,15 @@ def _store_command(dash: np.ndarray, kick: np.ndarray, sign: float,
 
 
 @njit(cache=True, nogil=True)
-def _mirror(bodies: np.ndarray, sign: float, out: np.ndarray, stamina: np.ndarray, first: int,
-            stamina_out: np.ndarray) -> None:  # pragma: no cover - compiled
-    """``out = sign * bodies`` and this team's stamina (rows ``first`` onwards) into ``stamina_out``."""
+def _mirror(bodies: np.ndarray, sign: float, out: np.ndarray, first: int, stamina: np.ndarray,
+            effort: np.ndarray, capacity: np.ndarray, stamina_out: np.ndarray, effort_out: np.ndarray,
+            capacity_out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """``out = sign * bodies``, and this team's stamina, effort and capacity (rows ``first``
+    onwards) into the ``*_out`` arrays."""
     for i in range(bodies.shape[0]):
         for k in range(bodies.shape[1]):
             out[i, k] = sign * bodies[i, k]
     for i in range(stamina_out.shape[0]):
         stamina_out[i] = stamina[first + i]
+        effort_out[i] = effort[first + i]
+        capacity_out[i] = capacity[first + i]

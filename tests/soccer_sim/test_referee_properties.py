@@ -40,10 +40,13 @@ def offside_by_the_book(pos, team, direction, ball_x, kicker):
 def test_offside_marks_match_the_rule_player_by_player(pos, team, direction, ball_x, kicker):
     out = np.zeros(2 * N, dtype=bool)
     kicker_row = team * N + kicker
-    any_marked = mark_offside_positions(pos, N, team, direction, ball_x, np.array([kicker_row]), out)
+    line = mark_offside_positions(pos, N, team, direction, ball_x, np.array([kicker_row]), out)
     expected = offside_by_the_book(pos, team, direction, ball_x, kicker_row)
     assert set(np.flatnonzero(out).tolist()) == expected
-    assert any_marked == bool(expected)
+    assert (line is not None) == bool(expected)
+    if line is not None:  # every marked player is beyond the line, which is in the opponents' half
+        assert direction * line >= 0.0
+        assert all(direction * pos[row, 0] > direction * line for row in expected)
 
 
 @SETTINGS

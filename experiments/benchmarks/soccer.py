@@ -1,0 +1,108 @@
+"""``soccer-sim bench soccer``: what the play between two teams looks like, in numbers.
+
+Plays ``--matches`` matches on consecutive seeds (sides as given) and prints the mean per
+match, with its standard error, of: total goals, shots, kicks, passes, offside calls,
+teammate contacts, and the mean number of players (of both teams) within 2 m of the ball
+per play-on cycle (a measure of scrums: well-spaced teams keep it near 1-2). These are the
+figures by which the simulator's fidelity and the built-in teams are judged; speed is
+``bench match``'s job.
+"""
+
+from __future__ import annotations
+
+import argparse
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from experiments.commands.play import positive_int
+
+if TYPE_CHECKING:
+    from soccer_sim.match import Match
+
+CROWD_RADIUS = 2.0
+"""Players whose centre is within this distance of the ball's centre count as near it (m)."""
+
+
+class NearBallRecorder:
+    """Counts, over the play-on cycles, the players within :data:`CROWD_RADIUS` of the ball."""
+
+    def __init__(self) -> None:
+        self.cycles = 0
+        self.near = 0
+
+    def on_start(self, match: Match) -> None:
+        self.cycles = 0
+        self.near = 0
+
+    def on_cycle(self, match: Match) -> None:
+        from soccer_sim.state import PlayMode
+
+        state = match.state
+        if state.play_mode != PlayMode.PLAY_ON:
+            return
+        offsets = state.pos - state.ball
+        self.cycles += 1
+        self.near += int(np.count_nonzero(np.einsum("ij,ij->i", offsets, offsets) <= CROWD_RADIUS ** 2))
+
+    def on_end(self, match: Match) -> None:
+        pass
+
+    @property
+    def mean(self) -> float:
+        """Mean number of players near the ball per play-on cycle."""
+        return self.near / self.cycles if self.cycles else 0.0
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--home", default="chaser", help="home team (default: chaser)")
+    parser.add_argument("--away", default="chaser", help="away team (default: chaser)")
+    parser.add_argument("--matches", type=positive_int, default=10, help="matches to play (default: 10)")
+    parser.add_argument("--cycles", type=positive_int, default=None,
+                        help="cycles per match (default: a full match)")
+    parser.add_argument("--seed", type=int, default=0, help="seed of the first match; match i uses seed + i")
+
+
+def measure(home: str, away: str, matches: int, seed: int = 0, cycles: int | None = None) -> dict[str, np.ndarray]:
+    """Play the matches and return one array per figure (one value per match)."""
+    from soccer_sim import MatchConfig, run_match
+    from soccer_sim.state import EventKind
+
+    config = MatchConfig(max_cycles=cycles)
+    rows: dict[str, list[float]] = {name: [] for name in (
+        "goals", "shots", "kicks", "passes", "offside calls", "teammate contacts", "players within 2 m of the ball")}
+    for i in range(matches):
+        near = NearBallRecorder()
+        result = run_match(home, away, seed=seed + i, config=config, recorders=[near])
+        home_stats, away_stats = result.statistics
+        rows["goals"].append(sum(result.score))
+        rows["shots"].append(home_stats.shots + away_stats.shots)
+        rows["kicks"].append(home_stats.kicks + away_stats.kicks)
+        rows["passes"].append(home_stats.passes + away_stats.passes)
+        rows["offside calls"].append(len(result.events.of_kind(EventKind.OFFSIDE)))
+        rows["teammate contacts"].append(home_stats.teammate_contacts + away_stats.teammate_contacts)
+        rows["players within 2 m of the ball"].append(near.mean)
+    return {name: np.asarray(values, dtype=float) for name, values in rows.items()}
+
+
+def run(args: argparse.Namespace) -> int:
+    from rich.console import Console
+    from rich.table import Table
+
+    from soccer_sim import ConfigError, TeamError, TeamNotFoundError
+
+    console = Console()
+    try:
+        figures = measure(args.home, args.away, args.matches, args.seed, args.cycles)
+    except (TeamNotFoundError, TeamError, ConfigError, ValueError) as exc:
+        console.print(f"error: {exc}", markup=False)
+        return 2
+    table = Table(title=f"{args.home} vs {args.away}: {args.matches} matches (seeds {args.seed}..{args.seed + args.matches - 1})")
+    table.add_column("per match (both teams)")
+    table.add_column("mean", justify="right")
+    table.add_column("std. error", justify="right")
+    for name, values in figures.items():
+        error = values.std(ddof=1) / np.sqrt(values.size) if values.size > 1 else float("nan")
+        table.add_row(name, f"{values.mean():.2f}", f"{error:.2f}")
+    console.print(table)
+    return 0
