@@ -114,6 +114,26 @@ def read_any(path: str | os.PathLike[str]) -> Formation | FormationSet:
     )
 
 
+def load_helios(path: str | os.PathLike[str]) -> Formation:
+    """Read a helios-base / agent2d formation from *path*: their JSON layout or agent2d's
+    text layouts; FormationError for anything else (our own layouts included)."""
+    from formations.helios import formation_from_helios, is_helios_layout
+    from formations.helios_text import formation_from_helios_text
+
+    source = str(path)
+    text = read_text(path)
+    if not looks_like_json(text):
+        return formation_from_helios_text(text, source, name=Path(path).stem)
+    document = parse_json(text, source)
+    if not isinstance(document, dict) or not is_helios_layout(document):
+        raise FormationError(
+            source,
+            "not a helios-base formation: neither a JSON file with a 'method' field nor an agent2d text "
+            "file starting 'Formation DelaunayTriangulation' or 'Formation Static'",
+        )
+    return formation_from_helios(document, source, name=Path(path).stem)
+
+
 def load(path: str | os.PathLike[str]) -> Formation:
     """Read one formation from *path*, in our JSON layout or helios-base's."""
     result = read_any(path)

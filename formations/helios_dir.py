@@ -24,8 +24,8 @@ e.g. ``{"before-kick-off": "our_set_play"}``.
 
 A set needs the same roles in every formation, so every member takes the
 roles (names, kinds, partners) of the normal formation; a file whose role
-names or pairs differ is noted in the report. Files may be in any layout
-:func:`formations.read_any` reads (agent2d text or helios JSON).
+names or pairs differ is noted in the report. Files may be in agent2d's text layouts or helios's JSON layout
+(:func:`formations.files.load_helios`).
 """
 
 from __future__ import annotations
@@ -91,7 +91,7 @@ def import_helios_directory(
     files claim one situation, or a placed file is malformed (the error names
     the file and line); ``OSError`` if the directory cannot be read.
     """
-    from formations.files import read_any
+    from formations.files import load_helios
 
     root = Path(directory)
     files = sorted(p for p in root.iterdir() if p.is_file() and p.suffix in FORMATION_SUFFIXES)
@@ -115,10 +115,7 @@ def import_helios_directory(
         raise FormationError(str(root), f"no normal formation (normal-formation.conf) in the directory (found: {found})")
     formations: dict[Situation, Formation] = {}
     for situation, path in placed.items():
-        item = read_any(path)
-        if not isinstance(item, Formation):
-            raise FormationError(str(path), "holds a formation set, not one formation")
-        formations[situation] = item
+        formations[situation] = load_helios(path)
     notes = []
     normal = formations[Situation.NORMAL]
     for situation, formation in formations.items():

@@ -4,8 +4,10 @@
   holds (samples, triangles, symmetry); exit 1 if it is malformed.
 * ``show FILE --ball X Y --out picture.png``: draw the field, triangulation,
   samples and the interpolated positions for one ball position.
-* ``import helios FILE OUT``: convert a helios-base / agent2d JSON formation
-  into this project's layout.
+* ``import helios FILE OUT``: convert a helios-base / agent2d formation (their
+  JSON layout or agent2d's text layouts) into this project's layout;
+  ``import helios DIR OUT`` converts a whole ``formations-dt`` directory into
+  one formation set and lists the files it could not place.
 
 FILE may also be the name of a built-in formation set (e.g. ``4-3-3``).
 Errors print one line naming the file and the problem: exit status 1 for a
@@ -26,14 +28,16 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     actions = parser.add_subparsers(dest="formation_action", metavar="ACTION", required=True)
 
     validate = actions.add_parser("validate", help="check a formation or formation-set file")
-    validate.add_argument("file", metavar="FILE", help="formation JSON file (ours or helios-base's) or built-in name")
+    validate.add_argument(
+        "file", metavar="FILE", help="formation file (ours, helios-base JSON or agent2d text) or built-in name"
+    )
     validate.add_argument(
         "--require-symmetry", action="store_true", help="also fail if the samples are not mirror-symmetric"
     )
     validate.set_defaults(func=run_validate)
 
     show = actions.add_parser("show", help="draw a formation for one ball position")
-    show.add_argument("file", metavar="FILE", help="formation JSON file or built-in name")
+    show.add_argument("file", metavar="FILE", help="formation file (any layout validate reads) or built-in name")
     show.add_argument(
         "--ball",
         nargs=2,
@@ -47,13 +51,29 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         default="normal",
         help="which formation of a set to draw (normal, attack, defend, our_set_play, their_set_play)",
     )
-    show.add_argument("--out", required=True, metavar="PICTURE", help="output picture, e.g. picture.png")
+    show.add_argument(
+        "--out",
+        required=True,
+        metavar="PICTURE",
+        help="output picture, e.g. picture.png (.png is added to a name without extension; "
+        "an existing directory receives NAME-SITUATION.png)",
+    )
     show.set_defaults(func=run_show)
 
     imports = actions.add_parser("import", help="convert another program's formation file")
     imports.add_argument("layout", choices=["helios"], help="layout of the input file")
-    imports.add_argument("file", metavar="FILE", help="input file")
-    imports.add_argument("out", metavar="OUT", help="output file (this project's JSON layout)")
+    imports.add_argument("file", metavar="FILE", help="input file, or an agent2d formations-dt directory")
+    imports.add_argument(
+        "out", metavar="OUT", help="output file (this project's JSON layout; a formation set for a directory)"
+    )
+    imports.add_argument(
+        "--map",
+        action="append",
+        default=[],
+        metavar="FILE=SITUATION",
+        help="with a directory: place FILE (e.g. before-kick-off) in SITUATION (e.g. our_set_play); repeatable",
+    )
+    imports.add_argument("--name", default=None, help="with a directory: name of the set (default: the directory's)")
     imports.set_defaults(func=run_import)
 
 
@@ -106,11 +126,13 @@ def run_show(args: argparse.Namespace) -> int:
     ball = (float(args.ball[0]), float(args.ball[1]))
     if not all(math.isfinite(v) for v in ball):
         return _fail(f"--ball must be two finite numbers (metres), got {ball[0]:g} {ball[1]:g}", 2)
+    label = (formation.name if isinstance(item, Formation) else item.name) or Path(args.file).stem
+    out = _picture_path(args.out, label, args.situation, isinstance(item, Formation))
     try:
-        positions = save_picture(formation, ball, args.out)
+        positions = save_picture(formation, ball, out)
     except (OSError, ValueError) as error:
-        return _fail(_os_message(args.out, error) if isinstance(error, OSError) else f"{args.out}: {error}", 2)
-    print(f"wrote {args.out}")
+        return _fail(_os_message(str(out), error) if isinstance(error, OSError) else f"{out}: {error}", 2)
+    print(f"wrote {out}")
     for role, (x, y) in zip(formation.roles, positions):
         print(f"  {role.number:>2} {role.name:<26} ({x:7.2f}, {y:7.2f})")
     return 0
@@ -118,14 +140,14 @@ def run_show(args: argparse.Namespace) -> int:
 
 def run_import(args: argparse.Namespace) -> int:
     from formations import FormationError
-    from formations.files import read_json, save
-    from formations.helios import formation_from_helios, is_helios_layout
+    from formations.files import load_helios, save
 
+    if os.path.isdir(args.file):
+        return _import_directory(args)
+    if args.map or args.name is not None:
+        return _fail("--map and --name apply to a directory import only", 2)
     try:
-        document = read_json(args.file)
-        if not isinstance(document, dict) or not is_helios_layout(document):
-            raise FormationError(args.file, "not a helios-base formation (no 'method' field at the top level)")
-        formation = formation_from_helios(document, args.file, name=Path(args.file).stem)
+        formation = load_helios(args.file)
     except FormationError as error:
         return _fail(str(error), 1)
     except OSError as error:
@@ -136,6 +158,61 @@ def run_import(args: argparse.Namespace) -> int:
         return _fail(_os_message(args.out, error), 2)
     print(f"wrote {args.out}: {len(formation.roles)} roles, {formation.n_samples} samples")
     return 0
+
+
+def _import_directory(args: argparse.Namespace) -> int:
+    from formations import FormationError
+    from formations.files import save
+    from formations.formation_set import Situation
+    from formations.helios_dir import import_helios_directory
+
+    mapping = {}
+    for entry in args.map:
+        key, sep, value = entry.partition("=")
+        if not sep or not key or not value:
+            return _fail(f"--map takes FILE=SITUATION (e.g. before-kick-off=our_set_play), got {entry!r}", 2)
+        mapping[key] = value
+    try:
+        result = import_helios_directory(args.file, name=args.name, mapping=mapping)
+    except FormationError as error:
+        return _fail(str(error), 1)
+    except OSError as error:
+        return _fail(_os_message(args.file, error), 2)
+    out = Path(args.out)
+    if out.is_dir():
+        out = out / f"{result.formation_set.name}.json"
+    try:
+        save(result.formation_set, out)
+    except OSError as error:
+        return _fail(_os_message(str(out), error), 2)
+    print(f"wrote {out}: formation set {result.formation_set.name!r}")
+    for situation in Situation:
+        if situation not in result.placed:
+            continue
+        path = result.placed[situation]
+        formation = result.formation_set.formation(situation)
+        print(f"  {situation.value:<15} <- {path.name} ({formation.n_samples} samples)")
+    missing = [s.value for s in Situation if s not in result.placed]
+    if missing:
+        print(f"  {', '.join(missing)}: no file; the normal formation is used")
+    for note in result.notes:
+        print(f"  note: {note}")
+    if result.left_out:
+        count = len(result.left_out)
+        print(f"not placed ({count} file{'s' if count > 1 else ''}):")
+        for path, reason in result.left_out.items():
+            print(f"  {path.name}: {reason}")
+    return 0
+
+
+def _picture_path(out: str, name: str, situation: str, single: bool) -> Path:
+    """Where ``show --out`` writes: into an existing directory as NAME[-SITUATION].png, and
+    with ``.png`` added to a name without extension (what matplotlib would write anyway)."""
+    path = Path(out)
+    if path.is_dir():
+        stem = name if single else f"{name}-{situation}"
+        return path / f"{stem}.png"
+    return path if path.suffix else path.with_name(path.name + ".png")
 
 
 def _read(name: str):
