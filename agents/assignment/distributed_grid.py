@@ -1,0 +1,438 @@
+"""GRID ASSGMT: cell leaders count free targets and guide unassigned agents to them.
+
+From "Monotonic Target Assignment for Robotic Networks" (Smith and Bullo),
+Section VI and Appendix B. The square environment is cut into ``b x b`` cells
+with ``b = ceil(sqrt(5) * side / r_comm)``, so that any two points in the same
+or in edge-adjacent cells are within ``r_comm`` (Lemma 2.3): every message
+below (agent to leader, leader to leader of the cell above or, in the top row,
+to the left) is between such points. Rows are numbered from the top (row 0 at
+``y = side``), columns from the left.
+
+* Role assignment: the agents in a cell match themselves greedily to the
+  cell's targets (MAXIMAL MATCH: closest pair first); the matched agent with the
+  smallest id becomes the cell's leader. A cell with targets and no agent gets
+  its leader when the first agents arrive.
+* Leaders keep ``delta`` (targets minus agents in the cell), ``below`` (an
+  estimate, initially +infinity, of the same difference summed over the cells
+  below in the column) and, in the top row, ``right`` (summed over all columns
+  to the right); each round a leader sends ``below + delta`` up and, in the top
+  row, ``right + below + delta`` left, and corrects its estimates with the
+  enter / exit messages of agents crossing its borders.
+* An unassigned agent asks the leader of the cell it has just reached for a
+  free target; failing that, it walks down its column while the leader grants
+  "free targets below" (at most ``below`` grants per round), back up otherwise,
+  and along the top row to the next column (right while the leader grants
+  "free targets to the right", else left), skipping columns it knows full.
+  Agents move from cell centre to cell centre at full speed.
+
+Where the paper is silent: a cell without targets has no leader, so its
+estimates are unknown and a question asked there gets the optimistic answer
+(as if the estimate were +infinity: "yes" whenever there is a cell below /
+to the right); an agent whose top-row walk has no further column stops (only
+when agents outnumber targets); when a cell's first agents arrive, the
+targets free in it are matched to the agents arriving that round; a leader
+gives a querying agent its nearest free target.
+
+State is held in arrays: per agent (position, role, target, current cell,
+directions, the columns it knows full) and per cell (leader, the three
+estimates, the round's enter / exit counts); one numba kernel runs a round.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from .distributed_model import DistributedResult, NetworkModel, move_toward
+
+#: Stands for "+infinity" in the leaders' integer estimates (sums of a few stay far from overflow).
+UNKNOWN = 1 << 40
+
+SEARCHING, ASSIGNED, STOPPED = 0, 1, 2
+
+
+def cells_per_side(side: float, r_comm: float) -> int:
+    """``b`` of Lemma 2.3: cells per side so that points in adjacent cells are within ``r_comm``."""
+    return max(1, math.ceil(math.sqrt(5.0) * side / r_comm))
+
+
+@njit(cache=True, nogil=True)
+def _cell_of(x: float, y: float, side: float, b: int) -> int:
+    """Cell id ``row * b + col`` of a point (a point on a border goes to the cell right / below)."""
+    s = side / b
+    col = min(int(x / s), b - 1)
+    row = min(int((side - y) / s), b - 1)
+    return row * b + col
+
+
+@njit(cache=True, nogil=True)
+def _centre(cell: int, side: float, b: int) -> tuple[float, float]:
+    s = side / b
+    row = cell // b
+    col = cell % b
+    return (col + 0.5) * s, side - (row + 0.5) * s
+
+
+@njit(cache=True, nogil=True)
+def _note(stats: np.ndarray, positions: np.ndarray, a: int, c: int) -> None:
+    """Count one message from agent ``a`` to agent ``c`` and track the longest."""
+    dx = positions[a, 0] - positions[c, 0]
+    dy = positions[a, 1] - positions[c, 1]
+    d = np.sqrt(dx * dx + dy * dy)
+    stats[0] += 1.0
+    if d > stats[1]:
+        stats[1] = d
+
+
+@njit(cache=True, nogil=True)
+def _role_assignment(
+    cell: int, deciders: np.ndarray, count: int, positions: np.ndarray, targets: np.ndarray,
+    cell_ptr: np.ndarray, cell_targets: np.ndarray, taken: np.ndarray,
+    role: np.ndarray, target: np.ndarray, deciding: np.ndarray, stats: np.ndarray,
+) -> int:
+    """MAXIMAL MATCH between the cell's deciding agents and its free targets; returns the
+    leader (smallest matched id) or -1 when nothing could be matched."""
+    lo, hi = cell_ptr[cell], cell_ptr[cell + 1]
+    free = 0
+    for e in range(lo, hi):
+        if not taken[cell_targets[e]]:
+            free += 1
+    if free == 0 or count == 0:
+        return -1
+    for p in range(count):  # everyone hears everyone in the cell (one broadcast each)
+        for q in range(count):
+            if p != q:
+                _note(stats, positions, deciders[p], deciders[q])
+    pairs = count * free
+    dist = np.empty(pairs)
+    pa = np.empty(pairs, dtype=np.int64)
+    pt = np.empty(pairs, dtype=np.int64)
+    k = 0
+    for p in range(count):
+        a = deciders[p]
+        for e in range(lo, hi):
+            t = cell_targets[e]
+            if taken[t]:
+                continue
+            dx = positions[a, 0] - targets[t, 0]
+            dy = positions[a, 1] - targets[t, 1]
+            dist[k] = np.sqrt(dx * dx + dy * dy)
+            pa[k] = a
+            pt[k] = t
+            k += 1
+    order = np.argsort(dist, kind="mergesort")  # ties: smaller agent id, then target order
+    leader = -1
+    for q in range(pairs):
+        a = pa[order[q]]
+        t = pt[order[q]]
+        if role[a] != SEARCHING or taken[t]:
+            continue
+        role[a] = ASSIGNED
+        target[a] = t
+        taken[t] = True
+        deciding[a] = False
+        if leader < 0 or a < leader:
+            leader = a
+    return leader
+
+
+@njit(cache=True, nogil=True)
+def _nearest_free(a: int, cell: int, positions: np.ndarray, targets: np.ndarray,
+                  cell_ptr: np.ndarray, cell_targets: np.ndarray, taken: np.ndarray) -> int:
+    best = -1
+    best_d = np.inf
+    for e in range(cell_ptr[cell], cell_ptr[cell + 1]):
+        t = cell_targets[e]
+        if taken[t]:
+            continue
+        dx = positions[a, 0] - targets[t, 0]
+        dy = positions[a, 1] - targets[t, 1]
+        d = dx * dx + dy * dy
+        if d < best_d:
+            best_d = d
+            best = t
+    return best
+
+
+@njit(cache=True, nogil=True)
+def _grid_round(
+    b: int, side: float, positions: np.ndarray, targets: np.ndarray,
+    cell_ptr: np.ndarray, cell_targets: np.ndarray, taken: np.ndarray,
+    role: np.ndarray, target: np.ndarray, currcell: np.ndarray, dircol: np.ndarray, dirrow: np.ndarray,
+    colfull: np.ndarray, deciding: np.ndarray,
+    leader: np.ndarray, delta: np.ndarray, below: np.ndarray, right: np.ndarray, cell_agents: np.ndarray,
+    stats: np.ndarray,
+) -> None:
+    """One communication round: leaders' messages, role assignment in newly reached cells,
+    the decisions of the agents that have reached a cell centre, and the leaders' updates."""
+    cells = b * b
+    n = positions.shape[0]
+    # (a) Broadcasts of the leaders in office at the start of the round.
+    up_msg = np.zeros(cells, dtype=np.int64)
+    left_msg = np.zeros(cells, dtype=np.int64)
+    sent = np.zeros(cells, dtype=np.bool_)
+    for cell in range(cells):
+        if leader[cell] >= 0:
+            sent[cell] = True
+            up_msg[cell] = below[cell] + delta[cell]
+            if cell < b:
+                left_msg[cell] = right[cell] + below[cell] + delta[cell]
+    for cell in range(cells):
+        if not sent[cell]:
+            continue
+        if cell >= b and sent[cell - b]:
+            _note(stats, positions, leader[cell], leader[cell - b])
+        if cell < b and cell % b > 0 and sent[cell - 1]:
+            _note(stats, positions, leader[cell], leader[cell - 1])
+    # (b) Role assignment where the first agents reach a leaderless cell that has targets.
+    counts = np.zeros(cells + 1, dtype=np.int64)
+    for a in range(n):
+        if deciding[a] and role[a] == SEARCHING:
+            counts[currcell[a] + 1] += 1
+    for cell in range(cells):
+        counts[cell + 1] += counts[cell]
+    fill = counts[:-1].copy()
+    deciders = np.empty(counts[cells], dtype=np.int64)
+    for a in range(n):  # ids ascending within each cell
+        if deciding[a] and role[a] == SEARCHING:
+            deciders[fill[currcell[a]]] = a
+            fill[currcell[a]] += 1
+    for cell in range(cells):
+        lo, hi = counts[cell], counts[cell + 1]
+        if leader[cell] >= 0 or hi == lo or cell_ptr[cell + 1] == cell_ptr[cell]:
+            continue
+        chosen = _role_assignment(cell, deciders[lo:hi], hi - lo, positions, targets, cell_ptr, cell_targets,
+                                  taken, role, target, deciding, stats)
+        if chosen >= 0:
+            leader[cell] = chosen
+            row, col = cell // b, cell % b
+            delta[cell] = (cell_ptr[cell + 1] - cell_ptr[cell]) - cell_agents[cell]
+            below[cell] = 0 if row == b - 1 else UNKNOWN
+            right[cell] = 0 if col == b - 1 else UNKNOWN
+    # (c) Decisions, in id order; each touches only its cell's leader and its own state.
+    yes_below = np.zeros(cells, dtype=np.int64)
+    yes_right = np.zeros(cells, dtype=np.int64)
+    enters = np.zeros(cells, dtype=np.int64)
+    exits = np.zeros(cells, dtype=np.int64)
+    in_from_below = np.zeros(cells, dtype=np.int64)
+    out_to_below = np.zeros(cells, dtype=np.int64)
+    in_from_right = np.zeros(cells, dtype=np.int64)
+    out_to_right = np.zeros(cells, dtype=np.int64)
+    for a in range(n):
+        if not deciding[a] or role[a] != SEARCHING:
+            continue
+        cell = currcell[a]
+        row, col = cell // b, cell % b
+        boss = leader[cell]
+        if boss >= 0:
+            _note(stats, positions, a, boss)
+            _note(stats, positions, boss, a)
+            t = _nearest_free(a, cell, positions, targets, cell_ptr, cell_targets, taken)
+            if t >= 0:
+                role[a] = ASSIGNED
+                target[a] = t
+                taken[t] = True
+                deciding[a] = False
+                continue
+        new = -1
+        top_row_turn = False
+        if dircol[a] == 1:
+            granted = False
+            if row < b - 1:
+                if boss < 0:
+                    granted = True
+                elif yes_below[cell] < below[cell]:
+                    granted = True
+                    yes_below[cell] += 1
+            if granted:
+                new = cell + b
+            else:
+                dircol[a] = -1
+                if row > 0:
+                    new = cell - b
+                else:
+                    top_row_turn = True
+        elif row > 0:
+            new = cell - b
+        else:
+            top_row_turn = True
+        if top_row_turn:
+            if dirrow[a] == 1:
+                colfull[a, col] = True
+                granted = False
+                if col < b - 1:
+                    if boss < 0:
+                        granted = True
+                    elif yes_right[cell] < right[cell]:
+                        granted = True
+                        yes_right[cell] += 1
+                if granted:
+                    new = cell + 1
+                else:
+                    dirrow[a] = -1
+                    for c2 in range(col + 1, b):
+                        colfull[a, c2] = True
+                    if col > 0:
+                        new = cell - 1
+            elif col > 0:
+                new = cell - 1
+            if new >= 0 and not colfull[a, new % b]:
+                dircol[a] = 1
+        if new < 0:
+            role[a] = STOPPED  # no column left to search
+            deciding[a] = False
+            continue
+        # Leave `cell` for `new`: exit to this cell's leader, enter to the new cell's leader.
+        exits[cell] += 1
+        enters[new] += 1
+        cell_agents[cell] -= 1
+        cell_agents[new] += 1
+        if new == cell + b:
+            out_to_below[cell] += 1
+        elif new == cell - b:
+            in_from_below[new] += 1
+        elif new == cell + 1:
+            out_to_right[cell] += 1
+        else:
+            in_from_right[new] += 1
+        if boss >= 0:
+            _note(stats, positions, a, boss)
+        if leader[new] >= 0:
+            _note(stats, positions, a, leader[new])
+        currcell[a] = new
+        deciding[a] = False
+    # (d) Leaders update their estimates from the messages of this round.
+    for cell in range(cells):
+        if leader[cell] < 0:
+            continue
+        row, col = cell // b, cell % b
+        if row == 0:
+            if col < b - 1 and sent[cell + 1]:
+                right[cell] = left_msg[cell + 1]
+            right[cell] += in_from_right[cell] - out_to_right[cell]
+            if right[cell] > 0 and in_from_right[cell] > 0:
+                right[cell] = 0
+        if row < b - 1 and sent[cell + b]:
+            below[cell] = up_msg[cell + b]
+        below[cell] += in_from_below[cell] - out_to_below[cell]
+        if below[cell] > 0 and in_from_below[cell] > 0:
+            below[cell] = 0
+        delta[cell] += exits[cell] - enters[cell]
+
+
+@njit(cache=True, nogil=True)
+def _set_goals(b: int, side: float, positions: np.ndarray, targets: np.ndarray, role: np.ndarray,
+               target: np.ndarray, currcell: np.ndarray, deciding: np.ndarray,
+               goals: np.ndarray, moving: np.ndarray) -> None:
+    for a in range(positions.shape[0]):
+        if role[a] == ASSIGNED:
+            goals[a, 0] = targets[target[a], 0]
+            goals[a, 1] = targets[target[a], 1]
+            moving[a] = True
+        elif role[a] == SEARCHING and not deciding[a]:
+            cx, cy = _centre(currcell[a], side, b)
+            goals[a, 0] = cx
+            goals[a, 1] = cy
+            moving[a] = True
+        else:
+            moving[a] = False
+
+
+@njit(cache=True, nogil=True)
+def _after_motion(positions: np.ndarray, goals: np.ndarray, role: np.ndarray, deciding: np.ndarray) -> int:
+    """Mark searching agents that reached their cell centre as deciding; return how many
+    assigned agents stand on their target."""
+    settled = 0
+    for a in range(positions.shape[0]):
+        on_goal = positions[a, 0] == goals[a, 0] and positions[a, 1] == goals[a, 1]
+        if role[a] == ASSIGNED and on_goal:
+            settled += 1
+        elif role[a] == SEARCHING and not deciding[a] and on_goal:
+            deciding[a] = True
+    return settled
+
+
+def simulate_grid(
+    agents: np.ndarray,
+    targets: np.ndarray,
+    model: NetworkModel,
+    max_time: float | None,
+    record_trace: bool,
+) -> DistributedResult:
+    """Run GRID ASSGMT from the given positions until the assignment is complete or ``max_time``.
+
+    ``agents`` ``(n, 2)`` and ``targets`` ``(m, 2)`` are checked float arrays inside the
+    environment, ``n, m >= 1``. With ``max_time=None`` the limit is the paper's worst-case
+    path (up and down every column and along the top row, Theorem 6.5) plus one round per
+    cell visited, with a margin; not completing within it would be a defect.
+    """
+    n, m = agents.shape[0], targets.shape[0]
+    side = model.side
+    b = cells_per_side(side, model.r_comm)
+    cells = b * b
+    if max_time is None:
+        path = 2.0 * side * (b + 2) + math.sqrt(2.0) * side
+        visits = 2 * b * b + 2 * b + 2
+        max_time = 2.0 * (path / model.v_max + 2 * visits * model.round_time) + 4.0 * model.round_time
+    max_rounds = int(math.ceil(max_time / model.round_time))
+
+    target_cell = np.array([_cell_of(x, y, side, b) for x, y in targets], dtype=np.int64)
+    cell_targets = np.argsort(target_cell, kind="stable").astype(np.int64)
+    cell_ptr = np.zeros(cells + 1, dtype=np.int64)
+    np.cumsum(np.bincount(target_cell, minlength=cells), out=cell_ptr[1:])
+
+    positions = agents.copy()
+    currcell = np.array([_cell_of(x, y, side, b) for x, y in positions], dtype=np.int64)
+    cell_agents = np.bincount(currcell, minlength=cells).astype(np.int64)
+    role = np.full(n, SEARCHING, dtype=np.int64)
+    target = np.full(n, -1, dtype=np.int64)
+    dircol = np.ones(n, dtype=np.int64)
+    dirrow = np.ones(n, dtype=np.int64)
+    colfull = np.zeros((n, b), dtype=np.bool_)
+    deciding = np.ones(n, dtype=np.bool_)
+    taken = np.zeros(m, dtype=np.bool_)
+    leader = np.full(cells, -1, dtype=np.int64)
+    delta = np.zeros(cells, dtype=np.int64)
+    below = np.zeros(cells, dtype=np.int64)
+    right = np.zeros(cells, dtype=np.int64)
+    stats = np.zeros(2)
+    travelled = np.zeros(n)
+    arrived_at = np.zeros(n)
+    goals = positions.copy()
+    moving = np.zeros(n, dtype=np.bool_)
+    need = min(n, m)
+    trace = [positions.copy()] if record_trace else None
+
+    rounds = 0
+    completed = False
+    while not completed and rounds < max_rounds:
+        now = rounds * model.round_time
+        _grid_round(b, side, positions, targets, cell_ptr, cell_targets, taken, role, target, currcell,
+                    dircol, dirrow, colfull, deciding, leader, delta, below, right, cell_agents, stats)
+        _set_goals(b, side, positions, targets, role, target, currcell, deciding, goals, moving)
+        move_toward(positions, goals, moving, model.step, travelled, arrived_at, now, model.v_max)
+        rounds += 1
+        if record_trace:
+            trace.append(positions.copy())
+        completed = _after_motion(positions, goals, role, deciding) == need
+    assigned = role == ASSIGNED
+    on_target = assigned & (positions == targets[np.maximum(target, 0)]).all(axis=1)
+    target_of = np.where(on_target, target, -1)
+    arrival_times = np.where(on_target, arrived_at, np.nan)
+    completion_time = float(arrival_times[on_target].max(initial=0.0)) if completed else float("nan")
+    return DistributedResult(
+        algorithm="grid",
+        target_of=target_of,
+        completed=completed,
+        completion_time=completion_time,
+        rounds=rounds,
+        distances=travelled,
+        arrival_times=arrival_times,
+        positions=positions,
+        messages=int(stats[0]),
+        max_message_distance=float(stats[1]),
+        model=model,
+        trace=np.stack(trace) if record_trace else None,
+    )
