@@ -15,9 +15,14 @@ makespan, then least sum of squared distances: collision-free), from
 "SCRAM: Scalable Collision-avoiding Role Assignment with Minimal-makespan for
 Formational Positioning"; and the baselines ``"msd"``, ``"msd2"``,
 ``"bottleneck"``, ``"greedy"``, ``"random"``.
+
+:func:`distributed_assign` simulates agents with a limited communication range
+that divide targets among themselves while moving (ETSP ASSGMT and GRID ASSGMT
+from "Monotonic Target Assignment for Robotic Networks").
 """
 
 from .api import MMDR_ALGORITHMS, METHOD_ALIASES, METHODS, assign, assign_costs
+from .distributed import DISTRIBUTED_ALGORITHMS, DistributedResult, distributed_assign
 from .errors import AssignmentError
 from .result import AssignmentResult
 
@@ -29,4 +34,7 @@ __all__ = [
     "AssignmentResult",
     "assign",
     "assign_costs",
+    "DISTRIBUTED_ALGORITHMS",
+    "DistributedResult",
+    "distributed_assign",
 ]
