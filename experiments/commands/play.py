@@ -1,5 +1,11 @@
-"""``soccer-sim play [HOME] [AWAY] --seed N [--cycles N]``: play one match, print the score and
-both teams' statistics."""
+"""``soccer-sim play [HOME] [AWAY] --seed N [--cycles N] [--json]``: play one match and print its
+report: half-time and final score, the goals (cycle, team, scorer's shirt number), set plays of
+each kind, offside calls and both teams' statistics; ``--json`` prints the same as one JSON object.
+
+``--cycles`` up to a regulation match (2 x 3000 cycles) stops the match early; a longer count
+lengthens both halves to half of it each (half time stays in the middle). Ctrl-C stops the match
+with the message "interrupted" and exit status 130.
+"""
 
 from __future__ import annotations
 
@@ -15,7 +21,9 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("away", nargs="?", default="chaser", help="away team (default: chaser)")
     parser.add_argument("--seed", type=int, default=0, help="match seed (default: 0)")
     parser.add_argument("--cycles", type=positive_int, default=None,
-                        help="stop after this many cycles (default: the full two halves)")
+                        help="stop after this many cycles (default: the full two halves of 3000); more than "
+                             "6000 lengthens both halves to half of it each")
+    parser.add_argument("--json", action="store_true", help="print the match report as one JSON object")
     parser.set_defaults(func=run)
 
 
@@ -27,35 +35,89 @@ def positive_int(text: str) -> int:
     return value
 
 
+def match_config(cycles: int | None):
+    """The MatchConfig for ``--cycles``: regulation halves, stopped early at *cycles*, or two
+    halves of ceil(cycles / 2) when *cycles* is longer than a regulation match."""
+    from dataclasses import replace
+
+    from soccer_sim import MatchConfig, RuleConfig
+
+    rules = RuleConfig()
+    if cycles is not None and cycles > 2 * rules.half_cycles:
+        rules = replace(rules, half_cycles=(cycles + 1) // 2)
+    return MatchConfig(rules=rules, max_cycles=cycles)
+
+
 def run(args: argparse.Namespace) -> int:
+    import json
+    import sys
     import time
 
     from rich.console import Console
-    from rich.table import Table
+    from rich.markup import escape
 
-    from soccer_sim import ConfigError, MatchConfig, TeamError, TeamNotFoundError, run_match
+    from experiments.match_report import match_report
+    from soccer_sim import ConfigError, TeamError, TeamNotFoundError, run_match
 
     console = Console()
     try:
-        config = MatchConfig(max_cycles=args.cycles)
+        config = match_config(args.cycles)
         start = time.perf_counter()
         result = run_match(args.home, args.away, seed=args.seed, config=config)
         elapsed = time.perf_counter() - start
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return 130
     except (TeamNotFoundError, TeamError, ConfigError, ValueError) as exc:
-        console.print(f"[red]error:[/red] {exc}")
+        console.print(f"[red]error:[/red] {escape(str(exc))}")
         return 2
-    home_name, away_name = result.team_names
-    console.print(f"[bold]{home_name} {result.score[0]} - {result.score[1]} {away_name}[/bold]  "
-                  f"(seed {result.seed}, {result.cycles} cycles, {elapsed:.2f} s)")
+    report = match_report(result)
+    if args.json:
+        print(json.dumps(report.as_dict(), indent=2))
+        return 0
+    _print_report(console, report, elapsed)
+    return 0
+
+
+def _print_report(console, report, elapsed: float) -> None:
+    """The report as a person reads it (team names escaped: rich would take [..] for markup)."""
+    from rich.markup import escape
+    from rich.table import Table
+
+    from experiments.match_report import SIDES
+
+    names = [escape(name) for name in report.team_names]
+    half = report.half_time_score
+    half_text = f"half time {half[0]} - {half[1]}" if half is not None else "stopped before half time"
+    console.print(f"[bold]{names[0]} {report.score[0]} - {report.score[1]} {names[1]}[/bold]  "
+                  f"({half_text}; seed {report.seed}, {report.cycles} cycles, {elapsed:.2f} s)")
+    if report.goals:
+        goals = Table(title="Goals")
+        for column in ("cycle", "team", "scorer (shirt)", "score"):
+            goals.add_column(column, justify="right" if column != "team" else "left")
+        score = [0, 0]
+        for goal in report.goals:
+            score[goal.team] += 1
+            shirt = "-" if goal.shirt is None else f"#{goal.shirt}"
+            if goal.own_goal:
+                shirt = f"own goal by {SIDES[1 - goal.team]} {shirt}"
+            goals.add_row(str(goal.cycle), f"{names[goal.team]} ({SIDES[goal.team]})", shirt,
+                          f"{score[0]} - {score[1]}")
+        console.print(goals)
     table = Table(title="Statistics")
     table.add_column("")
-    table.add_column(f"{home_name} (home)", justify="right")
-    table.add_column(f"{away_name} (away)", justify="right")
-    home, away = (stats.as_dict() for stats in result.statistics)
+    table.add_column(f"{names[0]} (home)", justify="right")
+    table.add_column(f"{names[1]} (away)", justify="right")
+    home, away = report.statistics
     for key in list(home) + [k for k in away if k not in home]:
         table.add_row(key.replace("_", " "), _format(key, home.get(key)), _format(key, away.get(key)))
+    table.add_section()
+    for key in report.set_plays[0]:
+        table.add_row(key.replace("_", " ") + "s", str(report.set_plays[0][key]), str(report.set_plays[1][key]))
+    table.add_row("offsides", str(report.offsides[0]), str(report.offsides[1]))
     console.print(table)
-    return 0
+    if report.drop_balls:
+        console.print(f"{report.drop_balls} set play(s) not taken in time: ball dropped")
 
 
 def _format(key: str, value: float | None) -> str:
