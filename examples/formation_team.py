@@ -1,10 +1,13 @@
 """A custom team in a few lines: hold a built-in formation, assign roles with MMD+MSD² every
 cycle, send the nearest player to the ball, and kick at the opponents' goal.
 
-It plays a short match against the built-in ``chaser`` team and prints the result.
-Run: python examples/formation_team.py [CYCLES]
+It plays a match against the built-in ``chaser`` team and prints the result.
+Run: python examples/formation_team.py [CYCLES] [FORMATION]
+(FORMATION: a built-in set such as 4-4-2, or a formation-set file such as one made by
+``soccer-sim formation import helios formations-dt/ my-team.json``)
 """
 
+import os
 import sys
 
 import numpy as np
@@ -17,8 +20,14 @@ from soccer_sim.state import SET_PLAYS, PlayMode
 
 
 class FormationTeam:
-    def __init__(self, system: str = "4-3-3", method: str = "mmd+msd2") -> None:
-        self.formation_set = formations.load_builtin(system)
+    def __init__(self, system: "str | formations.FormationSet" = "4-3-3", method: str = "mmd+msd2") -> None:
+        # A loaded FormationSet, a formation-set file, or the name of a built-in set.
+        if isinstance(system, formations.FormationSet):
+            self.formation_set = system
+        elif os.path.exists(system):
+            self.formation_set = formations.load_set(system)
+        else:
+            self.formation_set = formations.load_builtin(system)
         self.method = method
 
     def reset(self, side_info, config, rng) -> None:
@@ -51,5 +60,6 @@ class FormationTeam:
 
 if __name__ == "__main__":
     cycles = int(sys.argv[1]) if len(sys.argv) > 1 else 6000
-    result = soccer_sim.run_match(FormationTeam(), "chaser", seed=1, config=soccer_sim.MatchConfig(max_cycles=cycles))
+    system = sys.argv[2] if len(sys.argv) > 2 else "4-3-3"
+    result = soccer_sim.run_match(FormationTeam(system), "chaser", seed=1, config=soccer_sim.MatchConfig(max_cycles=cycles))
     print(f"formation team {result.score[0]} : {result.score[1]} chaser")

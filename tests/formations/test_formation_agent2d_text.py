@@ -234,3 +234,23 @@ def test_show_writes_the_file_it_names(tmp_path, capsys):
     assert cli(["formation", "show", "4-3-3", "--situation", "attack", "--out", str(folder)]) == 0
     assert f"wrote {folder / '4-3-3-attack.png'}" in capsys.readouterr().out
     assert (folder / "4-3-3-attack.png").read_bytes()[:4] == b"\x89PNG"
+
+
+def test_round_trip_directory_to_set_to_a_team_playing_with_it(tmp_path, capsys):
+    import runpy
+    from pathlib import Path
+
+    import soccer_sim
+
+    out = tmp_path / "my-team.json"
+    assert cli(["formation", "import", "helios", str(_directory(tmp_path)), str(out)]) == 0
+    capsys.readouterr()
+    examples = Path(__file__).resolve().parents[2] / "examples"
+    team_class = runpy.run_path(str(examples / "formation_team.py"))["FormationTeam"]
+    for team in (team_class(str(out)), team_class(formations.load_set(out))):
+        assert team.formation_set.formation("defend").n_samples == 11
+        result = soccer_sim.run_match(team, "idle", seed=1, config=soccer_sim.MatchConfig(max_cycles=200))
+        assert result.cycles == 200
+        # Players hold the imported shape: in play the team spreads over both wings.
+        view_y = result.state.pos[:11, 1]
+        assert view_y.max() - view_y.min() > 20.0
