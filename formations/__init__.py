@@ -8,7 +8,9 @@ team-relative frame: origin at the centre spot, attacking towards +x, y to the
 left (see :mod:`formations.field`).
 
 This package is pure: it imports only numpy and scipy (matplotlib lazily, for
-pictures), never the simulator.
+pictures), never the simulator. It reads helios-base / agent2d formation files
+(their JSON layout and agent2d's text layouts) and whole agent2d
+``formations-dt`` directories (:func:`import_helios_directory`).
 
 >>> import formations
 >>> team = formations.load_builtin("4-3-3")
@@ -19,13 +21,15 @@ pictures), never the simulator.
 from formations.builtin import builtin_names, load_builtin
 from formations.errors import FormationError
 from formations.field import STANDARD_FIELD, FieldDimensions
-from formations.files import load, load_set, read_any, save
+from formations.files import load, load_helios, load_set, read_any, save
 from formations.formation import Formation
 from formations.formation_set import FormationSet, Situation, parse_situation
+from formations.helios_dir import DirectoryImport, import_helios_directory
 from formations.roles import ROLE_KINDS, Role
 from formations.symmetry import asymmetries, mirror_complete
 
 __all__ = [
+    "DirectoryImport",
     "Formation",
     "FormationError",
     "FormationSet",
@@ -36,8 +40,10 @@ __all__ = [
     "Situation",
     "asymmetries",
     "builtin_names",
+    "import_helios_directory",
     "load",
     "load_builtin",
+    "load_helios",
     "load_set",
     "mirror_complete",
     "parse_situation",
