@@ -1,0 +1,78 @@
+"""Soccer skills for the built-in teams: interception, movement, kicks, passing, shooting,
+dribbling, clearing, goalkeeping and the on-ball decision.
+
+Everything works in the team-relative frame of :class:`soccer_sim.TeamView` (we attack +x,
+our goal line at ``x = -half_length``), in metres and cycles, and reads every physical number
+from the :class:`~soccer_sim.config.MatchConfig` through one :class:`MotionModel`, built once
+per match (e.g. in ``Team.reset``)::
+
+    from agents import skills
+
+    model = skills.MotionModel(config)                       # horizon=60 cycles by default
+    race = skills.ball_race(model, view)                     # who gets to the ball, when, where
+    race.ours.first, race.ours.first_cycle, race.ours.points[race.ours.first]
+    race.we_win, race.lead
+
+    caps = skills.speed_caps(model, view, urgent=near_ball)  # sprint only when it matters
+    skills.dash_to_points(model, view.own_pos, view.own_vel, targets, view.effort, caps,
+                          out=command.dash)                  # arrive and stop, all players
+
+    decision = skills.decide_on_ball(model, view, player)    # shoot / pass / dribble / clear
+    command.kick[player] = decision.kick
+    if decision.dash is not None:
+        command.dash[player] = decision.dash
+
+    keeper = skills.guard_position(model, view.ball)         # goalkeeper's guard point
+    command.catch = skills.should_catch(model, view, teammate_kicked_last=back_pass)
+    skills.distribute(model, view).kick                      # holding: pass or clear
+
+The API, by module:
+
+* :mod:`~agents.skills.model`: :class:`MotionModel` (reach table, ball rollout, sustainable
+  speed, field geometry), :class:`SkillInputError`.
+* :mod:`~agents.skills.interception`: :func:`intercept` (one team, one ball),
+  :func:`intercept_many` (many ball trajectories), :func:`ball_race` (both teams),
+  :data:`UNREACHABLE`.
+* :mod:`~agents.skills.movement`: :func:`dash_to_points`, :func:`speed_caps`.
+* :mod:`~agents.skills.kicking`: :func:`kickable`, :func:`kick_effectiveness`,
+  :func:`kick_for_velocity`.
+* :mod:`~agents.skills.lanes`: :func:`opponent_cycles`, :func:`teammate_cycles`,
+  :func:`lane_open` (is a pass lane safe?).
+* :mod:`~agents.skills.passing`: :func:`best_pass`, :func:`pass_candidates`,
+  :func:`offside_positions`, :class:`PassParams`, :class:`PassPlan`.
+* :mod:`~agents.skills.shooting`: :func:`best_shot`, :func:`aim_points`,
+  :class:`ShotParams`, :class:`ShotPlan`.
+* :mod:`~agents.skills.dribbling`: :func:`dribble`, :func:`dribble_directions`,
+  :class:`DribbleParams`, :class:`DribblePlan`.
+* :mod:`~agents.skills.clearing`: :func:`best_clearance`, :class:`ClearParams`,
+  :class:`ClearPlan`.
+* :mod:`~agents.skills.goalkeeping`: :func:`guard_position`, :func:`should_catch`,
+  :func:`distribute`, :class:`GoalieParams`.
+* :mod:`~agents.skills.decision`: :func:`decide_on_ball`, :class:`DecisionParams`,
+  :class:`BallDecision`, :class:`OnBallAction`.
+
+``soccer-sim bench skills`` is not part of this package; the timings of every call are
+measured by :mod:`agents.skills.timing` (``python -m agents.skills.timing``).
+"""
+
+from agents.skills.clearing import ClearParams, ClearPlan, best_clearance
+from agents.skills.decision import BallDecision, DecisionParams, OnBallAction, decide_on_ball
+from agents.skills.dribbling import DribbleParams, DribblePlan, dribble, dribble_directions
+from agents.skills.goalkeeping import Distribution, GoalieParams, distribute, guard_position, should_catch
+from agents.skills.interception import UNREACHABLE, BallRace, Interception, ball_race, intercept, intercept_many
+from agents.skills.kicking import kick_effectiveness, kick_for_velocity, kickable
+from agents.skills.lanes import lane_open, opponent_cycles, teammate_cycles
+from agents.skills.model import MotionModel, SkillInputError, view_effort
+from agents.skills.movement import dash_to_points, speed_caps
+from agents.skills.passing import PassParams, PassPlan, best_pass, offside_positions, pass_candidates
+from agents.skills.shooting import ShotParams, ShotPlan, aim_points, best_shot
+
+__all__ = [
+    "UNREACHABLE", "BallDecision", "BallRace", "ClearParams", "ClearPlan", "DecisionParams", "Distribution",
+    "DribbleParams", "DribblePlan", "GoalieParams", "Interception", "MotionModel", "OnBallAction", "PassParams",
+    "PassPlan", "ShotParams", "ShotPlan", "SkillInputError", "aim_points", "ball_race", "best_clearance",
+    "best_pass", "best_shot", "dash_to_points", "decide_on_ball", "distribute", "dribble", "dribble_directions",
+    "guard_position", "intercept", "intercept_many", "kick_effectiveness", "kick_for_velocity", "kickable",
+    "lane_open", "offside_positions", "opponent_cycles", "pass_candidates", "should_catch", "speed_caps",
+    "teammate_cycles", "view_effort",
+]

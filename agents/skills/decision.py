@@ -1,0 +1,99 @@
+"""The on-ball decision: shoot, pass, dribble or clear, for the player who can kick the ball.
+
+The order and thresholds (:class:`DecisionParams`):
+
+1. **Shoot** when the best shot's probability-like score clears ``ShotParams.threshold``
+   (:mod:`agents.skills.shooting`; out of range means no shot).
+2. **Pass** when the best safe pass (:mod:`agents.skills.passing`) scores at least
+   ``pass_good``.
+3. **Dribble** when no opponent can reach the ball within ``pressure_cycles`` and the best
+   dribbling direction keeps ``dribble_clearance`` metres of clearance.
+4. **Pass** to whoever is safely available (any score).
+5. **Clear** when under pressure or in our own part of the field (ball x below
+   ``clear_line``; a fraction of the half length, so -1/3 is our third).
+6. **Dribble** otherwise (the direction with most clearance, even if small).
+
+Under pressure means an opponent's interception of the ball (rolled with its current
+velocity) comes within ``pressure_cycles`` cycles.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from enum import Enum
+
+import numpy as np
+
+from agents.skills.clearing import ClearParams, best_clearance
+from agents.skills.dribbling import DribbleParams, dribble
+from agents.skills.interception import control_radii, intercept
+from agents.skills.model import MotionModel, check_player
+from agents.skills.passing import PassParams, best_pass
+from agents.skills.shooting import ShotParams, best_shot
+
+
+class OnBallAction(str, Enum):
+    """What the player on the ball does."""
+
+    SHOOT = "shoot"
+    PASS = "pass"
+    DRIBBLE = "dribble"
+    CLEAR = "clear"
+
+
+@dataclass(frozen=True)
+class DecisionParams:
+    """Thresholds of the on-ball decision (see the module docstring) and each skill's own."""
+
+    pass_good: float = 1.2
+    """A pass scoring at least this is preferred to dribbling."""
+    pressure_cycles: int = 3
+    """Under pressure when an opponent can control the ball within this many cycles."""
+    dribble_clearance: float = 1.0
+    """Dribble (rather than pass or clear) only with at least this clearance (m)."""
+    clear_line: float = -1.0 / 3.0
+    """Clear rather than dribble when the ball's x is below this fraction of the half length."""
+    shot: ShotParams = field(default_factory=ShotParams)
+    passing: PassParams = field(default_factory=PassParams)
+    dribbling: DribbleParams = field(default_factory=DribbleParams)
+    clearing: ClearParams = field(default_factory=ClearParams)
+
+
+@dataclass(frozen=True)
+class BallDecision:
+    """The chosen action: ``kick`` goes into the player's ``TeamCommand.kick`` row; ``dash`` is
+    the player's dash for a dribble (None otherwise: the team decides where it runs);
+    ``plan`` is the skill's own result (ShotPlan, PassPlan, DribblePlan or ClearPlan)."""
+
+    action: OnBallAction
+    kick: np.ndarray
+    dash: np.ndarray | None
+    plan: object
+    pressure: int
+    """Cycles until the fastest opponent controls the ball."""
+
+
+def decide_on_ball(model: MotionModel, view: object, player: int, params: DecisionParams = DecisionParams()) -> BallDecision:
+    """Choose what ``player`` (who can kick the ball) does with it this cycle."""
+    player = check_player(player, model.players_per_team)
+    holder = view.ball_holder == player
+    radius, catch = control_radii(model, model.goalie_index)
+    pressure = intercept(model, view.ball, view.ball_vel, view.opp_pos, view.opp_vel, None, radius, catch,
+                         1.0).first_cycle
+    under_pressure = pressure <= params.pressure_cycles
+
+    shot = best_shot(model, view, player, params.shot, holder)
+    if shot is not None and shot.take:
+        return BallDecision(OnBallAction.SHOOT, shot.kick, None, shot, pressure)
+    pass_plan = best_pass(model, view, player, params.passing, holder)
+    if pass_plan is not None and pass_plan.score >= params.pass_good:
+        return BallDecision(OnBallAction.PASS, pass_plan.kick, None, pass_plan, pressure)
+    dribble_plan = dribble(model, view, player, params.dribbling)
+    if not under_pressure and dribble_plan.clearance >= params.dribble_clearance and not holder:
+        return BallDecision(OnBallAction.DRIBBLE, dribble_plan.kick, dribble_plan.dash, dribble_plan, pressure)
+    if pass_plan is not None:
+        return BallDecision(OnBallAction.PASS, pass_plan.kick, None, pass_plan, pressure)
+    if under_pressure or holder or float(view.ball[0]) < params.clear_line * model.half_length:
+        clear = best_clearance(model, view, player, params.clearing, holder)
+        return BallDecision(OnBallAction.CLEAR, clear.kick, None, clear, pressure)
+    return BallDecision(OnBallAction.DRIBBLE, dribble_plan.kick, dribble_plan.dash, dribble_plan, pressure)

@@ -1,0 +1,133 @@
+"""Dribbling: small kicks that keep the ball just ahead of a running player.
+
+**Direction.** A fan of directions around the line to the opponents' goal centre (``fan``
+directions over ``± spread_deg``) is scored. Along each, probe points at ``probes`` metres
+ahead are reached by the dribbler after ``distance / speed`` cycles; an opponent threatens a
+probe point when its reachable disc at that cycle (coast point, ``reach(k)``, plus the
+kickable distance) comes near it. A direction's **clearance** is the smallest margin (m) over
+probe points and opponents; its score is ``min(clearance, clearance_cap) / clearance_cap +
+goal_weight * cos(angle to the goal)``. Directions whose farthest probe leaves the field
+(less ``field_margin``) are excluded.
+
+**Kick and dash.** The dribbler dashes so that this cycle's displacement is ``speed`` along
+the direction (clipped to its acceleration); the kick sends the ball to the point ``lead``
+ahead of where the dribbler will be after this cycle, so after the move the ball is again
+between the body and the edge of the kickable area (never touching the body, which in
+rcssserver contact mode would stop both). Repeating it every cycle keeps the ball in reach.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from agents.skills.kicking import kick_for_velocity, kickable
+from agents.skills.model import MotionModel, check_player, view_effort
+
+
+@dataclass(frozen=True)
+class DribbleParams:
+    """Tunable choices of the dribbling skill (metres, m/cycle, degrees)."""
+
+    fan: int = 13
+    """Number of directions tried."""
+    spread_deg: float = 90.0
+    """Directions span ± this angle around the line to the goal."""
+    probes: tuple[float, ...] = (1.0, 2.5, 4.0)
+    """Distances ahead (m) at which the clearance is measured."""
+    speed_fraction: float = 0.7
+    """Dribbling speed as a fraction of the player's top speed (slower keeps control)."""
+    lead: float | None = None
+    """Distance from the player's centre to the ball after each kick (m); None: halfway
+    between touching the body and the edge of the kickable distance."""
+    clearance_cap: float = 5.0
+    """Clearance beyond this (m) counts no more."""
+    goal_weight: float = 0.6
+    """Weight of heading towards the goal against clearance."""
+    field_margin: float = 1.0
+    """Directions whose farthest probe is not this far inside the lines are excluded (m)."""
+
+
+@dataclass(frozen=True)
+class DribblePlan:
+    """One cycle of dribbling: put ``kick`` and ``dash`` into the player's command rows."""
+
+    direction: np.ndarray
+    """(2,) unit vector of the dribble."""
+    kick: np.ndarray
+    """(2,) kick request (zero when the ball is not kickable)."""
+    dash: np.ndarray
+    """(2,) dash acceleration."""
+    clearance: float
+    """Opponents' margin along the direction (m; large when nobody is near)."""
+    score: float
+
+
+def dribble_directions(model: MotionModel, view: object, player: int,
+                       params: DribbleParams = DribbleParams()) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(directions (fan, 2), clearance (fan,), score (fan,)) for ``player`` dribbling from
+    where it stands; excluded directions score -inf."""
+    p = np.asarray(view.own_pos[player], float)
+    goal = model.goal_centre(ours=False)
+    base = np.arctan2(goal[1] - p[1], goal[0] - p[0])
+    offsets = np.radians(np.linspace(-params.spread_deg, params.spread_deg, params.fan)) if params.fan > 1 \
+        else np.zeros(1)
+    angles = base + offsets
+    dirs = np.column_stack([np.cos(angles), np.sin(angles)])
+    effort = float(view_effort(view, model.players_per_team)[player])
+    speed = max(params.speed_fraction * model.top_speed * effort, 1e-6)
+    probes = np.asarray(params.probes, float)
+    cycles = np.minimum(np.ceil(probes / speed).astype(np.int64), model.horizon)
+    points = p + dirs[:, None, :] * probes[None, :, None]            # (fan, probes, 2)
+    if view.opp_pos.shape[0]:
+        coast = view.opp_pos[None, :, :] + model.player_coast[cycles][:, None, None] * view.opp_vel[None, :, :]
+        gap = points[:, :, None, :] - coast[None, :, :, :]              # (fan, probes, opp, 2)
+        dist = np.sqrt(np.einsum("fpoj,fpoj->fpo", gap, gap))
+        margin = dist - model.reach[cycles][None, :, None] - model.kickable_distance
+        clearance = margin.min(axis=(1, 2))
+    else:
+        clearance = np.full(len(dirs), np.inf)
+    score = np.minimum(clearance, params.clearance_cap) / params.clearance_cap + params.goal_weight * np.cos(offsets)
+    inside = model.in_field(points[:, -1, :], params.field_margin)
+    score = np.where(inside, score, -np.inf)
+    return dirs, clearance, score
+
+
+def dribble(model: MotionModel, view: object, player: int, params: DribbleParams = DribbleParams(),
+            direction: np.ndarray | None = None) -> DribblePlan:
+    """One cycle of dribbling for ``player``: the best direction of the fan (or ``direction``,
+    a (2,) vector, when given), the dash and the kick that keeps the ball ``lead`` ahead."""
+    n = model.players_per_team
+    player = check_player(player, n)
+    dirs, clearance, score = dribble_directions(model, view, player, params)
+    if direction is None:
+        if np.isfinite(score).any():
+            best = int(np.argmax(score))
+        else:  # cornered against a line: head for the centre of the field
+            p = view.own_pos[player]
+            best = int(np.argmax(dirs @ (-p / max(float(np.hypot(*p)), 1e-9))))
+        unit = dirs[best]
+        chosen_clearance, chosen_score = float(clearance[best]), float(score[best])
+    else:
+        unit = np.asarray(direction, float)
+        unit = unit / max(float(np.hypot(*unit)), 1e-12)
+        best = int(np.argmax(dirs @ unit))
+        chosen_clearance, chosen_score = float(clearance[best]), float(score[best])
+    effort = float(view_effort(view, n)[player])
+    pos = np.asarray(view.own_pos[player], float)
+    vel = np.asarray(view.own_vel[player], float)
+    step = unit * params.speed_fraction * model.top_speed * effort
+    dash = step - vel
+    size = float(np.hypot(*dash))
+    limit = model.accel_max * effort
+    if size > limit:
+        dash *= limit / size
+    kick = np.zeros(2)
+    if kickable(model, pos, view.ball):
+        lead = params.lead if params.lead is not None else 0.5 * (model.touch_distance + model.kickable_distance)
+        after = pos + vel + dash
+        wanted = after + unit * lead - np.asarray(view.ball, float)
+        kick, _ = kick_for_velocity(model, pos, view.ball, view.ball_vel, wanted)
+    return DribblePlan(direction=unit.copy(), kick=np.asarray(kick, float), dash=dash, clearance=chosen_clearance,
+                       score=chosen_score)

@@ -1,0 +1,104 @@
+"""Goalkeeping: where to stand, when to ask for a catch, and what to do with a held ball.
+
+**Guard position.** The goalkeeper stands on the segment from our goal centre to the ball,
+``depth`` metres from the goal centre. The depth grows as the ball comes closer (narrowing
+the angle a shooter sees): ``depth_far`` when the ball is ``far`` or more from the goal
+centre, rising linearly to the goal area's depth when it is ``near`` or closer. The point is
+then pulled back along the same segment until it lies inside the goal area, and never beyond
+``ball_gap`` short of the ball, so it always stays on the ball-goal line.
+
+**Catch.** Ask for a catch only when the referee would grant it (``RuleConfig``): play on,
+nobody holding, goalkeeper and ball both in our penalty area, centres at most
+``catch_length`` apart (less a small margin), and the ball not last kicked by a team-mate
+(the back-pass rule; the view does not carry the last kicker, so the team tracks it).
+
+**Distribution.** Holding the ball, the goalkeeper passes to an open team-mate when a pass
+scores well enough, else clears towards the wings (:mod:`agents.skills.clearing`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from agents.skills.clearing import ClearParams, best_clearance
+from agents.skills.model import MotionModel, as_point, check_player
+from agents.skills.passing import PassParams, best_pass
+from soccer_sim.state import NO_PLAYER, PlayMode
+
+
+@dataclass(frozen=True)
+class GoalieParams:
+    """Tunable choices of the goalkeeper (metres)."""
+
+    depth_far: float = 1.0
+    """Distance from the goal centre when the ball is far."""
+    near: float = 12.0
+    """Ball distance from the goal centre at which the goalkeeper is furthest out."""
+    far: float = 40.0
+    """Ball distance from the goal centre beyond which the goalkeeper is at ``depth_far``."""
+    ball_gap: float = 1.0
+    """The guard point stays at least this far short of the ball (m)."""
+    catch_margin: float = 0.05
+    """Ask for a catch only within ``catch_length`` less this (m)."""
+    pass_score: float = 1.0
+    """A held ball is passed when the best pass scores at least this, else cleared."""
+    passing: PassParams = field(default_factory=lambda: PassParams(min_lead=3, min_distance=8.0))
+    clearing: ClearParams = field(default_factory=lambda: ClearParams(weight_wing=0.6, weight_forward=0.3))
+
+
+def guard_position(model: MotionModel, ball: np.ndarray, params: GoalieParams = GoalieParams()) -> np.ndarray:
+    """(2,) the goalkeeper's guard point for a ball at ``ball`` (team frame)."""
+    ball = as_point("ball", ball)
+    goal = model.goal_centre(ours=True)
+    delta = ball - goal
+    dist = float(np.hypot(*delta))
+    if dist < 1e-9:
+        return goal.copy()
+    unit = delta / dist
+    share = np.clip((params.far - dist) / max(params.far - params.near, 1e-9), 0.0, 1.0)
+    depth = params.depth_far + share * (model.goal_area_length - params.depth_far)
+    if unit[0] > 1e-9:
+        depth = min(depth, model.goal_area_length / unit[0])
+    if abs(unit[1]) > 1e-9:
+        depth = min(depth, model.goal_area_half_width / abs(unit[1]))
+    depth = max(0.0, min(depth, dist - params.ball_gap))
+    return goal + unit * depth
+
+
+def should_catch(model: MotionModel, view: object, goalie: int | None = None, teammate_kicked_last: bool = False,
+                 params: GoalieParams = GoalieParams()) -> bool:
+    """Whether the goalkeeper should ask for a catch this cycle (see the module docstring)."""
+    goalie = model.goalie_index if goalie is None else check_player(goalie, model.players_per_team, "goalie")
+    if view.play_mode != PlayMode.PLAY_ON or view.ball_holder != NO_PLAYER or teammate_kicked_last:
+        return False
+    keeper = np.asarray(view.own_pos[goalie], float)
+    ball = np.asarray(view.ball, float)
+    if not (model.in_penalty_area(keeper) and model.in_penalty_area(ball)):
+        return False
+    return float(np.hypot(*(ball - keeper))) <= model.catch_length - params.catch_margin
+
+
+@dataclass(frozen=True)
+class Distribution:
+    """What a holding goalkeeper does: ``kind`` is ``"pass"`` or ``"clear"``; ``plan`` the
+    :class:`PassPlan` or :class:`ClearPlan`."""
+
+    kind: str
+    kick: np.ndarray
+    plan: object
+
+
+def distribute(model: MotionModel, view: object, goalie: int | None = None,
+               params: GoalieParams = GoalieParams()) -> Distribution:
+    """The kick of a goalkeeper that has the ball (holding it, or merely able to kick it): a
+    pass to an open team-mate when one scores at least ``pass_score``, else a clearance
+    towards the wings."""
+    goalie = model.goalie_index if goalie is None else check_player(goalie, model.players_per_team, "goalie")
+    holding = view.ball_holder == goalie
+    plan = best_pass(model, view, goalie, params.passing, holder=holding)
+    if plan is not None and plan.score >= params.pass_score:
+        return Distribution("pass", plan.kick, plan)
+    clear = best_clearance(model, view, goalie, params.clearing, holder=holding)
+    return Distribution("clear", clear.kick, clear)

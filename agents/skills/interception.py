@@ -1,0 +1,233 @@
+"""Interception: who reaches a rolling ball first, when and where.
+
+The ball is rolled forward with its decay (:class:`~agents.skills.model.MotionModel`) for up
+to ``horizon`` cycles, stopping where it leaves the field. A player reaches the ball at cycle
+``k`` when the ball's position after ``k`` cycles lies within its control radius (the
+kickable distance, or the catch length for a goalkeeper inside its penalty area) of the disc
+the player can reach in ``k`` cycles: centred where it would coast to from its current
+velocity, of radius ``reach(k) * effort``. Cycle 0 means the ball is under control now.
+
+The search is one compiled loop over trajectories, cycles and players with an early exit,
+so all players of a team against one ball cost a few microseconds, and the same kernel
+checks many pass or shot trajectories at once (:func:`intercept_many`).
+
+When a player cannot get there within the horizon although the ball is still on the field,
+its cycle is estimated beyond the horizon (the ball at rest where the horizon leaves it,
+the player at its top speed), so the ordering of slow players stays meaningful. When the
+ball leaves the field (or passes the cycle limit given to :func:`intercept_many`) before a
+player gets there, that player's cycle is :data:`UNREACHABLE` and its point is the ball's
+last position on the field.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit
+
+from agents.skills.model import MotionModel, view_effort
+
+UNREACHABLE = 1_000_000
+"""Interception cycle of a player who cannot get to the ball before it leaves the field or the
+cycle limit (larger than any real cycle, so ``argmin`` over cycles works unchanged)."""
+
+
+@dataclass(frozen=True)
+class Interception:
+    """Per player of one team: the earliest cycle it controls the ball and where.
+
+    ``cycles`` (n,) int: cycles from now (0: controllable now; :data:`UNREACHABLE`: never);
+    ``points`` (n, 2) the ball's predicted position at that cycle; ``first`` the player who
+    gets there first (-1 if nobody can) and ``first_cycle`` its cycle (UNREACHABLE if none).
+    """
+
+    cycles: np.ndarray
+    points: np.ndarray
+    first: int
+    first_cycle: int
+
+
+@dataclass(frozen=True)
+class BallRace:
+    """Both teams' interceptions of the same ball (see :func:`ball_race`)."""
+
+    ours: Interception
+    theirs: Interception
+
+    @property
+    def we_win(self) -> bool:
+        """True when one of our players gets there strictly first (ties go to the opponents)."""
+        return self.ours.first_cycle < self.theirs.first_cycle
+
+    @property
+    def lead(self) -> int:
+        """Their first cycle minus ours: positive when we are ahead, in cycles."""
+        return int(self.theirs.first_cycle) - int(self.ours.first_cycle)
+
+
+def control_radii(model: MotionModel, goalie: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """(radius, catch radius) per player of a team: the kickable distance for everyone, and for
+    ``goalie`` the larger of it and the catch length (used inside its own penalty area)."""
+    n = model.players_per_team
+    radius = np.full(n, model.kickable_distance)
+    catch = radius.copy()
+    if goalie is not None:
+        catch[goalie] = max(model.kickable_distance, model.catch_length)
+    return radius, catch
+
+
+def intercept(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, vel: np.ndarray,
+              effort: np.ndarray | None = None, radius: np.ndarray | None = None,
+              catch_radius: np.ndarray | None = None, catch_side: float = -1.0) -> Interception:
+    """Earliest interception of the ball (``ball``, ``ball_vel``: (2,)) by each of the players
+    at ``pos``/``vel`` ((n, 2), team frame).
+
+    ``effort`` (n,) scales each player's acceleration (None: 1). ``radius`` (n,) is each
+    player's control distance (None: the kickable distance); ``catch_radius`` (n,) replaces it
+    when larger and the ball is in the penalty area on side ``catch_side`` (-1: ours, at -x;
+    +1: the opponents').
+    """
+    n = pos.shape[0]
+    if effort is None:
+        effort = np.ones(n)
+    if radius is None:
+        radius = np.full(n, model.kickable_distance)
+    if catch_radius is None:
+        catch_radius = radius
+    cycles = np.empty((1, n), dtype=np.int64)
+    points = np.empty((1, n, 2))
+    _intercept_kernel(ball.reshape(1, 2), ball_vel.reshape(1, 2), pos, vel, effort, radius, catch_radius,
+                      model.reach, model.ball_travel, model.player_coast, _kernel_params(model, catch_side),
+                      _NO_LIMIT, cycles, points)
+    row = cycles[0]
+    first = int(np.argmin(row)) if n else -1
+    first_cycle = int(row[first]) if n else UNREACHABLE
+    if first_cycle >= UNREACHABLE:
+        first = -1
+    return Interception(row, points[0], first, first_cycle)
+
+
+def intercept_many(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, vel: np.ndarray,
+                   effort: np.ndarray | None = None, radius: np.ndarray | None = None,
+                   catch_radius: np.ndarray | None = None, catch_side: float = -1.0,
+                   limit: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Interception of many ball trajectories at once: ``ball`` and ``ball_vel`` (P, 2) (one
+    row per trajectory, e.g. candidate passes or shots), players as for :func:`intercept`.
+
+    ``limit`` (P,) int: the last cycle searched per trajectory (None: the model's horizon);
+    beyond it a player counts as :data:`UNREACHABLE`. Returns (cycles (P, n) int, points
+    (P, n, 2)).
+    """
+    count, n = ball.shape[0], pos.shape[0]
+    if effort is None:
+        effort = np.ones(n)
+    if radius is None:
+        radius = np.full(n, model.kickable_distance)
+    if catch_radius is None:
+        catch_radius = radius
+    if limit is None:
+        limits = np.full(count, -1, dtype=np.int64)
+    else:
+        limits = np.asarray(limit, dtype=np.int64).reshape(count)
+    cycles = np.empty((count, n), dtype=np.int64)
+    points = np.empty((count, n, 2))
+    _intercept_kernel(np.ascontiguousarray(ball, dtype=np.float64), np.ascontiguousarray(ball_vel, dtype=np.float64),
+                      pos, vel, effort, radius, catch_radius, model.reach, model.ball_travel, model.player_coast,
+                      _kernel_params(model, catch_side), limits, cycles, points)
+    return cycles, points
+
+
+def ball_race(model: MotionModel, view: object) -> BallRace:
+    """Interceptions of the view's ball by our players and by the opponents.
+
+    Our players use the view's effort (ones when absent) and our goalkeeper catches in our
+    penalty area; the opponents are taken fresh (effort 1), their goalkeeper (same index as
+    ours) catching in theirs.
+    """
+    n = model.players_per_team
+    radius, our_catch = control_radii(model, model.goalie_index)
+    ours = intercept(model, view.ball, view.ball_vel, view.own_pos, view.own_vel, view_effort(view, n), radius,
+                     our_catch, -1.0)
+    theirs = intercept(model, view.ball, view.ball_vel, view.opp_pos, view.opp_vel, None, radius, our_catch, 1.0)
+    return BallRace(ours, theirs)
+
+
+_NO_LIMIT = np.full(1, -1, dtype=np.int64)
+
+
+def _kernel_params(model: MotionModel, catch_side: float) -> np.ndarray:
+    cached = model.__dict__.get("_intercept_params")
+    if cached is None:
+        cached = {}
+        model.__dict__["_intercept_params"] = cached
+    params = cached.get(catch_side)
+    if params is None:
+        params = np.array([model.half_length, model.half_width, model.top_speed, catch_side,
+                           model.half_length - model.penalty_area_length, model.penalty_area_half_width])
+        cached[catch_side] = params
+    return params
+
+
+@njit(cache=True, nogil=True)
+def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, vel: np.ndarray, effort: np.ndarray,
+                      radius: np.ndarray, catch_radius: np.ndarray, reach: np.ndarray, ball_travel: np.ndarray,
+                      coast: np.ndarray, params: np.ndarray, limits: np.ndarray, cycles_out: np.ndarray,
+                      points_out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """See the module docstring. ``params``: half length, half width, top speed, catch side,
+    |x| of the penalty area's front line, its half width. ``limits[p] < 0``: the horizon."""
+    half_length, half_width, top_speed, side = params[0], params[1], params[2], params[3]
+    area_x, area_y = params[4], params[5]
+    horizon = reach.shape[0] - 1
+    n = pos.shape[0]
+    for p in range(ball.shape[0]):
+        bx0, by0, vx, vy = ball[p, 0], ball[p, 1], ball_vel[p, 0], ball_vel[p, 1]
+        last = horizon if limits[p] < 0 else min(limits[p], horizon)
+        for i in range(n):
+            cycles_out[p, i] = -1
+        remaining = n
+        left_field = False
+        bx, by = bx0, by0
+        k_end = 0
+        for k in range(last + 1):
+            tx = bx0 + ball_travel[k] * vx
+            ty = by0 + ball_travel[k] * vy
+            if abs(tx) > half_length or abs(ty) > half_width:
+                left_field = True
+                break
+            bx, by = tx, ty
+            k_end = k
+            in_area = side * tx >= area_x and abs(ty) <= area_y
+            for i in range(n):
+                if cycles_out[p, i] >= 0:
+                    continue
+                cx = pos[i, 0] + coast[k] * vel[i, 0]
+                cy = pos[i, 1] + coast[k] * vel[i, 1]
+                r = radius[i]
+                if in_area and catch_radius[i] > r:
+                    r = catch_radius[i]
+                dx, dy = tx - cx, ty - cy
+                if dx * dx + dy * dy <= (reach[k] * effort[i] + r) ** 2:
+                    cycles_out[p, i] = k
+                    points_out[p, i, 0] = tx
+                    points_out[p, i, 1] = ty
+                    remaining -= 1
+            if remaining == 0:
+                break
+        if remaining == 0:
+            continue
+        beyond = not left_field and k_end == horizon and (limits[p] < 0 or limits[p] > horizon)
+        for i in range(n):
+            if cycles_out[p, i] >= 0:
+                continue
+            points_out[p, i, 0] = bx
+            points_out[p, i, 1] = by
+            if beyond:
+                cx = pos[i, 0] + coast[horizon] * vel[i, 0]
+                cy = pos[i, 1] + coast[horizon] * vel[i, 1]
+                gap = math.sqrt((bx - cx) ** 2 + (by - cy) ** 2) - radius[i] - reach[horizon] * effort[i]
+                speed = max(top_speed * effort[i], 1e-9)
+                cycles_out[p, i] = horizon + max(1, int(math.ceil(gap / speed)))
+            else:
+                cycles_out[p, i] = UNREACHABLE

@@ -1,0 +1,153 @@
+"""Kicks: who may kick, how effective a kick is, and the kick that gives the ball a velocity.
+
+The rule mirrored is :meth:`soccer_sim.kinematics.Kinematics.kick` (rcssserver's): a kick
+request ``r`` is clipped to ``kick_speed_max`` and multiplied by an effectiveness
+
+    ``1 - kick_distance_penalty * min(1, gap / kickable_margin)
+         - kick_angle_penalty * angle / pi``
+
+where ``gap`` is the distance between the ball's and the player's surfaces and ``angle`` is
+the angle between the kick and the direction from the player to the ball (kicking the ball
+straight back through oneself costs the most). A goalkeeper holding the ball kicks at full
+effectiveness. The ball's speed is then clipped to ``ball_speed_max``.
+
+:func:`kick_for_velocity` inverts the rule: the change needed is ``desired - ball_vel``; the
+request is that change divided by the effectiveness of its direction. When the change is
+larger than one kick allows, it keeps the desired *direction* and gives the largest speed
+along it that one kick can reach (a bisection on the speed, since the effectiveness depends
+on the kick's direction); when no speed along the desired direction is reachable (a fast
+ball would have to be turned round), it kicks at full power towards the point of the desired
+ray closest to the ball's current velocity.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from agents.skills.model import MotionModel
+
+
+def kickable(model: MotionModel, pos: np.ndarray, ball: np.ndarray) -> np.ndarray:
+    """Bool per player (``pos`` (n, 2) or (2,)): the ball's centre is within the kickable distance."""
+    diff = np.asarray(pos, float) - np.asarray(ball, float)
+    return np.einsum("...i,...i->...", diff, diff) <= model.kickable_distance ** 2
+
+
+def kick_effectiveness(model: MotionModel, player: np.ndarray, ball: np.ndarray, kick: np.ndarray) -> np.ndarray:
+    """Effectiveness (fraction of the requested change that reaches the ball) of kicks in the
+    directions ``kick`` ((k, 2) or (2,)) by a player at ``player`` on the ball at ``ball``."""
+    kick = np.asarray(kick, float)
+    rel = np.asarray(ball, float) - np.asarray(player, float)
+    gap = max(0.0, float(np.hypot(*rel)) - model.touch_distance)
+    effect = 1.0 - model.kick_distance_penalty * min(1.0, gap / model.kickable_margin)
+    norm_k = np.hypot(kick[..., 0], kick[..., 1])
+    norm_r = float(np.hypot(*rel))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        cos = (kick[..., 0] * rel[0] + kick[..., 1] * rel[1]) / (norm_k * norm_r)
+    angle = np.where((norm_k > 1e-12) & (norm_r > 1e-12), np.arccos(np.clip(cos, -1.0, 1.0)), 0.0)
+    return effect - model.kick_angle_penalty * angle / math.pi
+
+
+def kick_for_velocity(model: MotionModel, player: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray,
+                      desired: np.ndarray, holder: bool = False) -> tuple[np.ndarray, np.ndarray]:
+    """The kick request that makes the ball leave with velocity ``desired`` ((k, 2) or (2,),
+    team frame, m/cycle), and the velocity it really gets (same shape; equal to ``desired``
+    when one kick can do it, else the best direction-preserving result). ``player``, ``ball``,
+    ``ball_vel``: (2,). ``holder``: the kicker is a goalkeeper holding the ball (full
+    effectiveness). Noise is not modelled.
+    """
+    desired = np.asarray(desired, dtype=np.float64)
+    single = desired.ndim == 1
+    rows = np.ascontiguousarray(desired.reshape(-1, 2))
+    kick = np.empty_like(rows)
+    result = np.empty_like(rows)
+    _kick_kernel(np.asarray(player, np.float64), np.asarray(ball, np.float64), np.asarray(ball_vel, np.float64),
+                 rows, _kick_params(model, holder), kick, result)
+    if single:
+        return kick[0], result[0]
+    return kick, result
+
+
+def _kick_params(model: MotionModel, holder: bool) -> np.ndarray:
+    return np.array([model.kick_speed_max, model.ball_speed_max, model.kick_distance_penalty,
+                     model.kick_angle_penalty, model.kickable_margin, model.touch_distance, 1.0 if holder else 0.0])
+
+
+@njit(cache=True, nogil=True)
+def _effect(rx: float, ry: float, rnorm: float, base: float, angle_penalty: float, kx: float, ky: float,
+            holder: bool) -> float:  # pragma: no cover - compiled
+    if holder:
+        return 1.0
+    knorm = math.sqrt(kx * kx + ky * ky)
+    if knorm <= 1e-12 or rnorm <= 1e-12:
+        return base
+    cos = max(-1.0, min(1.0, (rx * kx + ry * ky) / (rnorm * knorm)))
+    return base - angle_penalty * math.acos(cos) / math.pi
+
+
+@njit(cache=True, nogil=True)
+def _kick_kernel(player: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, desired: np.ndarray, params: np.ndarray,
+                 kick_out: np.ndarray, result_out: np.ndarray) -> None:  # pragma: no cover - compiled
+    kick_max, ball_max, dist_penalty, angle_penalty = params[0], params[1], params[2], params[3]
+    margin, touch, holder = params[4], params[5], params[6] > 0.5
+    rx, ry = ball[0] - player[0], ball[1] - player[1]
+    rnorm = math.sqrt(rx * rx + ry * ry)
+    base = 1.0 - dist_penalty * min(1.0, max(0.0, rnorm - touch) / margin)
+    vx, vy = ball_vel[0], ball_vel[1]
+    for j in range(desired.shape[0]):
+        dx, dy = desired[j, 0], desired[j, 1]
+        speed = math.sqrt(dx * dx + dy * dy)
+        if speed > ball_max:
+            dx *= ball_max / speed
+            dy *= ball_max / speed
+            speed = ball_max
+        # Feasible when the change fits within kick_max times the effectiveness of its direction.
+        cx, cy = dx - vx, dy - vy
+        size = math.sqrt(cx * cx + cy * cy)
+        eff = _effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder)
+        if size <= kick_max * eff + 1e-12:
+            lam = 1.0
+        else:
+            ux, uy = (dx / speed, dy / speed) if speed > 1e-12 else (0.0, 0.0)
+            closest = max(0.0, vx * ux + vy * uy)  # speed along the ray nearest the current velocity
+            cx, cy = closest * ux - vx, closest * uy - vy
+            size = math.sqrt(cx * cx + cy * cy)
+            eff = _effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder)
+            if size > kick_max * eff or speed <= 1e-12:
+                # Nothing along the desired direction is reachable: full power towards it.
+                if size <= 1e-12:
+                    kick_out[j, 0] = 0.0
+                    kick_out[j, 1] = 0.0
+                    result_out[j, 0] = vx
+                    result_out[j, 1] = vy
+                    continue
+                eff = max(eff, 1e-9)
+                kick_out[j, 0] = cx / size * kick_max
+                kick_out[j, 1] = cy / size * kick_max
+                nx, ny = vx + cx / size * kick_max * eff, vy + cy / size * kick_max * eff
+                nspeed = math.sqrt(nx * nx + ny * ny)
+                if nspeed > ball_max:
+                    nx *= ball_max / nspeed
+                    ny *= ball_max / nspeed
+                result_out[j, 0] = nx
+                result_out[j, 1] = ny
+                continue
+            low, high = closest, speed
+            for _ in range(30):
+                mid = 0.5 * (low + high)
+                cx, cy = mid * ux - vx, mid * uy - vy
+                if math.sqrt(cx * cx + cy * cy) <= kick_max * _effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder):
+                    low = mid
+                else:
+                    high = mid
+            lam = low / speed
+        tx, ty = lam * dx, lam * dy
+        cx, cy = tx - vx, ty - vy
+        eff = max(_effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder), 1e-9)
+        kick_out[j, 0] = cx / eff
+        kick_out[j, 1] = cy / eff
+        result_out[j, 0] = tx
+        result_out[j, 1] = ty

@@ -1,0 +1,215 @@
+"""The motion model the skills predict with, built once from a :class:`MatchConfig`.
+
+Every number comes from the configuration (nothing is hard-coded), so the skills follow the
+simulator's parameters. The rules mirrored here are those of :mod:`soccer_sim.kinematics`
+(the RoboCup 2D soccer simulator's):
+
+* **Player**, per cycle: ``vel += accel`` (``|accel| <= player_accel_max * effort``), speed
+  clipped to ``player_speed_max``, ``pos += vel``, ``vel *= player_decay``. Without the clip
+  the motion is linear, so after ``k`` cycles a player can be anywhere within a disc of
+  radius ``reach(k) * effort`` around the point it would coast to,
+  ``pos + vel * (1 - decay^k) / (1 - decay)``. :attr:`MotionModel.reach` tabulates
+  ``reach(k)`` from rest at full effort (speed clip included). The weaker dash against the
+  direction of motion (side/back dash rates) is left out of the predictions.
+* **Ball**, per cycle: ``pos += vel``, ``vel *= ball_decay``; after ``k`` cycles it has
+  travelled ``vel * (1 - decay^k) / (1 - decay)``.
+
+Frames: the team-relative frame of :class:`soccer_sim.TeamView` (we attack +x, our goal line
+at ``x = -half_length``). Units: metres, cycles, m/cycle, m/cycle².
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from soccer_sim.config import MatchConfig
+
+
+class SkillInputError(ValueError):
+    """A skill was called with an impossible argument (wrong shape, index out of range, ...);
+    the message names the argument."""
+
+
+class MotionModel:
+    """Constants and tables of one match configuration, shared by every skill.
+
+    ``horizon`` is the number of cycles the predictions look ahead (interception, passes,
+    shots); :attr:`reach` has ``horizon + 1`` entries.
+    """
+
+    def __init__(self, config: MatchConfig, horizon: int = 60) -> None:
+        if not isinstance(config, MatchConfig):
+            raise SkillInputError(f"MotionModel needs a MatchConfig, got {type(config).__name__}")
+        if not (isinstance(horizon, (int, np.integer)) and not isinstance(horizon, bool) and horizon >= 1):
+            raise SkillInputError(f"MotionModel.horizon must be a positive integer, got {horizon!r}")
+        phys, field, rules = config.physics, config.field, config.rules
+        self.config = config
+        self.horizon = int(horizon)
+        self.players_per_team = config.players_per_team
+        self.goalie_index = rules.goalie_index
+        self.accel_max = float(phys.player_accel_max)
+        """Largest dash acceleration at full effort (m/cycle²)."""
+        self.speed_max = float(phys.player_speed_max)
+        self.player_decay = float(phys.player_decay)
+        self.ball_decay = float(phys.ball_decay)
+        self.ball_speed_max = float(phys.ball_speed_max)
+        self.kick_speed_max = float(phys.kick_speed_max)
+        self.kickable_distance = float(phys.kickable_distance)
+        """Centre distance within which a player may kick (m)."""
+        self.touch_distance = float(phys.player_radius + phys.ball_radius)
+        """Centre distance at which the ball touches a player's body (m)."""
+        self.kickable_margin = float(phys.kickable_margin)
+        self.kick_distance_penalty = float(phys.kick_distance_penalty)
+        self.kick_angle_penalty = float(phys.kick_angle_penalty)
+        self.kick_noise = float(phys.kick_noise)
+        self.half_length = float(field.half_length)
+        self.half_width = float(field.half_width)
+        self.goal_half_width = float(field.goal_width / 2.0)
+        self.goal_post_radius = float(field.goal_post_radius)
+        self.ball_radius = float(phys.ball_radius)
+        self.penalty_area_length = float(field.penalty_area_length)
+        self.penalty_area_half_width = float(field.penalty_area_width / 2.0)
+        self.goal_area_length = float(field.goal_area_length)
+        self.goal_area_half_width = float(field.goal_area_width / 2.0)
+        self.catch_length = float(rules.catch_length)
+        self.offside = bool(rules.offside)
+        self.top_speed = min(self.speed_max, self.accel_max / (1.0 - self.player_decay)) \
+            if self.player_decay < 1.0 else self.speed_max
+        """Steady running speed at full effort (m/cycle): where acceleration and decay balance."""
+        self.reach = self._reach_table(self.horizon)
+        """(horizon + 1,) distance a player at rest covers in k cycles at full effort (m)."""
+        k = np.arange(self.horizon + 1, dtype=np.float64)
+        self.ball_travel = _geometric_sums(self.ball_decay, k)
+        """(horizon + 1,) factor of the ball's velocity travelled in k cycles: (1 - d^k) / (1 - d)."""
+        self.player_coast = _geometric_sums(self.player_decay, k)
+        """(horizon + 1,) the same factor for a player's velocity (coasting without dashes)."""
+        stam = config.stamina
+        self.stamina_max = float(stam.maximum)
+        self.stamina_low = float(max(stam.recover_dec_thr, stam.effort_dec_thr) * stam.maximum)
+        """Stamina below which recovery and effort start falling for good (see StaminaConfig)."""
+        self.recovery_per_cycle = float(stam.recovery_per_cycle)
+        self.dash_power_rate = float(phys.dash_power_rate)
+
+    def _reach_table(self, horizon: int) -> np.ndarray:
+        table = np.zeros(horizon + 1)
+        speed = dist = 0.0
+        for k in range(1, horizon + 1):
+            speed = min(speed + self.accel_max, self.speed_max)
+            dist += speed
+            speed *= self.player_decay
+            table[k] = dist
+        return table
+
+    # --- ball ------------------------------------------------------------------------------
+    def ball_path(self, ball: np.ndarray, ball_vel: np.ndarray, cycles: int | None = None) -> np.ndarray:
+        """(cycles + 1, 2) predicted ball positions after 0..cycles cycles (no obstacles, no
+        noise, the field's lines ignored)."""
+        cycles = self.horizon if cycles is None else int(cycles)
+        travel = self.ball_travel if cycles <= self.horizon else _geometric_sums(
+            self.ball_decay, np.arange(cycles + 1, dtype=np.float64))
+        return np.asarray(ball, float) + travel[:cycles + 1, None] * np.asarray(ball_vel, float)
+
+    def ball_speed_for(self, distance: np.ndarray | float, end_speed: np.ndarray | float) -> np.ndarray:
+        """Initial ball speed that covers ``distance`` and still has ``end_speed`` there (m/cycle):
+        ``distance * (1 - d) + end_speed``."""
+        return np.asarray(distance, float) * (1.0 - self.ball_decay) + np.asarray(end_speed, float)
+
+    def ball_cycles_to(self, distance: np.ndarray | float, speed: np.ndarray | float) -> np.ndarray:
+        """Cycles (fractional) a ball leaving at ``speed`` needs to travel ``distance``; inf when
+        it stops short."""
+        distance = np.asarray(distance, float)
+        speed = np.asarray(speed, float)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            left = 1.0 - distance * (1.0 - self.ball_decay) / np.maximum(speed, 1e-12)
+            cycles = np.where(left > 0.0, np.log(np.maximum(left, 1e-300)) / math.log(self.ball_decay), np.inf)
+        return cycles
+
+    # --- players ---------------------------------------------------------------------------
+    def sustainable_speed(self, effort: np.ndarray | float = 1.0) -> np.ndarray:
+        """Running speed a player can hold for ever on its stamina recovery alone (m/cycle).
+
+        Holding speed ``s`` needs an acceleration ``s * (1 - decay)`` per cycle, i.e. a dash
+        power ``s * (1 - decay) / (dash_power_rate * effort)``; setting that equal to
+        ``recovery_per_cycle`` gives ``s`` (0.45 m/cycle for a fresh default player).
+        """
+        effort = np.asarray(effort, float)
+        speed = self.recovery_per_cycle * self.dash_power_rate * effort / max(1.0 - self.player_decay, 1e-12)
+        return np.minimum(speed, self.top_speed * effort)
+
+    def goal_centre(self, ours: bool) -> np.ndarray:
+        """(2,) centre of our goal (``ours``) or of the opponents' goal, team frame."""
+        return np.array([-self.half_length if ours else self.half_length, 0.0])
+
+    def in_field(self, points: np.ndarray, margin: float = 0.0) -> np.ndarray:
+        """Bool per point: inside the lines shrunk by ``margin`` (m)."""
+        points = np.asarray(points, float)
+        return (np.abs(points[..., 0]) <= self.half_length - margin) & (np.abs(points[..., 1]) <= self.half_width - margin)
+
+    def clamp_to_field(self, points: np.ndarray, margin: float = 0.0) -> np.ndarray:
+        """Points moved inside the lines shrunk by ``margin`` (m)."""
+        points = np.array(points, float)
+        np.clip(points[..., 0], -self.half_length + margin, self.half_length - margin, out=points[..., 0])
+        np.clip(points[..., 1], -self.half_width + margin, self.half_width - margin, out=points[..., 1])
+        return points
+
+    def in_penalty_area(self, points: np.ndarray, ours: bool = True) -> np.ndarray:
+        """Bool per point: inside our (``ours``) or the opponents' penalty area, lines included."""
+        points = np.asarray(points, float)
+        depth = self.half_length - self.penalty_area_length
+        inside_x = points[..., 0] <= -depth if ours else points[..., 0] >= depth
+        return inside_x & (np.abs(points[..., 0]) <= self.half_length) & \
+            (np.abs(points[..., 1]) <= self.penalty_area_half_width)
+
+
+def _geometric_sums(decay: float, k: np.ndarray) -> np.ndarray:
+    """(1 - decay^k) / (1 - decay), with the limit k for decay 1."""
+    if decay >= 1.0:
+        return k.copy()
+    return (1.0 - decay ** k) / (1.0 - decay)
+
+
+def view_effort(view: object, n: int) -> np.ndarray:
+    """The view's per-player effort, or ones when it has none (older views, hand-built ones)."""
+    effort = getattr(view, "effort", None)
+    if effort is None:
+        return np.ones(n)
+    return np.asarray(effort, float)
+
+
+def check_player(player: int, n: int, what: str = "player") -> int:
+    """``player`` as an int in ``[0, n)``, else a SkillInputError naming it."""
+    if isinstance(player, bool) or not isinstance(player, (int, np.integer)):
+        raise SkillInputError(f"{what} must be an integer index, got {player!r}")
+    if not 0 <= player < n:
+        raise SkillInputError(f"{what} index {player} is out of range for {n} players")
+    return int(player)
+
+
+def as_points(name: str, value: object, rows: int | None = None) -> np.ndarray:
+    """``value`` as a float (rows, 2) array of finite numbers, else a SkillInputError naming it."""
+    try:
+        array = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError) as exc:
+        raise SkillInputError(f"{name} must be numeric, got {type(value).__name__}") from exc
+    if array.ndim != 2 or array.shape[1] != 2 or (rows is not None and array.shape[0] != rows):
+        want = f"({rows}, 2)" if rows is not None else "(n, 2)"
+        raise SkillInputError(f"{name} must have shape {want}, got {array.shape}")
+    if not np.isfinite(array).all():
+        bad = int(np.argwhere(~np.isfinite(array))[0, 0])
+        raise SkillInputError(f"{name} row {bad} is not finite")
+    return array
+
+
+def as_point(name: str, value: object) -> np.ndarray:
+    """``value`` as a finite float (2,) array, else a SkillInputError naming it."""
+    try:
+        array = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError) as exc:
+        raise SkillInputError(f"{name} must be numeric, got {type(value).__name__}") from exc
+    if array.shape != (2,):
+        raise SkillInputError(f"{name} must have shape (2,), got {array.shape}")
+    if not np.isfinite(array).all():
+        raise SkillInputError(f"{name} is not finite: {array.tolist()}")
+    return array

@@ -1,0 +1,101 @@
+"""Dashing to a point and stopping there, and how fast players should run.
+
+**Arrive without overshoot.** With the player model ``vel += a; pos += vel; vel *= decay``
+the displacement of this cycle is ``w = vel + a``. The controller asks for the displacement
+``w* = d`` (the whole remaining distance ``d`` when it is within the speed cap) or
+``d / |d| * cap``; the acceleration is ``a = w* - vel``. When that exceeds the player's
+largest acceleration (``accel_max * effort``) it is shortened along its own direction, which
+is also how the match clips it and gives the displacement closest to ``w*``. Once on the
+target the next command is ``-vel``, which cancels the coasting velocity (``decay * w*``,
+within reach of one dash whenever the cap is at most the top speed), so the player stops on
+the point. Side and back dash rates (weaker dashes against the direction of motion) are not
+modelled: they only slow the braking a little.
+
+**Not sprinting when one need not.** :func:`speed_caps` gives each player either its top
+speed or the speed its stamina recovery sustains for ever (:meth:`MotionModel.
+sustainable_speed`): top speed only for players marked urgent (near the action, chasing the
+ball) whose stamina is above the level where recovery and effort start to fall for good.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from agents.skills.model import MotionModel, view_effort
+
+
+def dash_to_points(model: MotionModel, pos: np.ndarray, vel: np.ndarray, targets: np.ndarray,
+                   effort: np.ndarray | None = None, speed_cap: np.ndarray | float | None = None,
+                   tolerance: float = 0.05, out: np.ndarray | None = None) -> np.ndarray:
+    """(n, 2) dash accelerations (m/cycle²) that bring each player at ``pos``/``vel`` to its
+    ``targets`` row and stop it there (team frame, all (n, 2)).
+
+    ``effort`` (n,) (None: 1) scales the largest acceleration; ``speed_cap`` (scalar or (n,),
+    m/cycle; None: the top speed) limits the running speed. A player within ``tolerance`` (m)
+    of its target and already at rest gets a zero dash (no stamina spent). ``out`` receives
+    the result when given (e.g. ``TeamCommand.dash``).
+    """
+    n = pos.shape[0]
+    if effort is None:
+        effort = _ones(n)
+    caps = np.empty(n)
+    caps[:] = model.top_speed if speed_cap is None else speed_cap
+    if out is None:
+        out = np.empty((n, 2))
+    _dash_kernel(pos, vel, targets, effort, caps, model.accel_max, model.speed_max, tolerance, out)
+    return out
+
+
+def speed_caps(model: MotionModel, view: object, urgent: np.ndarray | bool, stamina_reserve: float = 0.05) -> np.ndarray:
+    """(n,) running-speed caps (m/cycle) for the view's players.
+
+    A player sprints (its top speed, scaled by effort) only when ``urgent`` (bool or (n,)
+    bool) is set for it and its stamina is above ``stamina_low + stamina_reserve * maximum``,
+    the level under which recovery and effort begin to fall (StaminaConfig); otherwise it runs
+    at its sustainable speed, which its recovery pays for, so stamina never drains.
+    """
+    n = model.players_per_team
+    effort = view_effort(view, n)
+    top = model.top_speed * effort
+    jog = model.sustainable_speed(effort)
+    fresh = np.asarray(view.stamina, float) > model.stamina_low + stamina_reserve * model.stamina_max
+    return np.where(np.asarray(urgent, bool) & fresh, top, jog)
+
+
+_ONES: dict[int, np.ndarray] = {}
+
+
+def _ones(n: int) -> np.ndarray:
+    ones = _ONES.get(n)
+    if ones is None:
+        ones = _ONES[n] = np.ones(n)
+    return ones
+
+
+@njit(cache=True, nogil=True)
+def _dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, effort: np.ndarray, caps: np.ndarray,
+                 accel_max: float, speed_max: float, tolerance: float, out: np.ndarray) -> None:  # pragma: no cover
+    for i in range(pos.shape[0]):
+        dx = targets[i, 0] - pos[i, 0]
+        dy = targets[i, 1] - pos[i, 1]
+        vx, vy = vel[i, 0], vel[i, 1]
+        dist = math.sqrt(dx * dx + dy * dy)
+        if dist <= tolerance and vx * vx + vy * vy <= 1e-6:
+            out[i, 0] = 0.0
+            out[i, 1] = 0.0
+            continue
+        cap = min(caps[i], speed_max)
+        if dist > cap:
+            dx *= cap / dist
+            dy *= cap / dist
+        ax, ay = dx - vx, dy - vy
+        size = math.sqrt(ax * ax + ay * ay)
+        limit = accel_max * effort[i]
+        if size > limit:
+            ax *= limit / size
+            ay *= limit / size
+        out[i, 0] = ax
+        out[i, 1] = ay

@@ -1,0 +1,117 @@
+"""Shooting: whether to shoot, and where across the goal mouth to aim.
+
+Aim points are sampled along the opponents' goal line between the posts (kept
+``post_margin`` inside them). For each, the shooter's kick is the fastest one can give
+towards it (:func:`kick_for_velocity`, ball speed up to ``ball_speed_max``). The ball is
+rolled to the goal line (:class:`MotionModel` decay) and the opponents' earliest
+interception on that path is found (:mod:`agents.skills.lanes`; the goalkeeper catches
+within the catch length inside its penalty area); the ball path stops at the goal line, so
+an opponent who cannot get there before the ball crosses it cannot stop the shot.
+
+Each aim gets a probability-like score, the product of
+
+* **unblocked**: a logistic function of the lead (cycles by which the ball beats the
+  fastest opponent to the line), 0.5 at a lead of ``lead_half`` cycles;
+* **on target**: the share of the aim's error window (kick noise makes the direction
+  wander by about ``kick_noise`` radians, so ``± kick_noise * distance`` across the goal) that
+  lies between the posts.
+
+The best aim is the one with the highest score; :func:`best_shot` returns None when the ball
+is beyond ``max_range`` of the goal centre or cannot reach the goal line, and
+:attr:`ShotPlan.take` says whether its score clears ``threshold``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from agents.skills.interception import UNREACHABLE
+from agents.skills.kicking import kick_for_velocity
+from agents.skills.lanes import opponent_cycles
+from agents.skills.model import MotionModel
+
+
+@dataclass(frozen=True)
+class ShotParams:
+    """Tunable choices of the shooting skill (metres, cycles)."""
+
+    max_range: float = 30.0
+    """No shot from further than this from the goal centre (m)."""
+    aims: int = 13
+    """Number of aim points sampled across the goal mouth."""
+    post_margin: float = 0.4
+    """Aim points stay this far inside the posts (m, beyond the ball's and post's radii)."""
+    lead_half: float = 1.0
+    """Lead (cycles) at which the unblocked factor is one half."""
+    lead_scale: float = 1.0
+    """Cycles over which the unblocked factor goes from one half to about 0.73."""
+    opponent_margin: float = 0.1
+    """Extra control distance given to opponents (m), for noise."""
+    threshold: float = 0.5
+    """Shoot when the best aim's score is at least this."""
+
+
+@dataclass(frozen=True)
+class ShotPlan:
+    """The best shot from where the ball is."""
+
+    aim: np.ndarray
+    """(2,) point on the goal line aimed at (m)."""
+    kick: np.ndarray
+    """(2,) kick request for the shooter (m/cycle)."""
+    ball_vel: np.ndarray
+    """(2,) ball velocity right after the kick."""
+    cross_cycle: int
+    """Cycles until the ball crosses the goal line."""
+    opponent_cycle: int
+    """Earliest opponent interception (UNREACHABLE: none before the line)."""
+    score: float
+    """Probability-like score in [0, 1]."""
+    take: bool
+    """Whether the score clears the threshold: shoot."""
+
+
+def aim_points(model: MotionModel, params: ShotParams = ShotParams()) -> np.ndarray:
+    """(aims, 2) points on the opponents' goal line, evenly spread between the posts."""
+    inner = model.goal_half_width - model.goal_post_radius - model.ball_radius - params.post_margin
+    inner = max(inner, 0.0)
+    ys = np.linspace(-inner, inner, params.aims) if params.aims > 1 else np.zeros(1)
+    return np.column_stack([np.full(ys.shape, model.half_length), ys])
+
+
+def best_shot(model: MotionModel, view: object, shooter: int, params: ShotParams = ShotParams(),
+              holder: bool = False) -> ShotPlan | None:
+    """The best shot for ``shooter`` (who must be able to kick), or None when out of range or
+    when no aim can reach the goal line. ``holder``: a goalkeeper holding the ball."""
+    ball = np.asarray(view.ball, float)
+    goal = model.goal_centre(ours=False)
+    if float(np.hypot(*(goal - ball))) > params.max_range or ball[0] >= model.half_length:
+        return None
+    aims = aim_points(model, params)
+    delta = aims - ball
+    dist = np.hypot(delta[:, 0], delta[:, 1])
+    direction = delta / dist[:, None]
+    kicks, velocities = kick_for_velocity(model, view.own_pos[shooter], ball, view.ball_vel,
+                                          direction * model.ball_speed_max, holder)
+    speed = np.einsum("ij,ij->i", velocities, direction)
+    on_line = speed > 0.99 * np.hypot(velocities[:, 0], velocities[:, 1])
+    cross = model.ball_cycles_to(dist, speed)
+    usable = on_line & np.isfinite(cross) & (cross <= model.horizon)
+    if not usable.any():
+        return None
+    cross_cycle = np.where(usable, np.ceil(np.where(usable, cross, 0.0)), model.horizon).astype(np.int64)
+    theirs, _ = opponent_cycles(model, view, ball, velocities, cross_cycle, params.opponent_margin)
+    lead = np.where(theirs >= UNREACHABLE, model.horizon, theirs - cross_cycle).astype(float)
+    unblocked = 1.0 / (1.0 + np.exp(-(lead - params.lead_half) / params.lead_scale))
+    spread = np.maximum(model.kick_noise * dist, 1e-6)
+    post = model.goal_half_width - model.ball_radius
+    covered = np.clip(np.minimum(aims[:, 1] + spread, post) - np.maximum(aims[:, 1] - spread, -post), 0.0, None)
+    on_target = np.minimum(covered / (2.0 * spread), 1.0)
+    score = np.where(usable, unblocked * on_target, 0.0)
+    best = int(np.argmax(score))
+    return ShotPlan(aim=aims[best].copy(), kick=kicks[best].copy(), ball_vel=velocities[best].copy(),
+                    cross_cycle=int(cross_cycle[best]), opponent_cycle=int(theirs[best]),
+                    score=float(score[best]), take=bool(score[best] >= params.threshold))
+
