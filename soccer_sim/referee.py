@@ -353,9 +353,12 @@ class Referee:
             if moved is not None:
                 state.vel[rows][moved] = 0.0
             if state.play_mode == _GOAL_KICK and self.config.rules.goal_kick_leaves_area:
+                # Opponents leave the penalty area too (from a goal kick's spot its lines are
+                # beyond the clearance; the second push keeps the clearance for any spot).
                 moved = push_out_of_penalty_area(block, -state.attack_direction(other), self.config.field)
                 if moved is not None:
                     state.vel[rows][moved] = 0.0
+                    push_clear_of_spot(block, sx, sy, self._clearance, self.config.field)
         if state.cycle - state.mode_start + 1 >= self.config.rules.set_play_timeout:
             self.events.add(state.cycle, EventKind.DROP_BALL, NO_TEAM, NO_PLAYER, sx, sy, int(state.play_mode))
             self._set_mode(state, _PLAY_ON, NO_TEAM)
@@ -614,7 +617,7 @@ class Referee:
         ``stuck_ball_cycles`` cycles of play on: DROP_BALL event (detail PLAY_ON), every player
         within that radius pushed out to it, play goes on with the ball still."""
         ax, ay = self._stuck_anchor
-        if (bx - ax) ** 2 + (by - ay) ** 2 > self._stuck_radius2:
+        if not (bx - ax) ** 2 + (by - ay) ** 2 <= self._stuck_radius2:  # (also when no anchor yet: NaN)
             self._stuck_anchor = (bx, by)
             self._stuck_since = state.cycle
             return

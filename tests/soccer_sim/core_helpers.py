@@ -66,7 +66,8 @@ class TrajectoryHash:
 
     def _add(self, match) -> None:
         state = match.state
-        for array in (state.pos, state.vel, state.ball, state.ball_vel, state.stamina):
+        for array in (state.pos, state.vel, state.ball, state.ball_vel, state.stamina, state.effort,
+                      state.recovery, state.capacity):
             self.digest.update(np.ascontiguousarray(array).tobytes())
 
     def hexdigest(self) -> str:

@@ -166,8 +166,9 @@ def test_distance_run_counts_running_not_standing() -> None:
         return dash, np.zeros((11, 2))
 
     result = run_match(Scripted(run_right), Scripted(), config=quiet_config(max_cycles=30))
-    # 1.0 m in the first cycle, then the speed limit: v = 0.4 v + 1.0 is clipped to 1.05.
-    assert result.statistics[0].distance_run == pytest.approx(1.0 + 29 * 1.05)
+    # A full-power dash gives 0.6 m/cycle²: the speed in cycle k is 0.6 (1 + 0.4 + ... + 0.4^(k-1)).
+    expected = sum(0.6 * (1 - 0.4 ** k) / (1 - 0.4) for k in range(1, 31))
+    assert result.statistics[0].distance_run == pytest.approx(expected)
     assert result.statistics[1].distance_run == 0.0
     assert result.statistics[0].possession == result.statistics[1].possession == 0.0  # nobody touched the ball
 
@@ -247,6 +248,8 @@ def test_a_real_match_keeps_the_rules_every_cycle(home: str, away: str, seed: in
     events = list(zip(result.events.cycle, result.events.kind, result.events.team, result.events.detail))
     goals = [i for i, e in enumerate(events) if e[1] == EventKind.GOAL]
     assert goals
-    for i in goals:  # the team that conceded kicks off, in the goal's cycle
+    pause = MatchConfig().rules.goal_pause_cycles
+    for i in goals:  # a pause from the goal's cycle, then the team that conceded kicks off
         cycle, _, scorer, _ = events[i]
-        assert events[i + 1] == (cycle, EventKind.SET_PLAY, 1 - scorer, PlayMode.KICK_OFF)
+        assert events[i + 1] == (cycle, EventKind.SET_PLAY, 1 - scorer, PlayMode.AFTER_GOAL)
+        assert events[i + 2] == (cycle + pause, EventKind.SET_PLAY, 1 - scorer, PlayMode.KICK_OFF)

@@ -26,77 +26,137 @@ def zero_noise() -> np.ndarray:
     return np.full((2 * N, 2), 0.5)
 
 
+BALL_AWAY = (0.0, 25.0)
+"""Where the ball waits when a test is about the players."""
+
+
 def world(config=CONFIG) -> tuple[BodyBlock, Physics]:
     block = BodyBlock(config.players_per_team)
     block.pos[:] = FAR
+    block.ball[:] = BALL_AWAY
     return block, Physics(config, block)
 
 
 # --- dash ----------------------------------------------------------------------------------
-def test_acceleration_is_clipped_to_the_limit() -> None:
-    kin = Kinematics(CONFIG)
-    vel = np.zeros((2 * N, 2))
-    stamina = np.full(2 * N, CONFIG.stamina.maximum)
+class Players:
+    """Per-player arrays of the dash and stamina model, fresh unless changed."""
+
+    def __init__(self, config=CONFIG) -> None:
+        self.kin = Kinematics(config)
+        n2 = 2 * config.players_per_team
+        self.vel = np.zeros((n2, 2))
+        self.stamina, self.effort, self.recovery, self.capacity = (np.empty(n2) for _ in range(4))
+        self.kin.restore(self.stamina, self.effort, self.recovery, self.capacity)
+
+    def dash(self, dash: np.ndarray, noise: np.ndarray | None = None) -> float:
+        return self.kin.dash(self.vel, self.stamina, self.effort, self.recovery, self.capacity, dash,
+                             zero_noise() if noise is None else noise)
+
+    def sprint(self, cycles: int, direction=(1.0, 0.0)) -> list[float]:
+        """Every player dashes at full power for ``cycles`` cycles (decay included); returns
+        player 0's speed during each cycle's move."""
+        speeds = []
+        for _ in range(cycles):
+            self.dash(np.tile(direction, (2 * N, 1)) * 10.0)
+            speeds.append(float(np.hypot(*self.vel[0])))
+            self.vel *= PHYS.player_decay
+        return speeds
+
+
+def test_acceleration_is_clipped_to_full_power_times_the_power_rate() -> None:
+    players = Players()
     dash = np.zeros((2 * N, 2))
     dash[0] = (30.0, 40.0)  # asks for 50 m/cycle²
     dash[1] = (0.3, 0.4)  # within the limit
-    kin.dash(vel, stamina, dash, zero_noise())
-    assert np.allclose(vel[0], (0.6, 0.8))  # 1.0 m/cycle² along the request
-    assert np.allclose(vel[1], (0.3, 0.4))
-    assert np.allclose(vel[2:], 0.0)
+    players.dash(dash)
+    assert PHYS.player_accel_max == pytest.approx(100 * 0.006)  # rcssserver: maxpower x dash_power_rate
+    assert np.allclose(players.vel[0], (0.36, 0.48))  # 0.6 m/cycle² along the request
+    assert np.allclose(players.vel[1], (0.3, 0.4))
+    assert np.allclose(players.vel[2:], 0.0)
+    # Power is paid in stamina: 100 for the full dash, 0.5 / 0.006 for the small one; then the
+    # cycle's recovery (45) tops both up.
+    stam = CONFIG.stamina
+    assert players.stamina[0] == pytest.approx(stam.maximum - 100.0 + stam.recovery_per_cycle)
+    assert players.stamina[1] == pytest.approx(stam.maximum - 0.5 / 0.006 + stam.recovery_per_cycle)
+    assert players.stamina[2] == stam.maximum
+    assert dash[0] == pytest.approx((0.36, 0.48))  # the command is overwritten with what was applied
 
 
-def test_speed_is_clipped_to_the_limit_after_repeated_dashes() -> None:
-    kin = Kinematics(CONFIG)
-    vel = np.zeros((2 * N, 2))
-    stamina = np.full(2 * N, CONFIG.stamina.maximum)
-    for _ in range(30):
-        dash = np.tile([1.0, 0.0], (2 * N, 1))
-        top = kin.dash(vel, stamina, dash, zero_noise())
-        assert top <= PHYS.player_speed_max + 1e-12
-        vel *= PHYS.player_decay
-    # Steady state: v = decay * v + 1.0 would reach 1 / 0.6 = 1.67 m/cycle without the limit.
-    assert top == pytest.approx(PHYS.player_speed_max)
+def test_top_speed_takes_several_cycles_from_rest() -> None:
+    speeds = Players().sprint(8)
+    assert speeds[0] == pytest.approx(0.6)  # rcssserver: 0.6 of ~1.0 m/cycle in the first cycle
+    # v_k = 0.6 (1 + 0.4 + ... + 0.4^(k-1)): 0.84, 0.936, 0.974, ... -> 1.0 m/cycle
+    assert speeds[:4] == pytest.approx([1 - 0.4 ** k for k in range(1, 5)])
+    assert speeds[2] < 0.95 <= speeds[3]  # 95 % of top speed in the fourth cycle
+    assert speeds[-1] == pytest.approx(1.0, abs=1e-3) and max(speeds) <= PHYS.player_speed_max
 
 
 def test_speed_limit_holds_with_noise() -> None:
-    config = replace(CONFIG, physics=replace(PHYS, player_noise=0.5))
-    kin = Kinematics(config)
+    config = replace(CONFIG, physics=replace(PHYS, player_noise=0.5, dash_power_rate=0.02))
+    players = Players(config)
     rng = np.random.default_rng(0)
-    vel = np.zeros((2 * N, 2))
-    stamina = np.full(2 * N, CONFIG.stamina.maximum)
     for _ in range(50):
-        kin.dash(vel, stamina, rng.normal(size=(2 * N, 2)) * 5, rng.random((2 * N, 2)))
-        assert np.hypot(vel[:, 0], vel[:, 1]).max() <= PHYS.player_speed_max + 1e-12
+        players.dash(rng.normal(size=(2 * N, 2)) * 5, rng.random((2 * N, 2)))
+        assert np.hypot(players.vel[:, 0], players.vel[:, 1]).max() <= PHYS.player_speed_max + 1e-12
 
 
-def test_stamina_drains_recovers_and_low_stamina_weakens_acceleration() -> None:
-    stam = CONFIG.stamina
-    kin = Kinematics(CONFIG)
-    vel = np.zeros((2 * N, 2))
-    stamina = np.full(2 * N, stam.maximum)
-    stamina[1] = 0.0
-    stamina[2] = stam.tired_fraction * stam.maximum / 2  # half way down the ramp
+@pytest.mark.parametrize("angle, rate", [(0.0, 1.0), (90.0, 0.4), (180.0, 0.7), (135.0, 0.55), (45.0, 0.7)])
+def test_dashing_against_the_direction_of_motion_is_weaker(angle: float, rate: float) -> None:
+    players = Players()
+    players.vel[0] = (1.0, 0.0)  # running along +x, well above dash_heading_speed
+    players.vel[1] = (0.0, 0.0)  # at rest: no heading, every direction is full strength
+    a = math.radians(angle)
     dash = np.zeros((2 * N, 2))
-    dash[:3] = (10.0, 0.0)
-    kin.dash(vel, stamina, dash, zero_noise())
-    assert vel[0, 0] == pytest.approx(1.0)
-    assert vel[1, 0] == pytest.approx(stam.min_effort)
-    assert vel[2, 0] == pytest.approx((1 + stam.min_effort) / 2)
-    # A full dash costs 100 and the cycle recovers 45; standing players stay full.
-    assert stamina[0] == pytest.approx(stam.maximum - 100.0 + stam.recovery_per_cycle)
-    assert stamina[5] == stam.maximum
-    assert stamina[1] == pytest.approx(0.0 + stam.recovery_per_cycle)  # 30 paid, clipped at 0, recovered
+    dash[0] = dash[1] = (10.0 * math.cos(a), 10.0 * math.sin(a))
+    players.dash(dash)
+    assert np.hypot(*dash[0]) == pytest.approx(0.6 * rate)  # rcssserver's side/back dash rates
+    assert np.hypot(*dash[1]) == pytest.approx(0.6)
+    # Slow motion blends towards full strength: at half the heading speed, half the penalty.
+    slow = Players()
+    slow.vel[0] = (PHYS.dash_heading_speed / 2, 0.0)
+    dash = np.zeros((2 * N, 2))
+    dash[0] = (-10.0, 0.0)
+    slow.dash(dash)
+    assert -dash[0, 0] == pytest.approx(0.6 * (1 - 0.5 * (1 - PHYS.back_dash_rate)))
 
 
-def test_no_tired_ramp_means_full_effort_at_zero_stamina() -> None:
-    config = replace(CONFIG, stamina=replace(StaminaConfig(), tired_fraction=0.0))
-    kin = Kinematics(config)
-    vel = np.zeros((2 * N, 2))
-    stamina = np.zeros(2 * N)
-    dash = np.tile([5.0, 0.0], (2 * N, 1))
-    kin.dash(vel, stamina, dash, zero_noise())
-    assert np.allclose(vel[:, 0], 1.0)
+def test_a_sprinter_whose_stamina_is_spent_slows_to_the_rcssserver_figure() -> None:
+    stam = CONFIG.stamina
+    players = Players()
+    speeds = players.sprint(1500)
+    # Spent: each cycle recovers recover_min x 45 = 22.5 and the dash may use 50 more, at the
+    # lowest effort: (22.5 + 50) x 0.006 x 0.6 = 0.261 m/cycle², a speed of 0.261 / (1 - 0.4).
+    model = (stam.recover_min * stam.recovery_per_cycle + stam.extra_stamina) * PHYS.dash_power_rate \
+        * stam.effort_min / (1 - PHYS.player_decay)
+    assert model == pytest.approx(0.435)
+    assert speeds[-1] == pytest.approx(model, rel=0.10)
+    assert players.effort[0] == stam.effort_min and players.recovery[0] == stam.recover_min
+    assert speeds[100] > 0.95  # fresh players run at top speed for a good while first
+    assert sum(speeds) < 0.6 * 1500 * 1.0  # far less ground than 1500 cycles at top speed
+
+
+def test_effort_recovers_above_its_threshold_and_recovery_never_does() -> None:
+    stam = CONFIG.stamina
+    players = Players()
+    players.sprint(600)
+    tired_effort, tired_recovery = players.effort[0], players.recovery[0]
+    for _ in range(400):  # rest
+        players.dash(np.zeros((2 * N, 2)))
+    assert players.stamina[0] >= stam.effort_inc_thr * stam.maximum
+    assert players.effort[0] > tired_effort
+    assert players.recovery[0] == tired_recovery  # restored only at half time
+
+
+def test_once_the_capacity_is_spent_stamina_no_longer_recovers() -> None:
+    config = replace(CONFIG, stamina=replace(StaminaConfig(), capacity=2000.0))
+    players = Players(config)
+    speeds = players.sprint(1500)
+    assert players.capacity[0] == 0.0
+    assert players.stamina[0] == 0.0
+    # Only the extra stamina is left: 50 x 0.006 x 0.6 / 0.6 = 0.3 m/cycle.
+    assert speeds[-1] == pytest.approx(50 * 0.006 * 0.6 / 0.6, rel=0.05)
+    unlimited = Players(replace(CONFIG, stamina=replace(StaminaConfig(), capacity=None)))
+    assert unlimited.sprint(1500)[-1] > speeds[-1] * 1.2
 
 
 # --- kicks ---------------------------------------------------------------------------------
@@ -162,7 +222,7 @@ def test_ball_decays_by_the_ball_decay_each_cycle() -> None:
     block, physics = world()
     kin = Kinematics(CONFIG)
     block.ball_vel[:] = (2.0, 0.0)
-    x = 0.0
+    x = block.ball[0]
     for cycle in range(10):
         physics.step(1)
         kin.decay(block.vel, block.ball_vel, np.full(2, 0.5))
@@ -175,8 +235,11 @@ def test_ball_decays_by_the_ball_decay_each_cycle() -> None:
     assert block.vel[0, 0] == pytest.approx(PHYS.player_decay)
 
 
-def planned(block: BodyBlock, ball_free: bool = True) -> int:
-    return SubstepPlanner(CONFIG).count(block.dynamic, ball_free)
+RIGID = replace(CONFIG, physics=replace(PHYS, body_ball_contact="rigid"))
+
+
+def planned(block: BodyBlock, ball_free: bool = True, config=CONFIG) -> int:
+    return SubstepPlanner(config).count(block.dynamic, ball_free)
 
 
 @pytest.mark.parametrize("player_speed", [0.0, 1.05])
@@ -184,9 +247,28 @@ def test_full_speed_ball_does_not_pass_through_a_player(player_speed: float) -> 
     block, physics = world()
     block.pos[0] = (0.0, 0.0)
     block.vel[0] = (-player_speed, 0.0)  # running at the ball makes it worse
+    block.ball[:] = (-2.0, 0.0)
+    block.ball_vel[:] = (PHYS.ball_speed_max, 0.0)
+    assert planned(block) == 1  # the contact sweep is exact: no sub-steps needed for it
+    touchers = physics.step(1)
+    assert touchers.tolist() == [0]
+    # rcssserver: both are put back where they met, and their velocities multiplied by -0.1.
+    contact = PHYS.player_radius + PHYS.ball_radius
+    assert block.pos[0, 0] - block.ball[0] == pytest.approx(contact)
+    t = (2.0 - contact) / (PHYS.ball_speed_max + player_speed)  # the moment they met
+    assert block.ball[0] == pytest.approx(-2.0 + PHYS.ball_speed_max * t)
+    assert block.ball_vel.tolist() == pytest.approx([-0.1 * PHYS.ball_speed_max, 0.0])
+    assert block.vel[0].tolist() == pytest.approx([0.1 * player_speed, 0.0])
+
+
+@pytest.mark.parametrize("player_speed", [0.0, 1.05])
+def test_rigid_contacts_need_substeps_against_tunnelling(player_speed: float) -> None:
+    block, physics = world(RIGID)
+    block.pos[0] = (0.0, 0.0)
+    block.vel[0] = (-player_speed, 0.0)
     block.ball[:] = (-1.2, 0.0)
     block.ball_vel[:] = (PHYS.ball_speed_max, 0.0)
-    substeps = planned(block)
+    substeps = planned(block, config=RIGID)
     assert substeps == math.ceil((PHYS.ball_speed_max + player_speed) / PHYS.max_substep_distance)
     touchers = physics.step(substeps)
     assert block.ball[0] < block.pos[0, 0]  # still on the near side
@@ -194,14 +276,39 @@ def test_full_speed_ball_does_not_pass_through_a_player(player_speed: float) -> 
     assert touchers.tolist() == [0]
 
 
-def test_without_substeps_the_same_ball_would_tunnel() -> None:
+def test_without_substeps_a_rigid_ball_would_tunnel() -> None:
     """The control experiment: one step lets the ball jump through, so sub-steps matter."""
-    block, physics = world()
+    block, physics = world(RIGID)
     block.pos[0] = (0.0, 0.0)
     block.ball[:] = (-1.2, 0.0)
     block.ball_vel[:] = (PHYS.ball_speed_max, 0.0)
     physics.step(1)
     assert block.ball[0] > 1.0
+
+
+def test_a_running_body_stops_at_the_ball_instead_of_pushing_it() -> None:
+    block, physics = world()
+    block.pos[0], block.vel[0] = (-1.0, 0.0), (1.0, 0.0)
+    block.ball[:] = (0.0, 0.0)
+    assert physics.step(1).tolist() == [0]
+    assert block.ball.tolist() == [0.0, 0.0] and block.ball_vel.tolist() == [0.0, 0.0]
+    assert block.pos[0, 0] == pytest.approx(-(PHYS.player_radius + PHYS.ball_radius))
+    assert block.vel[0, 0] == pytest.approx(-0.1)
+    # With rigid contacts the same run drives the ball ahead at the player's speed.
+    block, physics = world(RIGID)
+    block.pos[0], block.vel[0] = (-1.0, 0.0), (1.0, 0.0)
+    block.ball[:] = (0.0, 0.0)
+    physics.step(planned(block, config=RIGID))
+    assert block.ball_vel[0] > 0.9
+
+
+def test_this_cycles_kicker_lets_the_ball_pass() -> None:
+    block, physics = world()
+    block.pos[0] = (0.0, 0.0)
+    block.ball[:] = (-0.5, 0.0)
+    block.ball_vel[:] = (2.0, 0.0)  # kicked through the kicker's own body
+    assert physics.step(1, np.array([0])).size == 0
+    assert block.ball[0] == pytest.approx(1.5)
 
 
 @pytest.mark.parametrize("speed", [0.4, 0.7, 1.05])
@@ -217,6 +324,7 @@ def test_players_running_head_on_do_not_pass_through_each_other(speed: float) ->
         block2, physics2 = world()
         block2.data[:] = 0.0
         block2.pos[:] = FAR
+        block2.ball[:] = BALL_AWAY
         block2.pos[0], block2.vel[0] = (-0.8 * speed, 0.0), (speed, 0.0)
         block2.pos[N], block2.vel[N] = (0.8 * speed, 0.0), (-speed, 0.0)
         physics2.step(1)
@@ -234,15 +342,16 @@ def test_substeps_follow_closing_speeds_of_bodies_that_can_meet() -> None:
     # Head-on towards a teammate within reach.
     block.pos[2], block.vel[2] = block.pos[0] + (2.0, 0.0), (-1.05, 0.0)
     assert planned(block) == math.ceil(2.1 / (2 * step))
-    # A fast ball near a player: the closing speed counts...
+    # A fast ball near a player: with rigid contacts the closing speed counts...
     block.ball[:] = block.pos[5] + (2.0, 0.0)
     block.ball_vel[:] = (-3.0, 0.0)
-    assert planned(block) == math.ceil(3.0 / step)
+    assert planned(block, config=RIGID) == math.ceil(3.0 / step)
+    assert planned(block) == math.ceil(2.1 / (2 * step))  # (rcssserver contacts are swept exactly)
     # ...not while a goalkeeper holds it...
-    assert planned(block, ball_free=False) == math.ceil(2.1 / (2 * step))
+    assert planned(block, ball_free=False, config=RIGID) == math.ceil(2.1 / (2 * step))
     # ...and not in free flight.
     block.ball[:] = (0.0, 20.0)
-    assert planned(block) == math.ceil(2.1 / (2 * step))
+    assert planned(block, config=RIGID) == math.ceil(2.1 / (2 * step))
     # Near a thin goal post the ball may move at most the ball-post contact distance.
     block.vel[:] = 0.0
     block.ball[:] = (CONFIG.field.half_length - 2.0, CONFIG.field.goal_width / 2)

@@ -5,7 +5,7 @@ import pytest
 
 from soccer_sim.config import MatchConfig
 from soccer_sim.state import AWAY, HOME, NO_PLAYER, NO_TEAM, EventKind, PlayMode
-from tests.soccer_sim.referee_world import N, kinds, make_world, move_ball, set_play_modes, step
+from tests.soccer_sim.referee_world import N, config_with, kinds, make_world, move_ball, set_play_modes, step
 
 CFG = MatchConfig()
 HL = CFG.field.half_length
@@ -25,11 +25,17 @@ def test_ball_over_the_goal_line_between_the_posts_is_a_goal_for_the_attackers()
     assert (cycle, team, player, own_goal) == (101, HOME, 9, 0)
     assert x == pytest.approx(HL + R)
     assert 3.0 < y < 3.2  # where the ball's centre crossed the line
-    # The team that conceded kicks off from the centre spot.
+    # A pause, then the team that conceded kicks off from the centre spot.
+    assert st.play_mode == PlayMode.AFTER_GOAL and st.mode_team == AWAY
+    assert st.ball.tolist() == [0.0, 0.0] and st.ball_vel.tolist() == [0.0, 0.0]
+    for _ in range(CFG.rules.goal_pause_cycles):
+        assert ref.kick_mask(st).sum() == 0  # nobody may kick during the pause
+        step(ref, st)
     assert st.play_mode == PlayMode.KICK_OFF and st.mode_team == AWAY
+    assert st.mode_start == 102 + CFG.rules.goal_pause_cycles
     assert st.ball.tolist() == [0.0, 0.0] and st.ball_vel.tolist() == [0.0, 0.0]
     assert st.last_touch == NO_PLAYER
-    assert set_play_modes(ev) == [PlayMode.KICK_OFF]
+    assert set_play_modes(ev) == [PlayMode.AFTER_GOAL, PlayMode.KICK_OFF]
 
 
 def test_ball_on_the_line_is_not_a_goal_until_wholly_over():
@@ -74,9 +80,9 @@ def test_goals_swap_with_the_ends_in_the_second_half():
     assert st.mode_team == AWAY
 
 
-def test_kick_off_after_a_goal_puts_players_in_their_own_halves():
+def test_kick_off_without_a_pause_reflects_players_into_their_own_halves():
     moves = {5: (10.0, 2.0), 6: (30.0, -5.0), N + 5: (-3.0, 1.0), N + 6: (2.0, 0.5)}
-    ref, st, ev = make_world(ball=(52.0, 0.0), last_touch=9, moves=moves)
+    ref, st, ev = make_world(ball=(52.0, 0.0), last_touch=9, moves=moves, config=config_with(goal_pause_cycles=0))
     st.vel[:] = 0.5
     step(ref, st)
     move_ball(st, HL + 1.0, 0.0)
@@ -117,6 +123,41 @@ def test_kick_in_after_an_away_touch_goes_to_home_on_the_far_touchline():
     assert st.ball.tolist() == [-20.0, -HW]
 
 
+def test_players_use_the_pause_after_a_goal_to_go_back_and_stragglers_end_on_the_halfway_line():
+    moves = {5: (10.0, 2.0), 6: (30.0, -5.0)}
+    ref, st, ev = make_world(ball=(52.0, 0.0), last_touch=9, moves=moves)
+    step(ref, st)
+    move_ball(st, HL + 1.0, 0.0)
+    step(ref, st)
+    assert st.play_mode == PlayMode.AFTER_GOAL
+    st.pos[6] = (-12.0, -5.0)  # player 6 walks home during the pause; player 5 stays
+    for _ in range(CFG.rules.goal_pause_cycles):
+        assert st.pos[5].tolist() == [10.0, 2.0]  # the referee moves nobody during the pause
+        step(ref, st)
+    assert st.play_mode == PlayMode.KICK_OFF and st.mode_team == AWAY
+    # The straggler is put on the halfway line (outside the centre circle), not reflected to x = -10.
+    assert st.pos[5, 0] == 0.0 and st.pos[5, 1] == pytest.approx(CFG.field.centre_circle_radius)
+    assert st.pos[6].tolist() == [-12.0, -5.0]
+    assert np.hypot(st.pos[:N, 0], st.pos[:N, 1]).min() >= CFG.field.centre_circle_radius - 1e-9
+
+
+def test_teams_may_place_their_players_with_move_during_the_pause_after_a_goal():
+    ref, st, ev = make_world(ball=(52.0, 0.0), last_touch=9, moves={6: (30.0, -5.0)})
+    step(ref, st)
+    move_ball(st, HL + 1.0, 0.0)
+    step(ref, st)
+    targets = st.pos[:N].copy()
+    targets[6] = (-12.0, -5.0)
+    targets[7] = (20.0, 1.0)  # asks for the opponents' half: clamped onto the halfway line
+    ref.apply_moves(st, HOME, targets)
+    assert st.pos[6].tolist() == [-12.0, -5.0]
+    assert st.pos[7, 0] == 0.0
+    ref2, st2, _ = make_world(ball=(10.0, 0.0))  # in play on a move is ignored
+    before = st2.pos.copy()
+    ref2.apply_moves(st2, HOME, targets)
+    assert np.array_equal(st2.pos, before)
+
+
 @pytest.mark.parametrize("x, taker", [(-20.0, HOME), (20.0, AWAY)])
 def test_kick_in_with_no_last_touch_goes_to_the_team_defending_that_half(x, taker):
     ref, st, ev = make_world(ball=(x, 33.0), last_touch=NO_PLAYER)
@@ -135,7 +176,8 @@ def test_ball_out_over_the_goal_line_off_a_defender_is_a_corner_at_the_nearer_co
     move_ball(st, HL + 1.0, y)
     step(ref, st)
     assert (st.play_mode, st.mode_team) == (PlayMode.CORNER_KICK, HOME)
-    assert st.ball.tolist() == [HL, np.sign(y) * HW]
+    inset = CFG.rules.corner_inset  # 1 m inside the corner along both lines
+    assert st.ball.tolist() == [HL - inset, np.sign(y) * (HW - inset)]
     assert ev.of_kind(EventKind.OUT)[0][5] == 1  # goal line
 
 

@@ -20,31 +20,45 @@ def world(striker_x: float, *, ball_x: float = 10.0, config=None, mode=PlayMode.
     return make_world(ball=(ball_x, 0.0), moves=moves, config=config, mode=mode, mode_team=mode_team)
 
 
-def run_towards_ball(ref, st, row: int, cycles: int = 30) -> None:
+def run_towards_ball(ref, st, row: int, cycles: int = 30, play: bool = True) -> None:
     """Move ``row`` straight at the ball, 1 m per cycle, judging each cycle, until it stands on
-    the ball or play stops."""
+    the ball (and, if ``play``, touches it) or play stops."""
     for _ in range(cycles):
         if st.play_mode != PlayMode.PLAY_ON:
             return
         d = st.ball - st.pos[row]
         dist = float((d ** 2).sum() ** 0.5)
         if dist < 1e-9:
+            if play:
+                step(ref, st, touchers=[row])
             return
         st.pos[row] += d / dist * min(1.0, dist)
         step(ref, st)
     raise AssertionError("the player never reached the ball")
 
 
-def test_player_beyond_the_second_last_defender_is_penalised_when_it_approaches_the_ball():
+def test_player_beyond_the_second_last_defender_is_penalised_only_when_it_plays_the_ball():
     ref, st, ev = world(striker_x=30.0)
     kick(ref, st, [KICKER], (0.0, 0.0))
-    run_towards_ball(ref, st, 10)
+    run_towards_ball(ref, st, 10, play=False)  # standing on the ball without playing it
+    assert EventKind.OFFSIDE not in kinds(ev) and st.play_mode == PlayMode.PLAY_ON
+    step(ref, st, touchers=[10])
     [(cycle, team, player, x, y, _)] = ev.of_kind(EventKind.OFFSIDE)
     assert (team, player) == (HOME, 10)
-    d_ball = ((x - 10.0) ** 2 + y ** 2) ** 0.5
-    assert d_ball <= CFG.rules.offside_active_distance
+    assert (x, y) == (10.0, 0.0)  # where the offender played the ball
     assert (st.play_mode, st.mode_team) == (PlayMode.FREE_KICK, AWAY)
-    assert st.ball.tolist() == [x, y]  # free kick where the offender was
+    # The free kick is taken on the offside line (the second-last defender at x = 25 when the
+    # ball was played), level with the offender.
+    assert st.ball.tolist() == [25.0, 0.0]
+
+
+def test_the_old_approach_rule_is_still_available():
+    ref, st, ev = world(striker_x=30.0, config=config_with(offside_active_distance=2.5))
+    kick(ref, st, [KICKER], (0.0, 0.0))
+    run_towards_ball(ref, st, 10, play=False)
+    [(cycle, team, player, x, y, _)] = ev.of_kind(EventKind.OFFSIDE)
+    assert (team, player) == (HOME, 10)
+    assert ((x - 10.0) ** 2 + y ** 2) ** 0.5 <= 2.5
 
 
 @pytest.mark.parametrize("striker_x", [25.0, 24.0])

@@ -129,13 +129,18 @@ def test_striker_scores_and_the_conceding_team_kicks_off():
     assert (team, player, own_goal) == (HOME, STRIKER, 0)
     assert x > 52.5 and abs(y) < 7.01
     assert any(e[1] == HOME and e[2] == STRIKER and e[0] < cycle for e in events_of(result, EventKind.SHOT))
-    # The idle away team never takes its kick-off: the ball is dropped after the timeout.
+    # A pause, then the idle away team never takes its kick-off: the ball is dropped after the timeout.
+    rules = MatchConfig().rules
     after = [(c, k, t, d) for c, k, t, d in zip(result.events.cycle, result.events.kind, result.events.team,
                                                 result.events.detail) if c >= cycle]
-    assert after[1] == (cycle, EventKind.SET_PLAY, AWAY, PlayMode.KICK_OFF)
+    assert after[1] == (cycle, EventKind.SET_PLAY, AWAY, PlayMode.AFTER_GOAL)
+    kick_off_cycle = cycle + rules.goal_pause_cycles
+    assert after[2] == (kick_off_cycle, EventKind.SET_PLAY, AWAY, PlayMode.KICK_OFF)
     drop = events_of(result, EventKind.DROP_BALL)[0]
-    assert drop[0] == cycle + MatchConfig().rules.set_play_timeout
-    kick_off = [row for row in log.rows if row[0] == cycle][0]
+    assert drop[0] == kick_off_cycle + rules.set_play_timeout
+    pause = [row for row in log.rows if row[0] == cycle][0]
+    assert pause[1:] == (PlayMode.AFTER_GOAL, AWAY, 0.0, 0.0)
+    kick_off = [row for row in log.rows if row[0] == kick_off_cycle][0]
     assert kick_off[1:] == (PlayMode.KICK_OFF, AWAY, 0.0, 0.0)
     state = result.state
     assert state.play_mode == PlayMode.TIME_OVER and result.cycles == 400
@@ -171,7 +176,7 @@ def test_goalkeeper_catches_a_shot_and_is_punished_for_holding_it():
     hold = 30
     log = ModeLog()
     result = run_match(Striker(target=(60.0, 0.0)), Keeper(), seed=4,
-                       config=config(400, goalie_hold_cycles=hold), recorders=[log])
+                       config=config(700, goalie_hold_cycles=hold), recorders=[log])
     catches = events_of(result, EventKind.CATCH)
     assert catches and catches[0][1:3] == (AWAY, 0)
     caught_at = catches[0][0]
