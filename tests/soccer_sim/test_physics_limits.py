@@ -486,3 +486,22 @@ def test_a_changed_pymunk_fails_loudly_naming_the_supported_versions(monkeypatch
     monkeypatch.setattr(pymunk.batch, "get_space_bodies", reads_nothing_back)
     with pytest.raises(PymunkChangedError, match="unexpected amount of body data"):
         world()
+
+
+@pytest.mark.parametrize("cap_sum, expected", [(True, 2.7), (False, 3.0)])
+def test_the_kicks_of_one_cycle_are_summed_and_capped(cap_sum: bool, expected: float) -> None:
+    config = replace(CONFIG, physics=replace(PHYS, cap_summed_kicks=cap_sum))
+    kin = Kinematics(config)
+    touch = PHYS.player_radius + PHYS.ball_radius
+    pos = FAR.copy()
+    pos[0], pos[N] = (-touch, 0.0), (0.0, -touch)  # two players touching the ball, both kick it along +x
+    ball, ball_vel = np.zeros(2), np.zeros(2)
+    kick = np.zeros((2 * N, 2))
+    kick[0] = kick[N] = (PHYS.kick_speed_max, 0.0)
+    rows = np.zeros(2 * N, dtype=np.int64)
+    count, _ = kin.kick_candidates(pos, ball, kick, np.ones(2 * N, dtype=bool), -1, rows)
+    assert count == 2
+    kin.kick(rows[:count], pos, ball, ball_vel, kick, kin.ball_distance, -1, np.full(2, 0.5))
+    # rcssserver adds both kicks into one acceleration capped at 2.7; per-kick caps let the two
+    # reach the ball speed limit (3.0).
+    assert np.hypot(*ball_vel) == pytest.approx(expected)

@@ -135,3 +135,43 @@ def test_goalkeeper_that_kicks_cannot_catch_in_the_same_cycle():
     ref, st, ev = keeper_world()
     kick(ref, st, [GK], (1.0, 0.0), catch=(True, False))
     assert st.play_mode == PlayMode.PLAY_ON
+
+
+def test_a_back_pass_cannot_be_caught_and_gives_the_opponents_a_free_kick():
+    ref, st, ev = make_world(ball=(-30.0, 2.0), moves={GK: (-48.0, 2.0), 4: (-30.5, 2.0)})
+    kick(ref, st, [4], (-2.0, 0.0))  # home player 4 passes back to its goalkeeper
+    step(ref, st)
+    st.ball[:] = (-47.3, 2.2)  # the ball arrives
+    catch(ref, st, HOME)
+    assert st.ball_holder == NO_PLAYER
+    [(cycle, team, player, x, y, passer)] = ev.of_kind(EventKind.BACK_PASS)
+    assert (team, player, passer) == (HOME, 0, 4)
+    # Indirect free kick for the opponents; inside the goal area it moves to the area's front line.
+    assert (st.play_mode, st.mode_team) == (PlayMode.FREE_KICK, AWAY)
+    assert st.ball.tolist() == [-HL + CFG.field.goal_area_length, 2.2]
+
+
+def test_a_ball_that_came_off_an_opponent_or_a_body_may_be_caught():
+    # Kicked back by a team-mate, but an opponent touched it on the way: a legal catch.
+    ref, st, ev = make_world(ball=(-30.0, 2.0), moves={GK: (-48.0, 2.0), 4: (-30.5, 2.0), N + 9: (-40.0, 2.0)})
+    kick(ref, st, [4], (-2.0, 0.0))
+    step(ref, st, touchers=[N + 9])
+    st.ball[:] = (-47.3, 2.2)
+    catch(ref, st, HOME)
+    assert st.ball_holder == GK and EventKind.BACK_PASS not in kinds(ev)
+    # A team-mate's body deflection is not a pass either.
+    ref, st, ev = make_world(ball=(-40.0, 2.0), ball_vel=(-2.0, 0.0), moves={GK: (-48.0, 2.0), 4: (-40.3, 2.0)})
+    step(ref, st, touchers=[4])
+    st.ball[:] = (-47.3, 2.2)
+    catch(ref, st, HOME)
+    assert st.ball_holder == GK
+
+
+def test_the_back_pass_rule_can_be_switched_off():
+    ref, st, ev = make_world(ball=(-30.0, 2.0), moves={GK: (-48.0, 2.0), 4: (-30.5, 2.0)},
+                             config=config_with(back_pass_rule=False))
+    kick(ref, st, [4], (-2.0, 0.0))
+    step(ref, st)
+    st.ball[:] = (-47.3, 2.2)
+    catch(ref, st, HOME)
+    assert st.ball_holder == GK

@@ -204,3 +204,57 @@ def test_a_defender_standing_on_the_centre_spot_is_pushed_back_into_its_own_half
     step(ref, st)
     assert st.pos[N + 2].tolist() == [CFG.field.centre_circle_radius, 0.0]
     assert st.pos[N + 3].tolist() == [0.0, 9.15]
+
+
+def test_a_ball_stuck_in_play_on_is_dropped_and_the_crowd_pushed_back():
+    rules = CFG.rules
+    scrum = {3: (10.5, 0.0), 4: (9.0, 1.0), N + 3: (11.0, -0.5)}
+    ref, st, ev = make_world(ball=(10.0, 0.0), moves=scrum)
+    step(ref, st)  # the referee notes where the ball is: the first of the stuck cycles
+    for k in range(rules.stuck_ball_cycles - 2):
+        st.ball[:] = (10.0 + 2.0 * np.sin(k), 1.0 * np.cos(k))  # jostled about, never 3 m away
+        step(ref, st)
+    assert EventKind.DROP_BALL not in kinds(ev)
+    step(ref, st)
+    [(cycle, team, player, x, y, detail)] = ev.of_kind(EventKind.DROP_BALL)
+    assert detail == PlayMode.PLAY_ON and st.play_mode == PlayMode.PLAY_ON
+    d = np.hypot(st.pos[:, 0] - st.ball[0], st.pos[:, 1] - st.ball[1])
+    assert d.min() >= rules.stuck_ball_radius - 1e-9  # everybody pushed out to the radius
+
+
+def test_a_moving_ball_is_never_dropped():
+    ref, st, ev = make_world(ball=(-40.0, 0.0))
+    for k in range(400):
+        st.ball[:] = (-40.0 + 0.2 * k, 5.0 * np.sin(k / 20))  # slow, but it gets somewhere
+        step(ref, st)
+    assert EventKind.DROP_BALL not in kinds(ev)
+
+
+def test_a_goal_kick_played_again_inside_the_penalty_area_is_retaken():
+    spot = (HL - CFG.field.goal_area_length, 9.16)  # away defends +x: its goal kick
+    ref, st, ev = make_world(ball=spot, mode=PlayMode.GOAL_KICK, mode_team=AWAY,
+                             moves={N + 4: (spot[0] - 0.5, spot[1]), N + 5: (40.0, 5.0)})
+    kick(ref, st, [N + 4], (-1.0, 0.0))
+    assert st.play_mode == PlayMode.PLAY_ON
+    st.ball[:] = (45.0, 8.0)  # still inside the penalty area
+    step(ref, st)
+    step(ref, st, touchers=[N + 5])  # a team-mate plays it too early
+    assert (st.play_mode, st.mode_team) == (PlayMode.GOAL_KICK, AWAY)
+    assert st.ball.tolist() == list(spot)
+    # Taken properly: the ball leaves the area, then anybody may play it.
+    kick(ref, st, [N + 4], (-2.5, 0.0))
+    st.ball[:] = (30.0, 8.0)
+    step(ref, st)
+    step(ref, st, touchers=[N + 5])
+    assert st.play_mode == PlayMode.PLAY_ON
+
+
+def test_opponents_leave_the_penalty_area_at_a_goal_kick():
+    spot = (HL - CFG.field.goal_area_length, -9.16)
+    ref, st, ev = make_world(ball=spot, mode=PlayMode.GOAL_KICK, mode_team=AWAY,
+                             moves={3: (40.0, 15.0), 4: (50.0, -19.0), 5: (37.0, 0.0)})
+    step(ref, st)
+    pa_front = HL - CFG.field.penalty_area_length
+    inside = (st.pos[:N, 0] > pa_front) & (np.abs(st.pos[:N, 1]) < CFG.field.penalty_area_width / 2)
+    assert not inside.any()
+    assert np.hypot(st.pos[:N, 0] - spot[0], st.pos[:N, 1] - spot[1]).min() >= CFG.rules.set_play_clearance - 1e-9
