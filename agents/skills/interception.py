@@ -5,7 +5,10 @@ to ``horizon`` cycles, stopping where it leaves the field. A player reaches the 
 ``k`` when the ball's position after ``k`` cycles lies within its control radius (the
 kickable distance, or the catch length for a goalkeeper inside its penalty area) of the disc
 the player can reach in ``k`` cycles: centred where it would coast to from its current
-velocity, of radius ``reach(k) * effort``. Cycle 0 means the ball is under control now.
+velocity, of radius ``reach(k) * effort``; and, since the speed limit caps what a player
+already running fast can add, no further from where it stands than it can run in ``k``
+cycles flat out along its current direction of motion (its speed clipped each cycle). Cycle
+0 means the ball is under control now.
 
 The search is one compiled loop over trajectories, cycles and players with an early exit,
 so all players of a team against one ball cost a few microseconds, and the same kernel
@@ -165,7 +168,8 @@ def _kernel_params(model: MotionModel, catch_side: float) -> np.ndarray:
     params = cached.get(catch_side)
     if params is None:
         params = np.array([model.half_length, model.half_width, model.top_speed, catch_side,
-                           model.half_length - model.penalty_area_length, model.penalty_area_half_width])
+                           model.half_length - model.penalty_area_length, model.penalty_area_half_width,
+                           model.accel_max, model.speed_max, model.player_decay])
         cached[catch_side] = params
     return params
 
@@ -176,16 +180,21 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
                       coast: np.ndarray, params: np.ndarray, limits: np.ndarray, cycles_out: np.ndarray,
                       points_out: np.ndarray) -> None:  # pragma: no cover - compiled
     """See the module docstring. ``params``: half length, half width, top speed, catch side,
-    |x| of the penalty area's front line, its half width. ``limits[p] < 0``: the horizon."""
+    |x| of the penalty area's front line, its half width, largest acceleration, speed limit,
+    player decay. ``limits[p] < 0``: the horizon."""
     half_length, half_width, top_speed, side = params[0], params[1], params[2], params[3]
-    area_x, area_y = params[4], params[5]
+    area_x, area_y, accel_max, speed_max, decay = params[4], params[5], params[6], params[7], params[8]
     horizon = reach.shape[0] - 1
     n = pos.shape[0]
+    run = np.empty(n)  # furthest straight-line run so far, per player
+    speed = np.empty(n)
     for p in range(ball.shape[0]):
         bx0, by0, vx, vy = ball[p, 0], ball[p, 1], ball_vel[p, 0], ball_vel[p, 1]
         last = horizon if limits[p] < 0 else min(limits[p], horizon)
         for i in range(n):
             cycles_out[p, i] = -1
+            run[i] = 0.0
+            speed[i] = math.sqrt(vel[i, 0] ** 2 + vel[i, 1] ** 2)
         remaining = n
         left_field = False
         bx, by = bx0, by0
@@ -202,13 +211,18 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
             for i in range(n):
                 if cycles_out[p, i] >= 0:
                     continue
+                if k > 0:
+                    speed[i] = min(speed[i] + accel_max * effort[i], speed_max)
+                    run[i] += speed[i]
+                    speed[i] *= decay
                 cx = pos[i, 0] + coast[k] * vel[i, 0]
                 cy = pos[i, 1] + coast[k] * vel[i, 1]
                 r = radius[i]
                 if in_area and catch_radius[i] > r:
                     r = catch_radius[i]
                 dx, dy = tx - cx, ty - cy
-                if dx * dx + dy * dy <= (reach[k] * effort[i] + r) ** 2:
+                ex, ey = tx - pos[i, 0], ty - pos[i, 1]
+                if dx * dx + dy * dy <= (reach[k] * effort[i] + r) ** 2 and ex * ex + ey * ey <= (run[i] + r) ** 2:
                     cycles_out[p, i] = k
                     points_out[p, i, 0] = tx
                     points_out[p, i, 1] = ty
@@ -227,7 +241,7 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
                 cx = pos[i, 0] + coast[horizon] * vel[i, 0]
                 cy = pos[i, 1] + coast[horizon] * vel[i, 1]
                 gap = math.sqrt((bx - cx) ** 2 + (by - cy) ** 2) - radius[i] - reach[horizon] * effort[i]
-                speed = max(top_speed * effort[i], 1e-9)
-                cycles_out[p, i] = horizon + max(1, int(math.ceil(gap / speed)))
+                pace = max(top_speed * effort[i], 1e-9)
+                cycles_out[p, i] = horizon + max(1, int(math.ceil(gap / pace)))
             else:
                 cycles_out[p, i] = UNREACHABLE

@@ -1,0 +1,121 @@
+"""Interception: the cycle and point at which players reach a rolling ball, checked against the
+motion rules rolled forward by hand."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from agents.skills import UNREACHABLE, MotionModel, ball_race, intercept, intercept_many
+from tests.agents.skills.skill_views import CONFIG, HW, ball_at, make_view, run_straight
+
+MODEL = MotionModel(CONFIG)
+KICKABLE = CONFIG.physics.kickable_distance
+
+
+def first_reach_by_hand(pos, vel, ball, ball_vel, effort=1.0, limit=60) -> int:
+    """The first cycle k at which a player running flat out at the ball's position at k ends
+    within the kickable distance of it (the model rolled forward by hand)."""
+    for k in range(limit + 1):
+        target = ball_at(CONFIG, ball, ball_vel, k)
+        end = run_straight(CONFIG, pos, vel, target, k, effort)
+        if np.hypot(*(end - target)) <= KICKABLE + 1e-9:
+            return k
+    return UNREACHABLE
+
+
+def test_reach_table_follows_the_dash_rule() -> None:
+    # Full dashes from rest: 0.6, then 0.6 + 0.4 * 0.6 = 0.84, ... towards the top speed 1.0.
+    assert MODEL.reach[:4] == pytest.approx([0.0, 0.6, 1.44, 2.376])
+    assert MODEL.top_speed == pytest.approx(CONFIG.physics.player_accel_max / (1 - CONFIG.physics.player_decay))
+    assert np.all(np.diff(MODEL.reach[20:]) == pytest.approx(MODEL.top_speed))
+
+
+def test_player_at_rest_meets_a_rolling_ball_where_the_model_says() -> None:
+    ball, ball_vel = np.array([0.0, 0.0]), np.array([2.0, 0.0])
+    pos = np.array([[20.0, 5.0]])
+    result = intercept(MODEL, ball, ball_vel, pos, np.zeros((1, 2)))
+    expected = first_reach_by_hand(pos[0], (0.0, 0.0), ball, ball_vel)
+    assert 0 < expected < 60
+    assert result.cycles[0] == expected and result.first == 0 and result.first_cycle == expected
+    assert result.points[0] == pytest.approx(ball_at(CONFIG, ball, ball_vel, expected))
+    # The numbers: after 9 cycles the ball is at x = 2 (1 - 0.94^9) / 0.06 = 14.23, 7.63 m from
+    # the player, who covers 8.33 m in 9 cycles (plus the kickable 1.085); after 8 cycles the
+    # ball is at 13.01, 8.59 m away, but 7.33 + 1.085 = 8.42 m is not enough.
+    assert result.cycles[0] == 9
+    assert result.points[0] == pytest.approx([2.0 * (1 - 0.94 ** 9) / 0.06, 0.0])
+
+
+def test_the_chosen_player_is_truly_first() -> None:
+    rng = np.random.default_rng(3)
+    for _ in range(20):
+        pos = rng.uniform([-30, -20], [30, 20], (11, 2))
+        vel = rng.uniform(-0.4, 0.4, (11, 2))
+        ball, ball_vel = rng.uniform(-10, 10, 2), rng.uniform(-1.5, 1.5, 2)
+        result = intercept(MODEL, ball, ball_vel, pos, vel)
+        by_hand = [first_reach_by_hand(pos[i], vel[i], ball, ball_vel) for i in range(11)]
+        horizon_hits = [c for c in result.cycles if c <= MODEL.horizon]
+        assert [min(c, UNREACHABLE) for c in result.cycles if c <= MODEL.horizon] == \
+            [by_hand[i] for i in range(11) if result.cycles[i] <= MODEL.horizon]
+        assert horizon_hits, "some player reaches a ball rolling in the middle of the field"
+        assert result.first_cycle == min(by_hand) and by_hand[result.first] == min(by_hand)
+
+
+def test_a_moving_player_coasts_towards_the_ball() -> None:
+    ball, ball_vel = np.array([0.0, 0.0]), np.array([0.0, 0.0])
+    pos = np.array([[6.0, 0.0], [6.0, 0.0]])
+    vel = np.array([[-1.0, 0.0], [1.0, 0.0]])  # one runs towards the ball, one away
+    result = intercept(MODEL, ball, ball_vel, pos, vel)
+    assert result.cycles[0] < result.cycles[1]
+    assert result.cycles[0] == first_reach_by_hand(pos[0], vel[0], ball, ball_vel)
+    assert result.cycles[1] == first_reach_by_hand(pos[1], vel[1], ball, ball_vel)
+
+
+def test_a_tired_player_arrives_later() -> None:
+    ball, ball_vel = np.array([0.0, 0.0]), np.array([0.5, 0.0])
+    pos = np.array([[15.0, 8.0], [15.0, 8.0]])
+    result = intercept(MODEL, ball, ball_vel, pos, np.zeros((2, 2)), effort=np.array([1.0, 0.6]))
+    assert result.cycles[1] > result.cycles[0]
+    assert result.cycles[1] == first_reach_by_hand(pos[1], (0, 0), ball, ball_vel, effort=0.6)
+
+
+def test_ball_leaving_the_field_is_unreachable_for_the_slow() -> None:
+    ball, ball_vel = np.array([0.0, HW - 3.0]), np.array([0.0, 2.0])  # crosses the touchline in 2 cycles
+    pos = np.array([[0.0, HW - 2.5], [-20.0, 0.0]])
+    result = intercept(MODEL, ball, ball_vel, pos, np.zeros((2, 2)))
+    assert result.cycles[0] <= 1
+    assert result.cycles[1] == UNREACHABLE
+    last_inside = ball_at(CONFIG, ball, ball_vel, 1)
+    assert result.points[1] == pytest.approx(last_inside)
+
+
+def test_beyond_the_horizon_the_cycle_is_estimated_not_lost() -> None:
+    short = MotionModel(CONFIG, horizon=10)
+    ball, ball_vel = np.array([0.0, 0.0]), np.array([0.1, 0.0])
+    pos = np.array([[30.0, 0.0], [45.0, 0.0]])
+    result = intercept(short, ball, ball_vel, pos, np.zeros((2, 2)))
+    assert 10 < result.cycles[0] < result.cycles[1] < UNREACHABLE
+    # The estimate: about (distance - kickable - reach(10)) / top speed cycles after the horizon.
+    assert result.cycles[0] == pytest.approx(10 + (30.0 - 1.0 - KICKABLE - short.reach[10]), abs=2)
+
+
+def test_ball_race_names_the_winning_team() -> None:
+    view = make_view(own={5: (-5.0, 0.0)}, opp={5: (12.0, 0.0)}, ball=(0.0, 0.0), ball_vel=(1.0, 0.0))
+    race = ball_race(MODEL, view)
+    assert race.ours.first == 5 and race.theirs.first == 5
+    assert not race.we_win and race.lead < 0
+    view = make_view(own={5: (3.0, 1.0)}, opp={5: (12.0, 0.0)}, ball=(0.0, 0.0), ball_vel=(1.0, 0.0))
+    race = ball_race(MODEL, view)
+    assert race.we_win and race.lead > 0
+
+
+def test_many_trajectories_match_single_calls_and_respect_limits() -> None:
+    rng = np.random.default_rng(1)
+    pos, vel = rng.uniform(-20, 20, (11, 2)), np.zeros((11, 2))
+    balls, vels = rng.uniform(-5, 5, (6, 2)), rng.uniform(-2, 2, (6, 2))
+    cycles, points = intercept_many(MODEL, balls, vels, pos, vel)
+    for p in range(6):
+        one = intercept(MODEL, balls[p], vels[p], pos, vel)
+        assert np.array_equal(one.cycles, cycles[p]) and np.allclose(one.points, points[p])
+    limited, _ = intercept_many(MODEL, balls, vels, pos, vel, limit=np.full(6, 3))
+    assert np.all((limited == cycles) | ((limited == UNREACHABLE) & (cycles > 3)))
