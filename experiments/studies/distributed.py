@@ -63,11 +63,11 @@ class Run:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--grid-sizes", default="50,100,200,400,800,1600,3200,6400",
+    parser.add_argument("--grid-sizes", default="50,100,250,500,1000,2000,4000,8000,16000",
                         help="agent counts n of the grid-dense series (default: %(default)s; '' to skip)")
     parser.add_argument("--grid-trials", type=int, default=30,
                         help="random instances per size in the grid-dense series (default: %(default)s, as the paper)")
-    parser.add_argument("--etsp-sizes", default="25,50,100,200,400,800",
+    parser.add_argument("--etsp-sizes", default="25,50,100,250,500,1000",
                         help="agent counts n of the etsp-uniform series (default: %(default)s; '' to skip)")
     parser.add_argument("--worst-sizes", default="16,36,64,144,256,576",
                         help="agent counts n of the etsp-worst series (default: %(default)s; '' to skip)")
@@ -344,15 +344,17 @@ def _plot_sweep(summary: list[dict], path: Path) -> None:
 
     rows = [row for row in summary if row["series"] == "sweep"]
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
-    for algorithm, marker in (("etsp", "o"), ("grid", "s")):
+    for algorithm, marker, colour in (("etsp", "o", "tab:blue"), ("grid", "s", "tab:orange")):
         mine = [row for row in rows if row["algorithm"] == algorithm]
         if not mine:
             continue
         x = np.array([row["area_per_agent_r2"] for row in mine])
         axes[0].errorbar(x, [row["time_mean"] for row in mine], yerr=[row["time_sd"] for row in mine],
-                         fmt=marker + "-", capsize=3, label=algorithm)
-        axes[1].plot(x, [row["mean_distance"] for row in mine], marker + "-", label=f"{algorithm}: mean per agent")
-        axes[1].plot(x, [row["max_distance"] for row in mine], marker + ":", label=f"{algorithm}: longest")
+                         fmt=marker + "-", color=colour, capsize=3, label=algorithm)
+        axes[1].plot(x, [row["mean_distance"] for row in mine], marker + "-", color=colour,
+                     label=f"{algorithm}: mean per agent")
+        axes[1].plot(x, [row["max_distance"] for row in mine], marker + ":", color=colour,
+                     label=f"{algorithm}: longest")
     n = rows[0]["n"] if rows else 0
     for ax, ylabel in zip(axes, ("completion time (mean ± sd)", "distance travelled")):
         ax.set_xscale("log")
