@@ -33,7 +33,7 @@ import numpy as np
 from numba import njit
 
 from .bitset import clear_bit, clear_cyclic, full_rows, next_set_cyclic, prev_set_cyclic, set_bit, test_bit
-from .distributed_model import DistributedResult, NetworkModel, move_toward
+from .distributed_model import DistributedResult, NetworkModel, finished_run, move_toward
 from .etsp import etsp_tour, tour_length
 
 
@@ -117,27 +117,44 @@ def _held_count(dist: np.ndarray, curr: np.ndarray, active: np.ndarray, m: int, 
     return held
 
 
+@njit(cache=True, nogil=True)
+def _csr_from_pairs(pairs: np.ndarray, ids: np.ndarray, positions: np.ndarray, n: int) -> tuple:
+    """Both directions of each pair (indices into ``ids``) as CSR lists over all ``n`` agents,
+    and the longest pair distance."""
+    indptr = np.zeros(n + 1, dtype=np.int64)
+    for e in range(pairs.shape[0]):
+        indptr[ids[pairs[e, 0]] + 1] += 1
+        indptr[ids[pairs[e, 1]] + 1] += 1
+    for i in range(n):
+        indptr[i + 1] += indptr[i]
+    fill = indptr[:-1].copy()
+    neighbours = np.empty(2 * pairs.shape[0], dtype=np.int64)
+    longest = 0.0
+    for e in range(pairs.shape[0]):
+        a = ids[pairs[e, 0]]
+        c = ids[pairs[e, 1]]
+        neighbours[fill[a]] = c
+        fill[a] += 1
+        neighbours[fill[c]] = a
+        fill[c] += 1
+        dx = positions[a, 0] - positions[c, 0]
+        dy = positions[a, 1] - positions[c, 1]
+        longest = max(longest, np.sqrt(dx * dx + dy * dy))
+    return indptr, neighbours, longest
+
+
 def _neighbour_lists(positions: np.ndarray, active: np.ndarray, r_comm: float) -> tuple[np.ndarray, np.ndarray, float]:
-    """CSR lists of the active agents within ``r_comm`` of each active agent, and the largest
-    distance of a listed pair."""
+    """CSR lists of the active agents within ``r_comm`` of each active agent (k-d tree), and
+    the largest distance of a listed pair."""
     from scipy.spatial import cKDTree
 
-    n = positions.shape[0]
     ids = np.flatnonzero(active)
     if ids.size < 2:
-        return np.zeros(n + 1, dtype=np.int64), np.zeros(0, dtype=np.int64), 0.0
-    pairs = cKDTree(positions[ids]).query_pairs(r_comm, output_type="ndarray")
-    if pairs.shape[0] == 0:
-        return np.zeros(n + 1, dtype=np.int64), np.zeros(0, dtype=np.int64), 0.0
-    a = ids[pairs[:, 0]]
-    b = ids[pairs[:, 1]]
-    longest = float(np.sqrt(((positions[a] - positions[b]) ** 2).sum(axis=1)).max())
-    src = np.concatenate([a, b])
-    dst = np.concatenate([b, a])
-    order = np.argsort(src, kind="stable")
-    indptr = np.zeros(n + 1, dtype=np.int64)
-    np.cumsum(np.bincount(src, minlength=n), out=indptr[1:])
-    return indptr, dst[order].astype(np.int64), longest
+        return np.zeros(positions.shape[0] + 1, dtype=np.int64), np.zeros(0, dtype=np.int64), 0.0
+    pairs = cKDTree(positions[ids], balanced_tree=False, compact_nodes=False).query_pairs(
+        r_comm, output_type="ndarray"
+    )
+    return _csr_from_pairs(pairs.astype(np.int64), ids, positions, positions.shape[0])
 
 
 def simulate_etsp(
@@ -206,19 +223,5 @@ def simulate_etsp(
         # Agents sharing a target have not settled yet: none of them holds it.
         shared = holders[curr[on_target]] > 1
         target_of[np.flatnonzero(on_target)[shared]] = -1
-    arrival_times = np.where(target_of >= 0, arrived_at, np.nan)
-    completion_time = float(arrival_times[target_of >= 0].max(initial=0.0)) if completed else float("nan")
-    return DistributedResult(
-        algorithm="etsp",
-        target_of=target_of,
-        completed=completed,
-        completion_time=completion_time,
-        rounds=rounds,
-        distances=travelled,
-        arrival_times=arrival_times,
-        positions=positions,
-        messages=messages,
-        max_message_distance=longest,
-        model=model,
-        trace=np.stack(trace) if record_trace else None,
-    )
+    return finished_run("etsp", model, target_of, completed, rounds, travelled, arrived_at, positions, messages,
+                        longest, trace)

@@ -45,7 +45,7 @@ import math
 import numpy as np
 from numba import njit
 
-from .distributed_model import DistributedResult, NetworkModel, move_toward
+from .distributed_model import DistributedResult, NetworkModel, finished_run, move_toward
 
 #: Stands for "+infinity" in the leaders' integer estimates (sums of a few stay far from overflow).
 UNKNOWN = 1 << 40
@@ -157,6 +157,21 @@ def _nearest_free(a: int, cell: int, positions: np.ndarray, targets: np.ndarray,
 
 
 @njit(cache=True, nogil=True)
+def _grant(exists: bool, boss: int, granted: np.ndarray, estimate: np.ndarray, cell: int) -> bool:
+    """A leader's answer to "are there free targets below / to the right?": yes to at most
+    ``estimate[cell]`` agents this round (``granted`` counts them); a cell without a leader
+    has no estimate and answers yes whenever the neighbouring cell exists."""
+    if not exists:
+        return False
+    if boss < 0:
+        return True
+    if granted[cell] < estimate[cell]:
+        granted[cell] += 1
+        return True
+    return False
+
+
+@njit(cache=True, nogil=True)
 def _grid_round(
     b: int, side: float, positions: np.ndarray, targets: np.ndarray,
     cell_ptr: np.ndarray, cell_targets: np.ndarray, taken: np.ndarray,
@@ -239,14 +254,7 @@ def _grid_round(
         new = -1
         top_row_turn = False
         if dircol[a] == 1:
-            granted = False
-            if row < b - 1:
-                if boss < 0:
-                    granted = True
-                elif yes_below[cell] < below[cell]:
-                    granted = True
-                    yes_below[cell] += 1
-            if granted:
+            if _grant(row < b - 1, boss, yes_below, below, cell):
                 new = cell + b
             else:
                 dircol[a] = -1
@@ -261,14 +269,7 @@ def _grid_round(
         if top_row_turn:
             if dirrow[a] == 1:
                 colfull[a, col] = True
-                granted = False
-                if col < b - 1:
-                    if boss < 0:
-                        granted = True
-                    elif yes_right[cell] < right[cell]:
-                        granted = True
-                        yes_right[cell] += 1
-                if granted:
+                if _grant(col < b - 1, boss, yes_right, right, cell):
                     new = cell + 1
                 else:
                     dirrow[a] = -1
@@ -420,19 +421,5 @@ def simulate_grid(
     assigned = role == ASSIGNED
     on_target = assigned & (positions == targets[np.maximum(target, 0)]).all(axis=1)
     target_of = np.where(on_target, target, -1)
-    arrival_times = np.where(on_target, arrived_at, np.nan)
-    completion_time = float(arrival_times[on_target].max(initial=0.0)) if completed else float("nan")
-    return DistributedResult(
-        algorithm="grid",
-        target_of=target_of,
-        completed=completed,
-        completion_time=completion_time,
-        rounds=rounds,
-        distances=travelled,
-        arrival_times=arrival_times,
-        positions=positions,
-        messages=int(stats[0]),
-        max_message_distance=float(stats[1]),
-        model=model,
-        trace=np.stack(trace) if record_trace else None,
-    )
+    return finished_run("grid", model, target_of, completed, rounds, travelled, arrived_at, positions,
+                        int(stats[0]), float(stats[1]), trace)

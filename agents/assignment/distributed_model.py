@@ -96,6 +96,41 @@ class DistributedResult:
         return float(self.distances.mean()) if self.distances.size else 0.0
 
 
+def finished_run(
+    algorithm: str,
+    model: NetworkModel,
+    target_of: np.ndarray,
+    completed: bool,
+    rounds: int,
+    travelled: np.ndarray,
+    arrived_at: np.ndarray,
+    positions: np.ndarray,
+    messages: int,
+    max_message_distance: float,
+    trace: list[np.ndarray] | None,
+) -> DistributedResult:
+    """Assemble the result of a run: ``target_of`` holds the target each agent stands on at the
+    end (-1 if none), ``arrived_at`` the last arrival instant of every agent; the completion
+    time is the last arrival among the final holders (the paper's definition)."""
+    holding = target_of >= 0
+    arrival_times = np.where(holding, arrived_at, np.nan)
+    completion_time = float(arrived_at[holding].max(initial=0.0)) if completed else float("nan")
+    return DistributedResult(
+        algorithm=algorithm,
+        target_of=target_of,
+        completed=completed,
+        completion_time=completion_time,
+        rounds=rounds,
+        distances=travelled,
+        arrival_times=arrival_times,
+        positions=positions,
+        messages=messages,
+        max_message_distance=max_message_distance,
+        model=model,
+        trace=np.stack(trace) if trace is not None else None,
+    )
+
+
 @njit(cache=True, nogil=True)
 def move_toward(
     positions: np.ndarray,
