@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from agents.skills.model import MotionModel, view_effort
+from agents.skills.model import MotionModel, SkillInputError, view_effort
 
 UNREACHABLE = 1_000_000
 """Interception cycle of a player who cannot get to the ball before it leaves the field or the
@@ -115,13 +115,14 @@ def intercept(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, pos: n
 def intercept_many(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, vel: np.ndarray,
                    effort: np.ndarray | None = None, radius: np.ndarray | None = None,
                    catch_radius: np.ndarray | None = None, catch_side: float = -1.0,
-                   limit: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+                   limit: np.ndarray | None = None, reaction: int = 0) -> tuple[np.ndarray, np.ndarray]:
     """Interception of many ball trajectories at once: ``ball`` and ``ball_vel`` (P, 2) (one
     row per trajectory, e.g. candidate passes or shots), players as for :func:`intercept`.
 
     ``limit`` (P,) int: the last cycle searched per trajectory (None: the model's horizon);
-    beyond it a player counts as :data:`UNREACHABLE`. Returns (cycles (P, n) int, points
-    (P, n, 2)).
+    beyond it a player counts as :data:`UNREACHABLE`. ``reaction``: cycles before the players
+    start to dash for the ball (opponents see a kick only the cycle after it: 1); they coast
+    meanwhile. Returns (cycles (P, n) int, points (P, n, 2)).
     """
     count, n = ball.shape[0], pos.shape[0]
     if effort is None:
@@ -138,7 +139,7 @@ def intercept_many(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, p
     points = np.empty((count, n, 2))
     _intercept_kernel(np.ascontiguousarray(ball, dtype=np.float64), np.ascontiguousarray(ball_vel, dtype=np.float64),
                       pos, vel, effort, radius, catch_radius, model.reach, model.ball_travel, model.player_coast,
-                      _kernel_params(model, catch_side), limits, cycles, points)
+                      _kernel_params(model, catch_side, reaction), limits, cycles, points)
     return cycles, points
 
 
@@ -160,17 +161,20 @@ def ball_race(model: MotionModel, view: object) -> BallRace:
 _NO_LIMIT = np.full(1, -1, dtype=np.int64)
 
 
-def _kernel_params(model: MotionModel, catch_side: float) -> np.ndarray:
+def _kernel_params(model: MotionModel, catch_side: float, reaction: int = 0) -> np.ndarray:
     cached = model.__dict__.get("_intercept_params")
     if cached is None:
         cached = {}
         model.__dict__["_intercept_params"] = cached
-    params = cached.get(catch_side)
+    key = (catch_side, reaction)
+    params = cached.get(key)
     if params is None:
+        if not (isinstance(reaction, (int, np.integer)) and 0 <= reaction < model.horizon):
+            raise SkillInputError(f"reaction must be an integer in [0, {model.horizon}), got {reaction!r}")
         params = np.array([model.half_length, model.half_width, model.top_speed, catch_side,
                            model.half_length - model.penalty_area_length, model.penalty_area_half_width,
-                           model.accel_max, model.speed_max, model.player_decay])
-        cached[catch_side] = params
+                           model.accel_max, model.speed_max, model.player_decay, float(reaction)])
+        cached[key] = params
     return params
 
 
@@ -181,9 +185,10 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
                       points_out: np.ndarray) -> None:  # pragma: no cover - compiled
     """See the module docstring. ``params``: half length, half width, top speed, catch side,
     |x| of the penalty area's front line, its half width, largest acceleration, speed limit,
-    player decay. ``limits[p] < 0``: the horizon."""
+    player decay, reaction delay (cycles). ``limits[p] < 0``: the horizon."""
     half_length, half_width, top_speed, side = params[0], params[1], params[2], params[3]
     area_x, area_y, accel_max, speed_max, decay = params[4], params[5], params[6], params[7], params[8]
+    delay = int(params[9])
     horizon = reach.shape[0] - 1
     n = pos.shape[0]
     run = np.empty(n)  # furthest straight-line run so far, per player
@@ -212,7 +217,8 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
                 if cycles_out[p, i] >= 0:
                     continue
                 if k > 0:
-                    speed[i] = min(speed[i] + accel_max * effort[i], speed_max)
+                    boost = accel_max * effort[i] if k > delay else 0.0
+                    speed[i] = min(speed[i] + boost, speed_max)
                     run[i] += speed[i]
                     speed[i] *= decay
                 cx = pos[i, 0] + coast[k] * vel[i, 0]
@@ -222,7 +228,8 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
                     r = catch_radius[i]
                 dx, dy = tx - cx, ty - cy
                 ex, ey = tx - pos[i, 0], ty - pos[i, 1]
-                if dx * dx + dy * dy <= (reach[k] * effort[i] + r) ** 2 and ex * ex + ey * ey <= (run[i] + r) ** 2:
+                grow = reach[k - delay] * effort[i] if k > delay else 0.0
+                if dx * dx + dy * dy <= (grow + r) ** 2 and ex * ex + ey * ey <= (run[i] + r) ** 2:
                     cycles_out[p, i] = k
                     points_out[p, i, 0] = tx
                     points_out[p, i, 1] = ty
@@ -240,7 +247,7 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
             if beyond:
                 cx = pos[i, 0] + coast[horizon] * vel[i, 0]
                 cy = pos[i, 1] + coast[horizon] * vel[i, 1]
-                gap = math.sqrt((bx - cx) ** 2 + (by - cy) ** 2) - radius[i] - reach[horizon] * effort[i]
+                gap = math.sqrt((bx - cx) ** 2 + (by - cy) ** 2) - radius[i] - reach[horizon - delay] * effort[i]
                 pace = max(top_speed * effort[i], 1e-9)
                 cycles_out[p, i] = horizon + max(1, int(math.ceil(gap / pace)))
             else:

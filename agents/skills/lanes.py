@@ -1,5 +1,9 @@
 """Ball lanes: can a kicked ball get along its path before an opponent gets to it?
 
+Our own players are told of the kick by the team in the cycle it is made, so they start at
+once; opponents see the kicked ball only in the next cycle's view, so they start one cycle
+late (``reaction``).
+
 A lane is a ball trajectory that starts at the ball with the velocity a kick gives it. For
 each lane the opponents' earliest interception cycle (:mod:`agents.skills.interception`,
 the ball rolled forward with its decay) is compared with the cycle at which the ball
@@ -16,13 +20,16 @@ from agents.skills.model import MotionModel, view_effort
 
 
 def opponent_cycles(model: MotionModel, view: object, ball: np.ndarray, velocities: np.ndarray,
-                    limit: np.ndarray | None = None, extra_radius: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+                    limit: np.ndarray | None = None, extra_radius: float = 0.0,
+                    reaction: int = 1) -> tuple[np.ndarray, np.ndarray]:
     """Earliest cycle any opponent controls the ball on each lane, and who.
 
     ``velocities`` (P, 2): the ball's velocity right after the kick, one row per lane;
     ``limit`` (P,) int: last cycle searched per lane (None: the horizon); ``extra_radius``
-    (m) widens every opponent's control distance (a safety margin for noise). Opponents are
-    taken at full effort; their goalkeeper (same index as ours) catches in its penalty area.
+    (m) widens every opponent's control distance (a safety margin for noise); ``reaction``
+    (cycles) is how late the opponents start to chase: they see our kick only in the next
+    cycle's view, so 1. Opponents are taken at full effort; their goalkeeper (same index as
+    ours) catches in its penalty area.
     Returns (cycles (P,) int, :data:`UNREACHABLE` when nobody gets there; opponent (P,) int,
     -1 when nobody).
     """
@@ -32,7 +39,8 @@ def opponent_cycles(model: MotionModel, view: object, ball: np.ndarray, velociti
     if extra_radius:
         radius = radius + extra_radius
         catch = catch + extra_radius
-    cycles, _ = intercept_many(model, starts, velocities, view.opp_pos, view.opp_vel, None, radius, catch, 1.0, limit)
+    cycles, _ = intercept_many(model, starts, velocities, view.opp_pos, view.opp_vel, None, radius, catch, 1.0, limit,
+                               reaction)
     if cycles.shape[1] == 0:
         return np.full(len(velocities), UNREACHABLE, dtype=np.int64), np.full(len(velocities), -1, dtype=np.int64)
     who = np.argmin(cycles, axis=1)

@@ -3,15 +3,18 @@
 For every team-mate who may receive (not the passer, not offside, the goalkeeper only if
 asked), a few target points are tried: its position and points in front of it
 (:attr:`PassParams.leads`, "lead passes" that let it run onto the ball). For each target the
-ball is kicked so that it covers the distance and still arrives at ``arrival_speed``
+ball is kicked so that it covers the distance and still arrives at one of ``arrival_speeds``
 (the decay model gives the initial speed ``distance * (1 - decay) + arrival_speed``), capped
 at what one kick from where the passer stands can give (:func:`kick_for_velocity`). The pass
 is **safe** when the receiver controls the ball on that trajectory at least ``min_lead``
 cycles before any opponent could (:mod:`agents.skills.lanes`).
 
-Safe passes are scored (the weights of :class:`PassParams`): further forward, closer to the
-opponents' goal, into open space (distance from the nearest opponent to the target) and with
-a comfortable lead over the opponents; the best one is returned.
+Safe passes are scored at the point where the receiver is predicted to take the ball (the
+target when it can run there in time and no opponent gets to the ball first; else where it
+can first meet the ball; the
+weights of :class:`PassParams`): further forward, closer to the opponents' goal, in open
+space (distance from the nearest opponent) and with a comfortable lead over the opponents;
+the best one is returned.
 """
 
 from __future__ import annotations
@@ -23,7 +26,7 @@ import numpy as np
 from agents.skills.interception import UNREACHABLE
 from agents.skills.kicking import kick_for_velocity
 from agents.skills.lanes import opponent_cycles, teammate_cycles
-from agents.skills.model import MotionModel, check_player
+from agents.skills.model import MotionModel, check_player, view_effort
 
 
 @dataclass(frozen=True)
@@ -32,8 +35,9 @@ class PassParams:
 
     leads: tuple[tuple[float, float], ...] = ((0.0, 0.0), (3.0, 0.0), (6.0, 0.0), (3.0, 3.0), (3.0, -3.0))
     """Offsets from the receiver's position to the points tried (m, team frame)."""
-    arrival_speed: float = 0.8
-    """Ball speed wanted at the target: slow enough to control, fast enough to arrive soon."""
+    arrival_speeds: tuple[float, ...] = (0.8, 1.6)
+    """Ball speeds tried at the target (m/cycle): slow passes are easy to control, fast ones
+    leave opponents less time; each target is tried with each."""
     min_distance: float = 3.0
     """Shorter passes are not considered (the passer could as well dribble)."""
     max_distance: float = 40.0
@@ -49,11 +53,11 @@ class PassParams:
     allow_goalie: bool = False
     """Whether our goalkeeper may receive."""
     weight_forward: float = 1.0
-    """Weight of the target's progress towards +x (per 20 m, clipped to [-1, 1.5])."""
+    """Weight of the reception point's progress towards +x (per 20 m, clipped to [-1, 1.5])."""
     weight_goal: float = 0.5
-    """Weight of the target's closeness to the opponents' goal (1 at the goal, 0 a field length away)."""
+    """Weight of the reception point's closeness to the opponents' goal (1 at the goal, 0 a field length away)."""
     weight_space: float = 0.6
-    """Weight of the nearest opponent's distance to the target (per 10 m, capped at 1)."""
+    """Weight of the nearest opponent's distance to the reception point (per 10 m, capped at 1)."""
     weight_lead: float = 0.6
     """Weight of the receiver's lead over the opponents (per 10 cycles, capped at 1)."""
 
@@ -65,6 +69,10 @@ class PassPlan:
     receiver: int
     target: np.ndarray
     """(2,) point the ball is sent to (m)."""
+    receive_point: np.ndarray
+    """(2,) where the receiver is predicted to take the ball (m), the point scored: the target
+    when the receiver can be there when the ball arrives and no opponent gets to the ball
+    before, else the point of its earliest interception."""
     kick: np.ndarray
     """(2,) kick request (m/cycle)."""
     ball_vel: np.ndarray
@@ -111,17 +119,20 @@ def best_pass(model: MotionModel, view: object, passer: int, params: PassParams 
         return None
     ball = np.asarray(view.ball, float)
     leads = np.asarray(params.leads, float)
+    speeds = np.asarray(params.arrival_speeds, float)
     targets = (view.own_pos[receivers][:, None, :] + leads[None, :, :]).reshape(-1, 2)
-    owners = np.repeat(receivers, len(leads))
     targets = model.clamp_to_field(targets, params.field_margin)
+    owners = np.repeat(receivers, len(leads) * len(speeds))
+    arrive = np.tile(speeds, len(targets))
+    targets = np.repeat(targets, len(speeds), axis=0)
     delta = targets - ball
     dist = np.hypot(delta[:, 0], delta[:, 1])
     keep = (dist >= params.min_distance) & (dist <= params.max_distance)
     if not keep.any():
         return None
-    targets, owners, delta, dist = targets[keep], owners[keep], delta[keep], dist[keep]
+    targets, owners, delta, dist, arrive = targets[keep], owners[keep], delta[keep], dist[keep], arrive[keep]
     direction = delta / dist[:, None]
-    wanted = direction * model.ball_speed_for(dist, params.arrival_speed)[:, None]
+    wanted = direction * model.ball_speed_for(dist, arrive)[:, None]
     kicks, velocities = kick_for_velocity(model, view.own_pos[passer], ball, view.ball_vel, wanted, holder)
     speed = np.einsum("ij,ij->i", velocities, direction)  # speed along the intended line
     on_line = speed > 0.99 * np.hypot(velocities[:, 0], velocities[:, 1])
@@ -132,15 +143,24 @@ def best_pass(model: MotionModel, view: object, passer: int, params: PassParams 
     idx = np.flatnonzero(usable)
     arrival_cycle = np.ceil(arrival[idx]).astype(np.int64)
     limit = np.minimum(arrival_cycle + params.extra_cycles, model.horizon)
-    ours, _ = teammate_cycles(model, view, ball, velocities[idx], limit)
+    ours, our_points = teammate_cycles(model, view, ball, velocities[idx], limit)
     receive = ours[np.arange(idx.size), owners[idx]]
+    received_at = our_points[np.arange(idx.size), owners[idx]]
     theirs, _ = opponent_cycles(model, view, ball, velocities[idx], limit, params.opponent_margin)
     safe = (receive < UNREACHABLE) & (theirs - receive >= params.min_lead)
     if not safe.any():
         return None
     sel = np.flatnonzero(safe)
     chosen = idx[sel]
-    pts = targets[chosen]
+    # Run onto it: the receiver takes the ball at the target when it can be there by the
+    # ball's arrival and no opponent gets to the ball before that; else where it meets it first.
+    runner = owners[chosen]
+    effort = view_effort(view, model.players_per_team)[runner]
+    settle = view.own_pos[runner] + model.player_coast[-1] * view.own_vel[runner]
+    need = np.hypot(*(targets[chosen] - settle).T) - model.kickable_distance
+    run_cycles = np.searchsorted(model.reach, np.maximum(need, 0.0) / effort)
+    at_target = (run_cycles <= arrival_cycle[sel]) & (theirs[sel] >= arrival_cycle[sel] + params.min_lead)
+    pts = np.where(at_target[:, None], targets[chosen], received_at[sel])
     gap = pts[:, None, :] - view.opp_pos[None, :, :]
     space = np.sqrt(np.min(np.einsum("pkj,pkj->pk", gap, gap), axis=1)) if view.opp_pos.shape[0] else np.full(len(sel), 10.0)
     lead = np.minimum(theirs[sel] - receive[sel], 10) / 10.0
@@ -151,7 +171,8 @@ def best_pass(model: MotionModel, view: object, passer: int, params: PassParams 
              + params.weight_space * np.minimum(space / 10.0, 1.0) + params.weight_lead * lead)
     best = int(np.argmax(score))
     j = int(chosen[best])
-    return PassPlan(receiver=int(owners[j]), target=targets[j].copy(), kick=kicks[j].copy(),
+    return PassPlan(receiver=int(owners[j]), target=targets[j].copy(), receive_point=pts[best].copy(),
+                    kick=kicks[j].copy(),
                     ball_vel=velocities[j].copy(), arrival_cycle=int(arrival_cycle[sel[best]]),
                     receive_cycle=int(receive[sel[best]]), opponent_cycle=int(theirs[sel[best]]),
                     score=float(score[best]))
