@@ -184,8 +184,8 @@ def _collect(plan: dict, args) -> list[Run]:
         runs.append(_simulate("etsp-worst", "etsp", agents, targets, side, 0, args))
     for area in plan["areas"]:
         side = math.sqrt(area * r * r * args.sweep_n)
-        for algorithm, code in (("etsp", 3), ("grid", 4)):
-            runs += _uniform_runs("sweep", algorithm, args.sweep_n, side, args.trials, args, code)
+        for algorithm in ("etsp", "grid"):  # the same instances for both
+            runs += _uniform_runs("sweep", algorithm, args.sweep_n, side, args.trials, args, 3)
     return runs
 
 
