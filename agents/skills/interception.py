@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
@@ -37,8 +38,7 @@ UNREACHABLE = 1_000_000
 cycle limit (larger than any real cycle, so ``argmin`` over cycles works unchanged)."""
 
 
-@dataclass(frozen=True)
-class Interception:
+class Interception(NamedTuple):
     """Per player of one team: the earliest cycle it controls the ball and where.
 
     ``cycles`` (n,) int: cycles from now (0: controllable now; :data:`UNREACHABLE`: never);
@@ -92,20 +92,16 @@ def intercept(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, pos: n
     when larger and the ball is in the penalty area on side ``catch_side`` (-1: ours, at -x;
     +1: the opponents').
     """
+    ball, ball_vel = _trajectories(ball, ball_vel, single=True)
+    pos, vel, effort, radius, catch_radius = _players(model, pos, vel, effort, radius, catch_radius)
     n = pos.shape[0]
-    if effort is None:
-        effort = np.ones(n)
-    if radius is None:
-        radius = np.full(n, model.kickable_distance)
-    if catch_radius is None:
-        catch_radius = radius
     cycles = np.empty((1, n), dtype=np.int64)
     points = np.empty((1, n, 2))
-    _intercept_kernel(ball.reshape(1, 2), ball_vel.reshape(1, 2), pos, vel, effort, radius, catch_radius,
+    _intercept_kernel(ball, ball_vel, pos, vel, effort, radius, catch_radius,
                       model.reach, model.ball_travel, model.player_coast, _kernel_params(model, catch_side),
-                      _NO_LIMIT, cycles, points)
+                      _NO_LIMIT, cycles, points, _ALL)
     row = cycles[0]
-    first = int(np.argmin(row)) if n else -1
+    first = int(row.argmin()) if n else -1
     first_cycle = int(row[first]) if n else UNREACHABLE
     if first_cycle >= UNREACHABLE:
         first = -1
@@ -115,31 +111,41 @@ def intercept(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, pos: n
 def intercept_many(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, vel: np.ndarray,
                    effort: np.ndarray | None = None, radius: np.ndarray | None = None,
                    catch_radius: np.ndarray | None = None, catch_side: float = -1.0,
-                   limit: np.ndarray | None = None, reaction: int = 0) -> tuple[np.ndarray, np.ndarray]:
+                   limit: np.ndarray | None = None, reaction: int = 0, first_only: bool = False,
+                   only: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Interception of many ball trajectories at once: ``ball`` and ``ball_vel`` (P, 2) (one
     row per trajectory, e.g. candidate passes or shots), players as for :func:`intercept`.
 
     ``limit`` (P,) int: the last cycle searched per trajectory (None: the model's horizon);
     beyond it a player counts as :data:`UNREACHABLE`. ``reaction``: cycles before the players
     start to dash for the ball (opponents see a kick only the cycle after it: 1); they coast
-    meanwhile. Returns (cycles (P, n) int, points (P, n, 2)).
+    meanwhile. ``first_only``: stop each trajectory at its first interception (only the
+    earliest players' cycles are real, the others are UNREACHABLE), for "does anybody get
+    there, and when" questions. ``only`` (P,) int: search just that player on each trajectory
+    (-1: everybody). Returns (cycles (P, n) int, points (P, n, 2)).
     """
+    ball, ball_vel = _trajectories(ball, ball_vel, single=False)
+    pos, vel, effort, radius, catch_radius = _players(model, pos, vel, effort, radius, catch_radius)
     count, n = ball.shape[0], pos.shape[0]
-    if effort is None:
-        effort = np.ones(n)
-    if radius is None:
-        radius = np.full(n, model.kickable_distance)
-    if catch_radius is None:
-        catch_radius = radius
     if limit is None:
         limits = np.full(count, -1, dtype=np.int64)
     else:
-        limits = np.asarray(limit, dtype=np.int64).reshape(count)
+        limits = np.asarray(limit)
+        if limits.shape not in ((count,), ()) or not np.issubdtype(limits.dtype, np.integer):
+            raise SkillInputError(f"limit must be an integer or ({count},) integers, got {limits.dtype} {limits.shape}")
+        limits = np.ascontiguousarray(np.broadcast_to(limits, (count,)), dtype=np.int64)
     cycles = np.empty((count, n), dtype=np.int64)
     points = np.empty((count, n, 2))
-    _intercept_kernel(np.ascontiguousarray(ball, dtype=np.float64), np.ascontiguousarray(ball_vel, dtype=np.float64),
-                      pos, vel, effort, radius, catch_radius, model.reach, model.ball_travel, model.player_coast,
-                      _kernel_params(model, catch_side, reaction), limits, cycles, points)
+    if only is None:
+        chosen = _ALL
+    else:
+        chosen = np.asarray(only)
+        if chosen.shape != (count,) or not np.issubdtype(chosen.dtype, np.integer) or np.any(chosen >= n):
+            raise SkillInputError(f"only must be ({count},) integer player indices below {n} (or -1 for all)")
+        chosen = np.ascontiguousarray(chosen, dtype=np.int64)
+    _intercept_kernel(ball, ball_vel, pos, vel, effort, radius, catch_radius, model.reach, model.ball_travel,
+                      model.player_coast, _kernel_params(model, catch_side, reaction, first_only), limits, cycles,
+                      points, chosen)
     return cycles, points
 
 
@@ -159,21 +165,75 @@ def ball_race(model: MotionModel, view: object) -> BallRace:
 
 
 _NO_LIMIT = np.full(1, -1, dtype=np.int64)
+_ALL = np.zeros(0, dtype=np.int64)
 
 
-def _kernel_params(model: MotionModel, catch_side: float, reaction: int = 0) -> np.ndarray:
+def _float_array(name: str, value: object, shape: tuple[int, ...]) -> np.ndarray:
+    """``value`` as a C-contiguous float64 array of ``shape`` (-1: any length), else a
+    SkillInputError naming it. Cheap when it already is one (the hot path)."""
+    if type(value) is np.ndarray and value.dtype == _F64 and value.flags.c_contiguous:
+        array = value
+    else:
+        try:
+            array = np.ascontiguousarray(value, dtype=np.float64)
+        except (TypeError, ValueError) as exc:
+            raise SkillInputError(f"{name} must be numeric, got {type(value).__name__}") from exc
+    got = array.shape
+    if len(got) != len(shape) or any(want != -1 and want != have for want, have in zip(shape, got)):
+        want = "(" + ", ".join("n" if w == -1 else str(w) for w in shape) + ("," if len(shape) == 1 else "") + ")"
+        raise SkillInputError(f"{name} must have shape {want}, got {got}")
+    return array
+
+
+_F64 = np.dtype(np.float64)
+
+
+def _trajectories(ball: object, ball_vel: object, single: bool) -> tuple[np.ndarray, np.ndarray]:
+    if single:
+        return (_float_array("ball", ball, (2,)).reshape(1, 2), _float_array("ball_vel", ball_vel, (2,)).reshape(1, 2))
+    ball = _float_array("ball", ball, (-1, 2))
+    ball_vel = _float_array("ball_vel", ball_vel, (-1, 2))
+    if ball.shape != ball_vel.shape:
+        raise SkillInputError(f"ball {ball.shape} and ball_vel {ball_vel.shape} must have the same shape")
+    return ball, ball_vel
+
+
+def _players(model: MotionModel, pos: object, vel: object, effort: object, radius: object,
+             catch_radius: object) -> tuple[np.ndarray, ...]:
+    pos = _float_array("pos", pos, (-1, 2))
+    n = pos.shape[0]
+    vel = _float_array("vel", vel, (n, 2))
+    defaults = _defaults(model, n)
+    effort = defaults[0] if effort is None else _float_array("effort", effort, (n,))
+    radius = defaults[1] if radius is None else _float_array("radius", radius, (n,))
+    catch_radius = radius if catch_radius is None else _float_array("catch_radius", catch_radius, (n,))
+    return pos, vel, effort, radius, catch_radius
+
+
+def _defaults(model: MotionModel, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """(ones, kickable distances) of length n, made once per model (never written)."""
+    cache = model.__dict__.setdefault("_intercept_defaults", {})
+    found = cache.get(n)
+    if found is None:
+        ones, kick = np.ones(n), np.full(n, model.kickable_distance)
+        found = cache[n] = (ones, kick)
+    return found
+
+
+def _kernel_params(model: MotionModel, catch_side: float, reaction: int = 0, first_only: bool = False) -> np.ndarray:
     cached = model.__dict__.get("_intercept_params")
     if cached is None:
         cached = {}
         model.__dict__["_intercept_params"] = cached
-    key = (catch_side, reaction)
+    key = (catch_side, reaction, bool(first_only))
     params = cached.get(key)
     if params is None:
         if not (isinstance(reaction, (int, np.integer)) and 0 <= reaction < model.horizon):
             raise SkillInputError(f"reaction must be an integer in [0, {model.horizon}), got {reaction!r}")
         params = np.array([model.half_length, model.half_width, model.top_speed, catch_side,
                            model.half_length - model.penalty_area_length, model.penalty_area_half_width,
-                           model.accel_max, model.speed_max, model.player_decay, float(reaction)])
+                           model.accel_max, model.speed_max, model.player_decay, float(reaction),
+                           1.0 if first_only else 0.0])
         cached[key] = params
     return params
 
@@ -182,13 +242,16 @@ def _kernel_params(model: MotionModel, catch_side: float, reaction: int = 0) -> 
 def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, vel: np.ndarray, effort: np.ndarray,
                       radius: np.ndarray, catch_radius: np.ndarray, reach: np.ndarray, ball_travel: np.ndarray,
                       coast: np.ndarray, params: np.ndarray, limits: np.ndarray, cycles_out: np.ndarray,
-                      points_out: np.ndarray) -> None:  # pragma: no cover - compiled
+                      points_out: np.ndarray, only: np.ndarray) -> None:  # pragma: no cover - compiled
     """See the module docstring. ``params``: half length, half width, top speed, catch side,
     |x| of the penalty area's front line, its half width, largest acceleration, speed limit,
-    player decay, reaction delay (cycles). ``limits[p] < 0``: the horizon."""
+    player decay, reaction delay (cycles), first-only flag (stop a trajectory at its first
+    interception; the later players get UNREACHABLE). ``limits[p] < 0``: the horizon.
+    ``only[p] >= 0``: search that player alone on trajectory p (the others get UNREACHABLE)."""
     half_length, half_width, top_speed, side = params[0], params[1], params[2], params[3]
     area_x, area_y, accel_max, speed_max, decay = params[4], params[5], params[6], params[7], params[8]
     delay = int(params[9])
+    first_only = params[10] > 0.5
     horizon = reach.shape[0] - 1
     n = pos.shape[0]
     run = np.empty(n)  # furthest straight-line run so far, per player
@@ -196,11 +259,19 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
     for p in range(ball.shape[0]):
         bx0, by0, vx, vy = ball[p, 0], ball[p, 1], ball_vel[p, 0], ball_vel[p, 1]
         last = horizon if limits[p] < 0 else min(limits[p], horizon)
+        alone = only[p] if only.shape[0] > 0 else -1
         for i in range(n):
-            cycles_out[p, i] = -1
             run[i] = 0.0
             speed[i] = math.sqrt(vel[i, 0] ** 2 + vel[i, 1] ** 2)
-        remaining = n
+            if alone < 0 or i == alone:
+                cycles_out[p, i] = -1
+            else:
+                cycles_out[p, i] = UNREACHABLE
+                points_out[p, i, 0] = bx0
+                points_out[p, i, 1] = by0
+        remaining = n if alone < 0 else 1
+        lo, hi = (0, n) if alone < 0 else (alone, alone + 1)
+        found = False
         left_field = False
         bx, by = bx0, by0
         k_end = 0
@@ -213,7 +284,7 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
             bx, by = tx, ty
             k_end = k
             in_area = side * tx >= area_x and abs(ty) <= area_y
-            for i in range(n):
+            for i in range(lo, hi):
                 if cycles_out[p, i] >= 0:
                     continue
                 if k > 0:
@@ -234,9 +305,17 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
                     points_out[p, i, 0] = tx
                     points_out[p, i, 1] = ty
                     remaining -= 1
-            if remaining == 0:
+                    found = True
+            if remaining == 0 or (found and first_only):
                 break
         if remaining == 0:
+            continue
+        if found and first_only:
+            for i in range(n):
+                if cycles_out[p, i] < 0:
+                    cycles_out[p, i] = UNREACHABLE
+                    points_out[p, i, 0] = bx
+                    points_out[p, i, 1] = by
             continue
         beyond = not left_field and k_end == horizon and (limits[p] < 0 or limits[p] > horizon)
         for i in range(n):

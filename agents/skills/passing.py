@@ -19,9 +19,11 @@ the best one is returned.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 
 from agents.skills.interception import UNREACHABLE
 from agents.skills.kicking import kick_for_velocity
@@ -117,62 +119,138 @@ def best_pass(model: MotionModel, view: object, passer: int, params: PassParams 
     receivers = pass_candidates(model, view, passer, params)
     if receivers.size == 0:
         return None
-    ball = np.asarray(view.ball, float)
-    leads = np.asarray(params.leads, float)
-    speeds = np.asarray(params.arrival_speeds, float)
-    targets = (view.own_pos[receivers][:, None, :] + leads[None, :, :]).reshape(-1, 2)
-    targets = model.clamp_to_field(targets, params.field_margin)
-    owners = np.repeat(receivers, len(leads) * len(speeds))
-    arrive = np.tile(speeds, len(targets))
-    targets = np.repeat(targets, len(speeds), axis=0)
-    delta = targets - ball
-    dist = np.hypot(delta[:, 0], delta[:, 1])
-    keep = (dist >= params.min_distance) & (dist <= params.max_distance)
-    if not keep.any():
+    ball = np.asarray(view.ball, np.float64)
+    size = receivers.size * len(params.leads) * len(params.arrival_speeds)
+    targets, wanted = np.empty((size, 2)), np.empty((size, 2))
+    owners = np.empty(size, dtype=np.int64)
+    count = _pass_targets(view.own_pos, receivers, _as_array(params.leads), _as_array(params.arrival_speeds), ball,
+                          model.half_length - params.field_margin, model.half_width - params.field_margin,
+                          params.min_distance, params.max_distance, model.ball_decay, targets, owners, wanted)
+    if count == 0:
         return None
-    targets, owners, delta, dist, arrive = targets[keep], owners[keep], delta[keep], dist[keep], arrive[keep]
-    direction = delta / dist[:, None]
-    wanted = direction * model.ball_speed_for(dist, arrive)[:, None]
+    targets, owners, wanted = targets[:count], owners[:count], wanted[:count]
     kicks, velocities = kick_for_velocity(model, view.own_pos[passer], ball, view.ball_vel, wanted, holder)
-    speed = np.einsum("ij,ij->i", velocities, direction)  # speed along the intended line
-    on_line = speed > 0.99 * np.hypot(velocities[:, 0], velocities[:, 1])
-    arrival = model.ball_cycles_to(dist, speed)
-    usable = on_line & np.isfinite(arrival) & (arrival <= model.horizon)
-    if not usable.any():
+    arrival = np.empty(count, dtype=np.int64)
+    limit = np.empty(count, dtype=np.int64)
+    usable = _pass_arrivals(targets, wanted, velocities, ball, model.ball_decay, model.horizon, params.extra_cycles,
+                            arrival, limit)
+    if usable.size == 0:
         return None
-    idx = np.flatnonzero(usable)
-    arrival_cycle = np.ceil(arrival[idx]).astype(np.int64)
-    limit = np.minimum(arrival_cycle + params.extra_cycles, model.horizon)
-    ours, our_points = teammate_cycles(model, view, ball, velocities[idx], limit)
-    receive = ours[np.arange(idx.size), owners[idx]]
-    received_at = our_points[np.arange(idx.size), owners[idx]]
-    theirs, _ = opponent_cycles(model, view, ball, velocities[idx], limit, params.opponent_margin)
-    safe = (receive < UNREACHABLE) & (theirs - receive >= params.min_lead)
-    if not safe.any():
+    vel_u, own_u, lim_u = velocities[usable], owners[usable], limit[usable]
+    ours, our_points = teammate_cycles(model, view, ball, vel_u, lim_u, own_u)
+    theirs, _ = opponent_cycles(model, view, ball, vel_u, lim_u, params.opponent_margin)
+    rows = np.arange(usable.size)
+    receive, received_at = ours[rows, own_u], our_points[rows, own_u]
+    effort = view_effort(view, model.players_per_team)
+    score = np.empty(usable.size)
+    points = np.empty((usable.size, 2))
+    best = _pass_scores(targets[usable], received_at, receive, theirs, arrival[usable], own_u, view.own_pos,
+                        view.own_vel, effort, view.opp_pos, ball, model.reach, float(model.player_coast[-1]),
+                        model.kickable_distance, model.half_length, params.min_lead,
+                        np.array([params.weight_forward, params.weight_goal, params.weight_space, params.weight_lead]),
+                        score, points)
+    if best < 0:
         return None
-    sel = np.flatnonzero(safe)
-    chosen = idx[sel]
-    # Run onto it: the receiver takes the ball at the target when it can be there by the
-    # ball's arrival and no opponent gets to the ball before that; else where it meets it first.
-    runner = owners[chosen]
-    effort = view_effort(view, model.players_per_team)[runner]
-    settle = view.own_pos[runner] + model.player_coast[-1] * view.own_vel[runner]
-    need = np.hypot(*(targets[chosen] - settle).T) - model.kickable_distance
-    run_cycles = np.searchsorted(model.reach, np.maximum(need, 0.0) / effort)
-    at_target = (run_cycles <= arrival_cycle[sel]) & (theirs[sel] >= arrival_cycle[sel] + params.min_lead)
-    pts = np.where(at_target[:, None], targets[chosen], received_at[sel])
-    gap = pts[:, None, :] - view.opp_pos[None, :, :]
-    space = np.sqrt(np.min(np.einsum("pkj,pkj->pk", gap, gap), axis=1)) if view.opp_pos.shape[0] else np.full(len(sel), 10.0)
-    lead = np.minimum(theirs[sel] - receive[sel], 10) / 10.0
-    goal = model.goal_centre(ours=False)
-    closeness = 1.0 - np.hypot(pts[:, 0] - goal[0], pts[:, 1] - goal[1]) / (2.0 * model.half_length)
-    forward = np.clip((pts[:, 0] - ball[0]) / 20.0, -1.0, 1.5)
-    score = (params.weight_forward * forward + params.weight_goal * closeness
-             + params.weight_space * np.minimum(space / 10.0, 1.0) + params.weight_lead * lead)
-    best = int(np.argmax(score))
-    j = int(chosen[best])
-    return PassPlan(receiver=int(owners[j]), target=targets[j].copy(), receive_point=pts[best].copy(),
-                    kick=kicks[j].copy(),
-                    ball_vel=velocities[j].copy(), arrival_cycle=int(arrival_cycle[sel[best]]),
-                    receive_cycle=int(receive[sel[best]]), opponent_cycle=int(theirs[sel[best]]),
-                    score=float(score[best]))
+    j = int(usable[best])
+    return PassPlan(receiver=int(owners[j]), target=targets[j].copy(), receive_point=points[best].copy(),
+                    kick=kicks[j].copy(), ball_vel=velocities[j].copy(), arrival_cycle=int(arrival[j]),
+                    receive_cycle=int(receive[best]), opponent_cycle=int(theirs[best]), score=float(score[best]))
+
+
+def _as_array(values: tuple) -> np.ndarray:
+    return np.asarray(values, dtype=np.float64).reshape(len(values), -1) if values and isinstance(values[0], tuple) \
+        else np.asarray(values, dtype=np.float64)
+
+
+@njit(cache=True, nogil=True)
+def _pass_targets(own_pos: np.ndarray, receivers: np.ndarray, leads: np.ndarray, speeds: np.ndarray, ball: np.ndarray,
+                  x_max: float, y_max: float, min_distance: float, max_distance: float, decay: float,
+                  targets: np.ndarray, owners: np.ndarray, wanted: np.ndarray) -> int:  # pragma: no cover
+    """Candidate targets (receiver + lead, kept within |x| <= x_max, |y| <= y_max), each with
+    each arrival speed, at a usable distance; the ball velocity each needs. Returns the count."""
+    count = 0
+    for r in range(receivers.shape[0]):
+        who = receivers[r]
+        for j in range(leads.shape[0]):
+            tx = min(max(own_pos[who, 0] + leads[j, 0], -x_max), x_max)
+            ty = min(max(own_pos[who, 1] + leads[j, 1], -y_max), y_max)
+            dx, dy = tx - ball[0], ty - ball[1]
+            dist = math.sqrt(dx * dx + dy * dy)
+            if dist < min_distance or dist > max_distance:
+                continue
+            for k in range(speeds.shape[0]):
+                speed = dist * (1.0 - decay) + speeds[k]
+                targets[count, 0] = tx
+                targets[count, 1] = ty
+                owners[count] = who
+                wanted[count, 0] = dx / dist * speed
+                wanted[count, 1] = dy / dist * speed
+                count += 1
+    return count
+
+
+@njit(cache=True, nogil=True)
+def _pass_arrivals(targets: np.ndarray, wanted: np.ndarray, velocities: np.ndarray, ball: np.ndarray, decay: float,
+                   horizon: int, extra: int, arrival: np.ndarray, limit: np.ndarray) -> np.ndarray:  # pragma: no cover
+    """Rows whose kick keeps the intended line and gets the ball to its target within the
+    horizon; their arrival cycle and search limit (arrival + extra, at most the horizon)."""
+    keep = np.empty(targets.shape[0], dtype=np.int64)
+    count = 0
+    for i in range(targets.shape[0]):
+        wx, wy = wanted[i, 0], wanted[i, 1]
+        norm = math.sqrt(wx * wx + wy * wy)
+        vx, vy = velocities[i, 0], velocities[i, 1]
+        speed = (vx * wx + vy * wy) / norm  # along the intended line
+        if speed <= 0.99 * math.sqrt(vx * vx + vy * vy):
+            continue
+        dist = math.sqrt((targets[i, 0] - ball[0]) ** 2 + (targets[i, 1] - ball[1]) ** 2)
+        left = 1.0 - dist * (1.0 - decay) / speed
+        if left <= 0.0:
+            continue
+        cycles = math.ceil(math.log(left) / math.log(decay) - 1e-9)
+        if cycles > horizon:
+            continue
+        arrival[i] = cycles
+        limit[i] = min(cycles + extra, horizon)
+        keep[count] = i
+        count += 1
+    return keep[:count]
+
+
+@njit(cache=True, nogil=True)
+def _pass_scores(targets: np.ndarray, received_at: np.ndarray, receive: np.ndarray, theirs: np.ndarray,
+                 arrival: np.ndarray, owners: np.ndarray, own_pos: np.ndarray, own_vel: np.ndarray, effort: np.ndarray,
+                 opp_pos: np.ndarray, ball: np.ndarray, reach: np.ndarray, coast: float, kickable: float,
+                 half_length: float, min_lead: int, weights: np.ndarray, score: np.ndarray,
+                 points: np.ndarray) -> int:  # pragma: no cover - compiled
+    """Score the safe candidates (see the module docstring); unsafe ones score -inf. Returns
+    the best row, or -1 when none is safe."""
+    best, best_score = -1, -np.inf
+    for i in range(targets.shape[0]):
+        score[i] = -np.inf
+        if receive[i] >= UNREACHABLE or theirs[i] - receive[i] < min_lead:
+            continue
+        who = owners[i]
+        # Run onto it: the receiver takes the ball at the target when it can be there by the
+        # ball's arrival and no opponent gets to the ball before; else where it meets it first.
+        sx = own_pos[who, 0] + coast * own_vel[who, 0]
+        sy = own_pos[who, 1] + coast * own_vel[who, 1]
+        need = max(math.sqrt((targets[i, 0] - sx) ** 2 + (targets[i, 1] - sy) ** 2) - kickable, 0.0) / effort[who]
+        run = np.searchsorted(reach, need)
+        if run <= arrival[i] and theirs[i] >= arrival[i] + min_lead:
+            px, py = targets[i, 0], targets[i, 1]
+        else:
+            px, py = received_at[i, 0], received_at[i, 1]
+        points[i, 0] = px
+        points[i, 1] = py
+        space = 10.0
+        for o in range(opp_pos.shape[0]):
+            space = min(space, math.sqrt((px - opp_pos[o, 0]) ** 2 + (py - opp_pos[o, 1]) ** 2))
+        lead = min(theirs[i] - receive[i], 10) / 10.0
+        closeness = 1.0 - math.sqrt((px - half_length) ** 2 + py * py) / (2.0 * half_length)
+        forward = min(max((px - ball[0]) / 20.0, -1.0), 1.5)
+        value = weights[0] * forward + weights[1] * closeness + weights[2] * space / 10.0 + weights[3] * lead
+        score[i] = value
+        if value > best_score:
+            best, best_score = i, value
+    return best
