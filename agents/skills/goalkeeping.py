@@ -18,12 +18,13 @@ scores well enough, else clears towards the wings (:mod:`agents.skills.clearing`
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from agents.skills.clearing import ClearParams, best_clearance
-from agents.skills.model import MotionModel, as_point, check_player
+from agents.skills.model import MotionModel, check_player, float_array
 from agents.skills.passing import PassParams, best_pass
 from soccer_sim.state import NO_PLAYER, PlayMode
 
@@ -50,21 +51,21 @@ class GoalieParams:
 
 def guard_position(model: MotionModel, ball: np.ndarray, params: GoalieParams = GoalieParams()) -> np.ndarray:
     """(2,) the goalkeeper's guard point for a ball at ``ball`` (team frame)."""
-    ball = as_point("ball", ball)
-    goal = model.goal_centre(ours=True)
-    delta = ball - goal
-    dist = float(np.hypot(*delta))
+    bx, by = float_array("ball", ball, (2,)).tolist()
+    gx = -model.half_length
+    dx, dy = bx - gx, by
+    dist = math.hypot(dx, dy)
     if dist < 1e-9:
-        return goal.copy()
-    unit = delta / dist
-    share = np.clip((params.far - dist) / max(params.far - params.near, 1e-9), 0.0, 1.0)
+        return np.array([gx, 0.0])
+    ux, uy = dx / dist, dy / dist
+    share = min(max((params.far - dist) / max(params.far - params.near, 1e-9), 0.0), 1.0)
     depth = params.depth_far + share * (model.goal_area_length - params.depth_far)
-    if unit[0] > 1e-9:
-        depth = min(depth, model.goal_area_length / unit[0])
-    if abs(unit[1]) > 1e-9:
-        depth = min(depth, model.goal_area_half_width / abs(unit[1]))
+    if ux > 1e-9:
+        depth = min(depth, model.goal_area_length / ux)
+    if abs(uy) > 1e-9:
+        depth = min(depth, model.goal_area_half_width / abs(uy))
     depth = max(0.0, min(depth, dist - params.ball_gap))
-    return goal + unit * depth
+    return np.array([gx + ux * depth, uy * depth])
 
 
 def should_catch(model: MotionModel, view: object, goalie: int | None = None, teammate_kicked_last: bool = False,

@@ -31,7 +31,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from agents.skills.model import MotionModel, SkillInputError, view_effort
+from agents.skills.model import MotionModel, SkillInputError, float_array, view_effort
 
 UNREACHABLE = 1_000_000
 """Interception cycle of a player who cannot get to the ball before it leaves the field or the
@@ -168,31 +168,11 @@ _NO_LIMIT = np.full(1, -1, dtype=np.int64)
 _ALL = np.zeros(0, dtype=np.int64)
 
 
-def _float_array(name: str, value: object, shape: tuple[int, ...]) -> np.ndarray:
-    """``value`` as a C-contiguous float64 array of ``shape`` (-1: any length), else a
-    SkillInputError naming it. Cheap when it already is one (the hot path)."""
-    if type(value) is np.ndarray and value.dtype == _F64 and value.flags.c_contiguous:
-        array = value
-    else:
-        try:
-            array = np.ascontiguousarray(value, dtype=np.float64)
-        except (TypeError, ValueError) as exc:
-            raise SkillInputError(f"{name} must be numeric, got {type(value).__name__}") from exc
-    got = array.shape
-    if len(got) != len(shape) or any(want != -1 and want != have for want, have in zip(shape, got)):
-        want = "(" + ", ".join("n" if w == -1 else str(w) for w in shape) + ("," if len(shape) == 1 else "") + ")"
-        raise SkillInputError(f"{name} must have shape {want}, got {got}")
-    return array
-
-
-_F64 = np.dtype(np.float64)
-
-
 def _trajectories(ball: object, ball_vel: object, single: bool) -> tuple[np.ndarray, np.ndarray]:
     if single:
-        return (_float_array("ball", ball, (2,)).reshape(1, 2), _float_array("ball_vel", ball_vel, (2,)).reshape(1, 2))
-    ball = _float_array("ball", ball, (-1, 2))
-    ball_vel = _float_array("ball_vel", ball_vel, (-1, 2))
+        return (float_array("ball", ball, (2,)).reshape(1, 2), float_array("ball_vel", ball_vel, (2,)).reshape(1, 2))
+    ball = float_array("ball", ball, (-1, 2))
+    ball_vel = float_array("ball_vel", ball_vel, (-1, 2))
     if ball.shape != ball_vel.shape:
         raise SkillInputError(f"ball {ball.shape} and ball_vel {ball_vel.shape} must have the same shape")
     return ball, ball_vel
@@ -200,13 +180,13 @@ def _trajectories(ball: object, ball_vel: object, single: bool) -> tuple[np.ndar
 
 def _players(model: MotionModel, pos: object, vel: object, effort: object, radius: object,
              catch_radius: object) -> tuple[np.ndarray, ...]:
-    pos = _float_array("pos", pos, (-1, 2))
+    pos = float_array("pos", pos, (-1, 2))
     n = pos.shape[0]
-    vel = _float_array("vel", vel, (n, 2))
+    vel = float_array("vel", vel, (n, 2))
     defaults = _defaults(model, n)
-    effort = defaults[0] if effort is None else _float_array("effort", effort, (n,))
-    radius = defaults[1] if radius is None else _float_array("radius", radius, (n,))
-    catch_radius = radius if catch_radius is None else _float_array("catch_radius", catch_radius, (n,))
+    effort = defaults[0] if effort is None else float_array("effort", effort, (n,))
+    radius = defaults[1] if radius is None else float_array("radius", radius, (n,))
+    catch_radius = radius if catch_radius is None else float_array("catch_radius", catch_radius, (n,))
     return pos, vel, effort, radius, catch_radius
 
 

@@ -27,7 +27,7 @@ import math
 import numpy as np
 from numba import njit
 
-from agents.skills.model import MotionModel
+from agents.skills.model import MotionModel, float_array
 
 
 def kickable(model: MotionModel, pos: np.ndarray, ball: np.ndarray) -> np.ndarray:
@@ -61,11 +61,11 @@ def kick_for_velocity(model: MotionModel, player: np.ndarray, ball: np.ndarray, 
     """
     desired = np.asarray(desired, dtype=np.float64)
     single = desired.ndim == 1
-    rows = np.ascontiguousarray(desired.reshape(-1, 2))
+    rows = float_array("desired", desired.reshape(1, -1) if single else desired, (-1, 2))
     kick = np.empty_like(rows)
     result = np.empty_like(rows)
-    _kick_kernel(np.asarray(player, np.float64), np.asarray(ball, np.float64), np.asarray(ball_vel, np.float64),
-                 rows, _kick_params(model, holder), kick, result)
+    _kick_kernel(float_array("player", player, (2,)), float_array("ball", ball, (2,)),
+                 float_array("ball_vel", ball_vel, (2,)), rows, _kick_params(model, holder), kick, result)
     if single:
         return kick[0], result[0]
     return kick, result

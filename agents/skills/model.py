@@ -187,29 +187,22 @@ def check_player(player: int, n: int, what: str = "player") -> int:
     return int(player)
 
 
-def as_points(name: str, value: object, rows: int | None = None) -> np.ndarray:
-    """``value`` as a float (rows, 2) array of finite numbers, else a SkillInputError naming it."""
-    try:
-        array = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError) as exc:
-        raise SkillInputError(f"{name} must be numeric, got {type(value).__name__}") from exc
-    if array.ndim != 2 or array.shape[1] != 2 or (rows is not None and array.shape[0] != rows):
-        want = f"({rows}, 2)" if rows is not None else "(n, 2)"
-        raise SkillInputError(f"{name} must have shape {want}, got {array.shape}")
-    if not np.isfinite(array).all():
-        bad = int(np.argwhere(~np.isfinite(array))[0, 0])
-        raise SkillInputError(f"{name} row {bad} is not finite")
-    return array
+_F64 = np.dtype(np.float64)
 
 
-def as_point(name: str, value: object) -> np.ndarray:
-    """``value`` as a finite float (2,) array, else a SkillInputError naming it."""
-    try:
-        array = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError) as exc:
-        raise SkillInputError(f"{name} must be numeric, got {type(value).__name__}") from exc
-    if array.shape != (2,):
-        raise SkillInputError(f"{name} must have shape (2,), got {array.shape}")
-    if not np.isfinite(array).all():
-        raise SkillInputError(f"{name} is not finite: {array.tolist()}")
+def float_array(name: str, value: object, shape: tuple[int, ...]) -> np.ndarray:
+    """``value`` as a C-contiguous float64 array of ``shape`` (-1: any length), else a
+    SkillInputError naming it. Costs little when it already is one (the hot paths); the
+    compiled kernels rely on it, as they do not check bounds."""
+    if type(value) is np.ndarray and value.dtype == _F64 and value.flags.c_contiguous:
+        array = value
+    else:
+        try:
+            array = np.ascontiguousarray(value, dtype=np.float64)
+        except (TypeError, ValueError) as exc:
+            raise SkillInputError(f"{name} must be numeric, got {type(value).__name__}") from exc
+    got = array.shape
+    if len(got) != len(shape) or any(want != -1 and want != have for want, have in zip(shape, got)):
+        want = "(" + ", ".join("n" if w == -1 else str(w) for w in shape) + ("," if len(shape) == 1 else "") + ")"
+        raise SkillInputError(f"{name} must have shape {want}, got {got}")
     return array

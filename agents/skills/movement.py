@@ -24,7 +24,7 @@ import math
 import numpy as np
 from numba import njit
 
-from agents.skills.model import MotionModel, view_effort
+from agents.skills.model import MotionModel, SkillInputError, float_array, view_effort
 
 
 def dash_to_points(model: MotionModel, pos: np.ndarray, vel: np.ndarray, targets: np.ndarray,
@@ -38,13 +38,20 @@ def dash_to_points(model: MotionModel, pos: np.ndarray, vel: np.ndarray, targets
     of its target and already at rest gets a zero dash (no stamina spent). ``out`` receives
     the result when given (e.g. ``TeamCommand.dash``).
     """
+    pos = float_array("pos", pos, (-1, 2))
     n = pos.shape[0]
-    if effort is None:
-        effort = _ones(n)
+    vel = float_array("vel", vel, (n, 2))
+    targets = float_array("targets", targets, (n, 2))
+    effort = _ones(n) if effort is None else float_array("effort", effort, (n,))
     caps = np.empty(n)
-    caps[:] = model.top_speed if speed_cap is None else speed_cap
+    try:
+        caps[:] = model.top_speed if speed_cap is None else speed_cap
+    except ValueError as exc:
+        raise SkillInputError(f"speed_cap must be a number or ({n},) numbers: {exc}") from exc
     if out is None:
         out = np.empty((n, 2))
+    elif not (isinstance(out, np.ndarray) and out.shape == (n, 2) and out.dtype == np.float64):
+        raise SkillInputError(f"out must be a float64 ({n}, 2) array")
     _dash_kernel(pos, vel, targets, effort, caps, model.accel_max, model.speed_max, tolerance, out)
     return out
 

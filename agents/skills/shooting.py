@@ -30,7 +30,7 @@ import numpy as np
 from agents.skills.interception import UNREACHABLE
 from agents.skills.kicking import kick_for_velocity
 from agents.skills.lanes import opponent_cycles
-from agents.skills.model import MotionModel
+from agents.skills.model import MotionModel, check_player
 
 
 @dataclass(frozen=True)
@@ -85,6 +85,7 @@ def best_shot(model: MotionModel, view: object, shooter: int, params: ShotParams
               holder: bool = False) -> ShotPlan | None:
     """The best shot for ``shooter`` (who must be able to kick), or None when out of range or
     when no aim can reach the goal line. ``holder``: a goalkeeper holding the ball."""
+    shooter = check_player(shooter, model.players_per_team, "shooter")
     ball = np.asarray(view.ball, float)
     goal = model.goal_centre(ours=False)
     if float(np.hypot(*(goal - ball))) > params.max_range or ball[0] >= model.half_length:
