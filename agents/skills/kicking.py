@@ -39,16 +39,13 @@ def kickable(model: MotionModel, pos: np.ndarray, ball: np.ndarray) -> np.ndarra
 def kick_effectiveness(model: MotionModel, player: np.ndarray, ball: np.ndarray, kick: np.ndarray) -> np.ndarray:
     """Effectiveness (fraction of the requested change that reaches the ball) of kicks in the
     directions ``kick`` ((k, 2) or (2,)) by a player at ``player`` on the ball at ``ball``."""
-    kick = np.asarray(kick, float)
-    rel = np.asarray(ball, float) - np.asarray(player, float)
-    gap = max(0.0, float(np.hypot(*rel)) - model.touch_distance)
-    effect = 1.0 - model.kick_distance_penalty * min(1.0, gap / model.kickable_margin)
-    norm_k = np.hypot(kick[..., 0], kick[..., 1])
-    norm_r = float(np.hypot(*rel))
-    with np.errstate(invalid="ignore", divide="ignore"):
-        cos = (kick[..., 0] * rel[0] + kick[..., 1] * rel[1]) / (norm_k * norm_r)
-    angle = np.where((norm_k > 1e-12) & (norm_r > 1e-12), np.arccos(np.clip(cos, -1.0, 1.0)), 0.0)
-    return effect - model.kick_angle_penalty * angle / math.pi
+    kick = np.asarray(kick, dtype=np.float64)
+    single = kick.ndim == 1
+    rows = float_array("kick", kick.reshape(1, -1) if single else kick, (-1, 2))
+    out = np.empty(rows.shape[0])
+    _effect_kernel(float_array("player", player, (2,)), float_array("ball", ball, (2,)), rows,
+                   _kick_params(model, False), out)
+    return out[0] if single else out
 
 
 def kick_for_velocity(model: MotionModel, player: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray,
@@ -77,6 +74,12 @@ def _kick_params(model: MotionModel, holder: bool) -> np.ndarray:
 
 
 @njit(cache=True, nogil=True)
+def _distance_effect(rnorm: float, params: np.ndarray) -> float:  # pragma: no cover - compiled
+    """Effectiveness left after the distance penalty, for a ball ``rnorm`` from the kicker's centre."""
+    return 1.0 - params[2] * min(1.0, max(0.0, rnorm - params[5]) / params[4])
+
+
+@njit(cache=True, nogil=True)
 def _effect(rx: float, ry: float, rnorm: float, base: float, angle_penalty: float, kx: float, ky: float,
             holder: bool) -> float:  # pragma: no cover - compiled
     if holder:
@@ -89,13 +92,23 @@ def _effect(rx: float, ry: float, rnorm: float, base: float, angle_penalty: floa
 
 
 @njit(cache=True, nogil=True)
-def _kick_kernel(player: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, desired: np.ndarray, params: np.ndarray,
-                 kick_out: np.ndarray, result_out: np.ndarray) -> None:  # pragma: no cover - compiled
-    kick_max, ball_max, dist_penalty, angle_penalty = params[0], params[1], params[2], params[3]
-    margin, touch, holder = params[4], params[5], params[6] > 0.5
+def _effect_kernel(player: np.ndarray, ball: np.ndarray, kicks: np.ndarray, params: np.ndarray,
+                   out: np.ndarray) -> None:  # pragma: no cover - compiled
     rx, ry = ball[0] - player[0], ball[1] - player[1]
     rnorm = math.sqrt(rx * rx + ry * ry)
-    base = 1.0 - dist_penalty * min(1.0, max(0.0, rnorm - touch) / margin)
+    base = _distance_effect(rnorm, params)
+    angle_penalty = params[3]
+    for j in range(kicks.shape[0]):
+        out[j] = _effect(rx, ry, rnorm, base, angle_penalty, kicks[j, 0], kicks[j, 1], False)
+
+
+@njit(cache=True, nogil=True)
+def _kick_kernel(player: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, desired: np.ndarray, params: np.ndarray,
+                 kick_out: np.ndarray, result_out: np.ndarray) -> None:  # pragma: no cover - compiled
+    kick_max, ball_max, angle_penalty, holder = params[0], params[1], params[3], params[6] > 0.5
+    rx, ry = ball[0] - player[0], ball[1] - player[1]
+    rnorm = math.sqrt(rx * rx + ry * ry)
+    base = _distance_effect(rnorm, params)
     vx, vy = ball_vel[0], ball_vel[1]
     for j in range(desired.shape[0]):
         dx, dy = desired[j, 0], desired[j, 1]
