@@ -202,7 +202,14 @@ def float_array(name: str, value: object, shape: tuple[int, ...]) -> np.ndarray:
         except (TypeError, ValueError) as exc:
             raise SkillInputError(f"{name} must be numeric, got {type(value).__name__}") from exc
     got = array.shape
-    if len(got) != len(shape) or any(want != -1 and want != have for want, have in zip(shape, got)):
+    if len(got) != len(shape) or not _dims_match(got, shape):
         want = "(" + ", ".join("n" if w == -1 else str(w) for w in shape) + ("," if len(shape) == 1 else "") + ")"
         raise SkillInputError(f"{name} must have shape {want}, got {got}")
     return array
+
+
+def _dims_match(got: tuple[int, ...], shape: tuple[int, ...]) -> bool:
+    for want, have in zip(shape, got):
+        if want != -1 and want != have:
+            return False
+    return True

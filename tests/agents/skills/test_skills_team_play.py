@@ -1,0 +1,66 @@
+"""The skills together in real matches: a minimal team that only glues the skills (formation
+slots shifted with the ball, the first interceptor chases, the on-ball decision, the
+goalkeeper's guard point, catch and distribution) scores and wins against the chaser."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+import soccer_sim
+from agents import skills
+from soccer_sim import MatchConfig, TeamCommand
+from soccer_sim.state import PlayMode
+
+
+class SkillsOnlyTeam:
+    """Nothing but the skills: a test team, not one of the built-in teams."""
+
+    SLOTS = np.array([[-51.5, 0], [-35, -20], [-35, -7], [-35, 7], [-35, 20], [-15, -15], [-15, 0], [-15, 15],
+                      [5, -20], [8, 0], [5, 20]], dtype=float)
+
+    def reset(self, side_info, config, rng) -> None:
+        self.n, self.goalie = side_info.players_per_team, side_info.goalie_index
+        self.model = skills.MotionModel(config)
+        self.command = TeamCommand(dash=np.zeros((self.n, 2)), kick=np.zeros((self.n, 2)))
+        self.actions: dict[str, int] = {}
+
+    def act(self, view) -> TeamCommand:
+        model, command, goalie = self.model, self.command, self.goalie
+        command.kick[:] = 0.0
+        command.catch = False
+        targets = self.SLOTS + (0.5 * view.ball[0], 0.2 * view.ball[1])
+        targets[goalie] = skills.guard_position(model, view.ball)
+        race = skills.ball_race(model, view)
+        first = race.ours.first
+        may_play = view.play_mode == PlayMode.PLAY_ON or view.mode_ours
+        if may_play and first >= 0 and first != goalie:
+            targets[first] = race.ours.points[first]
+        urgent = np.arange(self.n) == first
+        skills.dash_to_points(model, view.own_pos, view.own_vel, targets, view.effort,
+                              skills.speed_caps(model, view, urgent), out=command.dash)
+        if view.ball_holder == goalie:
+            command.kick[goalie] = skills.distribute(model, view).kick
+            return command
+        kickers = np.flatnonzero(skills.kickable(model, view.own_pos, view.ball))
+        if may_play and kickers.size:
+            player = int(kickers[0])
+            if player == goalie and skills.should_catch(model, view):
+                command.catch = True
+            else:
+                decision = skills.decide_on_ball(model, view, player)
+                self.actions[decision.action.value] = self.actions.get(decision.action.value, 0) + 1
+                command.kick[player] = decision.kick
+                if decision.dash is not None:
+                    command.dash[player] = decision.dash
+        return command
+
+
+def test_a_team_of_skills_beats_the_chaser() -> None:
+    team = SkillsOnlyTeam()
+    result = soccer_sim.run_match(team, "chaser", seed=0, config=replace(MatchConfig(), max_cycles=1000))
+    ours, theirs = result.score
+    assert ours >= 2 and ours > theirs
+    assert result.statistics[0].shots >= ours
+    assert team.actions.get("dribble", 0) > 0 and team.actions.get("pass", 0) > 0
