@@ -7,10 +7,11 @@ The order and thresholds (:class:`DecisionParams`):
 2. **Pass** when the best safe pass (:mod:`agents.skills.passing`) scores at least
    ``pass_good``.
 3. **Dribble** when no opponent can reach the ball within ``pressure_cycles`` and the best
-   dribbling direction keeps ``dribble_clearance`` metres of clearance.
+   dribbling direction keeps ``dribble_clearance`` metres of clearance (never the
+   goalkeeper).
 4. **Pass** to whoever is safely available (any score).
-5. **Clear** when under pressure or in our own part of the field (ball x below
-   ``clear_line``; a fraction of the half length, so -1/3 is our third).
+5. **Clear** when under pressure, for the goalkeeper, or in our own part of the field (ball
+   x below ``clear_line``; a fraction of the half length, so -1/3 is our third).
 6. **Dribble** otherwise (the direction with most clearance, even if small).
 
 Under pressure means an opponent's interception of the ball (rolled with its current
@@ -77,6 +78,7 @@ def decide_on_ball(model: MotionModel, view: object, player: int, params: Decisi
     """Choose what ``player`` (who can kick the ball) does with it this cycle."""
     player = check_player(player, model.players_per_team)
     holder = view.ball_holder == player
+    goalie = player == model.goalie_index
     radius, catch = control_radii(model, model.goalie_index)
     pressure = intercept(model, view.ball, view.ball_vel, view.opp_pos, view.opp_vel, None, radius, catch,
                          1.0).first_cycle
@@ -89,11 +91,11 @@ def decide_on_ball(model: MotionModel, view: object, player: int, params: Decisi
     if pass_plan is not None and pass_plan.score >= params.pass_good:
         return BallDecision(OnBallAction.PASS, pass_plan.kick, None, pass_plan, pressure)
     dribble_plan = dribble(model, view, player, params.dribbling)
-    if not under_pressure and dribble_plan.clearance >= params.dribble_clearance and not holder:
+    if not under_pressure and dribble_plan.clearance >= params.dribble_clearance and not goalie:
         return BallDecision(OnBallAction.DRIBBLE, dribble_plan.kick, dribble_plan.dash, dribble_plan, pressure)
     if pass_plan is not None:
         return BallDecision(OnBallAction.PASS, pass_plan.kick, None, pass_plan, pressure)
-    if under_pressure or holder or float(view.ball[0]) < params.clear_line * model.half_length:
+    if under_pressure or goalie or float(view.ball[0]) < params.clear_line * model.half_length:
         clear = best_clearance(model, view, player, params.clearing, holder)
         return BallDecision(OnBallAction.CLEAR, clear.kick, None, clear, pressure)
     return BallDecision(OnBallAction.DRIBBLE, dribble_plan.kick, dribble_plan.dash, dribble_plan, pressure)

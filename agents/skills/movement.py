@@ -56,20 +56,26 @@ def dash_to_points(model: MotionModel, pos: np.ndarray, vel: np.ndarray, targets
     return out
 
 
-def speed_caps(model: MotionModel, view: object, urgent: np.ndarray | bool, stamina_reserve: float = 0.05) -> np.ndarray:
+def speed_caps(model: MotionModel, view: object, urgent: np.ndarray | bool = False, near: float | None = None,
+               stamina_reserve: float = 0.05) -> np.ndarray:
     """(n,) running-speed caps (m/cycle) for the view's players.
 
-    A player sprints (its top speed, scaled by effort) only when ``urgent`` (bool or (n,)
-    bool) is set for it and its stamina is above ``stamina_low + stamina_reserve * maximum``,
-    the level under which recovery and effort begin to fall (StaminaConfig); otherwise it runs
-    at its sustainable speed, which its recovery pays for, so stamina never drains.
+    A player sprints (its top speed, scaled by effort) only when it is urgent (``urgent``,
+    bool or (n,) bool; or, when ``near`` is given, within ``near`` metres of the ball: close
+    to the action) and its stamina is above ``stamina_low + stamina_reserve * maximum``, the
+    level under which recovery and effort begin to fall (StaminaConfig); otherwise it runs at
+    its sustainable speed, which its recovery pays for, so stamina never drains.
     """
     n = model.players_per_team
     effort = view_effort(view, n)
     top = model.top_speed * effort
     jog = model.sustainable_speed(effort)
+    hurry = np.asarray(urgent, bool)
+    if near is not None:
+        gap = view.own_pos - view.ball
+        hurry = hurry | (np.einsum("ij,ij->i", gap, gap) <= near * near)
     fresh = np.asarray(view.stamina, float) > model.stamina_low + stamina_reserve * model.stamina_max
-    return np.where(np.asarray(urgent, bool) & fresh, top, jog)
+    return np.where(hurry & fresh, top, jog)
 
 
 _ONES: dict[int, np.ndarray] = {}

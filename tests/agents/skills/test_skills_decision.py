@@ -48,3 +48,12 @@ def test_pressed_in_our_third_without_a_pass_clears() -> None:
     assert decision.kick[0] > 0.0
     speed = np.linalg.norm(decision.plan.ball_vel)
     assert speed > 1.5  # a hard kick
+
+
+def test_goalkeeper_on_the_ball_never_dribbles() -> None:
+    own = {i: (-45.0, -30.0 + 6.0 * i) for i in range(11)}
+    own[0] = (-HL + 5.0, 0.0)
+    view = make_view(own=own, opp={0: (HL - 1.0, 0.0)}, ball=(-HL + 5.6, 0.0))
+    decision = decide_on_ball(MODEL, view, 0)
+    assert decision.action in (OnBallAction.PASS, OnBallAction.CLEAR)
+    assert decision.kick[0] > 0.0

@@ -95,3 +95,11 @@ def test_speed_caps_sprint_only_when_urgent_and_fresh() -> None:
 def test_standing_on_the_target_costs_nothing() -> None:
     out = dash_to_points(MODEL, np.array([[1.0, 1.0]]), np.zeros((1, 2)), np.array([[1.01, 1.0]]))
     assert np.all(out == 0.0)
+
+
+def test_players_near_the_ball_may_sprint() -> None:
+    own = {4: (3.0, 4.0), 5: (30.0, 0.0)}
+    view = make_view(own=own, ball=(0.0, 0.0))
+    caps = speed_caps(MODEL, view, near=10.0)
+    assert caps[4] == pytest.approx(MODEL.top_speed)
+    assert caps[5] == pytest.approx(MODEL.sustainable_speed(1.0))
