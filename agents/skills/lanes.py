@@ -13,7 +13,10 @@ Passing and shooting both build on these two calls.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
+from numba import njit
 
 from agents.skills.interception import UNREACHABLE, control_radii, intercept_many
 from agents.skills.model import MotionModel, view_effort
@@ -74,3 +77,36 @@ def lane_open(model: MotionModel, view: object, ball: np.ndarray, velocity: np.n
     theirs, _ = opponent_cycles(model, view, ball, velocity, None, extra_radius)
     mine = int(ours[0, receiver])
     return mine < UNREACHABLE and int(theirs[0]) - mine >= min_lead
+
+
+@njit(cache=True, nogil=True)
+def lane_arrivals(targets: np.ndarray, wanted: np.ndarray, velocities: np.ndarray, ball: np.ndarray, decay: float,
+                  horizon: int, extra: int, arrival: np.ndarray, limit: np.ndarray) -> np.ndarray:  # pragma: no cover
+    """Which lanes work, and when the ball gets to the end of each (compiled).
+
+    Row i: a ball at ``ball`` meant to reach ``targets[i]`` with the velocity ``wanted[i]``
+    gets ``velocities[i]`` from the kick. Returns the rows whose kick keeps the intended line
+    (within 1 %) and brings the ball to the target within ``horizon`` cycles, and writes their
+    ``arrival`` cycle (rounded up) and search ``limit`` (arrival + ``extra``, at most the
+    horizon)."""
+    keep = np.empty(targets.shape[0], dtype=np.int64)
+    count = 0
+    for i in range(targets.shape[0]):
+        wx, wy = wanted[i, 0], wanted[i, 1]
+        norm = math.sqrt(wx * wx + wy * wy)
+        vx, vy = velocities[i, 0], velocities[i, 1]
+        speed = (vx * wx + vy * wy) / norm  # along the intended line
+        if speed <= 0.99 * math.sqrt(vx * vx + vy * vy):
+            continue
+        dist = math.sqrt((targets[i, 0] - ball[0]) ** 2 + (targets[i, 1] - ball[1]) ** 2)
+        left = 1.0 - dist * (1.0 - decay) / speed
+        if left <= 0.0:
+            continue
+        cycles = math.ceil(math.log(left) / math.log(decay) - 1e-9)
+        if cycles > horizon:
+            continue
+        arrival[i] = cycles
+        limit[i] = min(cycles + extra, horizon)
+        keep[count] = i
+        count += 1
+    return keep[:count]

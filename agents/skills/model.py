@@ -120,11 +120,8 @@ class MotionModel:
         """Cycles (fractional) a ball leaving at ``speed`` needs to travel ``distance``; inf when
         it stops short."""
         distance = np.asarray(distance, float)
-        speed = np.asarray(speed, float)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            left = 1.0 - distance * (1.0 - self.ball_decay) / np.maximum(speed, 1e-12)
-            cycles = np.where(left > 0.0, np.log(np.maximum(left, 1e-300)) / math.log(self.ball_decay), np.inf)
-        return cycles
+        left = 1.0 - distance * (1.0 - self.ball_decay) / np.maximum(np.asarray(speed, float), 1e-12)
+        return np.where(left > 0.0, np.log(np.maximum(left, 1e-300)) / math.log(self.ball_decay), np.inf)
 
     # --- players ---------------------------------------------------------------------------
     def sustainable_speed(self, effort: np.ndarray | float = 1.0) -> np.ndarray:

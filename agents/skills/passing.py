@@ -27,7 +27,7 @@ from numba import njit
 
 from agents.skills.interception import UNREACHABLE
 from agents.skills.kicking import kick_for_velocity
-from agents.skills.lanes import opponent_cycles, teammate_cycles
+from agents.skills.lanes import lane_arrivals, opponent_cycles, teammate_cycles
 from agents.skills.model import MotionModel, check_player, view_effort
 
 
@@ -132,8 +132,8 @@ def best_pass(model: MotionModel, view: object, passer: int, params: PassParams 
     kicks, velocities = kick_for_velocity(model, view.own_pos[passer], ball, view.ball_vel, wanted, holder)
     arrival = np.empty(count, dtype=np.int64)
     limit = np.empty(count, dtype=np.int64)
-    usable = _pass_arrivals(targets, wanted, velocities, ball, model.ball_decay, model.horizon, params.extra_cycles,
-                            arrival, limit)
+    usable = lane_arrivals(targets, wanted, velocities, ball, model.ball_decay, model.horizon, params.extra_cycles,
+                           arrival, limit)
     if usable.size == 0:
         return None
     vel_u, own_u, lim_u = velocities[usable], owners[usable], limit[usable]
@@ -187,34 +187,6 @@ def _pass_targets(own_pos: np.ndarray, receivers: np.ndarray, leads: np.ndarray,
                 wanted[count, 1] = dy / dist * speed
                 count += 1
     return count
-
-
-@njit(cache=True, nogil=True)
-def _pass_arrivals(targets: np.ndarray, wanted: np.ndarray, velocities: np.ndarray, ball: np.ndarray, decay: float,
-                   horizon: int, extra: int, arrival: np.ndarray, limit: np.ndarray) -> np.ndarray:  # pragma: no cover
-    """Rows whose kick keeps the intended line and gets the ball to its target within the
-    horizon; their arrival cycle and search limit (arrival + extra, at most the horizon)."""
-    keep = np.empty(targets.shape[0], dtype=np.int64)
-    count = 0
-    for i in range(targets.shape[0]):
-        wx, wy = wanted[i, 0], wanted[i, 1]
-        norm = math.sqrt(wx * wx + wy * wy)
-        vx, vy = velocities[i, 0], velocities[i, 1]
-        speed = (vx * wx + vy * wy) / norm  # along the intended line
-        if speed <= 0.99 * math.sqrt(vx * vx + vy * vy):
-            continue
-        dist = math.sqrt((targets[i, 0] - ball[0]) ** 2 + (targets[i, 1] - ball[1]) ** 2)
-        left = 1.0 - dist * (1.0 - decay) / speed
-        if left <= 0.0:
-            continue
-        cycles = math.ceil(math.log(left) / math.log(decay) - 1e-9)
-        if cycles > horizon:
-            continue
-        arrival[i] = cycles
-        limit[i] = min(cycles + extra, horizon)
-        keep[count] = i
-        count += 1
-    return keep[:count]
 
 
 @njit(cache=True, nogil=True)

@@ -29,7 +29,7 @@ import numpy as np
 
 from agents.skills.interception import UNREACHABLE
 from agents.skills.kicking import kick_for_velocity
-from agents.skills.lanes import opponent_cycles
+from agents.skills.lanes import lane_arrivals, opponent_cycles
 from agents.skills.model import MotionModel, check_player
 
 
@@ -81,6 +81,16 @@ def aim_points(model: MotionModel, params: ShotParams = ShotParams()) -> np.ndar
     return np.column_stack([np.full(ys.shape, model.half_length), ys])
 
 
+def _aims(model: MotionModel, params: ShotParams) -> np.ndarray:
+    """:func:`aim_points`, made once per model and parameters."""
+    cache = model.__dict__.setdefault("_shot_aims", {})
+    key = (params.aims, params.post_margin)
+    aims = cache.get(key)
+    if aims is None:
+        aims = cache[key] = aim_points(model, params)
+    return aims
+
+
 def best_shot(model: MotionModel, view: object, shooter: int, params: ShotParams = ShotParams(),
               holder: bool = False) -> ShotPlan | None:
     """The best shot for ``shooter`` (who must be able to kick), or None when out of range or
@@ -90,19 +100,18 @@ def best_shot(model: MotionModel, view: object, shooter: int, params: ShotParams
     goal = model.goal_centre(ours=False)
     if float(np.hypot(*(goal - ball))) > params.max_range or ball[0] >= model.half_length:
         return None
-    aims = aim_points(model, params)
+    aims = _aims(model, params)
     delta = aims - ball
     dist = np.hypot(delta[:, 0], delta[:, 1])
-    direction = delta / dist[:, None]
-    kicks, velocities = kick_for_velocity(model, view.own_pos[shooter], ball, view.ball_vel,
-                                          direction * model.ball_speed_max, holder)
-    speed = np.einsum("ij,ij->i", velocities, direction)
-    on_line = speed > 0.99 * np.hypot(velocities[:, 0], velocities[:, 1])
-    cross = model.ball_cycles_to(dist, speed)
-    usable = on_line & np.isfinite(cross) & (cross <= model.horizon)
-    if not usable.any():
+    wanted = delta * (model.ball_speed_max / dist)[:, None]
+    kicks, velocities = kick_for_velocity(model, view.own_pos[shooter], ball, view.ball_vel, wanted, holder)
+    count = len(aims)
+    cross_cycle, limit = np.empty(count, dtype=np.int64), np.empty(count, dtype=np.int64)
+    usable = lane_arrivals(aims, wanted, velocities, ball, model.ball_decay, model.horizon, 0, cross_cycle, limit)
+    if usable.size == 0:
         return None
-    cross_cycle = np.where(usable, np.ceil(np.where(usable, cross, 0.0)), model.horizon).astype(np.int64)
+    aims, dist, kicks, velocities, cross_cycle = aims[usable], dist[usable], kicks[usable], velocities[usable], \
+        cross_cycle[usable]
     theirs, _ = opponent_cycles(model, view, ball, velocities, cross_cycle, params.opponent_margin)
     lead = np.where(theirs >= UNREACHABLE, model.horizon, theirs - cross_cycle).astype(float)
     unblocked = 1.0 / (1.0 + np.exp(-(lead - params.lead_half) / params.lead_scale))
@@ -110,7 +119,7 @@ def best_shot(model: MotionModel, view: object, shooter: int, params: ShotParams
     post = model.goal_half_width - model.ball_radius
     covered = np.clip(np.minimum(aims[:, 1] + spread, post) - np.maximum(aims[:, 1] - spread, -post), 0.0, None)
     on_target = np.minimum(covered / (2.0 * spread), 1.0)
-    score = np.where(usable, unblocked * on_target, 0.0)
+    score = unblocked * on_target
     best = int(np.argmax(score))
     return ShotPlan(aim=aims[best].copy(), kick=kicks[best].copy(), ball_vel=velocities[best].copy(),
                     cross_cycle=int(cross_cycle[best]), opponent_cycle=int(theirs[best]),

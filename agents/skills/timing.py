@@ -29,14 +29,18 @@ from soccer_sim.state import PlayMode
 from soccer_sim.team import TeamView
 
 
-def random_view(config: MatchConfig, rng: np.random.Generator, carrier: int = 9) -> TeamView:
-    """A mid-game view: both teams spread over the field, our ``carrier`` next to a slow ball."""
+def random_view(config: MatchConfig, rng: np.random.Generator, carrier: int = 9,
+                carrier_at: tuple[float, float] | None = None) -> TeamView:
+    """A mid-game view: both teams spread over the field, our ``carrier`` (at ``carrier_at``
+    if given) next to a slow ball."""
     n = config.players_per_team
     hl, hw = config.field.half_length, config.field.half_width
     own = np.column_stack([rng.uniform(-hl + 5, hl - 5, n), rng.uniform(-hw + 3, hw - 3, n)])
     opp = np.column_stack([rng.uniform(-hl + 5, hl - 5, n), rng.uniform(-hw + 3, hw - 3, n)])
     own[0] = (-hl + 2.0, 0.0)
     opp[0] = (hl - 2.0, 0.0)
+    if carrier_at is not None:
+        own[carrier] = carrier_at
     ball = own[carrier] + (0.6, 0.0)
     return TeamView(own_pos=own, own_vel=rng.uniform(-0.3, 0.3, (n, 2)), opp_pos=opp,
                     opp_vel=rng.uniform(-0.3, 0.3, (n, 2)), ball=ball, ball_vel=np.array([0.3, 0.1]),
@@ -44,8 +48,10 @@ def random_view(config: MatchConfig, rng: np.random.Generator, carrier: int = 9)
                     effort=np.full(n, 1.0))
 
 
-def skill_calls(model: MotionModel, view: TeamView, carrier: int) -> dict[str, Callable[[], object]]:
-    """The calls timed, by name (each for a whole team of players where the skill allows)."""
+def skill_calls(model: MotionModel, view: TeamView, carrier: int,
+                attack: TeamView) -> dict[str, Callable[[], object]]:
+    """The calls timed, by name (each for a whole team of players where the skill allows);
+    ``attack`` is a view with the carrier 18 m from the opponents' goal (shots in range)."""
     n = model.players_per_team
     targets = view.own_pos + 5.0
     urgent = np.zeros(n, dtype=bool)
@@ -61,12 +67,14 @@ def skill_calls(model: MotionModel, view: TeamView, carrier: int) -> dict[str, C
         "speed_caps (11 players)": lambda: speed_caps(model, view, urgent),
         "kick_for_velocity": lambda: kick_for_velocity(model, view.own_pos[carrier], view.ball, view.ball_vel, wanted),
         "best_pass": lambda: best_pass(model, view, carrier),
-        "best_shot": lambda: best_shot(model, view, carrier),
+        "best_shot (out of range)": lambda: best_shot(model, view, carrier),
+        "best_shot (in range)": lambda: best_shot(model, attack, carrier),
         "dribble": lambda: dribble(model, view, carrier),
         "guard_position": lambda: guard_position(model, view.ball),
         "should_catch": lambda: should_catch(model, view),
         "distribute (goalkeeper)": lambda: distribute(model, view),
-        "decide_on_ball": lambda: decide_on_ball(model, view, carrier),
+        "decide_on_ball (midfield)": lambda: decide_on_ball(model, view, carrier),
+        "decide_on_ball (18 m from goal)": lambda: decide_on_ball(model, attack, carrier),
     }
 
 
@@ -79,7 +87,8 @@ def time_skills(views: int = 20, repeat: int = 5, number: int = 200, seed: int =
     for _ in range(views):
         carrier = 9
         view = random_view(config, rng, carrier)
-        for name, call in skill_calls(model, view, carrier).items():
+        attack = random_view(config, rng, carrier, (config.field.half_length - 18.6, float(rng.uniform(-8, 8))))
+        for name, call in skill_calls(model, view, carrier, attack).items():
             call()
             best = min(timeit.repeat(call, number=number, repeat=repeat)) / number
             results.setdefault(name, []).append(best * 1e6)
@@ -94,7 +103,7 @@ def main(argv: list[str] | None = None) -> None:
     if args.views < 1 or args.number < 1:
         parser.error("--views and --number must be positive")
     for name, micro in time_skills(args.views, number=args.number).items():
-        print(f"{name:38s} {micro:9.1f} µs")
+        print(f"{name:40s} {micro:9.1f} µs")
 
 
 if __name__ == "__main__":
