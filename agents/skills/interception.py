@@ -113,8 +113,9 @@ def intercept_many(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, p
                    catch_radius: np.ndarray | None = None, catch_side: float = -1.0,
                    limit: np.ndarray | None = None, reaction: int = 0, first_only: bool = False,
                    only: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Interception of many ball trajectories at once: ``ball`` and ``ball_vel`` (P, 2) (one
-    row per trajectory, e.g. candidate passes or shots), players as for :func:`intercept`.
+    """Interception of many ball trajectories at once: ``ball_vel`` (P, 2) one row per
+    trajectory (e.g. candidate passes or shots) and ``ball`` (P, 2), or (2,) for one start
+    shared by all; players as for :func:`intercept`.
 
     ``limit`` (P,) int: the last cycle searched per trajectory (None: the model's horizon);
     beyond it a player counts as :data:`UNREACHABLE`. ``reaction``: cycles before the players
@@ -126,7 +127,7 @@ def intercept_many(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, p
     """
     ball, ball_vel = _trajectories(ball, ball_vel, single=False)
     pos, vel, effort, radius, catch_radius = _players(model, pos, vel, effort, radius, catch_radius)
-    count, n = ball.shape[0], pos.shape[0]
+    count, n = ball_vel.shape[0], pos.shape[0]
     if limit is None:
         limits = np.full(count, -1, dtype=np.int64)
     else:
@@ -171,10 +172,12 @@ _ALL = np.zeros(0, dtype=np.int64)
 def _trajectories(ball: object, ball_vel: object, single: bool) -> tuple[np.ndarray, np.ndarray]:
     if single:
         return (float_array("ball", ball, (2,)).reshape(1, 2), float_array("ball_vel", ball_vel, (2,)).reshape(1, 2))
-    ball = float_array("ball", ball, (-1, 2))
     ball_vel = float_array("ball_vel", ball_vel, (-1, 2))
-    if ball.shape != ball_vel.shape:
-        raise SkillInputError(f"ball {ball.shape} and ball_vel {ball_vel.shape} must have the same shape")
+    if isinstance(ball, np.ndarray) and ball.shape == (2,):
+        ball = float_array("ball", ball, (2,)).reshape(1, 2)
+    ball = float_array("ball", ball, (-1, 2))
+    if ball.shape[0] not in (1, ball_vel.shape[0]):
+        raise SkillInputError(f"ball {ball.shape} must be (2,), (1, 2) or match ball_vel {ball_vel.shape}")
     return ball, ball_vel
 
 
@@ -236,20 +239,35 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
     n = pos.shape[0]
     run = np.empty(n)  # furthest straight-line run so far, per player
     speed = np.empty(n)
-    for p in range(ball.shape[0]):
-        bx0, by0, vx, vy = ball[p, 0], ball[p, 1], ball_vel[p, 0], ball_vel[p, 1]
+    for p in range(ball_vel.shape[0]):
+        b = 0 if ball.shape[0] == 1 else p
+        bx0, by0, vx, vy = ball[b, 0], ball[b, 1], ball_vel[p, 0], ball_vel[p, 1]
         last = horizon if limits[p] < 0 else min(limits[p], horizon)
         alone = only[p] if only.shape[0] > 0 else -1
+        # Players who cannot get near the ball's whole path within `last` cycles are skipped
+        # (-2) when the search ends at `last` anyway (first-only, or a limit within the horizon).
+        prune = first_only or (0 <= limits[p] <= horizon)
+        sx, sy = ball_travel[last] * vx, ball_travel[last] * vy
+        seg = sx * sx + sy * sy
+        remaining = 0
         for i in range(n):
             run[i] = 0.0
             speed[i] = math.sqrt(vel[i, 0] ** 2 + vel[i, 1] ** 2)
             if alone < 0 or i == alone:
                 cycles_out[p, i] = -1
+                remaining += 1
+                if prune:
+                    qx, qy = pos[i, 0] - bx0, pos[i, 1] - by0
+                    t = min(max((qx * sx + qy * sy) / seg, 0.0), 1.0) if seg > 0.0 else 0.0
+                    gap = math.sqrt((qx - t * sx) ** 2 + (qy - t * sy) ** 2)
+                    grow = reach[last - delay] * effort[i] if last > delay else 0.0
+                    if gap > coast[last] * speed[i] + grow + max(radius[i], catch_radius[i]):
+                        cycles_out[p, i] = -2
+                        remaining -= 1
             else:
                 cycles_out[p, i] = UNREACHABLE
                 points_out[p, i, 0] = bx0
                 points_out[p, i, 1] = by0
-        remaining = n if alone < 0 else 1
         lo, hi = (0, n) if alone < 0 else (alone, alone + 1)
         found = False
         left_field = False
@@ -265,7 +283,7 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
             k_end = k
             in_area = side * tx >= area_x and abs(ty) <= area_y
             for i in range(lo, hi):
-                if cycles_out[p, i] >= 0:
+                if cycles_out[p, i] != -1:
                     continue
                 if k > 0:
                     boost = accel_max * effort[i] if k > delay else 0.0
@@ -288,8 +306,6 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
                     found = True
             if remaining == 0 or (found and first_only):
                 break
-        if remaining == 0:
-            continue
         if found and first_only:
             for i in range(n):
                 if cycles_out[p, i] < 0:

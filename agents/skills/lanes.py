@@ -37,12 +37,8 @@ def opponent_cycles(model: MotionModel, view: object, ball: np.ndarray, velociti
     -1 when nobody).
     """
     velocities = np.ascontiguousarray(velocities, dtype=np.float64).reshape(-1, 2)
-    starts = np.broadcast_to(np.asarray(ball, np.float64), velocities.shape)
-    radius, catch = control_radii(model, model.goalie_index)
-    if extra_radius:
-        radius = radius + extra_radius
-        catch = catch + extra_radius
-    cycles, _ = intercept_many(model, starts, velocities, view.opp_pos, view.opp_vel, None, radius, catch, 1.0, limit,
+    radius, catch = _radii(model, extra_radius)
+    cycles, _ = intercept_many(model, np.asarray(ball, np.float64), velocities, view.opp_pos, view.opp_vel, None, radius, catch, 1.0, limit,
                                reaction, first_only=True)
     if cycles.shape[1] == 0:
         return np.full(len(velocities), UNREACHABLE, dtype=np.int64), np.full(len(velocities), -1, dtype=np.int64)
@@ -61,11 +57,21 @@ def teammate_cycles(model: MotionModel, view: object, ball: np.ndarray, velociti
     ball at cycle 0).
     """
     velocities = np.ascontiguousarray(velocities, dtype=np.float64).reshape(-1, 2)
-    starts = np.broadcast_to(np.asarray(ball, np.float64), velocities.shape)
     n = model.players_per_team
-    radius, catch = control_radii(model, model.goalie_index)
-    return intercept_many(model, starts, velocities, view.own_pos, view.own_vel, view_effort(view, n), radius,
+    radius, catch = _radii(model, 0.0)
+    return intercept_many(model, np.asarray(ball, np.float64), velocities, view.own_pos, view.own_vel, view_effort(view, n), radius,
                           catch, -1.0, limit, only=receivers)
+
+
+def _radii(model: MotionModel, extra: float) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`control_radii` (goalkeeper at the model's index) widened by ``extra``, made once
+    per model and margin (never written)."""
+    cache = model.__dict__.setdefault("_lane_radii", {})
+    found = cache.get(extra)
+    if found is None:
+        radius, catch = control_radii(model, model.goalie_index)
+        found = cache[extra] = (radius + extra, catch + extra)
+    return found
 
 
 def lane_open(model: MotionModel, view: object, ball: np.ndarray, velocity: np.ndarray, receiver: int,

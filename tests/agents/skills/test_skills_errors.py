@@ -51,7 +51,7 @@ def test_intercept_many_checks_limits_and_players() -> None:
         intercept_many(MODEL, balls, balls, POS, POS, limit=np.ones(3, dtype=int))
     with pytest.raises(SkillInputError, match="only"):
         intercept_many(MODEL, balls, balls, POS, POS, only=np.array([0, 5]))
-    with pytest.raises(SkillInputError, match="same shape"):
+    with pytest.raises(SkillInputError, match="match ball_vel"):
         intercept_many(MODEL, balls, np.zeros((3, 2)), POS, POS)
     with pytest.raises(SkillInputError, match="reaction"):
         intercept_many(MODEL, balls, balls, POS, POS, reaction=-1)

@@ -119,3 +119,25 @@ def test_many_trajectories_match_single_calls_and_respect_limits() -> None:
         assert np.array_equal(one.cycles, cycles[p]) and np.allclose(one.points, points[p])
     limited, _ = intercept_many(MODEL, balls, vels, pos, vel, limit=np.full(6, 3))
     assert np.all((limited == cycles) | ((limited == UNREACHABLE) & (cycles > 3)))
+
+
+def test_first_only_and_pruned_searches_agree_with_the_full_one() -> None:
+    rng = np.random.default_rng(7)
+    pos, vel = rng.uniform(-40, 40, (11, 2)), rng.uniform(-0.4, 0.4, (11, 2))
+    vels = rng.uniform(-2.5, 2.5, (40, 2))
+    start = np.array([1.0, -2.0])
+    full, _ = intercept_many(MODEL, start, vels, pos, vel)
+    first, _ = intercept_many(MODEL, start, vels, pos, vel, first_only=True)
+    assert np.array_equal(first.min(axis=1), full.min(axis=1))
+    assert np.all((first == full) | (first == UNREACHABLE))
+    limits = rng.integers(0, 30, 40)
+    limited, _ = intercept_many(MODEL, start, vels, pos, vel, limit=limits)  # far players pruned
+    inside = full <= limits[:, None]
+    assert np.array_equal(limited[inside], full[inside]) and np.all(limited[~inside] == UNREACHABLE)
+    one = rng.integers(0, 11, 40)
+    alone, _ = intercept_many(MODEL, start, vels, pos, vel, only=one)
+    rows = np.arange(40)
+    assert np.array_equal(alone[rows, one], full[rows, one])
+    mask = np.ones_like(alone, dtype=bool)
+    mask[rows, one] = False
+    assert np.all(alone[mask] == UNREACHABLE)
