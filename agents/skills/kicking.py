@@ -14,8 +14,8 @@ effectiveness. The ball's speed is then clipped to ``ball_speed_max``.
 :func:`kick_for_velocity` inverts the rule: the change needed is ``desired - ball_vel``; the
 request is that change divided by the effectiveness of its direction. When the change is
 larger than one kick allows, it keeps the desired *direction* and gives the largest speed
-along it that one kick can reach (a bisection on the speed, since the effectiveness depends
-on the kick's direction); when no speed along the desired direction is reachable (a fast
+along it that one kick can reach (the effectiveness depends on the kick's direction, so a
+few rounds of solving a quadratic, checked, with bisection as the fallback); when no speed along the desired direction is reachable (a fast
 ball would have to be turned round), it kicks at full power towards the point of the desired
 ray closest to the ball's current velocity.
 """
@@ -103,6 +103,42 @@ def _effect_kernel(player: np.ndarray, ball: np.ndarray, kicks: np.ndarray, para
 
 
 @njit(cache=True, nogil=True)
+def _largest_speed(ux: float, uy: float, vx: float, vy: float, low: float, high: float, kick_max: float, rx: float,
+                   ry: float, rnorm: float, base: float, angle_penalty: float,
+                   holder: bool) -> float:  # pragma: no cover - compiled
+    """The largest speed s in [low, high] along the unit vector u such that the change
+    ``s u - v`` fits in one kick (``low`` does, ``high`` does not).
+
+    For a fixed effectiveness e the boundary solves ``|s u - v| = kick_max e``, a quadratic
+    in s; e depends on the change's direction only, which moves little with s, so a few
+    rounds of "solve, re-evaluate e" land on the boundary. The result is checked and, if it
+    is not feasible, bisection between ``low`` and it settles the matter.
+    """
+    along = ux * vx + uy * vy
+    rest = vx * vx + vy * vy - along * along
+    s = high
+    for _ in range(4):
+        cx, cy = s * ux - vx, s * uy - vy
+        reach = kick_max * _effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder)
+        disc = reach * reach - rest
+        if disc < 0.0:
+            break
+        s = min(max(along + math.sqrt(disc), low), high)
+    cx, cy = s * ux - vx, s * uy - vy
+    if math.sqrt(cx * cx + cy * cy) <= kick_max * _effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder) + 1e-12:
+        return s
+    high = s
+    for _ in range(18):  # to within 2^-18 of the range (~1e-5 m/cycle)
+        mid = 0.5 * (low + high)
+        cx, cy = mid * ux - vx, mid * uy - vy
+        if math.sqrt(cx * cx + cy * cy) <= kick_max * _effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder):
+            low = mid
+        else:
+            high = mid
+    return low
+
+
+@njit(cache=True, nogil=True)
 def _kick_kernel(player: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, desired: np.ndarray, params: np.ndarray,
                  kick_out: np.ndarray, result_out: np.ndarray) -> None:  # pragma: no cover - compiled
     kick_max, ball_max, angle_penalty, holder = params[0], params[1], params[3], params[6] > 0.5
@@ -148,15 +184,8 @@ def _kick_kernel(player: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, des
                 result_out[j, 0] = nx
                 result_out[j, 1] = ny
                 continue
-            low, high = closest, speed
-            for _ in range(18):  # speed to within 2^-18 of the range (~1e-5 m/cycle)
-                mid = 0.5 * (low + high)
-                cx, cy = mid * ux - vx, mid * uy - vy
-                if math.sqrt(cx * cx + cy * cy) <= kick_max * _effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder):
-                    low = mid
-                else:
-                    high = mid
-            lam = low / speed
+            lam = _largest_speed(ux, uy, vx, vy, closest, speed, kick_max, rx, ry, rnorm, base, angle_penalty,
+                                 holder) / speed
         tx, ty = lam * dx, lam * dy
         cx, cy = tx - vx, ty - vy
         eff = max(_effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder), 1e-9)

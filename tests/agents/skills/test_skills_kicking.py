@@ -93,3 +93,23 @@ def test_kickable_is_the_kickable_distance() -> None:
     assert kickable(MODEL, pos, (edge - 1e-6, 0.0)).tolist() == [True, False]
     assert kickable(MODEL, pos, (edge + 1e-6, 0.0)).tolist() == [False, False]
     assert math.isclose(edge, 0.3 + 0.085 + 0.7)
+
+
+def test_best_direction_preserving_kick_matches_a_fine_scan() -> None:
+    rng = np.random.default_rng(11)
+    for _ in range(200):
+        player = np.zeros(2)
+        angle = rng.uniform(-np.pi, np.pi)
+        ball = rng.uniform(0.4, PHYS.kickable_distance) * np.array([np.cos(angle), np.sin(angle)])
+        ball_vel = rng.uniform(-1.5, 1.5, 2)
+        desired = rng.uniform(-3.0, 3.0, 2)
+        _, result = kick_for_velocity(MODEL, player, ball, ball_vel, desired)
+        unit = desired / np.linalg.norm(desired)
+        speeds = np.linspace(0.0, min(np.linalg.norm(desired), PHYS.ball_speed_max), 3001)
+        changes = speeds[:, None] * unit - ball_vel
+        feasible = np.linalg.norm(changes, axis=1) <= PHYS.kick_speed_max * kick_effectiveness(MODEL, player, ball, changes) + 1e-12
+        if not feasible.any():
+            continue  # nothing along the direction: the full-power fallback
+        assert result @ unit >= speeds[feasible].max() - 2e-3
+        change = result - ball_vel
+        assert np.linalg.norm(change) <= PHYS.kick_speed_max * kick_effectiveness(MODEL, player, ball, change) + 1e-9
