@@ -13,7 +13,7 @@ per match (e.g. in ``Team.reset``)::
     race.ours.first, race.ours.first_cycle, race.ours.points[race.ours.first]
     race.we_win, race.lead
 
-    caps = skills.speed_caps(model, view, urgent=near_ball)  # sprint only when it matters
+    caps = skills.speed_caps(model, view, urgent=chasers, near=15.0)  # sprint only when it matters
     skills.dash_to_points(model, view.own_pos, view.own_vel, targets, view.effort, caps,
                           out=command.dash)                  # arrive and stop, all players
 
@@ -51,8 +51,16 @@ The API, by module:
 * :mod:`~agents.skills.decision`: :func:`decide_on_ball`, :class:`DecisionParams`,
   :class:`BallDecision`, :class:`OnBallAction`.
 
-``soccer-sim bench skills`` is not part of this package; the timings of every call are
-measured by :mod:`agents.skills.timing` (``python -m agents.skills.timing``).
+Conventions: positions (n, 2) and velocities in the team frame; ``effort`` (n,) from the
+view (missing: 1); opponents are predicted at full effort, reacting one cycle after our kicks;
+a player's "control distance" is the kickable distance (the catch length for a goalkeeper in
+its own penalty area); cycles count from the current view (0: now); :data:`UNREACHABLE`
+marks a ball a player cannot get before it leaves the field or the searched cycles. Tunable
+thresholds live in the ``*Params`` dataclasses, with their meaning and unit. Bad arguments
+raise :class:`SkillInputError` naming them.
+
+Timings of every call for a team of 11: ``python -m agents.skills.timing``
+(:mod:`agents.skills.timing`).
 """
 
 from agents.skills.clearing import ClearParams, ClearPlan, best_clearance

@@ -124,9 +124,11 @@ def _largest_speed(ux: float, uy: float, vx: float, vy: float, low: float, high:
         if disc < 0.0:
             break
         s = min(max(along + math.sqrt(disc), low), high)
-    cx, cy = s * ux - vx, s * uy - vy
-    if math.sqrt(cx * cx + cy * cy) <= kick_max * _effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder) + 1e-12:
-        return s
+    for nudge in (0.0, 1e-8):  # the boundary is met to rounding: step just inside it
+        t = max(s - nudge, low)
+        cx, cy = t * ux - vx, t * uy - vy
+        if math.sqrt(cx * cx + cy * cy) <= kick_max * _effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder):
+            return t
     high = s
     for _ in range(18):  # to within 2^-18 of the range (~1e-5 m/cycle)
         mid = 0.5 * (low + high)
