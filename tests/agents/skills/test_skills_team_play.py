@@ -7,6 +7,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 import numpy as np
+import pytest
 
 import soccer_sim
 from agents import skills
@@ -64,3 +65,15 @@ def test_a_team_of_skills_beats_the_chaser() -> None:
     assert ours >= 2 and ours > theirs
     assert result.statistics[0].shots >= ours
     assert team.actions.get("dribble", 0) > 0 and team.actions.get("pass", 0) > 0
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("opponent", ["chaser", "idle"])
+def test_a_team_of_skills_wins_full_matches(opponent) -> None:
+    team = SkillsOnlyTeam()
+    result = soccer_sim.run_match(team, opponent, seed=3)
+    ours, theirs = result.score
+    assert ours >= 5 and ours > theirs + 3
+    stats = result.statistics[0]
+    # Most passes the team decides on arrive (the lane check works under the simulator's noise).
+    assert stats.passes >= 0.5 * team.actions.get("pass", 0) > 0

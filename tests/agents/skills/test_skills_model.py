@@ -1,0 +1,51 @@
+"""The motion model's tables and helpers follow the configuration's numbers."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from agents.skills import MotionModel
+from soccer_sim import MatchConfig
+from soccer_sim.config import FieldConfig, PhysicsConfig
+from tests.agents.skills.skill_views import CONFIG, HL, ball_at
+
+MODEL = MotionModel(CONFIG)
+
+
+def test_ball_path_and_travel_follow_the_decay() -> None:
+    path = MODEL.ball_path(np.array([1.0, 2.0]), np.array([2.0, -1.0]), 30)
+    for k in (0, 1, 7, 30):
+        assert path[k] == pytest.approx(ball_at(CONFIG, (1.0, 2.0), (2.0, -1.0), k))
+    assert len(MODEL.ball_path(np.zeros(2), np.ones(2), 90)) == 91  # beyond the horizon too
+
+
+def test_ball_speed_and_cycles_are_inverse() -> None:
+    speed = MODEL.ball_speed_for(20.0, 0.8)
+    assert speed == pytest.approx(20.0 * 0.06 + 0.8)
+    cycles = float(MODEL.ball_cycles_to(20.0, speed))
+    assert np.linalg.norm(ball_at(CONFIG, (0, 0), (speed, 0), int(np.ceil(cycles)))) >= 20.0
+    assert np.linalg.norm(ball_at(CONFIG, (0, 0), (speed, 0), int(np.ceil(cycles)) - 1)) < 20.0
+    assert np.isinf(MODEL.ball_cycles_to(50.0, 2.0))  # 2 m/cycle rolls 33.3 m at most
+
+
+def test_every_number_comes_from_the_config() -> None:
+    physics = replace(PhysicsConfig(), dash_power_rate=0.004, player_decay=0.5, ball_decay=0.9)
+    field = replace(FieldConfig(), length=90.0, goal_width=10.0)
+    model = MotionModel(replace(MatchConfig(), physics=physics, field=field))
+    assert model.accel_max == pytest.approx(0.4)
+    assert model.top_speed == pytest.approx(0.8)
+    assert model.reach[1:3] == pytest.approx([0.4, 0.4 + 0.6])
+    assert model.ball_travel[2] == pytest.approx(1.9)
+    assert model.goal_centre(ours=True)[0] == -45.0 and model.goal_half_width == 5.0
+    assert model.sustainable_speed(1.0) == pytest.approx(45.0 * 0.004 / 0.5)
+
+
+def test_field_geometry_helpers() -> None:
+    assert MODEL.in_penalty_area(np.array([-HL + 10.0, 15.0]))
+    assert not MODEL.in_penalty_area(np.array([-HL + 10.0, 15.0]), ours=False)
+    assert MODEL.in_penalty_area(np.array([HL - 16.5, -20.16]), ours=False)  # lines included
+    assert not MODEL.in_field(np.array([HL + 0.1, 0.0]))
+    assert MODEL.clamp_to_field(np.array([[60.0, -40.0]]), 1.0).tolist() == [[HL - 1.0, -33.0]]
