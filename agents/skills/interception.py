@@ -99,7 +99,7 @@ def intercept(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, pos: n
     points = np.empty((1, n, 2))
     _intercept_kernel(ball, ball_vel, pos, vel, effort, radius, catch_radius,
                       model.reach, model.ball_travel, model.player_coast, _kernel_params(model, catch_side),
-                      _NO_LIMIT, cycles, points, _ALL)
+                      _NO_LIMITS, cycles, points, _ALL)
     row = cycles[0]
     first = int(row.argmin()) if n else -1
     first_cycle = int(row[first]) if n else UNREACHABLE
@@ -128,22 +128,10 @@ def intercept_many(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, p
     ball, ball_vel = _trajectories(ball, ball_vel, single=False)
     pos, vel, effort, radius, catch_radius = _players(model, pos, vel, effort, radius, catch_radius)
     count, n = ball_vel.shape[0], pos.shape[0]
-    if limit is None:
-        limits = np.full(count, -1, dtype=np.int64)
-    else:
-        limits = np.asarray(limit)
-        if limits.shape not in ((count,), ()) or not np.issubdtype(limits.dtype, np.integer):
-            raise SkillInputError(f"limit must be an integer or ({count},) integers, got {limits.dtype} {limits.shape}")
-        limits = np.ascontiguousarray(np.broadcast_to(limits, (count,)), dtype=np.int64)
+    limits = _NO_LIMITS if limit is None else _indices("limit", limit, count, None)
+    chosen = _ALL if only is None else _indices("only", only, count, n)
     cycles = np.empty((count, n), dtype=np.int64)
     points = np.empty((count, n, 2))
-    if only is None:
-        chosen = _ALL
-    else:
-        chosen = np.asarray(only)
-        if chosen.shape != (count,) or not np.issubdtype(chosen.dtype, np.integer) or np.any(chosen >= n):
-            raise SkillInputError(f"only must be ({count},) integer player indices below {n} (or -1 for all)")
-        chosen = np.ascontiguousarray(chosen, dtype=np.int64)
     _intercept_kernel(ball, ball_vel, pos, vel, effort, radius, catch_radius, model.reach, model.ball_travel,
                       model.player_coast, _kernel_params(model, catch_side, reaction, first_only), limits, cycles,
                       points, chosen)
@@ -165,8 +153,24 @@ def ball_race(model: MotionModel, view: object) -> BallRace:
     return BallRace(ours, theirs)
 
 
-_NO_LIMIT = np.full(1, -1, dtype=np.int64)
+_NO_LIMITS = np.full(0, -1, dtype=np.int64)  # empty: the kernel searches to the horizon
 _ALL = np.zeros(0, dtype=np.int64)
+_I64 = np.dtype(np.int64)
+
+
+def _indices(name: str, value: object, count: int, below: int | None) -> np.ndarray:
+    """``value`` as a C-contiguous int64 (count,) array (a scalar is repeated), each below
+    ``below`` when given, else a SkillInputError naming it."""
+    array = value if type(value) is np.ndarray else np.asarray(value)
+    if array.shape == ():
+        array = np.full(count, array)
+    if array.shape != (count,) or not np.issubdtype(array.dtype, np.integer):
+        raise SkillInputError(f"{name} must be an integer or ({count},) integers, got {array.dtype} {array.shape}")
+    if array.dtype != _I64 or not array.flags.c_contiguous:
+        array = np.ascontiguousarray(array, dtype=np.int64)
+    if below is not None and count and array.max() >= below:
+        raise SkillInputError(f"{name} holds player index {int(array.max())}, not below {below}")
+    return array
 
 
 def _trajectories(ball: object, ball_vel: object, single: bool) -> tuple[np.ndarray, np.ndarray]:
@@ -229,7 +233,8 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
     """See the module docstring. ``params``: half length, half width, top speed, catch side,
     |x| of the penalty area's front line, its half width, largest acceleration, speed limit,
     player decay, reaction delay (cycles), first-only flag (stop a trajectory at its first
-    interception; the later players get UNREACHABLE). ``limits[p] < 0``: the horizon.
+    interception; the later players get UNREACHABLE). ``limits[p] < 0`` (or ``limits``
+    empty): the horizon.
     ``only[p] >= 0``: search that player alone on trajectory p (the others get UNREACHABLE)."""
     half_length, half_width, top_speed, side = params[0], params[1], params[2], params[3]
     area_x, area_y, accel_max, speed_max, decay = params[4], params[5], params[6], params[7], params[8]
@@ -242,11 +247,12 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
     for p in range(ball_vel.shape[0]):
         b = 0 if ball.shape[0] == 1 else p
         bx0, by0, vx, vy = ball[b, 0], ball[b, 1], ball_vel[p, 0], ball_vel[p, 1]
-        last = horizon if limits[p] < 0 else min(limits[p], horizon)
+        bound = limits[p] if limits.shape[0] > 0 else -1
+        last = horizon if bound < 0 else min(bound, horizon)
         alone = only[p] if only.shape[0] > 0 else -1
         # Players who cannot get near the ball's whole path within `last` cycles are skipped
         # (-2) when the search ends at `last` anyway (first-only, or a limit within the horizon).
-        prune = first_only or (0 <= limits[p] <= horizon)
+        prune = first_only or (0 <= bound <= horizon)
         sx, sy = ball_travel[last] * vx, ball_travel[last] * vy
         seg = sx * sx + sy * sy
         remaining = 0
@@ -313,7 +319,7 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
                     points_out[p, i, 0] = bx
                     points_out[p, i, 1] = by
             continue
-        beyond = not left_field and k_end == horizon and (limits[p] < 0 or limits[p] > horizon)
+        beyond = not left_field and k_end == horizon and (bound < 0 or bound > horizon)
         for i in range(n):
             if cycles_out[p, i] >= 0:
                 continue
