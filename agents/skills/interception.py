@@ -81,6 +81,17 @@ def control_radii(model: MotionModel, goalie: int | None = None) -> tuple[np.nda
     return radius, catch
 
 
+def team_radii(model: MotionModel, extra: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`control_radii` (goalkeeper at the model's index) widened by ``extra``, made once
+    per model and margin (never written)."""
+    cache = model.__dict__.setdefault("_team_radii", {})
+    found = cache.get(extra)
+    if found is None:
+        radius, catch = control_radii(model, model.goalie_index)
+        found = cache[extra] = (radius + extra, catch + extra)
+    return found
+
+
 def intercept(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, vel: np.ndarray,
               effort: np.ndarray | None = None, radius: np.ndarray | None = None,
               catch_radius: np.ndarray | None = None, catch_side: float = -1.0) -> Interception:
@@ -94,12 +105,19 @@ def intercept(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, pos: n
     """
     ball, ball_vel = _trajectories(ball, ball_vel, single=True)
     pos, vel, effort, radius, catch_radius = _players(model, pos, vel, effort, radius, catch_radius)
+    return _intercept_checked(model, ball, ball_vel, pos, vel, effort, radius, catch_radius,
+                              _kernel_params(model, catch_side))
+
+
+def _intercept_checked(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, vel: np.ndarray,
+                       effort: np.ndarray, radius: np.ndarray, catch_radius: np.ndarray,
+                       params: np.ndarray) -> Interception:
+    """:func:`intercept` on arrays already checked (ball and ball_vel as (1, 2) rows)."""
     n = pos.shape[0]
     cycles = np.empty((1, n), dtype=np.int64)
     points = np.empty((1, n, 2))
-    _intercept_kernel(ball, ball_vel, pos, vel, effort, radius, catch_radius,
-                      model.reach, model.ball_travel, model.player_coast, _kernel_params(model, catch_side),
-                      _NO_LIMITS, cycles, points, _ALL)
+    _intercept_kernel(ball, ball_vel, pos, vel, effort, radius, catch_radius, model.reach, model.ball_travel,
+                      model.player_coast, params, _NO_LIMITS, cycles, points, _ALL)
     row = cycles[0]
     first = int(row.argmin()) if n else -1
     first_cycle = int(row[first]) if n else UNREACHABLE
@@ -145,11 +163,12 @@ def ball_race(model: MotionModel, view: object) -> BallRace:
     penalty area; the opponents are taken fresh (effort 1), their goalkeeper (same index as
     ours) catching in theirs.
     """
-    n = model.players_per_team
-    radius, our_catch = control_radii(model, model.goalie_index)
-    ours = intercept(model, view.ball, view.ball_vel, view.own_pos, view.own_vel, view_effort(view, n), radius,
-                     our_catch, -1.0)
-    theirs = intercept(model, view.ball, view.ball_vel, view.opp_pos, view.opp_vel, None, radius, our_catch, 1.0)
+    ball, ball_vel = _trajectories(view.ball, view.ball_vel, single=True)
+    radius, catch = team_radii(model)
+    own = _players(model, view.own_pos, view.own_vel, view_effort(view, model.players_per_team), radius, catch)
+    opp = _players(model, view.opp_pos, view.opp_vel, None, radius, catch)
+    ours = _intercept_checked(model, ball, ball_vel, *own, _kernel_params(model, -1.0))
+    theirs = _intercept_checked(model, ball, ball_vel, *opp, _kernel_params(model, 1.0))
     return BallRace(ours, theirs)
 
 

@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import njit
 
-from agents.skills.interception import UNREACHABLE, control_radii, intercept_many
+from agents.skills.interception import UNREACHABLE, intercept_many, team_radii
 from agents.skills.model import MotionModel, view_effort
 
 
@@ -37,7 +37,7 @@ def opponent_cycles(model: MotionModel, view: object, ball: np.ndarray, velociti
     -1 when nobody).
     """
     velocities = np.ascontiguousarray(velocities, dtype=np.float64).reshape(-1, 2)
-    radius, catch = _radii(model, extra_radius)
+    radius, catch = team_radii(model, extra_radius)
     cycles, _ = intercept_many(model, np.asarray(ball, np.float64), velocities, view.opp_pos, view.opp_vel, None, radius, catch, 1.0, limit,
                                reaction, first_only=True)
     if cycles.shape[1] == 0:
@@ -58,20 +58,9 @@ def teammate_cycles(model: MotionModel, view: object, ball: np.ndarray, velociti
     """
     velocities = np.ascontiguousarray(velocities, dtype=np.float64).reshape(-1, 2)
     n = model.players_per_team
-    radius, catch = _radii(model, 0.0)
+    radius, catch = team_radii(model, 0.0)
     return intercept_many(model, np.asarray(ball, np.float64), velocities, view.own_pos, view.own_vel, view_effort(view, n), radius,
                           catch, -1.0, limit, only=receivers)
-
-
-def _radii(model: MotionModel, extra: float) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`control_radii` (goalkeeper at the model's index) widened by ``extra``, made once
-    per model and margin (never written)."""
-    cache = model.__dict__.setdefault("_lane_radii", {})
-    found = cache.get(extra)
-    if found is None:
-        radius, catch = control_radii(model, model.goalie_index)
-        found = cache[extra] = (radius + extra, catch + extra)
-    return found
 
 
 def lane_open(model: MotionModel, view: object, ball: np.ndarray, velocity: np.ndarray, receiver: int,
