@@ -20,7 +20,7 @@ import numpy as np
 from agents.skills.interception import UNREACHABLE
 from agents.skills.kicking import kick_for_velocity
 from agents.skills.lanes import opponent_cycles, teammate_cycles
-from agents.skills.model import MotionModel, check_player
+from agents.skills.model import MotionModel, check_params, check_player
 
 
 @dataclass(frozen=True)
@@ -38,6 +38,10 @@ class ClearParams:
     weight_wing: float = 0.0
     """Preference for the wings (the goalkeeper's clearance raises it)."""
     weight_out: float = 0.8
+
+    def __post_init__(self) -> None:
+        check_params(self, non_negative=("spread_deg", "weight_ours", "weight_time", "weight_forward", "weight_wing",
+                                         "weight_out"), counts=("fan", "time_cap"))
 
 
 @dataclass(frozen=True)

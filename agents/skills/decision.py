@@ -28,7 +28,7 @@ import numpy as np
 from agents.skills.clearing import ClearParams, best_clearance
 from agents.skills.dribbling import DribbleParams, dribble
 from agents.skills.interception import intercept, team_radii
-from agents.skills.model import MotionModel, check_player
+from agents.skills.model import MotionModel, SkillInputError, check_params, check_player
 from agents.skills.passing import PassParams, best_pass
 from agents.skills.shooting import ShotParams, best_shot
 
@@ -58,6 +58,14 @@ class DecisionParams:
     passing: PassParams = field(default_factory=PassParams)
     dribbling: DribbleParams = field(default_factory=DribbleParams)
     clearing: ClearParams = field(default_factory=ClearParams)
+
+    def __post_init__(self) -> None:
+        check_params(self, non_negative=("dribble_clearance",), finite=("pass_good", "clear_line"),
+                     whole=("pressure_cycles",))
+        for name, kind in (("shot", ShotParams), ("passing", PassParams), ("dribbling", DribbleParams),
+                           ("clearing", ClearParams)):
+            if not isinstance(getattr(self, name), kind):
+                raise SkillInputError(f"DecisionParams.{name} must be a {kind.__name__}")
 
 
 @dataclass(frozen=True)

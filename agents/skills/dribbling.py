@@ -25,7 +25,7 @@ import numpy as np
 from numba import njit
 
 from agents.skills.kicking import kick_for_velocity, kickable
-from agents.skills.model import MotionModel, check_player, view_effort
+from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, view_effort
 
 
 @dataclass(frozen=True)
@@ -49,6 +49,17 @@ class DribbleParams:
     """Weight of heading towards the goal against clearance."""
     field_margin: float = 1.0
     """Directions whose farthest probe is not this far inside the lines are excluded (m)."""
+
+    def __post_init__(self) -> None:
+        check_params(self, positive=("clearance_cap",), non_negative=("spread_deg", "goal_weight", "field_margin"),
+                     counts=("fan",), fractions=("speed_fraction",))
+        probes = np.asarray(self.probes, dtype=float)
+        if probes.ndim != 1 or len(probes) == 0 or not (np.isfinite(probes) & (probes > 0)).all():
+            raise SkillInputError(f"DribbleParams.probes must be positive distances, got {self.probes!r}")
+        if self.speed_fraction <= 0:
+            raise SkillInputError("DribbleParams.speed_fraction must be positive")
+        if self.lead is not None and not (math.isfinite(self.lead) and self.lead > 0):
+            raise SkillInputError(f"DribbleParams.lead must be None or a positive distance, got {self.lead!r}")
 
 
 @dataclass(frozen=True)

@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from agents.skills.clearing import ClearParams, best_clearance
-from agents.skills.model import MotionModel, check_player, float_array
+from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, float_array
 from agents.skills.passing import PassParams, best_pass
 from soccer_sim.state import NO_PLAYER, PlayMode
 
@@ -47,6 +47,12 @@ class GoalieParams:
     """A held ball is passed when the best pass scores at least this, else cleared."""
     passing: PassParams = field(default_factory=lambda: PassParams(min_lead=3, min_distance=8.0))
     clearing: ClearParams = field(default_factory=lambda: ClearParams(weight_wing=0.6, weight_forward=0.3))
+
+    def __post_init__(self) -> None:
+        check_params(self, positive=("near", "far"), non_negative=("depth_far", "ball_gap", "catch_margin",
+                                                                   "pass_score"))
+        if self.near >= self.far:
+            raise SkillInputError(f"GoalieParams.near ({self.near}) must be smaller than far ({self.far})")
 
 
 def guard_position(model: MotionModel, ball: np.ndarray, params: GoalieParams = GoalieParams()) -> np.ndarray:

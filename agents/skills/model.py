@@ -210,3 +210,36 @@ def _dims_match(got: tuple[int, ...], shape: tuple[int, ...]) -> bool:
         if want != -1 and want != have:
             return False
     return True
+
+
+def check_params(owner: object, positive: tuple[str, ...] = (), non_negative: tuple[str, ...] = (),
+                 counts: tuple[str, ...] = (), fractions: tuple[str, ...] = (), finite: tuple[str, ...] = (),
+                 whole: tuple[str, ...] = ()) -> None:
+    """Check the named fields of a skill's parameter dataclass: ``positive`` and
+    ``non_negative`` finite numbers, ``finite`` numbers of any sign, ``fractions`` (within
+    [0, 1]), ``counts`` (integers >= 1), ``whole`` (integers >= 0); a SkillInputError names
+    the class, the field and the value."""
+    kind = type(owner).__name__
+
+    def fail(name: str, what: str) -> None:
+        raise SkillInputError(f"{kind}.{name} must be {what}, got {getattr(owner, name)!r}")
+
+    for name in positive + non_negative + fractions + finite:
+        value = getattr(owner, name)
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) \
+                or not math.isfinite(value):
+            fail(name, "a finite number")
+    for name in positive:
+        if getattr(owner, name) <= 0:
+            fail(name, "positive")
+    for name in non_negative:
+        if getattr(owner, name) < 0:
+            fail(name, "at least 0")
+    for name in fractions:
+        if not 0.0 <= getattr(owner, name) <= 1.0:
+            fail(name, "within [0, 1]")
+    for name in counts + whole:
+        value = getattr(owner, name)
+        least = 1 if name in counts else 0
+        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < least:
+            fail(name, f"an integer of at least {least}")

@@ -28,7 +28,7 @@ from numba import njit
 from agents.skills.interception import UNREACHABLE
 from agents.skills.kicking import kick_for_velocity
 from agents.skills.lanes import lane_arrivals, opponent_cycles, teammate_cycles
-from agents.skills.model import MotionModel, check_player, view_effort
+from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, view_effort
 
 
 @dataclass(frozen=True)
@@ -62,6 +62,20 @@ class PassParams:
     """Weight of the nearest opponent's distance to the reception point (per 10 m, capped at 1)."""
     weight_lead: float = 0.6
     """Weight of the receiver's lead over the opponents (per 10 cycles, capped at 1)."""
+
+    def __post_init__(self) -> None:
+        check_params(self, positive=("min_distance", "max_distance", "field_margin"),
+                     non_negative=("opponent_margin", "weight_forward", "weight_goal", "weight_space", "weight_lead"),
+                     whole=("min_lead", "extra_cycles"))
+        leads = np.asarray(self.leads, dtype=float)
+        if leads.ndim != 2 or leads.shape[1] != 2 or len(leads) == 0 or not np.isfinite(leads).all():
+            raise SkillInputError(f"PassParams.leads must be a non-empty sequence of (x, y) offsets, got {self.leads!r}")
+        speeds = np.asarray(self.arrival_speeds, dtype=float)
+        if speeds.ndim != 1 or len(speeds) == 0 or not (np.isfinite(speeds) & (speeds > 0)).all():
+            raise SkillInputError(f"PassParams.arrival_speeds must be positive speeds, got {self.arrival_speeds!r}")
+        if self.min_distance > self.max_distance:
+            raise SkillInputError("PassParams.min_distance must not exceed max_distance")
+
 
 
 @dataclass(frozen=True)
@@ -123,7 +137,8 @@ def best_pass(model: MotionModel, view: object, passer: int, params: PassParams 
     size = receivers.size * len(params.leads) * len(params.arrival_speeds)
     targets, wanted = np.empty((size, 2)), np.empty((size, 2))
     owners = np.empty(size, dtype=np.int64)
-    count = _pass_targets(view.own_pos, receivers, _as_array(params.leads), _as_array(params.arrival_speeds), ball,
+    leads = np.asarray(params.leads, dtype=np.float64).reshape(-1, 2)
+    count = _pass_targets(view.own_pos, receivers, leads, np.asarray(params.arrival_speeds, dtype=np.float64), ball,
                           model.half_length - params.field_margin, model.half_width - params.field_margin,
                           params.min_distance, params.max_distance, model.ball_decay, targets, owners, wanted)
     if count == 0:
@@ -155,11 +170,6 @@ def best_pass(model: MotionModel, view: object, passer: int, params: PassParams 
     return PassPlan(receiver=int(owners[j]), target=targets[j].copy(), receive_point=points[best].copy(),
                     kick=kicks[j].copy(), ball_vel=velocities[j].copy(), arrival_cycle=int(arrival[j]),
                     receive_cycle=int(receive[best]), opponent_cycle=int(theirs[best]), score=float(score[best]))
-
-
-def _as_array(values: tuple) -> np.ndarray:
-    return np.asarray(values, dtype=np.float64).reshape(len(values), -1) if values and isinstance(values[0], tuple) \
-        else np.asarray(values, dtype=np.float64)
 
 
 @njit(cache=True, nogil=True)

@@ -30,7 +30,7 @@ import numpy as np
 from agents.skills.interception import UNREACHABLE
 from agents.skills.kicking import kick_for_velocity
 from agents.skills.lanes import lane_arrivals, opponent_cycles
-from agents.skills.model import MotionModel, check_player
+from agents.skills.model import MotionModel, check_params, check_player
 
 
 @dataclass(frozen=True)
@@ -51,6 +51,10 @@ class ShotParams:
     """Extra control distance given to opponents (m), for noise."""
     threshold: float = 0.5
     """Shoot when the best aim's score is at least this."""
+
+    def __post_init__(self) -> None:
+        check_params(self, positive=("max_range", "lead_scale"), non_negative=("post_margin", "opponent_margin"),
+                     counts=("aims",), fractions=("threshold",), finite=("lead_half",))
 
 
 @dataclass(frozen=True)

@@ -7,12 +7,19 @@ import numpy as np
 import pytest
 
 from agents.skills import (
+    ClearParams,
+    DecisionParams,
+    DribbleParams,
+    GoalieParams,
     MotionModel,
+    PassParams,
+    ShotParams,
     SkillInputError,
     dash_to_points,
     dribble,
     guard_position,
     intercept,
+    best_shot,
     intercept_many,
     kick_for_velocity,
 )
@@ -78,6 +85,23 @@ def test_player_indices_are_checked() -> None:
         best_pass(MODEL, view, 11)
     with pytest.raises(SkillInputError, match="player must be an integer"):
         dribble(MODEL, view, 2.0)
-    from agents.skills import best_shot
     with pytest.raises(SkillInputError, match="shooter index -1"):
         best_shot(MODEL, view, -1)
+
+
+@pytest.mark.parametrize("make, message", [
+    (lambda: PassParams(min_distance=-1.0), "PassParams.min_distance"),
+    (lambda: PassParams(leads=((1.0,),)), "PassParams.leads"),
+    (lambda: PassParams(min_lead=1.5), "PassParams.min_lead"),
+    (lambda: ShotParams(threshold=2.0), "ShotParams.threshold"),
+    (lambda: ShotParams(aims=0), "ShotParams.aims"),
+    (lambda: DribbleParams(probes=()), "DribbleParams.probes"),
+    (lambda: ClearParams(fan=True), "ClearParams.fan"),
+    (lambda: GoalieParams(near=50.0), "GoalieParams.near"),
+    (lambda: DecisionParams(pass_good=float("nan")),
+     "DecisionParams.pass_good"),
+    (lambda: DecisionParams(shot=None), "DecisionParams.shot"),
+])
+def test_bad_parameters_are_named(make, message) -> None:
+    with pytest.raises(SkillInputError, match=message.replace(".", r"\.")):
+        make()
