@@ -7,8 +7,12 @@ kickable distance, or the catch length for a goalkeeper inside its penalty area)
 the player can reach in ``k`` cycles: centred where it would coast to from its current
 velocity, of radius ``reach(k) * effort``; and, since the speed limit caps what a player
 already running fast can add, no further from where it stands than it can run in ``k``
-cycles flat out along its current direction of motion (its speed clipped each cycle). Cycle
-0 means the ball is under control now.
+cycles flat out along its current direction of motion (its speed clipped each cycle). A
+ball also stops against a body (rcssserver's contact rule), so a player whose disc comes
+within the touch distance (player + ball radius) of the ball's path *during* cycle ``k`` (the
+segment between its positions after ``k - 1`` and ``k`` cycles; a fast ball moves up to 3 m
+in a cycle) reaches it at cycle ``k`` too, at the nearest point of that segment. Cycle 0
+means the ball is under control now.
 
 The search is one compiled loop over trajectories, cycles and players with an early exit,
 so all players of a team against one ball cost a few microseconds, and the same kernel
@@ -239,7 +243,7 @@ def _kernel_params(model: MotionModel, catch_side: float, reaction: int = 0, fir
         params = np.array([model.half_length, model.half_width, model.top_speed, catch_side,
                            model.half_length - model.penalty_area_length, model.penalty_area_half_width,
                            model.accel_max, model.speed_max, model.player_decay, float(reaction),
-                           1.0 if first_only else 0.0])
+                           1.0 if first_only else 0.0, model.touch_distance])
         cached[key] = params
     return params
 
@@ -252,13 +256,14 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
     """See the module docstring. ``params``: half length, half width, top speed, catch side,
     |x| of the penalty area's front line, its half width, largest acceleration, speed limit,
     player decay, reaction delay (cycles), first-only flag (stop a trajectory at its first
-    interception; the later players get UNREACHABLE). ``limits[p] < 0`` (or ``limits``
+    interception; the later players get UNREACHABLE), body contact distance. ``limits[p] < 0`` (or ``limits``
     empty): the horizon.
     ``only[p] >= 0``: search that player alone on trajectory p (the others get UNREACHABLE)."""
     half_length, half_width, top_speed, side = params[0], params[1], params[2], params[3]
     area_x, area_y, accel_max, speed_max, decay = params[4], params[5], params[6], params[7], params[8]
     delay = int(params[9])
     first_only = params[10] > 0.5
+    body = params[11]
     horizon = reach.shape[0] - 1
     n = pos.shape[0]
     run = np.empty(n)  # furthest straight-line run so far, per player
@@ -272,8 +277,8 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
         # Players who cannot get near the ball's whole path within `last` cycles are skipped
         # (-2) when the search ends at `last` anyway (first-only, or a limit within the horizon).
         prune = first_only or (0 <= bound <= horizon)
-        sx, sy = ball_travel[last] * vx, ball_travel[last] * vy
-        seg = sx * sx + sy * sy
+        wx, wy = ball_travel[last] * vx, ball_travel[last] * vy
+        whole = wx * wx + wy * wy
         remaining = 0
         for i in range(n):
             run[i] = 0.0
@@ -283,8 +288,8 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
                 remaining += 1
                 if prune:
                     qx, qy = pos[i, 0] - bx0, pos[i, 1] - by0
-                    t = min(max((qx * sx + qy * sy) / seg, 0.0), 1.0) if seg > 0.0 else 0.0
-                    gap = math.sqrt((qx - t * sx) ** 2 + (qy - t * sy) ** 2)
+                    t = min(max((qx * wx + qy * wy) / whole, 0.0), 1.0) if whole > 0.0 else 0.0
+                    gap = math.sqrt((qx - t * wx) ** 2 + (qy - t * wy) ** 2)
                     grow = reach[last - delay] * effort[i] if last > delay else 0.0
                     if gap > coast[last] * speed[i] + grow + max(radius[i], catch_radius[i]):
                         cycles_out[p, i] = -2
@@ -304,9 +309,12 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
             if abs(tx) > half_length or abs(ty) > half_width:
                 left_field = True
                 break
+            px, py = bx, by  # where the ball was a cycle ago
             bx, by = tx, ty
             k_end = k
             in_area = side * tx >= area_x and abs(ty) <= area_y
+            sx, sy = tx - px, ty - py
+            seg = sx * sx + sy * sy
             for i in range(lo, hi):
                 if cycles_out[p, i] != -1:
                     continue
@@ -323,10 +331,18 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
                 dx, dy = tx - cx, ty - cy
                 ex, ey = tx - pos[i, 0], ty - pos[i, 1]
                 grow = reach[k - delay] * effort[i] if k > delay else 0.0
-                if dx * dx + dy * dy <= (grow + r) ** 2 and ex * ex + ey * ey <= (run[i] + r) ** 2:
+                hit = dx * dx + dy * dy <= (grow + r) ** 2 and ex * ex + ey * ey <= (run[i] + r) ** 2
+                qx, qy = tx, ty
+                if not hit and seg > 0.0:
+                    # The ball may run into the body somewhere along this cycle's path.
+                    t = min(max(((cx - px) * sx + (cy - py) * sy) / seg, 0.0), 1.0)
+                    qx, qy = px + t * sx, py + t * sy
+                    hit = (qx - cx) ** 2 + (qy - cy) ** 2 <= (grow + body) ** 2 and \
+                        (qx - pos[i, 0]) ** 2 + (qy - pos[i, 1]) ** 2 <= (run[i] + body) ** 2
+                if hit:
                     cycles_out[p, i] = k
-                    points_out[p, i, 0] = tx
-                    points_out[p, i, 1] = ty
+                    points_out[p, i, 0] = qx
+                    points_out[p, i, 1] = qy
                     remaining -= 1
                     found = True
             if remaining == 0 or (found and first_only):

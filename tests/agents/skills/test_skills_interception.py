@@ -7,20 +7,31 @@ import numpy as np
 import pytest
 
 from agents.skills import UNREACHABLE, MotionModel, ball_race, intercept, intercept_many
-from tests.agents.skills.skill_views import CONFIG, HW, ball_at, make_view, run_straight
+from tests.agents.skills.skill_views import CONFIG, HW, ball_at, make_view, roll_player, run_straight
 
 MODEL = MotionModel(CONFIG)
 KICKABLE = CONFIG.physics.kickable_distance
+TOUCH = CONFIG.physics.player_radius + CONFIG.physics.ball_radius
 
 
 def first_reach_by_hand(pos, vel, ball, ball_vel, effort=1.0, limit=60) -> int:
-    """The first cycle k at which a player running flat out at the ball's position at k ends
-    within the kickable distance of it (the model rolled forward by hand)."""
+    """The first cycle k at which a player running flat out ends within the kickable distance
+    of the ball's position at k, or within the touch distance of the ball's path during
+    cycle k (the ball stops against a body): the model rolled forward by hand."""
     for k in range(limit + 1):
         target = ball_at(CONFIG, ball, ball_vel, k)
         end = run_straight(CONFIG, pos, vel, target, k, effort)
         if np.hypot(*(end - target)) <= KICKABLE + 1e-9:
             return k
+        if k > 0:
+            before = ball_at(CONFIG, ball, ball_vel, k - 1)
+            coast = roll_player(CONFIG, pos, vel, (0.0, 0.0), k)
+            path = target - before
+            t = np.clip((coast - before) @ path / (path @ path), 0.0, 1.0) if path @ path > 0 else 0.0
+            nearest = before + t * path
+            end = run_straight(CONFIG, pos, vel, nearest, k, effort)
+            if np.hypot(*(end - nearest)) <= TOUCH + 1e-9:
+                return k
     return UNREACHABLE
 
 
@@ -141,3 +152,17 @@ def test_first_only_and_pruned_searches_agree_with_the_full_one() -> None:
     mask = np.ones_like(alone, dtype=bool)
     mask[rows, one] = False
     assert np.all(alone[mask] == UNREACHABLE)
+
+
+def test_a_fast_ball_is_stopped_by_a_body_in_its_path() -> None:
+    # An opponent who has not reacted yet (reaction 1) stands 0.3 m beside the path of a ball
+    # that jumps 3 m in the first cycle: the ball never ends a cycle within its kickable
+    # distance (3.0 is 1.53 m away, and the ball is long gone when it could run), but it runs
+    # into the body on the way.
+    cycles, points = intercept_many(MODEL, np.zeros(2), np.array([[3.0, 0.0]]), np.array([[1.5, 0.3]]),
+                                    np.zeros((1, 2)), reaction=1)
+    assert cycles[0, 0] == 1
+    assert points[0, 0] == pytest.approx([1.5, 0.0])  # the nearest point of the first cycle's path
+    cycles, _ = intercept_many(MODEL, np.zeros(2), np.array([[3.0, 0.0]]), np.array([[1.5, 0.6]]),
+                               np.zeros((1, 2)), reaction=1)
+    assert cycles[0, 0] > 1  # 0.6 m away: beyond the touch distance (0.385 m)
