@@ -9,7 +9,7 @@ per match (e.g. in ``Team.reset``)::
     from agents import skills
 
     model = skills.MotionModel(config)                       # horizon=60 cycles by default
-    race = skills.ball_race(model, view)                     # who gets to the ball, when, where
+    race = skills.ball_race(model, view, eligible=~offside)  # who gets to the ball, when, where
     race.ours.first, race.ours.first_cycle, race.ours.points[race.ours.first]
     race.we_win, race.lead
 

@@ -160,20 +160,36 @@ def intercept_many(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, p
     return cycles, points
 
 
-def ball_race(model: MotionModel, view: object) -> BallRace:
+def ball_race(model: MotionModel, view: object, eligible: np.ndarray | None = None) -> BallRace:
     """Interceptions of the view's ball by our players and by the opponents.
 
     Our players use the view's effort (ones when absent) and our goalkeeper catches in our
     penalty area; the opponents are taken fresh (effort 1), their goalkeeper (same index as
-    ours) catching in theirs.
+    ours) catching in theirs. ``eligible`` ((n,) bool, None: all) leaves out our players who
+    must not play the ball, e.g. those in an offside position when a team-mate last kicked
+    (:func:`agents.skills.offside_positions`): their cycle is UNREACHABLE and they are never
+    ``first``.
     """
     ball, ball_vel = _trajectories(view.ball, view.ball_vel, single=True)
     radius, catch = team_radii(model)
     own = _players(model, view.own_pos, view.own_vel, view_effort(view, model.players_per_team), radius, catch)
     opp = _players(model, view.opp_pos, view.opp_vel, None, radius, catch)
     ours = _intercept_checked(model, ball, ball_vel, *own, _kernel_params(model, -1.0))
+    if eligible is not None:
+        ours = _only_eligible(ours, eligible)
     theirs = _intercept_checked(model, ball, ball_vel, *opp, _kernel_params(model, 1.0))
     return BallRace(ours, theirs)
+
+
+def _only_eligible(result: Interception, eligible: np.ndarray) -> Interception:
+    """``result`` with the players not ``eligible`` made UNREACHABLE (and ``first`` redone)."""
+    mask = np.asarray(eligible)
+    if mask.shape != result.cycles.shape or mask.dtype != np.bool_:
+        raise SkillInputError(f"eligible must be a ({len(result.cycles)},) bool array, got {mask.dtype} {mask.shape}")
+    cycles = np.where(mask, result.cycles, UNREACHABLE)
+    first = int(cycles.argmin()) if len(cycles) else -1
+    first_cycle = int(cycles[first]) if len(cycles) else UNREACHABLE
+    return Interception(cycles, result.points, first if first_cycle < UNREACHABLE else -1, first_cycle)
 
 
 _NO_LIMITS = np.full(0, -1, dtype=np.int64)  # empty: the kernel searches to the horizon

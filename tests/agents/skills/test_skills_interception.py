@@ -166,3 +166,14 @@ def test_a_fast_ball_is_stopped_by_a_body_in_its_path() -> None:
     cycles, _ = intercept_many(MODEL, np.zeros(2), np.array([[3.0, 0.0]]), np.array([[1.5, 0.6]]),
                                np.zeros((1, 2)), reaction=1)
     assert cycles[0, 0] > 1  # 0.6 m away: beyond the touch distance (0.385 m)
+
+
+def test_players_left_out_of_the_race_never_win_it() -> None:
+    view = make_view(own={5: (3.0, 1.0), 6: (8.0, 0.0)}, ball=(0.0, 0.0), ball_vel=(1.0, 0.0))
+    assert ball_race(MODEL, view).ours.first == 5
+    eligible = np.ones(11, dtype=bool)
+    eligible[5] = False  # e.g. offside when the pass was made
+    race = ball_race(MODEL, view, eligible)
+    assert race.ours.first == 6 and race.ours.cycles[5] == UNREACHABLE
+    with pytest.raises(ValueError, match="eligible"):
+        ball_race(MODEL, view, np.ones(3, dtype=bool))
