@@ -14,9 +14,11 @@ segment between its positions after ``k - 1`` and ``k`` cycles; a fast ball move
 in a cycle) reaches it at cycle ``k`` too, at the nearest point of that segment. Cycle 0
 means the ball is under control now.
 
-The search is one compiled loop over trajectories, cycles and players with an early exit,
-so all players of a team against one ball cost a few microseconds, and the same kernel
-checks many pass or shot trajectories at once (:func:`intercept_many`).
+The search is one compiled loop over trajectories, cycles and players with an early exit
+(and, when the search ends at a cycle limit anyway, players who cannot get near the ball's
+whole path in time are skipped), so all players of a team against one ball cost a few
+microseconds, and the same kernel checks many pass or shot trajectories at once
+(:func:`intercept_many`).
 
 When a player cannot get there within the horizon although the ball is still on the field,
 its cycle is estimated beyond the horizon (the ball at rest where the horizon leaves it,

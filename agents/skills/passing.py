@@ -9,12 +9,15 @@ at what one kick from where the passer stands can give (:func:`kick_for_velocity
 is **safe** when the receiver controls the ball on that trajectory at least ``min_lead``
 cycles before any opponent could (:mod:`agents.skills.lanes`).
 
-Safe passes are scored at the point where the receiver is predicted to take the ball (the
-target when it can run there in time and no opponent gets to the ball first; else where it
-can first meet the ball; the
-weights of :class:`PassParams`): further forward, closer to the opponents' goal, in open
-space (distance from the nearest opponent) and with a comfortable lead over the opponents;
-the best one is returned.
+Safe passes are scored at the point where the receiver is predicted to take the ball: the
+target when it can run there in time and no opponent gets to the ball first, else where it
+can first meet the ball. With the weights of :class:`PassParams` the score rewards a point
+further forward, closer to the opponents' goal, in open space (distance from the nearest
+opponent) and a comfortable lead over the opponents; the best pass is returned.
+
+A team-mate in an offside position is never a receiver; one who touches the ball on its way
+is penalised by the referee too, so the team should keep such players out of the chase
+(``ball_race(..., eligible=...)``).
 """
 
 from __future__ import annotations
