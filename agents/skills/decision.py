@@ -82,7 +82,8 @@ class BallDecision:
     """Cycles until the fastest opponent controls the ball."""
 
 
-def decide_on_ball(model: MotionModel, view: object, player: int, params: DecisionParams = DecisionParams()) -> BallDecision:
+def decide_on_ball(model: MotionModel, view: object, player: int,
+                   params: DecisionParams = DecisionParams()) -> BallDecision:
     """Choose what ``player`` (who can kick the ball) does with it this cycle."""
     player = check_player(player, model.players_per_team)
     holder = view.ball_holder == player

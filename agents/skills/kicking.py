@@ -15,9 +15,10 @@ effectiveness. The ball's speed is then clipped to ``ball_speed_max``.
 request is that change divided by the effectiveness of its direction. When the change is
 larger than one kick allows, it keeps the desired *direction* and gives the largest speed
 along it that one kick can reach (the effectiveness depends on the kick's direction, so a
-few rounds of solving a quadratic, checked, with bisection as the fallback); when no speed along the desired direction is reachable (a fast
-ball would have to be turned round), it kicks at full power towards the point of the desired
-ray closest to the ball's current velocity.
+few rounds of solving a quadratic, checked, with bisection as the fallback); when no speed
+along the desired direction is reachable (a fast ball would have to be turned round), it
+kicks at full power towards the point of the desired ray closest to the ball's current
+velocity.
 """
 
 from __future__ import annotations

@@ -19,7 +19,7 @@ import numpy as np
 from numba import njit
 
 from agents.skills.interception import UNREACHABLE, intercept_many, team_radii
-from agents.skills.model import MotionModel, view_effort
+from agents.skills.model import MotionModel, check_player, view_effort
 
 
 def opponent_cycles(model: MotionModel, view: object, ball: np.ndarray, velocities: np.ndarray,
@@ -38,8 +38,8 @@ def opponent_cycles(model: MotionModel, view: object, ball: np.ndarray, velociti
     """
     velocities = np.ascontiguousarray(velocities, dtype=np.float64).reshape(-1, 2)
     radius, catch = team_radii(model, extra_radius)
-    cycles, _ = intercept_many(model, np.asarray(ball, np.float64), velocities, view.opp_pos, view.opp_vel, None, radius, catch, 1.0, limit,
-                               reaction, first_only=True)
+    cycles, _ = intercept_many(model, np.asarray(ball, np.float64), velocities, view.opp_pos, view.opp_vel, None,
+                               radius, catch, 1.0, limit, reaction, first_only=True)
     if cycles.shape[1] == 0:
         return np.full(len(velocities), UNREACHABLE, dtype=np.int64), np.full(len(velocities), -1, dtype=np.int64)
     who = np.argmin(cycles, axis=1)
@@ -49,7 +49,8 @@ def opponent_cycles(model: MotionModel, view: object, ball: np.ndarray, velociti
 
 
 def teammate_cycles(model: MotionModel, view: object, ball: np.ndarray, velocities: np.ndarray,
-                    limit: np.ndarray | None = None, receivers: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+                    limit: np.ndarray | None = None,
+                    receivers: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Each of our players' interception cycle and point on each lane: ((P, n) int, (P, n, 2)).
 
     ``receivers`` (P,) int: search only that team-mate on each lane (the others get
@@ -59,14 +60,15 @@ def teammate_cycles(model: MotionModel, view: object, ball: np.ndarray, velociti
     velocities = np.ascontiguousarray(velocities, dtype=np.float64).reshape(-1, 2)
     n = model.players_per_team
     radius, catch = team_radii(model, 0.0)
-    return intercept_many(model, np.asarray(ball, np.float64), velocities, view.own_pos, view.own_vel, view_effort(view, n), radius,
-                          catch, -1.0, limit, only=receivers)
+    return intercept_many(model, np.asarray(ball, np.float64), velocities, view.own_pos, view.own_vel,
+                          view_effort(view, n), radius, catch, -1.0, limit, only=receivers)
 
 
 def lane_open(model: MotionModel, view: object, ball: np.ndarray, velocity: np.ndarray, receiver: int,
               min_lead: int = 1, extra_radius: float = 0.0) -> bool:
     """True when our ``receiver`` controls the ball kicked to ``velocity`` (2,) at least
     ``min_lead`` cycles before any opponent can (and can control it at all)."""
+    receiver = check_player(receiver, model.players_per_team, "receiver")
     velocity = np.asarray(velocity, np.float64).reshape(1, 2)
     ours, _ = teammate_cycles(model, view, ball, velocity, None, np.array([receiver]))
     theirs, _ = opponent_cycles(model, view, ball, velocity, None, extra_radius)

@@ -142,7 +142,8 @@ class MotionModel:
     def in_field(self, points: np.ndarray, margin: float = 0.0) -> np.ndarray:
         """Bool per point: inside the lines shrunk by ``margin`` (m)."""
         points = np.asarray(points, float)
-        return (np.abs(points[..., 0]) <= self.half_length - margin) & (np.abs(points[..., 1]) <= self.half_width - margin)
+        return (np.abs(points[..., 0]) <= self.half_length - margin) & \
+            (np.abs(points[..., 1]) <= self.half_width - margin)
 
     def clamp_to_field(self, points: np.ndarray, margin: float = 0.0) -> np.ndarray:
         """Points moved inside the lines shrunk by ``margin`` (m)."""

@@ -72,7 +72,8 @@ class PassParams:
                      whole=("min_lead", "extra_cycles"))
         leads = np.asarray(self.leads, dtype=float)
         if leads.ndim != 2 or leads.shape[1] != 2 or len(leads) == 0 or not np.isfinite(leads).all():
-            raise SkillInputError(f"PassParams.leads must be a non-empty sequence of (x, y) offsets, got {self.leads!r}")
+            raise SkillInputError(f"PassParams.leads must be a non-empty sequence of (x, y) offsets, "
+                                  f"got {self.leads!r}")
         speeds = np.asarray(self.arrival_speeds, dtype=float)
         if speeds.ndim != 1 or len(speeds) == 0 or not (np.isfinite(speeds) & (speeds > 0)).all():
             raise SkillInputError(f"PassParams.arrival_speeds must be positive speeds, got {self.arrival_speeds!r}")

@@ -107,7 +107,8 @@ def test_best_direction_preserving_kick_matches_a_fine_scan() -> None:
         unit = desired / np.linalg.norm(desired)
         speeds = np.linspace(0.0, min(np.linalg.norm(desired), PHYS.ball_speed_max), 3001)
         changes = speeds[:, None] * unit - ball_vel
-        feasible = np.linalg.norm(changes, axis=1) <= PHYS.kick_speed_max * kick_effectiveness(MODEL, player, ball, changes) + 1e-12
+        limits = PHYS.kick_speed_max * kick_effectiveness(MODEL, player, ball, changes)
+        feasible = np.linalg.norm(changes, axis=1) <= limits + 1e-12
         if not feasible.any():
             continue  # nothing along the direction: the full-power fallback
         assert result @ unit >= speeds[feasible].max() - 2e-3
