@@ -5,7 +5,8 @@
 the angle a shooter sees): ``depth_far`` when the ball is ``far`` or more from the goal
 centre, rising linearly to the goal area's depth when it is ``near`` or closer. The point is
 then pulled back along the same segment until it lies inside the goal area, and never beyond
-``ball_gap`` short of the ball, so it always stays on the ball-goal line.
+``ball_gap`` short of the ball, so it always stays on the ball-goal line (a ball behind the
+goal line, out of play, puts it on the goal line on the ball's side).
 
 **Catch.** Ask for a catch only when the referee would grant it (``RuleConfig``): play on,
 nobody holding, goalkeeper and ball both in our penalty area, centres at most
@@ -64,6 +65,8 @@ def guard_position(model: MotionModel, ball: np.ndarray, params: GoalieParams = 
     if dist < 1e-9:
         return np.array([gx, 0.0])
     ux, uy = dx / dist, dy / dist
+    if ux < 0.0:  # a ball behind our goal line (out of play): stay on the line, on its side
+        ux, uy = 0.0, (1.0 if uy >= 0.0 else -1.0)
     share = min(max((params.far - dist) / max(params.far - params.near, 1e-9), 0.0), 1.0)
     depth = params.depth_far + share * (model.goal_area_length - params.depth_far)
     if ux > 1e-9:

@@ -82,3 +82,8 @@ def test_with_every_team_mate_marked_the_goalkeeper_clears_to_a_wing() -> None:
     # A holder kicks at full strength: the ball leaves at the speed limit.
     assert np.linalg.norm(result.plan.ball_vel) == pytest.approx(min(CONFIG.physics.kick_speed_max,
                                                                      CONFIG.physics.ball_speed_max), abs=1e-4)
+
+
+def test_ball_behind_the_goal_line_keeps_the_goalkeeper_on_its_line() -> None:
+    point = guard_position(MODEL, np.array([-HL - 2.0, 6.0]))
+    assert point[0] == pytest.approx(-HL) and 0.0 < point[1] <= FIELD.goal_area_width / 2
