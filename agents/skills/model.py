@@ -91,6 +91,8 @@ class MotionModel:
         """Stamina below which recovery and effort start falling for good (see StaminaConfig)."""
         self.recovery_per_cycle = float(stam.recovery_per_cycle)
         self.dash_power_rate = float(phys.dash_power_rate)
+        self.jog_speed = float(self.sustainable_speed(1.0))
+        """Sustainable speed of a fresh player (m/cycle); ``jog_speed * effort`` for others."""
 
     def _reach_table(self, horizon: int) -> np.ndarray:
         table = np.zeros(horizon + 1)

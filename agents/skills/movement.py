@@ -66,16 +66,14 @@ def speed_caps(model: MotionModel, view: object, urgent: np.ndarray | bool = Fal
     level under which recovery and effort begin to fall (StaminaConfig); otherwise it runs at
     its sustainable speed, which its recovery pays for, so stamina never drains.
     """
-    n = model.players_per_team
-    effort = view_effort(view, n)
-    top = model.top_speed * effort
-    jog = model.sustainable_speed(effort)
-    hurry = np.asarray(urgent, bool)
+    hurry = urgent if isinstance(urgent, np.ndarray) and urgent.dtype == np.bool_ else np.asarray(urgent, bool)
     if near is not None:
         gap = view.own_pos - view.ball
         hurry = hurry | (np.einsum("ij,ij->i", gap, gap) <= near * near)
-    fresh = np.asarray(view.stamina, float) > model.stamina_low + stamina_reserve * model.stamina_max
-    return np.where(hurry & fresh, top, jog)
+    fresh = view.stamina > model.stamina_low + stamina_reserve * model.stamina_max
+    # Both speeds are proportional to the effort (see MotionModel.sustainable_speed).
+    pace = np.where(hurry & fresh, model.top_speed, model.jog_speed)
+    return pace * view_effort(view, model.players_per_team)
 
 
 _ONES: dict[int, np.ndarray] = {}
