@@ -1,0 +1,82 @@
+"""The built-in teams by name (entry points of the group ``soccer_sim.teams``).
+
+* The **assigner variants** (``mmdr``, ``mmd+msd2``, ``static``, ``greedy``,
+  ``greedy-offense``, ``bidding``, ``msd``, ``msd2``, ``random``) are one team, a 4-3-3 with
+  the default style, that differ only in their role assigner: the experiments compare them.
+* ``statues``: the same team whose outfield players never leave their kick-off spots (they
+  kick a ball that comes to them); the baseline that says whether positioning matters.
+* Three **reference opponents** with their own formations and styles:
+  ``counter-442`` (a deep, compact 4-4-2 that clears long and counter-attacks),
+  ``press-433`` (a high 4-3-3 that hunts the ball with two players) and ``possession``
+  (a 4-3-3 that keeps the ball with short passes and shoots only from close in).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from dataclasses import replace
+
+from agents.skills import PassParams, ShotParams
+from agents.teams.formation_team import ATTACKING_DECISIONS, FormationTeam, TeamStyle
+
+ASSIGNER_VARIANTS: tuple[str, ...] = (
+    "mmdr", "mmd+msd2", "static", "greedy", "greedy-offense", "bidding", "msd", "msd2", "random",
+)
+"""Team names that are the built-in team with that role assigner."""
+
+COUNTER_442 = TeamStyle(
+    system="4-4-2", depth=-6.0, pressers=1,
+    decision=replace(ATTACKING_DECISIONS, pass_good=1.0, dribble_clearance=2.0, clear_line=-0.1,
+                     passing=PassParams(weight_forward=1.6, weight_space=0.4, max_distance=45.0)),
+)
+PRESS_433 = TeamStyle(
+    system="4-3-3", depth=6.0, pressers=2,
+    decision=replace(ATTACKING_DECISIONS, pass_good=1.1, pressure_cycles=4),
+)
+POSSESSION = TeamStyle(
+    system="4-3-3", depth=0.0, pressers=1,
+    decision=replace(ATTACKING_DECISIONS, pass_good=0.8, dribble_clearance=3.0,
+                     passing=PassParams(weight_forward=0.6, weight_space=1.0, max_distance=25.0),
+                     shot=replace(ATTACKING_DECISIONS.shot, max_range=22.0)),
+)
+
+
+def _variant(assigner: str) -> Callable[[], FormationTeam]:
+    def make() -> FormationTeam:
+        return FormationTeam(assigner)
+
+    make.__name__ = make.__qualname__ = f"{assigner.replace('+', '_').replace('-', '_')}_team"
+    make.__doc__ = f"The built-in team with the {assigner!r} role assigner."
+    return make
+
+
+mmdr_team = _variant("mmdr")
+mmd_msd2_team = _variant("mmd+msd2")
+static_team = _variant("static")
+greedy_team = _variant("greedy")
+greedy_offense_team = _variant("greedy-offense")
+bidding_team = _variant("bidding")
+msd_team = _variant("msd")
+msd2_team = _variant("msd2")
+random_team = _variant("random")
+
+
+def statues_team() -> FormationTeam:
+    """Outfield players hold their kick-off spots (goalkeeper and skills as usual)."""
+    return FormationTeam("static", TeamStyle(stationary=True), name="statues")
+
+
+def counter_442_team() -> FormationTeam:
+    """A deep, compact 4-4-2 that clears long and counter-attacks."""
+    return FormationTeam("static", COUNTER_442, name="counter-442")
+
+
+def press_433_team() -> FormationTeam:
+    """A high 4-3-3 hunting the ball with two players."""
+    return FormationTeam("mmd+msd2", PRESS_433, name="press-433")
+
+
+def possession_team() -> FormationTeam:
+    """A 4-3-3 that keeps the ball with short passes and shoots only from close in."""
+    return FormationTeam("greedy-offense", POSSESSION, name="possession")

@@ -1,0 +1,365 @@
+"""The built-in team: formation positioning with a pluggable role assigner, plus soccer skills.
+
+Every cycle (team frame: we attack +x, our goal at x = -half_length):
+
+1. **Who wins the ball.** :func:`agents.skills.ball_race` rolls the ball forward and finds, for
+   both teams, the first player that can control it and where.
+2. **Situation and formation.** Set plays (ours or theirs, kick-offs and the pause after a
+   goal included) use the set-play formations; in play on we *attack* when we win the race
+   and *defend* otherwise. The formation is queried at the point where the ball will be
+   controlled (the race's interception point), not where it is now, so the team moves to
+   where play is going. A style may shift the whole outfield block forwards or back.
+3. **Roles.** The role assigner (``mmdr``, ``mmd+msd2``, ``static``, ``greedy``, ...; see
+   :mod:`agents.roles`) maps the ten outfield players to the ten outfield role targets; it
+   may also steer the players (potential-field bidding) and name the ball player. This is
+   the only thing that differs between the assigner variants of the team.
+4. **The ball.** In play on the player who reaches the ball first (or the assigner's ball
+   player) runs to the interception point; a style may send a second presser when defending.
+   A player who can kick decides with :func:`agents.skills.decide_on_ball` (shoot, pass,
+   dribble or clear). At our set plays the player nearest the ball takes it after the others
+   had ``set_play_wait`` cycles to take their places; the goalkeeper distributes a held ball.
+5. **Everybody else** runs to their targets (attackers kept onside), sprinting only when it
+   matters (:func:`agents.skills.speed_caps`); the goalkeeper guards the line between ball and
+   goal and catches (never a back-pass).
+
+The team reports per-match figures through :meth:`FormationTeam.statistics` and what it would
+like drawn through :meth:`FormationTeam.drawing`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+import formations
+from agents import skills
+from agents.roles import RoleContext, make_assigner, offensive_order
+from formations.formation_set import Situation
+from soccer_sim.config import MatchConfig
+from soccer_sim.state import SET_PLAYS, PlayMode
+from soccer_sim.team import SideInfo, TeamCommand, TeamView
+
+_PLAY_ON = PlayMode.PLAY_ON
+_KICK_OFF = PlayMode.KICK_OFF
+_AFTER_GOAL = PlayMode.AFTER_GOAL
+_GOALIE_HOLDS = PlayMode.GOALIE_HOLDS
+_CYCLES_PER_MINUTE = 600
+"""Cycles of 100 ms in a minute of game time."""
+
+
+ATTACKING_DECISIONS = skills.DecisionParams(
+    shot=skills.ShotParams(threshold=0.2),
+    dribbling=skills.DribbleParams(goal_weight=2.0, speed_fraction=0.85),
+)
+"""The built-in team's on-ball choices: shoot when a shot has a fair chance (the skill's own
+threshold waits for a near-certain one, which against a goalkeeper almost never comes) and
+dribble towards the goal rather than along the wings."""
+
+
+@dataclass(frozen=True)
+class TeamStyle:
+    """How a team plays, apart from its role assigner."""
+
+    system: str = "4-3-3"
+    """Built-in formation set (``formations.builtin_names()``)."""
+    depth: float = 0.0
+    """Metres the outfield block is shifted towards the opponents' goal in open play (negative:
+    a deeper block)."""
+    attack_push: float = 14.0
+    """Extra metres the outfield block moves up when we attack (win the race for the ball)."""
+    box_narrowing: float = 0.5
+    """When we attack with the ball in the final third, the forwards' targets move this share
+    of the way towards the middle of the field (so that there are players in the box)."""
+    pressers: int = 1
+    """Players sent at the ball when the opponents win the race (1: just the fastest)."""
+    decision: skills.DecisionParams = field(default_factory=lambda: ATTACKING_DECISIONS)
+    """Thresholds of the on-ball decision (shoot, pass, dribble, clear)."""
+    offside_margin: float = 1.0
+    """Attackers without the ball stay this far behind the offside line (m)."""
+    set_play_wait: int = 15
+    """Cycles our set-play taker waits before kicking, so the others can take their places."""
+    stationary: bool = False
+    """Outfield players hold their kick-off spots and only kick a ball that comes to them (the
+    baseline against which positioning is measured)."""
+    unfilled_distance: float = 10.0
+    """A role counts as unfilled while the player assigned to it is farther than this (m)."""
+
+
+class FormationTeam:
+    """The built-in team (see the module docstring) with role assigner ``assigner`` and style
+    ``style``; ``name`` is how it reports itself (defaults to the assigner's name)."""
+
+    def __init__(self, assigner: str = "mmd+msd2", style: TeamStyle | None = None, name: str | None = None,
+                 **assigner_params: object) -> None:
+        self.style = style or TeamStyle()
+        self.assigner_name = assigner
+        self.assigner = make_assigner(assigner, **assigner_params)
+        self.name = name or assigner
+        self.formation_set = formations.load_builtin(self.style.system)
+        kinds = [role.kind for role in self.formation_set.roles]
+        if kinds.count("goalkeeper") != 1:
+            raise ValueError(f"formation set {self.style.system!r} needs exactly one goalkeeper role")
+        self._goalie_role = kinds.index("goalkeeper")
+        self._outfield_roles = np.array([r for r in range(len(kinds)) if r != self._goalie_role])
+        self._forward_roles = np.array([r for r in range(len(kinds)) if kinds[r] == "forward"])
+
+    # ------------------------------------------------------------------ match lifecycle
+    def reset(self, side_info: SideInfo, config: MatchConfig, rng: np.random.Generator) -> None:
+        n = side_info.players_per_team
+        roles = len(self.formation_set.roles)
+        if n != roles:
+            raise ValueError(f"{type(self).__name__} plays {roles} players per side (formation "
+                             f"{self.style.system!r}), not {n}")
+        self.model = skills.MotionModel(config)
+        self.config = config
+        self.n = n
+        self.goalie = side_info.goalie_index
+        self.outfield = np.array([i for i in range(n) if i != self.goalie])
+        self.assigner.reset(len(self.outfield), rng)
+        self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
+        self.goals = np.zeros((n, 2))
+        self.targets = np.zeros((n, 2))
+        self.role_of_player: np.ndarray | None = None
+        self.kick_off_spots = self._kick_off_spots()
+        self._half_length = config.field.half_length
+        self._half_width = config.field.half_width
+        self._own_goal = np.array([-self._half_length, 0.0])
+        self._opp_goal = np.array([self._half_length, 0.0])
+        self._kickable = config.physics.kickable_distance
+        self._mode_key: tuple[int, bool] = (-1, False)
+        self._mode_since = 0
+        self._our_pass_in_flight = False
+        self._situation = Situation.NORMAL
+        self._dribble_dash: np.ndarray | None = None
+        self._kicker_row = -1
+        # Per-match figures.
+        self._cycles = 0
+        self._switches = 0
+        self._assigned_cycles = 0
+        self._distance_sum = 0.0
+        self._makespan_sum = 0.0
+        self._unfilled_role_cycles = 0
+
+    def _kick_off_spots(self) -> np.ndarray:
+        """(n, 2) where each role stands at our kick-off (team frame)."""
+        return self.formation_set.positions((0.0, 0.0), Situation.OUR_SET_PLAY)
+
+    # ------------------------------------------------------------------ one cycle
+    def act(self, view: TeamView) -> TeamCommand:
+        command = self.command
+        command.kick[:] = 0.0
+        command.catch = False
+        command.move = None
+        mode = view.play_mode
+        key = (int(mode), bool(view.mode_ours))
+        if key != self._mode_key:
+            self._mode_key, self._mode_since = key, view.cycle
+        model = self.model
+        race = skills.ball_race(model, view)
+        situation, ball_ref = self._situation_and_ball(view, race)
+        self._situation = situation
+        targets = self.targets
+        targets[:] = self.formation_set.positions(ball_ref, situation)
+        shift = self.style.depth + (self.style.attack_push if situation == Situation.ATTACK else 0.0)
+        if mode == _PLAY_ON and shift:
+            targets[self.outfield, 0] = np.clip(targets[self.outfield, 0] + shift,
+                                                -self._half_length + 2.0, self._half_length - 2.0)
+        if situation == Situation.ATTACK and ball_ref[0] > self._half_length / 3.0 and self.style.box_narrowing:
+            targets[self._forward_roles, 1] *= 1.0 - self.style.box_narrowing
+        self._assign_roles(view, targets, ball_ref)
+        urgent = np.zeros(self.n, dtype=bool)
+        if mode == _PLAY_ON:
+            self._play_on(view, race, urgent)
+        elif mode in (_KICK_OFF, _AFTER_GOAL):
+            self._kick_off(view, urgent)
+        elif mode == _GOALIE_HOLDS:
+            self._goalie_holds(view)
+        else:
+            self._set_play(view, urgent)
+        caps = skills.speed_caps(model, view, urgent)
+        skills.dash_to_points(model, view.own_pos, view.own_vel, self.goals, view.effort, caps, out=command.dash)
+        if self._dribble_dash is not None:  # the dribbler runs with the ball, not to a point
+            command.dash[self._kicker_row] = self._dribble_dash
+            self._dribble_dash = None
+        if command.kick.any():
+            self._our_pass_in_flight = True
+        return command
+
+    def _situation_and_ball(self, view: TeamView, race: skills.BallRace) -> tuple[Situation, np.ndarray]:
+        """The formation situation and the ball position to query it at."""
+        mode = view.play_mode
+        if mode == _PLAY_ON:
+            if race.we_win and race.ours.first >= 0:
+                return Situation.ATTACK, race.ours.points[race.ours.first]
+            if race.theirs.first >= 0:
+                return Situation.DEFEND, race.theirs.points[race.theirs.first]
+            return Situation.NORMAL, view.ball
+        if mode == _AFTER_GOAL:
+            return (Situation.OUR_SET_PLAY if view.mode_ours else Situation.THEIR_SET_PLAY), np.zeros(2)
+        if mode in SET_PLAYS or mode == _GOALIE_HOLDS:
+            return (Situation.OUR_SET_PLAY if view.mode_ours else Situation.THEIR_SET_PLAY), view.ball
+        return Situation.NORMAL, view.ball
+
+    def _assign_roles(self, view: TeamView, targets: np.ndarray, ball_ref: np.ndarray) -> None:
+        """Outfield players -> outfield roles (the assigner), and everybody's goal point."""
+        outfield = self.outfield
+        role_targets = targets[self._outfield_roles]
+        players = view.own_pos[outfield]
+        if self.style.stationary:
+            role_of_player = np.arange(len(outfield))
+            goals = self.kick_off_spots[self._outfield_roles]
+        else:
+            context = RoleContext(
+                ball=np.asarray(ball_ref, dtype=float), own_goal=self._own_goal, opp_goal=self._opp_goal,
+                opponents=view.opp_pos, field_half_length=self._half_length, field_half_width=self._half_width,
+                cycle=view.cycle, attacking=self._situation == Situation.ATTACK,
+            )
+            order = offensive_order(role_targets)
+            role_of_player = self.assigner.assign(players, role_targets, order, self.role_of_player, context)
+            goals = self.assigner.steer(players, role_targets, role_of_player, context)
+        if self.role_of_player is not None:
+            self._switches += int(np.count_nonzero(role_of_player != self.role_of_player))
+        self.role_of_player = role_of_player
+        self.goals[outfield] = goals
+        if view.play_mode == _PLAY_ON:
+            gaps = np.hypot(*(players - role_targets[role_of_player]).T)
+            self._cycles += 1
+            self._distance_sum += float(gaps.mean())
+            self._makespan_sum += float(gaps.max())
+            self._unfilled_role_cycles += int(np.count_nonzero(gaps > self.style.unfilled_distance))
+        self.goals[self.goalie] = skills.guard_position(self.model, view.ball)
+
+    # ------------------------------------------------------------------ play on
+    def _play_on(self, view: TeamView, race: skills.BallRace, urgent: np.ndarray) -> None:
+        model, command, goals = self.model, self.command, self.goals
+        ball_player = self._ball_player(view, race)
+        if not self.style.stationary:
+            self._keep_onside(view, ball_player)
+        if ball_player >= 0:
+            goals[ball_player] = race.ours.points[ball_player]
+            urgent[ball_player] = True
+        if not race.we_win and self.style.pressers > 1 and not self.style.stationary:
+            order = np.argsort(race.ours.cycles[self.outfield], kind="stable")
+            for row in self.outfield[order][: self.style.pressers]:
+                if row != ball_player:
+                    goals[row] = race.ours.points[row] if race.ours.cycles[row] < skills.UNREACHABLE else view.ball
+                    urgent[row] = True
+        # An opponent on the ball ends our pass (for the back-pass rule).
+        if np.hypot(*(view.opp_pos - view.ball).T).min() <= self._kickable:
+            self._our_pass_in_flight = False
+        kicker = self._kicker(view, ball_player)
+        if kicker == self.goalie and skills.should_catch(model, view, self.goalie,
+                                                         teammate_kicked_last=self._our_pass_in_flight):
+            command.catch = True  # a held ball is safer than a kick
+            kicker = -1
+        self._kicker_row = kicker
+        if kicker >= 0:
+            if kicker == self.goalie:
+                command.kick[kicker] = skills.distribute(model, view, kicker).kick
+            else:
+                decision = skills.decide_on_ball(model, view, kicker, self.style.decision)
+                command.kick[kicker] = decision.kick
+                if decision.dash is not None:
+                    self._dribble_dash = decision.dash
+        elif not command.catch and skills.should_catch(model, view, self.goalie,
+                                                       teammate_kicked_last=self._our_pass_in_flight):
+            command.catch = True
+
+    def _ball_player(self, view: TeamView, race: skills.BallRace) -> int:
+        """Our player who goes for the ball (-1: none can reach it in time)."""
+        named = self.assigner.ball_player()
+        if named is not None and not self.style.stationary:
+            return int(self.outfield[named])
+        first = race.ours.first
+        if first < 0:
+            return -1
+        if self.style.stationary:
+            # Statues only step in for a ball that comes to them.
+            return first if race.ours.cycles[first] <= 2 else -1
+        if first == self.goalie and not self.model.in_penalty_area(race.ours.points[first]):
+            cycles = race.ours.cycles[self.outfield]
+            best = int(np.argmin(cycles))
+            return int(self.outfield[best]) if cycles[best] < skills.UNREACHABLE else -1
+        return int(first)
+
+    def _kicker(self, view: TeamView, ball_player: int) -> int:
+        """The one player of ours who kicks this cycle (-1: none can)."""
+        gaps = np.hypot(*(view.own_pos - view.ball).T)
+        nearest = int(np.argmin(gaps))
+        if gaps[nearest] > self._kickable:
+            return -1
+        if ball_player >= 0 and gaps[ball_player] <= self._kickable:
+            return ball_player
+        return nearest
+
+    def _keep_onside(self, view: TeamView, ball_player: int) -> None:
+        """Outfield goals beyond the offside line (the second-last opponent or the ball, in
+        their half) are pulled back behind it by ``offside_margin``."""
+        opp_x = np.sort(view.opp_pos[:, 0])
+        line = max(float(opp_x[-2]), float(view.ball[0]), 0.0)
+        limit = line - self.style.offside_margin
+        goals_x = self.goals[self.outfield, 0]
+        over = goals_x > limit
+        if over.any():
+            goals_x[over] = max(limit, 0.0)
+            self.goals[self.outfield, 0] = goals_x
+
+    # ------------------------------------------------------------------ set plays
+    def _taker(self, view: TeamView) -> int:
+        gaps = np.hypot(*(view.own_pos[self.outfield] - view.ball).T)
+        return int(self.outfield[int(np.argmin(gaps))])
+
+    def _kick_off(self, view: TeamView, urgent: np.ndarray) -> None:
+        """Before a kick-off (and in the pause after a goal) place everybody on the set-play
+        formation; at our kick-off the taker at the ball plays it once the wait is over."""
+        move = self.goals.copy()
+        self.command.move = move
+        if view.play_mode == _KICK_OFF and view.mode_ours:
+            self._take_set_play(view, urgent)
+
+    def _set_play(self, view: TeamView, urgent: np.ndarray) -> None:
+        if view.mode_ours:
+            self._take_set_play(view, urgent)
+
+    def _take_set_play(self, view: TeamView, urgent: np.ndarray) -> None:
+        taker = self._taker(view)
+        self.goals[taker] = view.ball
+        urgent[taker] = True
+        ready = view.cycle - self._mode_since >= self.style.set_play_wait
+        if ready and np.hypot(*(view.own_pos[taker] - view.ball)) <= self._kickable:
+            decision = skills.decide_on_ball(self.model, view, taker, self.style.decision)
+            self.command.kick[taker] = decision.kick
+
+    def _goalie_holds(self, view: TeamView) -> None:
+        if view.ball_holder == self.goalie and view.cycle - self._mode_since >= self.style.set_play_wait:
+            self.command.kick[self.goalie] = skills.distribute(self.model, view, self.goalie).kick
+        self.goals[self.goalie] = view.own_pos[self.goalie]
+
+    # ------------------------------------------------------------------ reporting
+    def statistics(self) -> dict[str, float]:
+        """Per-match figures (play-on cycles only): role switches per minute of play, the mean
+        and the largest distance from the outfield players to their role targets (averaged over
+        cycles: the largest is the assignment's makespan), and the share of role-cycles a role
+        was unfilled (its player farther than ``unfilled_distance``)."""
+        cycles = max(self._cycles, 1)
+        roles = len(self.outfield)
+        return {
+            "role_switches_per_minute": self._switches / max(self._cycles / _CYCLES_PER_MINUTE, 1e-9)
+            if self._cycles else 0.0,
+            "target_distance_mean": self._distance_sum / cycles,
+            "target_distance_max": self._makespan_sum / cycles,
+            "role_unfilled_share": self._unfilled_role_cycles / (cycles * roles),
+        }
+
+    def drawing(self) -> dict[str, object]:
+        """What a replay may draw (team frame): ``targets`` (n, 2) each role's target, ``goals``
+        (n, 2) where each player is going, ``role_of_player`` (outfield player -> outfield role),
+        ``outfield`` (the outfield players' indices), and the current formation's sample balls
+        and triangles (``formation_balls`` (m, 2), ``formation_triangles`` (t, 3))."""
+        formation = self.formation_set.formation(self._situation)
+        return {
+            "targets": self.targets.copy(), "goals": self.goals.copy(), "outfield": self.outfield.copy(),
+            "role_of_player": None if self.role_of_player is None else self.role_of_player.copy(),
+            "formation_balls": formation.balls, "formation_triangles": formation.triangles,
+        }
