@@ -333,6 +333,7 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
             in_area = side * tx >= area_x and abs(ty) <= area_y
             sx, sy = tx - px, ty - py
             seg = sx * sx + sy * sy
+            seg_len = math.sqrt(seg)
             for i in range(lo, hi):
                 if cycles_out[p, i] != -1:
                     continue
@@ -351,7 +352,7 @@ def _intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, v
                 grow = reach[k - delay] * effort[i] if k > delay else 0.0
                 hit = dx * dx + dy * dy <= (grow + r) ** 2 and ex * ex + ey * ey <= (run[i] + r) ** 2
                 qx, qy = tx, ty
-                if not hit and seg > 0.0:
+                if not hit and seg > 0.0 and dx * dx + dy * dy <= (grow + body + seg_len) ** 2:
                     # The ball may run into the body somewhere along this cycle's path.
                     t = min(max(((cx - px) * sx + (cy - py) * sy) / seg, 0.0), 1.0)
                     qx, qy = px + t * sx, py + t * sy

@@ -118,13 +118,17 @@ def _largest_speed(ux: float, uy: float, vx: float, vy: float, low: float, high:
     along = ux * vx + uy * vy
     rest = vx * vx + vy * vy - along * along
     s = high
-    for _ in range(4):
+    for _ in range(5):
         cx, cy = s * ux - vx, s * uy - vy
         reach = kick_max * _effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder)
         disc = reach * reach - rest
         if disc < 0.0:
             break
-        s = min(max(along + math.sqrt(disc), low), high)
+        step = min(max(along + math.sqrt(disc), low), high)
+        done = abs(step - s) < 1e-9
+        s = step
+        if done:
+            break
     for nudge in (0.0, 1e-8):  # the boundary is met to rounding: step just inside it
         t = max(s - nudge, low)
         cx, cy = t * ux - vx, t * uy - vy
