@@ -147,7 +147,8 @@ class PhysicsConfig:
     ball_noise: float = 0.05
     """Uniform ball-movement noise per axis, as a fraction of the ball's speed."""
     kick_noise: float = 0.05
-    """Uniform kick noise per axis, as a fraction of the kick's velocity change."""
+    """Uniform kick noise per axis, as a fraction of the kicks' strength (the sum of the
+    cycle's kicks' velocity changes, at most ``kick_speed_max``)."""
     player_mass: float = 70.0
     """Mass of a player's body (kg); only the ratio to ``ball_mass`` matters in collisions."""
     ball_mass: float = 0.43

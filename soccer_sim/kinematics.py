@@ -23,8 +23,9 @@ the RoboCup 2D soccer simulator (rcssserver):
   change the ball's velocity by at most ``kick_speed_max`` times an effectiveness that loses
   ``kick_distance_penalty`` at the far edge of the kickable margin and ``kick_angle_penalty``
   when kicking straight back through itself. The kicks of one cycle add up and the sum is
-  capped at ``kick_speed_max`` (``cap_summed_kicks``); kick noise is proportional to the total
-  change; the ball's speed is clipped to ``ball_speed_max``.
+  capped at ``kick_speed_max`` (``cap_summed_kicks``); kick noise is proportional to the sum of
+  the kicks' own strengths (at most ``kick_speed_max``), so kicks that cancel each other still
+  move the ball a little; the ball's speed is clipped to ``ball_speed_max``.
 * **Decay**: after the move, velocities are multiplied by the players' and the ball's
   decay; the ball gets noise proportional to its speed.
 
@@ -113,7 +114,7 @@ class Kinematics:
         phys = self.phys
         kick_max = phys.kick_speed_max
         margin = phys.kickable_margin
-        dvx = dvy = 0.0
+        dvx = dvy = strength = 0.0
         bx, by = float(ball[0]), float(ball[1])
         for row in kickers.tolist():
             kx, ky = float(kick[row, 0]), float(kick[row, 1])
@@ -134,12 +135,15 @@ class Kinematics:
                     effect -= phys.kick_angle_penalty * angle / math.pi
             dvx += kx * effect
             dvy += ky * effect
+            strength += power * effect
         change = math.hypot(dvx, dvy)
         if change > kick_max and phys.cap_summed_kicks:
             dvx *= kick_max / change
             dvy *= kick_max / change
-            change = kick_max
-        change *= phys.kick_noise
+        # Noise grows with every kick's own strength (as rcssserver draws it per kick), so two
+        # opposite kicks that cancel out still leave the ball wandering; never more than the
+        # capped change could carry.
+        change = min(strength, kick_max) * phys.kick_noise
         vx = float(ball_vel[0]) + dvx + (2.0 * float(noise[0]) - 1.0) * change
         vy = float(ball_vel[1]) + dvy + (2.0 * float(noise[1]) - 1.0) * change
         speed = math.hypot(vx, vy)

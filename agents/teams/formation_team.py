@@ -133,6 +133,7 @@ class FormationTeam:
         self._situation = Situation.NORMAL
         self._dribble_dash: np.ndarray | None = None
         self._kicker_row = -1
+        self._goal_kick_leaving = False
         # Per-match figures.
         self._cycles = 0
         self._switches = 0
@@ -154,6 +155,8 @@ class FormationTeam:
         mode = view.play_mode
         key = (int(mode), bool(view.mode_ours))
         if key != self._mode_key:
+            if mode != _PLAY_ON:
+                self._goal_kick_leaving = False
             self._mode_key, self._mode_since = key, view.cycle
         model = self.model
         race = skills.ball_race(model, view)
@@ -233,6 +236,10 @@ class FormationTeam:
     # ------------------------------------------------------------------ play on
     def _play_on(self, view: TeamView, race: skills.BallRace, urgent: np.ndarray) -> None:
         model, command, goals = self.model, self.command, self.goals
+        if self._goal_kick_leaving:
+            if model.in_penalty_area(view.ball):
+                return  # our goal kick is on its way out: nobody may play it yet
+            self._goal_kick_leaving = False
         ball_player = self._ball_player(view, race)
         if not self.style.stationary:
             self._keep_onside(view, ball_player)
@@ -245,8 +252,9 @@ class FormationTeam:
                 if row != ball_player:
                     goals[row] = race.ours.points[row] if race.ours.cycles[row] < skills.UNREACHABLE else view.ball
                     urgent[row] = True
-        # An opponent on the ball ends our pass (for the back-pass rule).
-        if np.hypot(*(view.opp_pos - view.ball).T).min() <= self._kickable:
+        # An opponent on the ball ends our pass (for the back-pass rule) and contests it.
+        contested = bool(np.hypot(*(view.opp_pos - view.ball).T).min() <= self._kickable)
+        if contested:
             self._our_pass_in_flight = False
         kicker = self._kicker(view, ball_player)
         if kicker == self.goalie and skills.should_catch(model, view, self.goalie,
@@ -259,9 +267,14 @@ class FormationTeam:
                 command.kick[kicker] = skills.distribute(model, view, kicker).kick
             else:
                 decision = skills.decide_on_ball(model, view, kicker, self.style.decision)
-                command.kick[kicker] = decision.kick
-                if decision.dash is not None:
-                    self._dribble_dash = decision.dash
+                if decision.action == skills.OnBallAction.DRIBBLE and contested:
+                    # Dribbling against an opponent who kicks the ball too goes nowhere: the
+                    # two kicks cancel. Play it away instead.
+                    command.kick[kicker] = skills.best_clearance(model, view, kicker).kick
+                else:
+                    command.kick[kicker] = decision.kick
+                    if decision.dash is not None:
+                        self._dribble_dash = decision.dash
         elif not command.catch and skills.should_catch(model, view, self.goalie,
                                                        teammate_kicked_last=self._our_pass_in_flight):
             command.catch = True
@@ -328,8 +341,14 @@ class FormationTeam:
         urgent[taker] = True
         ready = view.cycle - self._mode_since >= self.style.set_play_wait
         if ready and np.hypot(*(view.own_pos[taker] - view.ball)) <= self._kickable:
-            decision = skills.decide_on_ball(self.model, view, taker, self.style.decision)
-            self.command.kick[taker] = decision.kick
+            if view.play_mode == PlayMode.GOAL_KICK:
+                # The ball must leave our penalty area before anybody plays it again: kick long,
+                # and keep off it until it is out (see _play_on).
+                self.command.kick[taker] = skills.best_clearance(self.model, view, taker).kick
+                self._goal_kick_leaving = True
+            else:
+                decision = skills.decide_on_ball(self.model, view, taker, self.style.decision)
+                self.command.kick[taker] = decision.kick
 
     def _goalie_holds(self, view: TeamView) -> None:
         if view.ball_holder == self.goalie and view.cycle - self._mode_since >= self.style.set_play_wait:

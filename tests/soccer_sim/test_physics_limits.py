@@ -505,3 +505,22 @@ def test_the_kicks_of_one_cycle_are_summed_and_capped(cap_sum: bool, expected: f
     # rcssserver adds both kicks into one acceleration capped at 2.7; per-kick caps let the two
     # reach the ball speed limit (3.0).
     assert np.hypot(*ball_vel) == pytest.approx(expected)
+
+
+def test_opposite_kicks_cancel_but_leave_the_ball_noise_of_both() -> None:
+    """Two players kicking the ball at each other: the changes cancel, yet the noise (drawn
+    from the kicks' strengths, as rcssserver draws it per kick) still moves the ball, so two
+    stubborn players cannot hold it still between them for ever."""
+    config = replace(CONFIG, physics=replace(PHYS, kick_noise=0.05))
+    kin = Kinematics(config)
+    touch = PHYS.player_radius + PHYS.ball_radius
+    pos = FAR.copy()
+    pos[0], pos[N] = (-touch, 0.0), (touch, 0.0)
+    kick = np.zeros((2 * N, 2))
+    kick[0], kick[N] = (1.0, 0.0), (-1.0, 0.0)
+    rows = np.zeros(2 * N, dtype=np.int64)
+    count, _ = kin.kick_candidates(pos, np.zeros(2), kick, np.ones(2 * N, dtype=bool), -1, rows)
+    ball_vel = np.zeros(2)
+    kin.kick(rows[:count], pos, np.zeros(2), ball_vel, kick, kin.ball_distance, -1, np.array([1.0, 0.5]))
+    # Noise at the top of its range on x: 0.05 x (1 + 1) = 0.1 m/cycle.
+    assert ball_vel == pytest.approx((0.1, 0.0))
