@@ -25,7 +25,7 @@ import numpy as np
 from numba import njit
 
 from agents.skills.kicking import kick_for_velocity, kickable
-from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, view_effort
+from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, float_array, view_effort
 
 
 @dataclass(frozen=True)
@@ -81,25 +81,31 @@ def dribble_directions(model: MotionModel, view: object, player: int,
                        params: DribbleParams = DribbleParams()) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(directions (fan, 2), clearance (fan,), score (fan,)) for ``player`` dribbling from
     where it stands; excluded directions score -inf."""
-    p = np.asarray(view.own_pos[player], float)
-    goal = model.goal_centre(ours=False)
-    base = np.arctan2(goal[1] - p[1], goal[0] - p[0])
-    offsets = np.radians(np.linspace(-params.spread_deg, params.spread_deg, params.fan)) if params.fan > 1 \
-        else np.zeros(1)
-    angles = base + offsets
-    dirs = np.column_stack([np.cos(angles), np.sin(angles)])
+    p = float_array("own_pos", view.own_pos, (model.players_per_team, 2))[player]
+    goal_x = model.half_length
+    base = math.atan2(-p[1], goal_x - p[0])
+    offsets, probes = _fan(model, params)
     effort = float(view_effort(view, model.players_per_team)[player])
     speed = max(params.speed_fraction * model.top_speed * effort, 1e-6)
-    probes = np.asarray(params.probes, float)
     cycles = np.minimum(np.ceil(probes / speed).astype(np.int64), model.horizon)
-    clearance = np.empty(len(dirs))
-    _clearance_kernel(p, dirs, probes, cycles, view.opp_pos, view.opp_vel, model.reach, model.player_coast,
-                      model.kickable_distance, clearance)
-    points = p + dirs * probes[-1]
-    score = np.minimum(clearance, params.clearance_cap) / params.clearance_cap + params.goal_weight * np.cos(offsets)
-    inside = model.in_field(points, params.field_margin)
-    score = np.where(inside, score, -np.inf)
+    fan = len(offsets)
+    dirs, clearance, score = np.empty((fan, 2)), np.empty(fan), np.empty(fan)
+    _fan_kernel(p, base, offsets, probes, cycles, view.opp_pos, view.opp_vel, model.reach, model.player_coast,
+                np.array([model.kickable_distance, params.clearance_cap, params.goal_weight,
+                          model.half_length - params.field_margin, model.half_width - params.field_margin]),
+                dirs, clearance, score)
     return dirs, clearance, score
+
+
+def _fan(model: MotionModel, params: DribbleParams) -> tuple[np.ndarray, np.ndarray]:
+    """(angle offsets (rad), probe distances) of ``params``, made once per model and params."""
+    cache = model.__dict__.setdefault("_dribble_fans", {})
+    found = cache.get(params)
+    if found is None:
+        offsets = np.radians(np.linspace(-params.spread_deg, params.spread_deg, params.fan)) if params.fan > 1 \
+            else np.zeros(1)
+        found = cache[params] = (offsets, np.asarray(params.probes, dtype=np.float64))
+    return found
 
 
 def dribble(model: MotionModel, view: object, player: int, params: DribbleParams = DribbleParams(),
@@ -109,49 +115,54 @@ def dribble(model: MotionModel, view: object, player: int, params: DribbleParams
     n = model.players_per_team
     player = check_player(player, n)
     dirs, clearance, score = dribble_directions(model, view, player, params)
-    if direction is None:
-        if np.isfinite(score).any():
-            best = int(np.argmax(score))
-        else:  # cornered against a line: head for the centre of the field
-            p = view.own_pos[player]
-            best = int(np.argmax(dirs @ (-p / max(float(np.hypot(*p)), 1e-9))))
-        unit = dirs[best]
-        chosen_clearance, chosen_score = float(clearance[best]), float(score[best])
+    px, py = view.own_pos[player].tolist()
+    if direction is not None:
+        wx, wy = float_array("direction", direction, (2,)).tolist()
+        best = int(np.argmax(dirs @ np.array([wx, wy])))
+        size = max(math.hypot(wx, wy), 1e-12)
+        ux, uy = wx / size, wy / size
     else:
-        unit = np.asarray(direction, float)
-        unit = unit / max(float(np.hypot(*unit)), 1e-12)
-        best = int(np.argmax(dirs @ unit))
-        chosen_clearance, chosen_score = float(clearance[best]), float(score[best])
+        best = int(score.argmax())
+        if score[best] == -np.inf:  # cornered against a line: head for the centre of the field
+            size = max(math.hypot(px, py), 1e-9)
+            best = int(np.argmax(dirs @ np.array([-px / size, -py / size])))
+        ux, uy = dirs[best].tolist()
     effort = float(view_effort(view, n)[player])
-    pos = np.asarray(view.own_pos[player], float)
-    vel = np.asarray(view.own_vel[player], float)
-    step = unit * params.speed_fraction * model.top_speed * effort
-    dash = step - vel
-    size = float(np.hypot(*dash))
+    vx, vy = view.own_vel[player].tolist()
+    pace = params.speed_fraction * model.top_speed * effort
+    ax, ay = ux * pace - vx, uy * pace - vy
+    size = math.hypot(ax, ay)
     limit = model.accel_max * effort
     if size > limit:
-        dash *= limit / size
+        ax, ay = ax * limit / size, ay * limit / size
+    bx, by = view.ball.tolist()
     kick = np.zeros(2)
-    if kickable(model, pos, view.ball):
+    if (bx - px) ** 2 + (by - py) ** 2 <= model.kickable_distance ** 2:
         lead = params.lead if params.lead is not None else 0.5 * (model.touch_distance + model.kickable_distance)
-        after = pos + vel + dash
-        wanted = after + unit * lead - np.asarray(view.ball, float)
-        kick, _ = kick_for_velocity(model, pos, view.ball, view.ball_vel, wanted)
-    return DribblePlan(direction=unit.copy(), kick=np.asarray(kick, float), dash=dash, clearance=chosen_clearance,
-                       score=chosen_score)
+        wanted = np.array([px + vx + ax + ux * lead - bx, py + vy + ay + uy * lead - by])
+        kick, _ = kick_for_velocity(model, view.own_pos[player], view.ball, view.ball_vel, wanted)
+    return DribblePlan(direction=np.array([ux, uy]), kick=kick, dash=np.array([ax, ay]),
+                       clearance=float(clearance[best]), score=float(score[best]))
 
 
 @njit(cache=True, nogil=True)
-def _clearance_kernel(start: np.ndarray, dirs: np.ndarray, probes: np.ndarray, cycles: np.ndarray, opp_pos: np.ndarray,
-                      opp_vel: np.ndarray, reach: np.ndarray, coast: np.ndarray, kickable: float,
-                      out: np.ndarray) -> None:  # pragma: no cover - compiled
-    """Per direction: the smallest margin (m) between a probe point and the disc an opponent
-    can cover by the time the dribbler gets there (inf without opponents)."""
-    for d in range(dirs.shape[0]):
+def _fan_kernel(start: np.ndarray, base: float, offsets: np.ndarray, probes: np.ndarray, cycles: np.ndarray,
+                opp_pos: np.ndarray, opp_vel: np.ndarray, reach: np.ndarray, coast: np.ndarray, params: np.ndarray,
+                dirs: np.ndarray, clearance: np.ndarray, score: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Per direction (``base`` + offset): the unit vector, the clearance (the smallest margin
+    in metres between a probe point and the disc an opponent can cover by the time the
+    dribbler gets there; inf without opponents) and the score (-inf when the farthest probe
+    is outside the field less the margin). ``params``: kickable distance, clearance cap,
+    goal weight, largest |x| and |y| of a probe."""
+    kickable, cap, goal_weight, x_max, y_max = params[0], params[1], params[2], params[3], params[4]
+    far = probes[probes.shape[0] - 1]
+    for d in range(offsets.shape[0]):
+        ux, uy = math.cos(base + offsets[d]), math.sin(base + offsets[d])
+        dirs[d, 0], dirs[d, 1] = ux, uy
         best = np.inf
         for j in range(probes.shape[0]):
-            qx = start[0] + dirs[d, 0] * probes[j]
-            qy = start[1] + dirs[d, 1] * probes[j]
+            qx = start[0] + ux * probes[j]
+            qy = start[1] + uy * probes[j]
             k = cycles[j]
             for o in range(opp_pos.shape[0]):
                 cx = opp_pos[o, 0] + coast[k] * opp_vel[o, 0]
@@ -159,4 +170,8 @@ def _clearance_kernel(start: np.ndarray, dirs: np.ndarray, probes: np.ndarray, c
                 margin = math.sqrt((qx - cx) ** 2 + (qy - cy) ** 2) - reach[k] - kickable
                 if margin < best:
                     best = margin
-        out[d] = best
+        clearance[d] = best
+        if abs(start[0] + ux * far) > x_max or abs(start[1] + uy * far) > y_max:
+            score[d] = -np.inf
+        else:
+            score[d] = min(best, cap) / cap + goal_weight * math.cos(offsets[d])
