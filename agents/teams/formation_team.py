@@ -134,6 +134,7 @@ class FormationTeam:
         self._dribble_dash: np.ndarray | None = None
         self._kicker_row = -1
         self._goal_kick_leaving = False
+        self._eligible = np.ones(n, dtype=bool)
         # Per-match figures.
         self._cycles = 0
         self._switches = 0
@@ -159,7 +160,7 @@ class FormationTeam:
                 self._goal_kick_leaving = False
             self._mode_key, self._mode_since = key, view.cycle
         model = self.model
-        race = skills.ball_race(model, view)
+        race = skills.ball_race(model, view, self._eligible if self._our_pass_in_flight else None)
         situation, ball_ref = self._situation_and_ball(view, race)
         self._situation = situation
         targets = self.targets
@@ -186,7 +187,12 @@ class FormationTeam:
             command.dash[self._kicker_row] = self._dribble_dash
             self._dribble_dash = None
         if command.kick.any():
+            # Team-mates in an offside position when we play the ball must keep off it.
             self._our_pass_in_flight = True
+            self._eligible = ~skills.offside_positions(model, view.own_pos, view.opp_pos, view.ball)
+            self._eligible[np.flatnonzero(command.kick.any(axis=1))] = True
+        elif mode != _PLAY_ON:
+            self._our_pass_in_flight = False
         return command
 
     def _situation_and_ball(self, view: TeamView, race: skills.BallRace) -> tuple[Situation, np.ndarray]:
@@ -299,6 +305,8 @@ class FormationTeam:
     def _kicker(self, view: TeamView, ball_player: int) -> int:
         """The one player of ours who kicks this cycle (-1: none can)."""
         gaps = np.hypot(*(view.own_pos - view.ball).T)
+        if self._our_pass_in_flight:
+            gaps[~self._eligible] = np.inf  # offside when the ball was played: hands off
         nearest = int(np.argmin(gaps))
         if gaps[nearest] > self._kickable:
             return -1
