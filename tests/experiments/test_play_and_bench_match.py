@@ -46,3 +46,35 @@ def test_play_finds_a_team_module_in_the_working_directory(tmp_path, monkeypatch
     monkeypatch.setattr("sys.path", [p for p in __import__("sys").path if p not in ("", ".", str(tmp_path))])
     assert main(["play", "my_local_teams.squad:Squad", "idle", "--cycles", "50"]) == 0
     assert "my_local_teams.squad:Squad" in capsys.readouterr().out
+
+
+def test_bench_soccer_reports_the_figures_of_the_play(capsys) -> None:
+    assert main(["bench", "soccer", "--matches", "2", "--cycles", "300"]) == 0
+    out = capsys.readouterr().out
+    for figure in ("goals", "shots", "passes", "offside calls", "teammate contacts", "players within 2 m"):
+        assert figure in out
+    assert main(["bench", "soccer", "--home", "no-such-team", "--matches", "1", "--cycles", "10"]) == 2
+    assert "unknown team" in capsys.readouterr().out
+
+
+def test_near_ball_recorder_counts_players_within_two_metres() -> None:
+    import numpy as np
+
+    from experiments.benchmarks.soccer import NearBallRecorder
+    from soccer_sim import Match, MatchConfig, PlayMode
+
+    match = Match("idle", "idle", config=MatchConfig(max_cycles=5))
+    match.start()
+    state = match.state
+    state.play_mode = PlayMode.PLAY_ON
+    state.ball[:] = (30.0, 0.0)
+    state.pos[3] = (31.0, 0.0)   # 1 m away
+    state.pos[14] = (30.0, 1.9)  # 1.9 m away
+    state.pos[15] = (32.5, 0.0)  # 2.5 m away: not near
+    recorder = NearBallRecorder()
+    recorder.on_start(match)
+    recorder.on_cycle(match)
+    assert recorder.cycles == 1 and recorder.mean == 2.0
+    state.play_mode = PlayMode.KICK_IN  # set plays are not counted
+    recorder.on_cycle(match)
+    assert recorder.cycles == 1 and np.isclose(recorder.mean, 2.0)
