@@ -126,6 +126,13 @@ class FormationTeam:
         self._half_width = config.field.half_width
         self._own_goal = np.array([-self._half_length, 0.0])
         self._opp_goal = np.array([self._half_length, 0.0])
+        self._context = RoleContext(
+            ball=np.zeros(2), own_goal=self._own_goal, opp_goal=self._opp_goal, opponents=np.zeros((n, 2)),
+            field_half_length=self._half_length, field_half_width=self._half_width, cycle=0, attacking=False,
+            penalty_area_length=config.field.penalty_area_length,
+            penalty_area_half_width=config.field.penalty_area_width / 2.0,
+        )
+        """What the assigner sees besides positions; one object per match, refreshed every cycle."""
         self._kickable = config.physics.kickable_distance
         self._mode_key: tuple[int, bool] = (-1, False)
         self._mode_since = 0
@@ -219,11 +226,11 @@ class FormationTeam:
             role_of_player = np.arange(len(outfield))
             goals = self.kick_off_spots[self._outfield_roles]
         else:
-            context = RoleContext(
-                ball=np.asarray(ball_ref, dtype=float), own_goal=self._own_goal, opp_goal=self._opp_goal,
-                opponents=view.opp_pos, field_half_length=self._half_length, field_half_width=self._half_width,
-                cycle=view.cycle, attacking=self._situation == Situation.ATTACK,
-            )
+            context = self._context
+            context.ball = ball_ref
+            context.opponents = view.opp_pos
+            context.cycle = view.cycle
+            context.attacking = self._situation == Situation.ATTACK
             order = offensive_order(role_targets)
             role_of_player = self.assigner.assign(players, role_targets, order, self.role_of_player, context)
             goals = self.assigner.steer(players, role_targets, role_of_player, context)
@@ -317,8 +324,8 @@ class FormationTeam:
     def _keep_onside(self, view: TeamView, ball_player: int) -> None:
         """Outfield goals beyond the offside line (the second-last opponent or the ball, in
         their half) are pulled back behind it by ``offside_margin``."""
-        opp_x = np.sort(view.opp_pos[:, 0])
-        line = max(float(opp_x[-2]), float(view.ball[0]), 0.0)
+        second_last = float(np.partition(view.opp_pos[:, 0], -2)[-2])
+        line = max(second_last, float(view.ball[0]), 0.0)
         limit = line - self.style.offside_margin
         goals_x = self.goals[self.outfield, 0]
         over = goals_x > limit
