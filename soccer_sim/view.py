@@ -36,12 +36,14 @@ class TeamFrame:
         self.rows = slice(team * n, (team + 1) * n)
         self._offset = team * n
         self._block = block
-        self._mirror = np.empty_like(block.dynamic)
-        own, opp = self._mirror[self.rows], self._mirror[(1 - team) * n:(2 - team) * n]
-        ball_row = self._mirror[2 * n]
+        # Positions and velocities in two (2n + 1, 2) blocks (players, then the ball), so that
+        # every array of the view is C-contiguous (teams and compiled kernels take them as they are).
+        self._pos = np.empty((2 * n + 1, 2))
+        self._vel = np.empty((2 * n + 1, 2))
+        own, opp = self.rows, slice((1 - team) * n, (2 - team) * n)
         self.view = TeamView(
-            own_pos=own[:, 0:2], own_vel=own[:, 2:4], opp_pos=opp[:, 0:2], opp_vel=opp[:, 2:4],
-            ball=ball_row[0:2], ball_vel=ball_row[2:4], stamina=np.empty(n), effort=np.empty(n),
+            own_pos=self._pos[own], own_vel=self._vel[own], opp_pos=self._pos[opp], opp_vel=self._vel[opp],
+            ball=self._pos[2 * n], ball_vel=self._vel[2 * n], stamina=np.empty(n), effort=np.empty(n),
             capacity=np.empty(n),
         )
         self._commands = commands[self.rows]
@@ -59,8 +61,8 @@ class TeamFrame:
         team = self.team
         effort = state.effort if state.effort is not None else self._fresh_effort
         capacity = state.capacity if state.capacity is not None else self._fresh_capacity
-        _mirror(self._block.dynamic, float(sign), self._mirror, self._offset, state.stamina, effort, capacity,
-                view.stamina, view.effort, view.capacity)
+        _mirror(self._block.dynamic, float(sign), self._pos, self._vel, self._offset, state.stamina, effort,
+                capacity, view.stamina, view.effort, view.capacity)
         view.play_mode = state.play_mode
         view.mode_ours = state.mode_team == team
         score = state.score.tolist()
@@ -150,14 +152,17 @@ def _store_command(dash: np.ndarray, kick: np.ndarray, sign: float,
 
 
 @njit(cache=True, nogil=True)
-def _mirror(bodies: np.ndarray, sign: float, out: np.ndarray, first: int, stamina: np.ndarray,
-            effort: np.ndarray, capacity: np.ndarray, stamina_out: np.ndarray, effort_out: np.ndarray,
-            capacity_out: np.ndarray) -> None:  # pragma: no cover - compiled
-    """``out = sign * bodies``, and this team's stamina, effort and capacity (rows ``first``
+def _mirror(bodies: np.ndarray, sign: float, pos_out: np.ndarray, vel_out: np.ndarray, first: int,
+            stamina: np.ndarray, effort: np.ndarray, capacity: np.ndarray, stamina_out: np.ndarray,
+            effort_out: np.ndarray, capacity_out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Positions and velocities of ``bodies`` (rows ``[x, y, vx, vy]``) times ``sign`` into
+    ``pos_out``/``vel_out``, and this team's stamina, effort and capacity (rows ``first``
     onwards) into the ``*_out`` arrays."""
     for i in range(bodies.shape[0]):
-        for k in range(bodies.shape[1]):
-            out[i, k] = sign * bodies[i, k]
+        pos_out[i, 0] = sign * bodies[i, 0]
+        pos_out[i, 1] = sign * bodies[i, 1]
+        vel_out[i, 0] = sign * bodies[i, 2]
+        vel_out[i, 1] = sign * bodies[i, 3]
     for i in range(stamina_out.shape[0]):
         stamina_out[i] = stamina[first + i]
         effort_out[i] = effort[first + i]
