@@ -28,9 +28,11 @@ like drawn through :meth:`FormationTeam.drawing`.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
+from numba import njit
 
 import formations
 from agents import skills
@@ -234,16 +236,19 @@ class FormationTeam:
             order = offensive_order(role_targets)
             role_of_player = self.assigner.assign(players, role_targets, order, self.role_of_player, context)
             goals = self.assigner.steer(players, role_targets, role_of_player, context)
-        if self.role_of_player is not None:
+        if view.play_mode == _PLAY_ON:
+            previous = self.role_of_player if self.role_of_player is not None else role_of_player
+            switches, mean, largest, unfilled = _role_figures(players, role_targets, role_of_player, previous,
+                                                              self.style.unfilled_distance)
+            self._switches += switches
+            self._cycles += 1
+            self._distance_sum += mean
+            self._makespan_sum += largest
+            self._unfilled_role_cycles += unfilled
+        elif self.role_of_player is not None:
             self._switches += int(np.count_nonzero(role_of_player != self.role_of_player))
         self.role_of_player = role_of_player
         self.goals[outfield] = goals
-        if view.play_mode == _PLAY_ON:
-            gaps = np.hypot(*(players - role_targets[role_of_player]).T)
-            self._cycles += 1
-            self._distance_sum += float(gaps.mean())
-            self._makespan_sum += float(gaps.max())
-            self._unfilled_role_cycles += int(np.count_nonzero(gaps > self.style.unfilled_distance))
         self.goals[self.goalie] = skills.guard_position(self.model, view.ball)
 
     # ------------------------------------------------------------------ play on
@@ -397,3 +402,23 @@ class FormationTeam:
             "role_of_player": None if self.role_of_player is None else self.role_of_player.copy(),
             "formation_balls": formation.balls, "formation_triangles": formation.triangles,
         }
+
+
+@njit(cache=True, nogil=True)
+def _role_figures(players: np.ndarray, targets: np.ndarray, role_of_player: np.ndarray, previous: np.ndarray,
+                  unfilled: float) -> tuple[int, float, float, int]:  # pragma: no cover - compiled
+    """One cycle's figures: role switches since ``previous``, the mean and the largest distance
+    from a player to its role's target, and the roles whose player is farther than ``unfilled``."""
+    k = players.shape[0]
+    switches, total, largest, far = 0, 0.0, 0.0, 0
+    for i in range(k):
+        if role_of_player[i] != previous[i]:
+            switches += 1
+        t = role_of_player[i]
+        d = math.hypot(players[i, 0] - targets[t, 0], players[i, 1] - targets[t, 1])
+        total += d
+        if d > largest:
+            largest = d
+        if d > unfilled:
+            far += 1
+    return switches, total / max(k, 1), largest, far
