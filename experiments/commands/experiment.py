@@ -12,6 +12,7 @@ import importlib
 
 #: Study name -> (module, one-line help).
 STUDIES: dict[str, tuple[str, str]] = {
+    "assigners": ("experiments.studies.assigners", "does positioning matter: league, baselines and SCRAM's claims"),
     "distributed": ("experiments.studies.distributed", "distributed assignment under limited communication: completion-time scaling"),
 }
 
