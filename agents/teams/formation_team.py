@@ -118,6 +118,9 @@ class FormationTeam:
         self.n = n
         self.goalie = side_info.goalie_index
         self.outfield = np.array([i for i in range(n) if i != self.goalie])
+        self._out = _as_slice(self.outfield)
+        """The outfield rows, as a slice when they are contiguous (cheaper than fancy indexing)."""
+        self._out_roles = _as_slice(self._outfield_roles)
         self.assigner.reset(len(self.outfield), rng)
         self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
         self.goals = np.zeros((n, 2))
@@ -176,8 +179,10 @@ class FormationTeam:
         targets[:] = self.formation_set.positions(ball_ref, situation)
         shift = self.style.depth + (self.style.attack_push if situation == Situation.ATTACK else 0.0)
         if mode == _PLAY_ON and shift:
-            targets[self.outfield, 0] = np.clip(targets[self.outfield, 0] + shift,
-                                                -self._half_length + 2.0, self._half_length - 2.0)
+            xs = targets[self._out_roles, 0]
+            xs += shift
+            np.clip(xs, -self._half_length + 2.0, self._half_length - 2.0, out=xs)
+            targets[self._out_roles, 0] = xs
         if situation == Situation.ATTACK and ball_ref[0] > self._half_length / 3.0 and self.style.box_narrowing:
             targets[self._forward_roles, 1] *= 1.0 - self.style.box_narrowing
         self._assign_roles(view, targets, ball_ref)
@@ -221,11 +226,11 @@ class FormationTeam:
 
     def _assign_roles(self, view: TeamView, targets: np.ndarray, ball_ref: np.ndarray) -> None:
         """Outfield players -> outfield roles (the assigner), and everybody's goal point."""
-        outfield = self.outfield
-        role_targets = targets[self._outfield_roles]
+        outfield = self._out
+        role_targets = targets[self._out_roles]
         players = view.own_pos[outfield]
         if self.style.stationary:
-            role_of_player = np.arange(len(outfield))
+            role_of_player = np.arange(len(self.outfield))
             goals = self.kick_off_spots[self._outfield_roles]
         else:
             context = self._context
@@ -271,10 +276,11 @@ class FormationTeam:
                     goals[row] = race.ours.points[row] if race.ours.cycles[row] < skills.UNREACHABLE else view.ball
                     urgent[row] = True
         # An opponent on the ball ends our pass (for the back-pass rule) and contests it.
-        contested = bool(np.hypot(*(view.opp_pos - view.ball).T).min() <= self._kickable)
+        contested = race.theirs.first_cycle == 0
         if contested:
             self._our_pass_in_flight = False
-        kicker = self._kicker(view, ball_player)
+        kicker = self._kicker(view, race, ball_player)
+        goalie_near = race.ours.cycles[self.goalie] <= 1
         if kicker == self.goalie and skills.should_catch(model, view, self.goalie,
                                                          teammate_kicked_last=self._our_pass_in_flight):
             command.catch = True  # a held ball is safer than a kick
@@ -293,8 +299,8 @@ class FormationTeam:
                     command.kick[kicker] = decision.kick
                     if decision.dash is not None:
                         self._dribble_dash = decision.dash
-        elif not command.catch and skills.should_catch(model, view, self.goalie,
-                                                       teammate_kicked_last=self._our_pass_in_flight):
+        elif goalie_near and not command.catch and skills.should_catch(
+                model, view, self.goalie, teammate_kicked_last=self._our_pass_in_flight):
             command.catch = True
 
     def _ball_player(self, view: TeamView, race: skills.BallRace) -> int:
@@ -314,8 +320,12 @@ class FormationTeam:
             return int(self.outfield[best]) if cycles[best] < skills.UNREACHABLE else -1
         return int(first)
 
-    def _kicker(self, view: TeamView, ball_player: int) -> int:
-        """The one player of ours who kicks this cycle (-1: none can)."""
+    def _kicker(self, view: TeamView, race: skills.BallRace, ball_player: int) -> int:
+        """The one player of ours who kicks this cycle (-1: none can). Only players the race
+        says control the ball now are candidates (it already leaves out those offside when we
+        played the ball)."""
+        if race.ours.first_cycle != 0:
+            return -1
         gaps = np.hypot(*(view.own_pos - view.ball).T)
         if self._our_pass_in_flight:
             gaps[~self._eligible] = np.inf  # offside when the ball was played: hands off
@@ -422,3 +432,10 @@ def _role_figures(players: np.ndarray, targets: np.ndarray, role_of_player: np.n
         if d > unfilled:
             far += 1
     return switches, total / max(k, 1), largest, far
+
+
+def _as_slice(indices: np.ndarray) -> slice | np.ndarray:
+    """``indices`` as a slice when they are consecutive, else unchanged."""
+    if indices.size and np.array_equal(indices, np.arange(indices[0], indices[0] + indices.size)):
+        return slice(int(indices[0]), int(indices[0]) + indices.size)
+    return indices
