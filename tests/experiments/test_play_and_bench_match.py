@@ -78,3 +78,10 @@ def test_near_ball_recorder_counts_players_within_two_metres() -> None:
     state.play_mode = PlayMode.KICK_IN  # set plays are not counted
     recorder.on_cycle(match)
     assert recorder.cycles == 1 and np.isclose(recorder.mean, 2.0)
+
+
+def test_bench_skills_times_every_skill(capsys) -> None:
+    assert main(["bench", "skills", "--views", "1", "--number", "2"]) == 0
+    out = capsys.readouterr().out
+    for call in ("ball_race", "decide_on_ball", "best_pass", "dash_to_points"):
+        assert call in out

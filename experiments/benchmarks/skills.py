@@ -1,0 +1,32 @@
+"""``soccer-sim bench skills``: microseconds per call of every soccer skill for a team of 11.
+
+The situations and the timing are :func:`agents.skills.timing.time_skills`'s: reproducible
+random mid-game views, each call timed after a warm-up call, the median over views of the
+best of three runs.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+from experiments.commands.play import positive_int
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--views", type=positive_int, default=20, help="random situations (default: 20)")
+    parser.add_argument("--number", type=positive_int, default=200, help="calls per timing run (default: 200)")
+
+
+def run(args: argparse.Namespace) -> int:
+    from rich.console import Console
+    from rich.table import Table
+
+    from agents.skills.timing import time_skills
+
+    table = Table(title=f"skills: µs per call, 11 players, median over {args.views} situations")
+    table.add_column("call")
+    table.add_column("µs", justify="right")
+    for name, micro in time_skills(args.views, number=args.number).items():
+        table.add_row(name, f"{micro:.1f}")
+    Console().print(table)
+    return 0
