@@ -219,6 +219,8 @@ def _study(args: argparse.Namespace, league: list[str], claims: list[str], runne
                 for name, v in (("goals", goals), ("shots", shots), ("passes received", passes),
                                 ("longest stall (cycles)", stalls))])
         print("matches with each kind of set play: " + ", ".join(f"{k} {v}" for k, v in sorted(kinds.items())))
+        worst = max(done, key=lambda s: s.longest_stall)
+        print(f"longest stall: {worst.longest_stall} cycles, {worst.home} v {worst.away}, seed {worst.seed}")
     if args.part in ("all", "chaser"):
         rows = []
         for team in dict.fromkeys([*league, *claims]):
