@@ -258,7 +258,10 @@ def _kernel_params(model: MotionModel, catch_side: float, reaction: int = 0, fir
     if params is None:
         if not (isinstance(reaction, (int, np.integer)) and 0 <= reaction < model.horizon):
             raise SkillInputError(f"reaction must be an integer in [0, {model.horizon}), got {reaction!r}")
-        params = np.array([model.half_length, model.half_width, model.top_speed, catch_side,
+        # The ball is in play until it is wholly over a line (the referee's rule), so a ball
+        # lying on a line can still be reached.
+        params = np.array([model.half_length + model.ball_radius, model.half_width + model.ball_radius,
+                           model.top_speed, catch_side,
                            model.half_length - model.penalty_area_length, model.penalty_area_half_width,
                            model.accel_max, model.speed_max, model.player_decay, float(reaction),
                            1.0 if first_only else 0.0, model.touch_distance])
