@@ -22,17 +22,28 @@ Decisions where the rules leave room:
 * **Last touch** is the last player that kicked the ball or whose body touched it; when
   several bodies touch it in one cycle the one nearest the ball afterwards counts.
 * **Restart spots** are chosen in :mod:`soccer_sim.restarts` (kick-in where the ball's
-  centre crossed the touchline, corner point, goal-area corner, penalty-area edge); the
-  free kick for offside is taken at the offender's position clamped into the field.
+  centre crossed the touchline, ``corner_inset`` inside the corner, goal-area corner,
+  penalty-area edge); the free kick for offside is taken on the offside line as it was when
+  the ball was played, level with the offender.
 * **Set plays** keep the ball on its spot until the mode team kicks it; body touches do not
   take a set play and are not judged (no TOUCH/PASS events, no last touch). Opponents are
   pushed to ``set_play_clearance`` every cycle (at a kick-off to the larger of that and the
   centre-circle radius); players pushed by the referee lose their velocity. There is no
-  double-touch rule and opponents need not leave the penalty area at a goal kick. Free
-  kicks are indirect in name only: a goal scored straight from a free kick or a kick-off
-  counts.
-* **Kick-off** positions: after a goal, players standing in the opponents' half are
-  reflected across the halfway line; ``apply_moves`` targets are clamped onto it instead.
+  double-touch rule. At a goal kick the opponents also leave the penalty area, and once
+  taken the ball must leave the area before anybody plays it again, else the goal kick is
+  retaken (``goal_kick_leaves_area``). Free kicks are indirect in name only: a goal scored
+  straight from a free kick or a kick-off counts.
+* **After a goal** the play mode is AFTER_GOAL for ``goal_pause_cycles``: the ball waits on
+  the centre spot, nobody kicks, the teams may place their players (``apply_moves``); then
+  the conceding team kicks off.
+* **Kick-off** positions: players standing in the opponents' half are put on the halfway
+  line after the pause that follows a goal, and reflected across it at the start, at half
+  time and when there is no pause; ``apply_moves`` targets are clamped onto it.
+* **Back-pass**: a goalkeeper's catch of a ball whose last play was a team-mate's kick (a
+  pass in flight) is refused: BACK_PASS event and an indirect free kick for the opponents
+  (``back_pass_rule``).
+* **Stuck ball**: a ball within ``stuck_ball_radius`` of one point for ``stuck_ball_cycles``
+  cycles of play on is dropped where it lies, the players within that radius pushed out.
 * **Catch area.** A point robot has no orientation, so the catch rectangle
   (``catch_length`` x ``catch_width``) is aligned from the goalkeeper towards the ball: the
   ball's centre lies on its axis and the catch succeeds when the centre-to-centre distance is
@@ -49,7 +60,9 @@ Decisions where the rules leave room:
   play on (a deflection off a team-mate counts as playing it, and a kicker's own touch in
   the cycle of its kick re-judges the positions rather than clearing them). Kicks from
   kick-ins, corners and goal kicks, and cycles in which both teams play the ball, clear
-  all marks instead; so does the goalkeeper's catch.
+  all marks instead; so does the goalkeeper's catch. A marked player is penalised when it
+  plays the ball (kick or body touch); with ``offside_active_distance`` set, also when it
+  ends a play-on cycle that close to the ball.
 * **Events.** ``GOAL``: team = scoring team, player = last toucher (of the other team on an
   own goal, then ``detail`` = 1). ``OUT``: team/player = last toucher, detail 0 for a
   touchline, 1 for a goal line. ``PASS``: team/player = passer, detail = receiver index; a
