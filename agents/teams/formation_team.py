@@ -291,10 +291,11 @@ class FormationTeam:
                 command.kick[kicker] = skills.distribute(model, view, kicker).kick
             else:
                 decision = skills.decide_on_ball(model, view, kicker, self.style.decision)
-                if decision.action == skills.OnBallAction.DRIBBLE and contested:
-                    # Dribbling against an opponent who kicks the ball too goes nowhere: the
-                    # two kicks cancel. Play it away instead.
-                    command.kick[kicker] = skills.best_clearance(model, view, kicker).kick
+                if contested and decision.action in (skills.OnBallAction.DRIBBLE, skills.OnBallAction.CLEAR):
+                    # Against an opponent who kicks the ball too, a dribble or a clearance up the
+                    # field meets its mirror image and the two kicks cancel: kick it towards
+                    # the nearer touchline instead (both teams doing so add up).
+                    command.kick[kicker] = self._wing_kick(view, kicker)
                 else:
                     command.kick[kicker] = decision.kick
                     if decision.dash is not None:
@@ -302,6 +303,14 @@ class FormationTeam:
         elif goalie_near and not command.catch and skills.should_catch(
                 model, view, self.goalie, teammate_kicked_last=self._our_pass_in_flight):
             command.catch = True
+
+    def _wing_kick(self, view: TeamView, kicker: int) -> np.ndarray:
+        """The kick sending the ball hard towards the nearer touchline, a little forwards."""
+        side = 1.0 if view.ball[1] >= 0.0 else -1.0
+        direction = np.array([0.3, side]) / np.hypot(0.3, 1.0)
+        kick, _ = skills.kick_for_velocity(self.model, view.own_pos[kicker], view.ball, view.ball_vel,
+                                           direction * self.model.kick_speed_max)
+        return kick
 
     def _ball_player(self, view: TeamView, race: skills.BallRace) -> int:
         """Our player who goes for the ball (-1: none can reach it in time)."""
