@@ -17,8 +17,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         "play", help="play one match and print the score and statistics",
         description="Play one match between two teams (registered names or package.module:Attribute "
                     "paths) and print the score and per-team statistics.")
-    parser.add_argument("home", nargs="?", default="chaser", help="home team (default: chaser)")
-    parser.add_argument("away", nargs="?", default="chaser", help="away team (default: chaser)")
+    parser.add_argument("home", nargs="?", default="mmd+msd2", help="home team (default: mmd+msd2)")
+    parser.add_argument("away", nargs="?", default="press-433", help="away team (default: press-433)")
     parser.add_argument("--seed", type=int, default=0, help="match seed (default: 0)")
     parser.add_argument("--cycles", type=positive_int, default=None,
                         help="stop after this many cycles (default: the full two halves of 3000); more than "

@@ -85,3 +85,9 @@ def test_bench_skills_times_every_skill(capsys) -> None:
     out = capsys.readouterr().out
     for call in ("ball_race", "decide_on_ball", "best_pass", "dash_to_points"):
         assert call in out
+
+
+def test_play_defaults_to_two_built_in_teams(capsys) -> None:
+    assert main(["play", "--cycles", "60"]) == 0
+    out = capsys.readouterr().out
+    assert "mmd+msd2" in out and "press-433" in out
