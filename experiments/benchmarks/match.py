@@ -10,16 +10,11 @@ from __future__ import annotations
 
 import argparse
 
-from experiments.commands.play import positive_int
+from experiments.benchmarks import add_match_arguments
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--home", default="chaser", help="home team (default: chaser)")
-    parser.add_argument("--away", default="chaser", help="away team (default: chaser)")
-    parser.add_argument("--matches", type=positive_int, default=5, help="timed matches (default: 5)")
-    parser.add_argument("--cycles", type=positive_int, default=None,
-                        help="cycles per match (default: a full match)")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the first match; match i uses seed + i")
+    add_match_arguments(parser, matches=5)
     parser.add_argument("--profile", action="store_true", help="also print a cProfile top list of one match")
     parser.add_argument("--top", type=int, default=25, help="entries in the profile top list (default: 25)")
 

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from experiments.commands.play import positive_int
+from experiments.benchmarks import add_match_arguments
 
 if TYPE_CHECKING:
     from soccer_sim.match import Match
@@ -55,12 +55,7 @@ class NearBallRecorder:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--home", default="chaser", help="home team (default: chaser)")
-    parser.add_argument("--away", default="chaser", help="away team (default: chaser)")
-    parser.add_argument("--matches", type=positive_int, default=10, help="matches to play (default: 10)")
-    parser.add_argument("--cycles", type=positive_int, default=None,
-                        help="cycles per match (default: a full match)")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the first match; match i uses seed + i")
+    add_match_arguments(parser, matches=10)
 
 
 def measure(home: str, away: str, matches: int, seed: int = 0, cycles: int | None = None) -> dict[str, np.ndarray]:

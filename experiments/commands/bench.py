@@ -8,7 +8,8 @@ chosen, so one benchmark's heavy imports never slow another.
 from __future__ import annotations
 
 import argparse
-import importlib
+
+from experiments.commands import add_module_commands
 
 #: Benchmark name -> (module, one-line help).
 BENCHMARKS: dict[str, tuple[str, str]] = {
@@ -21,14 +22,4 @@ BENCHMARKS: dict[str, tuple[str, str]] = {
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
-    parser = subparsers.add_parser("bench", help="run a benchmark and print its tables")
-    bench_sub = parser.add_subparsers(dest="benchmark", metavar="WHAT", required=True)
-    for name, (module_name, help_text) in BENCHMARKS.items():
-        bench_parser = bench_sub.add_parser(name, help=help_text)
-        _add_benchmark(bench_parser, module_name)
-
-
-def _add_benchmark(parser: argparse.ArgumentParser, module_name: str) -> None:
-    module = importlib.import_module(module_name)
-    module.add_arguments(parser)
-    parser.set_defaults(func=module.run)
+    add_module_commands(subparsers, "bench", "run a benchmark and print its tables", "benchmark", "WHAT", BENCHMARKS)

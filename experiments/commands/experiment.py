@@ -8,7 +8,8 @@ adding one line to :data:`STUDIES`.
 from __future__ import annotations
 
 import argparse
-import importlib
+
+from experiments.commands import add_module_commands
 
 #: Study name -> (module, one-line help).
 STUDIES: dict[str, tuple[str, str]] = {
@@ -18,10 +19,4 @@ STUDIES: dict[str, tuple[str, str]] = {
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
-    parser = subparsers.add_parser("experiment", help="run a study and print its tables")
-    study_sub = parser.add_subparsers(dest="study", metavar="NAME", required=True)
-    for name, (module_name, help_text) in STUDIES.items():
-        study_parser = study_sub.add_parser(name, help=help_text)
-        module = importlib.import_module(module_name)
-        module.add_arguments(study_parser)
-        study_parser.set_defaults(func=module.run)
+    add_module_commands(subparsers, "experiment", "run a study and print its tables", "study", "NAME", STUDIES)
