@@ -19,11 +19,17 @@ Formational Positioning"; and the baselines ``"msd"``, ``"msd2"``,
 :func:`distributed_assign` simulates agents with a limited communication range
 that divide targets among themselves while moving (ETSP ASSGMT and GRID ASSGMT
 from "Monotonic Target Assignment for Robotic Networks").
+
+:class:`IncrementalAssignment` inserts new robot-target pairs into a deployed
+team one Hungarian stage per pair, with a tunable trade-off between travel and
+the number of robots reassigned ("Tunable Routing Solutions for Multi-Robot
+Navigation via the Assignment Problem: A 3D Representation of the Matching Graph").
 """
 
 from .api import MMDR_ALGORITHMS, METHOD_ALIASES, METHODS, assign, assign_costs
 from .distributed import DISTRIBUTED_ALGORITHMS, DistributedResult, distributed_assign
 from .errors import AssignmentError
+from .incremental import IncrementalAssignment, Reassignment
 from .result import AssignmentResult
 
 __all__ = [
@@ -37,4 +43,6 @@ __all__ = [
     "DISTRIBUTED_ALGORITHMS",
     "DistributedResult",
     "distributed_assign",
+    "IncrementalAssignment",
+    "Reassignment",
 ]
