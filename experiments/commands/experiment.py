@@ -15,6 +15,7 @@ from experiments.commands import add_module_commands
 STUDIES: dict[str, tuple[str, str]] = {
     "assigners": ("experiments.studies.assigners", "does positioning matter: league, baselines and SCRAM's claims"),
     "distributed": ("experiments.studies.distributed", "distributed assignment under limited communication: completion-time scaling"),
+    "incremental": ("experiments.studies.incremental", "tunable incremental assignment: routes of a new pair versus lambda (Fig. 8)"),
 }
 
 
