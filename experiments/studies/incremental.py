@@ -148,9 +148,9 @@ def _print_tables(summary: list[dict], degree: int | None, args, console) -> Non
     for column in ("λ", "moved", "finish time", "mean dist", "total dist", "vs Dijkstra", "stage ms"):
         table.add_column(column, justify="right")
     for row in summary:
-        table.add_row(f"{row['lam']:.2g}", f"{row['moved']:.1f} ± {row['moved_sd']:.1f}",
-                      f"{row['finishing_time']:.2f} ± {row['finishing_time_sd']:.2f}",
-                      f"{row['mean_distance']:.2f} ± {row['mean_distance_sd']:.2f}",
+        table.add_row(f"{row['lam']:.2g}", f"{row['moved']:.1f}±{row['moved_sd']:.1f}",
+                      f"{row['finishing_time']:.2f}±{row['finishing_time_sd']:.2f}",
+                      f"{row['mean_distance']:.2f}±{row['mean_distance_sd']:.2f}",
                       f"{row['total_distance']:.1f}", f"{row['excess_over_dijkstra_mean']:+.2%}",
                       f"{row['stage_ms']:.1f}")
     console.print(table)
