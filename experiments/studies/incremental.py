@@ -115,6 +115,8 @@ def collect(lambdas: list[float], degree: int | None, args: argparse.Namespace) 
         sites = rng.random((args.n, 2)) * args.side
         probe = IncrementalAssignment(sites, sites, lam=lambdas[0], degree=degree)
         shortest = probe.shortest_route(*corners(args.side))
+        if not math.isfinite(shortest):  # the sparse graph does not join the corners: no route at any lam
+            continue
         for lam in lambdas:
             _, step, ms = route(sites, lam, degree, args.side)
             trials.append(Trial(trial, lam, step.moved, step.reassigned, step.total, step.mean,
@@ -127,6 +129,7 @@ def summarise(trials: list[Trial]) -> list[dict]:
     for lam in sorted({t.lam for t in trials}):
         group = [t for t in trials if t.lam == lam]
         row = {"lam": lam, "trials": len(group)}
+        row["trials"] = len(group)
         for field in ("moved", "finishing_time", "mean_distance", "total_distance", "stage_ms"):
             values = np.array([getattr(t, field) for t in group], dtype=float)
             row[field] = float(values.mean())
@@ -220,6 +223,14 @@ def run(args: argparse.Namespace) -> int:
         return 1
     summary = summarise(trials)
     _print_tables(summary, degree, args, console)
+    if not trials:
+        Console(stderr=True).print(f"error: no deployment's degree-{degree} graph joins the corners", style="red",
+                                   markup=False)
+        return 1
+    skipped = args.trials - len({t.trial for t in trials})
+    if skipped:
+        console.print(f"{skipped} of {args.trials} deployments skipped: their graph does not join the corners",
+                      markup=False)
     console.print(f"{len(trials)} routes in {time.perf_counter() - start:.1f} s", markup=False)
     if args.out is not None:
         _write_csv(args.out / "incremental_trials.csv", [asdict(t) for t in trials])
