@@ -296,10 +296,27 @@ class IncrementalAssignment:
         home = np.concatenate([self._home, np.full(new_r.shape[0], -1, dtype=np.int64)])
         return scaled_problem(positions, all_targets, home, self._lam, self._degree)
 
+    def shortest_route(self, robot: object, target: object) -> float:
+        """Length of Dijkstra's shortest route from a new robot to a new target on the routing graph.
+
+        The graph's nodes are the deployed robots (each on its target), the new
+        robot's start and the new target; its arcs are the real edges of
+        :meth:`scaled_problem` weighted by distance. The paper compares its
+        ``lam = 0`` routes with this; here they have the same length.
+        """
+        from scipy.sparse import csr_matrix
+        from scipy.sparse.csgraph import dijkstra
+
+        problem = self.scaled_problem([robot], [target])
+        n = problem.n_targets - 1  # deployed robots; node n is the new target, node n + 1 the new robot's start
+        real = problem.cols != np.concatenate([self._home, [-1]])[problem.rows]
+        start = np.where(problem.rows == n, n + 1, self._home[np.minimum(problem.rows, n - 1)])
+        graph = csr_matrix((-problem.utilities[real], (start[real], problem.cols[real])), shape=(n + 2, n + 2))
+        return float(dijkstra(graph, indices=n + 1)[n])
+
     def add(self, robot: object, target: object) -> Reassignment:
         """Insert one new robot (position ``robot``) and one new target; one Hungarian stage."""
-        return self.add_pairs(np.asarray(robot, dtype=np.float64).reshape(1, -1) if _is_vector(robot) else robot,
-                              np.asarray(target, dtype=np.float64).reshape(1, -1) if _is_vector(target) else target)
+        return self.add_pairs([robot], [target])
 
     def add_pairs(self, robots: object, targets: object) -> Reassignment:
         """Insert several new robots and as many targets at once; one stage per new robot.
@@ -381,9 +398,3 @@ class IncrementalAssignment:
         self._history.append(step)
         return step
 
-
-def _is_vector(value: object) -> bool:
-    try:
-        return np.ndim(value) == 1
-    except Exception:  # noqa: BLE001 - anything odd is diagnosed by the point checks
-        return False

@@ -107,6 +107,7 @@ def test_lambda_zero_on_a_sparse_graph_routes_along_dijkstras_shortest_path(degr
     for _ in range(4):
         robot, target = np.array([0.0, 0.0]) + rng.random(2), np.array([100.0, 100.0]) - rng.random(2)
         expected = _shortest_route(team, robot, target)
+        assert team.shortest_route(robot, target) == pytest.approx(expected, rel=1e-12)
         step = team.add(robot, target)
         assert step.total == pytest.approx(expected, rel=1e-9)
 
