@@ -365,6 +365,8 @@ class IncrementalAssignment:
             raise AssignmentError(
                 f"add as many new robots as new targets (at least one), got {new_r.shape[0]} and {new_t.shape[0]}"
             )
+        if self._targets.shape[0] == 0:  # an empty team takes the dimension of its first pairs
+            self._targets = self._targets.reshape(0, new_t.shape[1])
         d = self._targets.shape[1]
         for name, array in (("new robots", new_r), ("new targets", new_t)):
             if array.shape[1] != d:

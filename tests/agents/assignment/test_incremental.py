@@ -181,3 +181,12 @@ def test_a_new_pair_out_of_reach_is_refused_and_leaves_the_team_unchanged() -> N
         team.add([-1.0, 0.0], [51.5, 0.0])
     np.testing.assert_array_equal(team.target_of, before)
     assert team.history == [] and len(team.targets) == 4
+
+
+def test_an_empty_team_grows_pair_by_pair_in_three_dimensions() -> None:
+    team = IncrementalAssignment([], [], lam=1.0)
+    assert team.add([0.0, 0.0, 0.0], [3.0, 4.0, 0.0]).total == pytest.approx(5.0)
+    # staying is worth exactly the 1 m hop to the new target, so robot 0 hops and robot 1 takes its place
+    step = team.add([1.0, 0.0, 0.0], [3.0, 5.0, 0.0])
+    assert step.robots.tolist() == [1, 0] and team.target_of.tolist() == [1, 0]
+    assert team.total_travel == pytest.approx(5.0 + np.hypot(2.0, 4.0) + 1.0)
