@@ -174,8 +174,9 @@ def ball_race(model: MotionModel, view: object, eligible: np.ndarray | None = No
     """
     ball, ball_vel = _trajectories(view.ball, view.ball_vel, single=True)
     radius, catch = team_radii(model)
-    own = _players(model, view.own_pos, view.own_vel, view_effort(view, model.players_per_team), radius, catch)
-    opp = _players(model, view.opp_pos, view.opp_vel, None, radius, catch)
+    own = _players(model, view.own_pos, view.own_vel, view_effort(view, model.players_per_team), radius, catch,
+                   radii_checked=True)
+    opp = _players(model, view.opp_pos, view.opp_vel, None, radius, catch, radii_checked=True)
     ours = _intercept_checked(model, ball, ball_vel, *own, _kernel_params(model, -1.0))
     if eligible is not None:
         ours = _only_eligible(ours, eligible)
@@ -227,12 +228,16 @@ def _trajectories(ball: object, ball_vel: object, single: bool) -> tuple[np.ndar
 
 
 def _players(model: MotionModel, pos: object, vel: object, effort: object, radius: object,
-             catch_radius: object) -> tuple[np.ndarray, ...]:
+             catch_radius: object, radii_checked: bool = False) -> tuple[np.ndarray, ...]:
+    """The players' arrays, checked; ``radii_checked``: the radii are the model's own
+    (:func:`team_radii`), already right, and are passed through as they are."""
     pos = float_array("pos", pos, (-1, 2))
     n = pos.shape[0]
     vel = float_array("vel", vel, (n, 2))
     defaults = _defaults(model, n)
     effort = defaults[0] if effort is None else float_array("effort", effort, (n,))
+    if radii_checked and n == model.players_per_team:
+        return pos, vel, effort, radius, catch_radius
     radius = defaults[1] if radius is None else float_array("radius", radius, (n,))
     catch_radius = radius if catch_radius is None else float_array("catch_radius", catch_radius, (n,))
     return pos, vel, effort, radius, catch_radius
