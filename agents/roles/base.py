@@ -9,6 +9,7 @@ from abc import ABC, abstractmethod
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 
 
 @dataclass
@@ -17,49 +18,90 @@ class RoleContext:
     refreshes it every cycle, so an assigner must copy what it keeps."""
 
     ball: np.ndarray
-    """(2,) the ball position the formation was queried at (where the ball will be controlled)."""
+    """(2,) the ball position the formation was queried at (where the ball will be controlled,
+    possibly predicted), metres."""
     own_goal: np.ndarray
     """(2,) centre of our goal, (-half_length, 0)."""
     opp_goal: np.ndarray
-    """(2,) centre of the opponents' goal."""
+    """(2,) centre of the opponents' goal, (half_length, 0)."""
     opponents: np.ndarray
     """(n_opp, 2) opponent positions."""
     field_half_length: float
+    """Half the field's length (m): the goal lines are at x = +-field_half_length."""
     field_half_width: float
+    """Half the field's width (m): the touchlines are at y = +-field_half_width."""
     cycle: int
+    """The match cycle (100 ms each); hysteresis counts in these."""
     attacking: bool
-    """True when we expect to control the ball first."""
+    """The situation: True when we expect to control the ball first (we attack)."""
     penalty_area_length: float = 16.5
+    """Depth of the penalty area from the goal line (m; rcssserver's default)."""
     penalty_area_half_width: float = 20.16
+    """Half the penalty area's width (m; rcssserver's default)."""
 
 
 def offensive_order(targets: np.ndarray) -> np.ndarray:
     """Role indices from the most to the least offensive: by target x descending, ties by role
-    index. ``targets`` (k, 2) role target positions."""
-    return np.lexsort((np.arange(targets.shape[0]), -targets[:, 0]))
+    index. ``targets`` (k, 2) role target positions (team frame)."""
+    return np.argsort(-targets[:, 0], kind="stable")
+
+
+@njit(cache=True, nogil=True)
+def is_permutation(order: np.ndarray, k: int) -> bool:  # pragma: no cover - compiled
+    """Whether ``order`` (k,) holds every index of ``range(k)`` exactly once."""
+    if order.shape[0] != k:
+        return False
+    seen = np.zeros(k, dtype=np.bool_)
+    for r in order:
+        if r < 0 or r >= k or seen[r]:
+            return False
+        seen[r] = True
+    return True
 
 
 class RoleAssigner(ABC):
     """Maps the outfield players to the outfield roles every cycle.
 
-    ``assign`` returns ``role_of_player`` (k,), a permutation of ``range(k)``: player row i
-    (of ``players``) takes role ``role_of_player[i]`` (row of ``targets``). An assigner may
-    also name a player to go for the ball (:meth:`ball_player`) and move the others to points
-    other than their targets (:meth:`steer`); the defaults leave both to the team.
+    Call :meth:`reset` once per match, then :meth:`assign` every cycle (and, if the team wants
+    the assigner's positioning, :meth:`steer` with its answer). ``assign`` returns
+    ``role_of_player`` (k,) int64, a permutation of ``range(k)``: player row i (of ``players``)
+    takes role ``role_of_player[i]`` (row of ``targets``). The returned array belongs to the
+    caller. An assigner may also name a player to go for the ball (:meth:`ball_player`) and
+    move the others to points other than their targets (:meth:`steer`); the defaults leave
+    both to the team.
     """
 
     name: str = ""
+    n_roles: int | None = None
+    """Roles (= players) per call, set by :meth:`reset`."""
+    rng: np.random.Generator | None = None
+    """The team's seeded generator, set by :meth:`reset`: the only source of randomness."""
 
     def reset(self, n_roles: int, rng: np.random.Generator) -> None:
-        """A new match with ``n_roles`` roles; ``rng`` is the team's seeded generator."""
-        self.n_roles = n_roles
+        """A new match with ``n_roles`` roles (and as many players); ``rng`` is the team's
+        seeded generator. Forgets everything remembered from a previous match."""
+        if isinstance(n_roles, bool) or not isinstance(n_roles, (int, np.integer)) or n_roles < 1:
+            raise ValueError(f"role assigner {self.name!r}: n_roles must be a positive integer, got {n_roles!r}")
+        if not isinstance(rng, np.random.Generator):
+            raise ValueError(f"role assigner {self.name!r}: rng must be a numpy Generator, got {type(rng).__name__}")
+        self.n_roles = int(n_roles)
         self.rng = rng
 
     @abstractmethod
     def assign(self, players: np.ndarray, targets: np.ndarray, role_order: np.ndarray,
                previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
-        """``players`` (k, 2), ``targets`` (k, 2) (row r: role r's target), ``role_order`` (k,)
-        roles most offensive first, ``previous`` (k,) last cycle's ``role_of_player`` or None."""
+        """Which role each player takes.
+
+        Args:
+            players: (k, 2) float64 outfield player positions.
+            targets: (k, 2) float64 role target positions (row r: role r's target).
+            role_order: (k,) role indices, most offensive first (:func:`offensive_order`).
+            previous: (k,) last cycle's ``role_of_player``, or None on the first cycle.
+            context: the rest of the situation.
+
+        Returns:
+            ``role_of_player`` (k,) int64, a permutation of ``range(k)``.
+        """
 
     def ball_player(self) -> int | None:
         """The player (row of the last ``assign``'s ``players``) this assigner sends to the ball,
@@ -68,5 +110,23 @@ class RoleAssigner(ABC):
 
     def steer(self, players: np.ndarray, targets: np.ndarray, role_of_player: np.ndarray,
               context: RoleContext) -> np.ndarray:
-        """(k, 2) where each player should move; by default its role's target."""
+        """(k, 2) where each player should move this cycle; by default its role's target."""
         return targets[role_of_player]
+
+    def check_inputs(self, players: np.ndarray, targets: np.ndarray) -> int:
+        """The number of players k, after checking that :meth:`reset` was called and that
+        ``players`` and ``targets`` are (n_roles, 2) arrays; ValueError naming the problem."""
+        k = self.n_roles
+        if k is None:
+            raise ValueError(f"role assigner {self.name!r}: call reset(n_roles, rng) before assign")
+        if players.shape != (k, 2) or targets.shape != (k, 2):
+            raise ValueError(f"role assigner {self.name!r} was reset for {k} roles: players and targets must "
+                             f"be ({k}, 2) arrays, got players {players.shape} and targets {targets.shape}")
+        return k
+
+    def check_order(self, role_order: np.ndarray, k: int) -> None:
+        """ValueError unless ``role_order`` is a permutation of ``range(k)`` (for assigners that
+        use it)."""
+        if role_order.ndim != 1 or not is_permutation(role_order, k):
+            raise ValueError(f"role assigner {self.name!r}: role_order must be a permutation of range({k}), "
+                             f"got {np.asarray(role_order).tolist()}")

@@ -1,35 +1,56 @@
 """Potential-field bidding, after "Dynamic multi-robot coordination" (Vail and Veloso).
 
-Every player computes every player's bid for every role from the shared state (here one
-cost matrix, lower is better), and the roles are auctioned one after another in a fixed
-priority order, each to the best bidder not yet given a role:
+Every player computes every player's bid for every role from the shared state, and the roles
+are auctioned one after another in a fixed priority order, each to the best bidder not yet
+given a role; every player doing the same computation on the same data reaches the same
+answer, so nothing needs negotiating. Here a bid is a *cost* (lower is better; the paper's
+bids are "higher is better", the same thing negated):
 
-1. the **ball role** (the paper's primary attacker): cost ``min(|p - b|, ball_cap) +
-   angle_weight * theta``, ``theta`` the angle (radians) between the player-to-ball and the
-   ball-to-goal directions, so a player lined up to kick towards the goal bids better;
-2. the ten **formation roles** (the paper's supporters, generalised), in role-index order
-   (the formation's numbering: defenders first): cost ``|p - t_r|`` plus, for a role behind
-   the ball (a defensive supporter), ``goal_side_weight * max(0, p_x - t_x)`` (a player
-   already goal-side of the anchor defends better).
+* the **ball role** (the paper's primary attacker): ``min(|p - b|, ball_cap) + angle_weight
+  * theta``, ``b`` the ball, ``theta`` (radians, 0 to pi) the angle between the
+  player-to-ball and ball-to-opponents'-goal directions: near the ball and lined up behind it
+  to kick towards the goal bids best. Beyond ``ball_cap`` metres only the alignment counts;
+* a **formation role** r (the paper's supporters, generalised to the formation's roles):
+  ``|p - t_r|``, the distance to the role's anchor (its formation target ``t_r``), plus a
+  role term: for a *defensive* role (target behind the ball, ``t_x < b_x``)
+  ``goal_side_weight * max(0, p_x - t_x)``, because a player upfield of a defensive anchor has
+  to run back past the play while one already goal-side is useful at once.
 
-Ten players and eleven roles: the ball player takes the place of the formation role whose
-target is nearest the ball (it is the one covering that area), so every other formation role
-is filled and ``role_of_player`` stays a permutation.
+**Priority order.** The ball role first, then the formation roles in offensive order (most
+offensive first, the ``role_order`` the team gives).
 
-**Hysteresis.** A role's holder keeps it for at least ``min_hold`` cycles after winning it
-(if it is still free at that role's turn); after that a challenger must beat the holder's
-cost by ``switch_margin`` metres. Without it, bids that differ by noise would swap roles
-every cycle.
+**Ten players, eleven roles.** The ball role *replaces* one formation role, the *covered*
+role, which is not auctioned: the winner of the ball role takes it in ``role_of_player``.
+The covered role is the ball player's own formation role (the one it held at the last
+``assign``) while that role's target is at most ``cover_slack`` metres farther from the ball
+than the nearest role target; otherwise the role whose target is nearest the ball (ties to
+the more offensive role). The ball player covers the area around the ball anyway, so every
+other formation role stays filled and ``role_of_player`` remains a permutation; keeping the
+ball player's own role when it is near the play means that a new ball player does not set
+off a chain of role changes.
+
+**Hysteresis** (the paper holds a role for a short time after taking it, so that bids that
+differ by noise do not swap roles every cycle). At a role's turn in the auction its holder
+(the player who won it most recently) keeps it if the holder is still free (not taken by a
+higher-priority role: winning the ball role always wins) and either
+
+* fewer than ``min_hold`` cycles (of ``context.cycle``) have passed since it won the role, or
+* no free player bids better than the holder by more than ``switch_margin`` metres.
+
+Otherwise the best free bidder wins and the role's clock restarts. With ``min_hold = 0`` and
+``switch_margin = 0`` the auction is memoryless.
 
 **Supporters** do not run straight to their targets: :meth:`BiddingAssigner.steer` moves each
-one down the potential field of :mod:`agents.roles.potential_field` anchored at its target
-(offensive terms for roles level with or ahead of the ball, defensive ones behind it).
+one a step down the potential field of :mod:`agents.roles.potential_field` anchored at its
+role's target (offensive terms for roles whose target is level with or ahead of the ball,
+defensive ones for the others). The ball player is steered to its covered role's target; the
+team sends it to the ball (:meth:`BiddingAssigner.ball_player`).
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field, fields, replace
 
 import numpy as np
 from numba import njit
@@ -40,102 +61,157 @@ from agents.roles.base import RoleAssigner, RoleContext
 
 @dataclass(frozen=True)
 class BiddingParams:
-    """Bid weights (metres) and the hysteresis."""
+    """Bid weights (metres of cost), the hysteresis and the supporters' field."""
 
     ball_cap: float = 20.0
     """Distances to the ball beyond this bid alike (m)."""
     angle_weight: float = 3.0
     """Metres of ball distance one radian of misalignment is worth."""
     goal_side_weight: float = 0.5
-    """Cost per metre a defensive supporter stands ahead of its anchor."""
-    min_hold: int = 10
-    """Cycles a player keeps a role it won."""
-    switch_margin: float = 1.0
-    """After ``min_hold``, a challenger must bid this much better (m) to take a role."""
-    field: pf.FieldParams = pf.FieldParams()
+    """Cost per metre a player stands upfield of a defensive role's target."""
+    min_hold: int = 20
+    """Cycles a player keeps a role it won (while it is free at that role's turn): 2 s, the
+    paper's "order of seconds"."""
+    switch_margin: float = 3.0
+    """After ``min_hold``, a challenger must bid this much (m) better than the holder."""
+    cover_slack: float = 10.0
+    """The ball player keeps covering its own formation role while that role's target is at
+    most this much (m) farther from the ball than the nearest role target."""
+    field: pf.FieldParams = field(default_factory=pf.FieldParams)
+    """The supporters' potential field (:class:`agents.roles.potential_field.FieldParams`)."""
+
+    def __post_init__(self) -> None:
+        for name in ("ball_cap", "angle_weight", "goal_side_weight", "switch_margin", "cover_slack"):
+            value = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value < 0:
+                raise ValueError(f"BiddingParams.{name} must be a finite number >= 0, got {value!r}")
+        if isinstance(self.min_hold, bool) or not isinstance(self.min_hold, (int, np.integer)) or self.min_hold < 0:
+            raise ValueError(f"BiddingParams.min_hold must be an integer >= 0 (cycles), got {self.min_hold!r}")
+        if not isinstance(self.field, pf.FieldParams):
+            raise ValueError(f"BiddingParams.field must be a FieldParams, got {type(self.field).__name__}")
+
+    @classmethod
+    def with_overrides(cls, base: BiddingParams | None = None, **overrides: object) -> BiddingParams:
+        """``base`` (default: the defaults) with keyword overrides; a key may name a field of
+        :class:`BiddingParams` or of its ``field`` (:class:`FieldParams`). ValueError listing
+        the valid names for any other key."""
+        base = base or cls()
+        own = {f.name for f in fields(cls)}
+        field_names = {f.name for f in fields(pf.FieldParams)}
+        unknown = sorted(set(overrides) - own - field_names)
+        if unknown:
+            raise ValueError(f"unknown bidding parameter(s) {', '.join(map(repr, unknown))}; valid: "
+                             f"{', '.join(sorted(own))} and the field's {', '.join(sorted(field_names))}")
+        mine = {key: value for key, value in overrides.items() if key in own}
+        theirs = {key: value for key, value in overrides.items() if key not in own}
+        if theirs:
+            mine["field"] = replace(mine.get("field", base.field), **theirs)
+        return replace(base, **mine)
 
 
 class BiddingAssigner(RoleAssigner):
-    """Potential-field bidding (see the module docstring)."""
+    """Potential-field bidding (see the module docstring). ``params`` or keyword overrides of
+    :class:`BiddingParams` (and of its :class:`FieldParams`), e.g. ``BiddingAssigner(min_hold=5)``."""
 
     name = "bidding"
 
-    def __init__(self, params: BiddingParams | None = None) -> None:
-        self.params = params or BiddingParams()
+    def __init__(self, params: BiddingParams | None = None, **overrides: object) -> None:
+        self.params = BiddingParams.with_overrides(params, **overrides)
+        p = self.params
+        self._bid_weights = np.array([p.ball_cap, p.angle_weight, p.goal_side_weight])
+        self._field = p.field.as_array()
+        self._ball_player: int | None = None
+        self.covered = -1
+        """The formation role the ball player took at the last ``assign`` (not auctioned)."""
 
     def reset(self, n_roles: int, rng: np.random.Generator) -> None:
         super().reset(n_roles, rng)
         # Auctioned roles: 0 .. n_roles - 1 the formation roles, n_roles the ball role.
         self.holder = np.full(n_roles + 1, -1, dtype=np.int64)
+        """Player who won each role most recently (-1: nobody yet)."""
         self.since = np.zeros(n_roles + 1, dtype=np.int64)
-        self._ball_player: int | None = None
-        self._covered = -1
+        """Cycle at which each role's holder won it."""
+        self.last_role = np.full(n_roles, -1, dtype=np.int64)
+        """Each player's formation role at the last ``assign`` (-1: none yet)."""
+        self._ball_player = None
+        self.covered = -1
 
     def bids(self, players: np.ndarray, targets: np.ndarray, context: RoleContext) -> np.ndarray:
-        """(k, k + 1) costs: column r < k formation role r, column k the ball role."""
-        p = self.params
-        k = players.shape[0]
-        costs = np.empty((k, k + 1))
-        delta = players[:, None, :] - targets[None, :, :]
-        costs[:, :k] = np.hypot(delta[..., 0], delta[..., 1])
-        behind = targets[:, 0] < context.ball[0]
-        ahead = np.maximum(players[:, 0:1] - targets[None, :, 0], 0.0)
-        costs[:, :k] += np.where(behind[None, :], p.goal_side_weight * ahead, 0.0)
-        to_ball = context.ball - players
-        dist = np.hypot(to_ball[:, 0], to_ball[:, 1])
-        to_goal = context.opp_goal - context.ball
-        goal_dist = float(np.hypot(*to_goal))
-        cos = np.divide(to_ball @ to_goal, dist * goal_dist, out=np.ones(k), where=(dist > 1e-9) & (goal_dist > 1e-9))
-        costs[:, k] = np.minimum(dist, p.ball_cap) + p.angle_weight * np.arccos(np.clip(cos, -1.0, 1.0))
-        return costs
+        """(k, k + 1) costs, lower is better: column r < k formation role r, column k the ball role."""
+        self.check_inputs(players, targets)
+        return _bid_costs(players, targets, context.ball, context.opp_goal, self._bid_weights)
 
-    def assign(self, players, targets, role_order, previous, context):
-        k = players.shape[0]
-        costs = self.bids(players, targets, context)
-        gaps = np.hypot(targets[:, 0] - context.ball[0], targets[:, 1] - context.ball[1])
-        covered = int(np.argmin(gaps))
-        priority = np.concatenate(([k], np.delete(np.arange(k), covered))).astype(np.int64)
-        winners = _auction(costs, priority, self.holder, self.since, context.cycle, self.params.min_hold,
-                           self.params.switch_margin)
-        role_of_player = np.empty(k, dtype=np.int64)
-        role_of_player[winners[priority[1:]]] = priority[1:]
-        ball_player = int(winners[k])
-        role_of_player[ball_player] = covered
-        self._ball_player, self._covered = ball_player, covered
+    def assign(self, players: np.ndarray, targets: np.ndarray, role_order: np.ndarray,
+               previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
+        k = self.check_inputs(players, targets)
+        self.check_order(role_order, k)
+        role_of_player, ball_player, covered = _bidding_round(
+            players, targets, role_order, context.ball, context.opp_goal, self._bid_weights, self.holder,
+            self.since, self.last_role, context.cycle, self.params.min_hold, self.params.switch_margin,
+            self.params.cover_slack)
+        self._ball_player, self.covered = int(ball_player), int(covered)
         return role_of_player
 
     def ball_player(self) -> int | None:
+        """The winner of the ball role at the last ``assign`` (None before the first)."""
         return self._ball_player
 
-    def steer(self, players, targets, role_of_player, context):
+    def steer(self, players: np.ndarray, targets: np.ndarray, role_of_player: np.ndarray,
+              context: RoleContext) -> np.ndarray:
+        """Supporters one step down the potential field anchored at their role targets (at most
+        ``field.max_step`` metres, inside the field); the ball player to its role's target."""
         anchors = targets[role_of_player]
         offensive = anchors[:, 0] >= context.ball[0]
         _, grad = pf.supporter_field(
-            players, anchors, offensive, context.ball, context.own_goal, context.opp_goal,
-            context.field_half_length, context.field_half_width, context.penalty_area_length,
-            context.penalty_area_half_width, self.params.field)
-        goals = pf.descend(players, grad, self.params.field)
+            players, anchors, offensive, bool(context.attacking), context.ball, context.own_goal,
+            context.opp_goal, context.field_half_length, context.field_half_width,
+            context.penalty_area_length, context.penalty_area_half_width, self._field)
+        goals = pf.descend(players, grad, context.field_half_length, context.field_half_width, self._field)
         if self._ball_player is not None:
             goals[self._ball_player] = anchors[self._ball_player]
         return goals
 
 
 @njit(cache=True, nogil=True)
-def _auction(costs: np.ndarray, priority: np.ndarray, holder: np.ndarray, since: np.ndarray, cycle: int,
-             min_hold: int, margin: float) -> np.ndarray:  # pragma: no cover - compiled
-    """Auction the roles (columns of ``costs``) in ``priority`` order, each to the best free
-    bidder, with hysteresis (see the module docstring); updates ``holder``/``since`` and returns
-    the winner of every role (-1 for roles not auctioned)."""
+def _bid_costs(players: np.ndarray, targets: np.ndarray, ball: np.ndarray, goal: np.ndarray,
+               weights: np.ndarray) -> np.ndarray:  # pragma: no cover - compiled
+    """The bid costs of the module docstring; ``weights`` = (ball_cap, angle_weight,
+    goal_side_weight). Returns (k, k + 1): formation roles, then the ball role."""
+    k = players.shape[0]
+    cap, angle_weight, goal_side = weights[0], weights[1], weights[2]
+    costs = np.empty((k, k + 1))
+    gx, gy = goal[0] - ball[0], goal[1] - ball[1]
+    goal_dist = math.hypot(gx, gy)
+    for i in range(k):
+        px, py = players[i, 0], players[i, 1]
+        for r in range(k):
+            c = math.hypot(px - targets[r, 0], py - targets[r, 1])
+            if targets[r, 0] < ball[0] and px > targets[r, 0]:
+                c += goal_side * (px - targets[r, 0])
+            costs[i, r] = c
+        bx, by = ball[0] - px, ball[1] - py
+        d = math.hypot(bx, by)
+        theta = 0.0
+        if d > 1e-9 and goal_dist > 1e-9:
+            theta = math.acos(min(max((bx * gx + by * gy) / (d * goal_dist), -1.0), 1.0))
+        costs[i, k] = min(d, cap) + angle_weight * theta
+    return costs
+
+
+@njit(cache=True, nogil=True)
+def _auction(costs: np.ndarray, priority: np.ndarray, taken: np.ndarray, holder: np.ndarray, since: np.ndarray,
+             cycle: int, min_hold: int, margin: float, winners: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Auction the roles (columns of ``costs``) in ``priority`` order, each to the best bidder
+    not ``taken`` (ties: lower row), with the module docstring's hysteresis. Marks the winners
+    taken, writes them into ``winners[role]`` and updates ``holder`` and ``since``."""
     k = costs.shape[0]
-    taken = np.zeros(k, dtype=np.bool_)
-    winners = np.full(costs.shape[1], -1, dtype=np.int64)
     for role in priority:
         best, best_cost = -1, math.inf
         for i in range(k):
-            if not taken[i] and costs[i, role] < best_cost:
+            if not taken[i] and (best < 0 or costs[i, role] < best_cost):
                 best, best_cost = i, costs[i, role]
         incumbent = holder[role]
-        if incumbent >= 0 and not taken[incumbent] and incumbent != best:
+        if 0 <= incumbent < k and not taken[incumbent] and incumbent != best:
             if cycle - since[role] < min_hold or costs[incumbent, role] - margin <= best_cost:
                 best = incumbent
         if best != incumbent:
@@ -143,4 +219,50 @@ def _auction(costs: np.ndarray, priority: np.ndarray, holder: np.ndarray, since:
             since[role] = cycle
         winners[role] = best
         taken[best] = True
-    return winners
+
+
+@njit(cache=True, nogil=True)
+def _covered_role(targets: np.ndarray, order: np.ndarray, ball: np.ndarray, kept: int,
+                  slack: float) -> int:  # pragma: no cover - compiled
+    """The formation role the ball player covers: ``kept`` (its role so far, -1: none) if that
+    role's target is at most ``slack`` metres farther from the ball than the nearest target,
+    else the role whose target is nearest the ball (ties: the more offensive)."""
+    nearest, gap = -1, math.inf
+    for r in order:
+        d = math.hypot(targets[r, 0] - ball[0], targets[r, 1] - ball[1])
+        if nearest < 0 or d < gap:
+            nearest, gap = r, d
+    if kept >= 0 and math.hypot(targets[kept, 0] - ball[0], targets[kept, 1] - ball[1]) <= gap + slack:
+        return kept
+    return nearest
+
+
+@njit(cache=True, nogil=True)
+def _bidding_round(players: np.ndarray, targets: np.ndarray, order: np.ndarray, ball: np.ndarray,
+                   goal: np.ndarray, weights: np.ndarray, holder: np.ndarray, since: np.ndarray,
+                   last_role: np.ndarray, cycle: int, min_hold: int, margin: float,
+                   slack: float) -> tuple[np.ndarray, int, int]:  # pragma: no cover - compiled
+    """One cycle of bidding: (role_of_player, the ball player, the covered formation role);
+    updates the hysteresis memory (``holder``, ``since``) and ``last_role`` (each player's role)."""
+    k = players.shape[0]
+    costs = _bid_costs(players, targets, ball, goal, weights)
+    taken = np.zeros(k, dtype=np.bool_)
+    winners = np.full(k + 1, -1, dtype=np.int64)
+    _auction(costs, np.array([k]), taken, holder, since, cycle, min_hold, margin, winners)
+    ball_player = winners[k]
+    covered = _covered_role(targets, order, ball, last_role[ball_player], slack)
+    priority = np.empty(k - 1, dtype=np.int64)
+    n = 0
+    for r in order:
+        if r != covered:
+            priority[n] = r
+            n += 1
+    _auction(costs, priority, taken, holder, since, cycle, min_hold, margin, winners)
+    for r in range(k):
+        if r != covered:
+            last_role[winners[r]] = r
+    last_role[ball_player] = covered
+    if holder[covered] != ball_player:
+        holder[covered] = ball_player
+        since[covered] = cycle
+    return last_role.copy(), ball_player, covered

@@ -1,13 +1,14 @@
-"""Role assigners that match players to role targets by distance alone.
+"""Role assigners that match players to role targets by distance alone (no memory).
 
 * ``static``: role i to player i, whatever the positions (the shirt-number roles of
   agent2d/helios-base teams).
-* ``mmdr``, ``mmd+msd2`` (SCRAM: "SCRAM: Scalable Collision-avoiding Role Assignment with
-  Minimal-makespan for Formational Positioning"), ``msd``, ``msd2``, ``greedy`` (the shortest
-  remaining player-role pair first): :func:`agents.assignment.assign` with that method.
-* ``greedy-offense``: roles from the most to the least offensive, each to the nearest free
-  player (the role order of the SCRAM paper's greedy baseline).
-* ``random``: a fresh uniformly random permutation every cycle, from the team's generator.
+* ``mmdr``, ``mmd+msd2`` (from "SCRAM: Scalable Collision-avoiding Role Assignment with
+  Minimal-makespan for Formational Positioning"), ``msd``, ``msd2`` and ``greedy`` (the
+  shortest remaining player-role pair first, ties to the lower player then the lower role):
+  :func:`agents.assignment.assign` with that method on Euclidean distances.
+* ``greedy-offense``: roles from the most to the least offensive, each taken by the nearest
+  free player (ties to the lower player row).
+* ``random``: a fresh uniformly random permutation every call, from the team's generator.
 """
 
 from __future__ import annotations
@@ -18,7 +19,7 @@ import numpy as np
 from numba import njit
 
 from agents.assignment import assign
-from agents.roles.base import RoleAssigner
+from agents.roles.base import RoleAssigner, RoleContext
 
 
 class StaticAssigner(RoleAssigner):
@@ -26,22 +27,25 @@ class StaticAssigner(RoleAssigner):
 
     name = "static"
 
-    def reset(self, n_roles: int, rng: np.random.Generator) -> None:
-        super().reset(n_roles, rng)
-        self._identity = np.arange(n_roles)
-
-    def assign(self, players, targets, role_order, previous, context):
-        return self._identity
+    def assign(self, players: np.ndarray, targets: np.ndarray, role_order: np.ndarray,
+               previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
+        return np.arange(self.check_inputs(players, targets), dtype=np.int64)
 
 
 class MethodAssigner(RoleAssigner):
-    """An assignment method of :mod:`agents.assignment` on player-target distances."""
+    """An assignment method of :mod:`agents.assignment` (``method``) on player-target distances."""
+
+    METHODS = ("greedy", "mmdr", "mmd+msd2", "msd", "msd2")
 
     def __init__(self, method: str) -> None:
+        if method not in self.METHODS:
+            raise ValueError(f"MethodAssigner: unknown method {method!r}; known: {', '.join(self.METHODS)}")
         self.name = method
         self.method = method
 
-    def assign(self, players, targets, role_order, previous, context):
+    def assign(self, players: np.ndarray, targets: np.ndarray, role_order: np.ndarray,
+               previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
+        self.check_inputs(players, targets)
         return assign(players, targets, method=self.method).target_of
 
 
@@ -50,17 +54,22 @@ class GreedyOffenseAssigner(RoleAssigner):
 
     name = "greedy-offense"
 
-    def assign(self, players, targets, role_order, previous, context):
+    def assign(self, players: np.ndarray, targets: np.ndarray, role_order: np.ndarray,
+               previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
+        k = self.check_inputs(players, targets)
+        self.check_order(role_order, k)
         return _greedy_in_order(players, targets, role_order)
 
 
 class RandomAssigner(RoleAssigner):
-    """A uniformly random permutation, drawn anew every cycle."""
+    """A uniformly random permutation, drawn anew from the team's generator every call."""
 
     name = "random"
 
-    def assign(self, players, targets, role_order, previous, context):
-        return self.rng.permutation(players.shape[0])
+    def assign(self, players: np.ndarray, targets: np.ndarray, role_order: np.ndarray,
+               previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
+        k = self.check_inputs(players, targets)
+        return self.rng.permutation(k)
 
 
 @njit(cache=True, nogil=True)
@@ -75,7 +84,7 @@ def _greedy_in_order(players: np.ndarray, targets: np.ndarray,
         for i in range(k):
             if role_of_player[i] < 0:
                 d = (players[i, 0] - tx) ** 2 + (players[i, 1] - ty) ** 2
-                if d < best_d:
+                if d < best_d or best < 0:  # the first free player stands in for NaN distances
                     best, best_d = i, d
         role_of_player[best] = r
     return role_of_player

@@ -1,0 +1,128 @@
+"""The role-assigner interface: registry, offensive order, valid permutations, clear errors."""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+
+from agents.roles import ASSIGNERS, RoleContext, assigner_names, make_assigner, offensive_order
+from tests.agents.roles.role_situations import at_cycle, context, random_field_points, ready, run
+
+NAMES = ("static", "greedy", "greedy-offense", "mmdr", "mmd+msd2", "msd", "msd2", "random", "bidding")
+
+
+def test_every_assigner_of_the_specification_is_registered() -> None:
+    assert assigner_names() == NAMES
+    assert tuple(ASSIGNERS) == NAMES
+    for name in NAMES:
+        assert make_assigner(name).name == name
+
+
+def test_offensive_order_is_by_target_x_descending_then_role_index() -> None:
+    targets = np.array([[0.0, 0.0], [10.0, 5.0], [10.0, -5.0], [-3.0, 0.0], [10.0, 0.0]])
+    assert offensive_order(targets).tolist() == [1, 2, 4, 0, 3]
+    assert offensive_order(np.array([[1.0, 2.0]])).tolist() == [0]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_assigner_returns_a_permutation_for_random_inputs(name: str) -> None:
+    rng = np.random.default_rng(len(name))
+    for k in range(1, 11):
+        assigner = ready(name, k, seed=k)
+        previous = None
+        for cycle in range(6):
+            ctx = context(ball=random_field_points(rng, 1)[0], cycle=cycle, attacking=bool(cycle % 2))
+            players, targets = random_field_points(rng, k), random_field_points(rng, k)
+            role_of_player = run(assigner, players, targets, previous, ctx)
+            assert role_of_player.dtype == np.int64 and role_of_player.shape == (k,)
+            assert sorted(role_of_player.tolist()) == list(range(k)), (name, k, cycle)
+            goals = assigner.steer(players, targets, role_of_player, ctx)
+            assert goals.shape == (k, 2) and np.isfinite(goals).all()
+            ball = assigner.ball_player()
+            assert ball is None or 0 <= ball < k
+            previous = role_of_player
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_assigners_are_deterministic_given_the_generator(name: str) -> None:
+    rng = np.random.default_rng(11)
+    situations = [(random_field_points(rng, 10), random_field_points(rng, 10), random_field_points(rng, 1)[0])
+                  for _ in range(8)]
+
+    def play(seed: int) -> list[list[int]]:
+        assigner, out, previous = ready(name, 10, seed=seed), [], None
+        for cycle, (players, targets, ball) in enumerate(situations):
+            previous = run(assigner, players, targets, previous, context(ball, cycle))
+            out.append(previous.tolist())
+        return out
+
+    assert play(5) == play(5)
+
+
+def test_reset_forgets_the_previous_match() -> None:
+    rng = np.random.default_rng(2)
+    players, targets = random_field_points(rng, 6), random_field_points(rng, 6)
+    for name in ("random", "bidding"):
+        assigner = ready(name, 6, seed=3)
+        first = [run(assigner, players, targets, ctx=context((5.0, 5.0), c)).tolist() for c in range(3)]
+        assigner.reset(6, np.random.default_rng(3))
+        again = [run(assigner, players, targets, ctx=context((5.0, 5.0), c)).tolist() for c in range(3)]
+        assert first == again, name
+
+
+def test_the_default_steer_sends_each_player_to_its_role_target() -> None:
+    targets = np.array([[1.0, 2.0], [3.0, 4.0], [5.0, 6.0]])
+    roles = np.array([2, 0, 1])
+    goals = ready("mmdr", 3).steer(np.zeros((3, 2)), targets, roles, context())
+    assert goals.tolist() == [[5.0, 6.0], [1.0, 2.0], [3.0, 4.0]]
+
+
+def test_unknown_names_are_explained_with_the_known_ones() -> None:
+    with pytest.raises(ValueError, match=r"unknown role assigner 'mmdx'; known: static, greedy, .*bidding"):
+        make_assigner("mmdx")
+
+
+def test_parameters_are_checked_by_name_and_value() -> None:
+    with pytest.raises(ValueError, match="'static' does not take parameters min_hold"):
+        make_assigner("static", min_hold=3)
+    with pytest.raises(ValueError, match="unknown bidding parameter.*'hold'.*valid: .*min_hold"):
+        make_assigner("bidding", hold=3)
+    with pytest.raises(ValueError, match="min_hold must be an integer >= 0"):
+        make_assigner("bidding", min_hold=-1)
+    with pytest.raises(ValueError, match="FieldParams.wall_reach must be > 0"):
+        make_assigner("bidding", wall_reach=0.0)
+    assigner = make_assigner("bidding", min_hold=4, anchor_weight=0.9)
+    assert assigner.params.min_hold == 4 and assigner.params.field.anchor_weight == 0.9
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_bad_calls_name_the_assigner_and_the_problem(name: str) -> None:
+    players, targets = np.zeros((3, 2)), np.arange(6.0).reshape(3, 2)
+    with pytest.raises(ValueError, match=re.escape(f"role assigner '{name}'") + ".*reset"):
+        make_assigner(name).assign(players, targets, np.arange(3), None, context())
+    assigner = ready(name, 3)
+    with pytest.raises(ValueError, match=r"reset for 3 roles.*players \(4, 2\)"):
+        assigner.assign(np.zeros((4, 2)), targets, np.arange(3), None, context())
+    with pytest.raises(ValueError, match=r"targets \(3, 3\)"):
+        assigner.assign(players, np.zeros((3, 3)), np.arange(3), None, context())
+    with pytest.raises(ValueError, match="n_roles must be a positive integer"):
+        make_assigner(name).reset(0, np.random.default_rng(0))
+    with pytest.raises(ValueError, match="rng must be a numpy Generator"):
+        make_assigner(name).reset(3, 7)
+
+
+@pytest.mark.parametrize("name", ["greedy-offense", "bidding"])
+def test_a_role_order_that_is_not_a_permutation_is_refused(name: str) -> None:
+    assigner = ready(name, 3)
+    for order in ([0, 0, 1], [0, 1, 3], [0, 1]):
+        with pytest.raises(ValueError, match=r"role_order must be a permutation of range\(3\)"):
+            assigner.assign(np.zeros((3, 2)), np.arange(6.0).reshape(3, 2), np.array(order), None, context())
+
+
+def test_context_defaults_are_rcssserver_penalty_area() -> None:
+    ctx = context()
+    assert isinstance(ctx, RoleContext)
+    assert ctx.penalty_area_length == 16.5 and ctx.penalty_area_half_width == pytest.approx(40.32 / 2)
+    assert at_cycle(ctx, 9).cycle == 9
