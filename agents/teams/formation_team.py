@@ -348,14 +348,7 @@ class FormationTeam:
     def _keep_onside(self, view: TeamView, ball_player: int) -> None:
         """Outfield goals beyond the offside line (the second-last opponent or the ball, in
         their half) are pulled back behind it by ``offside_margin``."""
-        second_last = float(np.partition(view.opp_pos[:, 0], -2)[-2])
-        line = max(second_last, float(view.ball[0]), 0.0)
-        limit = line - self.style.offside_margin
-        goals_x = self.goals[self.outfield, 0]
-        over = goals_x > limit
-        if over.any():
-            goals_x[over] = max(limit, 0.0)
-            self.goals[self.outfield, 0] = goals_x
+        _pull_onside(self.goals, self.outfield, view.opp_pos, float(view.ball[0]), self.style.offside_margin)
 
     # ------------------------------------------------------------------ set plays
     def _taker(self, view: TeamView) -> int:
@@ -448,3 +441,21 @@ def _as_slice(indices: np.ndarray) -> slice | np.ndarray:
     if indices.size and np.array_equal(indices, np.arange(indices[0], indices[0] + indices.size)):
         return slice(int(indices[0]), int(indices[0]) + indices.size)
     return indices
+
+
+@njit(cache=True, nogil=True)
+def _pull_onside(goals: np.ndarray, rows: np.ndarray, opp_pos: np.ndarray, ball_x: float,
+                 margin: float) -> None:  # pragma: no cover - compiled
+    """Goals of ``rows`` beyond the offside line (the second-last opponent or the ball, never
+    in our half) are pulled back to ``margin`` behind it (but not into our half)."""
+    last = second = -math.inf
+    for i in range(opp_pos.shape[0]):
+        x = opp_pos[i, 0]
+        if x > last:
+            last, second = x, last
+        elif x > second:
+            second = x
+    limit = max(second, ball_x, 0.0) - margin
+    for r in rows:
+        if goals[r, 0] > limit:
+            goals[r, 0] = max(limit, 0.0)
