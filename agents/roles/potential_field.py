@@ -145,6 +145,18 @@ def _huber(e: float, soft: float) -> tuple[float, float]:  # pragma: no cover - 
     return a - 0.5 * soft, (1.0 if e > 0.0 else (-1.0 if e < 0.0 else 0.0))
 
 
+@njit(cache=True, nogil=True, inline="always")
+def _radial_huber(pot: np.ndarray, grad: np.ndarray, i: int, dx: float, dy: float, d: float, excess: float,
+                  weight: float, soft: float) -> None:  # pragma: no cover - compiled
+    """Row ``i`` of a term ``weight * huber(excess, soft)`` where ``excess`` grows one for one
+    with the distance ``d`` along the offset ``(dx, dy)`` (no direction when ``d`` is zero)."""
+    value, slope = _huber(excess, soft)
+    pot[i] = weight * value
+    if d > _EPS:
+        grad[i, 0] = weight * slope * dx / d
+        grad[i, 1] = weight * slope * dy / d
+
+
 @njit(cache=True, nogil=True)
 def walls(points: np.ndarray, half_length: float, half_width: float, weight: float,
           reach: float) -> tuple[np.ndarray, np.ndarray]:  # pragma: no cover - compiled
@@ -240,11 +252,7 @@ def ball_distance(points: np.ndarray, ball: np.ndarray, weight: float, distance:
     for i in range(k):
         dx, dy = points[i, 0] - ball[0], points[i, 1] - ball[1]
         d = math.hypot(dx, dy)
-        value, slope = _huber(d - distance, soft)
-        pot[i] = weight * value
-        if d > _EPS:
-            grad[i, 0] = weight * slope * dx / d
-            grad[i, 1] = weight * slope * dy / d
+        _radial_huber(pot, grad, i, dx, dy, d, d - distance, weight, soft)
     return pot, grad
 
 
@@ -323,11 +331,7 @@ def corridor_block(points: np.ndarray, ball: np.ndarray, goal: np.ndarray, weigh
     grad = np.zeros((k, 2))
     for i in range(k):
         dx, dy, c = _segment_offset(points[i, 0], points[i, 1], ball, goal)
-        value, slope = _huber(c, soft)
-        pot[i] = weight * value
-        if c > _EPS:
-            grad[i, 0] = weight * slope * dx / c
-            grad[i, 1] = weight * slope * dy / c
+        _radial_huber(pot, grad, i, dx, dy, c, c, weight, soft)
     return pot, grad
 
 
@@ -357,11 +361,7 @@ def anchor(points: np.ndarray, anchors: np.ndarray, weight: float,
     for i in range(k):
         dx, dy = points[i, 0] - anchors[i, 0], points[i, 1] - anchors[i, 1]
         d = math.hypot(dx, dy)
-        value, slope = _huber(d, soft)
-        pot[i] = weight * value
-        if d > _EPS:
-            grad[i, 0] = weight * slope * dx / d
-            grad[i, 1] = weight * slope * dy / d
+        _radial_huber(pot, grad, i, dx, dy, d, d, weight, soft)
     return pot, grad
 
 
