@@ -38,6 +38,11 @@ class RoleContext:
     """Depth of the penalty area from the goal line (m; rcssserver's default)."""
     penalty_area_half_width: float = 20.16
     """Half the penalty area's width (m; rcssserver's default)."""
+    ball_reach: np.ndarray | None = None
+    """Optional (k,) how far (m) each outfield player (row of ``players``) effectively is from
+    controlling the ball, when the team knows better than the straight distance to ``ball``
+    (e.g. the cycles its interception takes times the top speed, or inf when it cannot
+    intercept). None: the straight distance. Bidding's ball role uses it."""
 
 
 def offensive_order(targets: np.ndarray) -> np.ndarray:

@@ -6,10 +6,12 @@ given a role; every player doing the same computation on the same data reaches t
 answer, so nothing needs negotiating. Here a bid is a *cost* (lower is better; the paper's
 bids are "higher is better", the same thing negated):
 
-* the **ball role** (the paper's primary attacker): ``min(|p - b|, ball_cap) + angle_weight
-  * theta``, ``b`` the ball, ``theta`` (radians, 0 to pi) the angle between the
-  player-to-ball and ball-to-opponents'-goal directions: near the ball and lined up behind it
-  to kick towards the goal bids best. Beyond ``ball_cap`` metres only the alignment counts;
+* the **ball role** (the paper's primary attacker): ``min(reach, ball_cap) + angle_weight
+  * theta``, ``reach`` the distance ``|p - b|`` to the ball ``b`` (or the team's better
+  estimate, ``context.ball_reach``, e.g. from its interception race), ``theta`` (radians, 0 to
+  pi) the angle between the player-to-ball and ball-to-opponents'-goal directions: near the
+  ball and lined up behind it to kick towards the goal bids best. Beyond ``ball_cap`` metres
+  only the alignment counts;
 * a **formation role** r (the paper's supporters, generalised to the formation's roles):
   ``|p - t_r|``, the distance to the role's anchor (its formation target ``t_r``), plus a
   role term: for a *defensive* role (target behind the ball, ``t_x < b_x``)
@@ -69,10 +71,10 @@ class BiddingParams:
     """Metres of ball distance one radian of misalignment is worth."""
     goal_side_weight: float = 0.5
     """Cost per metre a player stands upfield of a defensive role's target."""
-    min_hold: int = 20
-    """Cycles a player keeps a role it won (while it is free at that role's turn): 2 s, the
-    paper's "order of seconds"."""
-    switch_margin: float = 3.0
+    min_hold: int = 10
+    """Cycles a player keeps a role it won (while it is free at that role's turn): 1 s, the
+    paper's "order of seconds" (longer holds keep a slow player on the ball role)."""
+    switch_margin: float = 1.0
     """After ``min_hold``, a challenger must bid this much (m) better than the holder."""
     cover_slack: float = 10.0
     """The ball player keeps covering its own formation role while that role's target is at
@@ -138,19 +140,32 @@ class BiddingAssigner(RoleAssigner):
 
     def bids(self, players: np.ndarray, targets: np.ndarray, context: RoleContext) -> np.ndarray:
         """(k, k + 1) costs, lower is better: column r < k formation role r, column k the ball role."""
-        self.check_inputs(players, targets)
-        return _bid_costs(players, targets, context.ball, context.opp_goal, self._bid_weights)
+        k = self.check_inputs(players, targets)
+        return _bid_costs(players, targets, context.ball, context.opp_goal, self._reach(context, k), self._bid_weights)
 
     def assign(self, players: np.ndarray, targets: np.ndarray, role_order: np.ndarray,
                previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
         k = self.check_inputs(players, targets)
         self.check_order(role_order, k)
         role_of_player, ball_player, covered = _bidding_round(
-            players, targets, role_order, context.ball, context.opp_goal, self._bid_weights, self.holder,
+            players, targets, role_order, context.ball, context.opp_goal, self._reach(context, k),
+            self._bid_weights, self.holder,
             self.since, self.last_role, context.cycle, self.params.min_hold, self.params.switch_margin,
             self.params.cover_slack)
         self._ball_player, self.covered = int(ball_player), int(covered)
         return role_of_player
+
+    def _reach(self, context: RoleContext, k: int) -> np.ndarray:
+        """``context.ball_reach`` checked, or an empty array (the kernels then use distances)."""
+        reach = context.ball_reach
+        if reach is None:
+            return _NO_REACH
+        if not (isinstance(reach, np.ndarray) and reach.shape == (k,) and reach.dtype == np.float64):
+            raise ValueError(f"role assigner 'bidding': context.ball_reach must be a float64 ({k},) array or None, "
+                             f"got {type(reach).__name__} {getattr(reach, 'shape', '')}")
+        if np.isnan(reach).any():
+            raise ValueError("role assigner 'bidding': context.ball_reach holds NaN")
+        return reach
 
     def ball_player(self) -> int | None:
         """The winner of the ball role at the last ``assign`` (None before the first)."""
@@ -172,11 +187,15 @@ class BiddingAssigner(RoleAssigner):
         return goals
 
 
+_NO_REACH = np.empty(0)
+
+
 @njit(cache=True, nogil=True)
-def _bid_costs(players: np.ndarray, targets: np.ndarray, ball: np.ndarray, goal: np.ndarray,
+def _bid_costs(players: np.ndarray, targets: np.ndarray, ball: np.ndarray, goal: np.ndarray, reach: np.ndarray,
                weights: np.ndarray) -> np.ndarray:  # pragma: no cover - compiled
-    """The bid costs of the module docstring; ``weights`` = (ball_cap, angle_weight,
-    goal_side_weight). Returns (k, k + 1): formation roles, then the ball role."""
+    """The bid costs of the module docstring; ``reach`` (k,) the ball reach of every player, or
+    empty for the straight distance; ``weights`` = (ball_cap, angle_weight, goal_side_weight).
+    Returns (k, k + 1): formation roles, then the ball role."""
     k = players.shape[0]
     cap, angle_weight, goal_side = weights[0], weights[1], weights[2]
     costs = np.empty((k, k + 1))
@@ -194,7 +213,7 @@ def _bid_costs(players: np.ndarray, targets: np.ndarray, ball: np.ndarray, goal:
         theta = 0.0
         if d > 1e-9 and goal_dist > 1e-9:
             theta = math.acos(min(max((bx * gx + by * gy) / (d * goal_dist), -1.0), 1.0))
-        costs[i, k] = min(d, cap) + angle_weight * theta
+        costs[i, k] = min(d if reach.shape[0] == 0 else reach[i], cap) + angle_weight * theta
     return costs
 
 
@@ -239,13 +258,13 @@ def _covered_role(targets: np.ndarray, order: np.ndarray, ball: np.ndarray, kept
 
 @njit(cache=True, nogil=True)
 def _bidding_round(players: np.ndarray, targets: np.ndarray, order: np.ndarray, ball: np.ndarray,
-                   goal: np.ndarray, weights: np.ndarray, holder: np.ndarray, since: np.ndarray,
+                   goal: np.ndarray, reach: np.ndarray, weights: np.ndarray, holder: np.ndarray, since: np.ndarray,
                    last_role: np.ndarray, cycle: int, min_hold: int, margin: float,
                    slack: float) -> tuple[np.ndarray, int, int]:  # pragma: no cover - compiled
     """One cycle of bidding: (role_of_player, the ball player, the covered formation role);
     updates the hysteresis memory (``holder``, ``since``) and ``last_role`` (each player's role)."""
     k = players.shape[0]
-    costs = _bid_costs(players, targets, ball, goal, weights)
+    costs = _bid_costs(players, targets, ball, goal, reach, weights)
     taken = np.zeros(k, dtype=np.bool_)
     winners = np.full(k + 1, -1, dtype=np.int64)
     _auction(costs, np.array([k]), taken, holder, since, cycle, min_hold, margin, winners)

@@ -189,3 +189,21 @@ def test_steered_points_stay_inside_the_field() -> None:
     margin = BiddingParams().field.field_margin
     assert (np.abs(goals[:, 0]) <= HALF_LENGTH - margin + 1e-12).all()
     assert (np.abs(goals[:, 1]) <= HALF_WIDTH - margin + 1e-12).all()
+
+
+def test_the_teams_ball_reach_replaces_the_straight_distance_in_the_ball_bid() -> None:
+    from dataclasses import replace
+
+    players = np.array([[8.0, 0.0], [-5.0, 0.0], [-30.0, 0.0]])  # all lined up behind the ball
+    targets = np.array([[-30.0, 0.0], [0.0, 0.0], [12.0, 0.0]])
+    ctx = context((10.0, 0.0))
+    assigner = ready(3)
+    assert assigner.bids(players, targets, ctx)[:, 3].tolist() == pytest.approx([2.0, 15.0, 20.0])
+    # The team knows player 1 is running onto the ball's path: it is 1 m away in effect.
+    reach = replace(ctx, ball_reach=np.array([4.0, 1.0, np.inf]))
+    assert assigner.bids(players, targets, reach)[:, 3].tolist() == pytest.approx([4.0, 1.0, 20.0])
+    assigner.assign(players, targets, offensive_order(targets), None, reach)
+    assert assigner.ball_player() == 1
+    for bad, message in ((np.array([1.0, 2.0]), r"float64 \(3,\) array"), (np.array([1.0, np.nan, 2.0]), "NaN")):
+        with pytest.raises(ValueError, match=message):
+            assigner.assign(players, targets, offensive_order(targets), None, replace(ctx, ball_reach=bad))
