@@ -45,7 +45,8 @@ Otherwise the best free bidder wins and the role's clock restarts. With ``min_ho
 **Supporters** do not run straight to their targets: :meth:`BiddingAssigner.steer` moves each
 one a step down the potential field of :mod:`agents.roles.potential_field` anchored at its
 role's target (offensive terms for roles whose target is level with or ahead of the ball,
-defensive ones for the others). The ball player is steered to its covered role's target; the
+defensive ones for the others; the shooting corridor is kept clear when ``context.attacking``
+and blocked when not). The ball player is steered to its covered role's target; the
 team sends it to the ball (:meth:`BiddingAssigner.ball_player`).
 """
 
@@ -175,6 +176,7 @@ class BiddingAssigner(RoleAssigner):
               context: RoleContext) -> np.ndarray:
         """Supporters one step down the potential field anchored at their role targets (at most
         ``field.max_step`` metres, inside the field); the ball player to its role's target."""
+        self.check_inputs(players, targets)
         anchors = targets[role_of_player]
         offensive = anchors[:, 0] >= context.ball[0]
         _, grad = pf.supporter_field(
