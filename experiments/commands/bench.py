@@ -16,6 +16,7 @@ BENCHMARKS: dict[str, tuple[str, str]] = {
     "assignment": ("experiments.benchmarks.assignment", "runtime and quality of the role-assignment methods"),
     "formation": ("experiments.benchmarks.formation", "speed of formation queries"),
     "match": ("experiments.benchmarks.match", "speed of whole matches between two teams"),
+    "roles": ("experiments.benchmarks.roles", "microseconds per call of every role assigner"),
     "skills": ("experiments.benchmarks.skills", "microseconds per call of every soccer skill"),
     "soccer": ("experiments.benchmarks.soccer", "goals, shots, passes and crowding near the ball between two teams"),
 }

@@ -91,3 +91,10 @@ def test_play_defaults_to_two_built_in_teams(capsys) -> None:
     assert main(["play", "--cycles", "60"]) == 0
     out = capsys.readouterr().out
     assert "mmd+msd2" in out and "press-433" in out
+
+
+def test_bench_roles_times_every_assigner(capsys) -> None:
+    assert main(["bench", "roles", "--situations", "1", "--number", "2"]) == 0
+    out = capsys.readouterr().out
+    for name in ("mmdr", "mmd+msd2", "bidding", "static"):
+        assert name in out

@@ -1,0 +1,35 @@
+"""``soccer-sim bench roles``: microseconds per call of every role assigner.
+
+The situations and the timing are :func:`agents.roles.timing.time_assigners`'s: random players
+and role targets on the field, each call timed after a warm-up call, the median over
+situations of the best run.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+from experiments.commands.play import positive_int
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--players", type=positive_int, default=10, help="outfield players (default: 10)")
+    parser.add_argument("--situations", type=positive_int, default=20, help="random situations (default: 20)")
+    parser.add_argument("--number", type=positive_int, default=500, help="calls per timing run (default: 500)")
+
+
+def run(args: argparse.Namespace) -> int:
+    from rich.console import Console
+    from rich.table import Table
+
+    from agents.roles.timing import time_assigners
+
+    table = Table(title=f"role assigners: µs per call, {args.players} players, median over {args.situations} situations")
+    columns = ("assign", "steer", "assign+steer")
+    table.add_column("assigner")
+    for column in columns:
+        table.add_column(column, justify="right")
+    for name, times in time_assigners(args.players, args.situations, number=args.number).items():
+        table.add_row(name, *(f"{times[c]:.1f}" if c in times else "" for c in columns))
+    Console().print(table)
+    return 0
