@@ -72,10 +72,16 @@ def run(args: argparse.Namespace) -> int:
         console.print(f"[red]error:[/red] {escape(str(exc))}")
         return 2
     report = match_report(result)
-    if args.json:
-        print(json.dumps(report.as_dict(), indent=2))
-        return 0
-    _print_report(console, report, elapsed)
+    try:
+        if args.json:
+            print(json.dumps(report.as_dict(), indent=2))
+        else:
+            _print_report(console, report, elapsed)
+        sys.stdout.flush()
+    except BrokenPipeError:  # the reader went away (``soccer-sim play --json | head``): not an error
+        import os
+
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no second error at exit
     return 0
 
 

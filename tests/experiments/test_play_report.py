@@ -112,3 +112,16 @@ def test_long_matches_lengthen_both_halves():
     assert play.match_config(1000).total_cycles == 1000 and play.match_config(1000).rules.half_cycles == 3000
     long = play.match_config(100_001)
     assert long.total_cycles == 100_001 and long.rules.half_cycles == 50_001
+
+
+def test_play_json_into_a_closed_pipe_ends_quietly() -> None:
+    import subprocess
+    import sys
+
+    reader = subprocess.Popen([sys.executable, "-c", "import sys; sys.stdin.readline()"], stdin=subprocess.PIPE)
+    player = subprocess.run([sys.executable, "-m", "experiments.cli", "play", "chaser", "idle", "--cycles", "100",
+                             "--json"], stdout=reader.stdin, stderr=subprocess.PIPE, text=True, timeout=120)
+    reader.stdin.close()
+    reader.wait(timeout=30)
+    assert player.returncode == 0
+    assert "Traceback" not in player.stderr
