@@ -19,6 +19,10 @@ class FormationError(ValueError):
         location = f"{source}: {where}" if where else source
         super().__init__(f"{location}: {problem}")
 
+    def __reduce__(self):
+        """Pickle by the constructor's arguments, so the error crosses process boundaries intact."""
+        return type(self), (self.source, self.problem, self.where)
+
     def within(self, prefix: str) -> "FormationError":
         """The same error, located inside *prefix* (e.g. ``formation 'attack'``)."""
         where = f"{prefix}, {self.where}" if self.where else prefix

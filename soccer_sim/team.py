@@ -32,7 +32,13 @@ class TeamError(Exception):
         where = f"team {team_name!r}" + (f", player {player}" if player is not None else "")
         super().__init__(f"{where}: {message}")
         self.team_name = team_name
+        self.message = message
         self.player = player
+
+    def __reduce__(self):
+        """Pickle by the constructor's arguments, so the error crosses process boundaries
+        (a process pool's worker to its parent) intact."""
+        return type(self), (self.team_name, self.message, self.player)
 
 
 @dataclass(frozen=True)
@@ -97,12 +103,13 @@ class TeamView:
             self.capacity = np.full(n, np.inf)
 
 
-@dataclass
+@dataclass(slots=True)
 class TeamCommand:
     """What a team asks its players to do this cycle (own frame, like the view).
 
     The match clips every request to the physical limits (config.PhysicsConfig and the
-    stamina model), so a team may simply ask for "as much as possible".
+    stamina model), so a team may simply ask for "as much as possible". Only the fields below
+    exist: setting any other attribute (a misspelt ``command.kik``) raises AttributeError.
     """
 
     dash: np.ndarray
