@@ -118,10 +118,10 @@ def test_play_json_into_a_closed_pipe_ends_quietly() -> None:
     import subprocess
     import sys
 
-    reader = subprocess.Popen([sys.executable, "-c", "import sys; sys.stdin.readline()"], stdin=subprocess.PIPE)
+    reader = subprocess.Popen([sys.executable, "-c", "pass"], stdin=subprocess.PIPE)
+    reader.wait(timeout=60)  # the reader is gone before anything is written: every write fails
     player = subprocess.run([sys.executable, "-m", "experiments.cli", "play", "chaser", "idle", "--cycles", "100",
                              "--json"], stdout=reader.stdin, stderr=subprocess.PIPE, text=True, timeout=120)
     reader.stdin.close()
-    reader.wait(timeout=30)
     assert player.returncode == 0
     assert "Traceback" not in player.stderr
