@@ -1,0 +1,72 @@
+"""One stored match: what the runner keeps of it, whether it was played or forfeited."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+
+FORFEIT_NONE = -1
+"""``MatchRecord.forfeit`` when no team is at fault (played normally, or a failure of the run)."""
+
+
+@dataclass
+class MatchRecord:
+    """One match (home first): the key, the outcome, every per-team figure and the failure, if any.
+
+    A match whose team raised, sent a malformed command or overran the time budget is
+    *forfeited* by that team: ``error`` holds the message, ``traceback`` the worker's traceback,
+    ``forfeit`` the side at fault (0 home, 1 away) and the goals are None.
+    """
+
+    home: str
+    away: str
+    seed: int
+    config_hash: str
+    code_version: str = ""
+    home_goals: int | None = None
+    away_goals: int | None = None
+    cycles: int = 0
+    wall_time: float = 0.0
+    """Seconds spent playing the match in the worker (or until it was stopped)."""
+    home_stats: dict[str, float] = field(default_factory=dict)
+    """Every figure of :meth:`soccer_sim.TeamStatistics.as_dict` (the team's reported ones included)."""
+    away_stats: dict[str, float] = field(default_factory=dict)
+    error: str | None = None
+    traceback: str | None = None
+    forfeit: int = FORFEIT_NONE
+
+    @property
+    def key(self) -> tuple[str, str, int]:
+        return (self.home, self.away, self.seed)
+
+    @property
+    def played(self) -> bool:
+        """True when the match was played to its end (it has a score)."""
+        return self.error is None
+
+    def names(self) -> tuple[str, str]:
+        return (self.home, self.away)
+
+    def goals(self) -> tuple[int, int]:
+        if self.home_goals is None or self.away_goals is None:
+            raise ValueError(f"match {self.key} has no score: {self.error}")
+        return (self.home_goals, self.away_goals)
+
+    def stats(self, side: int) -> dict[str, float]:
+        return self.home_stats if side == 0 else self.away_stats
+
+    def to_row(self) -> dict[str, object]:
+        """The SQL row (statistics as JSON text)."""
+        return {"home": self.home, "away": self.away, "seed": self.seed, "config_hash": self.config_hash,
+                "code_version": self.code_version, "home_goals": self.home_goals, "away_goals": self.away_goals,
+                "cycles": self.cycles, "wall_time": self.wall_time,
+                "home_stats": json.dumps(self.home_stats, sort_keys=True),
+                "away_stats": json.dumps(self.away_stats, sort_keys=True),
+                "error": self.error, "traceback": self.traceback, "forfeit": self.forfeit}
+
+    @classmethod
+    def from_row(cls, row: dict[str, object]) -> MatchRecord:
+        values = dict(row)
+        values["home_stats"] = json.loads(values.get("home_stats") or "{}")
+        values["away_stats"] = json.loads(values.get("away_stats") or "{}")
+        return cls(**{name: values[name] for name in cls.__dataclass_fields__ if name in values})

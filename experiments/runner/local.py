@@ -1,0 +1,142 @@
+"""The default backend: a pool of worker processes on this machine, one match per task.
+
+Unlike ``concurrent.futures``, the pool watches every worker itself: a worker that dies (a
+crash, ``kill -9``) or overruns a match's time budget is replaced and its match recorded as
+failed, and the run goes on. Workers are reused from match to match (the simulator's compiled
+kernels load once per worker).
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import signal
+import time
+from collections import deque
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+from multiprocessing.connection import Connection, wait
+
+from experiments.results.record import MatchRecord
+from experiments.runner.spec import MatchSpec
+from experiments.runner.worker import failed_record, play_spec
+
+KILL_GRACE = 10.0
+"""Seconds a worker may overrun ``--match-timeout`` before it is killed (its own timer should
+have stopped the match first)."""
+
+
+def _worker_main(connection: Connection, config_hash: str, version: str, timeout: float | None) -> None:
+    """A worker: play the specs the parent sends until it sends None or goes away."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
+    while True:
+        try:
+            spec = connection.recv()
+        except (EOFError, OSError):
+            return
+        if spec is None:
+            return
+        connection.send(play_spec(spec, config_hash, version, timeout))
+
+
+@dataclass
+class _Worker:
+    process: multiprocessing.Process
+    connection: Connection
+    spec: MatchSpec | None = None
+    started: float = 0.0
+
+
+class LocalPool:
+    """``workers`` processes (spawned, so nothing of the parent's state leaks into a match)."""
+
+    def __init__(self, workers: int, config_hash: str, version: str, timeout: float | None) -> None:
+        self.size = workers
+        self._args = (config_hash, version, timeout)
+        self._timeout = timeout
+        self._context = multiprocessing.get_context("spawn")
+        self._workers: list[_Worker] = []
+
+    def _start_worker(self) -> _Worker:
+        parent_end, child_end = self._context.Pipe()
+        process = self._context.Process(target=_worker_main, args=(child_end, *self._args), daemon=True,
+                                        name="soccer-sim-worker")
+        process.start()
+        child_end.close()
+        return _Worker(process, parent_end)
+
+    def run(self, specs: Iterable[MatchSpec]) -> Iterator[MatchRecord]:
+        """Play every spec; yield each record as its match finishes (in any order)."""
+        pending = deque(specs)
+        config_hash, version, _ = self._args
+        try:
+            self._workers = [self._start_worker() for _ in range(min(self.size, len(pending)))]
+            while pending or any(w.spec is not None for w in self._workers):
+                for worker in self._workers:
+                    if worker.spec is None and pending:
+                        worker.spec, worker.started = pending.popleft(), time.monotonic()
+                        worker.connection.send(worker.spec)
+                busy = [w for w in self._workers if w.spec is not None]
+                ready = set(wait([w.connection for w in busy] + [w.process.sentinel for w in busy],
+                                 timeout=self._wait_time(busy)))
+                for i, worker in enumerate(self._workers):
+                    if worker.spec is None:
+                        continue
+                    if worker.connection in ready:
+                        try:
+                            record = worker.connection.recv()
+                        except (EOFError, OSError):
+                            record = None
+                        if record is not None:
+                            worker.spec = None
+                            yield record
+                            continue
+                    if worker.process.sentinel in ready or not worker.process.is_alive():
+                        worker.process.join(1.0)
+                        yield self._failed(worker, config_hash, version,
+                                           f"WorkerDied: the worker process ended with exit code "
+                                           f"{worker.process.exitcode} while playing this match")
+                        self._workers[i] = self._replace(worker)
+                    elif self._overdue(worker):
+                        yield self._failed(worker, config_hash, version,
+                                           f"MatchTimeout: match exceeded its time budget of {self._timeout:g} s "
+                                           "and its worker was killed")
+                        self._workers[i] = self._replace(worker)
+        finally:
+            self.close()
+
+    def _wait_time(self, busy: list[_Worker]) -> float | None:
+        if self._timeout is None:
+            return 1.0
+        now = time.monotonic()
+        return max(0.05, min(w.started + self._timeout + KILL_GRACE - now for w in busy))
+
+    def _overdue(self, worker: _Worker) -> bool:
+        return self._timeout is not None and time.monotonic() > worker.started + self._timeout + KILL_GRACE
+
+    @staticmethod
+    def _failed(worker: _Worker, config_hash: str, version: str, message: str) -> MatchRecord:
+        return failed_record(worker.spec, config_hash, version, time.monotonic() - worker.started, message)
+
+    def _replace(self, worker: _Worker) -> _Worker:
+        _stop(worker)
+        return self._start_worker()
+
+    def close(self) -> None:
+        """Stop every worker (asking first, then killing)."""
+        for worker in self._workers:
+            try:
+                worker.connection.send(None)
+            except (OSError, ValueError):
+                pass
+        deadline = time.monotonic() + 2.0
+        for worker in self._workers:
+            worker.process.join(max(0.0, deadline - time.monotonic()) if worker.spec is None else 0.0)
+            _stop(worker)
+        self._workers = []
+
+
+def _stop(worker: _Worker) -> None:
+    if worker.process.is_alive():
+        worker.process.kill()
+        worker.process.join(5.0)
+    worker.connection.close()

@@ -1,0 +1,84 @@
+"""What the runner plays: match specifications, the configuration they share and its hash.
+
+A match is a pure function of (home, away, seed, configuration), so a specification plus the
+configuration's hash is the key of a stored result: re-running a command plays only the keys
+its results file does not hold yet.
+"""
+
+from __future__ import annotations
+
+import functools
+import hashlib
+import json
+import subprocess
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+from soccer_sim import MatchConfig
+
+
+@dataclass(frozen=True, order=True)
+class MatchSpec:
+    """One match to play: team names (registered names, ``package.module:Attribute`` paths or
+    mixed-team names, see :mod:`experiments.mixed_team`), the seed and the cycle limit."""
+
+    home: str
+    away: str
+    seed: int
+    cycles: int | None = None
+    """``--cycles`` of the command (None: a regulation match); see :func:`config_for`."""
+
+    @property
+    def key(self) -> tuple[str, str, int]:
+        """(home, away, seed): unique within one results file (whose configuration is fixed)."""
+        return (self.home, self.away, self.seed)
+
+    def config(self) -> MatchConfig:
+        return config_for(self.cycles)
+
+
+def config_for(cycles: int | None) -> MatchConfig:
+    """The MatchConfig of ``--cycles`` (the same rule as ``soccer-sim play``)."""
+    from experiments.commands.play import match_config
+
+    return match_config(cycles)
+
+
+def config_description(config: MatchConfig) -> str:
+    """Every parameter of ``config`` as canonical JSON (sorted keys)."""
+    return json.dumps(asdict(config), sort_keys=True, default=str)
+
+
+def config_hash(config: MatchConfig) -> str:
+    """A short stable hash of every parameter of ``config`` (16 hex digits of SHA-256)."""
+    return hashlib.sha256(config_description(config).encode()).hexdigest()[:16]
+
+
+def paired_specs(team: str, opponent: str, games: int, seed: int, cycles: int | None) -> list[MatchSpec]:
+    """``games`` matches between two teams on paired seeds: seed ``seed + k`` is played once
+    with each team at home, so ``games`` is rounded up to an even number. A team against itself
+    plays ``games`` matches on distinct seeds (swapping sides would repeat the same match)."""
+    if team == opponent:
+        return [MatchSpec(team, team, s, cycles) for s in range(seed, seed + games)]
+    return [spec for s in range(seed, seed + (games + 1) // 2)
+            for spec in (MatchSpec(team, opponent, s, cycles), MatchSpec(opponent, team, s, cycles))]
+
+
+@functools.lru_cache(maxsize=1)
+def code_version() -> str:
+    """The package version and, in a git checkout, the commit (``+dirty`` with local changes)."""
+    from importlib import metadata
+
+    try:
+        version = metadata.version("soccer-sim")
+    except metadata.PackageNotFoundError:
+        version = "unknown"
+    root = Path(__file__).resolve().parents[2]
+    try:
+        commit = subprocess.run(["git", "-C", str(root), "rev-parse", "--short", "HEAD"], capture_output=True,
+                                text=True, timeout=10, check=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", str(root), "status", "--porcelain", "--untracked-files=no"],
+                               capture_output=True, text=True, timeout=10, check=True).stdout.strip()
+    except (OSError, subprocess.SubprocessError):
+        return version
+    return f"{version}+{commit}{'.dirty' if dirty else ''}"
