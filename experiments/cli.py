@@ -20,6 +20,8 @@ COMMAND_MODULES: tuple[str, ...] = (
     "experiments.commands.formation",
     "experiments.commands.bench",
     "experiments.commands.experiment",
+    "experiments.commands.tournament",
+    "experiments.commands.results",
 )
 
 

@@ -1,0 +1,84 @@
+"""``soccer-sim results export FILE --csv OUT.csv | --parquet OUT.parquet`` and
+``soccer-sim results show FILE``: a stored run's matches as a flat table, or its tables again.
+
+``show`` prints the same tables as the command that made the file (``tournament``,
+``experiment case-study``, ``experiment drop-in``), from the stored matches alone.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+#: Kind stored in a results file -> the module that made it (``build_specs``, ``report``).
+REPORTERS: dict[str, str] = {
+    "tournament": "experiments.commands.tournament",
+    "case-study": "experiments.studies.case_study",
+    "drop-in": "experiments.studies.drop_in",
+}
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:
+    parser = subparsers.add_parser("results", help="export or show a stored run (SQLite results file)")
+    sub = parser.add_subparsers(dest="action", metavar="ACTION", required=True)
+    export = sub.add_parser("export", help="write one row per match as CSV or Parquet")
+    export.add_argument("file", metavar="FILE", help="results file (e.g. results.sqlite)")
+    target = export.add_mutually_exclusive_group(required=True)
+    target.add_argument("--csv", metavar="OUT.csv", help="write CSV")
+    target.add_argument("--parquet", metavar="OUT.parquet", help="write Parquet (needs pyarrow: the 'parquet' extra)")
+    export.set_defaults(func=run_export)
+    show = sub.add_parser("show", help="print the tables of a stored run")
+    show.add_argument("file", metavar="FILE", help="results file (e.g. results.sqlite)")
+    show.add_argument("--tables", metavar="DIR", default=None, help="also write the CSV/Markdown tables and PNG here")
+    show.set_defaults(func=run_show)
+
+
+def _fail(message: str) -> int:
+    print(f"error: {message}", file=sys.stderr)
+    return 2
+
+
+def run_export(args: argparse.Namespace) -> int:
+    from pathlib import Path
+
+    from experiments.results.export import ExportError, export_csv, export_parquet
+    from experiments.results.store import ResultsError, ResultStore
+
+    try:
+        with ResultStore.open(args.file) as store:
+            records = store.records()
+        path = export_csv(records, Path(args.csv)) if args.csv else export_parquet(records, Path(args.parquet))
+    except (ResultsError, ExportError) as exc:
+        return _fail(str(exc))
+    print(f"wrote {path}: {len(records)} matches")
+    return 0
+
+
+def run_show(args: argparse.Namespace) -> int:
+    import importlib
+    from pathlib import Path
+
+    from experiments.results.store import ResultsError, ResultStore
+
+    try:
+        with ResultStore.open(args.file) as store:
+            kind, params, records, meta = store.kind, store.params, store.records(), store.meta()
+    except ResultsError as exc:
+        return _fail(str(exc))
+    if kind not in REPORTERS:
+        return _fail(f"{args.file}: made by an unknown command {kind!r}; known: {', '.join(REPORTERS)}")
+    module = importlib.import_module(REPORTERS[kind])
+    wanted = {spec.key for spec in module.build_specs(params)}
+    mine = [r for r in records if r.key in wanted]
+    failed = sum(not r.played for r in mine)
+    print(f"{args.file}: {kind}, {len(mine)} of {len(wanted)} matches stored ({failed} failed), "
+          f"configuration {meta.get('config_hash')}, code {sorted({r.code_version for r in mine}) or '-'}")
+    out_dir = None
+    if args.tables:
+        out_dir = Path(args.tables)
+        try:
+            out_dir.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            return _fail(f"--tables {out_dir}: cannot create the directory ({exc.strerror})")
+    module.report(mine, params, out_dir)
+    return 0

@@ -1,0 +1,157 @@
+"""``soccer-sim tournament --teams A,B,C --games N``: a round robin with goal differences and
+standard errors.
+
+Every pairing plays ``N`` matches (rounded up to even) on paired seeds: seed ``s`` once with
+each team at home, the same seeds for every pairing, so two teams' results against a common
+opponent can be compared match by match. Matches are stored in ``--out`` as they finish;
+re-running the same command plays only what is missing. Prints the league table (points,
+W/D/L, goals, mean goal difference and its standard error) and the pairwise goal-difference
+matrix, and writes both as CSV with a PNG (mean goal difference with 95% intervals; the
+pairwise heatmap) to ``--tables``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import itertools
+import math
+from collections.abc import Sequence
+from pathlib import Path
+
+from experiments.commands.play import positive_int
+
+KIND = "tournament"
+DEFAULT_TEAMS = ("mmdr", "mmd+msd2", "static", "greedy")
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:
+    from experiments.runner.options import add_run_arguments, registered_teams_text
+
+    parser = subparsers.add_parser(
+        "tournament", help="round robin: league table and pairwise goal differences with standard errors",
+        description=__doc__.split("\n\n")[0].strip("`"))
+    parser.add_argument("--teams", default=",".join(DEFAULT_TEAMS),
+                        help=f"comma-separated teams (default: {','.join(DEFAULT_TEAMS)}); registered: "
+                             f"{registered_teams_text()}; or package.module:Attribute paths")
+    parser.add_argument("--games", type=positive_int, default=100,
+                        help="matches per pairing, rounded up to even: sides swapped on paired seeds (default: 100)")
+    add_run_arguments(parser, "results.sqlite")
+    parser.set_defaults(func=run)
+
+
+def build_specs(params: dict) -> list:
+    """Every match of the round robin described by ``params`` (teams, games, seed, cycles)."""
+    from experiments.runner.spec import paired_specs
+
+    return [spec for a, b in itertools.combinations(params["teams"], 2)
+            for spec in paired_specs(a, b, params["games"], params["seed"], params["cycles"])]
+
+
+def run(args: argparse.Namespace) -> int:
+    from experiments.runner.options import RunInputError, execute, fail, interrupted, print_failures, tables_dir, team_list
+
+    try:
+        teams = team_list(args.teams, "--teams", minimum=2)
+        params = {"teams": teams, "games": args.games, "seed": args.seed, "cycles": args.cycles}
+        summary = execute(args, KIND, build_specs(params), params)
+        report(summary.records, params, tables_dir(args))
+    except RunInputError as exc:
+        return fail(str(exc))
+    except KeyboardInterrupt:
+        return interrupted(args.out)
+    print_failures(summary)
+    return 0
+
+
+def tables(records: Sequence, teams: Sequence[str]) -> tuple:
+    """(league table, pairwise matrix) as :class:`experiments.reporting.Table`, and the CSV rows
+    of both."""
+    from experiments.reporting import Table
+    from experiments.stats import league_table, pairing_summary
+
+    league = league_table(records, teams)
+    league_table_text = Table(f"league: {len(teams)} teams, {len(records)} matches",
+                              ["#", "team", "games", "points", "W", "D", "L", "forfeits", "GF", "GA", "mean GD (SE)"])
+    league_rows = []
+    for rank, row in enumerate(league, 1):
+        league_table_text.rows.append([str(rank), row.team, str(row.games), str(row.points), str(row.wins),
+                                       str(row.draws), str(row.losses), str(row.forfeits), str(row.goals_for),
+                                       str(row.goals_against), row.goal_difference.text()])
+        gd = row.goal_difference
+        league_rows.append([rank, row.team, row.games, row.points, row.wins, row.draws, row.losses, row.forfeits,
+                            row.goals_for, row.goals_against, gd.mean, gd.se, gd.low, gd.high])
+    matrix = Table("mean goal difference of the row team against the column team (SE)", ["team", *teams])
+    pair_rows = []
+    for team in teams:
+        cells = [team]
+        for opponent in teams:
+            if opponent == team:
+                cells.append("")
+                continue
+            pair = pairing_summary(records, team, opponent)
+            cells.append(pair.goal_difference.text())
+            gd = pair.goal_difference
+            pair_rows.append([team, opponent, pair.games, pair.wins, pair.draws, pair.losses, pair.forfeits,
+                              pair.goals_for, pair.goals_against, gd.mean, gd.se, gd.low, gd.high])
+        matrix.rows.append(cells)
+    return league_table_text, matrix, league_rows, pair_rows
+
+
+def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list[Path]:
+    """Print the league table and the pairwise matrix; with ``out_dir``, write league.csv,
+    pairwise.csv and tournament.png there. Returns the files written."""
+    from experiments.reporting import write_csv
+
+    teams = params["teams"]
+    league, matrix, league_rows, pair_rows = tables(records, teams)
+    league.print()
+    matrix.print()
+    if out_dir is None:
+        return []
+    estimate_columns = ["mean_gd", "se", "ci95_low", "ci95_high"]
+    written = [
+        write_csv(out_dir / "league.csv", ["rank", "team", "games", "points", "wins", "draws", "losses", "forfeits",
+                                           "goals_for", "goals_against", *estimate_columns], league_rows),
+        write_csv(out_dir / "pairwise.csv", ["team", "opponent", "games", "wins", "draws", "losses", "forfeits",
+                                             "goals_for", "goals_against", *estimate_columns], pair_rows),
+        _figure(out_dir / "tournament.png", teams, league_rows, pair_rows),
+    ]
+    print("wrote " + ", ".join(str(path) for path in written))
+    return written
+
+
+def _figure(path: Path, teams: Sequence[str], league_rows: list, pair_rows: list) -> Path:
+    """Left: each team's mean goal difference with its 95% interval; right: the pairwise heatmap."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    order = [row[1] for row in league_rows]
+    means = np.array([row[10] for row in league_rows], dtype=float)
+    half = np.array([(row[13] - row[10]) if not math.isnan(row[13]) else 0.0 for row in league_rows])
+    index = {team: i for i, team in enumerate(teams)}
+    grid = np.full((len(teams), len(teams)), np.nan)
+    for row in pair_rows:
+        grid[index[row[0]], index[row[1]]] = row[9]
+    figure, (bars, heat) = plt.subplots(1, 2, figsize=(12, 4.8), gridspec_kw={"width_ratios": [1, 1.2]})
+    bars.barh(range(len(order)), means, xerr=half, color="tab:blue", alpha=0.8, capsize=3)
+    bars.set_yticks(range(len(order)), order)
+    bars.invert_yaxis()
+    bars.axvline(0.0, color="black", linewidth=0.8)
+    bars.set_xlabel("mean goal difference per match (95% interval)")
+    bars.set_title("league")
+    limit = float(np.nanmax(np.abs(grid))) if np.isfinite(grid).any() else 1.0
+    image = heat.imshow(grid, cmap="RdBu", vmin=-limit or -1.0, vmax=limit or 1.0)
+    heat.set_xticks(range(len(teams)), teams, rotation=45, ha="right")
+    heat.set_yticks(range(len(teams)), teams)
+    for (i, j), value in np.ndenumerate(grid):
+        if np.isfinite(value):
+            heat.text(j, i, f"{value:+.2f}", ha="center", va="center", fontsize=8)
+    heat.set_title("mean goal difference, row team vs column team")
+    figure.colorbar(image, ax=heat, shrink=0.8)
+    figure.tight_layout()
+    figure.savefig(path, dpi=110)
+    plt.close(figure)
+    return path

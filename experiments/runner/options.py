@@ -1,0 +1,139 @@
+"""The options every command that runs matches shares, and running its specs with clear
+messages for bad input (unknown teams, unusable results files, Ray missing, Ctrl-C)."""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from pathlib import Path
+
+from experiments.commands.play import positive_int
+from experiments.runner.run import BACKENDS, DEFAULT_MATCH_TIMEOUT, RunSummary, run_matches
+from experiments.runner.spec import MatchSpec
+
+
+class RunInputError(Exception):
+    """Bad input to a command that runs matches; the message says what and how to fix it."""
+
+
+def positive_float(text: str) -> float:
+    """argparse type: a positive number of seconds."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be a positive number, got {text}") from None
+    if not value > 0 or value == float("inf"):
+        raise argparse.ArgumentTypeError(f"must be a positive number, got {text}")
+    return value
+
+
+def registered_teams_text() -> str:
+    """The registered team names, for --help and error messages."""
+    from soccer_sim import available_teams
+
+    return ", ".join(available_teams())
+
+
+def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None:
+    """--games, --seed, --cycles, --workers, --backend, --address, --out, --tables,
+    --match-timeout, --retry-errors, --no-progress."""
+    parser.add_argument("--seed", type=int, default=0, help="first seed; a pairing plays seeds seed, seed+1, ... (default: 0)")
+    parser.add_argument("--cycles", type=positive_int, default=None,
+                        help="cycles per match (default: a regulation match of 6000); part of the configuration hash")
+    parser.add_argument("--workers", type=positive_int, default=os.cpu_count() or 1,
+                        help="worker processes (default: every core); with --backend ray: at most this many CPUs "
+                             "of a local Ray instance")
+    parser.add_argument("--backend", choices=BACKENDS, default="local",
+                        help="local process pool (default) or a Ray cluster (needs: pip install 'soccer-sim[ray]')")
+    parser.add_argument("--address", default=None,
+                        help="Ray cluster to join: 'auto' or HOST:PORT (default: start a local Ray instance)")
+    parser.add_argument("--out", default=default_out,
+                        help=f"SQLite results file; re-running the same command continues it (default: {default_out})")
+    parser.add_argument("--tables", default=None, metavar="DIR",
+                        help="where the CSV/Markdown tables and the PNG go (default: the --out name without its "
+                             "extension, plus '-tables')")
+    parser.add_argument("--match-timeout", type=positive_float, default=DEFAULT_MATCH_TIMEOUT, metavar="SECONDS",
+                        help=f"a match taking longer is stopped and forfeited (default: {DEFAULT_MATCH_TIMEOUT:g})")
+    parser.add_argument("--retry-errors", action="store_true", help="play stored forfeits again")
+    parser.add_argument("--no-progress", action="store_true", help="no progress bar or progress lines")
+
+
+def team_list(text: str, option: str, minimum: int = 1) -> list[str]:
+    """Comma-separated team names, each resolvable (a registered name or an importable
+    ``module:Attribute`` path); a RunInputError listing the registered names otherwise."""
+    from soccer_sim import TeamNotFoundError, available_teams, resolve_team
+
+    names = [name.strip() for name in text.split(",") if name.strip()]
+    if len(names) != len(set(names)):
+        raise RunInputError(f"{option}: a team is named twice in {text!r}")
+    if len(names) < minimum:
+        raise RunInputError(f"{option}: needs at least {minimum} team(s), got {text!r}")
+    known = available_teams()
+    for name in names:
+        if ":" in name:
+            try:
+                resolve_team(name)
+            except TeamNotFoundError as exc:
+                raise RunInputError(f"{option}: {exc}") from None
+        elif name not in known:
+            raise RunInputError(f"{option}: unknown team {name!r}; registered teams: {', '.join(known)}; "
+                                "or give a path 'package.module:Attribute'")
+    return names
+
+
+def tables_dir(args: argparse.Namespace) -> Path:
+    """The directory for the tables and figures (created; a RunInputError if impossible)."""
+    path = Path(args.tables) if args.tables else Path(args.out).with_name(Path(args.out).stem + "-tables")
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise RunInputError(f"--tables {path}: cannot create the directory ({exc.strerror})") from None
+    if not os.access(path, os.W_OK):
+        raise RunInputError(f"--tables {path}: not writable")
+    return path
+
+
+def execute(args: argparse.Namespace, kind: str, specs: list[MatchSpec], params: dict[str, object]) -> RunSummary:
+    """Run ``specs`` into ``args.out``; errors about the file or the backend become RunInputError
+    (KeyboardInterrupt propagates: every finished match is stored)."""
+    from experiments.results.store import ResultsError
+    from experiments.runner.ray_backend import RayUnavailable
+
+    if args.address and args.backend != "ray":
+        raise RunInputError("--address needs --backend ray")
+    try:
+        summary = run_matches(specs, args.out, kind, params, cycles=args.cycles, workers=args.workers,
+                              backend=args.backend, address=args.address, match_timeout=args.match_timeout,
+                              retry_errors=args.retry_errors, progress=not args.no_progress)
+    except (ResultsError, RayUnavailable) as exc:
+        raise RunInputError(str(exc)) from None
+    print(summary.line())
+    return summary
+
+
+def fail(message: str, status: int = 2) -> int:
+    """Print ``error: message`` to stderr and return the exit status."""
+    print(f"error: {message}", file=sys.stderr)
+    return status
+
+
+def interrupted(out: str) -> int:
+    """After Ctrl-C: say what is kept and how to continue; exit status 130."""
+    print(f"interrupted: every finished match is stored in {out}; run the same command again to continue",
+          file=sys.stderr)
+    return 130
+
+
+def print_failures(summary: RunSummary, limit: int = 5) -> None:
+    """A few lines about failed matches (the errors; ``results export`` has the tracebacks)."""
+    from experiments.stats import blamed_team, failures
+
+    failed = failures(summary.records)
+    if not failed:
+        return
+    print(f"{len(failed)} match(es) failed (forfeited by the team named, or not played); first ones:")
+    for record in failed[:limit]:
+        who = blamed_team(record)
+        blame = f"forfeited by {who}" if who else "no team blamed"
+        print(f"  {record.home} v {record.away}, seed {record.seed}: {blame}: {record.error}")
