@@ -103,23 +103,27 @@ class PairingSummary:
 
 def pairing_summary(records: Iterable[MatchRecord], team: str, opponent: str | None = None) -> PairingSummary:
     """W/D/L, goals for and against and mean goal difference of ``team`` (against ``opponent``)."""
+    sides = [(record, side) for record in records for side in sides_of(record, team)
+             if opponent is None or record.names()[1 - side] == opponent]
+    return side_summary(sides, team, opponent)
+
+
+def side_summary(sides: Iterable[tuple[MatchRecord, int]], team: str, opponent: str | None = None) -> PairingSummary:
+    """W/D/L, goals and mean goal difference over (match, side played) pairs."""
     wins = draws = losses = forfeits = goals_for = goals_against = 0
     differences = []
-    for record in records:
-        for side in sides_of(record, team):
-            if opponent is not None and record.names()[1 - side] != opponent:
-                continue
-            if not record.played:
-                if record.forfeit == side:
-                    losses, forfeits = losses + 1, forfeits + 1
-                elif record.forfeit == 1 - side:
-                    wins += 1
-                continue
-            goals = record.goals()
-            goals_for, goals_against = goals_for + goals[side], goals_against + goals[1 - side]
-            difference = goals[side] - goals[1 - side]
-            differences.append(difference)
-            wins, draws, losses = wins + (difference > 0), draws + (difference == 0), losses + (difference < 0)
+    for record, side in sides:
+        if not record.played:
+            if record.forfeit == side:
+                losses, forfeits = losses + 1, forfeits + 1
+            elif record.forfeit == 1 - side:
+                wins += 1
+            continue
+        goals = record.goals()
+        goals_for, goals_against = goals_for + goals[side], goals_against + goals[1 - side]
+        difference = goals[side] - goals[1 - side]
+        differences.append(difference)
+        wins, draws, losses = wins + (difference > 0), draws + (difference == 0), losses + (difference < 0)
     return PairingSummary(team, opponent, wins, draws, losses, forfeits, goals_for, goals_against,
                           estimate(differences))
 
@@ -147,8 +151,6 @@ def paired_comparison(records: Sequence[MatchRecord], a: str, b: str,
                       opponents: Iterable[str] | None = None) -> PairedComparison:
     """Compare ``a`` and ``b`` where both met the same opponent on the same seed and side:
     a's goal difference in that match minus b's in its twin."""
-    from scipy import stats
-
     wanted = None if opponents is None else set(opponents)
 
     def by_situation(team: str) -> dict[tuple[str, int, int], int]:
@@ -164,13 +166,24 @@ def paired_comparison(records: Sequence[MatchRecord], a: str, b: str,
         return found
 
     mine, theirs = by_situation(a), by_situation(b)
-    differences = [mine[key] - theirs[key] for key in sorted(mine.keys() & theirs.keys())]
+    summary, p_value = paired_test([mine[key] - theirs[key] for key in sorted(mine.keys() & theirs.keys())])
+    return PairedComparison(a, b, summary, p_value)
+
+
+def paired_test(differences: Iterable[float]) -> tuple[Estimate, float]:
+    """The mean of paired differences and the two-sided p-value of Student's paired t-test
+    (nan with fewer than two pairs or no spread)."""
+    from scipy import stats
+
     summary = estimate(differences)
     if summary.n < 2 or not summary.se > 0:
-        p_value = math.nan
-    else:
-        p_value = float(2 * stats.t.sf(abs(summary.mean / summary.se), summary.n - 1))
-    return PairedComparison(a, b, summary, p_value)
+        return summary, math.nan
+    return summary, float(2 * stats.t.sf(abs(summary.mean / summary.se), summary.n - 1))
+
+
+def p_text(p_value: float) -> str:
+    """A p-value for a table (``-`` when undefined)."""
+    return "-" if math.isnan(p_value) else f"{p_value:.3g}"
 
 
 def team_figure(records: Iterable[MatchRecord], team: str, figure: str, opponent: str | None = None) -> Estimate:

@@ -16,6 +16,8 @@ STUDIES: dict[str, tuple[str, str]] = {
     "assigners": ("experiments.studies.assigners", "does positioning matter: league, baselines and SCRAM's claims"),
     "distributed": ("experiments.studies.distributed", "distributed assignment under limited communication: completion-time scaling"),
     "incremental": ("experiments.studies.incremental", "tunable incremental assignment: routes of a new pair versus lambda (Fig. 8)"),
+    "case-study": ("experiments.studies.case_study", "SCRAM's Table 5: each role assigner against the reference opponents"),
+    "drop-in": ("experiments.studies.drop_in", "ad hoc teamwork: a SCRAM player and a static-roles player in mixed teams"),
 }
 
 

@@ -1,0 +1,170 @@
+"""``soccer-sim experiment case-study``: Table 5 of "SCRAM: Scalable Collision-avoiding Role
+Assignment with Minimal-makespan for Formational Positioning" in this simulator.
+
+The built-in team with each role assigner (``--teams``) plays each reference opponent and the
+``mmd+msd2`` team (``--opponents``), ``--games`` matches per pairing on paired seeds (sides
+swapped; the same seeds for every pairing). Tables: mean goal difference (standard error) per
+assigner and opponent; per assigner its role switches per minute, teammate contacts and
+distance run per match, and the paired difference of its goal difference from the
+``--baseline`` assigner's against the same reference opponents on the same seeds (with the
+paired t-test's p-value). Written as CSV, Markdown and a PNG to ``--tables``.
+"""
+
+from __future__ import annotations
+
+import argparse
+from collections.abc import Sequence
+from pathlib import Path
+
+KIND = "case-study"
+DEFAULT_TEAMS = ("mmdr", "mmd+msd2", "static", "greedy", "greedy-offense", "bidding")
+DEFAULT_OPPONENTS = ("counter-442", "press-433", "possession", "mmd+msd2")
+BEHAVIOUR = (("role switches / min", "role_switches_per_minute", 1.0),
+             ("teammate contacts", "teammate_contacts", 1.0),
+             ("distance run (km)", "distance_run", 1e-3))
+"""(column, statistic, scale) of the behaviour table."""
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    from experiments.commands.play import positive_int
+    from experiments.runner.options import add_run_arguments, registered_teams_text
+
+    parser.description = __doc__.split("\n\n")[0].strip("`")
+    parser.add_argument("--teams", default=",".join(DEFAULT_TEAMS),
+                        help=f"the assigner variants compared (default: {','.join(DEFAULT_TEAMS)}); registered: "
+                             f"{registered_teams_text()}")
+    parser.add_argument("--opponents", default=",".join(DEFAULT_OPPONENTS),
+                        help=f"their opponents (default: {','.join(DEFAULT_OPPONENTS)})")
+    parser.add_argument("--baseline", default="mmd+msd2",
+                        help="the variant the others are compared with, match by match (default: mmd+msd2)")
+    parser.add_argument("--games", type=positive_int, default=1000,
+                        help="matches per pairing, rounded up to even: sides swapped on paired seeds (default: 1000)")
+    add_run_arguments(parser, "case-study.sqlite")
+
+
+def build_specs(params: dict) -> list:
+    from experiments.runner.spec import paired_specs
+
+    return [spec for team in params["teams"] for opponent in params["opponents"]
+            for spec in paired_specs(team, opponent, params["games"], params["seed"], params["cycles"])]
+
+
+def run(args: argparse.Namespace) -> int:
+    from experiments.runner.options import (RunInputError, execute, fail, interrupted, print_failures, tables_dir,
+                                            team_list)
+
+    try:
+        teams = team_list(args.teams, "--teams")
+        opponents = team_list(args.opponents, "--opponents")
+        if args.baseline not in teams:
+            raise RunInputError(f"--baseline {args.baseline!r} must be one of --teams ({', '.join(teams)})")
+        params = {"teams": teams, "opponents": opponents, "baseline": args.baseline, "games": args.games,
+                  "seed": args.seed, "cycles": args.cycles}
+        summary = execute(args, KIND, build_specs(params), params)
+        report(summary.records, params, tables_dir(args))
+    except RunInputError as exc:
+        return fail(str(exc))
+    except KeyboardInterrupt:
+        return interrupted(args.out)
+    print_failures(summary)
+    return 0
+
+
+def tables(records: Sequence, params: dict) -> tuple:
+    """(goal-difference table, behaviour table, CSV rows of each)."""
+    from experiments.reporting import Table
+    from experiments.stats import p_text as _p_text, paired_comparison, pairing_summary, team_figure
+
+    teams, opponents, baseline = params["teams"], params["opponents"], params["baseline"]
+    goal_table = Table(f"goal difference per match, mean (SE); {params['games']} games per pairing",
+                       ["team (assigner)", *(f"vs {o}" for o in opponents)])
+    goal_rows = []
+    for team in teams:
+        cells = [team]
+        for opponent in opponents:
+            pair = pairing_summary(records, team, opponent)
+            gd = pair.goal_difference
+            cells.append(gd.text())
+            goal_rows.append([team, opponent, pair.games, pair.wins, pair.draws, pair.losses, pair.forfeits,
+                              pair.goals_for, pair.goals_against, gd.mean, gd.se, gd.low, gd.high])
+        goal_table.rows.append(cells)
+    references = [o for o in opponents if o not in teams]
+    behaviour = Table(f"behaviour per match, mean (SE), all opponents; paired with {baseline} against "
+                      f"{', '.join(references) or '(no common opponent)'}",
+                      ["team (assigner)", *(name for name, _, _ in BEHAVIOUR), f"GD minus {baseline} (SE)", "p"])
+    behaviour_rows = []
+    for team in teams:
+        cells, row = [team], [team]
+        for _, figure, scale in BEHAVIOUR:
+            value = team_figure(records, team, figure)
+            cells.append("-" if value.n == 0 else f"{value.mean * scale:.2f} ({value.se * scale:.2f})")
+            row += [value.mean * scale, value.se * scale]
+        if team == baseline:
+            cells += ["", ""]
+            row += [float("nan")] * 3
+        else:
+            paired = paired_comparison(records, team, baseline, references)
+            cells += [paired.difference.text(), _p_text(paired.p_value)]
+            row += [paired.difference.mean, paired.difference.se, paired.p_value]
+        behaviour.rows.append(cells)
+        behaviour_rows.append(row)
+    return goal_table, behaviour, goal_rows, behaviour_rows
+
+
+def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list[Path]:
+    """Print both tables; with ``out_dir`` write case-study.csv, behaviour.csv, case-study.md
+    and case-study.png there. Returns the files written."""
+    from experiments.reporting import write_csv, write_markdown
+
+    goal_table, behaviour, goal_rows, behaviour_rows = tables(records, params)
+    goal_table.print()
+    behaviour.print()
+    if out_dir is None:
+        return []
+    cycles = params["cycles"] or "regulation (6000)"
+    written = [
+        write_csv(out_dir / "case-study.csv", ["team", "opponent", "games", "wins", "draws", "losses", "forfeits",
+                                               "goals_for", "goals_against", "mean_gd", "se", "ci95_low",
+                                               "ci95_high"], goal_rows),
+        write_csv(out_dir / "behaviour.csv",
+                  ["team", *(f"{figure}{suffix}" for _, figure, _ in BEHAVIOUR for suffix in ("", "_se")),
+                   f"gd_minus_{params['baseline']}", "gd_difference_se", "p_value"], behaviour_rows),
+        write_markdown(out_dir / "case-study.md", [goal_table, behaviour],
+                       f"Case study: {len(records)} matches, seeds from {params['seed']}, cycles per match: {cycles}."),
+        _figure(out_dir / "case-study.png", params, goal_rows, behaviour_rows),
+    ]
+    print("wrote " + ", ".join(str(path) for path in written))
+    return written
+
+
+def _figure(path: Path, params: dict, goal_rows: list, behaviour_rows: list) -> Path:
+    """Grouped bars: mean goal difference (± SE) per assigner against each opponent; and the
+    role switches and teammate contacts per assigner."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    teams, opponents = params["teams"], params["opponents"]
+    figure, (goals, switches, contacts) = plt.subplots(1, 3, figsize=(15, 4.5),
+                                                        gridspec_kw={"width_ratios": [2, 1, 1]})
+    width = 0.8 / len(opponents)
+    x = np.arange(len(teams))
+    for k, opponent in enumerate(opponents):
+        rows = [r for r in goal_rows if r[1] == opponent]
+        goals.bar(x + (k - (len(opponents) - 1) / 2) * width, [r[9] for r in rows], width,
+                  yerr=np.nan_to_num([r[10] for r in rows]), capsize=2, label=f"vs {opponent}")
+    goals.axhline(0.0, color="black", linewidth=0.8)
+    goals.set_xticks(x, teams, rotation=30, ha="right")
+    goals.set_ylabel("mean goal difference per match (± SE)")
+    goals.legend(fontsize=8)
+    for axis, column, label in ((switches, 1, "role switches per minute"), (contacts, 3, "teammate contacts per match")):
+        axis.bar(x, [r[column] for r in behaviour_rows], yerr=np.nan_to_num([r[column + 1] for r in behaviour_rows]),
+                 capsize=3, color="tab:gray")
+        axis.set_xticks(x, teams, rotation=30, ha="right")
+        axis.set_title(label)
+    figure.tight_layout()
+    figure.savefig(path, dpi=110)
+    plt.close(figure)
+    return path
