@@ -1,0 +1,18 @@
+"""Shared helpers of the runner's tests."""
+
+from __future__ import annotations
+
+import pytest
+
+SCRIPTED = "tests.experiments.scripted_teams:"
+
+
+def outcome(records) -> list[tuple]:
+    """What must not depend on workers, backend or resuming: key, score, statistics, failure."""
+    return [(r.home, r.away, r.seed, r.config_hash, r.home_goals, r.away_goals, r.cycles, r.home_stats,
+             r.away_stats, r.error, r.forfeit) for r in records]
+
+
+@pytest.fixture
+def scripted():
+    return SCRIPTED

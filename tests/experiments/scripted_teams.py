@@ -1,0 +1,88 @@
+"""Small scripted teams for the runner's tests: they misbehave on purpose, or play a fixed,
+recognisable command (named by ``tests.experiments.scripted_teams:Class`` paths)."""
+
+from __future__ import annotations
+
+import os
+import signal
+import time
+
+import numpy as np
+
+from soccer_sim import TeamCommand
+
+
+class _Still:
+    """Stands still; subclasses change one thing."""
+
+    fail_at = 20
+
+    def reset(self, side_info, config, rng) -> None:
+        n = side_info.players_per_team
+        self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
+
+    def act(self, view) -> TeamCommand:
+        if view.cycle >= self.fail_at:
+            self.misbehave()
+        return self.command
+
+    def misbehave(self) -> None:
+        pass
+
+
+class RaisingTeam(_Still):
+    def misbehave(self) -> None:
+        raise RuntimeError("scripted failure")
+
+
+class NaNTeam(_Still):
+    def misbehave(self) -> None:
+        self.command.dash[3] = np.nan
+
+
+class HangingTeam(_Still):
+    """Sleeps for ever in act(): the worker's timer must stop the match."""
+
+    def misbehave(self) -> None:
+        while True:
+            time.sleep(0.05)
+
+
+class DeafHangingTeam(_Still):
+    """Hangs deaf to the worker's timer (as in compiled code that never returns to Python):
+    the parent must kill the worker."""
+
+    def misbehave(self) -> None:
+        signal.signal(signal.SIGALRM, signal.SIG_IGN)
+        while True:
+            time.sleep(0.05)
+
+
+class CrashingTeam(_Still):
+    """Ends its worker process abruptly (as a crash in native code would)."""
+
+    def misbehave(self) -> None:
+        os._exit(3)
+
+
+class Constant:
+    """Every player dashes by ``dash`` and kicks by ``kick``; the goalkeeper asks to catch if ``catch``."""
+
+    dash, kick, catch = (0.0, 0.0), (0.0, 0.0), False
+
+    def reset(self, side_info, config, rng) -> None:
+        n = side_info.players_per_team
+        self.seen = []
+        self.command = TeamCommand(dash=np.tile(self.dash, (n, 1)), kick=np.tile(self.kick, (n, 1)), catch=self.catch)
+
+    def act(self, view) -> TeamCommand:
+        self.seen.append(view.own_pos.shape)
+        return self.command
+
+
+class Forward(Constant):
+    dash, kick, catch = (0.01, 0.0), (0.5, 0.0), True
+
+
+class Sideways(Constant):
+    dash, kick, catch = (0.0, 0.02), (0.0, 0.0), False

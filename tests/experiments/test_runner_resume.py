@@ -1,0 +1,82 @@
+"""Reproducibility: the same specs give the same records with 1 or 2 workers, and a run killed
+mid-way (kill -9, Ctrl-C) and run again loses and duplicates nothing."""
+
+from __future__ import annotations
+
+import os
+import signal
+import sqlite3
+import subprocess
+import sys
+import time
+
+from experiments.results.store import ResultStore
+from experiments.runner import paired_specs, run_matches
+from tests.experiments.conftest import outcome
+
+COMMAND = ["tournament", "--teams", "chaser,idle,tests.experiments.scripted_teams:Forward", "--games", "12",
+           "--cycles", "400", "--workers", "2", "--no-progress"]
+
+
+def test_one_and_two_workers_give_identical_records(tmp_path) -> None:
+    specs = paired_specs("chaser", "idle", 4, 3, 300) + paired_specs("chaser", "chaser", 2, 3, 300)
+    one = run_matches(specs, tmp_path / "one.sqlite", "tournament", {}, cycles=300, workers=1, progress=False)
+    two = run_matches(specs, tmp_path / "two.sqlite", "tournament", {}, cycles=300, workers=2, progress=False)
+    assert (one.played, two.played, one.errors) == (6, 6, 0)
+    assert outcome(one.records) == outcome(two.records)
+    assert sum(r.home_goals + r.away_goals for r in one.records) > 0
+
+
+def _run(args, cwd, **kwargs) -> subprocess.Popen:
+    return subprocess.Popen([sys.executable, "-m", "experiments.cli", *args], cwd=cwd, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, start_new_session=True, **kwargs)
+
+
+def _rows(path) -> int:
+    try:
+        with sqlite3.connect(path) as db:
+            return db.execute("SELECT COUNT(*) FROM matches").fetchone()[0]
+    except sqlite3.Error:
+        return 0
+
+
+def _interrupt_midway(args, path, sig, cwd) -> subprocess.Popen:
+    process = _run(args, cwd)
+    deadline = time.monotonic() + 60
+    while _rows(path) < 3 and time.monotonic() < deadline and process.poll() is None:
+        time.sleep(0.01)
+    assert process.poll() is None, "the run finished before it could be interrupted"
+    if sig == signal.SIGKILL:
+        os.killpg(process.pid, signal.SIGKILL)          # the whole run, workers included
+    else:
+        process.send_signal(sig)
+    process.wait(30)
+    return process
+
+
+def test_killed_and_interrupted_runs_resume_without_loss_or_duplicates(tmp_path) -> None:
+    cwd = os.getcwd()
+    total = 3 * 12
+    reference = tmp_path / "reference.sqlite"
+    complete = _run([*COMMAND, "--out", str(reference)], cwd)
+    out, err = complete.communicate(timeout=120)
+    assert complete.returncode == 0, err
+    assert "mean goal difference" in out
+
+    for sig, name in ((signal.SIGKILL, "killed"), (signal.SIGINT, "interrupted")):
+        path = tmp_path / f"{name}.sqlite"
+        stopped = _interrupt_midway([*COMMAND, "--out", str(path)], path, sig, cwd)
+        kept = _rows(path)
+        assert 3 <= kept < total
+        if sig == signal.SIGINT:
+            assert stopped.returncode == 130
+            assert "run the same command again" in stopped.stderr.read()
+        resumed = _run([*COMMAND, "--out", str(path)], cwd)
+        out_resumed, err = resumed.communicate(timeout=120)
+        assert resumed.returncode == 0, err
+        assert f"({kept} already stored)" in out_resumed
+        assert _rows(path) == total
+        with ResultStore.open(path) as store, ResultStore.open(reference) as full:
+            assert outcome(store.records()) == outcome(full.records())
+        # The printed tables are the same as those of the uninterrupted run.
+        assert out_resumed.split("\n", 1)[1] == out.split("\n", 1)[1].replace("reference", name)
