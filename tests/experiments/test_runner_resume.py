@@ -10,6 +10,8 @@ import subprocess
 import sys
 import time
 
+import pytest
+
 from experiments.results.store import ResultStore
 from experiments.runner import paired_specs, run_matches
 from tests.experiments.conftest import outcome
@@ -54,29 +56,30 @@ def _interrupt_midway(args, path, sig, cwd) -> subprocess.Popen:
     return process
 
 
-def test_killed_and_interrupted_runs_resume_without_loss_or_duplicates(tmp_path) -> None:
-    cwd = os.getcwd()
+@pytest.mark.parametrize("sig", [signal.SIGKILL, pytest.param(signal.SIGINT, marks=pytest.mark.slow)],
+                         ids=["kill-9", "ctrl-c"])
+def test_a_stopped_run_resumes_without_loss_or_duplicates(tmp_path, capsys, sig) -> None:
+    from experiments.cli import main
+
     total = 3 * 12
     reference = tmp_path / "reference.sqlite"
-    complete = _run([*COMMAND, "--out", str(reference)], cwd)
-    out, err = complete.communicate(timeout=120)
-    assert complete.returncode == 0, err
+    assert main([*COMMAND, "--out", str(reference)]) == 0
+    out = capsys.readouterr().out
     assert "mean goal difference" in out
 
-    for sig, name in ((signal.SIGKILL, "killed"), (signal.SIGINT, "interrupted")):
-        path = tmp_path / f"{name}.sqlite"
-        stopped = _interrupt_midway([*COMMAND, "--out", str(path)], path, sig, cwd)
-        kept = _rows(path)
-        assert 3 <= kept < total
-        if sig == signal.SIGINT:
-            assert stopped.returncode == 130
-            assert "run the same command again" in stopped.stderr.read()
-        resumed = _run([*COMMAND, "--out", str(path)], cwd)
-        out_resumed, err = resumed.communicate(timeout=120)
-        assert resumed.returncode == 0, err
-        assert f"({kept} already stored)" in out_resumed
-        assert _rows(path) == total
-        with ResultStore.open(path) as store, ResultStore.open(reference) as full:
-            assert outcome(store.records()) == outcome(full.records())
-        # The printed tables are the same as those of the uninterrupted run.
-        assert out_resumed.split("\n", 1)[1] == out.split("\n", 1)[1].replace("reference", name)
+    name = "stopped"
+    path = tmp_path / f"{name}.sqlite"
+    stopped = _interrupt_midway([*COMMAND, "--out", str(path)], path, sig, os.getcwd())
+    kept = _rows(path)
+    assert 3 <= kept < total
+    if sig == signal.SIGINT:
+        assert stopped.returncode == 130
+        assert "run the same command again" in stopped.stderr.read()
+    assert main([*COMMAND, "--out", str(path)]) == 0
+    out_resumed = capsys.readouterr().out
+    assert f"({kept} already stored)" in out_resumed
+    assert _rows(path) == total
+    with ResultStore.open(path) as store, ResultStore.open(reference) as full:
+        assert outcome(store.records()) == outcome(full.records())
+    # The printed tables are the same as those of the uninterrupted run.
+    assert out_resumed.split("\n", 1)[1] == out.split("\n", 1)[1].replace("reference", name)
