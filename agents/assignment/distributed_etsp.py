@@ -168,15 +168,16 @@ def simulate_etsp(
 
     ``agents`` ``(n, 2)`` and ``targets`` ``(m, 2)`` are checked float arrays (distinct
     targets, inside the environment, ``n, m >= 1``). With ``max_time=None`` the limit is the
-    paper's bound on any agent's path (distance to its nearest target plus one tour), with
-    a margin; not completing within it would be a defect, never an expected outcome.
+    paper's bound on any agent's path (distance to its nearest target plus one tour) plus
+    one round per target, with a margin; not completing within it would be a defect, never an expected outcome.
     """
     n, m = agents.shape[0], targets.shape[0]
     order = etsp_tour(targets)
     ring = np.ascontiguousarray(targets[order])
     if max_time is None:
         bound = np.sqrt(2.0) * model.side + tour_length(targets, order)
-        max_time = 2.0 * bound / model.v_max + 4.0 * model.round_time
+        # + one round per target: an agent that reaches a target mid-round waits for the next.
+        max_time = 2.0 * bound / model.v_max + (m + 4) * model.round_time
     max_rounds = int(np.ceil(max_time / model.round_time))
 
     from scipy.spatial import cKDTree

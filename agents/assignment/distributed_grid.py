@@ -171,6 +171,12 @@ def _grant(exists: bool, boss: int, granted: np.ndarray, estimate: np.ndarray, c
     return False
 
 
+#: Rows of the per-cell scratch array ``work`` of :func:`_grid_round` (reset after each round).
+(UP_MSG, LEFT_MSG, SENT, YES_BELOW, YES_RIGHT, ENTERS, EXITS, IN_FROM_BELOW, OUT_TO_BELOW, IN_FROM_RIGHT,
+ OUT_TO_RIGHT) = range(11)
+WORK_ROWS = 11
+
+
 @njit(cache=True, nogil=True)
 def _grid_round(
     b: int, side: float, positions: np.ndarray, targets: np.ndarray,
@@ -178,64 +184,67 @@ def _grid_round(
     role: np.ndarray, target: np.ndarray, currcell: np.ndarray, dircol: np.ndarray, dirrow: np.ndarray,
     colfull: np.ndarray, deciding: np.ndarray,
     leader: np.ndarray, delta: np.ndarray, below: np.ndarray, right: np.ndarray, cell_agents: np.ndarray,
-    stats: np.ndarray,
+    led: np.ndarray, n_led: np.ndarray, work: np.ndarray, stats: np.ndarray,
 ) -> None:
     """One communication round: leaders' messages, role assignment in newly reached cells,
-    the decisions of the agents that have reached a cell centre, and the leaders' updates."""
-    cells = b * b
+    the decisions of the agents that have reached a cell centre, and the leaders' updates.
+
+    ``led[:n_led[0]]`` lists the cells that have a leader; ``work`` is zeroed scratch of shape
+    ``(WORK_ROWS, cells)``, left zeroed again. A round costs O(leaders + deciding agents),
+    not O(cells), so fine partitions of large environments stay cheap.
+    """
     n = positions.shape[0]
     # (a) Broadcasts of the leaders in office at the start of the round.
-    up_msg = np.zeros(cells, dtype=np.int64)
-    left_msg = np.zeros(cells, dtype=np.int64)
-    sent = np.zeros(cells, dtype=np.bool_)
-    for cell in range(cells):
-        if leader[cell] >= 0:
-            sent[cell] = True
-            up_msg[cell] = below[cell] + delta[cell]
-            if cell < b:
-                left_msg[cell] = right[cell] + below[cell] + delta[cell]
-    for cell in range(cells):
-        if not sent[cell]:
-            continue
-        if cell >= b and sent[cell - b]:
+    leaders_before = n_led[0]
+    for q in range(leaders_before):
+        cell = led[q]
+        work[SENT, cell] = 1
+        work[UP_MSG, cell] = below[cell] + delta[cell]
+        if cell < b:
+            work[LEFT_MSG, cell] = right[cell] + below[cell] + delta[cell]
+    for q in range(leaders_before):
+        cell = led[q]
+        if cell >= b and work[SENT, cell - b] == 1:
             _note(stats, positions, leader[cell], leader[cell - b])
-        if cell < b and cell % b > 0 and sent[cell - 1]:
+        if cell < b and cell % b > 0 and work[SENT, cell - 1] == 1:
             _note(stats, positions, leader[cell], leader[cell - 1])
     # (b) Role assignment where the first agents reach a leaderless cell that has targets.
-    counts = np.zeros(cells + 1, dtype=np.int64)
+    count = 0
     for a in range(n):
         if deciding[a] and role[a] == SEARCHING:
-            counts[currcell[a] + 1] += 1
-    for cell in range(cells):
-        counts[cell + 1] += counts[cell]
-    fill = counts[:-1].copy()
-    deciders = np.empty(counts[cells], dtype=np.int64)
-    for a in range(n):  # ids ascending within each cell
+            count += 1
+    deciders = np.empty(count, dtype=np.int64)
+    keys = np.empty(count, dtype=np.int64)
+    k = 0
+    for a in range(n):
         if deciding[a] and role[a] == SEARCHING:
-            deciders[fill[currcell[a]]] = a
-            fill[currcell[a]] += 1
-    for cell in range(cells):
-        lo, hi = counts[cell], counts[cell + 1]
-        if leader[cell] >= 0 or hi == lo or cell_ptr[cell + 1] == cell_ptr[cell]:
-            continue
-        chosen = _role_assignment(cell, deciders[lo:hi], hi - lo, positions, targets, cell_ptr, cell_targets,
-                                  taken, role, target, deciding, stats)
-        if chosen >= 0:
-            leader[cell] = chosen
-            row, col = cell // b, cell % b
-            delta[cell] = (cell_ptr[cell + 1] - cell_ptr[cell]) - cell_agents[cell]
-            below[cell] = 0 if row == b - 1 else UNKNOWN
-            right[cell] = 0 if col == b - 1 else UNKNOWN
+            deciders[k] = a
+            keys[k] = currcell[a]
+            k += 1
+    order = np.argsort(keys, kind="mergesort")  # by cell, ids ascending within a cell
+    grouped = deciders[order]
+    lo = 0
+    while lo < count:
+        cell = currcell[grouped[lo]]
+        hi = lo
+        while hi < count and currcell[grouped[hi]] == cell:
+            hi += 1
+        if leader[cell] < 0 and cell_ptr[cell + 1] > cell_ptr[cell]:
+            chosen = _role_assignment(cell, grouped[lo:hi], hi - lo, positions, targets, cell_ptr, cell_targets,
+                                      taken, role, target, deciding, stats)
+            if chosen >= 0:
+                leader[cell] = chosen
+                led[n_led[0]] = cell
+                n_led[0] += 1
+                row, col = cell // b, cell % b
+                delta[cell] = (cell_ptr[cell + 1] - cell_ptr[cell]) - cell_agents[cell]
+                below[cell] = 0 if row == b - 1 else UNKNOWN
+                right[cell] = 0 if col == b - 1 else UNKNOWN
+        lo = hi
     # (c) Decisions, in id order; each touches only its cell's leader and its own state.
-    yes_below = np.zeros(cells, dtype=np.int64)
-    yes_right = np.zeros(cells, dtype=np.int64)
-    enters = np.zeros(cells, dtype=np.int64)
-    exits = np.zeros(cells, dtype=np.int64)
-    in_from_below = np.zeros(cells, dtype=np.int64)
-    out_to_below = np.zeros(cells, dtype=np.int64)
-    in_from_right = np.zeros(cells, dtype=np.int64)
-    out_to_right = np.zeros(cells, dtype=np.int64)
-    for a in range(n):
+    touched = np.empty(2 * count, dtype=np.int64)
+    n_touched = 0
+    for a in deciders:
         if not deciding[a] or role[a] != SEARCHING:
             continue
         cell = currcell[a]
@@ -251,10 +260,12 @@ def _grid_round(
                 taken[t] = True
                 deciding[a] = False
                 continue
+        touched[n_touched] = cell
+        n_touched += 1
         new = -1
         top_row_turn = False
         if dircol[a] == 1:
-            if _grant(row < b - 1, boss, yes_below, below, cell):
+            if _grant(row < b - 1, boss, work[YES_BELOW], below, cell):
                 new = cell + b
             else:
                 dircol[a] = -1
@@ -269,7 +280,7 @@ def _grid_round(
         if top_row_turn:
             if dirrow[a] == 1:
                 colfull[a, col] = True
-                if _grant(col < b - 1, boss, yes_right, right, cell):
+                if _grant(col < b - 1, boss, work[YES_RIGHT], right, cell):
                     new = cell + 1
                 else:
                     dirrow[a] = -1
@@ -285,19 +296,21 @@ def _grid_round(
             role[a] = STOPPED  # no column left to search
             deciding[a] = False
             continue
+        touched[n_touched] = new
+        n_touched += 1
         # Leave `cell` for `new`: exit to this cell's leader, enter to the new cell's leader.
-        exits[cell] += 1
-        enters[new] += 1
+        work[EXITS, cell] += 1
+        work[ENTERS, new] += 1
         cell_agents[cell] -= 1
         cell_agents[new] += 1
         if new == cell + b:
-            out_to_below[cell] += 1
+            work[OUT_TO_BELOW, cell] += 1
         elif new == cell - b:
-            in_from_below[new] += 1
+            work[IN_FROM_BELOW, new] += 1
         elif new == cell + 1:
-            out_to_right[cell] += 1
+            work[OUT_TO_RIGHT, cell] += 1
         else:
-            in_from_right[new] += 1
+            work[IN_FROM_RIGHT, new] += 1
         if boss >= 0:
             _note(stats, positions, a, boss)
         if leader[new] >= 0:
@@ -305,22 +318,28 @@ def _grid_round(
         currcell[a] = new
         deciding[a] = False
     # (d) Leaders update their estimates from the messages of this round.
-    for cell in range(cells):
-        if leader[cell] < 0:
-            continue
+    for q in range(n_led[0]):
+        cell = led[q]
         row, col = cell // b, cell % b
         if row == 0:
-            if col < b - 1 and sent[cell + 1]:
-                right[cell] = left_msg[cell + 1]
-            right[cell] += in_from_right[cell] - out_to_right[cell]
-            if right[cell] > 0 and in_from_right[cell] > 0:
+            if col < b - 1 and work[SENT, cell + 1] == 1:
+                right[cell] = work[LEFT_MSG, cell + 1]
+            right[cell] += work[IN_FROM_RIGHT, cell] - work[OUT_TO_RIGHT, cell]
+            if right[cell] > 0 and work[IN_FROM_RIGHT, cell] > 0:
                 right[cell] = 0
-        if row < b - 1 and sent[cell + b]:
-            below[cell] = up_msg[cell + b]
-        below[cell] += in_from_below[cell] - out_to_below[cell]
-        if below[cell] > 0 and in_from_below[cell] > 0:
+        if row < b - 1 and work[SENT, cell + b] == 1:
+            below[cell] = work[UP_MSG, cell + b]
+        below[cell] += work[IN_FROM_BELOW, cell] - work[OUT_TO_BELOW, cell]
+        if below[cell] > 0 and work[IN_FROM_BELOW, cell] > 0:
             below[cell] = 0
-        delta[cell] += exits[cell] - enters[cell]
+        delta[cell] += work[EXITS, cell] - work[ENTERS, cell]
+    # Leave the scratch zeroed for the next round.
+    for q in range(leaders_before):
+        for w in range(WORK_ROWS):
+            work[w, led[q]] = 0
+    for q in range(n_touched):
+        for w in range(WORK_ROWS):
+            work[w, touched[q]] = 0
 
 
 @njit(cache=True, nogil=True)
@@ -395,6 +414,9 @@ def simulate_grid(
     deciding = np.ones(n, dtype=np.bool_)
     taken = np.zeros(m, dtype=np.bool_)
     leader = np.full(cells, -1, dtype=np.int64)
+    led = np.empty(cells, dtype=np.int64)
+    n_led = np.zeros(1, dtype=np.int64)
+    work = np.zeros((WORK_ROWS, cells), dtype=np.int64)
     delta = np.zeros(cells, dtype=np.int64)
     below = np.zeros(cells, dtype=np.int64)
     right = np.zeros(cells, dtype=np.int64)
@@ -411,7 +433,8 @@ def simulate_grid(
     while not completed and rounds < max_rounds:
         now = rounds * model.round_time
         _grid_round(b, side, positions, targets, cell_ptr, cell_targets, taken, role, target, currcell,
-                    dircol, dirrow, colfull, deciding, leader, delta, below, right, cell_agents, stats)
+                    dircol, dirrow, colfull, deciding, leader, delta, below, right, cell_agents, led, n_led, work,
+                    stats)
         _set_goals(b, side, positions, targets, role, target, currcell, deciding, goals, moving)
         move_toward(positions, goals, moving, model.step, travelled, arrived_at, now, model.v_max)
         rounds += 1
