@@ -270,3 +270,14 @@ def test_bad_input_is_refused_with_a_clear_error(kwargs, message):
     call.update(kwargs)
     with pytest.raises(AssignmentError, match=message):
         distributed_assign(call.pop("agents"), call.pop("targets"), call.pop("side"), call.pop("r_comm"), **call)
+
+
+@pytest.mark.parametrize("algorithm", ALGORITHMS)
+def test_coarsest_rounds_and_tightly_clustered_targets_complete(algorithm):
+    """Rounds as rare as allowed (an agent crosses r_comm between two) and 60 targets within
+    half a unit: many agents reach a target mid-round and wait, yet the run completes."""
+    rng = np.random.default_rng(4)
+    targets = 50 + rng.uniform(0, 0.5, (60, 2))
+    agents = rng.uniform(0, 100, (60, 2))
+    result = distributed_assign(agents, targets, 100.0, 40.0, algorithm=algorithm, round_time=40.0)
+    _check_complete(result, agents, targets)
