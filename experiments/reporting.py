@@ -8,6 +8,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 
+ESTIMATE_COLUMNS = ["mean_gd", "se", "ci95_low", "ci95_high"]
+"""CSV columns of a goal-difference estimate (:class:`experiments.stats.Estimate`)."""
+
+
 @dataclass
 class Table:
     """A titled table of text cells; the first column is a label (left-aligned)."""

@@ -25,14 +25,12 @@ DEFAULT_TEAMS = ("mmdr", "mmd+msd2", "static", "greedy")
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
-    from experiments.runner.options import add_run_arguments, registered_teams_text
+    from experiments.runner.options import add_run_arguments, add_team_option
 
     parser = subparsers.add_parser(
         "tournament", help="round robin: league table and pairwise goal differences with standard errors",
         description=__doc__.split("\n\n")[0].strip("`"))
-    parser.add_argument("--teams", default=",".join(DEFAULT_TEAMS),
-                        help=f"comma-separated teams (default: {','.join(DEFAULT_TEAMS)}); registered: "
-                             f"{registered_teams_text()}; or package.module:Attribute paths")
+    add_team_option(parser, "--teams", DEFAULT_TEAMS, "the teams")
     parser.add_argument("--games", type=positive_int, default=100,
                         help="matches per pairing, rounded up to even: sides swapped on paired seeds (default: 100)")
     add_run_arguments(parser, "results.sqlite")
@@ -48,19 +46,16 @@ def build_specs(params: dict) -> list:
 
 
 def run(args: argparse.Namespace) -> int:
-    from experiments.runner.options import RunInputError, execute, fail, interrupted, print_failures, tables_dir, team_list
+    from experiments.runner.options import run_command
 
-    try:
-        teams = team_list(args.teams, "--teams", minimum=2)
-        params = {"teams": teams, "games": args.games, "seed": args.seed, "cycles": args.cycles}
-        summary = execute(args, KIND, build_specs(params), params)
-        report(summary.records, params, tables_dir(args))
-    except RunInputError as exc:
-        return fail(str(exc))
-    except KeyboardInterrupt:
-        return interrupted(args.out)
-    print_failures(summary)
-    return 0
+    return run_command(args, KIND, _params, build_specs, report)
+
+
+def _params(args: argparse.Namespace) -> dict:
+    from experiments.runner.options import team_list
+
+    return {"teams": team_list(args.teams, "--teams", minimum=2), "games": args.games, "seed": args.seed,
+            "cycles": args.cycles}
 
 
 def tables(records: Sequence, teams: Sequence[str]) -> tuple:
@@ -100,7 +95,7 @@ def tables(records: Sequence, teams: Sequence[str]) -> tuple:
 def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list[Path]:
     """Print the league table and the pairwise matrix; with ``out_dir``, write league.csv,
     pairwise.csv and tournament.png there. Returns the files written."""
-    from experiments.reporting import write_csv
+    from experiments.reporting import ESTIMATE_COLUMNS, write_csv
 
     teams = params["teams"]
     league, matrix, league_rows, pair_rows = tables(records, teams)
@@ -108,12 +103,11 @@ def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list
     matrix.print()
     if out_dir is None:
         return []
-    estimate_columns = ["mean_gd", "se", "ci95_low", "ci95_high"]
     written = [
         write_csv(out_dir / "league.csv", ["rank", "team", "games", "points", "wins", "draws", "losses", "forfeits",
-                                           "goals_for", "goals_against", *estimate_columns], league_rows),
+                                           "goals_for", "goals_against", *ESTIMATE_COLUMNS], league_rows),
         write_csv(out_dir / "pairwise.csv", ["team", "opponent", "games", "wins", "draws", "losses", "forfeits",
-                                             "goals_for", "goals_against", *estimate_columns], pair_rows),
+                                             "goals_for", "goals_against", *ESTIMATE_COLUMNS], pair_rows),
         _figure(out_dir / "tournament.png", teams, league_rows, pair_rows),
     ]
     print("wrote " + ", ".join(str(path) for path in written))

@@ -59,6 +59,29 @@ def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None
     parser.add_argument("--no-progress", action="store_true", help="no progress bar or progress lines")
 
 
+def add_team_option(parser: argparse.ArgumentParser, option: str, defaults: tuple[str, ...], what: str) -> None:
+    """A comma-separated team-list option whose help names the defaults and the registered teams."""
+    parser.add_argument(option, default=",".join(defaults),
+                        help=f"{what}, comma-separated (default: {','.join(defaults)}); registered: "
+                             f"{registered_teams_text()}; or package.module:Attribute paths")
+
+
+def run_command(args: argparse.Namespace, kind: str, params_of, build_specs, report) -> int:
+    """The body of every command that runs matches: parameters from ``args`` (``params_of``
+    may raise RunInputError), the run, the report into ``--tables``; exit status 2 with a
+    message for bad input, 130 after Ctrl-C."""
+    try:
+        params = params_of(args)
+        summary = execute(args, kind, build_specs(params), params)
+        report(summary.records, params, tables_dir(args))
+    except RunInputError as exc:
+        return fail(str(exc))
+    except KeyboardInterrupt:
+        return interrupted(args.out)
+    print_failures(summary)
+    return 0
+
+
 def team_list(text: str, option: str, minimum: int = 1) -> list[str]:
     """Comma-separated team names, each resolvable (a registered name or an importable
     ``module:Attribute`` path); a RunInputError listing the registered names otherwise."""

@@ -27,14 +27,11 @@ BEHAVIOUR = (("role switches / min", "role_switches_per_minute", 1.0),
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     from experiments.commands.play import positive_int
-    from experiments.runner.options import add_run_arguments, registered_teams_text
+    from experiments.runner.options import add_run_arguments, add_team_option
 
     parser.description = __doc__.split("\n\n")[0].strip("`")
-    parser.add_argument("--teams", default=",".join(DEFAULT_TEAMS),
-                        help=f"the assigner variants compared (default: {','.join(DEFAULT_TEAMS)}); registered: "
-                             f"{registered_teams_text()}")
-    parser.add_argument("--opponents", default=",".join(DEFAULT_OPPONENTS),
-                        help=f"their opponents (default: {','.join(DEFAULT_OPPONENTS)})")
+    add_team_option(parser, "--teams", DEFAULT_TEAMS, "the assigner variants compared")
+    add_team_option(parser, "--opponents", DEFAULT_OPPONENTS, "their opponents")
     parser.add_argument("--baseline", default="mmd+msd2",
                         help="the variant the others are compared with, match by match (default: mmd+msd2)")
     parser.add_argument("--games", type=positive_int, default=1000,
@@ -50,24 +47,19 @@ def build_specs(params: dict) -> list:
 
 
 def run(args: argparse.Namespace) -> int:
-    from experiments.runner.options import (RunInputError, execute, fail, interrupted, print_failures, tables_dir,
-                                            team_list)
+    from experiments.runner.options import run_command
 
-    try:
-        teams = team_list(args.teams, "--teams")
-        opponents = team_list(args.opponents, "--opponents")
-        if args.baseline not in teams:
-            raise RunInputError(f"--baseline {args.baseline!r} must be one of --teams ({', '.join(teams)})")
-        params = {"teams": teams, "opponents": opponents, "baseline": args.baseline, "games": args.games,
-                  "seed": args.seed, "cycles": args.cycles}
-        summary = execute(args, KIND, build_specs(params), params)
-        report(summary.records, params, tables_dir(args))
-    except RunInputError as exc:
-        return fail(str(exc))
-    except KeyboardInterrupt:
-        return interrupted(args.out)
-    print_failures(summary)
-    return 0
+    return run_command(args, KIND, _params, build_specs, report)
+
+
+def _params(args: argparse.Namespace) -> dict:
+    from experiments.runner.options import RunInputError, team_list
+
+    teams = team_list(args.teams, "--teams")
+    if args.baseline not in teams:
+        raise RunInputError(f"--baseline {args.baseline!r} must be one of --teams ({', '.join(teams)})")
+    return {"teams": teams, "opponents": team_list(args.opponents, "--opponents"), "baseline": args.baseline,
+            "games": args.games, "seed": args.seed, "cycles": args.cycles}
 
 
 def tables(records: Sequence, params: dict) -> tuple:
@@ -114,7 +106,7 @@ def tables(records: Sequence, params: dict) -> tuple:
 def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list[Path]:
     """Print both tables; with ``out_dir`` write case-study.csv, behaviour.csv, case-study.md
     and case-study.png there. Returns the files written."""
-    from experiments.reporting import write_csv, write_markdown
+    from experiments.reporting import ESTIMATE_COLUMNS, write_csv, write_markdown
 
     goal_table, behaviour, goal_rows, behaviour_rows = tables(records, params)
     goal_table.print()
@@ -124,8 +116,7 @@ def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list
     cycles = params["cycles"] or "regulation (6000)"
     written = [
         write_csv(out_dir / "case-study.csv", ["team", "opponent", "games", "wins", "draws", "losses", "forfeits",
-                                               "goals_for", "goals_against", "mean_gd", "se", "ci95_low",
-                                               "ci95_high"], goal_rows),
+                                               "goals_for", "goals_against", *ESTIMATE_COLUMNS], goal_rows),
         write_csv(out_dir / "behaviour.csv",
                   ["team", *(f"{figure}{suffix}" for _, figure, _ in BEHAVIOUR for suffix in ("", "_se")),
                    f"gd_minus_{params['baseline']}", "gd_difference_se", "p_value"], behaviour_rows),

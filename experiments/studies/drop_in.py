@@ -38,14 +38,11 @@ class DropInGame:
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     from experiments.commands.play import positive_int
-    from experiments.runner.options import add_run_arguments, registered_teams_text
+    from experiments.runner.options import add_run_arguments, add_team_option
 
     parser.description = __doc__.split("\n\n")[0].strip("`")
-    parser.add_argument("--candidates", default=",".join(DEFAULT_CANDIDATES),
-                        help=f"the players compared; the first against each other one (default: "
-                             f"{','.join(DEFAULT_CANDIDATES)}); registered: {registered_teams_text()}")
-    parser.add_argument("--pool", default=",".join(DEFAULT_POOL),
-                        help=f"teams the other 21 players are drawn from (default: {','.join(DEFAULT_POOL)})")
+    add_team_option(parser, "--candidates", DEFAULT_CANDIDATES, "the players compared, the first against each other one")
+    add_team_option(parser, "--pool", DEFAULT_POOL, "the teams the other 21 players are drawn from")
     parser.add_argument("--games", type=positive_int, default=200,
                         help="drop-in games; each is played once per candidate (default: 200)")
     add_run_arguments(parser, "drop-in.sqlite")
@@ -86,22 +83,16 @@ def build_specs(params: dict) -> list:
 
 
 def run(args: argparse.Namespace) -> int:
-    from experiments.runner.options import (RunInputError, execute, fail, interrupted, print_failures, tables_dir,
-                                            team_list)
+    from experiments.runner.options import run_command
 
-    try:
-        candidates = team_list(args.candidates, "--candidates", minimum=2)
-        pool = team_list(args.pool, "--pool")
-        params = {"candidates": candidates, "pool": pool, "games": args.games, "seed": args.seed,
-                  "cycles": args.cycles}
-        summary = execute(args, KIND, build_specs(params), params)
-        report(summary.records, params, tables_dir(args))
-    except RunInputError as exc:
-        return fail(str(exc))
-    except KeyboardInterrupt:
-        return interrupted(args.out)
-    print_failures(summary)
-    return 0
+    return run_command(args, KIND, _params, build_specs, report)
+
+
+def _params(args: argparse.Namespace) -> dict:
+    from experiments.runner.options import team_list
+
+    return {"candidates": team_list(args.candidates, "--candidates", minimum=2),
+            "pool": team_list(args.pool, "--pool"), "games": args.games, "seed": args.seed, "cycles": args.cycles}
 
 
 def candidate_results(records: Sequence, params: dict) -> dict[str, dict[int, tuple]]:
@@ -155,17 +146,16 @@ def tables(records: Sequence, params: dict) -> tuple:
 
 def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list[Path]:
     """Print both tables; with ``out_dir`` write drop-in.csv, drop-in-paired.csv and drop-in.md."""
-    from experiments.reporting import write_csv, write_markdown
+    from experiments.reporting import ESTIMATE_COLUMNS, write_csv, write_markdown
 
     table, comparison, rows, comparison_rows = tables(records, params)
     table.print()
     comparison.print()
     if out_dir is None:
         return []
-    estimate_columns = ["mean_gd", "se", "ci95_low", "ci95_high"]
     written = [
         write_csv(out_dir / "drop-in.csv", ["candidate", "games", "wins", "draws", "losses", "forfeits",
-                                            *estimate_columns], rows),
+                                            *ESTIMATE_COLUMNS], rows),
         write_csv(out_dir / "drop-in-paired.csv", ["candidate", "minus", "games", "mean_difference", "se",
                                                    "ci95_low", "ci95_high", "p_value"], comparison_rows),
         write_markdown(out_dir / "drop-in.md", [table, comparison],
