@@ -30,6 +30,7 @@ from .api import MMDR_ALGORITHMS, METHOD_ALIASES, METHODS, assign, assign_costs
 from .distributed import DISTRIBUTED_ALGORITHMS, DistributedResult, distributed_assign
 from .errors import AssignmentError
 from .incremental import IncrementalAssignment, Reassignment
+from .lazy import GRID_METHODS, GridAssignmentResult, assign_on_grid
 from .result import AssignmentResult
 
 __all__ = [
@@ -45,4 +46,7 @@ __all__ = [
     "distributed_assign",
     "IncrementalAssignment",
     "Reassignment",
+    "GRID_METHODS",
+    "GridAssignmentResult",
+    "assign_on_grid",
 ]
