@@ -1,0 +1,79 @@
+"""Lazy path-cost assignment on grids: optimal totals, exact A* costs, refused bad input."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from agents.assignment import AssignmentError, assign_on_grid
+from agents.assignment.grid import Workspace, load_movingai_map, random_instance
+from agents.assignment.pathcost import ResumableSearch, dijkstra_costs
+
+DATA = Path(__file__).parent / "data"
+
+
+def test_lazy_total_equals_all_pairs_on_random_workspaces():
+    rng = np.random.default_rng(5)
+    lazy_pairs = all_pairs = 0
+    for trial in range(300):
+        shape = (int(rng.integers(6, 16)), int(rng.integers(6, 16)))
+        if trial % 5 == 0:
+            shape = (5, 5, 5)
+        n, m = int(rng.integers(1, 7)), int(rng.integers(1, 7))
+        grid, robots, goals = random_instance(shape, float(rng.uniform(0.1, 0.25)), n, m, rng)
+        lazy = assign_on_grid(grid, robots, goals, lower_bound="octile" if trial % 2 else "euclidean")
+        full = assign_on_grid(grid, robots, goals, method="all-pairs")
+        assert lazy.total == pytest.approx(full.total, abs=1e-9)
+        assert (lazy.target_of >= 0).sum() == min(n, m)
+        lazy_pairs += lazy.pairs_computed
+        all_pairs += full.pairs_computed
+    assert lazy_pairs < all_pairs
+
+
+def test_resumable_astar_matches_dijkstra_in_2d_and_3d():
+    rng = np.random.default_rng(9)
+    for shape in [(12, 9), (6, 5, 7)]:
+        grid = rng.random(shape) < 0.25
+        ws = Workspace(grid)
+        free = np.argwhere(~grid)
+        targets = ws.flat(free)
+        source = int(targets[0])
+        exact, _ = dijkstra_costs(ws, source, targets)
+        search = ResumableSearch(ws, source)
+        for k in rng.permutation(len(targets)):
+            assert search.cost_to(int(targets[k])) == exact[k]
+
+
+def test_step_costs_and_no_corner_cutting():
+    grid = np.array([[0, 1], [0, 0]], dtype=bool)
+    # (0,0) -> (1,1): the diagonal would cut the obstacle's corner, so two straight steps.
+    assert assign_on_grid(grid, [[0, 0]], [[1, 1]]).total == 2.0
+    assert assign_on_grid(np.zeros((2, 2), bool), [[0, 0]], [[1, 1]]).total == 1.5
+    assert assign_on_grid(np.zeros((2, 2, 2), bool), [[0, 0, 0]], [[1, 1, 1]]).total == 2.0
+
+
+def test_walled_off_goal_and_robot_are_named():
+    grid = np.zeros((5, 5), dtype=bool)
+    grid[:, 2] = True
+    with pytest.raises(AssignmentError, match="robot 1"):
+        assign_on_grid(grid, [[0, 0], [0, 4]], [[1, 0], [2, 1]])
+    with pytest.raises(AssignmentError, match="goal 0"):
+        assign_on_grid(grid, [[0, 0], [1, 0], [2, 0]], [[4, 4], [3, 0]])
+
+
+def test_cells_off_grid_or_on_obstacles_are_refused_by_index():
+    grid = np.zeros((4, 4), dtype=bool)
+    grid[1, 1] = True
+    with pytest.raises(AssignmentError, match=r"robots\[1\].*outside"):
+        assign_on_grid(grid, [[0, 0], [4, 0]], [[2, 2], [3, 3]])
+    with pytest.raises(AssignmentError, match=r"goals\[0\].*obstacle"):
+        assign_on_grid(grid, [[0, 0]], [[1, 1]])
+    with pytest.raises(AssignmentError, match="unknown grid assignment method"):
+        assign_on_grid(grid, [[0, 0]], [[2, 2]], method="fast")
+
+
+def test_movingai_map_loads_and_bad_map_names_file_and_line():
+    grid = load_movingai_map(DATA / "small.map")
+    assert grid.shape == (3, 4) and grid[1, 1] and grid[1, 2] and grid.sum() == 2
+    with pytest.raises(AssignmentError, match=r"bad_letter\.map, line 6: unknown terrain 'X'"):
+        load_movingai_map(DATA / "bad_letter.map")
