@@ -14,11 +14,13 @@ ESTIMATE_COLUMNS = ["mean_gd", "se", "ci95_low", "ci95_high"]
 
 @dataclass
 class Table:
-    """A titled table of text cells; the first column is a label (left-aligned)."""
+    """A titled table of text cells; the leading ``labels`` columns are labels."""
 
     title: str
     header: list[str]
     rows: list[list[str]] = field(default_factory=list)
+    labels: int = 1
+    """Leading label columns (left-aligned; the rest are right-aligned numbers)."""
 
     def print(self, console=None) -> None:
         from rich.console import Console
@@ -27,7 +29,7 @@ class Table:
 
         table = RichTable(title=escape(self.title))
         for i, name in enumerate(self.header):
-            table.add_column(escape(name), justify="left" if i == 0 else "right")
+            table.add_column(escape(name), justify="left" if i < self.labels else "right")
         for row in self.rows:
             table.add_row(*(escape(cell) for cell in row))
         (console or Console()).print(table)

@@ -66,7 +66,7 @@ def tables(records: Sequence, teams: Sequence[str]) -> tuple:
 
     league = league_table(records, teams)
     league_table_text = Table(f"league: {len(teams)} teams, {len(records)} matches",
-                              ["#", "team", "games", "points", "W", "D", "L", "forfeits", "GF", "GA", "mean GD (SE)"])
+                              ["#", "team", "games", "points", "W", "D", "L", "forfeits", "GF", "GA", "mean GD (SE)"], labels=2)
     league_rows = []
     for rank, row in enumerate(league, 1):
         league_table_text.rows.append([str(rank), row.team, str(row.games), str(row.points), str(row.wins),
