@@ -28,6 +28,17 @@ def positive_float(text: str) -> float:
     return value
 
 
+def seed_value(text: str) -> int:
+    """argparse type: a non-negative integer seed."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be a non-negative integer, got {text}") from None
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"must be a non-negative integer, got {text}")
+    return value
+
+
 def registered_teams_text() -> str:
     """The registered team names, for --help and error messages."""
     from soccer_sim import available_teams
@@ -38,7 +49,7 @@ def registered_teams_text() -> str:
 def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None:
     """--games, --seed, --cycles, --workers, --backend, --address, --out, --tables,
     --match-timeout, --retry-errors, --no-progress."""
-    parser.add_argument("--seed", type=int, default=0, help="first seed; a pairing plays seeds seed, seed+1, ... (default: 0)")
+    parser.add_argument("--seed", type=seed_value, default=0, help="first seed; a pairing plays seeds seed, seed+1, ... (default: 0)")
     parser.add_argument("--cycles", type=positive_int, default=None,
                         help="cycles per match (default: a regulation match of 6000); part of the configuration hash")
     parser.add_argument("--workers", type=positive_int, default=os.cpu_count() or 1,

@@ -63,11 +63,11 @@ def test_bad_input_gets_a_message_and_a_non_zero_status(tmp_path, capsys) -> Non
     assert "unknown team 'nobody'" in err and "chaser" in err and "idle" in err
     assert main(["tournament", "--teams", "chaser", "--out", out, *QUICK]) == 2
     assert "at least 2" in capsys.readouterr().err
-    for bad in (["--games", "0"], ["--games", "-3"], ["--match-timeout", "0"]):
+    for bad in (["--games", "0"], ["--games", "-3"], ["--match-timeout", "0"], ["--seed", "-1"]):
         with pytest.raises(SystemExit) as usage:
             main(["tournament", *bad])
         assert usage.value.code == 2
-        assert "must be a positive" in capsys.readouterr().err
+        assert "must be a " in capsys.readouterr().err
     assert main(["tournament", "--teams", "chaser,idle", "--out", str(tmp_path / "no" / "t.sqlite"), *QUICK]) == 2
     assert "does not exist" in capsys.readouterr().err
     assert main(["tournament", "--teams", "chaser,idle", "--games", "1", "--out", out, *QUICK]) == 0
