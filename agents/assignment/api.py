@@ -199,6 +199,23 @@ def assign(
     return _result(col_of_row, lengths[np.arange(n_rows), col_of_row], transposed, n, m, name)
 
 
+def dense_target_of(robots: np.ndarray, targets: np.ndarray, method: str) -> np.ndarray:
+    """``assign(robots, targets, method).target_of`` for a caller whose inputs are already
+    clean, without the checks and the result object: for per-cycle callers such as the
+    soccer role assigners, where those cost as much as solving a 10 x 10 problem.
+
+    ``robots`` (n, d) and ``targets`` (m, d) must be finite float64 arrays with
+    ``0 < n <= m`` and fewer than :data:`SPARSE_MIN_PAIRS` pairs; ``method`` one of
+    :data:`METHODS` but ``"random"`` (``"mmdr"`` uses the fast algorithm). Nothing is
+    checked: give anything else to :func:`assign`.
+    """
+    lengths, squared = dense_distances(robots, targets)
+    return _solve_dense(_DENSE_KEYS[method], lengths, squared, None)
+
+
+_DENSE_KEYS = {method: ("mmdr/fast" if method == "mmdr" else method) for method in METHODS if method != "random"}
+
+
 def assign_costs(
     costs: object,
     method: str = "mmdr",

@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import njit
 
-from agents.assignment import assign
+from agents.assignment.api import dense_target_of
 from agents.roles.base import RoleAssigner, RoleContext
 
 
@@ -46,7 +46,10 @@ class MethodAssigner(RoleAssigner):
     def assign(self, players: np.ndarray, targets: np.ndarray, role_order: np.ndarray,
                previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
         self.check_inputs(players, targets)
-        return assign(players, targets, method=self.method).target_of
+        if not (np.isfinite(players).all() and np.isfinite(targets).all()):
+            raise ValueError(f"role assigner {self.name!r}: players and targets must be finite")
+        return dense_target_of(np.ascontiguousarray(players, dtype=np.float64),
+                               np.ascontiguousarray(targets, dtype=np.float64), self.method)
 
 
 class GreedyOffenseAssigner(RoleAssigner):

@@ -172,16 +172,40 @@ def ball_race(model: MotionModel, view: object, eligible: np.ndarray | None = No
     (:func:`agents.skills.offside_positions`): their cycle is UNREACHABLE and they are never
     ``first``.
     """
-    ball, ball_vel = _trajectories(view.ball, view.ball_vel, single=True)
-    radius, catch = team_radii(model)
-    own = _players(model, view.own_pos, view.own_vel, view_effort(view, model.players_per_team), radius, catch,
-                   radii_checked=True)
-    opp = _players(model, view.opp_pos, view.opp_vel, None, radius, catch, radii_checked=True)
+    ball, ball_vel, own, opp = _race_inputs(model, view)
     ours = _intercept_checked(model, ball, ball_vel, *own, _kernel_params(model, -1.0))
     if eligible is not None:
         ours = _only_eligible(ours, eligible)
     theirs = _intercept_checked(model, ball, ball_vel, *opp, _kernel_params(model, 1.0))
     return BallRace(ours, theirs)
+
+
+def _race_inputs(model: MotionModel, view: object) -> tuple[np.ndarray, np.ndarray, tuple, tuple]:
+    """:func:`ball_race`'s checked arrays: (ball (1, 2), ball_vel (1, 2), our players, theirs).
+
+    A match hands a team the same view arrays every cycle, overwritten in place, so when the
+    checked arrays are those very arrays (or views of them) they are kept on the model and
+    reused while the view holds the same array objects: checking them costs more than the
+    race itself.
+    """
+    effort = getattr(view, "effort", None)
+    current = (view.ball, view.ball_vel, view.own_pos, view.own_vel, view.opp_pos, view.opp_vel, effort)
+    cached = model.__dict__.get("_race_inputs")
+    if cached is not None:
+        held, inputs = cached
+        if (held[0] is current[0] and held[1] is current[1] and held[2] is current[2] and held[3] is current[3]
+                and held[4] is current[4] and held[5] is current[5] and held[6] is current[6]):
+            return inputs
+    ball, ball_vel = _trajectories(view.ball, view.ball_vel, single=True)
+    radius, catch = team_radii(model)
+    own = _players(model, view.own_pos, view.own_vel, view_effort(view, model.players_per_team), radius, catch,
+                   radii_checked=True)
+    opp = _players(model, view.opp_pos, view.opp_vel, None, radius, catch, radii_checked=True)
+    inputs = (ball, ball_vel, own, opp)
+    checked = (ball.base, ball_vel.base, own[0], own[1], opp[0], opp[1], own[2] if effort is not None else None)
+    if all(a is b for a, b in zip(checked, current)):
+        model.__dict__["_race_inputs"] = (current, inputs)
+    return inputs
 
 
 def _only_eligible(result: Interception, eligible: np.ndarray) -> Interception:

@@ -20,7 +20,7 @@ def test_failing_teams_are_recorded_and_the_run_completes(tmp_path, monkeypatch)
              MatchSpec("chaser", "idle", 0, 100),
              MatchSpec("chaser", "idle", 1, 100)]
     summary = run_matches(specs, tmp_path / "r.sqlite", "tournament", {}, cycles=100, workers=2,
-                          match_timeout=1.0, progress=False)
+                          match_timeout=4.0, progress=False)  # generous: a loaded machine
     by_home = {(r.home, r.away, r.seed): r for r in summary.records}
     assert len(summary.records) == 7 and summary.errors == 5
 

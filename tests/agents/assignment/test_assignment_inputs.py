@@ -246,3 +246,16 @@ def test_non_contiguous_and_read_only_arrays():
     targets.flags.writeable = False
     assert assign(robots, targets, "mmdr").target_of.tolist() == [1, 0, 2]
     assert assign(robots[::1], targets, "mmd+msd2").target_of.tolist() == [1, 0, 2]
+
+
+@pytest.mark.parametrize("method", ["mmdr", "mmd+msd2", "msd", "msd2", "bottleneck", "greedy"])
+def test_unchecked_dense_entry_point_gives_assigns_answer(method):
+    """dense_target_of (for per-cycle callers with clean arrays) answers what assign does."""
+    from agents.assignment.api import dense_target_of
+
+    rng = np.random.default_rng(7)
+    for n, m in [(1, 1), (10, 10), (6, 9), (10, 10)]:
+        robots, targets = rng.uniform(-50, 50, (n, 2)), rng.uniform(-50, 50, (m, 2))
+        targets[: min(n, m) // 2] = robots[: min(n, m) // 2]  # ties at zero distance too
+        np.testing.assert_array_equal(dense_target_of(robots, targets, method),
+                                      assign(robots, targets, method=method).target_of)

@@ -120,6 +120,24 @@ def test_ball_race_names_the_winning_team() -> None:
     assert race.we_win and race.lead > 0
 
 
+def test_ball_race_follows_a_view_overwritten_in_place() -> None:
+    """A match overwrites its view's arrays every cycle; the race must see the new values
+    (its checked inputs are kept between calls), and a view with new arrays too."""
+    model = MotionModel(CONFIG)
+    view = make_view(own={5: (-5.0, 0.0)}, opp={5: (12.0, 0.0)}, ball=(0.0, 0.0), ball_vel=(1.0, 0.0))
+    assert not ball_race(model, view).we_win
+    view.own_pos[5] = (3.0, 1.0)  # in place, as the match does
+    view.ball_vel[:] = (0.5, 0.0)
+    race = ball_race(model, view)
+    fresh = ball_race(MotionModel(CONFIG), make_view(own={5: (3.0, 1.0)}, opp={5: (12.0, 0.0)}, ball=(0.0, 0.0),
+                                                     ball_vel=(0.5, 0.0)))
+    assert race.we_win and race.ours.first == 5
+    np.testing.assert_array_equal(race.ours.cycles, fresh.ours.cycles)
+    np.testing.assert_array_equal(race.theirs.cycles, fresh.theirs.cycles)
+    other = make_view(own={5: (-5.0, 0.0)}, opp={5: (12.0, 0.0)}, ball=(0.0, 0.0), ball_vel=(1.0, 0.0))
+    assert not ball_race(model, other).we_win  # new array objects: checked and used afresh
+
+
 def test_many_trajectories_match_single_calls_and_respect_limits() -> None:
     rng = np.random.default_rng(1)
     pos, vel = rng.uniform(-20, 20, (11, 2)), np.zeros((11, 2))
