@@ -63,10 +63,16 @@ class PymunkChangedError(RuntimeError):
     was written for (see :class:`_BulkBodies`)."""
 
     def __init__(self, detail: str) -> None:
+        self.detail = detail
         super().__init__(
             f"soccer_sim cannot exchange body data with pymunk {pymunk.version}: {detail}. The bulk "
             "transfer relies on pymunk 7 internals (pymunk._chipmunk, Space._space, pymunk.batch.Buffer; "
             "tested with 7.1 and 7.3); install a supported release: pip install 'pymunk>=7.1,<8'")
+
+    def __reduce__(self) -> tuple[type, tuple[str]]:
+        """Rebuild from the detail alone, so the error crosses process boundaries (a worker
+        pool's pickling) with its message intact."""
+        return type(self), (self.detail,)
 
 
 class BodyBlock:

@@ -3,6 +3,12 @@
 from __future__ import annotations
 
 
+def doc_summary(doc: str | None) -> str:
+    """The first paragraph of a module docstring as plain text for ``--help`` (no reST
+    literal markers, lines joined)."""
+    return " ".join((doc or "").split("\n\n")[0].replace("``", "").split())
+
+
 def add_module_commands(subparsers, name: str, help_text: str, dest: str, metavar: str,
                         modules: dict[str, tuple[str, str]]) -> None:
     """Add command ``name`` whose sub-commands are modules: ``modules`` maps each sub-command

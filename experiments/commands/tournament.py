@@ -18,6 +18,7 @@ import math
 from collections.abc import Sequence
 from pathlib import Path
 
+from experiments.commands import doc_summary
 from experiments.commands.play import positive_int
 
 KIND = "tournament"
@@ -29,7 +30,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 
     parser = subparsers.add_parser(
         "tournament", help="round robin: league table and pairwise goal differences with standard errors",
-        description=__doc__.split("\n\n")[0].strip("`"))
+        description=doc_summary(__doc__))
     add_team_option(parser, "--teams", DEFAULT_TEAMS, "the teams")
     parser.add_argument("--games", type=positive_int, default=100,
                         help="matches per pairing, rounded up to even: sides swapped on paired seeds (default: 100)")

@@ -16,6 +16,8 @@ import argparse
 from collections.abc import Sequence
 from pathlib import Path
 
+from experiments.commands import doc_summary
+
 KIND = "case-study"
 DEFAULT_TEAMS = ("mmdr", "mmd+msd2", "static", "greedy", "greedy-offense", "bidding")
 DEFAULT_OPPONENTS = ("counter-442", "press-433", "possession", "mmd+msd2")
@@ -29,7 +31,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     from experiments.commands.play import positive_int
     from experiments.runner.options import add_run_arguments, add_team_option
 
-    parser.description = __doc__.split("\n\n")[0].strip("`")
+    parser.description = doc_summary(__doc__)
     add_team_option(parser, "--teams", DEFAULT_TEAMS, "the assigner variants compared")
     add_team_option(parser, "--opponents", DEFAULT_OPPONENTS, "their opponents")
     parser.add_argument("--baseline", default="mmd+msd2",

@@ -16,6 +16,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from experiments.commands import doc_summary
+
 KIND = "drop-in"
 DEFAULT_CANDIDATES = ("mmd+msd2", "static")
 DEFAULT_POOL = ("static", "mmdr", "greedy", "bidding", "counter-442", "press-433", "possession")
@@ -40,7 +42,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     from experiments.commands.play import positive_int
     from experiments.runner.options import add_run_arguments, add_team_option
 
-    parser.description = __doc__.split("\n\n")[0].strip("`")
+    parser.description = doc_summary(__doc__)
     add_team_option(parser, "--candidates", DEFAULT_CANDIDATES, "the players compared, the first against each other one")
     add_team_option(parser, "--pool", DEFAULT_POOL, "the teams the other 21 players are drawn from")
     parser.add_argument("--games", type=positive_int, default=200,

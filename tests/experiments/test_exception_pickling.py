@@ -53,13 +53,7 @@ def test_every_project_exception_has_an_example() -> None:
     assert not missing, f"add an example of {missing} to EXAMPLES"
 
 
-KNOWN_UNPICKLABLE = {"soccer_sim.physics.PymunkChangedError"}
-"""Its __init__ builds the message from a detail and keeps no __reduce__: unpickling wraps the
-message twice (raised only at import with an unsupported pymunk, never inside a match)."""
-
-
-@pytest.mark.parametrize("name", [pytest.param(name, marks=pytest.mark.xfail(strict=True, reason="no __reduce__ yet"))
-                                  if name in KNOWN_UNPICKLABLE else name for name in sorted(EXAMPLES)])
+@pytest.mark.parametrize("name", sorted(EXAMPLES))
 def test_exception_survives_pickling(name: str) -> None:
     module_name, _, class_name = name.rpartition(".")
     cls = getattr(importlib.import_module(module_name), class_name)
