@@ -22,6 +22,8 @@ from experiments.commands import doc_summary
 from experiments.commands.play import positive_int
 
 KIND = "tournament"
+DEFAULT_GAMES = 20
+"""Matches per pairing of the default tournament: small enough to finish in minutes on a laptop."""
 DEFAULT_TEAMS = ("mmdr", "mmd+msd2", "static", "greedy")
 
 
@@ -32,8 +34,9 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         "tournament", help="round robin: league table and pairwise goal differences with standard errors",
         description=doc_summary(__doc__))
     add_team_option(parser, "--teams", DEFAULT_TEAMS, "the teams")
-    parser.add_argument("--games", type=positive_int, default=100,
-                        help="matches per pairing, rounded up to even: sides swapped on paired seeds (default: 100)")
+    parser.add_argument("--games", type=positive_int, default=DEFAULT_GAMES,
+                        help="matches per pairing, rounded up to even: sides swapped on paired seeds "
+                             f"(default: {DEFAULT_GAMES}, a few minutes on two cores)")
     add_run_arguments(parser, "results.sqlite")
     parser.set_defaults(func=run)
 
