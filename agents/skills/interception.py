@@ -230,7 +230,7 @@ def _indices(name: str, value: object, count: int, below: int | None) -> np.ndar
     array = value if type(value) is np.ndarray else np.asarray(value)
     if array.shape == ():
         array = np.full(count, array)
-    if array.shape != (count,) or not np.issubdtype(array.dtype, np.integer):
+    if array.shape != (count,) or array.dtype.kind not in "iu":
         raise SkillInputError(f"{name} must be an integer or ({count},) integers, got {array.dtype} {array.shape}")
     if array.dtype != _I64 or not array.flags.c_contiguous:
         array = np.ascontiguousarray(array, dtype=np.int64)

@@ -194,7 +194,7 @@ def float_array(name: str, value: object, shape: tuple[int, ...]) -> np.ndarray:
     """``value`` as a C-contiguous float64 array of ``shape`` (-1: any length), else a
     SkillInputError naming it. Costs little when it already is one (the hot paths); the
     compiled kernels rely on it, as they do not check bounds."""
-    if type(value) is np.ndarray and value.dtype == _F64 and value.flags.c_contiguous:
+    if type(value) is np.ndarray and (value.dtype is _F64 or value.dtype == _F64) and value.flags.c_contiguous:
         array = value
     else:
         try:
@@ -202,10 +202,19 @@ def float_array(name: str, value: object, shape: tuple[int, ...]) -> np.ndarray:
         except (TypeError, ValueError) as exc:
             raise SkillInputError(f"{name} must be numeric, got {type(value).__name__}") from exc
     got = array.shape
-    if len(got) != len(shape) or not _dims_match(got, shape):
+    fits = _SHAPE_FITS.get((got, shape))
+    if fits is None:
+        fits = len(got) == len(shape) and _dims_match(got, shape)
+        if len(_SHAPE_FITS) < 4096:
+            _SHAPE_FITS[(got, shape)] = fits
+    if not fits:
         want = "(" + ", ".join("n" if w == -1 else str(w) for w in shape) + ("," if len(shape) == 1 else "") + ")"
         raise SkillInputError(f"{name} must have shape {want}, got {got}")
     return array
+
+
+_SHAPE_FITS: dict[tuple[tuple[int, ...], tuple[int, ...]], bool] = {}
+"""Memo of (actual shape, wanted shape) -> fits: the hot paths check the same few shapes."""
 
 
 def _dims_match(got: tuple[int, ...], shape: tuple[int, ...]) -> bool:
