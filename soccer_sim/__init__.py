@@ -12,13 +12,15 @@ from soccer_sim.config import ConfigError, FieldConfig, MatchConfig, PhysicsConf
 from soccer_sim.match import Match, MatchResult, run_match
 from soccer_sim.recorder import Recorder
 from soccer_sim.registry import TeamNotFoundError, available_teams, resolve_team
+from soccer_sim.scenarios import Scenario, ScenarioError
 from soccer_sim.state import AWAY, HOME, EventKind, EventLog, PlayMode, WorldState
 from soccer_sim.statistics import TeamStatistics
 from soccer_sim.team import SideInfo, Team, TeamCommand, TeamError, TeamView
 
 __all__ = [
     "AWAY", "HOME", "ConfigError", "EventKind", "EventLog", "FieldConfig", "Match", "MatchConfig",
-    "MatchResult", "PhysicsConfig", "PlayMode", "Recorder", "RuleConfig", "SideInfo", "StaminaConfig",
+    "MatchResult", "PhysicsConfig", "PlayMode", "Recorder", "RuleConfig", "Scenario", "ScenarioError", "SideInfo",
+    "StaminaConfig",
     "Team", "TeamCommand", "TeamError", "TeamNotFoundError", "TeamStatistics", "TeamView", "WorldState",
     "available_teams", "resolve_team", "run_match",
 ]

@@ -72,9 +72,10 @@ class CycleNoise:
 class Kinematics:
     """Dash, kick and decay rules for one match configuration (preallocated buffers)."""
 
-    def __init__(self, config: MatchConfig) -> None:
+    def __init__(self, config: MatchConfig, n_players: int | None = None) -> None:
+        """``n_players``: player rows of the match (None: two sides of ``config.players_per_team``)."""
         phys, stam = config.physics, config.stamina
-        n2 = 2 * config.players_per_team
+        n2 = 2 * config.players_per_team if n_players is None else int(n_players)
         self.phys = phys
         self.kickable_distance = phys.kickable_distance
         self._touch_distance = phys.player_radius + phys.ball_radius

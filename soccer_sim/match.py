@@ -18,16 +18,20 @@ One cycle (100 ms of game time by default):
 8. the referee judges goals, outs, restarts, offside and time;
 9. the cycle counter advances and recorders observe.
 
-A match is a pure function of (teams, config, seed): all randomness comes from generators
-spawned from ``numpy.random.SeedSequence(seed)`` (the physics noise first, then one per
-team, home first), and nothing else is random.
+A match is a pure function of (teams, config, scenario, seed): all randomness comes from
+generators spawned from ``numpy.random.SeedSequence(seed)`` (the physics noise first, then one
+per team, home first, then the scenario's start-state draws), and nothing else is random.
+
+A :class:`~soccer_sim.scenarios.Scenario` sets the sides' sizes (player rows ``0..h-1`` home,
+``h..h+a-1`` away), the start state, the opening play mode, the rules it switches and the end
+conditions; the default scenario is the regular match.
 """
 
 from __future__ import annotations
 
 import gc
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -37,7 +41,8 @@ from soccer_sim.physics import BodyBlock, Physics, SubstepPlanner
 from soccer_sim.recorder import Recorder
 from soccer_sim.referee import Referee
 from soccer_sim.registry import resolve_team
-from soccer_sim.state import AWAY, HOME, NO_PLAYER, EventLog, PlayMode, WorldState
+from soccer_sim.scenarios.scenario import Scenario, ScenarioError, line_up
+from soccer_sim.state import AWAY, HOME, NO_PLAYER, NO_TEAM, EventKind, EventLog, PlayMode, WorldState
 from soccer_sim.statistics import StatisticsRecorder, TeamStatistics
 from soccer_sim.team import SideInfo, Team, TeamError
 from soccer_sim.view import TeamFrame
@@ -63,23 +68,24 @@ class MatchResult:
     seed: int
     cycles: int
     """Cycles played."""
+    end_reason: str = "time_over"
+    """Why the match ended: ``"time_over"`` (the configuration's length), ``"cycle_limit"`` (the
+    scenario's), or the scenario's end condition that was met (``"goal"``, ``"out"``, ``"lost"``)."""
+    scenario: str = "full-match"
+    """Name of the scenario played."""
+
+
+_END_KINDS = {int(EventKind.GOAL): "goal", int(EventKind.OUT): "out"}
+_LOST_KINDS = frozenset({int(EventKind.KICK), int(EventKind.TOUCH), int(EventKind.CATCH), int(EventKind.SET_PLAY)})
+"""Events of the defending side that mean the attackers lost the ball."""
 
 
 def initial_positions(config: MatchConfig) -> np.ndarray:
-    """(2n, 2) opening line-up, absolute frame: each team spread over its own half in three
-    lines (the goalkeeper on its goal line's centre); the referee's kick-off and the teams'
-    ``move`` commands refine it."""
-    n = config.players_per_team
-    half_length, half_width = config.field.half_length, config.field.half_width
-    goalie = config.rules.goalie_index
-    own = np.zeros((n, 2))
-    outfield = [i for i in range(n) if i != goalie]
-    own[goalie] = (-half_length + 1.0, 0.0)
-    depths = (0.7, 0.45, 0.2)
-    for line, depth in enumerate(depths):
-        members = outfield[line::len(depths)]
-        for k, i in enumerate(members):
-            own[i] = (-half_length * depth, half_width * (2.0 * (k + 1) / (len(members) + 1) - 1.0) * 0.8)
+    """(2n, 2) opening line-up of the regular match, absolute frame: each team spread over its
+    own half in three lines (the goalkeeper on its goal line's centre); the referee's kick-off
+    and the teams' ``move`` commands refine it."""
+    own = line_up(config.players_per_team, config.rules.goalie_index, config.field.half_length,
+                  config.field.half_width)
     return np.concatenate([own, -own])
 
 
@@ -92,14 +98,21 @@ class Match:
     """
 
     def __init__(self, home: Team | str | type, away: Team | str | type, seed: int = 0,
-                 config: MatchConfig | None = None, recorders: Iterable[Recorder] = ()) -> None:
+                 config: MatchConfig | None = None, recorders: Iterable[Recorder] = (),
+                 scenario: Scenario | str | None = None) -> None:
         if config is None:
             config = MatchConfig()
         if not isinstance(config, MatchConfig):
             raise TypeError(f"config must be a MatchConfig, got {type(config).__name__}")
         if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
             raise ValueError(f"seed must be a non-negative integer, got {seed!r}")
+        scenario = _resolve_scenario(scenario)
+        scenario.check(config)
+        if scenario.offside is not None and scenario.offside != config.rules.offside:
+            config = replace(config, rules=replace(config.rules, offside=scenario.offside))
         self.config = config
+        """The configuration played (the scenario's offside switch applied)."""
+        self.scenario = scenario
         self.seed = int(seed)
         (home_team, home_name), (away_team, away_name) = resolve_team(home), resolve_team(away)
         if home_team is away_team:
@@ -107,32 +120,50 @@ class Match:
         self.teams: tuple[Team, Team] = (home_team, away_team)
         self.team_names = (home_name, away_name)
 
-        n = config.players_per_team
-        physics_seq, home_seq, away_seq = np.random.SeedSequence(self.seed).spawn(3)
+        self.sizes = sizes = scenario.sizes(config)
+        """(home, away) players."""
+        self.goalies = scenario.goalies(config)
+        """Each side's goalkeeper index within the side (-1: none)."""
+        n2 = sizes[0] + sizes[1]
+        physics_seq, home_seq, away_seq, scenario_seq = np.random.SeedSequence(self.seed).spawn(4)
         self._team_seeds = (home_seq, away_seq)
-        self.block = BodyBlock(n)
-        self.block.pos[:] = initial_positions(config)
-        self.state = WorldState(pos=self.block.pos, vel=self.block.vel, stamina=np.empty(2 * n),
-                                ball=self.block.ball, ball_vel=self.block.ball_vel, effort=np.empty(2 * n),
-                                recovery=np.empty(2 * n), capacity=np.empty(2 * n))
+        self.block = BodyBlock(*sizes)
+        self.end_cycle = config.total_cycles if scenario.cycle_limit is None else min(
+            config.total_cycles, scenario.cycle_limit)
+        """Cycles the match lasts at most."""
+        if scenario.is_regular:
+            self.block.pos[:] = initial_positions(config)
+        else:
+            rng = np.random.default_rng(scenario_seq) if scenario.randomised else None
+            pos, vel, ball, ball_vel = scenario.start_state(config, rng)
+            self.block.pos[:], self.block.vel[:] = pos, vel
+            self.block.ball[:], self.block.ball_vel[:] = ball, ball_vel
+        self.state = WorldState(pos=self.block.pos, vel=self.block.vel, stamina=np.empty(n2),
+                                ball=self.block.ball, ball_vel=self.block.ball_vel, effort=np.empty(n2),
+                                recovery=np.empty(n2), capacity=np.empty(n2), sizes=sizes)
         self.events = EventLog()
-        self.referee = Referee(config, self.events)
+        self.referee = Referee(config, self.events, sizes, self.goalies, set_plays=scenario.set_plays,
+                               end_cycle=self.end_cycle, half_time=scenario.half_time)
         self.physics = Physics(config, self.block)
-        self.kinematics = Kinematics(config)
+        self.kinematics = Kinematics(config, n2)
         self._restore_players()
-        self.noise = CycleNoise(np.random.default_rng(physics_seq), 2 * n)
-        self.commands = np.zeros((2 * n, 4))
+        self.noise = CycleNoise(np.random.default_rng(physics_seq), n2)
+        self.commands = np.zeros((n2, 4))
         """Absolute commands of this cycle: per player row ``[dash_x, dash_y, kick_x, kick_y]``."""
         self._dash = self.commands[:, 0:2]
         self._kick = self.commands[:, 2:4]
-        self.frames = (TeamFrame(HOME, home_name, n, self.block, self.commands),
-                       TeamFrame(AWAY, away_name, n, self.block, self.commands))
+        self.frames = (TeamFrame(HOME, home_name, sizes[0], self.block, self.commands, sizes[1]),
+                       TeamFrame(AWAY, away_name, sizes[1], self.block, self.commands, sizes[0]))
+        self.end_reason = "time_over"
+        self._ends = scenario.end_on
+        self._defender = 1 - scenario.attacking_side
+        self._event_mark = 0
         self.statistics = StatisticsRecorder()
         self.recorders: tuple[Recorder, ...] = (self.statistics, *recorders)
         self.kickers = _NO_KICKERS
         self.touchers = _NO_KICKERS
         self._catch = np.zeros(2, dtype=bool)
-        self._kicker_rows = np.zeros(2 * n, dtype=np.int64)
+        self._kicker_rows = np.zeros(n2, dtype=np.int64)
         self._substeps = SubstepPlanner(config)
         self._started = False
 
@@ -145,7 +176,7 @@ class Match:
     def run(self) -> MatchResult:
         """Play the whole match and return its result."""
         self.start()
-        state, total = self.state, self.config.total_cycles
+        state, total = self.state, self.end_cycle
         # The loop allocates only short-lived objects; the cyclic garbage collector's passes
         # over them cost about a twentieth of a match, so it pauses until the end.
         collecting = gc.isenabled()
@@ -163,16 +194,19 @@ class Match:
         if self._started:
             raise RuntimeError("a Match can be played only once; create a new one")
         self._started = True
-        n = self.config.players_per_team
+        sizes, goalies = self.sizes, self.goalies
         for team in (HOME, AWAY):
             info = SideInfo(team=team, name=self.team_names[team], opponent_name=self.team_names[1 - team],
-                            players_per_team=n, goalie_index=self.config.rules.goalie_index)
+                            players_per_team=sizes[team], goalie_index=goalies[team],
+                            opponents=sizes[1 - team], opponent_goalie_index=goalies[1 - team])
             rng = np.random.default_rng(self._team_seeds[team])
             try:
                 self.teams[team].reset(info, self.config, rng)
             except Exception as exc:
                 raise TeamError(self.team_names[team], f"reset() raised {type(exc).__name__}: {exc}") from exc
-        self.referee.start(self.state)
+        scenario = self.scenario
+        self.referee.start(self.state, scenario.start_play_mode, scenario.start_side)
+        self._event_mark = len(self.events)
         self._sync_state()
         for recorder in self.recorders:
             recorder.on_start(self)
@@ -183,9 +217,12 @@ class Match:
             recorder.on_end(self)
         state = self.state
         assert self.statistics.result is not None
+        reason = self.end_reason
+        if reason == "time_over" and state.cycle < self.config.total_cycles and state.cycle >= self.end_cycle:
+            reason = "cycle_limit"
         return MatchResult(score=(int(state.score[0]), int(state.score[1])), events=self.events,
                            statistics=self.statistics.result, state=state, team_names=self.team_names,
-                           seed=self.seed, cycles=state.cycle)
+                           seed=self.seed, cycles=state.cycle, end_reason=reason, scenario=self.scenario.name)
 
     def step(self) -> None:
         """Simulate one cycle; a RuntimeError once the referee has called time."""
@@ -237,6 +274,8 @@ class Match:
         kin.decay(state.vel, state.ball_vel, self.noise.ball)
         half = state.half
         referee.after_step(state, self.touchers)
+        if self._ends:
+            self._check_end()
         if state.half != half:
             self._restore_players()  # players come back fresh for the second half
         state.cycle += 1
@@ -258,6 +297,29 @@ class Match:
             self._catch[team], moves[team] = frame.read_command(command, sign)
             sign = -sign
         return moves
+
+    def _check_end(self) -> None:
+        """The scenario's end conditions, judged on this cycle's events: a GOAL, an OUT, or
+        the defending side playing the ball (kick, touch, catch) or being given a set play.
+        The first met, in the order of ``END_CONDITIONS``, ends the match (TIME_OVER)."""
+        events = self.events
+        mark, end = self._event_mark, len(events)
+        if end == mark:
+            return
+        self._event_mark = end
+        kinds, teams = events.kind[mark:end], events.team[mark:end]
+        met = set()
+        for kind, team in zip(kinds, teams):
+            if kind in _END_KINDS:
+                met.add(_END_KINDS[kind])
+            elif team == self._defender and kind in _LOST_KINDS:
+                met.add("lost")
+        for reason in self._ends:
+            if reason in met:
+                self.end_reason = reason
+                self.referee.stop(self.state)
+                self._event_mark = len(events)
+                return
 
     def _restore_players(self) -> None:
         state = self.state
@@ -283,11 +345,28 @@ class Match:
 
 
 def run_match(home: Team | str | type, away: Team | str | type, seed: int = 0,
-              config: MatchConfig | None = None, recorders: Iterable[Recorder] = ()) -> MatchResult:
+              config: MatchConfig | None = None, recorders: Iterable[Recorder] = (),
+              scenario: Scenario | str | None = None) -> MatchResult:
     """Play a whole match and return its :class:`MatchResult`.
 
     ``home`` and ``away`` are Team objects, Team classes, registered names (``"chaser"``) or
-    ``package.module:Attribute`` paths. The result is a pure function of the teams, the
-    config and the seed.
+    ``package.module:Attribute`` paths. ``scenario`` is a :class:`Scenario`, the name of one in
+    the library (:func:`soccer_sim.scenarios.scenario_names`) or None for the regular match.
+    The result is a pure function of the teams, the config, the scenario and the seed.
     """
-    return Match(home, away, seed=seed, config=config, recorders=recorders).run()
+    return Match(home, away, seed=seed, config=config, recorders=recorders, scenario=scenario).run()
+
+
+def _resolve_scenario(scenario: Scenario | str | None) -> Scenario:
+    if scenario is None:
+        return _REGULAR
+    if isinstance(scenario, Scenario):
+        return scenario
+    if isinstance(scenario, str):
+        from soccer_sim.scenarios.library import get_scenario
+
+        return get_scenario(scenario)
+    raise ScenarioError("Scenario", f"expected a Scenario, a library name or None, got {type(scenario).__name__}")
+
+
+_REGULAR = Scenario()

@@ -14,22 +14,26 @@ from collections.abc import Sequence
 import numpy as np
 
 
-def mark_offside_positions(pos: np.ndarray, n: int, team: int, direction: int, ball_x: float,
+def mark_offside_positions(pos: np.ndarray, n: int | tuple[int, int], team: int, direction: int, ball_x: float,
                            kickers: Sequence[int] | np.ndarray, out: np.ndarray) -> float | None:
-    """Write into ``out`` ((2n,) bool) which players of ``team`` are in an offside position.
+    """Write into ``out`` ((P,) bool) which players of ``team`` are in an offside position.
 
-    ``pos`` is the (2n, 2) absolute player positions (home rows first), ``direction`` the
-    kicking team's attack direction (+1 towards +x), ``ball_x`` the ball's x when kicked and
-    ``kickers`` the rows that kicked (never marked). With a single opponent there is no
-    second-last opponent; the opponents' goal line takes its place, so nobody is offside.
+    ``pos`` is the (P, 2) absolute player positions (home rows first), ``n`` the players per
+    side (an int for two even sides, or (home, away)), ``direction`` the kicking team's attack
+    direction (+1 towards +x), ``ball_x`` the ball's x when kicked and ``kickers`` the rows
+    that kicked (never marked). With fewer than two opponents there is no second-last
+    opponent; the opponents' goal line takes its place, so nobody is offside.
     Returns the offside line's x (absolute frame) if any player was marked, else None.
     """
-    own = slice(0, n) if team == 0 else slice(n, 2 * n)
-    opp = slice(n, 2 * n) if team == 0 else slice(0, n)
-    if n >= 2:
+    home, away = (n, n) if isinstance(n, (int, np.integer)) else n
+    total = home + away
+    own = slice(0, home) if team == 0 else slice(home, total)
+    opp = slice(home, total) if team == 0 else slice(0, home)
+    m = away if team == 0 else home
+    if m >= 2:
         # Second-last opponent: the second-largest depth among the opponents.
         opp_x = pos[opp, 0]
-        second_last = (float(np.partition(opp_x, n - 2)[n - 2]) if direction > 0
+        second_last = (float(np.partition(opp_x, m - 2)[m - 2]) if direction > 0
                        else -float(np.partition(opp_x, 1)[1]))
     else:
         second_last = float("inf")

@@ -1,4 +1,4 @@
-"""Collision solving with pymunk: 2n player discs, the ball and four static goal posts.
+"""Collision solving with pymunk: the player discs, the ball and four static goal posts.
 
 The match keeps the world in numpy arrays (:class:`BodyBlock`); pymunk is used once per
 cycle as a collision solver. The block is laid out exactly like pymunk's bulk body data
@@ -78,14 +78,18 @@ class PymunkChangedError(RuntimeError):
 class BodyBlock:
     """The world's bodies as one contiguous float array, shaped like pymunk's bulk data.
 
-    ``data`` has one row ``[x, y, vx, vy]`` per pymunk body: rows 0..2n-1 the players
-    (home first), row 2n the ball, then pymunk's static body (the goal posts' anchor, always
-    at rest at the origin). ``pos``/``vel``/``ball``/``ball_vel`` are views into it, used as the
-    :class:`~soccer_sim.state.WorldState` arrays.
+    ``data`` has one row ``[x, y, vx, vy]`` per pymunk body: rows 0..P-1 the players
+    (home first; P = home + away players), row P the ball, then pymunk's static body (the goal
+    posts' anchor, always at rest at the origin). ``pos``/``vel``/``ball``/``ball_vel`` are
+    views into it, used as the :class:`~soccer_sim.state.WorldState` arrays.
+    ``BodyBlock(n)`` holds two sides of n players; ``BodyBlock(home, away)`` uneven sides.
     """
 
-    def __init__(self, players_per_team: int) -> None:
-        n2 = 2 * players_per_team
+    def __init__(self, players_per_team: int, away: int | None = None) -> None:
+        away = players_per_team if away is None else away
+        self.sizes = (int(players_per_team), int(away))
+        """(home, away) players."""
+        n2 = players_per_team + away
         self.n_players = n2
         self.data = np.zeros((n2 + 2, 4), dtype=np.float64)
         self.pos = self.data[:n2, 0:2]
@@ -147,14 +151,15 @@ class Physics:
 
     def __init__(self, config: MatchConfig, block: BodyBlock) -> None:
         phys, fld = config.physics, config.field
-        n = config.players_per_team
+        home, away = block.sizes
+        n2 = home + away
         self.block = block
         self._rigid_ball = phys.body_ball_contact == "rigid"
         self._ball_filter = _ALL_COLLISIONS if self._rigid_ball else _BALL_NOT_PLAYER
         player_filter = _ALL_COLLISIONS if self._rigid_ball else _PLAYER_NOT_BALL
         self._before = np.zeros_like(block.dynamic)
         """The players and the ball as they were before this cycle's move (contact sweeps)."""
-        self._ghost = np.zeros(2 * n, dtype=np.bool_)
+        self._ghost = np.zeros(n2, dtype=np.bool_)
         """This cycle's kickers: their bodies let the ball pass (a kick plays it around them)."""
         self._contact_rows = np.zeros(_CONTACT_PASSES, dtype=np.int64)
         self._contact_params = np.array([phys.player_radius + phys.ball_radius, phys.collision_velocity_factor])
@@ -164,10 +169,10 @@ class Physics:
         space.use_spatial_hash(_HASH_CELL, _HASH_CELLS)
         self.teammate_contacts = np.zeros(2, dtype=np.int64)
         """Contacts begun between two players of the same team, per team (home, away)."""
-        self._in_contact = np.zeros((2 * n, 2 * n), dtype=np.bool_)
+        self._in_contact = np.zeros((n2, n2), dtype=np.bool_)
         diameter = 2.0 * phys.player_radius
         self._after_params = np.array([
-            n, (diameter + CONTACT_BEGIN_GAP) ** 2, (diameter + CONTACT_END_GAP) ** 2,
+            home, n2, (diameter + CONTACT_BEGIN_GAP) ** 2, (diameter + CONTACT_END_GAP) ** 2,
             fld.half_length + fld.margin, fld.half_width + fld.margin,
         ])
         self._touchers: list[int] = []
@@ -175,10 +180,10 @@ class Physics:
         self._player_shapes: list[pymunk.Circle] = []
 
         bodies: list[pymunk.Body] = []
-        for row in range(2 * n):
+        for row in range(n2):
             body = pymunk.Body(phys.player_mass, math.inf)
             shape = pymunk.Circle(body, phys.player_radius)
-            shape.collision_type = HOME_PLAYER if row < n else AWAY_PLAYER
+            shape.collision_type = HOME_PLAYER if row < home else AWAY_PLAYER
             shape.elasticity = phys.player_restitution
             shape.friction = 0.0
             shape.row = row  # read back by the ball-touch callback
@@ -379,20 +384,21 @@ class _BulkBodies:
 @njit(cache=True, nogil=True)
 def _after_step(data: np.ndarray, in_contact: np.ndarray, params: np.ndarray,
                 counts: np.ndarray) -> None:  # pragma: no cover - compiled
-    """Clamp the players (block rows 0..2n-1) into the field plus margin, update the teammate
-    contact matrix and add the contacts that began to ``counts`` (per team). ``params``:
-    players per team, squared centre distance below which a contact begins, squared distance
-    above which it ends, largest |x| and |y| of a player."""
-    n = int(params[0])
-    begin2, end2, x_max, y_max = params[1], params[2], params[3], params[4]
-    for i in range(2 * n):
+    """Clamp the players (block rows 0..P-1) into the field plus margin, update the teammate
+    contact matrix and add the contacts that began to ``counts`` (per team). ``params``: home
+    players, all players P, squared centre distance below which a contact begins, squared
+    distance above which it ends, largest |x| and |y| of a player."""
+    home, n2 = int(params[0]), int(params[1])
+    begin2, end2, x_max, y_max = params[2], params[3], params[4], params[5]
+    for i in range(n2):
         data[i, 0] = min(max(data[i, 0], -x_max), x_max)
         data[i, 1] = min(max(data[i, 1], -y_max), y_max)
     for team in range(2):
-        first = team * n
-        for i in range(first, first + n):
+        first = 0 if team == 0 else home
+        last = home if team == 0 else n2
+        for i in range(first, last):
             xi, yi = data[i, 0], data[i, 1]
-            for j in range(i + 1, first + n):
+            for j in range(i + 1, last):
                 dx, dy = data[j, 0] - xi, data[j, 1] - yi
                 d2 = dx * dx + dy * dy
                 if in_contact[i, j]:

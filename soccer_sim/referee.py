@@ -107,6 +107,7 @@ from soccer_sim.state import (
     HOME,
     NO_PLAYER,
     NO_TEAM,
+    SET_PLAYS,
     EventKind,
     EventLog,
     PlayMode,
@@ -122,6 +123,9 @@ _GOAL_KICK = PlayMode.GOAL_KICK
 _OFFSIDE_MODES = frozenset({PlayMode.PLAY_ON, PlayMode.FREE_KICK, PlayMode.KICK_OFF, PlayMode.GOALIE_HOLDS})
 """Modes in which a kick can put team-mates offside (not kick-ins, corners, goal kicks)."""
 _NEVER = -(10**9)
+_DROP_INSET = 1.0
+"""Without set plays, a ball dropped in place of a restart lies at least this far (m) inside
+the lines (a kick-in's spot on the touchline would be out again at the slightest touch)."""
 
 
 class Referee:
@@ -132,37 +136,56 @@ class Referee:
     position to tell where it crossed a line).
     """
 
-    def __init__(self, config: MatchConfig, events: EventLog) -> None:
+    def __init__(self, config: MatchConfig, events: EventLog, sizes: tuple[int, int] | None = None,
+                 goalies: tuple[int, int] | None = None, *, set_plays: bool = True, end_cycle: int | None = None,
+                 half_time: bool = True) -> None:
+        """``sizes``: (home, away) players (None: ``config.players_per_team`` each);
+        ``goalies``: each side's goalkeeper index within its side, -1 for none (None:
+        ``config.rules.goalie_index`` for both); ``set_plays`` False replaces every restart by a
+        dropped ball on the restart spot (see :meth:`_restart`); ``end_cycle``: time over after
+        this many cycles (None: ``config.total_cycles``); ``half_time`` False: no half time (one
+        period, no change of ends)."""
         self.config = config
         self.events = events
         f, p, r = config.field, config.physics, config.rules
         n = config.players_per_team
-        self._n = n
+        home, away = (n, n) if sizes is None else (int(sizes[0]), int(sizes[1]))
+        n2 = home + away
+        self._n = home
+        """Home players: rows below it are home's, the others away's."""
+        self._sizes = (home, away)
+        self._first = (0, home)
+        """Row of each team's first player."""
+        self._rows = (slice(0, home), slice(home, n2))
+        self._set_plays = bool(set_plays)
         self._goal_x = f.half_length + p.ball_radius  # whole ball beyond the goal line
         self._touch_y = f.half_width + p.ball_radius  # whole ball beyond the touchline
         self._post_y = f.goal_width / 2.0
         self._clearance = r.set_play_clearance
         self._offside_reach2 = None if r.offside_active_distance is None else r.offside_active_distance ** 2
         self._kick_off_radius = max(r.set_play_clearance, f.centre_circle_radius)
-        self._half_end = r.half_cycles
-        self._match_end = config.total_cycles
-        self._goalie_rows = (r.goalie_index, n + r.goalie_index)
-        home_rows = np.repeat([1.0, -1.0], n)
+        self._half_end = r.half_cycles if half_time else -1
+        self._match_end = config.total_cycles if end_cycle is None else int(end_cycle)
+        goalies = (r.goalie_index, r.goalie_index) if goalies is None else goalies
+        self._goalie_rows = tuple(NO_PLAYER if g is None or g < 0 else self._first[t] + int(g)
+                                  for t, g in enumerate(goalies))
+        """Each team's goalkeeper row, NO_PLAYER if it has none."""
+        home_rows = np.repeat([1.0, -1.0], [home, away])
         self._row_direction = {1: home_rows, -1: -home_rows}
         """Attack direction of every player row, keyed by ``state.home_attacks``."""
         self._shot_reach = 1.0 / (1.0 - p.ball_decay) if p.ball_decay < 1.0 else math.inf
         # Cached read-only kick masks (kick_mask returns one of these, never a new array).
-        self._mask_all = self._frozen(np.ones(2 * n, dtype=bool))
-        self._mask_none = self._frozen(np.zeros(2 * n, dtype=bool))
+        self._mask_all = self._frozen(np.ones(n2, dtype=bool))
+        self._mask_none = self._frozen(np.zeros(n2, dtype=bool))
         team_masks = []
         for team in (HOME, AWAY):
-            m = np.zeros(2 * n, dtype=bool)
-            m[team * n:(team + 1) * n] = True
+            m = np.zeros(n2, dtype=bool)
+            m[self._rows[team]] = True
             team_masks.append(self._frozen(m))
         self._mask_team = tuple(team_masks)
         self._mask_row = []
-        for row in range(2 * n):
-            m = np.zeros(2 * n, dtype=bool)
+        for row in range(n2):
+            m = np.zeros(n2, dtype=bool)
             m[row] = True
             self._mask_row.append(self._frozen(m))
         # Memory between cycles.
@@ -171,7 +194,7 @@ class Referee:
         """(mode, team, start) of the set play ``_spot`` belongs to; a set play the referee did
         not begin itself (a state built or loaded elsewhere) takes the ball's position as spot."""
         self._prev_ball = (math.nan, math.nan)
-        self._offside = np.zeros(2 * n, dtype=bool)
+        self._offside = np.zeros(n2, dtype=bool)
         self._offside_pending = False
         self._offside_rows = np.zeros(0, dtype=np.int64)
         """Rows of ``_offside`` that are marked (while ``_offside_pending``)."""
@@ -201,11 +224,28 @@ class Referee:
 
     # ------------------------------------------------------------------ public API
 
-    def start(self, state: WorldState) -> None:
-        """Opening kick-off: home kicks off, ball still on the centre spot, every player moved
-        into its own half and the away team out of the centre circle; SET_PLAY event."""
+    def start(self, state: WorldState, mode: PlayMode = PlayMode.KICK_OFF, team: int = HOME) -> None:
+        """Open play in ``mode`` (SET_PLAY event). The default, the opening kick-off: ``team``
+        (home) kicks off, ball still on the centre spot, every player moved into its own half
+        and the other team out of the centre circle. Another set play (kick-in, corner kick,
+        goal kick, free kick) belongs to ``team`` and is taken where the ball lies, the
+        opponents cleared from it. ``PLAY_ON``: the ball and the players as they are."""
         self._check_state(state)
-        self._kick_off(state, HOME, first_cycle=state.cycle)
+        if mode == _KICK_OFF:
+            self._kick_off(state, team, first_cycle=state.cycle)
+        elif mode == _PLAY_ON:
+            self._prev_ball = (float(state.ball[0]), float(state.ball[1]))
+            self._set_mode(state, _PLAY_ON, NO_TEAM, first_cycle=state.cycle)
+        elif mode in SET_PLAYS:
+            self._restart(state, mode, team, float(state.ball[0]), float(state.ball[1]), first_cycle=state.cycle)
+        else:
+            raise ValueError(f"play cannot start in {PlayMode(mode).name}; start with a set play or PLAY_ON")
+
+    def stop(self, state: WorldState) -> None:
+        """End the match after the cycle being judged (a scenario's end condition was met):
+        TIME_OVER event and play mode, as at the end of the last cycle."""
+        if state.play_mode != _TIME_OVER:
+            self._time_over(state)
 
     def kick_mask(self, state: WorldState) -> np.ndarray:
         """(2n,) bool: which players may kick now. Returns a cached read-only array.
@@ -219,7 +259,7 @@ class Referee:
         if mode == _GOALIE_HOLDS:
             holder = state.ball_holder
             row = holder if holder != NO_PLAYER else self._goalie_rows[state.mode_team]
-            return self._mask_row[row]
+            return self._mask_row[row] if row != NO_PLAYER else self._mask_none
         if mode == _TIME_OVER or mode == _AFTER_GOAL or state.mode_team == NO_TEAM:
             return self._mask_none
         return self._mask_team[state.mode_team]
@@ -231,12 +271,12 @@ class Referee:
         stop. Ignored in any other play mode."""
         if state.play_mode != _KICK_OFF and state.play_mode != _AFTER_GOAL:
             return
-        n = self._n
+        n = self._sizes[team]
         targets = np.asarray(targets, dtype=float)
         if targets.shape != (n, 2) or not np.isfinite(targets).all():
             raise ValueError(f"kick-off move targets for team {team} must be a finite ({n}, 2) array, "
                              f"got shape {targets.shape}")
-        rows = slice(team * n, (team + 1) * n)
+        rows = self._rows[team]
         block = state.pos[rows]
         block[:] = targets
         clamp_into_own_half(block, state.attack_direction(team), self.config.field)
@@ -315,7 +355,11 @@ class Referee:
     def _restart(self, state: WorldState, mode: PlayMode, team: int, x: float, y: float,
                  first_cycle: int | None = None) -> None:
         """Begin a set play for ``team`` with the ball still at (x, y); forget the offside
-        marks and the passer (a restart interrupts every pass)."""
+        marks and the passer (a restart interrupts every pass). Without set plays (other than
+        the opening one) the ball is dropped there instead (:meth:`_drop_ball`)."""
+        if not self._set_plays and first_cycle is None:
+            self._drop_ball(state, mode, x, y)
+            return
         self._spot = (x, y)
         state.ball[0], state.ball[1] = x, y
         state.ball_vel[:] = 0.0
@@ -332,11 +376,36 @@ class Referee:
         else:
             self._keep_set_play(state)
 
+    def _drop_ball(self, state: WorldState, replaced: PlayMode, x: float, y: float) -> None:
+        """Without set plays: the ball is put still on the spot of the restart it replaces
+        (``replaced``), moved at least ``_DROP_INSET`` inside the lines, and play goes on at
+        once, open to both teams; nobody is moved. DROP_BALL event (detail: ``replaced``)."""
+        f = self.config.field
+        x_max, y_max = max(f.half_length - _DROP_INSET, 0.0), max(f.half_width - _DROP_INSET, 0.0)
+        x, y = min(max(x, -x_max), x_max), min(max(y, -y_max), y_max)
+        self.events.add(state.cycle, EventKind.DROP_BALL, NO_TEAM, NO_PLAYER, x, y, int(replaced))
+        state.ball[0], state.ball[1] = x, y
+        state.ball_vel[:] = 0.0
+        state.ball_holder = NO_PLAYER
+        self._clear_offside()
+        self._pass_from = NO_PLAYER
+        self._shot_pending = [False, False]
+        self._touching = ()
+        self._goal_kick_pending = None
+        self._prev_ball = (x, y)
+        self._set_mode(state, _PLAY_ON, NO_TEAM)
+
     def _kick_off(self, state: WorldState, team: int, first_cycle: int | None = None, *,
                   after_pause: bool = False) -> None:
         """Kick-off for ``team``: ball on the centre spot, everybody stopped, both teams in
         their own halves. Players in the wrong half are put on the halfway line after the
-        pause that follows a goal (they had the pause to get back), else reflected across it."""
+        pause that follows a goal (they had the pause to get back), else reflected across it.
+        Without set plays (other than the opening kick-off) the ball is dropped on the centre
+        spot and nobody is moved."""
+        if not self._set_plays and first_cycle is None:
+            state.last_touch = NO_PLAYER
+            self._drop_ball(state, _KICK_OFF, 0.0, 0.0)
+            return
         directions = self._row_direction[state.home_attacks]
         if after_pause:
             keep_in_own_half(state.pos, directions)
@@ -355,9 +424,8 @@ class Referee:
         sx, sy = self._spot
         state.ball[0], state.ball[1] = sx, sy
         state.ball_vel[:] = 0.0
-        n = self._n
         other = 1 - state.mode_team
-        rows = slice(other * n, (other + 1) * n)
+        rows = self._rows[other]
         if state.play_mode == _KICK_OFF:
             self._keep_kick_off_positions(state, other, sx, sy)
         else:
@@ -379,9 +447,8 @@ class Referee:
     def _keep_kick_off_positions(self, state: WorldState, other: int, sx: float, sy: float) -> None:
         """Both teams in their own half (offenders put on the halfway line), the team not
         kicking off outside the centre circle (pushed radially); moved players stop."""
-        n = self._n
         pos = state.pos
-        rows = slice(other * n, (other + 1) * n)
+        rows = self._rows[other]
         moved = keep_in_own_half(pos, self._row_direction[state.home_attacks])
         if moved is not None:
             state.vel[moved] = 0.0
@@ -459,7 +526,10 @@ class Referee:
             self.events.add(state.cycle, EventKind.SHOT, scorer, last_index, sx, sy, 1)
         state.score[scorer] += 1
         self.events.add(state.cycle, EventKind.GOAL, scorer, last_index, x, y, int(own_goal))
-        if self.config.rules.goal_pause_cycles > 0:
+        if not self._set_plays:
+            state.last_touch = NO_PLAYER
+            self._drop_ball(state, _KICK_OFF, 0.0, 0.0)
+        elif self.config.rules.goal_pause_cycles > 0:
             self._restart(state, _AFTER_GOAL, 1 - scorer, 0.0, 0.0)
         else:
             self._kick_off(state, 1 - scorer)
@@ -577,7 +647,7 @@ class Referee:
         one_team = (rows[-1] < n) == (team == HOME)
         if self.config.rules.offside and one_team and mode in _OFFSIDE_MODES:
             line = mark_offside_positions(
-                state.pos, n, team, state.attack_direction(team), ball_x, rows, self._offside)
+                state.pos, self._sizes, team, state.attack_direction(team), ball_x, rows, self._offside)
             self._offside_pending = line is not None
             if line is not None:
                 self._offside_rows = np.flatnonzero(self._offside)
@@ -656,7 +726,7 @@ class Referee:
             return
         rows = self._goalie_rows
         row = rows[team]
-        if row in kickers:
+        if row == NO_PLAYER or row in kickers:
             return
         if state.cycle - self._last_catch_attempt[team] <= self.config.rules.catch_ban_cycles:
             return
@@ -705,9 +775,13 @@ class Referee:
     # ------------------------------------------------------------------ checks
 
     def _check_state(self, state: WorldState) -> None:
-        n2 = 2 * self._n
+        home, away = self._sizes
+        n2 = home + away
         for name, shape in (("pos", (n2, 2)), ("vel", (n2, 2)), ("ball", (2,)), ("ball_vel", (2,))):
             arr = getattr(state, name)
             if getattr(arr, "shape", None) != shape:
-                raise ValueError(f"WorldState.{name} must have shape {shape} for {self._n} players per team, "
+                sides = f"{home} players per team" if home == away else f"{home} home and {away} away players"
+                raise ValueError(f"WorldState.{name} must have shape {shape} for {sides}, "
                                  f"got {getattr(arr, 'shape', type(arr).__name__)}")
+        if tuple(state.sizes) != self._sizes:
+            raise ValueError(f"WorldState.sizes must be {self._sizes} (home, away players), got {state.sizes}")

@@ -1,8 +1,9 @@
 """The world state shared by the match loop and the referee, and the play modes.
 
 Frames: the *absolute* frame has the origin at the centre spot, +x towards the
-goal on the right. Player rows 0..n-1 are the home team, n..2n-1 the away
-team (n = players per team). ``home_attacks`` tells which way home plays in the
+goal on the right. Player rows 0..h-1 are the home team, h..h+a-1 the away
+team (h, a = players of each side; h = a = players per team in a full match,
+``WorldState.sizes``). ``home_attacks`` tells which way home plays in the
 current half (+1: towards +x, the first half; -1 after the half-time swap).
 Teams never see this frame: :mod:`soccer_sim.view` mirrors it for them.
 
@@ -161,10 +162,25 @@ class WorldState:
     """(2n,) stamina recovery rate of each player (see config.StaminaConfig)."""
     capacity: np.ndarray | None = None
     """(2n,) stamina each player can still recover in this half (inf: unlimited)."""
+    sizes: tuple[int, int] | None = None
+    """(home, away) players: rows ``0..home-1`` are home's, the rest away's. None (a state built
+    by hand) means two even sides, half the rows each."""
+
+    def __post_init__(self) -> None:
+        if self.sizes is None:
+            half = self.pos.shape[0] // 2
+            self.sizes = (half, half)
+        else:
+            self.sizes = (int(self.sizes[0]), int(self.sizes[1]))
 
     @property
     def players_per_team(self) -> int:
-        return self.pos.shape[0] // 2
+        """Players per side when both sides are the same size; a ValueError for uneven sides
+        (use :attr:`sizes`)."""
+        home, away = self.sizes
+        if home != away:
+            raise ValueError(f"the sides are uneven ({home} home, {away} away players): use WorldState.sizes")
+        return home
 
     def attack_direction(self, team: int) -> int:
         """+1 if ``team`` attacks towards +x in the current half, else -1."""
@@ -172,4 +188,8 @@ class WorldState:
 
     def team_of(self, row: int) -> int:
         """Team (HOME/AWAY) of player row ``row``."""
-        return HOME if row < self.players_per_team else AWAY
+        return HOME if row < self.sizes[0] else AWAY
+
+    def first_row(self, team: int) -> int:
+        """Row of ``team``'s first player (its player ``i`` is row ``first_row(team) + i``)."""
+        return 0 if team == HOME else self.sizes[0]

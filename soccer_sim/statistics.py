@@ -68,10 +68,11 @@ class StatisticsRecorder:
 
     def on_start(self, match: Match) -> None:
         state = match.state
-        self._n = state.players_per_team
+        self._n = state.sizes[0]
+        """Home players: rows below it are home's."""
         self._relocation = RELOCATION_FACTOR * match.config.physics.player_speed_max
         self._previous = state.pos.copy()
-        self._distance = np.zeros(2 * self._n)
+        self._distance = np.zeros(state.pos.shape[0])
         self._possession = [0, 0]
 
     def on_cycle(self, match: Match) -> None:
@@ -97,7 +98,7 @@ class StatisticsRecorder:
                 passes=int(np.count_nonzero(mine & (kinds == EventKind.PASS))),
                 possession=self._possession[team] / touched if touched else 0.0,
                 teammate_contacts=int(match.teammate_contacts[team]),
-                distance_run=float(self._distance[team * n:(team + 1) * n].sum()),
+                distance_run=float((self._distance[:n] if team == HOME else self._distance[n:]).sum()),
                 reported=reported,
             ))
         self.result = (stats[0], stats[1])

@@ -51,8 +51,21 @@ class SideInfo:
     """The team's name in this match (the registry name, or the class name)."""
     opponent_name: str
     players_per_team: int
+    """Players of this team (0 to 11; the rows of ``own_pos`` in its views)."""
     goalie_index: int
-    """Index of the team's goalkeeper within the team (the only player whose catch counts)."""
+    """Index of the team's goalkeeper within the team (the only player whose catch counts);
+    -1 (``NO_PLAYER``) when the team has no goalkeeper (a scenario may leave it out)."""
+    opponents: int | None = None
+    """Players of the opposing team (the rows of ``opp_pos``); None: as many as ours."""
+    opponent_goalie_index: int | None = None
+    """Index of the opponents' goalkeeper among them, -1 if they have none; None: the same
+    index as ours."""
+
+    def __post_init__(self) -> None:
+        if self.opponents is None:
+            object.__setattr__(self, "opponents", self.players_per_team)
+        if self.opponent_goalie_index is None:
+            object.__setattr__(self, "opponent_goalie_index", self.goalie_index)
 
 
 @dataclass(eq=False)

@@ -23,27 +23,31 @@ from soccer_sim.team import TeamCommand, TeamError, TeamView
 class TeamFrame:
     """One team's window on the world: builds its :class:`TeamView` and reads its commands.
 
-    ``commands`` is the match's (2n, 4) absolute command buffer (``[dash_x, dash_y, kick_x,
-    kick_y]`` per player row); this team writes its own rows.
+    ``commands`` is the match's (P, 4) absolute command buffer (``[dash_x, dash_y, kick_x,
+    kick_y]`` per player row, P players of both sides); this team writes its own rows.
+    ``players_per_team`` is this team's size; ``opponents`` the other side's (None: the same).
     """
 
     def __init__(self, team: int, name: str, players_per_team: int, block: BodyBlock,
-                 commands: np.ndarray) -> None:
+                 commands: np.ndarray, opponents: int | None = None) -> None:
         n = players_per_team
+        m = n if opponents is None else opponents
+        home = n if team == 0 else m
+        total = n + m
         self.team = team
         self.name = name
         self.n = n
-        self.rows = slice(team * n, (team + 1) * n)
-        self._offset = team * n
+        self._offset = 0 if team == 0 else home
+        self.rows = slice(self._offset, self._offset + n)
         self._block = block
-        # Positions and velocities in two (2n + 1, 2) blocks (players, then the ball), so that
+        # Positions and velocities in two (P + 1, 2) blocks (players, then the ball), so that
         # every array of the view is C-contiguous (teams and compiled kernels take them as they are).
-        self._pos = np.empty((2 * n + 1, 2))
-        self._vel = np.empty((2 * n + 1, 2))
-        own, opp = self.rows, slice((1 - team) * n, (2 - team) * n)
+        self._pos = np.empty((total + 1, 2))
+        self._vel = np.empty((total + 1, 2))
+        own, opp = self.rows, (slice(home, total) if team == 0 else slice(0, home))
         self.view = TeamView(
             own_pos=self._pos[own], own_vel=self._vel[own], opp_pos=self._pos[opp], opp_vel=self._vel[opp],
-            ball=self._pos[2 * n], ball_vel=self._vel[2 * n], stamina=np.empty(n), effort=np.empty(n),
+            ball=self._pos[total], ball_vel=self._vel[total], stamina=np.empty(n), effort=np.empty(n),
             capacity=np.empty(n),
         )
         self._commands = commands[self.rows]
@@ -51,8 +55,8 @@ class TeamFrame:
         self._kick = self._commands[:, 2:4]
         self._shape = (n, 2)
         # Stand-ins for hand-built states without a stamina model: fresh players.
-        self._fresh_effort = np.ones(2 * n)
-        self._fresh_capacity = np.full(2 * n, np.inf)
+        self._fresh_effort = np.ones(total)
+        self._fresh_capacity = np.full(total, np.inf)
 
     def update_view(self, state: WorldState, sign: int) -> TeamView:
         """Refresh and return the team's view of ``state`` (arrays overwritten in place).

@@ -1,0 +1,84 @@
+"""Fingerprints of whole matches, to check that the default scenario reproduces the matches
+played before scenarios existed, bit for bit.
+
+A fingerprint hashes every cycle's world (player and ball positions and velocities, play
+mode, score), the whole event log and both teams' statistics. It uses only the public API
+that existed before scenarios (``run_match`` with recorders), so the same code recorded the
+expected values on the older code base::
+
+    python -m tests.soccer_sim.scenario_fingerprint      # prints the fingerprints as a dict
+"""
+
+from __future__ import annotations
+
+import hashlib
+
+import numpy as np
+
+import soccer_sim
+
+CASES: dict[str, tuple[str, str, int, int | None]] = {
+    # name: (home, away, seed, max_cycles (None: a full match))
+    "chaser-chaser-0": ("chaser", "chaser", 0, None),
+    "chaser-chaser-1": ("chaser", "chaser", 1, None),
+    "chaser-idle-2": ("chaser", "idle", 2, None),
+    "mmdr-press433-3": ("mmdr", "press-433", 3, 700),
+    "bidding-statues-4": ("bidding", "statues", 4, 700),
+    "static-chaser-5": ("static", "chaser", 5, 700),
+}
+"""Fast cases: trivial teams over full matches, built-in teams over the first 700 cycles."""
+
+SLOW_CASES: dict[str, tuple[str, str, int, int | None]] = {
+    "mmdr-mmd+msd2-0": ("mmdr", "mmd+msd2", 0, None),
+    "bidding-press433-1": ("bidding", "press-433", 1, None),
+    "counter442-possession-2": ("counter-442", "possession", 2, None),
+}
+"""Full matches between built-in teams."""
+
+
+class TrajectoryHash:
+    """A recorder hashing the world after the opening kick-off and after every cycle."""
+
+    def __init__(self) -> None:
+        self._hash = hashlib.sha256()
+
+    def _add(self, match: object) -> None:
+        state = match.state
+        h = self._hash
+        for array in (state.pos, state.vel, state.ball, state.ball_vel, state.score):
+            h.update(np.ascontiguousarray(array).tobytes())
+        h.update(bytes((int(state.play_mode), int(state.mode_team) + 1)))
+
+    def on_start(self, match: object) -> None:
+        self._add(match)
+
+    def on_cycle(self, match: object) -> None:
+        self._add(match)
+
+    def on_end(self, match: object) -> None:
+        pass
+
+    def hexdigest(self) -> str:
+        return self._hash.hexdigest()
+
+
+def fingerprint(home: str, away: str, seed: int, max_cycles: int | None, **match_kwargs: object) -> dict[str, object]:
+    """Play the match and return its score, cycles and hashes of trajectory, events and statistics."""
+    config = soccer_sim.MatchConfig(max_cycles=max_cycles)
+    trace = TrajectoryHash()
+    result = soccer_sim.run_match(home, away, seed=seed, config=config, recorders=[trace], **match_kwargs)
+    events = hashlib.sha256()
+    for name, array in sorted(result.events.as_arrays().items()):
+        events.update(name.encode())
+        events.update(array.tobytes())
+    stats = hashlib.sha256(repr([sorted(s.as_dict().items()) for s in result.statistics]).encode())
+    return {
+        "score": list(result.score), "cycles": result.cycles, "trajectory": trace.hexdigest()[:32],
+        "events": events.hexdigest()[:32], "statistics": stats.hexdigest()[:32],
+    }
+
+
+if __name__ == "__main__":
+    import pprint
+
+    pprint.pprint({name: fingerprint(*case) for name, case in {**CASES, **SLOW_CASES}.items()}, width=110)
