@@ -1,5 +1,5 @@
-"""``soccer-sim play [HOME] [AWAY] --seed N [--cycles N] [--json]``: play one match and print its
-report: half-time and final score, the goals (cycle, team, scorer's shirt number), set plays of
+"""``soccer-sim play [HOME] [AWAY] --seed N [--cycles N] [--json] [--scenario NAME|FILE]``: play one
+match and print its report: half-time and final score, the goals (cycle, team, scorer's shirt number), set plays of
 each kind, offside calls and both teams' statistics; ``--json`` prints the same as one JSON object.
 
 ``--cycles`` up to a regulation match (2 x 3000 cycles) stops the match early; a longer count
@@ -24,6 +24,9 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                         help="stop after this many cycles (default: the full two halves of 3000); more than "
                              "6000 lengthens both halves to half of it each")
     parser.add_argument("--json", action="store_true", help="print the match report as one JSON object")
+    parser.add_argument("--scenario", default=None, metavar="NAME|FILE",
+                        help="play a scenario: a name from `soccer-sim scenarios` or a .json/.toml file "
+                             "(default: the regular match)")
     parser.set_defaults(func=run)
 
 
@@ -62,8 +65,9 @@ def run(args: argparse.Namespace) -> int:
     console = Console()
     try:
         config = match_config(args.cycles)
+        scenario = _scenario(getattr(args, "scenario", None))
         start = time.perf_counter()
-        result = run_match(args.home, args.away, seed=args.seed, config=config)
+        result = run_match(args.home, args.away, seed=args.seed, config=config, scenario=scenario)
         elapsed = time.perf_counter() - start
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
@@ -74,15 +78,32 @@ def run(args: argparse.Namespace) -> int:
     report = match_report(result)
     try:
         if args.json:
-            print(json.dumps(report.as_dict(), indent=2))
+            data = report.as_dict()
+            if scenario is not None:
+                data.update(scenario=result.scenario, end_reason=result.end_reason)
+            print(json.dumps(data, indent=2))
         else:
             _print_report(console, report, elapsed)
+            if scenario is not None:
+                console.print(f"scenario {escape(result.scenario)}: ended by {result.end_reason} after "
+                              f"{result.cycles} cycles")
         sys.stdout.flush()
     except BrokenPipeError:  # the reader went away (``soccer-sim play --json | head``): not an error
         import os
 
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no second error at exit
     return 0
+
+
+def _scenario(text: str | None):
+    """The scenario ``--scenario`` names: a library name, or a path to a .json/.toml file."""
+    if text is None:
+        return None
+    from soccer_sim.scenarios import get_scenario, load_scenario
+
+    if text.lower().endswith((".json", ".toml")):
+        return load_scenario(text)
+    return get_scenario(text)
 
 
 def _print_report(console, report, elapsed: float) -> None:
