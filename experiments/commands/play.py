@@ -1,6 +1,7 @@
 """``soccer-sim play [HOME] [AWAY] --seed N [--cycles N] [--json] [--scenario NAME|FILE]``: play one
-match and print its report: half-time and final score, the goals (cycle, team, scorer's shirt number), set plays of
-each kind, offside calls and both teams' statistics; ``--json`` prints the same as one JSON object.
+match and print its report: half-time and final score, the goals (cycle, team, scorer's shirt
+number), set plays of each kind, offside calls and both teams' statistics; ``--json`` prints the
+same as one JSON object.
 
 ``--cycles`` up to a regulation match (2 x 3000 cycles) stops the match early; a longer count
 lengthens both halves to half of it each (half time stays in the middle). Ctrl-C stops the match
