@@ -17,6 +17,7 @@ from collections.abc import Sequence
 #: Modules that each contribute one top-level sub-command.
 COMMAND_MODULES: tuple[str, ...] = (
     "experiments.commands.play",
+    "experiments.commands.scenarios",
     "experiments.commands.formation",
     "experiments.commands.bench",
     "experiments.commands.experiment",
