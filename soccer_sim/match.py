@@ -70,12 +70,14 @@ class MatchResult:
     """Cycles played."""
     end_reason: str = "time_over"
     """Why the match ended: ``"time_over"`` (the configuration's length), ``"cycle_limit"`` (the
-    scenario's), or the scenario's end condition that was met (``"goal"``, ``"out"``, ``"lost"``)."""
+    scenario's), or the scenario's end condition that was met (``"goal"``, ``"scored"``, ``"out"``,
+    ``"lost"``)."""
     scenario: str = "full-match"
     """Name of the scenario played."""
 
 
-_END_KINDS = {int(EventKind.GOAL): "goal", int(EventKind.OUT): "out"}
+_GOAL = int(EventKind.GOAL)
+_END_KINDS = {_GOAL: "goal", int(EventKind.OUT): "out"}
 _LOST_KINDS = frozenset({int(EventKind.KICK), int(EventKind.TOUCH), int(EventKind.CATCH), int(EventKind.SET_PLAY)})
 """Events of the defending side that mean the attackers lost the ball."""
 
@@ -299,8 +301,9 @@ class Match:
         return moves
 
     def _check_end(self) -> None:
-        """The scenario's end conditions, judged on this cycle's events: a GOAL, an OUT, or
-        the defending side playing the ball (kick, touch, catch) or being given a set play.
+        """The scenario's end conditions, judged on this cycle's events: a GOAL (of the
+        attackers: ``scored``), an OUT, or the defending side playing the ball (kick, touch,
+        catch) or being given a set play.
         The first met, in the order of ``END_CONDITIONS``, ends the match (TIME_OVER)."""
         events = self.events
         mark, end = self._event_mark, len(events)
@@ -312,6 +315,8 @@ class Match:
         for kind, team in zip(kinds, teams):
             if kind in _END_KINDS:
                 met.add(_END_KINDS[kind])
+                if kind == _GOAL and team != self._defender:
+                    met.add("scored")
             elif team == self._defender and kind in _LOST_KINDS:
                 met.add("lost")
         for reason in self._ends:

@@ -138,7 +138,7 @@ def keep_in_own_half(pos: np.ndarray, direction: int | np.ndarray) -> np.ndarray
     halfway line. ``direction``: the attack direction, one for all rows or one per row.
     Returns the bool mask of moved rows, or None if nobody was moved (the common case)."""
     depth = pos[:, 0] * direction
-    if depth.max() <= 0.0:
+    if not depth.size or depth.max() <= 0.0:
         return None
     pos[:, 0] = np.minimum(depth, 0.0) * direction
     return depth > 0.0

@@ -38,9 +38,10 @@ MAX_PLAYERS = 11
 CONFIG_GOALIE = "config"
 """``Side.goalie`` value meaning: the configuration's ``rules.goalie_index`` (if the side is
 large enough for it; a side of 0 players has no goalkeeper)."""
-END_CONDITIONS = ("goal", "out", "lost")
+END_CONDITIONS = ("goal", "scored", "out", "lost")
 """End conditions besides the cycle limit, in the order they are judged within one cycle:
-a goal (either side), the ball out over a line (not a goal), the ball lost to the defending
+a goal (either side), a goal for the attacking side (``Scenario.attacker``; own goals of the
+defenders included), the ball out over a line (not a goal), the ball lost to the defending
 side (one of its players kicks, touches or catches it, or it is awarded a set play)."""
 START_MODES = {
     "kick_off": PlayMode.KICK_OFF, "play_on": PlayMode.PLAY_ON, "kick_in": PlayMode.KICK_IN,
@@ -239,7 +240,7 @@ class Scenario:
                                           "has no players; give a cycle_limit or drop it")
         nobody = counts[0] == 0 and counts[1] == 0
         ball_still = self.ball.velocity == (0.0, 0.0)
-        for end in ("goal", "out"):
+        for end in ("goal", "scored", "out"):
             if end in self.end_on and nobody and ball_still:
                 raise ScenarioError("end_on", f"{end!r} can never happen: no players and a ball at rest; give a "
                                               "cycle_limit or a ball velocity")

@@ -127,6 +127,14 @@ def test_a_ball_rolling_in_with_nobody_on_the_field_is_a_goal_for_home():
     assert result.statistics[0].distance_run == 0.0 and result.statistics[1].distance_run == 0.0
 
 
+def test_scored_ends_the_match_only_on_a_goal_of_the_attacking_side():
+    ball = BallStart((-40.0, 0.0), (-2.0, 0.0))  # into home's goal: a goal for away
+    against = run_match("idle", "idle", scenario=nobody(end_on=("scored",), ball=ball, cycle_limit=80))
+    assert against.score == (0, 1) and against.end_reason == "cycle_limit" and against.cycles == 80
+    for_away = run_match("idle", "idle", scenario=nobody(end_on=("scored",), ball=ball, attacker="away"))
+    assert for_away.end_reason == "scored" and for_away.cycles < 80
+
+
 def test_the_ball_going_out_ends_the_match_in_that_cycle():
     result = run_match("idle", "idle", scenario=nobody(end_on=("goal", "out"), ball=BallStart((0.0, 30.0), (0.0, 2.0))))
     assert result.end_reason == "out"
