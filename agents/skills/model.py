@@ -36,10 +36,15 @@ class MotionModel:
     """Constants and tables of one match configuration, shared by every skill.
 
     ``horizon`` is the number of cycles the predictions look ahead (interception, passes,
-    shots); :attr:`reach` has ``horizon + 1`` entries.
+    shots); :attr:`reach` has ``horizon + 1`` entries. The sides' sizes and goalkeepers default
+    to the configuration's (``players_per_team``, ``rules.goalie_index``); a scenario's uneven
+    sides pass them from the team's ``SideInfo``: ``players`` and ``goalie`` (-1: none) for our
+    side, ``opponents`` and ``opponent_goalie`` for theirs.
     """
 
-    def __init__(self, config: MatchConfig, horizon: int = 60) -> None:
+    def __init__(self, config: MatchConfig, horizon: int = 60, players: int | None = None,
+                 goalie: int | None = None, opponents: int | None = None,
+                 opponent_goalie: int | None = None) -> None:
         if not isinstance(config, MatchConfig):
             raise SkillInputError(f"MotionModel needs a MatchConfig, got {type(config).__name__}")
         if not (isinstance(horizon, (int, np.integer)) and not isinstance(horizon, bool) and horizon >= 1):
@@ -47,8 +52,13 @@ class MotionModel:
         phys, field, rules = config.physics, config.field, config.rules
         self.config = config
         self.horizon = int(horizon)
-        self.players_per_team = config.players_per_team
-        self.goalie_index = rules.goalie_index
+        self.players_per_team = config.players_per_team if players is None else int(players)
+        self.goalie_index = rules.goalie_index if goalie is None else int(goalie)
+        """Our goalkeeper's index, -1 when we have none."""
+        self.opponents = self.players_per_team if opponents is None else int(opponents)
+        """Players of the opposing side."""
+        self.opponent_goalie_index = self.goalie_index if opponent_goalie is None else int(opponent_goalie)
+        """The opponents' goalkeeper's index among them, -1 when they have none."""
         self.accel_max = float(phys.player_accel_max)
         """Largest dash acceleration at full effort (m/cycle²)."""
         self.speed_max = float(phys.player_speed_max)
