@@ -76,13 +76,15 @@ class BallRace:
         return int(self.theirs.first_cycle) - int(self.ours.first_cycle)
 
 
-def control_radii(model: MotionModel, goalie: int | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """(radius, catch radius) per player of a team: the kickable distance for everyone, and for
-    ``goalie`` the larger of it and the catch length (used inside its own penalty area)."""
-    n = model.players_per_team
+def control_radii(model: MotionModel, goalie: int | None = None, players: int | None = None
+                  ) -> tuple[np.ndarray, np.ndarray]:
+    """(radius, catch radius) per player of a team of ``players`` (None: ours): the kickable
+    distance for everyone, and for ``goalie`` (None or -1: no goalkeeper) the larger of it and
+    the catch length (used inside its own penalty area)."""
+    n = model.players_per_team if players is None else players
     radius = np.full(n, model.kickable_distance)
     catch = radius.copy()
-    if goalie is not None:
+    if goalie is not None and goalie >= 0:
         catch[goalie] = max(model.kickable_distance, model.catch_length)
     return radius, catch
 
@@ -94,6 +96,19 @@ def team_radii(model: MotionModel, extra: float = 0.0) -> tuple[np.ndarray, np.n
     found = cache.get(extra)
     if found is None:
         radius, catch = control_radii(model, model.goalie_index)
+        found = cache[extra] = (radius + extra, catch + extra)
+    return found
+
+
+def opponent_radii(model: MotionModel, extra: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`team_radii` for the opponents (their size and goalkeeper, ``model.opponents`` and
+    ``model.opponent_goalie_index``); the same arrays as ours when the sides are alike."""
+    if model.opponents == model.players_per_team and model.opponent_goalie_index == model.goalie_index:
+        return team_radii(model, extra)
+    cache = model.__dict__.setdefault("_opponent_radii", {})
+    found = cache.get(extra)
+    if found is None:
+        radius, catch = control_radii(model, model.opponent_goalie_index, model.opponents)
         found = cache[extra] = (radius + extra, catch + extra)
     return found
 
@@ -166,8 +181,8 @@ def ball_race(model: MotionModel, view: object, eligible: np.ndarray | None = No
     """Interceptions of the view's ball by our players and by the opponents.
 
     Our players use the view's effort (ones when absent) and our goalkeeper catches in our
-    penalty area; the opponents are taken fresh (effort 1), their goalkeeper (same index as
-    ours) catching in theirs. ``eligible`` ((n,) bool, None: all) leaves out our players who
+    penalty area; the opponents are taken fresh (effort 1), their goalkeeper
+    (``model.opponent_goalie_index``, by default the same index as ours) catching in theirs. ``eligible`` ((n,) bool, None: all) leaves out our players who
     must not play the ball, e.g. those in an offside position when a team-mate last kicked
     (:func:`agents.skills.offside_positions`): their cycle is UNREACHABLE and they are never
     ``first``.
@@ -200,6 +215,7 @@ def _race_inputs(model: MotionModel, view: object) -> tuple[np.ndarray, np.ndarr
     radius, catch = team_radii(model)
     own = _players(model, view.own_pos, view.own_vel, view_effort(view, model.players_per_team), radius, catch,
                    radii_checked=True)
+    radius, catch = opponent_radii(model)
     opp = _players(model, view.opp_pos, view.opp_vel, None, radius, catch, radii_checked=True)
     inputs = (ball, ball_vel, own, opp)
     checked = (ball.base, ball_vel.base, own[0], own[1], opp[0], opp[1], own[2] if effort is not None else None)
@@ -260,7 +276,7 @@ def _players(model: MotionModel, pos: object, vel: object, effort: object, radiu
     vel = float_array("vel", vel, (n, 2))
     defaults = _defaults(model, n)
     effort = defaults[0] if effort is None else float_array("effort", effort, (n,))
-    if radii_checked and n == model.players_per_team:
+    if radii_checked and n == radius.shape[0]:
         return pos, vel, effort, radius, catch_radius
     radius = defaults[1] if radius is None else float_array("radius", radius, (n,))
     catch_radius = radius if catch_radius is None else float_array("catch_radius", catch_radius, (n,))
