@@ -27,7 +27,7 @@ import numpy as np
 
 from agents.skills.clearing import ClearParams, best_clearance
 from agents.skills.dribbling import DribbleParams, dribble
-from agents.skills.interception import intercept, team_radii
+from agents.skills.interception import intercept, opponent_radii
 from agents.skills.model import MotionModel, SkillInputError, check_params, check_player
 from agents.skills.passing import PassParams, best_pass
 from agents.skills.shooting import ShotParams, best_shot
@@ -88,7 +88,7 @@ def decide_on_ball(model: MotionModel, view: object, player: int,
     player = check_player(player, model.players_per_team)
     holder = view.ball_holder == player
     goalie = player == model.goalie_index
-    radius, catch = team_radii(model)
+    radius, catch = opponent_radii(model)
     pressure = intercept(model, view.ball, view.ball_vel, view.opp_pos, view.opp_vel, None, radius, catch,
                          1.0).first_cycle
     under_pressure = pressure <= params.pressure_cycles

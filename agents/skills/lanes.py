@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import njit
 
-from agents.skills.interception import UNREACHABLE, intercept_many, team_radii
+from agents.skills.interception import UNREACHABLE, intercept_many, opponent_radii, team_radii
 from agents.skills.model import MotionModel, check_player, view_effort
 
 
@@ -31,13 +31,13 @@ def opponent_cycles(model: MotionModel, view: object, ball: np.ndarray, velociti
     ``limit`` (P,) int: last cycle searched per lane (None: the horizon); ``extra_radius``
     (m) widens every opponent's control distance (a safety margin for noise); ``reaction``
     (cycles) is how late the opponents start to chase: they see our kick only in the next
-    cycle's view, so 1. Opponents are taken at full effort; their goalkeeper (same index as
-    ours) catches in its penalty area.
+    cycle's view, so 1. Opponents are taken at full effort; their goalkeeper
+    (``model.opponent_goalie_index``) catches in its penalty area.
     Returns (cycles (P,) int, :data:`UNREACHABLE` when nobody gets there; opponent (P,) int,
     -1 when nobody).
     """
     velocities = np.ascontiguousarray(velocities, dtype=np.float64).reshape(-1, 2)
-    radius, catch = team_radii(model, extra_radius)
+    radius, catch = opponent_radii(model, extra_radius)
     cycles, _ = intercept_many(model, np.asarray(ball, np.float64), velocities, view.opp_pos, view.opp_vel, None,
                                radius, catch, 1.0, limit, reaction, first_only=True)
     if cycles.shape[1] == 0:

@@ -123,7 +123,7 @@ def pass_candidates(model: MotionModel, view: object, passer: int, params: PassP
     passer = check_player(passer, n, "passer")
     ok = ~offside_positions(model, view.own_pos, view.opp_pos, view.ball)
     ok[passer] = False
-    if not params.allow_goalie:
+    if not params.allow_goalie and model.goalie_index >= 0:
         ok[model.goalie_index] = False
     return np.flatnonzero(ok)
 
