@@ -22,6 +22,11 @@ Every cycle (team frame: we attack +x, our goal at x = -half_length):
    matters (:func:`agents.skills.speed_caps`); the goalkeeper guards the line between ball and
    goal and catches (never a back-pass).
 
+**Smaller sides** (a scenario's 0 to 11 players, the goalkeeper optional): the goalkeeper, if
+any, keeps the goalkeeper role, and the outfield players take as many of the formation's
+outfield roles, those whose targets lie nearest them when play starts (a minimal-total-distance
+matching on the first cycle), for the whole match; a side of no players does nothing.
+
 The team reports per-match figures through :meth:`FormationTeam.statistics` and what it would
 like drawn through :meth:`FormationTeam.drawing`.
 """
@@ -110,21 +115,31 @@ class FormationTeam:
     def reset(self, side_info: SideInfo, config: MatchConfig, rng: np.random.Generator) -> None:
         n = side_info.players_per_team
         roles = len(self.formation_set.roles)
-        if n != roles:
-            raise ValueError(f"{type(self).__name__} plays {roles} players per side (formation "
-                             f"{self.style.system!r}), not {n}")
-        self.model = skills.MotionModel(config)
+        goalie = side_info.goalie_index
+        outfield_count = n - (1 if 0 <= goalie < n else 0)
+        if n > roles or outfield_count > len(self._outfield_roles):
+            raise ValueError(f"{type(self).__name__} plays at most {roles} players per side, "
+                             f"{len(self._outfield_roles)} of them outfield (formation {self.style.system!r}), "
+                             f"not {n} with {outfield_count} outfield")
+        self.model = skills.MotionModel(config, players=n, goalie=goalie,
+                                        opponents=getattr(side_info, "opponents", None),
+                                        opponent_goalie=getattr(side_info, "opponent_goalie_index", None))
         self.config = config
         self.n = n
-        self.goalie = side_info.goalie_index
-        self.outfield = np.array([i for i in range(n) if i != self.goalie])
+        self.goalie = goalie
+        """Our goalkeeper's index, -1 when we have none."""
+        self.outfield = np.array([i for i in range(n) if i != self.goalie], dtype=np.int64)
         self._out = _as_slice(self.outfield)
         """The outfield rows, as a slice when they are contiguous (cheaper than fancy indexing)."""
+        self._match_roles = self._outfield_roles
+        """The outfield roles this match fills (all of them, or those chosen on the first cycle)."""
+        self._choose_roles = outfield_count < len(self._outfield_roles)
         self._out_roles = _as_slice(self._outfield_roles)
-        self.assigner.reset(len(self.outfield), rng)
+        if len(self.outfield):  # (a goalkeeper alone, or nobody, has no roles to assign)
+            self.assigner.reset(len(self.outfield), rng)
         self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
         self.goals = np.zeros((n, 2))
-        self.targets = np.zeros((n, 2))
+        self.targets = np.zeros((roles, 2))
         self.role_of_player: np.ndarray | None = None
         self.kick_off_spots = self._kick_off_spots()
         self._half_length = config.field.half_length
@@ -159,9 +174,26 @@ class FormationTeam:
         """(n, 2) where each role stands at our kick-off (team frame)."""
         return self.formation_set.positions((0.0, 0.0), Situation.OUR_SET_PLAY)
 
+    def _pick_roles(self, view: TeamView) -> None:
+        """A smaller side's outfield players take the outfield roles whose targets (for the ball
+        where it is now) are nearest them, one each (minimal total distance)."""
+        from scipy.optimize import linear_sum_assignment
+
+        targets = self.formation_set.positions(view.ball, Situation.NORMAL)[self._outfield_roles]
+        players = view.own_pos[self.outfield]
+        cost = np.hypot(players[:, None, 0] - targets[None, :, 0], players[:, None, 1] - targets[None, :, 1])
+        _, chosen = linear_sum_assignment(cost)
+        self._match_roles = np.sort(self._outfield_roles[chosen])
+        self._out_roles = _as_slice(self._match_roles)
+        self._choose_roles = False
+
     # ------------------------------------------------------------------ one cycle
     def act(self, view: TeamView) -> TeamCommand:
         command = self.command
+        if self.n == 0:
+            return command
+        if self._choose_roles:
+            self._pick_roles(view)
         command.kick[:] = 0.0
         command.catch = False
         command.move = None
@@ -229,9 +261,12 @@ class FormationTeam:
         outfield = self._out
         role_targets = targets[self._out_roles]
         players = view.own_pos[outfield]
+        if not len(self.outfield):
+            self.goals[self.goalie] = skills.guard_position(self.model, view.ball)
+            return
         if self.style.stationary:
             role_of_player = np.arange(len(self.outfield))
-            goals = self.kick_off_spots[self._outfield_roles]
+            goals = self.kick_off_spots[self._match_roles]
         else:
             context = self._context
             context.ball = ball_ref
@@ -254,7 +289,8 @@ class FormationTeam:
             self._switches += int(np.count_nonzero(role_of_player != self.role_of_player))
         self.role_of_player = role_of_player
         self.goals[outfield] = goals
-        self.goals[self.goalie] = skills.guard_position(self.model, view.ball)
+        if self.goalie >= 0:
+            self.goals[self.goalie] = skills.guard_position(self.model, view.ball)
 
     # ------------------------------------------------------------------ play on
     def _play_on(self, view: TeamView, race: skills.BallRace, urgent: np.ndarray) -> None:
@@ -280,8 +316,8 @@ class FormationTeam:
         if contested:
             self._our_pass_in_flight = False
         kicker = self._kicker(view, race, ball_player)
-        goalie_near = race.ours.cycles[self.goalie] <= 1
-        if kicker == self.goalie and skills.should_catch(model, view, self.goalie,
+        goalie_near = self.goalie >= 0 and race.ours.cycles[self.goalie] <= 1
+        if kicker >= 0 and kicker == self.goalie and skills.should_catch(model, view, self.goalie,
                                                          teammate_kicked_last=self._our_pass_in_flight):
             command.catch = True  # a held ball is safer than a kick
             kicker = -1
@@ -352,8 +388,9 @@ class FormationTeam:
 
     # ------------------------------------------------------------------ set plays
     def _taker(self, view: TeamView) -> int:
-        gaps = np.hypot(*(view.own_pos[self.outfield] - view.ball).T)
-        return int(self.outfield[int(np.argmin(gaps))])
+        candidates = self.outfield if len(self.outfield) else np.arange(self.n)  # a lone goalkeeper takes it
+        gaps = np.hypot(*(view.own_pos[candidates] - view.ball).T)
+        return int(candidates[int(np.argmin(gaps))])
 
     def _kick_off(self, view: TeamView, urgent: np.ndarray) -> None:
         """Before a kick-off (and in the pause after a goal) place everybody on the set-play
@@ -383,6 +420,8 @@ class FormationTeam:
                 self.command.kick[taker] = decision.kick
 
     def _goalie_holds(self, view: TeamView) -> None:
+        if self.goalie < 0:
+            return
         if view.ball_holder == self.goalie and view.cycle - self._mode_since >= self.style.set_play_wait:
             self.command.kick[self.goalie] = skills.distribute(self.model, view, self.goalie).kick
         self.goals[self.goalie] = view.own_pos[self.goalie]
@@ -394,7 +433,7 @@ class FormationTeam:
         cycles: the largest is the assignment's makespan), and the share of role-cycles a role
         was unfilled (its player farther than ``unfilled_distance``)."""
         cycles = max(self._cycles, 1)
-        roles = len(self.outfield)
+        roles = max(len(self.outfield), 1)
         return {
             "role_switches_per_minute": self._switches / max(self._cycles / _CYCLES_PER_MINUTE, 1e-9)
             if self._cycles else 0.0,

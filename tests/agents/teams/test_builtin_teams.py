@@ -59,9 +59,11 @@ def test_reference_opponents_have_their_own_styles() -> None:
 def test_unknown_assigner_and_wrong_team_size_are_clear_errors() -> None:
     with pytest.raises(ValueError, match="nonsense"):
         FormationTeam("nonsense")
-    with pytest.raises(ValueError, match="11 players"):
-        FormationTeam().reset(SideInfo(0, "us", "them", 5, 0), MatchConfig(players_per_team=5),
+    with pytest.raises(ValueError, match="at most 11 players"):
+        FormationTeam().reset(SideInfo(0, "us", "them", 12, 0), MatchConfig(players_per_team=12),
                               np.random.default_rng(0))
+    with pytest.raises(ValueError, match="not 11 with 11 outfield"):  # no goalkeeper: ten outfield roles
+        FormationTeam().reset(SideInfo(0, "us", "them", 11, -1), MatchConfig(), np.random.default_rng(0))
 
 
 def test_the_fastest_player_runs_to_the_interception_point_and_others_hold_formation() -> None:
