@@ -361,6 +361,8 @@ class FormationTeam:
             return first if race.ours.cycles[first] <= 2 else -1
         if first == self.goalie and not self.model.in_penalty_area(race.ours.points[first]):
             cycles = race.ours.cycles[self.outfield]
+            if not cycles.size:  # a lone goalkeeper stays in its area
+                return -1
             best = int(np.argmin(cycles))
             return int(self.outfield[best]) if cycles[best] < skills.UNREACHABLE else -1
         return int(first)
