@@ -18,6 +18,7 @@ STUDIES: dict[str, tuple[str, str]] = {
     "incremental": ("experiments.studies.incremental", "tunable incremental assignment: routes of a new pair versus lambda (Fig. 8)"),
     "case-study": ("experiments.studies.case_study", "SCRAM's Table 5: each role assigner against the reference opponents"),
     "drop-in": ("experiments.studies.drop_in", "ad hoc teamwork: a SCRAM player and a static-roles player in mixed teams"),
+    "penalty-shot": ("experiments.studies.penalty_shot", "time to score from field markers: one robot, uncoordinated robots, coordinated robots"),
 }
 
 

@@ -1,0 +1,384 @@
+"""``soccer-sim experiment penalty-shot``: the penalty-shot experiment of "Dynamic multi-robot
+coordination" (Vail and Veloso) in this simulator.
+
+Attackers score on an empty goal, starting from a fixed sequence of ball markers spread over
+the field, half in each half, in the same order for every condition. Trial ``i`` places the
+ball, still, on marker ``i``; the attackers start where they stood when trial ``i - 1``'s goal
+was scored (at rest; the first trial starts them on their own goal line), so a trial begins
+from wherever the previous play left them, as after an opponent's clearance in a game. The
+trial ends with a goal (its time to score) or at ``--limit`` cycles (a timeout, counted at the
+limit). There are no set plays: a ball out over a line is put back a metre inside, where it
+left, and play goes on.
+
+Three conditions, the same team code (``--team``, potential-field bidding by default):
+
+* ``one``: a single robot;
+* ``uncoordinated``: ``--robots`` robots that each run the one-robot team on their own, blind
+  to each other (so all of them chase the ball);
+* ``coordinated``: ``--robots`` robots as one team, coordinated by the team's role assigner
+  (with ``bidding``: one robot wins the ball role, the others take supporting roles).
+
+Each condition's times are compared marker by marker with the Wilcoxon signed-rank test
+(``scipy.stats.wilcoxon``, two-sided). Then the same again with a goalkeeper (``--keeper``'s
+team, one player) defending the goal. Prints the tables (mean, standard deviation and median
+time per condition, timeouts, p-values) and writes ``penalty_shot_trials.csv`` (one row per
+trial), ``penalty_shot_summary.csv``, ``penalty_shot_tests.csv`` and ``penalty_shot.png`` (box
+plots) to ``--out``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import time
+from collections.abc import Callable, Sequence
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+import numpy as np
+
+from experiments.commands import doc_summary
+
+CONDITIONS = ("one", "uncoordinated", "coordinated")
+SETTINGS = ("empty goal", "goalkeeper")
+PAIRS = (("one", "uncoordinated"), ("one", "coordinated"), ("uncoordinated", "coordinated"))
+"""The condition pairs compared by the signed-rank test."""
+MARKER_INSET = 3.0
+"""Markers lie at least this far (m) inside the lines."""
+ROBOT_SPACING = 4.0
+"""Metres between the attackers on their goal line at the first trial."""
+
+
+class StudyArgumentError(ValueError):
+    """A command-line value the study cannot use; the message names the option."""
+
+
+@dataclass(frozen=True)
+class Trial:
+    """One trial: a marker, a condition, a setting and how long the attackers took."""
+
+    setting: str
+    condition: str
+    trial: int
+    marker_x: float
+    marker_y: float
+    cycles: int
+    seconds: float
+    scored: bool
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    from experiments.commands.play import positive_int
+
+    parser.description = doc_summary(__doc__)
+    parser.add_argument("--trials", type=positive_int, default=60,
+                        help="markers visited per condition and setting (default: %(default)s)")
+    parser.add_argument("--robots", type=positive_int, default=3,
+                        help="attackers in the uncoordinated and coordinated conditions (default: %(default)s)")
+    parser.add_argument("--team", default="bidding",
+                        help="the attackers' team (a registered name; default: %(default)s, potential-field bidding)")
+    parser.add_argument("--keeper", default="static",
+                        help="the goalkeeper's team in the second setting, played with one player (default: %(default)s)")
+    parser.add_argument("--limit", type=positive_int, default=1200,
+                        help="cycles a trial may last before it counts as a timeout (default: %(default)s, 2 minutes)")
+    parser.add_argument("--seed", type=int, default=0, help="seed of the markers and the matches (default: %(default)s)")
+    parser.add_argument("--workers", type=positive_int, default=None,
+                        help="processes playing the six chains of trials (default: every core, at most 6)")
+    parser.add_argument("--out", type=Path, default=Path("penalty-shot"),
+                        help="directory for the CSV files and the box plot (default: %(default)s)")
+
+
+# ---------------------------------------------------------------------------------- the design
+def markers(count: int, seed: int, half_length: float = 52.5, half_width: float = 34.0,
+            goal_area_length: float = 5.5, goal_area_half_width: float = 9.16) -> np.ndarray:
+    """(count, 2) the fixed marker sequence (absolute frame, the attackers attack +x):
+    alternately in the attackers' own half and in the opponents' half, uniform within
+    ``MARKER_INSET`` of the lines, none in or next to the goal area they attack."""
+    rng = np.random.default_rng([seed, 0x5E7])
+    out = np.empty((count, 2))
+    x_max, y_max = half_length - MARKER_INSET, half_width - MARKER_INSET
+    for i in range(count):
+        while True:
+            x = rng.uniform(-x_max, 0.0) if i % 2 == 0 else rng.uniform(0.0, x_max)
+            y = rng.uniform(-y_max, y_max)
+            near_goal = x > half_length - goal_area_length - 1.0 and abs(y) < goal_area_half_width + 1.0
+            if not near_goal:
+                break
+        out[i] = (x, y)
+    return out
+
+
+def first_positions(robots: int, half_length: float = 52.5) -> np.ndarray:
+    """(robots, 2) the attackers on their own goal line at the first trial, ``ROBOT_SPACING`` apart."""
+    y = (np.arange(robots) - (robots - 1) / 2.0) * ROBOT_SPACING
+    return np.column_stack([np.full(robots, -half_length + 0.5), y])
+
+
+def settle(positions: np.ndarray, half_length: float, half_width: float, gap: float) -> np.ndarray:
+    """``positions`` moved onto the field (a scorer may stand behind the goal line) and apart by
+    at least ``gap`` (m), so that they are a valid start for the next trial."""
+    pos = positions.copy()
+    inside = (half_length - 0.5, half_width - 0.5)
+    for _ in range(10):
+        pos[:, 0] = np.clip(pos[:, 0], -inside[0], inside[0])
+        pos[:, 1] = np.clip(pos[:, 1], -inside[1], inside[1])
+        moved = False
+        for i in range(len(pos)):
+            for j in range(i + 1, len(pos)):
+                d = pos[j] - pos[i]
+                dist = float(np.hypot(*d))
+                if dist < gap:
+                    direction = d / dist if dist > 1e-9 else np.array([0.0, 1.0])
+                    pos[j] = pos[i] + direction * gap
+                    moved = True
+        if not moved:
+            break
+    return pos
+
+
+def trial_scenario(marker: np.ndarray, attackers: np.ndarray, keeper: bool, limit: int):
+    """One trial: the attackers (home, no goalkeeper) at rest at ``attackers``, the ball still
+    on ``marker``, an empty goal or a goalkeeper on its line; ends at the goal or ``limit``."""
+    from soccer_sim.scenarios import BallStart, Scenario, Side
+
+    away = Side(positions=[(51.5, 0.0)], goalie=0) if keeper else Side(players=0)
+    return Scenario(name="penalty-shot", description="attackers score from a marker",
+                    home=Side(positions=[tuple(p) for p in attackers.tolist()], goalie=None), away=away,
+                    ball=BallStart(position=tuple(marker.tolist())), start_mode="play_on", end_on=("scored",),
+                    cycle_limit=limit, offside=False, set_plays=False, half_time=False)
+
+
+class Uncoordinated:
+    """``robots`` players, each running its own one-player copy of a team, blind to the others
+    (they are neither team-mates nor opponents to it): the "no coordination" condition.
+
+    ``factory`` makes a fresh team object; each copy gets its own random stream."""
+
+    def __init__(self, factory: Callable[[], object], robots: int, name: str = "uncoordinated") -> None:
+        self.factory = factory
+        self.robots = robots
+        self.name = name
+
+    def reset(self, side_info, config, rng: np.random.Generator) -> None:
+        from soccer_sim import SideInfo, TeamCommand, TeamError, TeamView
+
+        n = side_info.players_per_team
+        if n != self.robots:
+            raise TeamError(self.name, f"plays {self.robots} robots, not {n}")
+        m = side_info.opponents
+        self.copies = [self.factory() for _ in range(n)]
+        self.views = []
+        for k, (team, child) in enumerate(zip(self.copies, rng.spawn(n))):
+            team.reset(SideInfo(side_info.team, f"{self.name}[{k}]", side_info.opponent_name, 1, -1, m,
+                                side_info.opponent_goalie_index), config, child)
+            self.views.append(TeamView(own_pos=np.zeros((1, 2)), own_vel=np.zeros((1, 2)), opp_pos=np.zeros((m, 2)),
+                                       opp_vel=np.zeros((m, 2)), ball=np.zeros(2), ball_vel=np.zeros(2),
+                                       stamina=np.zeros(1), effort=np.ones(1), capacity=np.full(1, np.inf)))
+        self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
+
+    def act(self, view):
+        command = self.command
+        command.catch = False
+        command.move = None
+        for k, (team, own) in enumerate(zip(self.copies, self.views)):
+            own.own_pos[0] = view.own_pos[k]
+            own.own_vel[0] = view.own_vel[k]
+            own.opp_pos[:] = view.opp_pos
+            own.opp_vel[:] = view.opp_vel
+            own.ball[:] = view.ball
+            own.ball_vel[:] = view.ball_vel
+            own.stamina[0] = view.stamina[k]
+            own.effort[0] = view.effort[k]
+            own.capacity[0] = view.capacity[k]
+            own.play_mode, own.mode_ours, own.score = view.play_mode, view.mode_ours, view.score
+            own.cycle, own.half, own.ball_holder = view.cycle, view.half, -1
+            decision = team.act(own)
+            command.dash[k] = decision.dash[0]
+            command.kick[k] = decision.kick[0]
+        return command
+
+
+def _attackers(condition: str, team: str, robots: int):
+    from soccer_sim import resolve_team
+
+    if condition == "uncoordinated":
+        return Uncoordinated(lambda: resolve_team(team)[0], robots), robots
+    return resolve_team(team)[0], (1 if condition == "one" else robots)
+
+
+def run_chain(setting: str, condition: str, team: str, keeper_team: str, robots: int, marker_list: np.ndarray,
+              limit: int, seed: int) -> list[Trial]:
+    """Play one condition's trials in order, each starting where the previous goal left the
+    attackers."""
+    from soccer_sim import MatchConfig, resolve_team, run_match
+
+    config = MatchConfig()
+    f, phys = config.field, config.physics
+    keeper = setting == "goalkeeper"
+    attackers, count = _attackers(condition, team, robots)
+    keeper_side = resolve_team(keeper_team)[0] if keeper else "idle"
+    positions = first_positions(count, f.half_length)
+    trials = []
+    for i, marker in enumerate(marker_list):
+        start = settle(positions, f.half_length, f.half_width, 2.0 * phys.player_radius + 0.05)
+        result = run_match(attackers, keeper_side, seed=seed + i, config=config,
+                           scenario=trial_scenario(marker, start, keeper, limit))
+        scored = result.end_reason == "scored"
+        trials.append(Trial(setting, condition, i, float(marker[0]), float(marker[1]), result.cycles,
+                            result.cycles * phys.cycle_seconds, scored))
+        positions = result.state.pos[:count].copy()
+    return trials
+
+
+def _chain(job: tuple) -> list[Trial]:
+    return run_chain(*job)
+
+
+def collect(args: argparse.Namespace) -> list[Trial]:
+    """Every trial of every setting and condition (the six chains run in parallel)."""
+    marker_list = markers(args.trials, args.seed)
+    jobs = [(setting, condition, args.team, args.keeper, args.robots, marker_list, args.limit, args.seed)
+            for setting in SETTINGS for condition in CONDITIONS]
+    workers = args.workers or min(len(jobs), _cores())
+    if workers <= 1:
+        chains = [_chain(job) for job in jobs]
+    else:
+        with ProcessPoolExecutor(max_workers=workers) as pool:
+            chains = list(pool.map(_chain, jobs))
+    return [trial for chain in chains for trial in chain]
+
+
+def _cores() -> int:
+    import os
+
+    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+
+
+# ---------------------------------------------------------------------------------- statistics
+def times(trials: Sequence[Trial], setting: str, condition: str) -> np.ndarray:
+    """The seconds to score of one chain, in marker order."""
+    rows = sorted((t for t in trials if t.setting == setting and t.condition == condition), key=lambda t: t.trial)
+    return np.array([t.seconds for t in rows])
+
+
+def signed_rank_p(a: np.ndarray, b: np.ndarray) -> float:
+    """Two-sided p-value of the Wilcoxon signed-rank test on the paired times; 1.0 when every
+    pair is equal, NaN with fewer than two pairs."""
+    from scipy.stats import wilcoxon
+
+    if len(a) < 2:
+        return math.nan
+    if np.all(a == b):
+        return 1.0
+    return float(wilcoxon(a, b).pvalue)
+
+
+def summarise(trials: Sequence[Trial]) -> tuple[list[dict], list[dict]]:
+    """(per setting and condition: trials, mean, sd, median, timeouts; per setting and pair:
+    the mean paired difference and the signed-rank p-value)."""
+    summary, tests = [], []
+    for setting in SETTINGS:
+        for condition in CONDITIONS:
+            t = times(trials, setting, condition)
+            scored = [x.scored for x in trials if x.setting == setting and x.condition == condition]
+            summary.append({"setting": setting, "condition": condition, "trials": len(t),
+                            "mean_s": float(t.mean()) if len(t) else math.nan,
+                            "sd_s": float(t.std(ddof=1)) if len(t) > 1 else math.nan,
+                            "median_s": float(np.median(t)) if len(t) else math.nan,
+                            "timeouts": int(len(scored) - sum(scored))})
+        for first, second in PAIRS:
+            a, b = times(trials, setting, first), times(trials, setting, second)
+            tests.append({"setting": setting, "pair": f"{first} vs {second}",
+                          "mean_difference_s": float((a - b).mean()) if len(a) else math.nan,
+                          "p_value": signed_rank_p(a, b)})
+    return summary, tests
+
+
+# ---------------------------------------------------------------------------------- output
+def _tables(summary: list[dict], tests: list[dict], args: argparse.Namespace):
+    from experiments.reporting import Table
+
+    def fmt(value: float, digits: int = 2) -> str:
+        return "-" if math.isnan(value) else f"{value:.{digits}f}"
+
+    times_table = Table(f"Time to score (s), {args.trials} markers, {args.robots} robots in the team conditions",
+                        ["setting", "condition", "mean", "sd", "median", "timeouts"], labels=2)
+    for row in summary:
+        times_table.rows.append([row["setting"], row["condition"], fmt(row["mean_s"]), fmt(row["sd_s"]),
+                                 fmt(row["median_s"]), str(row["timeouts"])])
+    tests_table = Table("Wilcoxon signed-rank tests (paired by marker, two-sided)",
+                        ["pair", *(f"{s}: mean diff (s)" for s in SETTINGS), *(f"{s}: p" for s in SETTINGS)])
+    for first, second in PAIRS:
+        pair = f"{first} vs {second}"
+        cells = {(t["setting"], k): t[k] for t in tests if t["pair"] == pair for k in ("mean_difference_s", "p_value")}
+        tests_table.rows.append([pair, *(fmt(cells[(s, "mean_difference_s")]) for s in SETTINGS),
+                                 *(_p(cells[(s, "p_value")]) for s in SETTINGS)])
+    return times_table, tests_table
+
+
+def _p(value: float) -> str:
+    if math.isnan(value):
+        return "-"
+    return f"{value:.2g}" if value >= 1e-4 else f"{value:.1e}"
+
+
+def _plot(trials: Sequence[Trial], args: argparse.Namespace, path: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(1, len(SETTINGS), figsize=(10, 4.2), sharey=True)
+    for ax, setting in zip(np.atleast_1d(axes), SETTINGS):
+        data = [times(trials, setting, c) for c in CONDITIONS]
+        ax.boxplot(data, showmeans=True)
+        ax.set_xticks(range(1, len(CONDITIONS) + 1), [f"{c}\n({1 if c == 'one' else args.robots} robot"
+                                                       f"{'' if c == 'one' else 's'})" for c in CONDITIONS])
+        ax.set_title(setting)
+        ax.grid(axis="y", alpha=0.3)
+    np.atleast_1d(axes)[0].set_ylabel("time to score (s)")
+    fig.suptitle(f"penalty shot: {args.trials} markers, team {args.team!r}, keeper {args.keeper!r}")
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def run(args: argparse.Namespace) -> int:
+    from rich.console import Console
+
+    from experiments.reporting import write_csv
+    from soccer_sim import ScenarioError, TeamError, TeamNotFoundError, resolve_team
+
+    console, errors = Console(), Console(stderr=True)
+    try:
+        if args.seed < 0:
+            raise StudyArgumentError(f"--seed must be a non-negative integer, got {args.seed}")
+        for option, name in (("--team", args.team), ("--keeper", args.keeper)):
+            try:
+                resolve_team(name)
+            except TeamNotFoundError as exc:
+                raise StudyArgumentError(f"{option}: {exc}") from None
+        args.out.mkdir(parents=True, exist_ok=True)
+    except (StudyArgumentError, OSError) as exc:
+        errors.print(f"error: {exc}", style="red", markup=False)
+        return 2
+    start = time.perf_counter()
+    try:
+        trials = collect(args)
+    except (TeamError, ScenarioError, ValueError) as exc:
+        errors.print(f"error: {exc}", style="red", markup=False)
+        return 1
+    elapsed = time.perf_counter() - start
+    summary, tests = summarise(trials)
+    for table in _tables(summary, tests, args):
+        table.print(console)
+    console.print(f"{len(trials)} trials in {elapsed:.1f} s", markup=False)
+    rows = [asdict(t) for t in trials]
+    write_csv(args.out / "penalty_shot_trials.csv", list(rows[0]), [list(r.values()) for r in rows])
+    write_csv(args.out / "penalty_shot_summary.csv", list(summary[0]), [list(r.values()) for r in summary])
+    write_csv(args.out / "penalty_shot_tests.csv", list(tests[0]), [list(r.values()) for r in tests])
+    _plot(trials, args, args.out / "penalty_shot.png")
+    names = ("penalty_shot_trials.csv", "penalty_shot_summary.csv", "penalty_shot_tests.csv", "penalty_shot.png")
+    console.print(f"wrote {', '.join(str(args.out / n) for n in names)}", markup=False)
+    return 0
