@@ -361,15 +361,7 @@ class Referee:
             self._drop_ball(state, mode, x, y)
             return
         self._spot = (x, y)
-        state.ball[0], state.ball[1] = x, y
-        state.ball_vel[:] = 0.0
-        state.ball_holder = NO_PLAYER
-        self._clear_offside()
-        self._pass_from = NO_PLAYER
-        self._shot_pending = [False, False]
-        self._touching = ()
-        self._goal_kick_pending = None
-        self._prev_ball = (x, y)
+        self._place_ball(state, x, y)
         self._set_mode(state, mode, team, first_cycle=first_cycle)
         if mode == _AFTER_GOAL:
             self._keep_goal_pause(state)
@@ -384,6 +376,12 @@ class Referee:
         x_max, y_max = max(f.half_length - _DROP_INSET, 0.0), max(f.half_width - _DROP_INSET, 0.0)
         x, y = min(max(x, -x_max), x_max), min(max(y, -y_max), y_max)
         self.events.add(state.cycle, EventKind.DROP_BALL, NO_TEAM, NO_PLAYER, x, y, int(replaced))
+        self._place_ball(state, x, y)
+        self._set_mode(state, _PLAY_ON, NO_TEAM)
+
+    def _place_ball(self, state: WorldState, x: float, y: float) -> None:
+        """Put the ball still at (x, y) for a restart; forget the holder, the offside marks,
+        the passer (a restart interrupts every pass), pending shots, touches and goal kick."""
         state.ball[0], state.ball[1] = x, y
         state.ball_vel[:] = 0.0
         state.ball_holder = NO_PLAYER
@@ -393,7 +391,6 @@ class Referee:
         self._touching = ()
         self._goal_kick_pending = None
         self._prev_ball = (x, y)
-        self._set_mode(state, _PLAY_ON, NO_TEAM)
 
     def _kick_off(self, state: WorldState, team: int, first_cycle: int | None = None, *,
                   after_pause: bool = False) -> None:

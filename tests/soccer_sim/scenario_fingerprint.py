@@ -6,7 +6,7 @@ mode, score), the whole event log and both teams' statistics. It uses only the p
 that existed before scenarios (``run_match`` with recorders), so the same code recorded the
 expected values on the older code base::
 
-    python -m tests.soccer_sim.scenario_fingerprint      # prints the fingerprints as a dict
+    python -m tests.soccer_sim.scenario_fingerprint > tests/soccer_sim/scenario_fingerprints.json
 """
 
 from __future__ import annotations
@@ -79,6 +79,7 @@ def fingerprint(home: str, away: str, seed: int, max_cycles: int | None, **match
 
 
 if __name__ == "__main__":
-    import pprint
+    import json
 
-    pprint.pprint({name: fingerprint(*case) for name, case in {**CASES, **SLOW_CASES}.items()}, width=110)
+    print(json.dumps({name: fingerprint(*case) for name, case in {**CASES, **SLOW_CASES}.items()}, indent=1,
+                     sort_keys=True))
