@@ -116,25 +116,29 @@ def first_positions(robots: int, half_length: float = 52.5) -> np.ndarray:
 
 
 def settle(positions: np.ndarray, half_length: float, half_width: float, gap: float) -> np.ndarray:
-    """``positions`` moved onto the field (a scorer may stand behind the goal line) and apart by
-    at least ``gap`` (m), so that they are a valid start for the next trial."""
-    pos = positions.copy()
-    inside = (half_length - 0.5, half_width - 0.5)
-    for _ in range(10):
-        pos[:, 0] = np.clip(pos[:, 0], -inside[0], inside[0])
-        pos[:, 1] = np.clip(pos[:, 1], -inside[1], inside[1])
+    """``positions`` moved onto the field (a scorer may stand behind the goal line), half a metre
+    inside the lines, and apart by at least ``gap`` (m), so that they are a valid start for the
+    next trial: each overlapping pair is pushed apart symmetrically until none is left."""
+    pos = positions.astype(float).copy()
+    x_max, y_max = half_length - 0.5, half_width - 0.5
+    for _ in range(100):
+        np.clip(pos[:, 0], -x_max, x_max, out=pos[:, 0])
+        np.clip(pos[:, 1], -y_max, y_max, out=pos[:, 1])
         moved = False
         for i in range(len(pos)):
             for j in range(i + 1, len(pos)):
                 d = pos[j] - pos[i]
                 dist = float(np.hypot(*d))
                 if dist < gap:
+                    # Apart along their line, or across the field when they coincide.
                     direction = d / dist if dist > 1e-9 else np.array([0.0, 1.0])
-                    pos[j] = pos[i] + direction * gap
+                    shift = direction * (gap - dist + 1e-6) / 2.0
+                    pos[i] -= shift
+                    pos[j] += shift
                     moved = True
         if not moved:
-            break
-    return pos
+            return pos
+    raise ValueError(f"cannot place {len(pos)} attackers {gap} m apart on the field")
 
 
 def trial_scenario(marker: np.ndarray, attackers: np.ndarray, keeper: bool, limit: int):

@@ -22,10 +22,16 @@ def test_markers_are_fixed_alternate_halves_and_stay_off_the_lines_and_the_goal_
     assert not ((a[:, 0] > 52.5 - 6.5) & (np.abs(a[:, 1]) < 10.16)).any()
 
 
-def test_settle_keeps_attackers_on_the_field_and_apart():
-    pos = ps.settle(np.array([[53.5, 0.0], [53.4, 0.1], [0.0, 40.0]]), 52.5, 34.0, 0.65)
+@pytest.mark.parametrize("start", [
+    [[53.5, 0.0], [53.4, 0.1], [0.0, 40.0]],
+    [[51.09, -2.36], [51.9, -2.5], [51.2, -1.8]],  # pressed together against the goal line
+    [[52.3, 34.0], [52.3, 34.0], [52.3, 34.0]],  # all in the corner on one point
+])
+def test_settle_keeps_attackers_on_the_field_and_apart(start):
+    pos = ps.settle(np.array(start), 52.5, 34.0, 0.65)
     assert (np.abs(pos[:, 0]) <= 52.0).all() and (np.abs(pos[:, 1]) <= 33.5).all()
-    assert np.hypot(*(pos[0] - pos[1])) >= 0.65 - 1e-9
+    gaps = [np.hypot(*(pos[i] - pos[j])) for i in range(3) for j in range(i + 1, 3)]
+    assert min(gaps) >= 0.65 - 1e-9
 
 
 def test_each_trial_starts_where_the_previous_goal_left_the_attackers(monkeypatch):
