@@ -63,6 +63,11 @@ Decisions where the rules leave room:
   all marks instead; so does the goalkeeper's catch. A marked player is penalised when it
   plays the ball (kick or body touch); with ``offside_active_distance`` set, also when it
   ends a play-on cycle that close to the ball.
+* **Scenarios** (:mod:`soccer_sim.scenarios`): the sides may differ in size (player rows
+  ``0..h-1`` home, the rest away) and a side may have no goalkeeper (no catch); play may open
+  with any set play or in play on (:meth:`Referee.start`); without set plays every restart
+  becomes a dropped ball on its spot (:meth:`Referee._drop_ball`); the match may end early
+  (:meth:`Referee.stop`, or a shorter ``end_cycle``) and may have no half time.
 * **Events.** ``GOAL``: team = scoring team, player = last toucher (of the other team on an
   own goal, then ``detail`` = 1). ``OUT``: team/player = last toucher, detail 0 for a
   touchline, 1 for a goal line. ``PASS``: team/player = passer, detail = receiver index; a
