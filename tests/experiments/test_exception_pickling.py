@@ -22,6 +22,8 @@ EXAMPLES: dict[str, tuple] = {
     "agents.skills.model.SkillInputError": ("horizon must be positive",),
     "experiments.studies.incremental.StudyArgumentError": ("--lams: bad",),
     "experiments.studies.distributed.StudyArgumentError": ("--sizes: bad",),
+    "experiments.studies.penalty_shot.StudyArgumentError": ("--team: unknown team",),
+    "soccer_sim.scenarios.scenario.ScenarioError": ("home.goalie", "index 4 is beyond the side's 3 players"),
     "experiments.benchmarks.assignment.BenchmarkArgumentError": ("--sizes: bad",),
     "experiments.results.store.ResultsError": ("r.sqlite: not writable",),
     "experiments.results.export.ExportError": ("needs pyarrow",),
