@@ -187,6 +187,16 @@ def _map_error(path: str, line: int, message: str) -> AssignmentError:
     return AssignmentError(f"{path}, line {line}: {message}")
 
 
+def _read_lines(name: str, kind: str) -> list[str]:
+    """The lines of a map file. Read as Latin-1 so that a stray non-ASCII byte is reported
+    by the parser with its line (as an unknown letter or a malformed field), not as a decoding error."""
+    try:
+        with open(name, encoding="latin-1") as handle:
+            return handle.read().splitlines()
+    except OSError as exc:
+        raise AssignmentError(f"{name}: cannot read the {kind} file: {exc.strerror or exc}") from None
+
+
 def load_movingai_map(path: str | os.PathLike) -> np.ndarray:
     """Read a 2-D MovingAI ``.map`` file into a boolean grid (``True`` = obstacle).
 
@@ -201,21 +211,19 @@ def load_movingai_map(path: str | os.PathLike) -> np.ndarray:
             missing or extra row; or the file when it cannot be read.
     """
     name = os.fspath(path)
-    try:
-        with open(name, encoding="ascii") as handle:
-            lines = handle.read().splitlines()
-    except (OSError, UnicodeDecodeError) as exc:
-        raise AssignmentError(f"{name}: cannot read the map file: {exc}") from None
+    lines = _read_lines(name, "map")
     header: dict[str, str] = {}
+    header_line: dict[str, int] = {}
     expected = ("type", "height", "width", "map")
     number = 0
     for key in expected:
         while number < len(lines) and not lines[number].strip():
             number += 1
         if number == len(lines):
-            raise _map_error(name, number, f"file ends before the header line {key!r}")
+            raise _map_error(name, number + 1, f"the file ends before the header line {key!r}")
         words = lines[number].split()
         number += 1
+        header_line[key] = number
         if words[0].lower() != key:
             raise _map_error(name, number, f"expected header line {key!r}, got {lines[number - 1].strip()!r}")
         if key == "map":
@@ -230,15 +238,17 @@ def load_movingai_map(path: str | os.PathLike) -> np.ndarray:
             if not value.isdigit() or int(value) < 1:
                 raise _map_error(name, number, f"{key} must be a positive integer, got {value!r}")
     if header["type"].lower() != "octile":
-        raise _map_error(name, 1, f"only 'type octile' maps are supported, got {header['type']!r}")
+        raise _map_error(name, header_line["type"], f"only 'type octile' maps are supported, got {header['type']!r}")
     height, width = int(header["height"]), int(header["width"])
     rows = lines[number:]
     while rows and not rows[-1].strip():
         rows.pop()
     if len(rows) < height:
-        raise _map_error(name, number + len(rows), f"the map has {len(rows)} rows but its header says height {height}")
+        raise _map_error(name, number + len(rows),
+                         f"the map ends after {len(rows)} of the {height} rows its header announces (height {height})")
     if len(rows) > height:
-        raise _map_error(name, number + height + 1, f"extra row after the {height} rows the header announces")
+        raise _map_error(name, number + height + 1,
+                         f"a row beyond the {height} rows its header announces (height {height})")
     grid = np.zeros((height, width), dtype=bool)
     known = MOVINGAI_FREE | MOVINGAI_BLOCKED
     for r, row in enumerate(rows):
@@ -265,11 +275,7 @@ def load_voxel_map(path: str | os.PathLike) -> np.ndarray:
             voxel line that is not three integers, or a voxel outside the size.
     """
     name = os.fspath(path)
-    try:
-        with open(name, encoding="ascii") as handle:
-            lines = handle.read().splitlines()
-    except (OSError, UnicodeDecodeError) as exc:
-        raise AssignmentError(f"{name}: cannot read the voxel map file: {exc}") from None
+    lines = _read_lines(name, "voxel map")
     if not lines:
         raise _map_error(name, 1, "empty file; expected 'voxel X Y Z'")
     words = lines[0].split()

@@ -134,7 +134,9 @@ def _check_regions(workspace: Workspace, robot_cells: np.ndarray, goal_cells: np
 
     Within one free region every robot reaches every goal, so a complete
     assignment exists exactly when no region holds more robots than goals
-    (when ``n <= m``) or more goals than robots (when ``n >= m``).
+    (when ``n <= m``) or more goals than robots (when ``n >= m``). A robot
+    or goal that nothing can reach at all is named before any region that
+    is merely short, since it is the likelier mistake.
     """
     labels = workspace.component.ravel()
     robot_region = labels[robot_flat]
@@ -143,29 +145,25 @@ def _check_regions(workspace: Workspace, robot_cells: np.ndarray, goal_cells: np
     size = int(max(robot_region.max(), goal_region.max())) + 1
     robots_in = np.bincount(robot_region, minlength=size)
     goals_in = np.bincount(goal_region, minlength=size)
+    sides = []  # (name, cells, regions, own count per region, other count per region, what it lacks)
     if n <= m:
-        short = robots_in[robot_region] > goals_in[robot_region]
+        sides.append(("robot", robot_cells, robot_region, robots_in, goals_in, "goal"))
+    if n >= m:
+        sides.append(("goal", goal_cells, goal_region, goals_in, robots_in, "robot"))
+    for name, cells, region, own, other, lacks in sides:
+        alone = other[region] == 0
+        if alone.any():
+            i = int(np.argmax(alone))
+            reach = f"reach any {lacks}" if name == "robot" else f"be reached by any {lacks}"
+            raise AssignmentError(f"{name} {i} at cell {cells[i].tolist()} cannot {reach}: obstacles wall it off")
+    for name, cells, region, own, other, lacks in sides:
+        short = own[region] > other[region]
         if short.any():
             i = int(np.argmax(short))
-            region = robot_region[i]
-            where = f"robot {i} at cell {robot_cells[i].tolist()}"
-            if goals_in[region] == 0:
-                raise AssignmentError(f"{where} cannot reach any goal: obstacles wall it off")
+            r = region[i]
             raise AssignmentError(
-                f"{where} cannot be given a goal: obstacles wall off its region, which holds "
-                f"{robots_in[region]} robots but only {goals_in[region]} goals"
-            )
-    if n >= m:
-        short = goals_in[goal_region] > robots_in[goal_region]
-        if short.any():
-            j = int(np.argmax(short))
-            region = goal_region[j]
-            where = f"goal {j} at cell {goal_cells[j].tolist()}"
-            if robots_in[region] == 0:
-                raise AssignmentError(f"{where} cannot be reached by any robot: obstacles wall it off")
-            raise AssignmentError(
-                f"{where} cannot be given a robot: obstacles wall off its region, which holds "
-                f"{goals_in[region]} goals but only {robots_in[region]} robots"
+                f"{name} {i} at cell {cells[i].tolist()} cannot be given a {lacks}: obstacles wall off its "
+                f"region, which holds {own[r]} {name}s but only {other[r]} {lacks}{'' if other[r] == 1 else 's'}"
             )
     return robot_region[:, None] == goal_region[None, :]
 
