@@ -13,6 +13,8 @@ store it and rebuild it in any worker.
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from soccer_sim import SideInfo, TeamCommand, TeamError, resolve_team
@@ -63,9 +65,10 @@ class MixedTeam:
             raise TeamError(self.name, f"has {len(self.members)} member players but the match plays {n} a side")
         # Each member team gets its own stream, drawn from the mixed team's generator.
         for team, code, child in zip(self.teams, self.codes, rng.spawn(len(self.teams))):
-            team.reset(SideInfo(side_info.team, code, side_info.opponent_name, n, side_info.goalie_index),
-                       config, child)
-        self._goalie_code = int(self.code_of[side_info.goalie_index])
+            team.reset(dataclasses.replace(side_info, name=code), config, child)
+        # The goalkeeper's catch comes from its own member team; with no goalkeeper nobody catches.
+        goalie = side_info.goalie_index
+        self._goalie_code = int(self.code_of[goalie]) if 0 <= goalie < n else -1
         self._rows = [np.flatnonzero(self.code_of == k) for k in range(len(self.teams))]
         self._command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
         self._move = np.zeros((n, 2))

@@ -69,3 +69,16 @@ def test_a_mixed_match_is_deterministic_and_each_player_plays_its_own_code() -> 
     assert np.array_equal(first.total, again.total)
     home = first.total[:11]
     assert home[1:6].min() > 10.0 * max(home[6:].max(), home[0], 0.1)   # chasers run, idle players barely move
+
+
+def test_a_mixed_team_without_goalkeeper_plays_a_scenario() -> None:
+    """On a side with no goalkeeper nobody catches (player 0 would otherwise ask to catch)."""
+    from soccer_sim.scenarios import get_scenario
+
+    team = MixedTeam([FORWARD, SIDEWAYS, FORWARD])
+    info = SideInfo(0, "m", "o", 3, -1, opponents=0, opponent_goalie_index=-1)
+    team.reset(info, MatchConfig(), np.random.default_rng(0))
+    assert team.act(view(3)).catch is False
+    scenario = get_scenario("3-vs-1-with-keeper")
+    result = run_match(mixed_team(mixed_name(["chaser", "idle", "chaser"])), "idle", seed=3, scenario=scenario)
+    assert result.end_reason and result.score is not None
