@@ -4,14 +4,19 @@ played before scenarios existed, bit for bit.
 A fingerprint hashes every cycle's world (player and ball positions and velocities, play
 mode, score), the whole event log and both teams' statistics. It uses only the public API
 that existed before scenarios (``run_match`` with recorders), so the same code recorded the
-expected values on the older code base::
+expected values on the older code base. Floating-point results depend on the processor and
+on the numerical libraries' versions (numba compiles for the host CPU; numpy and scipy pick
+vector kernels at run time), so the recordings are kept per :func:`platform_key`. To record
+them on a new platform, run this module on the pre-scenario commit d7c8672 (a ``git worktree``
+of it, with this file copied in) and merge its output into ``scenario_fingerprints.json``::
 
-    python -m tests.soccer_sim.scenario_fingerprint > tests/soccer_sim/scenario_fingerprints.json
+    python -m tests.soccer_sim.scenario_fingerprint
 """
 
 from __future__ import annotations
 
 import hashlib
+from importlib import metadata
 
 import numpy as np
 
@@ -62,6 +67,14 @@ class TrajectoryHash:
         return self._hash.hexdigest()
 
 
+def platform_key() -> str:
+    """What the bits of a match depend on besides the code: the CPU and the numerical libraries."""
+    import llvmlite.binding
+
+    versions = " ".join(f"{name}-{metadata.version(name)}" for name in ("numpy", "scipy", "numba", "pymunk", "lap"))
+    return f"{llvmlite.binding.get_host_cpu_name()} {versions}"
+
+
 def fingerprint(home: str, away: str, seed: int, max_cycles: int | None, **match_kwargs: object) -> dict[str, object]:
     """Play the match and return its score, cycles and hashes of trajectory, events and statistics."""
     config = soccer_sim.MatchConfig(max_cycles=max_cycles)
@@ -81,5 +94,5 @@ def fingerprint(home: str, away: str, seed: int, max_cycles: int | None, **match
 if __name__ == "__main__":
     import json
 
-    print(json.dumps({name: fingerprint(*case) for name, case in {**CASES, **SLOW_CASES}.items()}, indent=1,
-                     sort_keys=True))
+    recorded = {name: fingerprint(*case) for name, case in {**CASES, **SLOW_CASES}.items()}
+    print(json.dumps({platform_key(): recorded}, indent=1, sort_keys=True))
