@@ -211,14 +211,15 @@ def _race_inputs(model: MotionModel, view: object) -> tuple[np.ndarray, np.ndarr
         if (held[0] is current[0] and held[1] is current[1] and held[2] is current[2] and held[3] is current[3]
                 and held[4] is current[4] and held[5] is current[5] and held[6] is current[6]):
             return inputs
-    ball, ball_vel = _trajectories(view.ball, view.ball_vel, single=True)
+    ball_row, ball_vel_row = float_array("ball", view.ball, (2,)), float_array("ball_vel", view.ball_vel, (2,))
+    ball, ball_vel = ball_row.reshape(1, 2), ball_vel_row.reshape(1, 2)
     radius, catch = team_radii(model)
     own = _players(model, view.own_pos, view.own_vel, view_effort(view, model.players_per_team), radius, catch,
                    radii_checked=True)
     radius, catch = opponent_radii(model)
     opp = _players(model, view.opp_pos, view.opp_vel, None, radius, catch, radii_checked=True)
     inputs = (ball, ball_vel, own, opp)
-    checked = (ball.base, ball_vel.base, own[0], own[1], opp[0], opp[1], own[2] if effort is not None else None)
+    checked = (ball_row, ball_vel_row, own[0], own[1], opp[0], opp[1], own[2] if effort is not None else None)
     if all(a is b for a, b in zip(checked, current)):
         model.__dict__["_race_inputs"] = (current, inputs)
     return inputs

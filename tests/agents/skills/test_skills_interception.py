@@ -195,3 +195,23 @@ def test_players_left_out_of_the_race_never_win_it() -> None:
     assert race.ours.first == 6 and race.ours.cycles[5] == UNREACHABLE
     with pytest.raises(ValueError, match="eligible"):
         ball_race(MODEL, view, np.ones(3, dtype=bool))
+
+
+def test_ball_race_keeps_the_checked_inputs_of_views_sliced_from_a_buffer() -> None:
+    """A match's view arrays are rows of its own (P + 1, 2) buffers (the ball is the last row);
+    the race still recognises them from one cycle to the next and reuses its checked inputs,
+    which follow the view in place."""
+    view = make_view(own={5: (-5.0, 0.0)}, opp={5: (12.0, 0.0)}, ball=(0.0, 0.0), ball_vel=(1.0, 0.0))
+    n = len(view.own_pos)
+    pos, vel = np.empty((2 * n + 1, 2)), np.empty((2 * n + 1, 2))
+    pos[:n], pos[n:2 * n], pos[2 * n] = view.own_pos, view.opp_pos, view.ball
+    vel[:n], vel[n:2 * n], vel[2 * n] = view.own_vel, view.opp_vel, view.ball_vel
+    view.own_pos, view.opp_pos, view.ball = pos[:n], pos[n:2 * n], pos[2 * n]
+    view.own_vel, view.opp_vel, view.ball_vel = vel[:n], vel[n:2 * n], vel[2 * n]
+    model = MotionModel(CONFIG)
+    assert not ball_race(model, view).we_win
+    held = model.__dict__["_race_inputs"][1]
+    pos[5] = (3.0, 1.0)
+    pos[2 * n] = (0.0, 0.0)
+    race = ball_race(model, view)
+    assert model.__dict__["_race_inputs"][1] is held and race.we_win and race.ours.first == 5
