@@ -19,7 +19,7 @@ from .lexicographic_reference import bitvector_assignment, brute_force_assignmen
 from .matching import maximum_matching
 from .result import AssignmentResult
 from .validation import MAX_COORDINATE, as_costs, as_points, check_point_pair, check_squares
-from .scram import bottleneck_assignment, mmd_msd2_assignment, mmdr_assignment
+from .scram import bottleneck_assignment, mmd_msd2_assignment, mmd_msd2_points, mmdr_assignment, mmdr_points
 
 #: Method names accepted by :func:`assign` and :func:`assign_costs`.
 METHODS: tuple[str, ...] = ("mmdr", "mmd+msd2", "msd", "msd2", "bottleneck", "greedy", "random")
@@ -209,6 +209,10 @@ def dense_target_of(robots: np.ndarray, targets: np.ndarray, method: str) -> np.
     :data:`METHODS` but ``"random"`` (``"mmdr"`` uses the fast algorithm). Nothing is
     checked: give anything else to :func:`assign`.
     """
+    if method == "mmdr":
+        return mmdr_points(robots, targets)
+    if method == "mmd+msd2":
+        return mmd_msd2_points(robots, targets)
     lengths, squared = dense_distances(robots, targets)
     return _solve_dense(_DENSE_KEYS[method], lengths, squared, None)
 

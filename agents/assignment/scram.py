@@ -16,9 +16,11 @@ exist (checked by the caller). Outputs: the target index of every row.
 from __future__ import annotations
 
 import numpy as np
+from numba import njit
 from scipy.optimize import linear_sum_assignment
 
 from .bottleneck import bottleneck_matching
+from .geometry import dense_distances
 from .graphs import dense_to_graph, square_up
 from .lexicographic import lexicographic_refine
 
@@ -62,3 +64,43 @@ def refine_to_lexicographic(
         )
     lexicographic_refine(indptr, indices, lengths, value, col_of_row, row_of_col)
     return col_of_row[:n_rows]
+
+
+# Point-to-point forms for per-cycle callers (the soccer role assigners solve a 10 x 10
+# problem every cycle): the same steps as above in one compiled call, so the answer is the
+# same bit for bit while the several calls' dispatch costs are paid once.
+
+
+@njit(cache=True, nogil=True)
+def mmdr_points(robots: np.ndarray, targets: np.ndarray) -> np.ndarray:
+    """:func:`mmdr_assignment` of the Euclidean distances between ``robots`` (n, d) and
+    ``targets`` (m, d), ``n <= m``, all finite: the target index of every robot."""
+    lengths, _ = dense_distances(robots, targets)
+    n_rows, n_cols = lengths.shape
+    indptr, indices, pair_lengths = dense_to_graph(lengths)
+    value, col_of_row, row_of_col = bottleneck_matching(indptr, indices, pair_lengths, n_cols)
+    if n_rows < n_cols:
+        indptr, indices, pair_lengths, col_of_row, row_of_col = square_up(
+            indptr, indices, pair_lengths, n_cols, value, -np.inf, col_of_row, row_of_col
+        )
+    lexicographic_refine(indptr, indices, pair_lengths, value, col_of_row, row_of_col)
+    return col_of_row[:n_rows]
+
+
+@njit(cache=True, nogil=True)
+def bottleneck_squares(robots: np.ndarray, targets: np.ndarray) -> np.ndarray:
+    """The squared distances between ``robots`` and ``targets`` (as :func:`mmdr_points`),
+    ``inf`` for pairs longer than the bottleneck value: MMD+MSD²'s second-stage costs."""
+    lengths, squared = dense_distances(robots, targets)
+    indptr, indices, pair_lengths = dense_to_graph(lengths)
+    value, _, _ = bottleneck_matching(indptr, indices, pair_lengths, lengths.shape[1])
+    for i in range(lengths.shape[0]):
+        for j in range(lengths.shape[1]):
+            if not lengths[i, j] <= value:
+                squared[i, j] = np.inf
+    return squared
+
+
+def mmd_msd2_points(robots: np.ndarray, targets: np.ndarray) -> np.ndarray:
+    """:func:`mmd_msd2_assignment` of the Euclidean distances between ``robots`` and ``targets``."""
+    return linear_sum_assignment(bottleneck_squares(robots, targets))[1].astype(np.int64, copy=False)
