@@ -46,10 +46,11 @@ class MethodAssigner(RoleAssigner):
     def assign(self, players: np.ndarray, targets: np.ndarray, role_order: np.ndarray,
                previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
         self.check_inputs(players, targets)
-        if not (np.isfinite(players).all() and np.isfinite(targets).all()):
+        players = np.ascontiguousarray(players, dtype=np.float64)
+        targets = np.ascontiguousarray(targets, dtype=np.float64)
+        if not _all_finite(players, targets):
             raise ValueError(f"role assigner {self.name!r}: players and targets must be finite")
-        return dense_target_of(np.ascontiguousarray(players, dtype=np.float64),
-                               np.ascontiguousarray(targets, dtype=np.float64), self.method)
+        return dense_target_of(players, targets, self.method)
 
 
 class GreedyOffenseAssigner(RoleAssigner):
@@ -91,3 +92,15 @@ def _greedy_in_order(players: np.ndarray, targets: np.ndarray,
                     best, best_d = i, d
         role_of_player[best] = r
     return role_of_player
+
+
+@njit(cache=True, nogil=True)
+def _all_finite(a: np.ndarray, b: np.ndarray) -> bool:  # pragma: no cover - compiled
+    """Whether every entry of the two (k, 2) arrays is finite (one call, no temporaries)."""
+    for x in a.ravel():
+        if not math.isfinite(x):
+            return False
+    for x in b.ravel():
+        if not math.isfinite(x):
+            return False
+    return True
