@@ -15,6 +15,8 @@ from experiments.commands import add_module_commands
 BENCHMARKS: dict[str, tuple[str, str]] = {
     "assignment": ("experiments.benchmarks.assignment", "runtime and quality of the role-assignment methods"),
     "formation": ("experiments.benchmarks.formation", "speed of formation queries"),
+    "lazy-assignment": ("experiments.benchmarks.grid_assignment",
+                        "lazy path-cost goal assignment vs all pairs on random grids (Table 1's shape)"),
     "match": ("experiments.benchmarks.match", "speed of whole matches between two teams"),
     "roles": ("experiments.benchmarks.roles", "microseconds per call of every role assigner"),
     "skills": ("experiments.benchmarks.skills", "microseconds per call of every soccer skill"),

@@ -1,0 +1,73 @@
+"""``soccer-sim bench lazy-assignment`` on tiny workspaces: the table, the files, equal totals."""
+
+from __future__ import annotations
+
+import csv
+
+import numpy as np
+import pytest
+
+from experiments.benchmarks import grid_assignment
+from experiments.cli import main
+
+TINY = ["--sizes", "20,30", "--robots", "6,12", "--densities", "0.2,0.1", "--sizes-3d", "8", "--repeats", "2"]
+
+
+def test_tiny_table_writes_csv_and_plot_and_both_methods_agree(tmp_path, capsys) -> None:
+    out = tmp_path / "lazy"
+    assert main(["bench", "lazy-assignment", *TINY, "--seed", "3", "--out", str(out)]) == 0
+    printed = capsys.readouterr().out
+    assert "both totals equal on every one" in printed
+    with (out / "table.csv").open() as handle:
+        table = list(csv.DictReader(handle))
+    # 2 sizes x 2 robot counts at 20%, 1 extra density at the smallest size, 1 cube.
+    assert [(r["workspace"], float(r["density"]), int(r["robots"])) for r in table] == [
+        ("20x20", 0.2, 6), ("30x30", 0.2, 6), ("20x20", 0.2, 12), ("30x30", 0.2, 12), ("20x20", 0.1, 6),
+        ("8x8x8", 0.2, 6)]
+    for r in table:
+        assert 0 < float(r["pairs_lazy_mean"]) <= int(r["pairs_all"]) == int(r["robots"]) ** 2
+    with (out / "trials.csv").open() as handle:
+        assert len(list(csv.DictReader(handle))) == 12
+    assert (out / "speedup.png").stat().st_size > 1000
+
+
+def test_same_seed_same_instances(tmp_path) -> None:
+    totals = []
+    for run in range(2):
+        out = tmp_path / str(run)
+        assert main(["bench", "lazy-assignment", *TINY, "--out", str(out)]) == 0
+        with (out / "trials.csv").open() as handle:
+            totals.append([(r["pairs_lazy"], r["total"]) for r in csv.DictReader(handle)])
+    assert totals[0] == totals[1]
+
+
+@pytest.mark.parametrize("bad, message", [
+    (["--sizes", "ten"], "--sizes must be comma-separated ints"),
+    (["--densities", "0.2,1.5"], "--densities must lie in [0, 1)"),
+    (["--repeats", "0"], "--repeats must be at least 1"),
+    (["--robots", "0"], "robot counts at least 1"),
+])
+def test_bad_options_are_named(bad, message, capsys) -> None:
+    assert main(["bench", "lazy-assignment", *bad]) == 2
+    assert message in capsys.readouterr().out
+
+
+def test_unequal_totals_stop_the_benchmark(monkeypatch) -> None:
+    """A lazy method that returned a worse assignment would be caught, not reported."""
+    real = grid_assignment.assign_on_grid
+
+    def worse(grid, robots, goals, method):
+        result = real(grid, robots, goals, method=method)
+        if method == "lazy":
+            result.distances = np.asarray(result.distances) + 1.0
+        return result
+
+    monkeypatch.setattr(grid_assignment, "assign_on_grid", worse)
+    row = grid_assignment.Row((20, 20), 0.2, 5)
+    with pytest.raises(grid_assignment.AssignmentError, match="differs from all-pairs total"):
+        grid_assignment.play_row(row, 1, np.random.default_rng(0))
+
+
+def test_paper_figures_are_found_for_its_rows() -> None:
+    assert grid_assignment.Row((400, 400), 0.2, 200).paper == (1901, 355, 22, 16.1)
+    assert grid_assignment.Row((40, 40, 40), 0.2, 100).paper is None
