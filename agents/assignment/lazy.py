@@ -13,9 +13,12 @@ same optimal total:
     (:class:`~agents.assignment.pathcost.ResumableSearch`), and this repeats
     until every chosen pair's cost is true. The result is optimal: its total
     is exact, and every other assignment costs at least its total under the
-    current costs (which never exceed the true ones). Instead of the paper's
-    hand-made primal-dual loop it re-solves the matrix each round; the pairs
-    searched are those the assignment needs.
+    current costs (which never exceed the true ones). As in the paper, the
+    assignment is kept between rounds with its dual prices (a shortest
+    augmenting path Hungarian method): a pair whose cost rose loses its
+    robot, and only those robots are matched again, so a round costs far less
+    than a fresh solve. (For more goals than robots each round is solved
+    afresh by SciPy's ``linear_sum_assignment``.)
 ``"all-pairs"`` -- the baseline: Dijkstra from each robot until every goal is
     settled, then the Hungarian method on the full cost matrix.
 
@@ -29,6 +32,7 @@ from __future__ import annotations
 from collections import OrderedDict
 
 import numpy as np
+from numba import njit
 from scipy.optimize import linear_sum_assignment
 
 from .errors import AssignmentError
@@ -243,8 +247,18 @@ def _lazy(workspace: Workspace, robot_flat: np.ndarray, goal_flat: np.ndarray, r
     searches = _Searches(workspace, robot_flat, budget)
     pairs = 0
     rounds = 0
+    square = costs.shape[0] == costs.shape[1]
+    if square:
+        u, v = np.zeros(n), np.zeros(n + 1)
+        col_of_row, row_of_col = np.full(n, -1, dtype=np.int64), np.full(n + 1, -1, dtype=np.int64)
+        free = np.arange(n, dtype=np.int64)
     while True:
-        rows, cols = _solve(costs)
+        if square:
+            if not _augment_rows(costs, u, v, col_of_row, row_of_col, free):
+                raise AssignmentError("no complete assignment exists")  # excluded by the region check
+            rows, cols = np.arange(n), col_of_row.copy()
+        else:
+            rows, cols = _solve(costs)
         rounds += 1
         pending = ~exact[rows, cols]
         if not pending.any():
@@ -256,4 +270,62 @@ def _lazy(workspace: Workspace, robot_flat: np.ndarray, goal_flat: np.ndarray, r
             costs[i, j] = half * HALF
             exact[i, j] = True
             pairs += 1
+        if square:
+            # The costs only rose, so the prices stay feasible; the robots of the pairs that
+            # are no longer tight are let go and matched again on the next round.
+            free = rows[pending].astype(np.int64)
+            row_of_col[col_of_row[free]] = -1
+            col_of_row[free] = -1
     return _result(rows, cols, costs, n, "lazy", pairs, searches.expanded, rounds)
+
+
+@njit(cache=True, nogil=True)
+def _augment_rows(costs: np.ndarray, u: np.ndarray, v: np.ndarray, col_of_row: np.ndarray,
+                  row_of_col: np.ndarray, rows: np.ndarray) -> bool:  # pragma: no cover - compiled
+    """Match each of ``rows`` (free) by a shortest augmenting path in the reduced costs
+    ``costs[i, j] - u[i] - v[j]``, updating the prices so that every reduced cost stays
+    non-negative and every matched pair's is zero: the matching stays a minimum-cost one for
+    its rows. Square ``(n, n)`` costs, ``inf`` for forbidden pairs; ``v`` and ``row_of_col``
+    have one extra slot (index n) for the search's root. False if some row cannot be matched.
+    """
+    n = costs.shape[1]
+    root = n
+    shortest = np.empty(n + 1)
+    visited = np.zeros(n + 1, dtype=np.bool_)
+    came_from = np.empty(n + 1, dtype=np.int64)
+    for start in rows:
+        row_of_col[root] = start
+        shortest[:] = np.inf
+        visited[:] = False
+        col = root
+        while True:
+            visited[col] = True
+            i = row_of_col[col]
+            delta = np.inf
+            nearest = -1
+            for j in range(n):
+                if not visited[j]:
+                    reduced = costs[i, j] - u[i] - v[j]
+                    if reduced < shortest[j]:
+                        shortest[j] = reduced
+                        came_from[j] = col
+                    if shortest[j] < delta:
+                        delta = shortest[j]
+                        nearest = j
+            if nearest < 0:
+                return False
+            for j in range(n + 1):
+                if visited[j]:
+                    u[row_of_col[j]] += delta
+                    v[j] -= delta
+                else:
+                    shortest[j] -= delta
+            col = nearest
+            if row_of_col[col] < 0:
+                break
+        while col != root:  # flip the path back to the root
+            previous = came_from[col]
+            row_of_col[col] = row_of_col[previous]
+            col_of_row[row_of_col[col]] = col
+            col = previous
+    return True

@@ -77,3 +77,42 @@ def test_movingai_map_loads_and_bad_map_names_file_and_line():
     assert grid.shape == (3, 4) and grid[1, 1] and grid[1, 2] and grid.sum() == 2
     with pytest.raises(AssignmentError, match=r"bad_letter\.map, line 6: unknown terrain 'X'"):
         load_movingai_map(DATA / "bad_letter.map")
+
+
+def test_kept_assignment_stays_optimal_as_chosen_costs_rise():
+    """The lazy method's incremental Hungarian rounds: after raising the costs of the chosen
+    pairs and re-matching only their rows, the matching is as cheap as a fresh solve."""
+    from scipy.optimize import linear_sum_assignment
+
+    from agents.assignment.lazy import _augment_rows
+
+    rng = np.random.default_rng(2)
+    for trial in range(40):
+        n = int(rng.integers(2, 25))
+        costs = rng.integers(0, 20, (n, n)).astype(float) * 0.5
+        costs[rng.random((n, n)) < 0.2] = np.inf
+        np.fill_diagonal(costs, np.where(np.isinf(np.diag(costs)), 30.0, np.diag(costs)))  # feasible
+        u, v = np.zeros(n), np.zeros(n + 1)
+        col_of_row, row_of_col = np.full(n, -1), np.full(n + 1, -1)
+        free = np.arange(n)
+        for _ in range(6):
+            assert _augment_rows(costs, u, v, col_of_row, row_of_col, free)
+            rows, cols = linear_sum_assignment(costs)
+            assert costs[np.arange(n), col_of_row].sum() == costs[rows, cols].sum()
+            assert sorted(col_of_row.tolist()) == list(range(n))
+            free = rng.choice(n, int(rng.integers(1, n + 1)), replace=False)
+            costs[free, col_of_row[free]] += rng.integers(1, 10, len(free)) * 0.5
+            row_of_col[col_of_row[free]] = -1
+            col_of_row[free] = -1
+
+
+@pytest.mark.parametrize("shape, robots", [((40, 40), 30), ((12, 12, 12), 25)])
+def test_lazy_equals_all_pairs_with_as_many_goals_as_robots(shape, robots):
+    rng = np.random.default_rng(11)
+    for _ in range(8):
+        grid, r, g = random_instance(shape, float(rng.uniform(0.1, 0.25)), robots, robots, rng)
+        lazy = assign_on_grid(grid, r, g)
+        full = assign_on_grid(grid, r, g, method="all-pairs")
+        assert lazy.total == full.total
+        assert sorted(lazy.target_of.tolist()) == list(range(robots))
+        assert lazy.pairs_computed < full.pairs_computed
