@@ -447,12 +447,17 @@ class FormationTeam:
     def drawing(self) -> dict[str, object]:
         """What a replay may draw (team frame): ``targets`` (n, 2) each role's target, ``goals``
         (n, 2) where each player is going, ``role_of_player`` (outfield player -> outfield role),
-        ``outfield`` (the outfield players' indices), and the current formation's sample balls
-        and triangles (``formation_balls`` (m, 2), ``formation_triangles`` (t, 3))."""
+        ``outfield`` (the outfield players' indices), ``assigned_targets`` (one row per outfield
+        player: its role's target; None before the first assignment), and the current
+        formation's sample balls and triangles (``formation_balls`` (m, 2),
+        ``formation_triangles`` (t, 3))."""
         formation = self.formation_set.formation(self._situation)
+        role_of_player = self.role_of_player
+        assigned = None if role_of_player is None else self.targets[self._out_roles][role_of_player]
         return {
             "targets": self.targets.copy(), "goals": self.goals.copy(), "outfield": self.outfield.copy(),
-            "role_of_player": None if self.role_of_player is None else self.role_of_player.copy(),
+            "role_of_player": None if role_of_player is None else role_of_player.copy(),
+            "assigned_targets": assigned,
             "formation_balls": formation.balls, "formation_triangles": formation.triangles,
         }
 

@@ -1,0 +1,98 @@
+"""Read a recorded replay back into numpy arrays, with rerun's own reader."""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from soccer_sim.replay.recorder import TEAM_KEYS, ReplayError, import_rerun
+
+
+@dataclass
+class Replay:
+    """What :func:`read_replay` finds in a ``.rrd`` file (absolute frame, metres).
+
+    ``players[key]`` is (T, n, 2) for ``key`` in ("home", "away") at ``cycles`` (T,);
+    ``ball`` (T, 2); ``score`` (T, 2); ``events`` (cycle, text) pairs in order;
+    ``static_paths`` the entities logged as static (the field, styles); ``targets[key]`` the
+    role targets per cycle (a list of (k, 2) arrays) when the team drew them;
+    ``has_blueprint`` whether a default blueprint is stored.
+    """
+
+    cycles: np.ndarray
+    players: dict[str, np.ndarray]
+    ball: np.ndarray
+    score: np.ndarray
+    events: list[tuple[int, str]]
+    static_paths: set[str]
+    targets: dict[str, list[np.ndarray]] = field(default_factory=dict)
+    has_blueprint: bool = False
+
+
+def _column(batch, suffix: str):
+    for name in batch.column_names:
+        if name.endswith(suffix):
+            return batch.column(name)
+    return None
+
+
+def read_replay(path: str | os.PathLike) -> Replay:
+    """Read ``path`` (written by :class:`RerunRecorder`); ReplayError if it is not a replay."""
+    import_rerun()
+    from rerun.chunk import RrdReader
+
+    name = os.fspath(path)
+    if not os.path.isfile(name):
+        raise ReplayError(f"{name}: no such replay file")
+    try:
+        reader = RrdReader(name)
+        chunks = reader.stream().to_chunks()
+    except Exception as exc:
+        raise ReplayError(f"{name}: not a rerun recording ({exc})") from exc
+    static: set[str] = set()
+    series: dict[str, list[tuple[np.ndarray, list]]] = {}
+    for chunk in chunks:
+        entity = chunk.entity_path
+        if chunk.is_static:
+            static.add(entity)
+            continue
+        batch = chunk.to_record_batch()
+        if "cycle" not in batch.column_names:
+            continue
+        cycles = np.asarray(batch.column("cycle").to_numpy(zero_copy_only=False), dtype=np.int64)
+        for suffix in (":positions", ":scalars", ":text", ":strips"):
+            values = _column(batch, suffix)
+            if values is not None:
+                series.setdefault(entity + suffix, []).append((cycles, values.to_pylist()))
+    if "/world/ball:positions" not in series:
+        raise ReplayError(f"{name}: no ball positions; not a soccer-sim replay")
+
+    def ordered(key: str) -> tuple[np.ndarray, list]:
+        parts = series.get(key, [])
+        cycles = np.concatenate([c for c, _ in parts]) if parts else np.zeros(0, np.int64)
+        values = [v for _, vs in parts for v in vs]
+        order = np.argsort(cycles, kind="stable")
+        return cycles[order], [values[i] for i in order]
+
+    cycles, ball = ordered("/world/ball:positions")
+    players = {}
+    targets = {}
+    for key in TEAM_KEYS:
+        c, rows = ordered(f"/world/{key}/players:positions")
+        if len(c):
+            players[key] = np.asarray(rows, dtype=np.float32)
+        c, rows = ordered(f"/world/{key}/roles/targets:positions")
+        if len(c):
+            targets[key] = [np.asarray(r, dtype=np.float32).reshape(-1, 2) for r in rows]
+    score = np.column_stack([np.asarray(ordered(f"/stats/score/{key}:scalars")[1], dtype=float).reshape(-1)
+                             for key in TEAM_KEYS])
+    event_cycles, texts = ordered("/events:text")
+    try:
+        has_blueprint = bool(reader.blueprints())
+    except Exception:
+        has_blueprint = False
+    return Replay(cycles=cycles, players=players, ball=np.asarray([b[0] for b in ball], dtype=np.float32),
+                  score=score, events=[(int(c), t[0] if isinstance(t, list) else t) for c, t in zip(event_cycles, texts)],
+                  static_paths=static, targets=targets, has_blueprint=has_blueprint)

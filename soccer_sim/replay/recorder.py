@@ -1,0 +1,302 @@
+"""A match recorder that writes a rerun replay (``.rrd``) or streams to a rerun viewer.
+
+:class:`RerunRecorder` observes the match loop (``on_start``/``on_cycle``/``on_end``). Every
+cycle it copies what it needs into growing numpy buffers; every ``flush_every`` cycles and at
+the end it sends them to rerun in columns (``rerun.send_columns``: one call per entity for a
+whole block of cycles), so recording costs little next to the match.
+
+What a replay holds (absolute frame, metres; entity paths):
+
+- ``/world/field/lines``, ``/world/field/goals``: the markings, static.
+- ``/world/home/players``, ``/world/away/players``: positions every cycle, team colours,
+  shirt numbers as labels (static).
+- ``/world/ball`` and ``/world/ball/trail`` (the last :attr:`trail` positions).
+- ``/world/home/roles/targets``, ``.../roles/assignment`` (player to its role's target) and
+  ``.../roles/triangulation`` (the formation's Delaunay mesh, logged when it changes), for a
+  team with a ``drawing()`` method (see :mod:`agents.teams`); each a layer the viewer toggles.
+- ``/events``: a text log of goals, shots, passes, set plays, offside, ...
+- ``/stats/score/{home,away}``, ``/stats/possession/home`` (share of play-on cycles in which
+  home touched the ball last), ``/stats/stamina/{home,away}`` (team mean).
+
+Timelines: ``cycle`` (a sequence) and ``match_time`` (a duration, ``cycle_seconds`` per cycle).
+The default blueprint (:func:`soccer_sim.replay.blueprint.default_blueprint`) is stored with the
+recording.
+"""
+
+from __future__ import annotations
+
+import os
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from soccer_sim.replay.blueprint import default_blueprint
+from soccer_sim.replay.field import field_lines, goal_frames
+from soccer_sim.state import NO_PLAYER, EventKind, PlayMode
+
+if TYPE_CHECKING:
+    from soccer_sim.match import Match
+
+TEAM_KEYS = ("home", "away")
+TEAM_COLOURS = ((220, 50, 47), (38, 139, 210))
+"""Home red, away blue (RGB)."""
+BALL_COLOUR = (250, 250, 250)
+FIELD_COLOUR = (200, 230, 200)
+
+
+class ReplayError(RuntimeError):
+    """rerun-sdk is missing, or a replay cannot be written or read; the message says what to do."""
+
+
+def import_rerun() -> Any:
+    """The rerun module, or a ReplayError saying how to install it."""
+    try:
+        import rerun
+    except ImportError as exc:  # pragma: no cover - rerun-sdk is a dependency
+        raise ReplayError("replays need rerun-sdk: pip install rerun-sdk") from exc
+    return rerun
+
+
+class RerunRecorder:
+    """Record a match for the rerun viewer: into the file ``path`` (no window opens), or
+    streamed to a viewer it spawns (``spawn=True``), or into a caller's ``recording`` stream.
+
+    ``trail``: cycles of ball trail drawn behind the ball. ``flush_every``: cycles buffered
+    before they are sent (smaller streams more smoothly to a live viewer). ``drawings``:
+    whether to record the teams' role targets, assignment lines and triangulation.
+    """
+
+    def __init__(self, path: str | os.PathLike | None = None, *, spawn: bool = False, recording: Any = None,
+                 trail: int = 10, flush_every: int = 1000, drawings: bool = True) -> None:
+        if path is None and not spawn and recording is None:
+            raise ValueError("RerunRecorder needs a path, spawn=True or a recording stream")
+        if trail < 1 or flush_every < 1:
+            raise ValueError(f"trail and flush_every must be at least 1, got {trail} and {flush_every}")
+        self.path = None if path is None else os.fspath(path)
+        self.spawn = spawn
+        self.trail = int(trail)
+        self.flush_every = int(flush_every)
+        self.drawings = drawings
+        self.recording = recording
+        self._rr = import_rerun()
+
+    # ------------------------------------------------------------------ match loop
+    def on_start(self, match: Match) -> None:
+        rr = self._rr
+        names = match.team_names
+        if self.recording is None:
+            self.recording = rr.RecordingStream("soccer-sim", recording_id=f"{names[0]}-v-{names[1]}-seed-{match.seed}")
+        blueprint = default_blueprint(match.config.field)
+        try:
+            if self.path is not None:
+                self.recording.save(self.path, default_blueprint=blueprint)
+            if self.spawn:
+                self.recording.spawn(default_blueprint=blueprint)
+        except Exception as exc:  # rerun reports unwritable paths and missing viewers as plain errors
+            raise ReplayError(f"cannot start the replay ({self.path or 'viewer'}): {exc}") from exc
+        self._seconds = float(match.config.physics.cycle_seconds)
+        self._sizes = tuple(match.state.sizes)
+        self._first_cycle = int(match.state.cycle)
+        self._log_static(match)
+        self._reset_buffers()
+        self._trail_seed = np.repeat(match.state.ball[None, :].astype(np.float32), self.trail, axis=0)
+        self._possession = np.zeros(2, dtype=np.int64)
+        self._formations: list[Any] = [None, None]
+        self._sent_events = 0
+        self._buffer(match)
+
+    def on_cycle(self, match: Match) -> None:
+        self._buffer(match)
+        if len(self._cycles) >= self.flush_every:
+            self._flush(match)
+
+    def on_end(self, match: Match) -> None:
+        self._flush(match)
+        rec = self.recording
+        rec.flush()
+        if self.path is not None:
+            rec.disconnect()
+
+    # ------------------------------------------------------------------ buffering
+    def _reset_buffers(self) -> None:
+        self._cycles: list[int] = []
+        self._pos: list[np.ndarray] = []
+        self._ball: list[np.ndarray] = []
+        self._score: list[np.ndarray] = []
+        self._stamina: list[np.ndarray] = []
+        self._possession_share: list[float] = []
+        self._targets: list[list[np.ndarray]] = [[], []]
+        self._lines: list[list[np.ndarray]] = [[], []]
+
+    def _buffer(self, match: Match) -> None:
+        state = match.state
+        self._cycles.append(int(state.cycle))
+        self._pos.append(state.pos.astype(np.float32))
+        self._ball.append(state.ball.astype(np.float32))
+        self._score.append(state.score.copy())
+        home = self._sizes[0]
+        stamina = state.stamina
+        self._stamina.append(np.array([stamina[:home].mean() if home else np.nan,
+                                       stamina[home:].mean() if len(stamina) > home else np.nan]))
+        if state.play_mode == PlayMode.PLAY_ON and state.last_touch != NO_PLAYER:
+            self._possession[0 if state.last_touch < home else 1] += 1
+        total = self._possession.sum()
+        self._possession_share.append(self._possession[0] / total if total else 0.5)
+        if self.drawings:
+            self._buffer_drawings(match)
+
+    def _buffer_drawings(self, match: Match) -> None:
+        state = match.state
+        for team, obj in enumerate(match.teams):
+            draw = getattr(obj, "drawing", None)
+            if draw is None or self._sizes[team] == 0:
+                continue
+            drawing = draw()
+            sign = float(state.attack_direction(team))
+            first = state.first_row(team)
+            players = state.pos[first:first + self._sizes[team]]
+            targets = sign * np.asarray(drawing["targets"], dtype=np.float32)
+            self._targets[team].append(targets)
+            assigned = drawing.get("assigned_targets")
+            if assigned is not None:
+                rows = np.asarray(drawing["outfield"])
+                ends = sign * np.asarray(assigned, dtype=np.float32)
+                self._lines[team].append(np.stack([players[rows].astype(np.float32), ends], axis=1))
+            balls, triangles = drawing.get("formation_balls"), drawing.get("formation_triangles")
+            if balls is not None and triangles is not None:
+                key = (id(balls), sign)
+                if self._formations[team] != key:
+                    self._formations[team] = key
+                    self._log_triangulation(team, sign * np.asarray(balls, dtype=np.float32),
+                                            np.asarray(triangles), int(state.cycle))
+
+    # ------------------------------------------------------------------ sending
+    def _times(self, cycles: np.ndarray) -> list[Any]:
+        rr = self._rr
+        return [rr.TimeColumn("cycle", sequence=cycles),
+                rr.TimeColumn("match_time", duration=cycles * self._seconds)]
+
+    def _set_time(self, cycle: int) -> None:
+        rec = self.recording
+        rec.set_time("cycle", sequence=cycle)
+        rec.set_time("match_time", duration=cycle * self._seconds)
+
+    def _flush(self, match: Match) -> None:
+        if not self._cycles:
+            return
+        rr, rec = self._rr, self.recording
+        cycles = np.asarray(self._cycles, dtype=np.int64)
+        times = self._times(cycles)
+        count = len(cycles)
+        pos = np.stack(self._pos)
+        home = self._sizes[0]
+        for team, key in enumerate(TEAM_KEYS):
+            size = self._sizes[team]
+            if size == 0:
+                continue
+            rows = pos[:, :home] if team == 0 else pos[:, home:]
+            rr.send_columns(f"world/{key}/players", indexes=times,
+                            columns=rr.Points2D.columns(positions=rows.reshape(-1, 2)).partition([size] * count),
+                            recording=rec)
+            for name, series in (("targets", self._targets[team]), ("assignment", self._lines[team])):
+                if len(series) == count:
+                    self._send_layer(f"world/{key}/roles/{name}", times, series, name)
+        ball = np.stack(self._ball)
+        rr.send_columns("world/ball", indexes=times, columns=rr.Points2D.columns(positions=ball), recording=rec)
+        history = np.concatenate([self._trail_seed, ball])
+        strips = np.stack([history[k:k + count] for k in range(self.trail + 1)], axis=1)
+        rr.send_columns("world/ball/trail", indexes=times,
+                        columns=rr.LineStrips2D.columns(strips=strips), recording=rec)
+        self._trail_seed = history[-self.trail:]
+        score = np.stack(self._score).astype(np.float64)
+        stamina = np.stack(self._stamina)
+        for team, key in enumerate(TEAM_KEYS):
+            rr.send_columns(f"stats/score/{key}", indexes=times, columns=rr.Scalars.columns(scalars=score[:, team]),
+                            recording=rec)
+            rr.send_columns(f"stats/stamina/{key}", indexes=times,
+                            columns=rr.Scalars.columns(scalars=stamina[:, team]), recording=rec)
+        rr.send_columns("stats/possession/home", indexes=times,
+                        columns=rr.Scalars.columns(scalars=np.asarray(self._possession_share)), recording=rec)
+        self._send_events(match)
+        self._reset_buffers()
+
+    def _send_layer(self, path: str, times: list[Any], series: list[np.ndarray], name: str) -> None:
+        rr = self._rr
+        lengths = [len(item) for item in series]
+        stacked = np.concatenate(series) if series else np.zeros((0, 2), np.float32)
+        if name == "targets":
+            columns = rr.Points2D.columns(positions=stacked.reshape(-1, 2)).partition(lengths)
+        else:
+            columns = rr.LineStrips2D.columns(strips=stacked).partition(lengths)
+        rr.send_columns(path, indexes=times, columns=columns, recording=self.recording)
+
+    def _send_events(self, match: Match) -> None:
+        events = match.events.as_arrays()
+        new = slice(self._sent_events, len(events["cycle"]))
+        self._sent_events = len(events["cycle"])
+        cycles = events["cycle"][new]
+        if not len(cycles):
+            return
+        rr = self._rr
+        texts = [describe_event(match.team_names, int(k), int(t), int(p), float(x), float(y), int(d))
+                 for k, t, p, x, y, d in zip(events["kind"][new], events["team"][new], events["player"][new],
+                                             events["x"][new], events["y"][new], events["detail"][new])]
+        levels = ["WARN" if int(k) == EventKind.GOAL else "INFO" for k in events["kind"][new]]
+        rr.send_columns("events", indexes=self._times(np.asarray(cycles, dtype=np.int64)),
+                        columns=rr.TextLog.columns(text=texts, level=levels), recording=self.recording)
+
+    # ------------------------------------------------------------------ static and rare data
+    def _log_static(self, match: Match) -> None:
+        rr, rec = self._rr, self.recording
+        field = match.config.field
+        rec.log("world/field/lines", rr.LineStrips2D(field_lines(field), colors=[FIELD_COLOUR], radii=0.12),
+                static=True)
+        rec.log("world/field/goals", rr.LineStrips2D(goal_frames(field), colors=[(255, 255, 255)], radii=0.2),
+                static=True)
+        radius = float(match.config.physics.player_radius)
+        for team, key in enumerate(TEAM_KEYS):
+            size = self._sizes[team]
+            if size:
+                rec.log(f"world/{key}/players", rr.Points2D.from_fields(
+                    colors=[TEAM_COLOURS[team]] * size, radii=[max(radius, 0.5)] * size,
+                    labels=[str(i + 1) for i in range(size)], show_labels=True), static=True)
+                rec.log(f"world/{key}/roles/targets", rr.Points2D.from_fields(
+                    colors=[TEAM_COLOURS[team]], radii=[0.3]), static=True)
+                rec.log(f"world/{key}/roles/assignment", rr.LineStrips2D.from_fields(
+                    colors=[TEAM_COLOURS[team]], radii=[0.06]), static=True)
+        rec.log("world/ball", rr.Points2D.from_fields(colors=[BALL_COLOUR], radii=[0.4]), static=True)
+        rec.log("world/ball/trail", rr.LineStrips2D.from_fields(colors=[(250, 250, 250, 120)], radii=[0.1]),
+                static=True)
+        names = match.team_names
+        rec.log("match", rr.TextDocument(f"{names[0]} (home, red) v {names[1]} (away, blue), seed {match.seed}"),
+                static=True)
+
+    def _log_triangulation(self, team: int, balls: np.ndarray, triangles: np.ndarray, cycle: int) -> None:
+        rr = self._rr
+        closed = balls[np.concatenate([triangles, triangles[:, :1]], axis=1)]
+        self._set_time(cycle)
+        self.recording.log(f"world/{TEAM_KEYS[team]}/roles/triangulation",
+                           rr.LineStrips2D(closed, colors=[TEAM_COLOURS[team] + (70,)], radii=0.04))
+
+
+_EVENT_NAMES = {EventKind.KICK: "kick", EventKind.PASS: "pass", EventKind.SHOT: "shot", EventKind.GOAL: "GOAL",
+                EventKind.CATCH: "catch", EventKind.OUT: "ball out", EventKind.SET_PLAY: "set play",
+                EventKind.OFFSIDE: "offside", EventKind.DROP_BALL: "dropped ball", EventKind.HALF_TIME: "half time",
+                EventKind.TIME_OVER: "time over", EventKind.TOUCH: "touch", EventKind.BACK_PASS: "back-pass"}
+
+
+def describe_event(names: tuple[str, str], kind: int, team: int, player: int, x: float, y: float,
+                   detail: int) -> str:
+    """One event as a line of the event log, e.g. ``"GOAL mmdr #9 at (50.1, 3.2)"``."""
+    text = _EVENT_NAMES.get(EventKind(kind), f"event {kind}")
+    if kind == EventKind.SET_PLAY:
+        text = f"{PlayMode(detail).name.lower().replace('_', ' ')}"
+    if team in (0, 1):
+        text += f" {names[team]}"
+        if player >= 0:
+            text += f" #{player + 1}"
+        if kind == EventKind.PASS and detail >= 0:
+            text += f" to #{detail + 1}"
+    if np.isfinite(x) and np.isfinite(y):
+        text += f" at ({x:.1f}, {y:.1f})"
+    return text
