@@ -23,6 +23,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "experiments.commands.experiment",
     "experiments.commands.tournament",
     "experiments.commands.results",
+    "experiments.commands.replay",
 )
 
 

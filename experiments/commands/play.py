@@ -1,7 +1,8 @@
-"""``soccer-sim play [HOME] [AWAY] --seed N [--cycles N] [--json] [--scenario NAME|FILE]``: play one
-match and print its report: half-time and final score, the goals (cycle, team, scorer's shirt
+"""``soccer-sim play [HOME] [AWAY] --seed N [--cycles N] [--json] [--scenario NAME|FILE]
+[--record FILE.rrd]``: play one match and print its report: half-time and final score, the goals (cycle, team, scorer's shirt
 number), set plays of each kind, offside calls and both teams' statistics; ``--json`` prints the
-same as one JSON object.
+same as one JSON object. ``--record`` also writes the match as a rerun replay (see
+:mod:`soccer_sim.replay`; watch it with ``soccer-sim replay FILE.rrd``).
 
 ``--cycles`` up to a regulation match (2 x 3000 cycles) stops the match early; a longer count
 lengthens both halves to half of it each (half time stays in the middle). Ctrl-C stops the match
@@ -28,6 +29,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--scenario", default=None, metavar="NAME|FILE",
                         help="play a scenario: a name from `soccer-sim scenarios` or a .json/.toml file "
                              "(default: the regular match)")
+    parser.add_argument("--record", default=None, metavar="FILE.rrd",
+                        help="also write the match as a rerun replay (watch it with `soccer-sim replay FILE.rrd`)")
     parser.set_defaults(func=run)
 
 
@@ -62,18 +65,21 @@ def run(args: argparse.Namespace) -> int:
 
     from experiments.match_report import match_report
     from soccer_sim import ConfigError, TeamError, TeamNotFoundError, run_match
+    from soccer_sim.replay import ReplayError
 
     console = Console()
     try:
         config = match_config(args.cycles)
         scenario = _scenario(getattr(args, "scenario", None))
+        recorders = _recorders(getattr(args, "record", None))
         start = time.perf_counter()
-        result = run_match(args.home, args.away, seed=args.seed, config=config, scenario=scenario)
+        result = run_match(args.home, args.away, seed=args.seed, config=config, scenario=scenario,
+                           recorders=recorders)
         elapsed = time.perf_counter() - start
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return 130
-    except (TeamNotFoundError, TeamError, ConfigError, ValueError) as exc:
+    except (TeamNotFoundError, TeamError, ConfigError, ValueError, ReplayError) as exc:
         console.print(f"[red]error:[/red] {escape(str(exc))}")
         return 2
     report = match_report(result)
@@ -88,6 +94,9 @@ def run(args: argparse.Namespace) -> int:
             if scenario is not None:
                 console.print(f"scenario {escape(result.scenario)}: ended by {result.end_reason} after "
                               f"{result.cycles} cycles")
+            if recorders:
+                console.print(f"replay written to {escape(args.record)} (watch it: soccer-sim replay "
+                              f"{escape(args.record)})")
         sys.stdout.flush()
     except BrokenPipeError:  # the reader went away (``soccer-sim play --json | head``): not an error
         import os
@@ -158,3 +167,23 @@ def _format(key: str, value: float | None) -> str:
     if float(value).is_integer():
         return str(int(value))
     return f"{value:.3g}"
+
+
+def _recorders(path: str | None) -> list:
+    """A replay recorder writing ``path`` (after checking that the file can be written), or none."""
+    if path is None:
+        return []
+    from pathlib import Path
+
+    from soccer_sim.replay import ReplayError, RerunRecorder
+
+    target = Path(path)
+    if target.suffix != ".rrd":
+        raise ReplayError(f"--record {path}: a replay file must end in .rrd")
+    if not target.parent.is_dir():
+        raise ReplayError(f"--record {path}: directory {target.parent} does not exist")
+    try:
+        target.touch()
+    except OSError as exc:
+        raise ReplayError(f"--record {path}: cannot write it ({exc.strerror})") from None
+    return [RerunRecorder(target)]

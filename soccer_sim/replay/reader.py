@@ -18,6 +18,7 @@ class Replay:
     ``ball`` (T, 2); ``score`` (T, 2); ``events`` (cycle, text) pairs in order;
     ``static_paths`` the entities logged as static (the field, styles); ``targets[key]`` the
     role targets per cycle (a list of (k, 2) arrays) when the team drew them;
+    ``lines[key]`` the player-to-target segments per cycle ((k, 2, 2) arrays);
     ``has_blueprint`` whether a default blueprint is stored.
     """
 
@@ -28,6 +29,7 @@ class Replay:
     events: list[tuple[int, str]]
     static_paths: set[str]
     targets: dict[str, list[np.ndarray]] = field(default_factory=dict)
+    lines: dict[str, list[np.ndarray]] = field(default_factory=dict)
     has_blueprint: bool = False
 
 
@@ -79,7 +81,11 @@ def read_replay(path: str | os.PathLike) -> Replay:
     cycles, ball = ordered("/world/ball:positions")
     players = {}
     targets = {}
+    lines = {}
     for key in TEAM_KEYS:
+        c, rows = ordered(f"/world/{key}/roles/assignment:strips")
+        if len(c):
+            lines[key] = [np.asarray(r, dtype=np.float32).reshape(-1, 2, 2) for r in rows]
         c, rows = ordered(f"/world/{key}/players:positions")
         if len(c):
             players[key] = np.asarray(rows, dtype=np.float32)
@@ -95,4 +101,4 @@ def read_replay(path: str | os.PathLike) -> Replay:
         has_blueprint = False
     return Replay(cycles=cycles, players=players, ball=np.asarray([b[0] for b in ball], dtype=np.float32),
                   score=score, events=[(int(c), t[0] if isinstance(t, list) else t) for c, t in zip(event_cycles, texts)],
-                  static_paths=static, targets=targets, has_blueprint=has_blueprint)
+                  static_paths=static, targets=targets, lines=lines, has_blueprint=has_blueprint)

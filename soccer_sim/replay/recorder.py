@@ -158,7 +158,9 @@ class RerunRecorder:
             targets = sign * np.asarray(drawing["targets"], dtype=np.float32)
             self._targets[team].append(targets)
             assigned = drawing.get("assigned_targets")
-            if assigned is not None:
+            if assigned is None:  # nothing assigned yet: no lines this cycle (keeps cycles aligned)
+                self._lines[team].append(np.zeros((0, 2, 2), dtype=np.float32))
+            else:
                 rows = np.asarray(drawing["outfield"])
                 ends = sign * np.asarray(assigned, dtype=np.float32)
                 self._lines[team].append(np.stack([players[rows].astype(np.float32), ends], axis=1))

@@ -1,0 +1,116 @@
+"""``soccer-sim replay``: watch a recorded match, draw it, or re-create a stored match.
+
+- ``soccer-sim replay match.rrd`` opens the rerun viewer on the file (the ``rerun`` program
+  that rerun-sdk installs; without a display it says so and suggests ``--png``).
+- ``soccer-sim replay match.rrd --png field.png [--cycle N]`` draws the field at one cycle
+  from the recorded data (players, ball trail, role targets and assignment lines), no viewer
+  needed.
+- ``soccer-sim replay --results results.sqlite --row K --out match.rrd`` plays match ``K``
+  (0-based, in the order of ``soccer-sim results export``) of a stored run again and records
+  it: a match is a pure function of its teams, configuration and seed, so the replay is the
+  match that was stored (on the same platform; the command checks the score).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:
+    parser = subparsers.add_parser(
+        "replay", help="watch or draw a recorded match (.rrd), or re-create a stored match",
+        description="Open a rerun replay in the viewer, draw it as a PNG, or re-create a match of a results "
+                    "file by its row and record it.")
+    parser.add_argument("file", nargs="?", metavar="FILE.rrd", help="a replay written by `play --record`")
+    parser.add_argument("--png", metavar="OUT.png", help="draw the field at --cycle instead of opening the viewer")
+    parser.add_argument("--cycle", type=int, default=None, help="cycle drawn by --png (default: the last goal, "
+                                                                "else the middle of the match)")
+    parser.add_argument("--results", metavar="RESULTS.sqlite", help="re-create a stored match from this results file")
+    parser.add_argument("--row", type=int, default=None, help="with --results: the match's row (0-based, in "
+                                                              "`soccer-sim results export` order)")
+    parser.add_argument("--out", metavar="OUT.rrd", default="replay.rrd",
+                        help="with --results: where to write the replay (default: %(default)s)")
+    parser.set_defaults(func=run)
+
+
+def _fail(message: str) -> int:
+    print(f"error: {message}", file=sys.stderr)
+    return 2
+
+
+def run(args: argparse.Namespace) -> int:
+    from soccer_sim.replay import ReplayError
+
+    try:
+        if args.results is not None:
+            return _recreate(args)
+        if args.file is None:
+            return _fail("give a replay file (FILE.rrd), or --results FILE --row K")
+        if args.png is not None:
+            return _draw(args.file, args.png, args.cycle)
+        return _open_viewer(args.file)
+    except ReplayError as exc:
+        return _fail(str(exc))
+
+
+def _open_viewer(path: str) -> int:
+    import os
+    import shutil
+    import subprocess
+
+    if not os.path.isfile(path):
+        return _fail(f"{path}: no such replay file")
+    viewer = shutil.which("rerun")
+    if viewer is None:
+        return _fail("the rerun viewer is not installed: pip install rerun-sdk (it provides the `rerun` program)")
+    if not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY") or sys.platform in ("darwin", "win32")):
+        return _fail(f"no display to open the viewer on; copy {path} to a machine with one and run "
+                     f"`rerun {path}`, or draw it here: soccer-sim replay {path} --png field.png")
+    return subprocess.call([viewer, path])
+
+
+def _draw(path: str, png: str, cycle: int | None) -> int:
+    from soccer_sim.replay import read_replay
+    from soccer_sim.replay.picture import draw_replay
+
+    replay = read_replay(path)
+    written, shown = draw_replay(replay, png, cycle)
+    print(f"wrote {written} (cycle {shown})")
+    return 0
+
+
+def _recreate(args: argparse.Namespace) -> int:
+    from experiments.results.store import ResultsError, ResultStore
+    from experiments.runner.spec import config_for, config_hash
+    from experiments.runner.worker import make_team
+    from soccer_sim import run_match
+    from soccer_sim.replay import RerunRecorder
+
+    if args.row is None:
+        return _fail("--results needs --row K (the match's row, 0-based)")
+    try:
+        with ResultStore.open(args.results) as store:
+            records = store.records()
+            params = store.params
+    except ResultsError as exc:
+        return _fail(str(exc))
+    if not 0 <= args.row < len(records):
+        return _fail(f"--row {args.row}: {args.results} holds rows 0 to {len(records) - 1}")
+    record = records[args.row]
+    config = config_for(params.get("cycles"))
+    if config_hash(config) != record.config_hash:
+        return _fail(f"row {args.row} was played with configuration {record.config_hash}, which this version "
+                     f"cannot rebuild (it builds {config_hash(config)})")
+    home, away = make_team(record.home)[0], make_team(record.away)[0]
+    result = run_match(home, away, seed=record.seed, config=config, recorders=[RerunRecorder(args.out)])
+    stored = (record.home_goals, record.away_goals)
+    print(f"{record.home} {result.score[0]} - {result.score[1]} {record.away} (seed {record.seed}); "
+          f"replay written to {args.out}")
+    if record.error:
+        print(f"note: the stored row has an error ({record.error.splitlines()[0]}); the replay plays the "
+              f"match without the failure")
+    elif tuple(int(g) for g in result.score) != stored:
+        print(f"note: the stored score was {stored[0]} - {stored[1]}: this machine or library versions "
+              f"differ from the ones that played it (a match is bit-identical only on the same platform)")
+    return 0
