@@ -1,0 +1,110 @@
+"""Replays: what a recording holds, read back with rerun's own reader, and the commands."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from experiments.cli import main
+from soccer_sim import MatchConfig, run_match
+from soccer_sim.replay import ReplayError, RerunRecorder, read_replay
+from soccer_sim.state import EventKind
+
+
+class Trajectory:
+    """The simulator's own record of every cycle, to compare a replay with."""
+
+    def on_start(self, match) -> None:
+        self.cycles, self.pos, self.ball, self.score = [], [], [], []
+        self.on_cycle(match)
+
+    def on_cycle(self, match) -> None:
+        state = match.state
+        self.cycles.append(state.cycle)
+        self.pos.append(state.pos.copy())
+        self.ball.append(state.ball.copy())
+        self.score.append(state.score.copy())
+
+    def on_end(self, match) -> None:
+        pass
+
+
+@pytest.fixture(scope="module")
+def recorded(tmp_path_factory):
+    """A 700-cycle match between built-in teams, recorded in blocks of 250 cycles."""
+    path = tmp_path_factory.mktemp("replay") / "match.rrd"
+    trajectory = Trajectory()
+    result = run_match("mmdr", "chaser", seed=4, config=MatchConfig(max_cycles=700),
+                       recorders=[trajectory, RerunRecorder(path, flush_every=250)])
+    return path, trajectory, result, read_replay(path)
+
+
+def test_positions_are_the_simulators_at_every_cycle(recorded) -> None:
+    _, trajectory, _, replay = recorded
+    assert replay.cycles.tolist() == trajectory.cycles
+    pos = np.asarray(trajectory.pos, dtype=np.float32)
+    for k in (0, 1, 249, 250, 251, 499, 500, len(pos) - 1):
+        np.testing.assert_array_equal(replay.players["home"][k], pos[k, :11])
+        np.testing.assert_array_equal(replay.players["away"][k], pos[k, 11:])
+        np.testing.assert_array_equal(replay.ball[k], np.asarray(trajectory.ball[k], dtype=np.float32))
+    np.testing.assert_array_equal(replay.score, np.asarray(trajectory.score, dtype=float))
+
+
+def test_field_is_static_and_blueprint_stored(recorded) -> None:
+    replay = recorded[3]
+    assert {"/world/field/lines", "/world/field/goals"} <= replay.static_paths
+    assert replay.has_blueprint
+
+
+def test_events_and_role_drawings_are_present(recorded) -> None:
+    _, _, result, replay = recorded
+    kinds = result.events.as_arrays()["kind"]
+    assert len(replay.events) == len(kinds) > 0
+    kicks = sum(text.startswith(("kick mmdr #", "kick chaser #")) for _, text in replay.events)
+    assert kicks == int(np.sum(kinds == EventKind.KICK))
+    assert sum(text.startswith("kick off") for _, text in replay.events) >= 1
+    # The built-in team draws its role targets every cycle; the chaser draws nothing.
+    assert len(replay.targets["home"]) == len(replay.cycles) and "away" not in replay.targets
+    assert all(len(lines) == 10 for lines in replay.lines["home"][1:])
+
+
+def test_recorder_needs_a_destination_and_reader_refuses_other_files(tmp_path) -> None:
+    with pytest.raises(ValueError, match="needs a path"):
+        RerunRecorder()
+    with pytest.raises(ReplayError, match="no such replay file"):
+        read_replay(tmp_path / "missing.rrd")
+    junk = tmp_path / "junk.rrd"
+    junk.write_bytes(b"not a recording")
+    with pytest.raises(ReplayError, match="junk.rrd"):
+        read_replay(junk)
+
+
+def test_play_record_then_replay_png(tmp_path, capsys) -> None:
+    path = tmp_path / "m.rrd"
+    assert main(["play", "static", "chaser", "--seed", "1", "--cycles", "200", "--record", str(path)]) == 0
+    assert "replay written to" in capsys.readouterr().out
+    png = tmp_path / "m.png"
+    assert main(["replay", str(path), "--png", str(png), "--cycle", "150"]) == 0
+    assert png.stat().st_size > 10_000
+    assert main(["replay", str(path), "--png", str(png), "--cycle", "5000"]) == 2
+    assert "cycle 5000 is not in the replay" in capsys.readouterr().err
+
+
+def test_play_record_refuses_bad_paths(tmp_path, capsys) -> None:
+    assert main(["play", "chaser", "idle", "--cycles", "5", "--record", str(tmp_path / "x.txt")]) == 2
+    assert main(["play", "chaser", "idle", "--cycles", "5", "--record", str(tmp_path / "no" / "x.rrd")]) == 2
+    assert "does not exist" in capsys.readouterr().out
+
+
+def test_a_stored_match_is_recreated_by_its_row(tmp_path, capsys) -> None:
+    results = tmp_path / "r.sqlite"
+    assert main(["tournament", "--teams", "chaser,idle", "--games", "2", "--cycles", "300", "--workers", "1",
+                 "--out", str(results), "--tables", str(tmp_path / "t"), "--no-progress"]) == 0
+    capsys.readouterr()
+    out = tmp_path / "again.rrd"
+    assert main(["replay", "--results", str(results), "--row", "1", "--out", str(out)]) == 0
+    printed = capsys.readouterr().out
+    assert "replay written to" in printed and "note:" not in printed  # same score as stored
+    assert read_replay(out).cycles[-1] == 300
+    assert main(["replay", "--results", str(results), "--row", "9", "--out", str(out)]) == 2
+    assert "holds rows 0 to 1" in capsys.readouterr().err
