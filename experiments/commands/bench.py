@@ -18,6 +18,7 @@ BENCHMARKS: dict[str, tuple[str, str]] = {
     "lazy-assignment": ("experiments.benchmarks.grid_assignment",
                         "lazy path-cost goal assignment vs all pairs on random grids (Table 1's shape)"),
     "match": ("experiments.benchmarks.match", "speed of whole matches between two teams"),
+    "replay": ("experiments.benchmarks.replay", "time and file size of recording a rerun replay of a match"),
     "roles": ("experiments.benchmarks.roles", "microseconds per call of every role assigner"),
     "skills": ("experiments.benchmarks.skills", "microseconds per call of every soccer skill"),
     "soccer": ("experiments.benchmarks.soccer", "goals, shots, passes and crowding near the ball between two teams"),

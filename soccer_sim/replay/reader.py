@@ -19,7 +19,7 @@ class Replay:
     ``static_paths`` the entities logged as static (the field, styles); ``targets[key]`` the
     role targets per cycle (a list of (k, 2) arrays) when the team drew them;
     ``lines[key]`` the player-to-target segments per cycle ((k, 2, 2) arrays);
-    ``has_blueprint`` whether a default blueprint is stored.
+    ``temporal_paths`` the entities with data on the ``cycle`` timeline; ``has_blueprint`` whether a default blueprint is stored.
     """
 
     cycles: np.ndarray
@@ -30,6 +30,7 @@ class Replay:
     static_paths: set[str]
     targets: dict[str, list[np.ndarray]] = field(default_factory=dict)
     lines: dict[str, list[np.ndarray]] = field(default_factory=dict)
+    temporal_paths: set[str] = field(default_factory=set)
     has_blueprint: bool = False
 
 
@@ -64,7 +65,7 @@ def read_replay(path: str | os.PathLike) -> Replay:
         if "cycle" not in batch.column_names:
             continue
         cycles = np.asarray(batch.column("cycle").to_numpy(zero_copy_only=False), dtype=np.int64)
-        for suffix in (":positions", ":scalars", ":text", ":strips"):
+        for suffix in (":positions", ":scalars", ":text", ":strips", ":origins", ":vectors"):
             values = _column(batch, suffix)
             if values is not None:
                 series.setdefault(entity + suffix, []).append((cycles, values.to_pylist()))
@@ -83,9 +84,13 @@ def read_replay(path: str | os.PathLike) -> Replay:
     targets = {}
     lines = {}
     for key in TEAM_KEYS:
-        c, rows = ordered(f"/world/{key}/roles/assignment:strips")
+        c, origins = ordered(f"/world/{key}/roles/assignment:origins")
         if len(c):
-            lines[key] = [np.asarray(r, dtype=np.float32).reshape(-1, 2, 2) for r in rows]
+            vectors = ordered(f"/world/{key}/roles/assignment:vectors")[1]
+            lines[key] = []
+            for start, step in zip(origins, vectors):
+                start = np.asarray(start, dtype=np.float32).reshape(-1, 2)
+                lines[key].append(np.stack([start, start + np.asarray(step, dtype=np.float32).reshape(-1, 2)], axis=1))
         c, rows = ordered(f"/world/{key}/players:positions")
         if len(c):
             players[key] = np.asarray(rows, dtype=np.float32)
@@ -101,4 +106,5 @@ def read_replay(path: str | os.PathLike) -> Replay:
         has_blueprint = False
     return Replay(cycles=cycles, players=players, ball=np.asarray([b[0] for b in ball], dtype=np.float32),
                   score=score, events=[(int(c), t[0] if isinstance(t, list) else t) for c, t in zip(event_cycles, texts)],
-                  static_paths=static, targets=targets, lines=lines, has_blueprint=has_blueprint)
+                  static_paths=static, targets=targets, lines=lines,
+                  temporal_paths={key.rsplit(':', 1)[0] for key in series}, has_blueprint=has_blueprint)

@@ -11,7 +11,7 @@ What a replay holds (absolute frame, metres; entity paths):
 - ``/world/home/players``, ``/world/away/players``: positions every cycle, team colours,
   shirt numbers as labels (static).
 - ``/world/ball`` and ``/world/ball/trail`` (the last :attr:`trail` positions).
-- ``/world/home/roles/targets``, ``.../roles/assignment`` (player to its role's target) and
+- ``/world/home/roles/targets``, ``.../roles/assignment`` (an arrow from each player to its role's target) and
   ``.../roles/triangulation`` (the formation's Delaunay mesh, logged when it changes), for a
   team with a ``drawing()`` method (see :mod:`agents.teams`); each a layer the viewer toggles.
 - ``/events``: a text log of goals, shots, passes, set plays, offside, ...
@@ -102,6 +102,10 @@ class RerunRecorder:
         self._trail_seed = np.repeat(match.state.ball[None, :].astype(np.float32), self.trail, axis=0)
         self._possession = np.zeros(2, dtype=np.int64)
         self._formations: list[Any] = [None, None]
+        self._meshes: dict[tuple[int, int], np.ndarray] = {}
+        self._drawers = [(team, obj.drawing) for team, obj in enumerate(match.teams)
+                         if self.drawings and self._sizes[team] and callable(getattr(obj, "drawing", None))]
+        self._outfield = {team: np.asarray(draw()["outfield"]) for team, draw in self._drawers}
         self._sent_events = 0
         self._buffer(match)
 
@@ -124,64 +128,43 @@ class RerunRecorder:
         self._ball: list[np.ndarray] = []
         self._score: list[np.ndarray] = []
         self._stamina: list[np.ndarray] = []
-        self._possession_share: list[float] = []
+        self._toucher: list[int] = []
+        """Row that last touched the ball in play on, -1 otherwise (possession)."""
+        self._signs: list[list[float]] = [[], []]
         self._targets: list[list[np.ndarray]] = [[], []]
-        self._lines: list[list[np.ndarray]] = [[], []]
+        """Role targets as the team drew them (team frame), per cycle."""
+        self._assigned: list[list[np.ndarray | None]] = [[], []]
+        """Each outfield player's role target (team frame), per cycle; None before the first."""
+        self._mesh_changes: list[list[tuple[int, np.ndarray]]] = [[], []]
+        """(cycle, closed triangles (t, 4, 2), absolute frame) whenever a team's formation changed."""
 
     def _buffer(self, match: Match) -> None:
         state = match.state
-        self._cycles.append(int(state.cycle))
+        self._cycles.append(state.cycle)
         self._pos.append(state.pos.astype(np.float32))
         self._ball.append(state.ball.astype(np.float32))
         self._score.append(state.score.copy())
-        home = self._sizes[0]
-        stamina = state.stamina
-        self._stamina.append(np.array([stamina[:home].mean() if home else np.nan,
-                                       stamina[home:].mean() if len(stamina) > home else np.nan]))
-        if state.play_mode == PlayMode.PLAY_ON and state.last_touch != NO_PLAYER:
-            self._possession[0 if state.last_touch < home else 1] += 1
-        total = self._possession.sum()
-        self._possession_share.append(self._possession[0] / total if total else 0.5)
+        self._stamina.append(state.stamina.astype(np.float32))
+        self._toucher.append(state.last_touch if state.play_mode == PlayMode.PLAY_ON else NO_PLAYER)
         if self.drawings:
-            self._buffer_drawings(match)
+            for team, draw in self._drawers:
+                drawing = draw()
+                self._signs[team].append(state.home_attacks if team == 0 else -state.home_attacks)
+                self._targets[team].append(drawing["targets"])
+                self._assigned[team].append(drawing.get("assigned_targets"))
+                balls, triangles = drawing.get("formation_balls"), drawing.get("formation_triangles")
+                if balls is not None and triangles is not None:
+                    key = (id(balls), self._signs[team][-1])
+                    if self._formations[team] != key:
+                        self._formations[team] = key
+                        self._mesh_changes[team].append((int(state.cycle), self._mesh(key, balls, triangles)))
 
-    def _buffer_drawings(self, match: Match) -> None:
-        state = match.state
-        for team, obj in enumerate(match.teams):
-            draw = getattr(obj, "drawing", None)
-            if draw is None or self._sizes[team] == 0:
-                continue
-            drawing = draw()
-            sign = float(state.attack_direction(team))
-            first = state.first_row(team)
-            players = state.pos[first:first + self._sizes[team]]
-            targets = sign * np.asarray(drawing["targets"], dtype=np.float32)
-            self._targets[team].append(targets)
-            assigned = drawing.get("assigned_targets")
-            if assigned is None:  # nothing assigned yet: no lines this cycle (keeps cycles aligned)
-                self._lines[team].append(np.zeros((0, 2, 2), dtype=np.float32))
-            else:
-                rows = np.asarray(drawing["outfield"])
-                ends = sign * np.asarray(assigned, dtype=np.float32)
-                self._lines[team].append(np.stack([players[rows].astype(np.float32), ends], axis=1))
-            balls, triangles = drawing.get("formation_balls"), drawing.get("formation_triangles")
-            if balls is not None and triangles is not None:
-                key = (id(balls), sign)
-                if self._formations[team] != key:
-                    self._formations[team] = key
-                    self._log_triangulation(team, sign * np.asarray(balls, dtype=np.float32),
-                                            np.asarray(triangles), int(state.cycle))
-
+    # ------------------------------------------------------------------ sending
     # ------------------------------------------------------------------ sending
     def _times(self, cycles: np.ndarray) -> list[Any]:
         rr = self._rr
         return [rr.TimeColumn("cycle", sequence=cycles),
                 rr.TimeColumn("match_time", duration=cycles * self._seconds)]
-
-    def _set_time(self, cycle: int) -> None:
-        rec = self.recording
-        rec.set_time("cycle", sequence=cycle)
-        rec.set_time("match_time", duration=cycle * self._seconds)
 
     def _flush(self, match: Match) -> None:
         if not self._cycles:
@@ -200,9 +183,9 @@ class RerunRecorder:
             rr.send_columns(f"world/{key}/players", indexes=times,
                             columns=rr.Points2D.columns(positions=rows.reshape(-1, 2)).partition([size] * count),
                             recording=rec)
-            for name, series in (("targets", self._targets[team]), ("assignment", self._lines[team])):
-                if len(series) == count:
-                    self._send_layer(f"world/{key}/roles/{name}", times, series, name)
+        for team, _ in self._drawers:
+            self._send_drawings(team, times, rows_of_team=pos[:, :home] if team == 0 else pos[:, home:])
+            self._send_meshes(team)
         ball = np.stack(self._ball)
         rr.send_columns("world/ball", indexes=times, columns=rr.Points2D.columns(positions=ball), recording=rec)
         history = np.concatenate([self._trail_seed, ball])
@@ -215,22 +198,44 @@ class RerunRecorder:
         for team, key in enumerate(TEAM_KEYS):
             rr.send_columns(f"stats/score/{key}", indexes=times, columns=rr.Scalars.columns(scalars=score[:, team]),
                             recording=rec)
-            rr.send_columns(f"stats/stamina/{key}", indexes=times,
-                            columns=rr.Scalars.columns(scalars=stamina[:, team]), recording=rec)
-        rr.send_columns("stats/possession/home", indexes=times,
-                        columns=rr.Scalars.columns(scalars=np.asarray(self._possession_share)), recording=rec)
+            if self._sizes[team]:
+                mean = (stamina[:, :home] if team == 0 else stamina[:, home:]).mean(axis=1, dtype=np.float64)
+                rr.send_columns(f"stats/stamina/{key}", indexes=times, columns=rr.Scalars.columns(scalars=mean),
+                                recording=rec)
+        toucher = np.asarray(self._toucher)
+        home_has = np.cumsum((toucher >= 0) & (toucher < home)) + self._possession[0]
+        away_has = np.cumsum(toucher >= home) + self._possession[1]
+        self._possession[:] = home_has[-1], away_has[-1]
+        total = home_has + away_has
+        share = np.where(total > 0, home_has / np.maximum(total, 1), 0.5)
+        rr.send_columns("stats/possession/home", indexes=times, columns=rr.Scalars.columns(scalars=share),
+                        recording=rec)
         self._send_events(match)
         self._reset_buffers()
 
-    def _send_layer(self, path: str, times: list[Any], series: list[np.ndarray], name: str) -> None:
-        rr = self._rr
-        lengths = [len(item) for item in series]
-        stacked = np.concatenate(series) if series else np.zeros((0, 2), np.float32)
-        if name == "targets":
-            columns = rr.Points2D.columns(positions=stacked.reshape(-1, 2)).partition(lengths)
+    def _send_drawings(self, team: int, times: list[Any], rows_of_team: np.ndarray) -> None:
+        """The role targets and the player-to-target arrows of the buffered cycles, mirrored
+        from the team's frame into the absolute frame."""
+        rr, key = self._rr, TEAM_KEYS[team]
+        signs = np.asarray(self._signs[team], dtype=np.float32)[:, None, None]
+        targets = np.stack(self._targets[team]).astype(np.float32) * signs
+        count, roles = targets.shape[:2]
+        rr.send_columns(f"world/{key}/roles/targets", indexes=times,
+                        columns=rr.Points2D.columns(positions=targets.reshape(-1, 2)).partition([roles] * count),
+                        recording=self.recording)
+        assigned = self._assigned[team]
+        drawn = np.array([a is not None for a in assigned])
+        lengths = np.zeros(count, dtype=np.int64)
+        if drawn.any():
+            ends = np.stack([a for a in assigned if a is not None]).astype(np.float32) * signs[drawn]
+            starts = rows_of_team[drawn][:, self._outfield[team][:ends.shape[1]]]
+            lengths[drawn] = ends.shape[1]
+            origins, vectors = starts.reshape(-1, 2), (ends - starts).reshape(-1, 2)
         else:
-            columns = rr.LineStrips2D.columns(strips=stacked).partition(lengths)
-        rr.send_columns(path, indexes=times, columns=columns, recording=self.recording)
+            origins = vectors = np.zeros((0, 2), np.float32)
+        rr.send_columns(f"world/{key}/roles/assignment", indexes=times,
+                        columns=rr.Arrows2D.columns(origins=origins, vectors=vectors).partition(lengths),
+                        recording=self.recording)
 
     def _send_events(self, match: Match) -> None:
         events = match.events.as_arrays()
@@ -264,8 +269,10 @@ class RerunRecorder:
                     labels=[str(i + 1) for i in range(size)], show_labels=True), static=True)
                 rec.log(f"world/{key}/roles/targets", rr.Points2D.from_fields(
                     colors=[TEAM_COLOURS[team]], radii=[0.3]), static=True)
-                rec.log(f"world/{key}/roles/assignment", rr.LineStrips2D.from_fields(
+                rec.log(f"world/{key}/roles/assignment", rr.Arrows2D.from_fields(
                     colors=[TEAM_COLOURS[team]], radii=[0.06]), static=True)
+                rec.log(f"world/{key}/roles/triangulation", rr.LineStrips2D.from_fields(
+                    colors=[TEAM_COLOURS[team] + (70,)], radii=[0.04]), static=True)
         rec.log("world/ball", rr.Points2D.from_fields(colors=[BALL_COLOUR], radii=[0.4]), static=True)
         rec.log("world/ball/trail", rr.LineStrips2D.from_fields(colors=[(250, 250, 250, 120)], radii=[0.1]),
                 static=True)
@@ -273,12 +280,27 @@ class RerunRecorder:
         rec.log("match", rr.TextDocument(f"{names[0]} (home, red) v {names[1]} (away, blue), seed {match.seed}"),
                 static=True)
 
-    def _log_triangulation(self, team: int, balls: np.ndarray, triangles: np.ndarray, cycle: int) -> None:
+    def _mesh(self, key: tuple, balls: np.ndarray, triangles: np.ndarray) -> np.ndarray:
+        """A formation's Delaunay mesh as closed triangles (t, 4, 2) in the absolute frame
+        (``key[1]`` the team's attack direction), made once per formation and direction."""
+        mesh = self._meshes.get(key)
+        if mesh is None:
+            points = np.float32(key[1]) * np.asarray(balls, dtype=np.float32)
+            triangles = np.asarray(triangles)
+            mesh = self._meshes[key] = points[np.concatenate([triangles, triangles[:, :1]], axis=1)]
+        return mesh
+
+    def _send_meshes(self, team: int) -> None:
+        """The formation meshes that came into use in the buffered cycles, at those cycles."""
+        changes = self._mesh_changes[team]
+        if not changes:
+            return
         rr = self._rr
-        closed = balls[np.concatenate([triangles, triangles[:, :1]], axis=1)]
-        self._set_time(cycle)
-        self.recording.log(f"world/{TEAM_KEYS[team]}/roles/triangulation",
-                           rr.LineStrips2D(closed, colors=[TEAM_COLOURS[team] + (70,)], radii=0.04))
+        cycles = np.array([cycle for cycle, _ in changes], dtype=np.int64)
+        strips = np.concatenate([mesh for _, mesh in changes])
+        rr.send_columns(f"world/{TEAM_KEYS[team]}/roles/triangulation", indexes=self._times(cycles),
+                        columns=rr.LineStrips2D.columns(strips=strips).partition([len(m) for _, m in changes]),
+                        recording=self.recording)
 
 
 _EVENT_NAMES = {EventKind.KICK: "kick", EventKind.PASS: "pass", EventKind.SHOT: "shot", EventKind.GOAL: "GOAL",

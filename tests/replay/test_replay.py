@@ -66,6 +66,8 @@ def test_events_and_role_drawings_are_present(recorded) -> None:
     # The built-in team draws its role targets every cycle; the chaser draws nothing.
     assert len(replay.targets["home"]) == len(replay.cycles) and "away" not in replay.targets
     assert all(len(lines) == 10 for lines in replay.lines["home"][1:])
+    assert {"/world/home/roles/triangulation", "/world/ball/trail", "/stats/possession/home", "/stats/stamina/away",
+            "/events"} <= replay.temporal_paths
 
 
 def test_recorder_needs_a_destination_and_reader_refuses_other_files(tmp_path) -> None:
@@ -93,7 +95,8 @@ def test_play_record_then_replay_png(tmp_path, capsys) -> None:
 def test_play_record_refuses_bad_paths(tmp_path, capsys) -> None:
     assert main(["play", "chaser", "idle", "--cycles", "5", "--record", str(tmp_path / "x.txt")]) == 2
     assert main(["play", "chaser", "idle", "--cycles", "5", "--record", str(tmp_path / "no" / "x.rrd")]) == 2
-    assert "does not exist" in capsys.readouterr().out
+    printed = " ".join(capsys.readouterr().out.split())
+    assert "must end in .rrd" in printed and "does not exist" in printed
 
 
 def test_a_stored_match_is_recreated_by_its_row(tmp_path, capsys) -> None:
