@@ -48,7 +48,7 @@ def registered_teams_text() -> str:
 
 def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None:
     """--games, --seed, --cycles, --workers, --backend, --address, --out, --tables,
-    --match-timeout, --retry-errors, --no-progress."""
+    --match-timeout, --retry-errors, --record-dir, --record-every, --no-progress."""
     parser.add_argument("--seed", type=seed_value, default=0, help="first seed; a pairing plays seeds seed, seed+1, ... (default: 0)")
     parser.add_argument("--cycles", type=positive_int, default=None,
                         help="cycles per match (default: a regulation match of 6000); part of the configuration hash")
@@ -67,6 +67,11 @@ def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None
     parser.add_argument("--match-timeout", type=positive_float, default=DEFAULT_MATCH_TIMEOUT, metavar="SECONDS",
                         help=f"a match taking longer is stopped and forfeited (default: {DEFAULT_MATCH_TIMEOUT:g})")
     parser.add_argument("--retry-errors", action="store_true", help="play stored forfeits again")
+    parser.add_argument("--record-dir", default=None, metavar="DIR",
+                        help="write rerun replays of a sample of the matches played into DIR "
+                             "(watch one with `soccer-sim replay FILE.rrd`)")
+    parser.add_argument("--record-every", type=positive_int, default=10, metavar="K",
+                        help="with --record-dir: record every K-th match of the run (default: 10)")
     parser.add_argument("--no-progress", action="store_true", help="no progress bar or progress lines")
 
 
@@ -139,8 +144,9 @@ def execute(args: argparse.Namespace, kind: str, specs: list[MatchSpec], params:
     try:
         summary = run_matches(specs, args.out, kind, params, cycles=args.cycles, workers=args.workers,
                               backend=args.backend, address=args.address, match_timeout=args.match_timeout,
-                              retry_errors=args.retry_errors, progress=not args.no_progress)
-    except (ResultsError, RayUnavailable) as exc:
+                              retry_errors=args.retry_errors, progress=not args.no_progress,
+                              record_dir=args.record_dir, record_every=args.record_every)
+    except (ResultsError, RayUnavailable, ValueError) as exc:
         raise RunInputError(str(exc)) from None
     print(summary.line())
     return summary

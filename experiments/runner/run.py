@@ -11,6 +11,7 @@ import os
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
 
 from experiments.results.record import MatchRecord
 from experiments.results.store import ResultStore
@@ -49,9 +50,13 @@ class RunSummary:
 def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, params: dict[str, object], *,
                 cycles: int | None = None, workers: int | None = None, backend: str = "local",
                 address: str | None = None, match_timeout: float | None = DEFAULT_MATCH_TIMEOUT,
-                retry_errors: bool = False, progress: bool = True) -> RunSummary:
+                retry_errors: bool = False, progress: bool = True, record_dir: str | os.PathLike | None = None,
+                record_every: int = 1) -> RunSummary:
     """Play every spec (all with ``cycles``) that ``path`` does not hold, store each as it
     finishes, and return the summary with the records of all ``specs``.
+
+    ``record_dir``: write a rerun replay of every ``record_every``-th spec (in the order given,
+    the first included) played in this run into that directory, named after its teams and seed.
 
     Raises :class:`~experiments.results.store.ResultsError` for an unusable file and
     :class:`~experiments.runner.ray_backend.RayUnavailable` when Ray cannot be used;
@@ -61,6 +66,8 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
     if backend not in BACKENDS:
         raise ValueError(f"unknown backend {backend!r}; choose one of {', '.join(BACKENDS)}")
     specs = list(dict.fromkeys(specs))
+    if record_dir is not None:
+        specs = with_replays(specs, Path(record_dir), record_every)
     config = config_for(cycles)
     digest, version = config_hash(config), code_version()
     start = time.monotonic()
@@ -96,3 +103,26 @@ def _pool(backend: str, workers: int, digest: str, version: str, timeout: float 
     from experiments.runner.local import LocalPool
 
     return LocalPool(workers, digest, version, timeout)
+
+
+def replay_name(spec: MatchSpec) -> str:
+    """The replay file name of a spec: its teams and seed, with path-unsafe characters replaced."""
+    import re
+
+    safe = re.sub(r"[^A-Za-z0-9+._-]+", "_", f"{spec.home}-v-{spec.away}-seed{spec.seed}")
+    return f"{safe}.rrd"
+
+
+def with_replays(specs: list[MatchSpec], directory: Path, every: int) -> list[MatchSpec]:
+    """``specs`` with every ``every``-th one (0, every, 2 every, ...) set to record a replay in
+    ``directory`` (created); ValueError for ``every`` < 1 or a directory that cannot be made."""
+    from dataclasses import replace
+
+    if every < 1:
+        raise ValueError(f"--record-every must be at least 1, got {every}")
+    try:
+        directory.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ValueError(f"--record-dir {directory}: cannot create it ({exc.strerror})") from None
+    return [replace(spec, record=str(directory / replay_name(spec))) if k % every == 0 else spec
+            for k, spec in enumerate(specs)]

@@ -11,7 +11,7 @@ import functools
 import hashlib
 import json
 import subprocess
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 from soccer_sim import MatchConfig
@@ -27,6 +27,9 @@ class MatchSpec:
     seed: int
     cycles: int | None = None
     """``--cycles`` of the command (None: a regulation match); see :func:`config_for`."""
+    record: str | None = field(default=None, compare=False)
+    """A path to write the match's rerun replay to (``--record-dir``), or None; not part of
+    the match's identity."""
 
     @property
     def key(self) -> tuple[str, str, int]:

@@ -75,7 +75,12 @@ def play_spec(spec: MatchSpec, config_hash: str, code_version: str, timeout: flo
     alarm = _arm_timer(timeout)
     try:
         home, away = (_Watched(*make_team(name), side, deciding) for side, name in enumerate((spec.home, spec.away)))
-        result = run_match(home, away, seed=spec.seed, config=spec.config())
+        recorders = []
+        if spec.record is not None:
+            from soccer_sim.replay import RerunRecorder
+
+            recorders.append(RerunRecorder(spec.record))
+        result = run_match(home, away, seed=spec.seed, config=spec.config(), recorders=recorders)
         _disarm_timer(alarm)
         record.home_goals, record.away_goals = (int(g) for g in result.score)
         record.cycles = int(result.cycles)

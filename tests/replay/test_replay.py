@@ -111,3 +111,23 @@ def test_a_stored_match_is_recreated_by_its_row(tmp_path, capsys) -> None:
     assert read_replay(out).cycles[-1] == 300
     assert main(["replay", "--results", str(results), "--row", "9", "--out", str(out)]) == 2
     assert "holds rows 0 to 1" in capsys.readouterr().err
+
+
+def test_the_runner_records_every_kth_match(tmp_path, capsys) -> None:
+    replays = tmp_path / "replays"
+    base = ["tournament", "--teams", "chaser,idle", "--games", "4", "--cycles", "120", "--workers", "2",
+            "--tables", str(tmp_path / "t"), "--no-progress"]
+    assert main([*base, "--out", str(tmp_path / "a.sqlite"), "--record-dir", str(replays),
+                 "--record-every", "3"]) == 0
+    files = sorted(p.name for p in replays.iterdir())
+    assert len(files) == 2  # matches 0 and 3 of the 4 played
+    assert all(name.endswith(".rrd") and "-v-" in name and "seed" in name for name in files)
+    assert read_replay(replays / files[0]).cycles[-1] == 120
+    assert main([*base, "--out", str(tmp_path / "b.sqlite")]) == 0  # recording changes no result
+    capsys.readouterr()
+    from experiments.results.store import ResultStore
+
+    with ResultStore.open(tmp_path / "a.sqlite") as a, ResultStore.open(tmp_path / "b.sqlite") as b:
+        assert [(r.home, r.seed, r.home_goals, r.away_goals) for r in a.records()] == \
+               [(r.home, r.seed, r.home_goals, r.away_goals) for r in b.records()]
+    assert main([*base, "--out", str(tmp_path / "c.sqlite"), "--record-dir", str(tmp_path / "a.sqlite")]) == 2
