@@ -131,3 +131,16 @@ def test_the_runner_records_every_kth_match(tmp_path, capsys) -> None:
         assert [(r.home, r.seed, r.home_goals, r.away_goals) for r in a.records()] == \
                [(r.home, r.seed, r.home_goals, r.away_goals) for r in b.records()]
     assert main([*base, "--out", str(tmp_path / "c.sqlite"), "--record-dir", str(tmp_path / "a.sqlite")]) == 2
+
+
+def test_recording_into_a_callers_stream(tmp_path) -> None:
+    """What a live viewer gets (spawn=True streams the same data): a caller's stream, here saved."""
+    import rerun as rr
+
+    stream = rr.RecordingStream("soccer-sim-test")
+    stream.save(tmp_path / "stream.rrd")
+    run_match("chaser", "idle", seed=1, config=MatchConfig(max_cycles=60), recorders=[RerunRecorder(recording=stream)])
+    stream.flush()
+    stream.disconnect()
+    replay = read_replay(tmp_path / "stream.rrd")
+    assert replay.cycles.tolist() == list(range(61)) and replay.players["home"].shape == (61, 11, 2)
