@@ -72,13 +72,21 @@ def refine_to_lexicographic(
 
 
 @njit(cache=True, nogil=True)
+def _bottleneck_of_points(robots: np.ndarray, targets: np.ndarray):
+    """The Euclidean problem's matrices, its graph and a bottleneck matching:
+    ``(lengths, squared, indptr, indices, pair_lengths, value, col_of_row, row_of_col)``."""
+    lengths, squared = dense_distances(robots, targets)
+    indptr, indices, pair_lengths = dense_to_graph(lengths)
+    value, col_of_row, row_of_col = bottleneck_matching(indptr, indices, pair_lengths, lengths.shape[1])
+    return lengths, squared, indptr, indices, pair_lengths, value, col_of_row, row_of_col
+
+
+@njit(cache=True, nogil=True)
 def mmdr_points(robots: np.ndarray, targets: np.ndarray) -> np.ndarray:
     """:func:`mmdr_assignment` of the Euclidean distances between ``robots`` (n, d) and
     ``targets`` (m, d), ``n <= m``, all finite: the target index of every robot."""
-    lengths, _ = dense_distances(robots, targets)
+    lengths, _, indptr, indices, pair_lengths, value, col_of_row, row_of_col = _bottleneck_of_points(robots, targets)
     n_rows, n_cols = lengths.shape
-    indptr, indices, pair_lengths = dense_to_graph(lengths)
-    value, col_of_row, row_of_col = bottleneck_matching(indptr, indices, pair_lengths, n_cols)
     if n_rows < n_cols:
         indptr, indices, pair_lengths, col_of_row, row_of_col = square_up(
             indptr, indices, pair_lengths, n_cols, value, -np.inf, col_of_row, row_of_col
@@ -91,9 +99,7 @@ def mmdr_points(robots: np.ndarray, targets: np.ndarray) -> np.ndarray:
 def bottleneck_squares(robots: np.ndarray, targets: np.ndarray) -> np.ndarray:
     """The squared distances between ``robots`` and ``targets`` (as :func:`mmdr_points`),
     ``inf`` for pairs longer than the bottleneck value: MMD+MSD²'s second-stage costs."""
-    lengths, squared = dense_distances(robots, targets)
-    indptr, indices, pair_lengths = dense_to_graph(lengths)
-    value, _, _ = bottleneck_matching(indptr, indices, pair_lengths, lengths.shape[1])
+    lengths, squared, _, _, _, value, _, _ = _bottleneck_of_points(robots, targets)
     for i in range(lengths.shape[0]):
         for j in range(lengths.shape[1]):
             if not lengths[i, j] <= value:

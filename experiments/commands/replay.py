@@ -16,6 +16,8 @@ from __future__ import annotations
 import argparse
 import sys
 
+from experiments.runner.options import fail as _fail
+
 
 def register(subparsers: argparse._SubParsersAction) -> None:
     parser = subparsers.add_parser(
@@ -32,11 +34,6 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--out", metavar="OUT.rrd", default="replay.rrd",
                         help="with --results: where to write the replay (default: %(default)s)")
     parser.set_defaults(func=run)
-
-
-def _fail(message: str) -> int:
-    print(f"error: {message}", file=sys.stderr)
-    return 2
 
 
 def run(args: argparse.Namespace) -> int:
