@@ -47,6 +47,7 @@ def mmdr_assignment(lengths: np.ndarray) -> np.ndarray:
     return refine_to_lexicographic(indptr, indices, pair_lengths, value, col_of_row, row_of_col)
 
 
+@njit(cache=True, nogil=True)
 def refine_to_lexicographic(
     indptr: np.ndarray,
     indices: np.ndarray,
@@ -85,14 +86,8 @@ def _bottleneck_of_points(robots: np.ndarray, targets: np.ndarray):
 def mmdr_points(robots: np.ndarray, targets: np.ndarray) -> np.ndarray:
     """:func:`mmdr_assignment` of the Euclidean distances between ``robots`` (n, d) and
     ``targets`` (m, d), ``n <= m``, all finite: the target index of every robot."""
-    lengths, _, indptr, indices, pair_lengths, value, col_of_row, row_of_col = _bottleneck_of_points(robots, targets)
-    n_rows, n_cols = lengths.shape
-    if n_rows < n_cols:
-        indptr, indices, pair_lengths, col_of_row, row_of_col = square_up(
-            indptr, indices, pair_lengths, n_cols, value, -np.inf, col_of_row, row_of_col
-        )
-    lexicographic_refine(indptr, indices, pair_lengths, value, col_of_row, row_of_col)
-    return col_of_row[:n_rows]
+    _, _, indptr, indices, pair_lengths, value, col_of_row, row_of_col = _bottleneck_of_points(robots, targets)
+    return refine_to_lexicographic(indptr, indices, pair_lengths, value, col_of_row, row_of_col)
 
 
 @njit(cache=True, nogil=True)
