@@ -61,7 +61,9 @@ def _open_viewer(path: str) -> int:
     viewer = shutil.which("rerun")
     if viewer is None:
         return _fail("the rerun viewer is not installed: pip install rerun-sdk (it provides the `rerun` program)")
-    if not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY") or sys.platform in ("darwin", "win32")):
+    from soccer_sim.replay.recorder import has_display
+
+    if not has_display():
         return _fail(f"no display to open the viewer on; copy {path} to a machine with one and run "
                      f"`rerun {path}`, or draw it here: soccer-sim replay {path} --png field.png")
     return subprocess.call([viewer, path])

@@ -48,6 +48,14 @@ class ReplayError(RuntimeError):
     """rerun-sdk is missing, or a replay cannot be written or read; the message says what to do."""
 
 
+def has_display() -> bool:
+    """Whether a viewer window can open here (a display on Linux; always on macOS and Windows)."""
+    import sys
+
+    return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")
+                or sys.platform in ("darwin", "win32"))
+
+
 def import_rerun() -> Any:
     """The rerun module, or a ReplayError saying how to install it."""
     try:

@@ -1,0 +1,64 @@
+"""Enter a policy written for the environment in matches and tournaments as a Team.
+
+:class:`PolicyTeam` builds each player's observation from the team's view exactly as the
+environment does (:mod:`soccer_sim.env.spaces`), asks the policy for the players' actions and
+turns them into the team's command. The policy is a callable ``policy(observation) -> action``,
+an object with ``act(observation) -> action`` (used for every player), or a dict from player
+index (0 = goalkeeper) or agent suffix to such a policy, one per player.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Callable
+
+import numpy as np
+
+from soccer_sim.config import MatchConfig
+from soccer_sim.env.spaces import ACTION_SIZE, ActionDecoder, ObservationBuilder, check_action
+from soccer_sim.team import SideInfo, TeamCommand, TeamError
+
+
+def _as_callable(policy: Any, where: str) -> Callable[[np.ndarray], Any]:
+    if hasattr(policy, "act") and callable(policy.act):
+        return policy.act
+    if callable(policy):
+        return policy
+    raise TypeError(f"{where} must be callable or have an act(observation) method, got {type(policy).__name__}")
+
+
+class PolicyTeam:
+    """A team playing ``policy`` for every player (see the module docstring); ``name`` is
+    how results name it."""
+
+    def __init__(self, policy: Any, name: str = "policy") -> None:
+        self.name = name
+        if isinstance(policy, dict):
+            self._policies = {int(k): _as_callable(p, f"policy for player {k}") for k, p in policy.items()}
+            self._shared = None
+        else:
+            self._policies = {}
+            self._shared = _as_callable(policy, "policy")
+
+    def reset(self, side_info: SideInfo, config: MatchConfig, rng: np.random.Generator) -> None:
+        n = side_info.players_per_team
+        missing = [i for i in range(n) if self._shared is None and i not in self._policies]
+        if missing:
+            raise TeamError(self.name, f"no policy for players {missing}")
+        self.n = n
+        self._builder = ObservationBuilder(n, side_info.opponents, side_info.goalie_index, config)
+        self._decoder = ActionDecoder(n, side_info.goalie_index, config)
+        self._actions = np.zeros((n, ACTION_SIZE))
+
+    def act(self, view) -> TeamCommand:
+        observations = self._builder.build(view)
+        for i in range(self.n):
+            policy = self._shared or self._policies[i]
+            try:
+                action = policy(observations[i])
+            except Exception as exc:
+                raise TeamError(self.name, f"policy of player {i} raised {type(exc).__name__}: {exc}") from exc
+            try:
+                self._actions[i] = check_action(f"player {i}", action)
+            except ValueError as exc:
+                raise TeamError(self.name, str(exc)) from None
+        return self._decoder.decode(self._actions)
