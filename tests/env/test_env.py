@@ -1,0 +1,170 @@
+"""The PettingZoo environment: PettingZoo's own tests, determinism, bad input, PolicyTeam."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from pettingzoo.test import api_test, max_cycles_test, parallel_api_test, render_test, seed_test
+
+import soccer_sim.env as soccer_env
+from examples.random_team import RandomTeam
+from examples.scripted_team import ScriptedTeam, scripted_policy
+from experiments.cli import main
+from soccer_sim import MatchConfig, TeamError, run_match
+from soccer_sim.env import PolicyTeam, env, observation_size, parallel_env
+from soccer_sim.replay import ReplayError
+
+pytestmark = pytest.mark.filterwarnings("ignore:Agent's (minimum|maximum) observation space value")
+
+
+def test_pettingzoo_parallel_api() -> None:
+    parallel_api_test(parallel_env(max_cycles=40), num_cycles=40)
+    parallel_api_test(parallel_env(controlled="right", opponent="chaser", max_cycles=20), num_cycles=20)
+
+
+def test_pettingzoo_aec_api_and_seed() -> None:
+    api_test(env(max_cycles=30), num_cycles=30)
+    seed_test(lambda: env(max_cycles=30), num_cycles=30)
+
+
+def test_pettingzoo_max_cycles_and_render() -> None:
+    max_cycles_test(soccer_env)
+    def rgb_only(render_mode=None):  # "human" needs a viewer on a display, tested below
+        environment = env(max_cycles=10, render_mode="rgb_array")
+        environment.metadata = {**environment.metadata, "render_modes": ["rgb_array"]}
+        return environment
+
+    render_test(rgb_only)
+
+
+def _episode(seed: int, steps: int) -> list[dict[str, np.ndarray]]:
+    environment = parallel_env(controlled="left", opponent="mmdr", max_cycles=steps)
+    observations, _ = environment.reset(seed=seed)
+    rng = np.random.default_rng(5)
+    seen = [observations]
+    while environment.agents:
+        actions = {a: rng.uniform(-1, 1, 5).astype(np.float32) for a in environment.agents}
+        observations, *_ = environment.step(actions)
+        seen.append(observations)
+    return seen
+
+
+def test_a_whole_episode_is_determined_by_the_seed_and_actions() -> None:
+    first, second = _episode(3, 250), _episode(3, 250)
+    assert len(first) == len(second) == 251
+    for a, b in zip(first, second):
+        assert a.keys() == b.keys() and all(np.array_equal(a[k], b[k]) for k in a)
+    other = _episode(4, 250)
+    assert not all(np.array_equal(a["left_5"], b["left_5"]) for a, b in zip(first, other))
+
+
+def test_observations_follow_the_documented_layout() -> None:
+    environment = parallel_env(controlled="both")
+    observations, _ = environment.reset(seed=0)
+    n = 11
+    assert environment.observation_space("left_3").shape == (observation_size(n, n),)
+    left, right = observations["left_9"], observations["right_9"]
+    state = environment._match.state
+    half = 52.5
+    # Own position, in each team's own frame (the home team attacks +x, the away team -x).
+    np.testing.assert_allclose(left[0:2], state.pos[9] / half, rtol=1e-6)
+    np.testing.assert_allclose(right[0:2], -state.pos[11 + 9] / half, rtol=1e-6)
+    assert left[5] == 0 and observations["left_0"][5] == 1  # the goalkeeper flag
+    np.testing.assert_allclose(left[12 + 4 * 9:12 + 4 * 9 + 2], left[0:2])  # self among the team-mates
+    tail = 12 + 8 * n
+    assert left[tail + 1] == 1 and left[tail + 9] == 1  # kick-off, and it is ours
+    assert right[tail + 9] == 0
+
+
+def test_spaces_are_the_same_objects_every_call() -> None:
+    environment = parallel_env()
+    assert environment.observation_space("left_1") is environment.observation_space("left_1")
+    assert environment.action_space("right_0") is environment.action_space("right_0")
+    with pytest.raises(ValueError, match="unknown agent 'left_11'"):
+        environment.action_space("left_11")
+
+
+def test_bad_actions_name_the_agents() -> None:
+    environment = parallel_env(controlled="left", opponent="idle", max_cycles=5)
+    environment.reset(seed=1)
+    good = {a: np.zeros(5, np.float32) for a in environment.agents}
+    with pytest.raises(ValueError, match="action of left_4 is not finite"):
+        environment.step({**good, "left_4": np.array([0, np.nan, 0, 0, 0])})
+    with pytest.raises(ValueError, match=r"action of left_2 must have shape \(5,\), got \(4,\)"):
+        environment.step({**good, "left_2": np.zeros(4)})
+    with pytest.raises(ValueError, match="not live: right_0"):
+        environment.step({**good, "right_0": np.zeros(5)})
+    with pytest.raises(ValueError, match="no action for the live agents left_7, left_8"):
+        environment.step({a: v for a, v in good.items() if a not in ("left_7", "left_8")})
+
+
+def test_actions_outside_the_box_are_clipped() -> None:
+    one, two = parallel_env(controlled="left", opponent="idle"), parallel_env(controlled="left", opponent="idle")
+    one.reset(seed=2)
+    two.reset(seed=2)
+    for _ in range(20):
+        big = {a: np.array([5.0, -3.0, 0, 0, 0]) for a in one.agents}
+        unit = {a: np.array([1.0, -1.0, 0, 0, 0]) for a in two.agents}
+        a, *_ = one.step(big)
+        b, *_ = two.step(unit)
+    assert all(np.array_equal(a[k], b[k]) for k in a)
+
+
+def test_a_goal_rewards_the_scorers_and_ends_the_episode_when_asked() -> None:
+    environment = parallel_env(controlled="left", opponent="idle", end_on_goal=True, max_cycles=1500)
+    observations, _ = environment.reset(seed=0)
+    total = 0.0
+    while environment.agents:
+        actions = {a: scripted_policy(observations[a]) for a in environment.agents}
+        observations, rewards, terminations, truncations, infos = environment.step(actions)
+        total += rewards["left_3"]
+    assert terminations["left_3"] and not truncations["left_3"] and total == 1.0
+    assert infos["left_3"]["score"] == (1, 0) and any(e.startswith("GOAL") for e in infos["left_3"]["events"])
+
+
+def test_rgb_array_and_human_render_modes() -> None:
+    environment = parallel_env(render_mode="rgb_array")
+    environment.reset(seed=0)
+    image = environment.render()
+    assert image.dtype == np.uint8 and image.ndim == 3 and image.shape[2] == 3
+    assert (image == [220, 50, 47]).all(axis=2).any() and (image == [38, 139, 210]).all(axis=2).any()
+    human = parallel_env(render_mode="human")
+    import os
+
+    if not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")):
+        with pytest.raises(ReplayError, match="needs a display"):
+            human.reset(seed=0)
+    with pytest.raises(ValueError, match="render_mode must be"):
+        parallel_env(render_mode="window")
+
+
+def test_options_are_checked() -> None:
+    with pytest.raises(ValueError, match="controlled must be"):
+        parallel_env(controlled="middle")
+    with pytest.raises(Exception, match="no-such-team"):
+        parallel_env(controlled="left", opponent="no-such-team")
+    with pytest.raises(ValueError, match="max_cycles"):
+        parallel_env(max_cycles=0)
+
+
+def test_policy_team_plays_matches_and_reports_failing_policies() -> None:
+    result = run_match(ScriptedTeam(), RandomTeam(), seed=0, config=MatchConfig(max_cycles=1500))
+    assert result.score[0] > result.score[1]  # the scripted team beats the random one
+
+    def broken(observation):
+        raise RuntimeError("boom")
+
+    with pytest.raises(TeamError, match="policy of player 0 raised RuntimeError: boom"):
+        run_match(PolicyTeam(broken, name="broken"), "idle", config=MatchConfig(max_cycles=5))
+    with pytest.raises(TeamError, match="action of player 0 must have shape"):
+        run_match(PolicyTeam(lambda o: np.zeros(3)), "idle", config=MatchConfig(max_cycles=5))
+    with pytest.raises(TeamError, match=r"no policy for players \[1, 2"):
+        run_match(PolicyTeam({0: scripted_policy}), "idle", config=MatchConfig(max_cycles=5))
+
+
+def test_the_scripted_team_enters_a_tournament_from_the_command_line(tmp_path, capsys) -> None:
+    assert main(["tournament", "--teams", "static,examples.scripted_team:ScriptedTeam", "--games", "2",
+                 "--cycles", "300", "--workers", "2", "--out", str(tmp_path / "r.sqlite"),
+                 "--tables", str(tmp_path / "t"), "--no-progress"]) == 0
+    printed = capsys.readouterr().out
+    assert "examples." in printed and "2 matches" in printed and "0 failed" in printed
