@@ -33,6 +33,20 @@ DEFAULT_OPPONENT = "static"
 """The built-in team that won the default tournament (README): the default opponent."""
 
 SIDES = ("left", "right")
+ACTION_MODE_GROUP = "soccer_sim.action_modes"
+"""Entry point group of high-level action translators (the built-in one: ``high_level``)."""
+
+
+def load_action_mode(name: str) -> Any:
+    """A new translator of the action mode ``name`` (an entry point of :data:`ACTION_MODE_GROUP`):
+    an object with ``size(n)``, ``reset(side_info, config)`` and ``command_for(view, actions)``."""
+    from importlib import metadata
+
+    found = {ep.name: ep for ep in metadata.entry_points(group=ACTION_MODE_GROUP)}
+    if name not in found:
+        known = ", ".join(["low_level", *sorted(found)])
+        raise ValueError(f"unknown action_mode {name!r}; known: {known}")
+    return found[name].load()()
 CONTROLLED = {"left": (HOME,), "right": (AWAY,), "both": (HOME, AWAY)}
 
 
@@ -59,7 +73,7 @@ class SoccerParallelEnv(ParallelEnv):
 
     def __init__(self, controlled: str = "both", opponent: Any = DEFAULT_OPPONENT, max_cycles: int | None = None,
                  end_on_goal: bool = False, config: MatchConfig | None = None, render_mode: str | None = None,
-                 reward_shaping: float = 0.0) -> None:
+                 reward_shaping: float = 0.0, action_mode: str = "low_level") -> None:
         if controlled not in CONTROLLED:
             raise ValueError(f"controlled must be 'left', 'right' or 'both', got {controlled!r}")
         if render_mode not in (None, *self.metadata["render_modes"]):
@@ -89,7 +103,13 @@ class SoccerParallelEnv(ParallelEnv):
         goalie = self.config.rules.goalie_index
         size = ObservationBuilder(n, n, goalie, self.config).size
         self._observation_space = spaces.Box(-np.inf, np.inf, (size,), dtype=np.float32)
-        self._action_space = spaces.Box(-1.0, 1.0, (ACTION_SIZE,), dtype=np.float32)
+        self.action_mode = action_mode
+        self._high_level = {side: load_action_mode(action_mode) for side in self.sides} \
+            if action_mode != "low_level" else {}
+        if self._high_level:
+            self._action_space = spaces.Discrete(next(iter(self._high_level.values())).size(n))
+        else:
+            self._action_space = spaces.Box(-1.0, 1.0, (ACTION_SIZE,), dtype=np.float32)
         self._builders = {side: ObservationBuilder(n, n, goalie, self.config) for side in self.sides}
         self._decoders = {side: ActionDecoder(n, goalie, self.config) for side in self.sides}
         self._seeds = np.random.SeedSequence()
@@ -107,6 +127,12 @@ class SoccerParallelEnv(ParallelEnv):
         self._check_agent(agent)
         return self._action_space
 
+    def _side_info(self, side: int) -> SideInfo:
+        match = self._match
+        return SideInfo(team=side, name=match.team_names[side], opponent_name=match.team_names[1 - side],
+                        players_per_team=match.sizes[side], goalie_index=match.goalies[side],
+                        opponents=match.sizes[1 - side], opponent_goalie_index=match.goalies[1 - side])
+
     def _check_agent(self, agent: str) -> None:
         if agent not in self._index:
             raise ValueError(f"unknown agent {agent!r}; the agents are {', '.join(self.possible_agents)}")
@@ -122,6 +148,8 @@ class SoccerParallelEnv(ParallelEnv):
         self._match = Match(teams[HOME], teams[AWAY], seed=match_seed, config=self.config, recorders=recorders)
         self._match.start()
         self._externals = {side: self._match.teams[side] for side in self.sides}
+        for side, translator in self._high_level.items():
+            translator.reset(self._side_info(side), self.config)
         self._steps = 0
         self._events_seen = len(self._match.events)
         self.agents = list(self.possible_agents)
@@ -135,11 +163,16 @@ class SoccerParallelEnv(ParallelEnv):
             raise RuntimeError("call reset() before step(), and again after the episode ended")
         self._check_actions(actions)
         for side in self.sides:
-            rows = np.zeros((self.n, ACTION_SIZE))
-            for i in range(self.n):
-                agent = f"{SIDES[side]}_{i}"
-                rows[i] = check_action(agent, actions[agent])
-            command = self._decoders[side].decode(rows)
+            if self._high_level:
+                choices = np.array([self._check_choice(f"{SIDES[side]}_{i}", actions[f"{SIDES[side]}_{i}"])
+                                    for i in range(self.n)], dtype=np.int64)
+                command = self._high_level[side].command_for(match.frames[side].view, choices)
+            else:
+                rows = np.zeros((self.n, ACTION_SIZE))
+                for i in range(self.n):
+                    agent = f"{SIDES[side]}_{i}"
+                    rows[i] = check_action(agent, actions[agent])
+                command = self._decoders[side].decode(rows)
             external = self._externals[side].command
             external.dash[:] = command.dash
             external.kick[:] = command.kick
@@ -169,6 +202,17 @@ class SoccerParallelEnv(ParallelEnv):
             if self.render_mode == "human":
                 match.finish()
         return observations, rewards, terminations, truncations, infos
+
+    def _check_choice(self, agent: str, action: Any) -> int:
+        """A high-level action as an int in the Discrete space; ValueError naming the agent."""
+        value = np.asarray(action)
+        if value.shape not in ((), (1,)) or value.dtype.kind not in "iu":
+            raise ValueError(f"action of {agent} must be one integer (action_mode={self.action_mode!r}), "
+                             f"got {action!r}")
+        choice = int(value.reshape(-1)[0])
+        if not 0 <= choice < self._action_space.n:
+            raise ValueError(f"action of {agent} must be in 0..{self._action_space.n - 1}, got {choice}")
+        return choice
 
     def _check_actions(self, actions: dict[str, Any]) -> None:
         if not isinstance(actions, dict):

@@ -168,3 +168,44 @@ def test_the_scripted_team_enters_a_tournament_from_the_command_line(tmp_path, c
                  "--tables", str(tmp_path / "t"), "--no-progress"]) == 0
     printed = capsys.readouterr().out
     assert "examples." in printed and "2 matches" in printed and "0 failed" in printed
+
+
+def test_high_level_actions_pass_the_api_tests_and_score() -> None:
+    parallel_api_test(parallel_env(max_cycles=30, action_mode="high_level"), num_cycles=30)
+    environment = parallel_env(controlled="left", opponent="idle", action_mode="high_level", max_cycles=1500,
+                               end_on_goal=True)
+    assert environment.action_space("left_0").n == 13 + 11
+    observations, _ = environment.reset(seed=0)
+    while environment.agents:  # intercept, and shoot when the ball is at one's feet
+        actions = {a: 10 if np.hypot(*observations[a][10:12]) * 52.5 < 1.0 else 9 for a in environment.agents}
+        observations, rewards, terminations, *_ = environment.step(actions)
+    assert rewards["left_4"] == 1.0 and terminations["left_4"]
+
+
+def test_high_level_pass_sends_the_ball_to_the_team_mate() -> None:
+    environment = parallel_env(controlled="left", opponent="idle", action_mode="high_level")
+    observations, _ = environment.reset(seed=0)
+    state = environment._match.state
+    nearest = min(environment.agents, key=lambda a: np.hypot(*observations[a][10:12]))
+    for _ in range(60):  # the kick-off taker runs to the ball
+        if np.hypot(*observations[nearest][10:12]) * 52.5 < 0.7:
+            break
+        observations, *_ = environment.step({a: 9 if a == nearest else 12 for a in environment.agents})
+    receiver = 3
+    before = np.hypot(*(state.ball - state.pos[receiver]))
+    observations, *_ = environment.step({a: 13 + receiver if a == nearest else 12 for a in environment.agents})
+    for _ in range(5):
+        observations, *_ = environment.step({a: 12 for a in environment.agents})
+    assert np.hypot(*(state.ball - state.pos[receiver])) < before - 3.0
+
+
+def test_high_level_actions_are_checked() -> None:
+    environment = parallel_env(controlled="left", opponent="idle", action_mode="high_level")
+    environment.reset(seed=0)
+    good = {a: 12 for a in environment.agents}
+    with pytest.raises(ValueError, match=r"action of left_1 must be in 0..23, got 24"):
+        environment.step({**good, "left_1": 24})
+    with pytest.raises(ValueError, match="action of left_2 must be one integer"):
+        environment.step({**good, "left_2": np.zeros(5)})
+    with pytest.raises(ValueError, match="unknown action_mode 'fancy'; known: low_level, high_level"):
+        parallel_env(action_mode="fancy")
