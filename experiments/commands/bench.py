@@ -14,6 +14,7 @@ from experiments.commands import add_module_commands
 #: Benchmark name -> (module, one-line help).
 BENCHMARKS: dict[str, tuple[str, str]] = {
     "assignment": ("experiments.benchmarks.assignment", "runtime and quality of the role-assignment methods"),
+    "env": ("experiments.benchmarks.env", "steps per second of the PettingZoo environment against a plain match"),
     "formation": ("experiments.benchmarks.formation", "speed of formation queries"),
     "lazy-assignment": ("experiments.benchmarks.grid_assignment",
                         "lazy path-cost goal assignment vs all pairs on random grids (Table 1's shape)"),

@@ -209,3 +209,9 @@ def test_high_level_actions_are_checked() -> None:
         environment.step({**good, "left_2": np.zeros(5)})
     with pytest.raises(ValueError, match="unknown action_mode 'fancy'; known: low_level, high_level"):
         parallel_env(action_mode="fancy")
+
+
+def test_bench_env_reports_the_ratio(capsys) -> None:
+    assert main(["bench", "env", "--cycles", "50", "--repeats", "1"]) == 0
+    printed = capsys.readouterr().out
+    assert "env steps / s" in " ".join(printed.split()) or "steps" in printed
