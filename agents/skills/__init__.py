@@ -66,12 +66,12 @@ Timings of every call for a team of 11: ``python -m agents.skills.timing``
 from agents.skills.clearing import ClearParams, ClearPlan, best_clearance
 from agents.skills.decision import BallDecision, DecisionParams, OnBallAction, decide_on_ball
 from agents.skills.dribbling import DribbleParams, DribblePlan, dribble, dribble_directions
-from agents.skills.goalkeeping import Distribution, GoalieParams, distribute, guard_position, should_catch
+from agents.skills.goalkeeping import Distribution, GoalieParams, distribute, guard_position, guard_xy, should_catch
 from agents.skills.interception import UNREACHABLE, BallRace, Interception, ball_race, intercept, intercept_many
 from agents.skills.kicking import kick_effectiveness, kick_for_velocity, kickable
 from agents.skills.lanes import lane_open, opponent_cycles, teammate_cycles
 from agents.skills.model import MotionModel, SkillInputError, view_effort
-from agents.skills.movement import dash_to_points, speed_caps
+from agents.skills.movement import dash_to_points, paced_dashes, speed_caps
 from agents.skills.passing import PassParams, PassPlan, best_pass, offside_positions, pass_candidates
 from agents.skills.shooting import ShotParams, ShotPlan, aim_points, best_shot
 
@@ -80,7 +80,7 @@ __all__ = [
     "DribbleParams", "DribblePlan", "GoalieParams", "Interception", "MotionModel", "OnBallAction", "PassParams",
     "PassPlan", "ShotParams", "ShotPlan", "SkillInputError", "aim_points", "ball_race", "best_clearance",
     "best_pass", "best_shot", "dash_to_points", "decide_on_ball", "distribute", "dribble", "dribble_directions",
-    "guard_position", "intercept", "intercept_many", "kick_effectiveness", "kick_for_velocity", "kickable",
-    "lane_open", "offside_positions", "opponent_cycles", "pass_candidates", "should_catch", "speed_caps",
+    "guard_position", "guard_xy", "intercept", "intercept_many", "kick_effectiveness", "kick_for_velocity", "kickable",
+    "lane_open", "offside_positions", "opponent_cycles", "pass_candidates", "paced_dashes", "should_catch", "speed_caps",
     "teammate_cycles", "view_effort",
 ]

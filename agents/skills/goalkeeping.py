@@ -59,11 +59,17 @@ class GoalieParams:
 def guard_position(model: MotionModel, ball: np.ndarray, params: GoalieParams = GoalieParams()) -> np.ndarray:
     """(2,) the goalkeeper's guard point for a ball at ``ball`` (team frame)."""
     bx, by = float_array("ball", ball, (2,)).tolist()
+    return np.array(guard_xy(model, bx, by, params))
+
+
+def guard_xy(model: MotionModel, bx: float, by: float, params: GoalieParams = GoalieParams()) -> tuple[float, float]:
+    """:func:`guard_position` for a ball at (``bx``, ``by``), two finite floats, as a tuple
+    (the per-cycle form: no array made)."""
     gx = -model.half_length
     dx, dy = bx - gx, by
     dist = math.hypot(dx, dy)
     if dist < 1e-9:
-        return np.array([gx, 0.0])
+        return gx, 0.0
     ux, uy = dx / dist, dy / dist
     if ux < 0.0:  # a ball behind our goal line (out of play): stay on the line, on its side
         ux, uy = 0.0, (1.0 if uy >= 0.0 else -1.0)
@@ -74,7 +80,7 @@ def guard_position(model: MotionModel, ball: np.ndarray, params: GoalieParams = 
     if abs(uy) > 1e-9:
         depth = min(depth, model.goal_area_half_width / abs(uy))
     depth = max(0.0, min(depth, dist - params.ball_gap))
-    return np.array([gx + ux * depth, uy * depth])
+    return gx + ux * depth, uy * depth
 
 
 def should_catch(model: MotionModel, view: object, goalie: int | None = None, teammate_kicked_last: bool = False,

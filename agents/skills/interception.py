@@ -225,6 +225,14 @@ def _race_inputs(model: MotionModel, view: object) -> tuple[np.ndarray, np.ndarr
     return inputs
 
 
+def checked_own_players(model: MotionModel, view: object) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The view's own positions (n, 2), velocities (n, 2) and effort (n,) (ones when the view
+    has none), checked as C-contiguous float64 arrays; free after the first call of a match
+    (the same cache as :func:`ball_race`'s)."""
+    own = _race_inputs(model, view)[2]
+    return own[0], own[1], own[2]
+
+
 def _only_eligible(result: Interception, eligible: np.ndarray) -> Interception:
     """``result`` with the players not ``eligible`` made UNREACHABLE (and ``first`` redone)."""
     mask = np.asarray(eligible)

@@ -24,6 +24,7 @@ import math
 import numpy as np
 from numba import njit
 
+from agents.skills.interception import checked_own_players
 from agents.skills.model import MotionModel, SkillInputError, float_array, view_effort
 
 
@@ -74,6 +75,40 @@ def speed_caps(model: MotionModel, view: object, urgent: np.ndarray | bool = Fal
     # Both speeds are proportional to the effort (see MotionModel.sustainable_speed).
     pace = np.where(hurry & fresh, model.top_speed, model.jog_speed)
     return pace * view_effort(view, model.players_per_team)
+
+
+def paced_dashes(model: MotionModel, view: object, targets: np.ndarray, urgent: np.ndarray,
+                 out: np.ndarray, stamina_reserve: float = 0.05, tolerance: float = 0.05) -> np.ndarray:
+    """:func:`speed_caps` (``urgent`` a (n,) bool array) and :func:`dash_to_points` for the
+    view's own players in one compiled pass, with the same result: the per-cycle form for a
+    team (the view's arrays are checked once per match, as by the ball race). ``targets``
+    and ``out`` are (n, 2) float64 arrays; returns ``out``."""
+    pos, vel, effort = checked_own_players(model, view)
+    n = pos.shape[0]
+    stamina = float_array("stamina", view.stamina, (n,))
+    targets = float_array("targets", targets, (n, 2))
+    if not (isinstance(urgent, np.ndarray) and urgent.dtype == np.bool_ and urgent.shape == (n,)):
+        raise SkillInputError(f"urgent must be a ({n},) bool array")
+    if not (isinstance(out, np.ndarray) and out.shape == (n, 2) and out.dtype == np.float64):
+        raise SkillInputError(f"out must be a float64 ({n}, 2) array")
+    _paced_dash_kernel(pos, vel, targets, effort, stamina, urgent, model.top_speed, model.jog_speed,
+                       model.stamina_low + stamina_reserve * model.stamina_max, model.accel_max, model.speed_max,
+                       tolerance, out)
+    return out
+
+
+@njit(cache=True, nogil=True)
+def _paced_dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, effort: np.ndarray,
+                       stamina: np.ndarray, urgent: np.ndarray, top_speed: float, jog_speed: float, fresh: float,
+                       accel_max: float, speed_max: float, tolerance: float,
+                       out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """:func:`speed_caps`'s caps (top speed for the urgent and fresh, else the jogging speed,
+    times effort) fed to :func:`_dash_kernel`, player by player."""
+    caps = np.empty(pos.shape[0])
+    for i in range(pos.shape[0]):
+        pace = top_speed if urgent[i] and stamina[i] > fresh else jog_speed
+        caps[i] = pace * effort[i]
+    _dash_kernel(pos, vel, targets, effort, caps, accel_max, speed_max, tolerance, out)
 
 
 _ONES: dict[int, np.ndarray] = {}

@@ -102,7 +102,8 @@ class PassPlan:
     receive_cycle: int
     """Cycle at which the receiver controls the ball."""
     opponent_cycle: int
-    """Earliest cycle an opponent controls it (UNREACHABLE: none before it leaves the field)."""
+    """Earliest cycle an opponent controls it (UNREACHABLE: none before it leaves the field,
+    or none early enough to change the decision: see :func:`_deciding_cycles`)."""
     score: float
 
 
@@ -157,9 +158,11 @@ def best_pass(model: MotionModel, view: object, passer: int, params: PassParams 
         return None
     vel_u, own_u, lim_u = velocities[usable], owners[usable], limit[usable]
     ours, our_points = teammate_cycles(model, view, ball, vel_u, lim_u, own_u)
-    theirs, _ = opponent_cycles(model, view, ball, vel_u, lim_u, params.opponent_margin)
     rows = np.arange(usable.size)
     receive, received_at = ours[rows, own_u], our_points[rows, own_u]
+    theirs, _ = opponent_cycles(model, view, ball, vel_u,
+                                _deciding_cycles(receive, arrival[usable], lim_u, params.min_lead),
+                                params.opponent_margin)
     effort = view_effort(view, model.players_per_team)
     score = np.empty(usable.size)
     points = np.empty((usable.size, 2))
@@ -174,6 +177,28 @@ def best_pass(model: MotionModel, view: object, passer: int, params: PassParams 
     return PassPlan(receiver=int(owners[j]), target=targets[j].copy(), receive_point=points[best].copy(),
                     kick=kicks[j].copy(), ball_vel=velocities[j].copy(), arrival_cycle=int(arrival[j]),
                     receive_cycle=int(receive[best]), opponent_cycle=int(theirs[best]), score=float(score[best]))
+
+
+LEAD_CAP = 10
+"""Cycles of lead over the opponents beyond which a pass scores no better (the score's lead
+term is ``min(lead, LEAD_CAP) / LEAD_CAP``)."""
+
+
+@njit(cache=True, nogil=True)
+def _deciding_cycles(receive: np.ndarray, arrival: np.ndarray, limit: np.ndarray,
+                     min_lead: int) -> np.ndarray:  # pragma: no cover - compiled
+    """Per lane, the last cycle at which an opponent's interception can still change the
+    pass's safety or score: ``receive + max(LEAD_CAP, min_lead)`` or ``arrival + min_lead``,
+    whichever is later, within ``limit``; 0 for a lane the receiver never reaches (it is not
+    scored). Opponents later than that count as UNREACHABLE, which decides the same, so the
+    search stops there (the opponents' search is most of a pass decision's cost)."""
+    out = np.empty(receive.shape[0], dtype=np.int64)
+    for i in range(receive.shape[0]):
+        if receive[i] >= UNREACHABLE:
+            out[i] = 0
+        else:
+            out[i] = min(limit[i], max(receive[i] + max(LEAD_CAP, min_lead), arrival[i] + min_lead))
+    return out
 
 
 @njit(cache=True, nogil=True)
@@ -232,7 +257,7 @@ def _pass_scores(targets: np.ndarray, received_at: np.ndarray, receive: np.ndarr
         space = 10.0
         for o in range(opp_pos.shape[0]):
             space = min(space, math.sqrt((px - opp_pos[o, 0]) ** 2 + (py - opp_pos[o, 1]) ** 2))
-        lead = min(theirs[i] - receive[i], 10) / 10.0
+        lead = min(theirs[i] - receive[i], LEAD_CAP) / LEAD_CAP
         closeness = 1.0 - math.sqrt((px - half_length) ** 2 + py * py) / (2.0 * half_length)
         forward = min(max((px - ball[0]) / 20.0, -1.0), 1.5)
         value = weights[0] * forward + weights[1] * closeness + weights[2] * space / 10.0 + weights[3] * lead

@@ -129,6 +129,7 @@ class FormationTeam:
         self.goalie = goalie
         """Our goalkeeper's index, -1 when we have none."""
         self.outfield = np.array([i for i in range(n) if i != self.goalie], dtype=np.int64)
+        self._has_outfield = len(self.outfield) > 0
         self._out = _as_slice(self.outfield)
         """The outfield rows, as a slice when they are contiguous (cheaper than fancy indexing)."""
         self._match_roles = self._outfield_roles
@@ -213,7 +214,7 @@ class FormationTeam:
         if mode == _PLAY_ON and shift:
             xs = targets[self._out_roles, 0]
             xs += shift
-            np.clip(xs, -self._half_length + 2.0, self._half_length - 2.0, out=xs)
+            np.minimum(np.maximum(xs, -self._half_length + 2.0, out=xs), self._half_length - 2.0, out=xs)
             targets[self._out_roles, 0] = xs
         if situation == Situation.ATTACK and ball_ref[0] > self._half_length / 3.0 and self.style.box_narrowing:
             targets[self._forward_roles, 1] *= 1.0 - self.style.box_narrowing
@@ -227,12 +228,11 @@ class FormationTeam:
             self._goalie_holds(view)
         else:
             self._set_play(view, urgent)
-        caps = skills.speed_caps(model, view, urgent)
-        skills.dash_to_points(model, view.own_pos, view.own_vel, self.goals, view.effort, caps, out=command.dash)
+        skills.paced_dashes(model, view, self.goals, urgent, command.dash)
         if self._dribble_dash is not None:  # the dribbler runs with the ball, not to a point
             command.dash[self._kicker_row] = self._dribble_dash
             self._dribble_dash = None
-        if command.kick.any():
+        if _any_nonzero(command.kick):
             # Team-mates in an offside position when we play the ball must keep off it.
             self._our_pass_in_flight = True
             self._eligible = ~skills.offside_positions(model, view.own_pos, view.opp_pos, view.ball)
@@ -261,7 +261,7 @@ class FormationTeam:
         outfield = self._out
         role_targets = targets[self._out_roles]
         players = view.own_pos[outfield]
-        if not len(self.outfield):
+        if not self._has_outfield:
             self.goals[self.goalie] = skills.guard_position(self.model, view.ball)
             return
         if self.style.stationary:
@@ -290,7 +290,8 @@ class FormationTeam:
         self.role_of_player = role_of_player
         self.goals[outfield] = goals
         if self.goalie >= 0:
-            self.goals[self.goalie] = skills.guard_position(self.model, view.ball)
+            ball = view.ball
+            self.goals[self.goalie] = skills.guard_xy(self.model, float(ball[0]), float(ball[1]))
 
     # ------------------------------------------------------------------ play on
     def _play_on(self, view: TeamView, race: skills.BallRace, urgent: np.ndarray) -> None:
@@ -480,6 +481,15 @@ def _role_figures(players: np.ndarray, targets: np.ndarray, role_of_player: np.n
         if d > unfilled:
             far += 1
     return switches, total / max(k, 1), largest, far
+
+
+@njit(cache=True, nogil=True)
+def _any_nonzero(values: np.ndarray) -> bool:  # pragma: no cover - compiled
+    """Whether any entry of ``values`` is non-zero (``values.any()`` without its overhead)."""
+    for x in values.ravel():
+        if x != 0.0:
+            return True
+    return False
 
 
 def _as_slice(indices: np.ndarray) -> slice | np.ndarray:
