@@ -29,7 +29,9 @@ class Table:
 
         table = RichTable(title=escape(self.title))
         for i, name in enumerate(self.header):
-            table.add_column(escape(name), justify="left" if i < self.labels else "right")
+            # A label (a team's module:Attribute path) wraps rather than losing its end to "…".
+            table.add_column(escape(name), justify="left" if i < self.labels else "right",
+                             overflow="fold" if i < self.labels else "ellipsis")
         for row in self.rows:
             table.add_row(*(escape(cell) for cell in row))
         (console or Console()).print(table)

@@ -114,7 +114,11 @@ def team_list(text: str, option: str, minimum: int = 1) -> list[str]:
             try:
                 resolve_team(name)
             except TeamNotFoundError as exc:
-                raise RunInputError(f"{option}: {exc}") from None
+                hint = ""
+                if "cannot import module" in str(exc):
+                    hint = ("; the module must be importable: installed, on PYTHONPATH, or under the directory "
+                            "soccer-sim runs in (examples.* paths: run from the checkout)")
+                raise RunInputError(f"{option}: {exc}{hint}") from None
         elif name not in known:
             raise RunInputError(f"{option}: unknown team {name!r}; registered teams: {', '.join(known)}; "
                                 "or give a path 'package.module:Attribute'")

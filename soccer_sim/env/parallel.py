@@ -23,7 +23,7 @@ from gymnasium import spaces
 from pettingzoo import ParallelEnv
 
 from soccer_sim.config import MatchConfig
-from soccer_sim.env.spaces import ACTION_SIZE, ActionDecoder, ObservationBuilder, check_action
+from soccer_sim.env.spaces import ACTION_SIZE, ActionDecoder, ObservationBuilder, check_actions
 from soccer_sim.match import Match
 from soccer_sim.registry import resolve_team
 from soccer_sim.state import AWAY, HOME, PlayMode
@@ -112,6 +112,7 @@ class SoccerParallelEnv(ParallelEnv):
             self._action_space = spaces.Box(-1.0, 1.0, (ACTION_SIZE,), dtype=np.float32)
         self._builders = {side: ObservationBuilder(n, n, goalie, self.config) for side in self.sides}
         self._decoders = {side: ActionDecoder(n, goalie, self.config) for side in self.sides}
+        self._side_agents = {side: [f"{SIDES[side]}_{i}" for i in range(n)] for side in self.sides}
         self._seeds = np.random.SeedSequence()
         self._match: Match | None = None
         self.agents: list[str] = []
@@ -154,7 +155,8 @@ class SoccerParallelEnv(ParallelEnv):
         self._events_seen = len(self._match.events)
         self.agents = list(self.possible_agents)
         observations = self._observe()
-        infos = {agent: self._info([]) for agent in self.agents}
+        info = self._info([])
+        infos = {agent: {**info, "events": []} for agent in self.agents}
         return observations, infos
 
     def step(self, actions: dict[str, Any]) -> tuple[dict, dict, dict, dict, dict]:
@@ -168,11 +170,8 @@ class SoccerParallelEnv(ParallelEnv):
                                     for i in range(self.n)], dtype=np.int64)
                 command = self._high_level[side].command_for(match.frames[side].view, choices)
             else:
-                rows = np.zeros((self.n, ACTION_SIZE))
-                for i in range(self.n):
-                    agent = f"{SIDES[side]}_{i}"
-                    rows[i] = check_action(agent, actions[agent])
-                command = self._decoders[side].decode(rows)
+                names = self._side_agents[side]
+                command = self._decoders[side].decode(check_actions(names, [actions[a] for a in names]))
             external = self._externals[side].command
             external.dash[:] = command.dash
             external.kick[:] = command.kick
@@ -196,7 +195,8 @@ class SoccerParallelEnv(ParallelEnv):
         rewards = {agent: team_reward[self._index[agent][0]] for agent in self.agents}
         terminations = {agent: terminated for agent in self.agents}
         truncations = {agent: truncated for agent in self.agents}
-        infos = {agent: self._info(events) for agent in self.agents}
+        info = self._info(events)
+        infos = {agent: {**info, "events": list(events)} for agent in self.agents}
         if terminated or truncated:
             self.agents = []
             if self.render_mode == "human":

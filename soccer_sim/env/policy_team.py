@@ -14,7 +14,7 @@ from typing import Any, Callable
 import numpy as np
 
 from soccer_sim.config import MatchConfig
-from soccer_sim.env.spaces import ACTION_SIZE, ActionDecoder, ObservationBuilder, check_action
+from soccer_sim.env.spaces import ACTION_SIZE, ActionDecoder, ObservationBuilder, check_actions
 from soccer_sim.team import SideInfo, TeamCommand, TeamError
 
 
@@ -48,17 +48,19 @@ class PolicyTeam:
         self._builder = ObservationBuilder(n, side_info.opponents, side_info.goalie_index, config)
         self._decoder = ActionDecoder(n, side_info.goalie_index, config)
         self._actions = np.zeros((n, ACTION_SIZE))
+        self._names = [f"player {i}" for i in range(n)]
 
     def act(self, view) -> TeamCommand:
         observations = self._builder.build(view)
+        actions = []
         for i in range(self.n):
             policy = self._shared or self._policies[i]
             try:
-                action = policy(observations[i])
+                actions.append(policy(observations[i]))
             except Exception as exc:
                 raise TeamError(self.name, f"policy of player {i} raised {type(exc).__name__}: {exc}") from exc
-            try:
-                self._actions[i] = check_action(f"player {i}", action)
-            except ValueError as exc:
-                raise TeamError(self.name, str(exc)) from None
+        try:
+            self._actions[:] = check_actions(self._names, actions)
+        except ValueError as exc:
+            raise TeamError(self.name, str(exc)) from None
         return self._decoder.decode(self._actions)

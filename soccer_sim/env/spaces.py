@@ -136,6 +136,19 @@ class ActionDecoder:
         return command
 
 
+def check_actions(agents: list[str], actions: list[object]) -> np.ndarray:
+    """The actions of ``agents`` as one float64 (len(agents), 5) array clipped to [-1, 1]: one
+    array operation when every action is well formed, else :func:`check_action` agent by agent,
+    so the ValueError names the first agent at fault."""
+    try:
+        rows = np.array(actions, dtype=np.float64)
+    except (TypeError, ValueError):
+        rows = None
+    if rows is None or rows.shape != (len(agents), ACTION_SIZE) or not np.isfinite(rows).all():
+        return np.array([check_action(agent, action) for agent, action in zip(agents, actions)])
+    return np.clip(rows, -1.0, 1.0, out=rows)
+
+
 def check_action(agent: str, action: object) -> np.ndarray:
     """One agent's action as a float64 (5,) array clipped to [-1, 1]; ValueError naming the
     agent for the wrong shape, a non-numeric value or a NaN."""

@@ -216,3 +216,46 @@ def test_bench_env_reports_the_ratio(capsys) -> None:
     printed = capsys.readouterr().out
     words = " ".join(printed.split())
     assert "PettingZoo environment, 22 agents" in words and "env step / plain" in words
+
+
+def test_malformed_actions_of_every_kind_name_the_agent() -> None:
+    environment = parallel_env(controlled="left", opponent="idle", max_cycles=5)
+    environment.reset(seed=1)
+    good = {a: np.zeros(5, np.float32) for a in environment.agents}
+    with pytest.raises(ValueError, match="action of left_6 must be 5 numbers"):
+        environment.step({**good, "left_6": "dash"})
+    with pytest.raises(ValueError, match=r"action of left_9 must have shape \(5,\), got \(1, 5\)"):
+        environment.step({**good, "left_9": np.zeros((1, 5))})
+    with pytest.raises(ValueError, match="action of left_1 is not finite"):
+        environment.step({**good, "left_1": [0, 0, np.inf, 0, 0]})
+    _, rewards, *_ , infos = environment.step({**good, "left_3": [0.5, 0.0, 0.0, 0.0, 0.0]})  # a list is fine
+    infos["left_0"]["events"].append("mine")
+    assert "mine" not in infos["left_1"]["events"]  # every agent has its own info
+
+
+@pytest.mark.slow
+def test_an_environment_step_costs_at_most_twice_a_plain_cycle() -> None:
+    """What `soccer-sim bench env` measures, in processor time (the machine may be shared)."""
+    import statistics
+    import time
+
+    from experiments.benchmarks.env import _ReplayedPolicy
+
+    table = np.random.default_rng(0).uniform(-1, 1, size=(997, 5)).astype(np.float32)
+    cycles = 1000
+    config = MatchConfig(max_cycles=cycles)
+    ratios = []
+    for repeat in range(6):  # the first is a warm-up
+        environment = parallel_env(controlled="both", max_cycles=cycles, config=config)
+        policy = _ReplayedPolicy(table)
+        observations, _ = environment.reset(seed=repeat)
+        start = time.process_time()
+        while environment.agents:
+            observations, *_ = environment.step({a: policy.act(observations[a]) for a in environment.agents})
+        step = time.process_time() - start
+        start = time.process_time()
+        run_match(PolicyTeam(_ReplayedPolicy(table)), PolicyTeam(_ReplayedPolicy(table)), seed=repeat, config=config)
+        plain = time.process_time() - start
+        if repeat:
+            ratios.append(step / plain)
+    assert statistics.median(ratios) <= 2.0, ratios

@@ -6,6 +6,7 @@ import runpy
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 import soccer_sim
 
@@ -33,3 +34,27 @@ def test_formation_team_keeps_its_shape_against_chaser() -> None:
     # Unlike the chaser, a formation team stays spread over the field.
     spread = np.ptp(own, axis=0)
     assert spread[0] > 20.0 and spread[1] > 20.0
+
+
+def test_scripted_vs_random_prints_a_win(monkeypatch, capsys) -> None:
+    monkeypatch.setattr("sys.argv", ["scripted_vs_random.py"])
+    runpy.run_path(str(EXAMPLES / "scripted_vs_random.py"), run_name="__main__")
+    printed = capsys.readouterr().out
+    score = printed.split("score (", 1)[1].split(")", 1)[0]
+    home, away = (int(g) for g in score.split(","))
+    assert home > away
+
+
+@pytest.mark.slow
+def test_scripted_in_tournament_plays_the_built_in_teams(tmp_path, monkeypatch, capsys) -> None:
+    monkeypatch.chdir(tmp_path)  # the script writes its results next to where it runs
+    with pytest.raises(SystemExit) as finished:
+        runpy.run_path(str(EXAMPLES / "scripted_in_tournament.py"), run_name="__main__")
+    assert finished.value.code == 0
+    printed = capsys.readouterr().out
+    assert "6 matches in scripted-tournament.sqlite" in printed and "0 failed" in printed
+    import csv
+
+    with open(tmp_path / "scripted-tournament-tables" / "league.csv") as handle:
+        league = {row["team"]: int(row["games"]) for row in csv.DictReader(handle)}
+    assert league == {"static": 4, "greedy": 4, "examples.scripted_team:ScriptedTeam": 4}
