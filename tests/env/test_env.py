@@ -259,3 +259,34 @@ def test_an_environment_step_costs_at_most_twice_a_plain_cycle() -> None:
         if repeat:
             ratios.append(step / plain)
     assert statistics.median(ratios) <= 2.0, ratios
+
+
+def test_state_is_the_global_state_in_the_absolute_frame() -> None:
+    environment = parallel_env(controlled="right", opponent="idle", max_cycles=3)
+    environment.reset(seed=0)
+    state = environment.state()
+    assert state.dtype == np.float32 and environment.state_space().contains(state)
+    match = environment._match.state
+    np.testing.assert_allclose(state[:4 * 22].reshape(22, 4)[:, :2], match.pos, rtol=1e-6)
+    np.testing.assert_allclose(state[88:90], match.ball, rtol=1e-6)
+
+
+@pytest.mark.slow
+def test_a_whole_match_is_determined_by_the_seed_and_actions() -> None:
+    """The full-episode determinism test at full length: a regulation match, to its end."""
+    def episode() -> list[dict[str, np.ndarray]]:
+        environment = parallel_env(controlled="left", opponent="mmdr")
+        observations, _ = environment.reset(seed=11)
+        rng = np.random.default_rng(2)
+        seen = [observations]
+        while environment.agents:
+            actions = {a: rng.uniform(-1, 1, 5).astype(np.float32) for a in environment.agents}
+            observations, _, terminations, *_ = environment.step(actions)
+            seen.append(observations)
+        assert terminations["left_0"]
+        return seen
+
+    first, second = episode(), episode()
+    assert len(first) == len(second) == 6001
+    for a, b in zip(first, second):
+        assert all(np.array_equal(a[k], b[k]) for k in a)
