@@ -73,8 +73,16 @@ def _draw(path: str, png: str, cycle: int | None) -> int:
     from soccer_sim.replay import read_replay
     from soccer_sim.replay.picture import draw_replay
 
+    from pathlib import Path
+
+    target = Path(png)
+    if not target.parent.is_dir():
+        return _fail(f"--png {png}: directory {target.parent} does not exist")
     replay = read_replay(path)
-    written, shown = draw_replay(replay, png, cycle)
+    try:
+        written, shown = draw_replay(replay, png, cycle)
+    except (OSError, ValueError) as exc:  # unwritable file, or a format matplotlib does not know
+        return _fail(f"--png {png}: cannot write the picture ({getattr(exc, 'strerror', None) or exc})")
     print(f"wrote {written} (cycle {shown})")
     return 0
 
@@ -101,6 +109,9 @@ def _recreate(args: argparse.Namespace) -> int:
     if config_hash(config) != record.config_hash:
         return _fail(f"row {args.row} was played with configuration {record.config_hash}, which this version "
                      f"cannot rebuild (it builds {config_hash(config)})")
+    problem = _unwritable_replay(args.out)
+    if problem:
+        return _fail(f"--out {args.out}: {problem}")
     home, away = make_team(record.home)[0], make_team(record.away)[0]
     result = run_match(home, away, seed=record.seed, config=config, recorders=[RerunRecorder(args.out)])
     stored = (record.home_goals, record.away_goals)
@@ -113,3 +124,19 @@ def _recreate(args: argparse.Namespace) -> int:
         print(f"note: the stored score was {stored[0]} - {stored[1]}: this machine or library versions "
               f"differ from the ones that played it (a match is bit-identical only on the same platform)")
     return 0
+
+
+def _unwritable_replay(path: str) -> str | None:
+    """Why a replay cannot be written to ``path`` (before the match is played), or None."""
+    from pathlib import Path
+
+    target = Path(path)
+    if target.suffix != ".rrd":
+        return "a replay file must end in .rrd"
+    if not target.parent.is_dir():
+        return f"directory {target.parent} does not exist"
+    try:
+        target.touch()
+    except OSError as exc:
+        return f"cannot write it ({exc.strerror or exc})"
+    return None

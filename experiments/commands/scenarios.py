@@ -72,7 +72,9 @@ def _print_library(console, scenarios: dict, config) -> None:
     from rich.table import Table
 
     table = Table(title="Scenarios (soccer-sim play HOME AWAY --scenario NAME)")
-    for column in ("name", "home v away", "start", "ends on", "cycle limit", "drawn from the seed"):
+    # Names in full (they are what --scenario takes); the other columns wrap instead.
+    table.add_column("name", no_wrap=True, min_width=max(map(len, scenarios), default=4))
+    for column in ("home v away", "start", "ends on", "cycle limit", "drawn from the seed"):
         table.add_column(column)
     for name, s in scenarios.items():
         drawn = [what for what, on in (("ball", s.ball.area is not None), ("home", s.home.jitter > 0),

@@ -353,18 +353,25 @@ def run(args: argparse.Namespace) -> int:
 
     from experiments.reporting import write_csv
     from soccer_sim import ScenarioError, TeamError, TeamNotFoundError, resolve_team
+    from soccer_sim.scenarios import MAX_PLAYERS
 
     console, errors = Console(), Console(stderr=True)
     try:
         if args.seed < 0:
             raise StudyArgumentError(f"--seed must be a non-negative integer, got {args.seed}")
+        if args.robots > MAX_PLAYERS:
+            raise StudyArgumentError(f"--robots must be at most {MAX_PLAYERS} (players a side), got {args.robots}")
         for option, name in (("--team", args.team), ("--keeper", args.keeper)):
             try:
                 resolve_team(name)
             except TeamNotFoundError as exc:
                 raise StudyArgumentError(f"{option}: {exc}") from None
-        args.out.mkdir(parents=True, exist_ok=True)
-    except (StudyArgumentError, OSError) as exc:
+        try:
+            args.out.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise StudyArgumentError(f"--out {args.out}: cannot make the directory "
+                                     f"({exc.strerror or exc})") from None
+    except StudyArgumentError as exc:
         errors.print(f"error: {exc}", style="red", markup=False)
         return 2
     start = time.perf_counter()

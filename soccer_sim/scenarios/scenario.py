@@ -166,6 +166,9 @@ class Scenario:
             _check_side(side, name)
         if not isinstance(self.ball, BallStart):
             raise ScenarioError("ball", f"must be a BallStart, got {type(self.ball).__name__}")
+        for name in ("start_mode", "start_team", "attacker"):
+            if not isinstance(getattr(self, name), str):
+                raise ScenarioError(name, f"must be a string, got {getattr(self, name)!r}")
         if self.start_mode not in START_MODES:
             raise ScenarioError("start_mode", f"unknown play mode {self.start_mode!r}; expected one of "
                                               f"{', '.join(START_MODES)}")
@@ -277,9 +280,33 @@ class Scenario:
         if math.hypot(vx, vy) > phys.ball_speed_max + 1e-9:
             raise ScenarioError("ball.velocity", f"({vx}, {vy}) is faster than the ball speed limit "
                                                  f"{phys.ball_speed_max} m/cycle")
+        diameter = 2.0 * phys.player_radius
         if not self.randomised:
-            pos = self.start_state(config)[0]
-            _check_apart(pos, self.sizes(config), 2.0 * phys.player_radius)
+            _check_apart(self.start_state(config)[0], self.sizes(config), diameter)
+        else:
+            self._check_apart_before_draws(config, diameter)
+
+    def _check_apart_before_draws(self, config: MatchConfig, diameter: float) -> None:
+        """A randomised start: the players must not overlap before the draws move them (no
+        jitter; with a drawn ball, the players placed relative to it are compared among
+        themselves by their offsets, and the others among themselves)."""
+        from dataclasses import replace
+
+        steady = replace(self, home=replace(self.home, jitter=0.0), away=replace(self.away, jitter=0.0))
+        sizes = self.sizes(config)
+        if self.ball.area is None:
+            _check_apart(steady.start_state(config)[0], sizes, diameter)
+            return
+        fixed_ball = replace(steady, ball=BallStart(position=self.ball.area[0], velocity=self.ball.velocity))
+        pos = fixed_ball.start_state(config)[0]
+        relative = np.zeros(len(pos), dtype=bool)
+        for team, side in enumerate((self.home, self.away)):
+            if side.relative_to_ball and sizes[team]:
+                rows = slice(0, sizes[0]) if team == 0 else slice(sizes[0], sizes[0] + sizes[1])
+                pos[rows] = np.array(side.positions, dtype=float).reshape(-1, 2)  # the offsets, unclipped
+                relative[rows] = True
+        for group in (relative, ~relative):
+            _check_apart(pos, sizes, diameter, rows=np.flatnonzero(group))
 
     # ------------------------------------------------------------------ the start state
     def start_state(self, config: MatchConfig, rng: np.random.Generator | None = None
@@ -399,7 +426,7 @@ def _check_side(side: Side, name: str) -> None:
         raise ScenarioError(f"{name}.jitter", f"must be a number >= 0 (m), got {side.jitter!r}")
     if not isinstance(side.relative_to_ball, bool):
         raise ScenarioError(f"{name}.relative_to_ball", f"must be true or false, got {side.relative_to_ball!r}")
-    if side.positions is not None and not side.relative_to_ball:
+    if side.positions is not None:  # offsets from the ball too: equal offsets are the same point
         pts = side.positions
         for i in range(len(pts)):
             for j in range(i + 1, len(pts)):
@@ -429,9 +456,13 @@ def _side_goalie(side: Side, config: MatchConfig, name: str) -> int:
     return int(goalie)
 
 
-def _check_apart(pos: np.ndarray, sizes: tuple[int, int], diameter: float) -> None:
-    """Two players' bodies must not overlap at the start."""
+def _check_apart(pos: np.ndarray, sizes: tuple[int, int], diameter: float,
+                 rows: np.ndarray | None = None) -> None:
+    """Two players' bodies must not overlap at the start (among ``rows`` of ``pos``, default
+    all)."""
     names = [("home", i) for i in range(sizes[0])] + [("away", i) for i in range(sizes[1])]
+    if rows is not None:
+        pos, names = pos[rows], [names[r] for r in rows]
     for a in range(len(pos)):
         d = np.hypot(*(pos[a + 1:] - pos[a]).T)
         close = np.flatnonzero(d < diameter - 1e-9)

@@ -110,3 +110,10 @@ def test_bad_options_are_reported_without_a_traceback(tmp_path, capsys):
     assert main(["experiment", "penalty-shot", "--trials", "2", "--team", "no-such-team", "--out", str(tmp_path)]) == 2
     err = capsys.readouterr().err
     assert "--team" in err and "Traceback" not in err
+    assert main(["experiment", "penalty-shot", "--trials", "1", "--robots", "12", "--out", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert "--robots must be at most 11" in err and "Traceback" not in err
+    (tmp_path / "a-file").write_text("")
+    assert main(["experiment", "penalty-shot", "--trials", "1", "--out", str(tmp_path / "a-file")]) == 2
+    err = capsys.readouterr().err
+    assert "--out" in err and "Traceback" not in err

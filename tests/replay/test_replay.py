@@ -90,6 +90,10 @@ def test_play_record_then_replay_png(tmp_path, capsys) -> None:
     assert png.stat().st_size > 10_000
     assert main(["replay", str(path), "--png", str(png), "--cycle", "5000"]) == 2
     assert "cycle 5000 is not in the replay" in capsys.readouterr().err
+    assert main(["replay", str(path), "--png", str(tmp_path / "no" / "m.png")]) == 2
+    assert "--png" in capsys.readouterr().err
+    assert main(["replay", str(path), "--png", str(tmp_path / "m.txt")]) == 2
+    assert "not supported" in capsys.readouterr().err
 
 
 def test_play_record_refuses_bad_paths(tmp_path, capsys) -> None:
@@ -111,6 +115,11 @@ def test_a_stored_match_is_recreated_by_its_row(tmp_path, capsys) -> None:
     assert read_replay(out).cycles[-1] == 300
     assert main(["replay", "--results", str(results), "--row", "9", "--out", str(out)]) == 2
     assert "holds rows 0 to 1" in capsys.readouterr().err
+    assert main(["replay", "--results", str(results), "--row", "1", "--out", str(tmp_path / "no" / "x.rrd")]) == 2
+    err = capsys.readouterr().err
+    assert "--out" in err and "does not exist" in err
+    assert main(["replay", "--results", str(results), "--row", "1", "--out", str(tmp_path / "x.txt")]) == 2
+    assert "must end in .rrd" in capsys.readouterr().err
 
 
 def test_the_runner_records_every_kth_match(tmp_path, capsys) -> None:
@@ -144,3 +153,39 @@ def test_recording_into_a_callers_stream(tmp_path) -> None:
     stream.disconnect()
     replay = read_replay(tmp_path / "stream.rrd")
     assert replay.cycles.tolist() == list(range(61)) and replay.players["home"].shape == (61, 11, 2)
+
+
+def test_every_event_kind_has_a_line_in_the_log() -> None:
+    from soccer_sim.replay import describe_event
+
+    names = ("red", "blue")
+    for kind in EventKind:
+        text = describe_event(names, int(kind), 0, 3, 1.0, 2.0, 0)
+        assert not text.startswith("event ") and "red #4" in text
+    assert describe_event(names, int(EventKind.OFFSIDE), 1, 8, 10.0, 0.0, -1).startswith("offside blue #9")
+    assert describe_event(names, int(EventKind.GOAL), 0, 8, 52.6, 0.0, -1).startswith("GOAL red #9")
+
+
+def test_the_environments_human_mode_streams_through_the_recorder(tmp_path, monkeypatch) -> None:
+    """render_mode="human" spawns a viewer; here the spawned stream is saved to a file instead."""
+    import rerun as rr
+
+    from soccer_sim.env import parallel_env
+
+    saved = tmp_path / "human.rrd"
+
+    def spawn(self, *args, default_blueprint=None, **kwargs):
+        self.save(saved, default_blueprint=default_blueprint)
+
+    monkeypatch.setenv("DISPLAY", ":0")
+    monkeypatch.setattr(rr.RecordingStream, "spawn", spawn)
+    environment = parallel_env(render_mode="human", max_cycles=25)
+    environment.reset(seed=0)
+    (recorder,) = [r for r in environment._match.recorders if isinstance(r, RerunRecorder)]
+    while environment.agents:
+        environment.step({a: environment.action_space(a).sample() for a in environment.agents})
+    recorder.recording.flush()
+    recorder.recording.disconnect()  # a viewer's stream stays open; the file is finished here
+    replay = read_replay(saved)
+    assert replay.cycles.tolist() == list(range(26)) and replay.players["home"].shape == (26, 11, 2)
+    assert replay.has_blueprint and {"/world/field/lines"} <= replay.static_paths

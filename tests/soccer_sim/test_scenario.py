@@ -64,6 +64,11 @@ def nobody(**kwargs) -> Scenario:
     (lambda: Scenario(attacker="left"), "attacker"),
     (lambda: Scenario(ball=BallStart(area=((10.0, 5.0), (0.0, 0.0)))), "ball.area"),
     (lambda: Scenario(home=Side(jitter=-1.0)), "home.jitter"),
+    (lambda: Scenario(start_mode=[]), "start_mode"),
+    (lambda: Scenario(start_team=["home"]), "start_team"),
+    (lambda: Scenario(attacker={}), "attacker"),
+    (lambda: Scenario(home=Side(positions=[(1.0, 1.0), (1.0, 1.0)], relative_to_ball=True),
+                      ball=BallStart(area=((0.0, 0.0), (5.0, 5.0)))), "home.positions[1]"),
 ])
 def test_bad_scenarios_are_refused_naming_the_field(make, field):
     with pytest.raises(ScenarioError) as info:
@@ -87,6 +92,12 @@ def test_end_conditions_that_cannot_fire_are_allowed_with_a_cycle_limit():
     (Scenario(home=Side(positions=[(10.0, 0.0)], velocities=[(2.0, 0.0)])), "home.velocities[0]"),
     (Scenario(ball=BallStart(velocity=(3.5, 0.0))), "ball.velocity"),
     (Scenario(home=Side(players=0)), None),
+    # randomised starts: the layout before the draws must not overlap
+    (Scenario(home=Side(positions=[(10.0, 0.0)], jitter=0.5), away=Side(positions=[(10.0, 0.0)])), "away.positions[0]"),
+    (Scenario(home=Side(positions=[(1.0, 1.0), (1.2, 1.0)], relative_to_ball=True), away=Side(players=0),
+              ball=BallStart(area=((0.0, 0.0), (5.0, 5.0)))), "home.positions[1]"),
+    (Scenario(home=Side(positions=[(1.0, 1.0)], relative_to_ball=True), away=Side(positions=[(1.0, 1.1)]),
+              ball=BallStart(area=((0.0, 0.0), (5.0, 5.0)))), None),  # apart or not depends on the draw
 ])
 def test_what_depends_on_the_field_is_checked_when_the_match_is_made(scenario, field):
     if field is None:
