@@ -38,6 +38,9 @@ PAPER_TABLE_1: dict[tuple[int, int, int], tuple[int, float, float, float]] = {
     (100, 20, 300): (4027, 38, 11, 3.5), (100, 20, 400): (5238, 55, 18, 3.1),
     (100, 10, 100): (581, 12, 1, 12.0), (100, 15, 100): (677, 11, 1, 11.0),
     (100, 25, 100): (900, 9, 1, 9.0),
+    (200, 20, 300): (3336, 137, 20, 6.9), (200, 20, 400): (5054, 193, 35, 5.5),
+    (200, 10, 200): (1427, 104, 8, 13.0), (200, 15, 200): (1661, 95, 9, 10.6),
+    (200, 25, 200): (2312, 81, 10, 8.1),
 }
 
 
@@ -221,7 +224,10 @@ def _print_table(summaries: list[dict[str, object]]) -> None:
             "-" if s["paper_pairs"] is None else str(s["paper_pairs"]),
             "-" if s["paper_speedup"] is None else f"{s['paper_speedup']:.1f}",
         )
-    Console().print(table)
+    console = Console()
+    if not console.is_terminal:  # piped or redirected: rich would squeeze the table into 80 columns
+        console = Console(width=max(console.width, 140))
+    console.print(table)
 
 
 def run(args: argparse.Namespace) -> int:

@@ -373,6 +373,8 @@ def run(args: argparse.Namespace) -> int:
     from rich.console import Console
 
     console = Console()
+    if not console.is_terminal:  # piped or redirected: rich would squeeze the tables into 80 columns
+        console = Console(width=max(console.width, 120))
     try:
         plan = _check_args(args)
         if args.out is not None:

@@ -71,3 +71,6 @@ def test_unequal_totals_stop_the_benchmark(monkeypatch) -> None:
 def test_paper_figures_are_found_for_its_rows() -> None:
     assert grid_assignment.Row((400, 400), 0.2, 200).paper == (1901, 355, 22, 16.1)
     assert grid_assignment.Row((40, 40, 40), 0.2, 100).paper is None
+    # the paper's density block at 200 x 200 with 200 robots
+    assert grid_assignment.Row((200, 200), 0.25, 200).paper == (2312, 81, 10, 8.1)
+    assert grid_assignment.Row((300, 300), 0.2, 100).paper == (732, 94, 5, 18.8)

@@ -281,3 +281,22 @@ def test_coarsest_rounds_and_tightly_clustered_targets_complete(algorithm):
     agents = rng.uniform(0, 100, (60, 2))
     result = distributed_assign(agents, targets, 100.0, 40.0, algorithm=algorithm, round_time=40.0)
     _check_complete(result, agents, targets)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("algorithm, area_per_agent, limit", [("etsp", 4.0, 15.0), ("grid", None, 5.0)])
+def test_a_thousand_agents_simulate_in_seconds(algorithm, area_per_agent, limit):
+    """n = 1000 at the densities of the reproduced results: ETSP ASSGMT with |E| = 4 r² n (thousands
+    of rounds), GRID ASSGMT dense with |E| = r² n / (6 ln n)."""
+    import time
+
+    n, r_comm = 1000, 10.0
+    area = area_per_agent * r_comm**2 * n if area_per_agent else r_comm**2 * n / (6 * math.log(n))
+    side = math.sqrt(area)
+    agents, targets = _uniform(1, 20, 20, side)
+    distributed_assign(agents, targets, side, r_comm, algorithm=algorithm)  # load the compiled kernels
+    agents, targets = _uniform(2, n, n, side)
+    start = time.perf_counter()
+    result = distributed_assign(agents, targets, side, r_comm, algorithm=algorithm)
+    assert time.perf_counter() - start < limit
+    _check_complete(result, agents, targets)

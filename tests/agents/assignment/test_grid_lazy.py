@@ -1,9 +1,11 @@
 """Lazy path-cost assignment on grids: optimal totals, exact A* costs, refused bad input."""
 
+import time
 from pathlib import Path
 
 import numpy as np
 import pytest
+from scipy import ndimage
 
 from agents.assignment import AssignmentError, assign_on_grid
 from agents.assignment.grid import Workspace, load_movingai_map, random_instance
@@ -116,3 +118,62 @@ def test_lazy_equals_all_pairs_with_as_many_goals_as_robots(shape, robots):
         assert lazy.total == full.total
         assert sorted(lazy.target_of.tolist()) == list(range(robots))
         assert lazy.pairs_computed < full.pairs_computed
+
+
+def test_a_map_of_our_own_loads_and_both_methods_agree_on_it():
+    """spiral.map: corridors winding between walls, a closed pocket around a tree (T) in the
+    middle, and the other obstacle letters (W, O) in the bottom-left corner."""
+    grid = load_movingai_map(DATA / "spiral.map")
+    assert grid.shape == (16, 16) and grid[14, 0] and grid[15, 1] and grid[7, 7] and not grid[7, 6]
+    robots = [[0, 0], [15, 15], [12, 2], [10, 4]]
+    goals = [[2, 2], [14, 9], [4, 4], [0, 15]]
+    lazy = assign_on_grid(grid, robots, goals)
+    full = assign_on_grid(grid, robots, goals, method="all-pairs")
+    assert lazy.total == full.total
+    assert lazy.pairs_computed < full.pairs_computed
+    # (4, 4) lies deep inside the walls: close to (0, 0) as the crow flies (6 grid units), far by path
+    around = assign_on_grid(grid, [[0, 0]], [[4, 4]])
+    assert around.total == assign_on_grid(grid, [[0, 0]], [[4, 4]], method="all-pairs").total > 30.0
+    with pytest.raises(AssignmentError, match=r"goal 3 at cell \[7, 6\] cannot be reached by any robot"):
+        assign_on_grid(grid, robots, [[2, 2], [14, 9], [4, 4], [7, 6]])
+    with pytest.raises(AssignmentError, match=r"goals\[1\] = \[14, 7\] is on an obstacle"):  # a tree
+        assign_on_grid(grid, robots, [[2, 2], [14, 7], [4, 4], [0, 15]])
+
+
+def test_lazy_equals_all_pairs_when_walls_split_the_workspace_into_regions():
+    """Pairs in different regions are forbidden from the start; the kept matching must still be optimal."""
+    rng = np.random.default_rng(17)
+    for trial in range(60):
+        grid = rng.random((14, 14)) < 0.15
+        grid[:, 6] = True  # a wall: left and right halves never meet
+        grid[7, :6] = True  # and the left half cut again
+        labels, _ = ndimage.label(~grid)
+        regions = [np.argwhere(labels == k) for k in np.unique(labels[labels > 0])]
+        robots, goals = [], []
+        for cells in regions:
+            if len(cells) < 8:
+                continue
+            k = int(rng.integers(1, 4))
+            extra = int(rng.integers(0, 2)) if trial % 2 else 0  # odd trials: more goals than robots
+            pick = rng.choice(len(cells), 2 * k + extra, replace=False)
+            robots += cells[pick[:k]].tolist()
+            goals += cells[pick[k:]].tolist()
+        lazy = assign_on_grid(grid, robots, goals)
+        full = assign_on_grid(grid, robots, goals, method="all-pairs")
+        assert lazy.total == pytest.approx(full.total, abs=1e-9)
+        assert (lazy.target_of >= 0).all()
+        assert len(set(lazy.target_of.tolist())) == len(robots)
+
+
+@pytest.mark.slow
+def test_200_robots_on_a_400_square_map_take_under_5_seconds():
+    rng = np.random.default_rng(400)
+    grid, robots, goals = random_instance((12, 12), 0.2, 4, 4, rng)
+    assign_on_grid(grid, robots, goals)  # load the compiled kernels first
+    for _ in range(2):
+        grid, robots, goals = random_instance((400, 400), 0.2, 200, 200, rng)
+        start = time.perf_counter()
+        result = assign_on_grid(grid, robots, goals)
+        assert time.perf_counter() - start < 5.0
+        assert sorted(result.target_of.tolist()) == list(range(200))
+        assert result.pairs_computed < 0.1 * 200 * 200
