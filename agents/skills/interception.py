@@ -188,11 +188,59 @@ def ball_race(model: MotionModel, view: object, eligible: np.ndarray | None = No
     ``first``.
     """
     ball, ball_vel, own, opp = _race_inputs(model, view)
-    ours = _intercept_checked(model, ball, ball_vel, *own, _kernel_params(model, -1.0))
-    if eligible is not None:
-        ours = _only_eligible(ours, eligible)
-    theirs = _intercept_checked(model, ball, ball_vel, *opp, _kernel_params(model, 1.0))
-    return BallRace(ours, theirs)
+    n, m = own[0].shape[0], opp[0].shape[0]
+    if eligible is None:
+        mask = _ALL_ELIGIBLE
+    else:
+        mask = eligible if type(eligible) is np.ndarray else np.asarray(eligible)
+        if mask.shape != (n,) or mask.dtype != np.bool_:
+            raise SkillInputError(f"eligible must be a ({n},) bool array, got {mask.dtype} {mask.shape}")
+    our_cycles, our_points = np.empty((1, n), dtype=np.int64), np.empty((1, n, 2))
+    their_cycles, their_points = np.empty((1, m), dtype=np.int64), np.empty((1, m, 2))
+    first, first_cycle, their_first, their_first_cycle = _race_kernel(
+        ball, ball_vel, *own, *opp, model.reach, model.ball_travel, model.player_coast, _kernel_params(model, -1.0),
+        _kernel_params(model, 1.0), mask, our_cycles, our_points, their_cycles, their_points)
+    return BallRace(Interception(our_cycles[0], our_points[0], first, first_cycle),
+                    Interception(their_cycles[0], their_points[0], their_first, their_first_cycle))
+
+
+_ALL_ELIGIBLE = np.zeros(0, dtype=np.bool_)  # empty: every player may play the ball
+
+
+@njit(cache=True, nogil=True)
+def _race_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, vel: np.ndarray, effort: np.ndarray,
+                 radius: np.ndarray, catch_radius: np.ndarray, opp_pos: np.ndarray, opp_vel: np.ndarray,
+                 opp_effort: np.ndarray, opp_radius: np.ndarray, opp_catch_radius: np.ndarray, reach: np.ndarray,
+                 ball_travel: np.ndarray, coast: np.ndarray, our_params: np.ndarray, their_params: np.ndarray,
+                 eligible: np.ndarray, our_cycles: np.ndarray, our_points: np.ndarray, their_cycles: np.ndarray,
+                 their_points: np.ndarray) -> tuple[int, int, int, int]:  # pragma: no cover - compiled
+    """Both teams' :func:`_intercept_kernel` of one ball in one call; our players not
+    ``eligible`` (when it is not empty) made UNREACHABLE. Returns (our first player, its
+    cycle, their first player, its cycle), -1 and UNREACHABLE when nobody gets there."""
+    _intercept_kernel(ball, ball_vel, pos, vel, effort, radius, catch_radius, reach, ball_travel, coast, our_params,
+                      _NO_LIMITS, our_cycles, our_points, _ALL)
+    if eligible.shape[0] > 0:
+        for i in range(our_cycles.shape[1]):
+            if not eligible[i]:
+                our_cycles[0, i] = UNREACHABLE
+    _intercept_kernel(ball, ball_vel, opp_pos, opp_vel, opp_effort, opp_radius, opp_catch_radius, reach, ball_travel,
+                      coast, their_params, _NO_LIMITS, their_cycles, their_points, _ALL)
+    first, first_cycle = _first_of(our_cycles[0])
+    their_first, their_first_cycle = _first_of(their_cycles[0])
+    return first, first_cycle, their_first, their_first_cycle
+
+
+@njit(cache=True, nogil=True)
+def _first_of(cycles: np.ndarray) -> tuple[int, int]:  # pragma: no cover - compiled
+    """The player with the smallest cycle (the lowest index among equals) and that cycle;
+    (-1, its cycle or UNREACHABLE) when nobody gets there."""
+    first, first_cycle = -1, UNREACHABLE
+    for i in range(cycles.shape[0]):
+        if first < 0 or cycles[i] < first_cycle:
+            first, first_cycle = i, cycles[i]
+    if first_cycle >= UNREACHABLE:
+        first = -1
+    return first, first_cycle
 
 
 def _race_inputs(model: MotionModel, view: object) -> tuple[np.ndarray, np.ndarray, tuple, tuple]:
@@ -231,17 +279,6 @@ def checked_own_players(model: MotionModel, view: object) -> tuple[np.ndarray, n
     (the same cache as :func:`ball_race`'s)."""
     own = _race_inputs(model, view)[2]
     return own[0], own[1], own[2]
-
-
-def _only_eligible(result: Interception, eligible: np.ndarray) -> Interception:
-    """``result`` with the players not ``eligible`` made UNREACHABLE (and ``first`` redone)."""
-    mask = np.asarray(eligible)
-    if mask.shape != result.cycles.shape or mask.dtype != np.bool_:
-        raise SkillInputError(f"eligible must be a ({len(result.cycles)},) bool array, got {mask.dtype} {mask.shape}")
-    cycles = np.where(mask, result.cycles, UNREACHABLE)
-    first = int(cycles.argmin()) if len(cycles) else -1
-    first_cycle = int(cycles[first]) if len(cycles) else UNREACHABLE
-    return Interception(cycles, result.points, first if first_cycle < UNREACHABLE else -1, first_cycle)
 
 
 _NO_LIMITS = np.full(0, -1, dtype=np.int64)  # empty: the kernel searches to the horizon
