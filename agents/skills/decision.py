@@ -83,14 +83,19 @@ class BallDecision:
 
 
 def decide_on_ball(model: MotionModel, view: object, player: int,
-                   params: DecisionParams = DecisionParams()) -> BallDecision:
-    """Choose what ``player`` (who can kick the ball) does with it this cycle."""
+                   params: DecisionParams = DecisionParams(), pressure: int | None = None) -> BallDecision:
+    """Choose what ``player`` (who can kick the ball) does with it this cycle.
+
+    ``pressure``: the cycles until the fastest opponent controls the ball, when the caller
+    already knows it (``ball_race(model, view).theirs.first_cycle`` of this very view); None:
+    worked out here."""
     player = check_player(player, model.players_per_team)
     holder = view.ball_holder == player
     goalie = player == model.goalie_index
-    radius, catch = opponent_radii(model)
-    pressure = intercept(model, view.ball, view.ball_vel, view.opp_pos, view.opp_vel, None, radius, catch,
-                         1.0).first_cycle
+    if pressure is None:
+        radius, catch = opponent_radii(model)
+        pressure = intercept(model, view.ball, view.ball_vel, view.opp_pos, view.opp_vel, None, radius, catch,
+                             1.0).first_cycle
     under_pressure = pressure <= params.pressure_cycles
 
     shot = best_shot(model, view, player, params.shot, holder)

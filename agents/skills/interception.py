@@ -165,10 +165,21 @@ def intercept_many(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, p
     (-1: everybody). Returns (cycles (P, n) int, points (P, n, 2)).
     """
     ball, ball_vel = _trajectories(ball, ball_vel, single=False)
-    pos, vel, effort, radius, catch_radius = _players(model, pos, vel, effort, radius, catch_radius)
-    count, n = ball_vel.shape[0], pos.shape[0]
+    players = _players(model, pos, vel, effort, radius, catch_radius)
+    count, n = ball_vel.shape[0], players[0].shape[0]
     limits = _NO_LIMITS if limit is None else _indices("limit", limit, count, None)
     chosen = _ALL if only is None else _indices("only", only, count, n)
+    return intercept_many_checked(model, ball, ball_vel, players, catch_side, limits, reaction, first_only, chosen)
+
+
+def intercept_many_checked(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, players: tuple,
+                           catch_side: float, limits: np.ndarray, reaction: int, first_only: bool,
+                           chosen: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`intercept_many` on arrays already checked: ``ball`` (1 or P, 2), ``ball_vel``
+    (P, 2), ``players`` = (pos, vel, effort, radius, catch radius) as C-contiguous float64
+    arrays (e.g. :func:`race_players`), ``limits`` and ``chosen`` (P,) int64 or empty."""
+    pos, vel, effort, radius, catch_radius = players
+    count, n = ball_vel.shape[0], pos.shape[0]
     cycles = np.empty((count, n), dtype=np.int64)
     points = np.empty((count, n, 2))
     _intercept_kernel(ball, ball_vel, pos, vel, effort, radius, catch_radius, model.reach, model.ball_travel,
@@ -273,10 +284,18 @@ def _race_inputs(model: MotionModel, view: object) -> tuple[np.ndarray, np.ndarr
     return inputs
 
 
+def race_players(model: MotionModel, view: object) -> tuple[np.ndarray, np.ndarray, tuple, tuple]:
+    """The view's ball (1, 2), ball velocity (1, 2), our players and the opponents, each as
+    (pos, vel, effort, radius, catch radius) in the form :func:`ball_race` uses (our effort
+    from the view, theirs 1; the model's control radii), checked as C-contiguous float64
+    arrays: free after the first call of a match (the checked arrays are kept while the view
+    holds the same array objects)."""
+    return _race_inputs(model, view)
+
+
 def checked_own_players(model: MotionModel, view: object) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The view's own positions (n, 2), velocities (n, 2) and effort (n,) (ones when the view
-    has none), checked as C-contiguous float64 arrays; free after the first call of a match
-    (the same cache as :func:`ball_race`'s)."""
+    has none), checked as C-contiguous float64 arrays (see :func:`race_players`)."""
     own = _race_inputs(model, view)[2]
     return own[0], own[1], own[2]
 

@@ -28,10 +28,10 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from agents.skills.interception import UNREACHABLE
+from agents.skills.interception import UNREACHABLE, intercept_many_checked, opponent_radii, race_players
 from agents.skills.kicking import kick_for_velocity
-from agents.skills.lanes import lane_arrivals, opponent_cycles, teammate_cycles
-from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, view_effort
+from agents.skills.lanes import lane_arrivals
+from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, float_array, view_effort
 
 
 @dataclass(frozen=True)
@@ -113,8 +113,32 @@ def offside_positions(model: MotionModel, own_pos: np.ndarray, opp_pos: np.ndarr
     n = own_pos.shape[0]
     if not model.offside or opp_pos.shape[0] < 2:
         return np.zeros(n, dtype=bool)
-    line = max(np.partition(opp_pos[:, 0], -2)[-2], float(ball[0]), 0.0)
-    return own_pos[:, 0] > line
+    own_pos, opp_pos = float_array("own_pos", own_pos, (n, 2)), float_array("opp_pos", opp_pos, (-1, 2))
+    return _beyond_line(own_pos, opp_pos, float(ball[0]))
+
+
+@njit(cache=True, nogil=True)
+def offside_line(opp_pos: np.ndarray, ball_x: float) -> float:  # pragma: no cover - compiled
+    """The offside line's x (team frame): the second-last opponent's x (duplicates counted),
+    the ball's, or the halfway line, whichever is furthest forward."""
+    last = second = -math.inf
+    for i in range(opp_pos.shape[0]):
+        x = opp_pos[i, 0]
+        if x > last:
+            last, second = x, last
+        elif x > second:
+            second = x
+    return max(second, ball_x, 0.0)
+
+
+@njit(cache=True, nogil=True)
+def _beyond_line(own_pos: np.ndarray, opp_pos: np.ndarray, ball_x: float) -> np.ndarray:  # pragma: no cover
+    """Whether each of ``own_pos`` is beyond :func:`offside_line`."""
+    line = offside_line(opp_pos, ball_x)
+    out = np.empty(own_pos.shape[0], dtype=np.bool_)
+    for i in range(own_pos.shape[0]):
+        out[i] = own_pos[i, 0] > line
+    return out
 
 
 def pass_candidates(model: MotionModel, view: object, passer: int, params: PassParams = PassParams()) -> np.ndarray:
@@ -157,12 +181,17 @@ def best_pass(model: MotionModel, view: object, passer: int, params: PassParams 
     if usable.size == 0:
         return None
     vel_u, own_u, lim_u = velocities[usable], owners[usable], limit[usable]
-    ours, our_points = teammate_cycles(model, view, ball, vel_u, lim_u, own_u)
+    # The lanes' searches on the view's checked arrays (those of the ball race): the same
+    # calls as teammate_cycles and opponent_cycles make, without checking them again.
+    ball_row, _, ours_now, theirs_now = race_players(model, view)
+    ours, our_points = intercept_many_checked(model, ball_row, vel_u, ours_now, -1.0, lim_u, 0, False, own_u)
     rows = np.arange(usable.size)
     receive, received_at = ours[rows, own_u], our_points[rows, own_u]
-    theirs, _ = opponent_cycles(model, view, ball, vel_u,
-                                _deciding_cycles(receive, arrival[usable], lim_u, params.min_lead),
-                                params.opponent_margin)
+    radius, catch = opponent_radii(model, params.opponent_margin)
+    opponents = (theirs_now[0], theirs_now[1], theirs_now[2], radius, catch)
+    theirs = intercept_many_checked(model, ball_row, vel_u, opponents, 1.0,
+                                    _deciding_cycles(receive, arrival[usable], lim_u, params.min_lead), 1, True,
+                                    _NO_RECEIVER)[0].min(axis=1, initial=UNREACHABLE)
     effort = view_effort(view, model.players_per_team)
     score = np.empty(usable.size)
     points = np.empty((usable.size, 2))
@@ -178,6 +207,8 @@ def best_pass(model: MotionModel, view: object, passer: int, params: PassParams 
                     kick=kicks[j].copy(), ball_vel=velocities[j].copy(), arrival_cycle=int(arrival[j]),
                     receive_cycle=int(receive[best]), opponent_cycle=int(theirs[best]), score=float(score[best]))
 
+
+_NO_RECEIVER = np.zeros(0, dtype=np.int64)  # every opponent is searched on every lane
 
 LEAD_CAP = 10
 """Cycles of lead over the opponents beyond which a pass scores no better (the score's lead

@@ -42,6 +42,7 @@ from numba import njit
 import formations
 from agents import skills
 from agents.roles import RoleContext, make_assigner, offensive_order
+from agents.skills.passing import offside_line
 from formations.formation_set import Situation
 from soccer_sim.config import MatchConfig
 from soccer_sim.state import SET_PLAYS, PlayMode
@@ -108,8 +109,8 @@ class FormationTeam:
         if kinds.count("goalkeeper") != 1:
             raise ValueError(f"formation set {self.style.system!r} needs exactly one goalkeeper role")
         self._goalie_role = kinds.index("goalkeeper")
-        self._outfield_roles = np.array([r for r in range(len(kinds)) if r != self._goalie_role])
-        self._forward_roles = np.array([r for r in range(len(kinds)) if kinds[r] == "forward"])
+        self._outfield_roles = np.array([r for r in range(len(kinds)) if r != self._goalie_role], dtype=np.int64)
+        self._forward_roles = np.array([r for r in range(len(kinds)) if kinds[r] == "forward"], dtype=np.int64)
 
     # ------------------------------------------------------------------ match lifecycle
     def reset(self, side_info: SideInfo, config: MatchConfig, rng: np.random.Generator) -> None:
@@ -210,14 +211,13 @@ class FormationTeam:
         self._situation = situation
         targets = self.targets
         targets[:] = self.formation_set.positions(ball_ref, situation)
-        shift = self.style.depth + (self.style.attack_push if situation == Situation.ATTACK else 0.0)
-        if mode == _PLAY_ON and shift:
-            xs = targets[self._out_roles, 0]
-            xs += shift
-            np.minimum(np.maximum(xs, -self._half_length + 2.0, out=xs), self._half_length - 2.0, out=xs)
-            targets[self._out_roles, 0] = xs
-        if situation == Situation.ATTACK and ball_ref[0] > self._half_length / 3.0 and self.style.box_narrowing:
-            targets[self._forward_roles, 1] *= 1.0 - self.style.box_narrowing
+        style = self.style
+        shift = style.depth + (style.attack_push if situation == Situation.ATTACK else 0.0)
+        shifted = mode == _PLAY_ON and shift != 0.0
+        narrowed = situation == Situation.ATTACK and ball_ref[0] > self._half_length / 3.0 and style.box_narrowing
+        if shifted or narrowed:
+            _shape_targets(targets, self._match_roles, shift if shifted else 0.0, shifted, self._half_length - 2.0,
+                           self._forward_roles, 1.0 - style.box_narrowing, bool(narrowed))
         self._assign_roles(view, targets, ball_ref)
         urgent = np.zeros(self.n, dtype=bool)
         if mode == _PLAY_ON:
@@ -327,7 +327,8 @@ class FormationTeam:
             if kicker == self.goalie:
                 command.kick[kicker] = skills.distribute(model, view, kicker).kick
             else:
-                decision = skills.decide_on_ball(model, view, kicker, self.style.decision)
+                decision = skills.decide_on_ball(model, view, kicker, self.style.decision,
+                                                 pressure=race.theirs.first_cycle)
                 if contested and decision.action in (skills.OnBallAction.DRIBBLE, skills.OnBallAction.CLEAR):
                     # Against an opponent who kicks the ball too, a dribble or a clearance up the
                     # field meets its mirror image and the two kicks cancel: kick it towards
@@ -484,6 +485,20 @@ def _role_figures(players: np.ndarray, targets: np.ndarray, role_of_player: np.n
 
 
 @njit(cache=True, nogil=True)
+def _shape_targets(targets: np.ndarray, rows: np.ndarray, shift: float, shifted: bool, x_limit: float,
+                   forwards: np.ndarray, narrowing: float, narrowed: bool) -> None:  # pragma: no cover - compiled
+    """The style's changes to the formation's targets (team frame, in place): ``rows`` moved
+    ``shift`` metres up the field and kept within ``|x| <= x_limit`` when ``shifted``; the
+    ``forwards``' y scaled by ``narrowing`` when ``narrowed``."""
+    if shifted:
+        for r in rows:
+            targets[r, 0] = min(max(targets[r, 0] + shift, -x_limit), x_limit)
+    if narrowed:
+        for r in forwards:
+            targets[r, 1] *= narrowing
+
+
+@njit(cache=True, nogil=True)
 def _any_nonzero(values: np.ndarray) -> bool:  # pragma: no cover - compiled
     """Whether any entry of ``values`` is non-zero (``values.any()`` without its overhead)."""
     for x in values.ravel():
@@ -504,14 +519,7 @@ def _pull_onside(goals: np.ndarray, rows: np.ndarray, opp_pos: np.ndarray, ball_
                  margin: float) -> None:  # pragma: no cover - compiled
     """Goals of ``rows`` beyond the offside line (the second-last opponent or the ball, never
     in our half) are pulled back to ``margin`` behind it (but not into our half)."""
-    last = second = -math.inf
-    for i in range(opp_pos.shape[0]):
-        x = opp_pos[i, 0]
-        if x > last:
-            last, second = x, last
-        elif x > second:
-            second = x
-    limit = max(second, ball_x, 0.0) - margin
+    limit = offside_line(opp_pos, ball_x) - margin
     for r in rows:
         if goals[r, 0] > limit:
             goals[r, 0] = max(limit, 0.0)
