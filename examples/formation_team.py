@@ -32,6 +32,11 @@ class FormationTeam:
 
     def reset(self, side_info, config, rng) -> None:
         n = side_info.players_per_team
+        roles = len(self.formation_set.roles)
+        if n != roles or not 0 <= side_info.goalie_index < n:
+            # This small example maps player i to role i: it needs a full side with a goalkeeper.
+            raise ValueError(f"FormationTeam example plays {roles} players with a goalkeeper, not {n} "
+                             f"(goalkeeper index {side_info.goalie_index}); the built-in teams play any size")
         self.goalie = side_info.goalie_index
         self.outfield = np.array([i for i in range(n) if i != self.goalie])
         self.goal_x = config.field.half_length

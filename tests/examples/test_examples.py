@@ -58,3 +58,9 @@ def test_scripted_in_tournament_plays_the_built_in_teams(tmp_path, monkeypatch, 
     with open(tmp_path / "scripted-tournament-tables" / "league.csv") as handle:
         league = {row["team"]: int(row["games"]) for row in csv.DictReader(handle)}
     assert league == {"static": 4, "greedy": 4, "examples.scripted_team:ScriptedTeam": 4}
+
+
+def test_formation_team_refuses_a_smaller_side_by_name() -> None:
+    module = runpy.run_path(str(EXAMPLES / "formation_team.py"))
+    with pytest.raises(soccer_sim.TeamError, match="plays 11 players with a goalkeeper, not 3"):
+        soccer_sim.run_match(module["FormationTeam"](), "chaser", seed=0, scenario="3-vs-1-with-keeper")
