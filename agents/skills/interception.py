@@ -188,15 +188,20 @@ def intercept_many_checked(model: MotionModel, ball: np.ndarray, ball_vel: np.nd
     return cycles, points
 
 
-def ball_race(model: MotionModel, view: object, eligible: np.ndarray | None = None) -> BallRace:
+def ball_race(model: MotionModel, view: object, eligible: np.ndarray | None = None,
+              their_first_only: bool = False) -> BallRace:
     """Interceptions of the view's ball by our players and by the opponents.
 
     Our players use the view's effort (ones when absent) and our goalkeeper catches in our
     penalty area; the opponents are taken fresh (effort 1), their goalkeeper
-    (``model.opponent_goalie_index``, by default the same index as ours) catching in theirs. ``eligible`` ((n,) bool, None: all) leaves out our players who
-    must not play the ball, e.g. those in an offside position when a team-mate last kicked
+    (``model.opponent_goalie_index``, by default the same index as ours) catching in theirs.
+    ``eligible`` ((n,) bool, None: all) leaves out our players who must not play the ball,
+    e.g. those in an offside position when a team-mate last kicked
     (:func:`agents.skills.offside_positions`): their cycle is UNREACHABLE and they are never
-    ``first``.
+    ``first``. ``their_first_only``: the opponents' search stops at their first interception
+    (``theirs.first``, ``first_cycle`` and that player's point are the same; the other
+    opponents' cycles are UNREACHABLE unless they tie), for a caller that needs no more and
+    wants it cheaper.
     """
     ball, ball_vel, own, opp = _race_inputs(model, view)
     n, m = own[0].shape[0], opp[0].shape[0]
@@ -210,7 +215,7 @@ def ball_race(model: MotionModel, view: object, eligible: np.ndarray | None = No
     their_cycles, their_points = np.empty((1, m), dtype=np.int64), np.empty((1, m, 2))
     first, first_cycle, their_first, their_first_cycle = _race_kernel(
         ball, ball_vel, *own, *opp, model.reach, model.ball_travel, model.player_coast, _kernel_params(model, -1.0),
-        _kernel_params(model, 1.0), mask, our_cycles, our_points, their_cycles, their_points)
+        _kernel_params(model, 1.0, 0, their_first_only), mask, our_cycles, our_points, their_cycles, their_points)
     return BallRace(Interception(our_cycles[0], our_points[0], first, first_cycle),
                     Interception(their_cycles[0], their_points[0], their_first, their_first_cycle))
 

@@ -206,7 +206,8 @@ class FormationTeam:
                 self._goal_kick_leaving = False
             self._mode_key, self._mode_since = key, view.cycle
         model = self.model
-        race = skills.ball_race(model, view, self._eligible if self._our_pass_in_flight else None)
+        race = skills.ball_race(model, view, self._eligible if self._our_pass_in_flight else None,
+                                their_first_only=True)
         situation, ball_ref = self._situation_and_ball(view, race)
         self._situation = situation
         targets = self.targets

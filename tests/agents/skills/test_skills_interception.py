@@ -197,6 +197,27 @@ def test_players_left_out_of_the_race_never_win_it() -> None:
         ball_race(MODEL, view, np.ones(3, dtype=bool))
 
 
+def test_their_first_only_race_names_the_same_first_opponent() -> None:
+    """The cheaper race (opponents searched only to their first interception) agrees with the
+    full one on who gets there first, when and where, on random states (ties included: two
+    opponents level with each other), and leaves our side untouched."""
+    rng = np.random.default_rng(7)
+    for trial in range(300):
+        opp = rng.uniform((-50.0, -32.0), (50.0, 32.0), (11, 2))
+        if trial % 10 == 0:
+            opp[3] = opp[4] * np.array([1.0, -1.0])  # mirror twins
+        view = make_view(own=rng.uniform((-50.0, -32.0), (50.0, 32.0), (11, 2)), opp=opp,
+                         ball=rng.uniform((-50.0, -32.0), (50.0, 32.0)), ball_vel=rng.uniform(-2.5, 2.5, 2),
+                         own_vel=rng.uniform(-0.5, 0.5, (11, 2)), opp_vel=rng.uniform(-0.5, 0.5, (11, 2)))
+        full, cheap = ball_race(MODEL, view), ball_race(MODEL, view, their_first_only=True)
+        assert cheap.theirs.first == full.theirs.first
+        assert cheap.theirs.first_cycle == full.theirs.first_cycle
+        if full.theirs.first >= 0:
+            assert np.array_equal(cheap.theirs.points[full.theirs.first], full.theirs.points[full.theirs.first])
+        assert np.array_equal(cheap.ours.cycles, full.ours.cycles)
+        assert np.array_equal(cheap.ours.points, full.ours.points)
+
+
 def test_ball_race_keeps_the_checked_inputs_of_views_sliced_from_a_buffer() -> None:
     """A match's view arrays are rows of its own (P + 1, 2) buffers (the ball is the last row);
     the race still recognises them from one cycle to the next and reuses its checked inputs,
