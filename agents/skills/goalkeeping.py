@@ -23,6 +23,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+from numba import njit
 
 from agents.skills.clearing import ClearParams, best_clearance
 from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, float_array
@@ -66,20 +67,30 @@ def guard_xy(model: MotionModel, bx: float, by: float, params: GoalieParams = Go
     """:func:`guard_position` for a ball at (``bx``, ``by``), two finite floats, as a tuple
     (the per-cycle form: no array made)."""
     gx = -model.half_length
-    dx, dy = bx - gx, by
-    dist = math.hypot(dx, dy)
+    dx = bx - gx
+    # Python's hypot (correctly rounded) here, the rest compiled: the same point to the bit.
+    return _guard_kernel(math.hypot(dx, by), dx, by, gx, params.near, params.far, params.depth_far,
+                         params.ball_gap, model.goal_area_length, model.goal_area_half_width)
+
+
+@njit(cache=True, nogil=True)
+def _guard_kernel(dist: float, dx: float, dy: float, gx: float, near: float, far: float, depth_far: float,
+                  ball_gap: float, area_length: float, area_half_width: float) -> tuple[float, float]:  # pragma: no cover
+    """The guard point on the segment from the goal centre (``gx``, 0) towards the ball (``dx``,
+    ``dy`` from it, ``dist`` away): deeper the nearer the ball, inside the goal area, short of
+    the ball."""
     if dist < 1e-9:
         return gx, 0.0
     ux, uy = dx / dist, dy / dist
     if ux < 0.0:  # a ball behind our goal line (out of play): stay on the line, on its side
         ux, uy = 0.0, (1.0 if uy >= 0.0 else -1.0)
-    share = min(max((params.far - dist) / max(params.far - params.near, 1e-9), 0.0), 1.0)
-    depth = params.depth_far + share * (model.goal_area_length - params.depth_far)
+    share = min(max((far - dist) / max(far - near, 1e-9), 0.0), 1.0)
+    depth = depth_far + share * (area_length - depth_far)
     if ux > 1e-9:
-        depth = min(depth, model.goal_area_length / ux)
+        depth = min(depth, area_length / ux)
     if abs(uy) > 1e-9:
-        depth = min(depth, model.goal_area_half_width / abs(uy))
-    depth = max(0.0, min(depth, dist - params.ball_gap))
+        depth = min(depth, area_half_width / abs(uy))
+    depth = max(0.0, min(depth, dist - ball_gap))
     return gx + ux * depth, uy * depth
 
 
