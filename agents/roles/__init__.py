@@ -15,7 +15,8 @@ cycles of 100 ms.
 
 * ``players`` (k, 2) and ``targets`` (k, 2) float64: the k outfield players' positions and
   the k outfield roles' targets (row r = role r), 1 <= k; the same k as ``reset``;
-* ``role_order`` (k,): role indices most offensive first (:func:`offensive_order`);
+* ``role_order`` (k,): role indices most offensive first (:func:`offensive_order`); an
+  assigner that ignores it sets ``uses_role_order = False`` and may then be given None;
 * ``previous`` (k,): last cycle's ``role_of_player`` or None;
 * ``context`` (:class:`RoleContext`): ball (the predicted control point, if the team has
   one), goals, opponents, field size, penalty area, cycle and whether we attack;

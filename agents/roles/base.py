@@ -104,6 +104,9 @@ class RoleAssigner(ABC):
     """Roles (= players) per call, set by :meth:`reset`."""
     rng: np.random.Generator | None = None
     """The team's seeded generator, set by :meth:`reset`: the only source of randomness."""
+    uses_role_order: bool = True
+    """Whether :meth:`assign` looks at ``role_order``; an assigner that does not says so, and a
+    team may then pass None instead of working the order out every cycle."""
 
     def reset(self, n_roles: int, rng: np.random.Generator) -> None:
         """A new match with ``n_roles`` roles (and as many players); ``rng`` is the team's
@@ -123,7 +126,8 @@ class RoleAssigner(ABC):
         Args:
             players: (k, 2) float64 outfield player positions.
             targets: (k, 2) float64 role target positions (row r: role r's target).
-            role_order: (k,) role indices, most offensive first (:func:`offensive_order`).
+            role_order: (k,) role indices, most offensive first (:func:`offensive_order`); may
+                be None for an assigner whose ``uses_role_order`` is False.
             previous: (k,) last cycle's ``role_of_player``, or None on the first cycle.
             context: the rest of the situation.
 

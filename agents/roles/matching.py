@@ -26,6 +26,7 @@ class StaticAssigner(RoleAssigner):
     """Player i always takes role i."""
 
     name = "static"
+    uses_role_order = False
 
     def assign(self, players: np.ndarray, targets: np.ndarray, role_order: np.ndarray,
                previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
@@ -36,6 +37,7 @@ class MethodAssigner(RoleAssigner):
     """An assignment method of :mod:`agents.assignment` (``method``) on player-target distances."""
 
     METHODS = ("greedy", "mmdr", "mmd+msd2", "msd", "msd2")
+    uses_role_order = False
 
     def __init__(self, method: str) -> None:
         if method not in self.METHODS:
@@ -69,6 +71,7 @@ class RandomAssigner(RoleAssigner):
     """A uniformly random permutation, drawn anew from the team's generator every call."""
 
     name = "random"
+    uses_role_order = False
 
     def assign(self, players: np.ndarray, targets: np.ndarray, role_order: np.ndarray,
                previous: np.ndarray | None, context: RoleContext) -> np.ndarray:

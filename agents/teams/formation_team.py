@@ -41,7 +41,7 @@ from numba import njit
 
 import formations
 from agents import skills
-from agents.roles import RoleContext, make_assigner, offensive_order
+from agents.roles import RoleAssigner, RoleContext, make_assigner, offensive_order
 from agents.skills.passing import offside_line
 from formations.formation_set import Situation
 from soccer_sim.config import MatchConfig
@@ -103,6 +103,8 @@ class FormationTeam:
         self.style = style or TeamStyle()
         self.assigner_name = assigner
         self.assigner = make_assigner(assigner, **assigner_params)
+        self._steers = type(self.assigner).steer is not RoleAssigner.steer
+        """Whether the assigner moves players elsewhere than their role targets (bidding)."""
         self.name = name or assigner
         self.formation_set = formations.load_builtin(self.style.system)
         kinds = [role.kind for role in self.formation_set.roles]
@@ -274,22 +276,24 @@ class FormationTeam:
             context.opponents = view.opp_pos
             context.cycle = view.cycle
             context.attacking = self._situation == Situation.ATTACK
-            order = offensive_order(role_targets)
-            role_of_player = self.assigner.assign(players, role_targets, order, self.role_of_player, context)
-            goals = self.assigner.steer(players, role_targets, role_of_player, context)
-        if view.play_mode == _PLAY_ON:
-            previous = self.role_of_player if self.role_of_player is not None else role_of_player
-            switches, mean, largest, unfilled = _role_figures(players, role_targets, role_of_player, previous,
-                                                              self.style.unfilled_distance)
-            self._switches += switches
+            assigner = self.assigner
+            order = offensive_order(role_targets) if assigner.uses_role_order else None
+            role_of_player = assigner.assign(players, role_targets, order, self.role_of_player, context)
+            # An assigner that keeps the default steer sends each player to its role's target:
+            # the kernel below places those goals itself.
+            goals = assigner.steer(players, role_targets, role_of_player, context) if self._steers else None
+        previous = self.role_of_player if self.role_of_player is not None else role_of_player
+        measured = view.play_mode == _PLAY_ON
+        switches, mean, largest, unfilled = _settle_roles(self.goals, self.outfield, role_targets, role_of_player,
+                                                          goals, players, previous, self.style.unfilled_distance,
+                                                          measured)
+        self._switches += switches
+        if measured:
             self._cycles += 1
             self._distance_sum += mean
             self._makespan_sum += largest
             self._unfilled_role_cycles += unfilled
-        elif self.role_of_player is not None:
-            self._switches += int(np.count_nonzero(role_of_player != self.role_of_player))
         self.role_of_player = role_of_player
-        self.goals[outfield] = goals
         if self.goalie >= 0:
             ball = view.ball
             self.goals[self.goalie] = skills.guard_xy(self.model, float(ball[0]), float(ball[1]))
@@ -466,22 +470,33 @@ class FormationTeam:
 
 
 @njit(cache=True, nogil=True)
-def _role_figures(players: np.ndarray, targets: np.ndarray, role_of_player: np.ndarray, previous: np.ndarray,
-                  unfilled: float) -> tuple[int, float, float, int]:  # pragma: no cover - compiled
-    """One cycle's figures: role switches since ``previous``, the mean and the largest distance
-    from a player to its role's target, and the roles whose player is farther than ``unfilled``."""
+def _settle_roles(goals: np.ndarray, rows: np.ndarray, targets: np.ndarray, role_of_player: np.ndarray,
+                  steered: np.ndarray | None, players: np.ndarray, previous: np.ndarray, unfilled: float,
+                  measured: bool) -> tuple[int, float, float, int]:  # pragma: no cover - compiled
+    """Write the outfield players' goals (row ``rows[i]`` of ``goals``: ``steered[i]``, or its
+    role's target when ``steered`` is None) and return the cycle's figures: role switches
+    since ``previous``, and when ``measured`` the mean and the largest distance from a player
+    to its role's target and the roles whose player is farther than ``unfilled`` (zeros when
+    not measured)."""
     k = players.shape[0]
     switches, total, largest, far = 0, 0.0, 0.0, 0
     for i in range(k):
-        if role_of_player[i] != previous[i]:
-            switches += 1
         t = role_of_player[i]
-        d = math.hypot(players[i, 0] - targets[t, 0], players[i, 1] - targets[t, 1])
-        total += d
-        if d > largest:
-            largest = d
-        if d > unfilled:
-            far += 1
+        if steered is None:
+            goals[rows[i], 0] = targets[t, 0]
+            goals[rows[i], 1] = targets[t, 1]
+        else:
+            goals[rows[i], 0] = steered[i, 0]
+            goals[rows[i], 1] = steered[i, 1]
+        if t != previous[i]:
+            switches += 1
+        if measured:
+            d = math.hypot(players[i, 0] - targets[t, 0], players[i, 1] - targets[t, 1])
+            total += d
+            if d > largest:
+                largest = d
+            if d > unfilled:
+                far += 1
     return switches, total / max(k, 1), largest, far
 
 

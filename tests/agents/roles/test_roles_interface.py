@@ -126,3 +126,21 @@ def test_context_defaults_are_rcssserver_penalty_area() -> None:
     assert isinstance(ctx, RoleContext)
     assert ctx.penalty_area_length == 16.5 and ctx.penalty_area_half_width == pytest.approx(40.32 / 2)
     assert at_cycle(ctx, 9).cycle == 9
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_an_assigner_that_ignores_the_role_order_says_so(name: str) -> None:
+    """Where ``uses_role_order`` is False, the answer is the same for any order and for None
+    (the team then skips working it out); where it is True, the order matters somewhere."""
+    rng = np.random.default_rng(3)
+    differs = False
+    for cycle in range(30):
+        players, targets = random_field_points(rng, 6), random_field_points(rng, 6)
+        ctx = context(ball=random_field_points(rng, 1)[0], cycle=0)
+        answers = []
+        for order in (offensive_order(targets), rng.permutation(6), None):
+            if order is None and make_assigner(name).uses_role_order:
+                continue
+            answers.append(ready(name, 6, seed=1).assign(players, targets, order, None, ctx).tolist())
+        differs |= any(a != answers[0] for a in answers)
+    assert differs == make_assigner(name).uses_role_order
