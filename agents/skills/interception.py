@@ -31,7 +31,6 @@ last position on the field.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
@@ -58,8 +57,7 @@ class Interception(NamedTuple):
     first_cycle: int
 
 
-@dataclass(frozen=True)
-class BallRace:
+class BallRace(NamedTuple):
     """Both teams' interceptions of the same ball (see :func:`ball_race`)."""
 
     ours: Interception
@@ -211,11 +209,17 @@ def ball_race(model: MotionModel, view: object, eligible: np.ndarray | None = No
         mask = eligible if type(eligible) is np.ndarray else np.asarray(eligible)
         if mask.shape != (n,) or mask.dtype != np.bool_:
             raise SkillInputError(f"eligible must be a ({n},) bool array, got {mask.dtype} {mask.shape}")
+    tables = model.__dict__.get("_race_tables")
+    if tables is None:  # the model's tables and both sides' kernel parameters, gathered once
+        tables = model.__dict__["_race_tables"] = (
+            model.reach, model.ball_travel, model.player_coast, _kernel_params(model, -1.0),
+            (_kernel_params(model, 1.0), _kernel_params(model, 1.0, 0, True)))
+    reach, travel, coast, our_params, their_params = tables
     our_cycles, our_points = np.empty((1, n), dtype=np.int64), np.empty((1, n, 2))
     their_cycles, their_points = np.empty((1, m), dtype=np.int64), np.empty((1, m, 2))
     first, first_cycle, their_first, their_first_cycle = _race_kernel(
-        ball, ball_vel, *own, *opp, model.reach, model.ball_travel, model.player_coast, _kernel_params(model, -1.0),
-        _kernel_params(model, 1.0, 0, their_first_only), mask, our_cycles, our_points, their_cycles, their_points)
+        ball, ball_vel, *own, *opp, reach, travel, coast, our_params, their_params[1 if their_first_only else 0],
+        mask, our_cycles, our_points, their_cycles, their_points)
     return BallRace(Interception(our_cycles[0], our_points[0], first, first_cycle),
                     Interception(their_cycles[0], their_points[0], their_first, their_first_cycle))
 
