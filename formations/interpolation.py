@@ -31,6 +31,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numba import njit, types
+from numba.extending import intrinsic
 from scipy.spatial import Delaunay
 
 GRID_CELLS_ALONG_LONG_SIDE = 64
@@ -63,6 +65,7 @@ class TriangleInterpolator:
         self._bary = [tuple(row) for row in transform.reshape(len(transform), 6).tolist()]
         self._build_grid(tri.points)
         self._build_hull(tri)
+        self._build_flat_tables()
 
     # ------------------------------------------------------------------ setup
     def _build_grid(self, points: np.ndarray) -> None:
@@ -149,6 +152,25 @@ class TriangleInterpolator:
                     owner[frozenset(simplex[:k] + simplex[k + 1 :])] = t
         self._edge_triangle = np.array([owner[frozenset(e)] for e in edges.tolist()], dtype=np.intp)
 
+    def _build_flat_tables(self) -> None:
+        """The grid's triangle and edge lists as flat arrays (offsets per cell), for the
+        compiled single query :func:`_value_kernel`."""
+        def flat(lists: list[tuple[int, ...]]) -> tuple[np.ndarray, np.ndarray]:
+            offsets = np.zeros(len(lists) + 1, dtype=np.int64)
+            offsets[1:] = np.cumsum([len(items) for items in lists])
+            items = np.fromiter((i for row in lists for i in row), dtype=np.int64, count=int(offsets[-1]))
+            return offsets, items
+
+        self._cell_offsets, self._cell_triangles = flat(self._cells)
+        self._edge_offsets, self._cell_edge_items = flat(self._cell_edges)
+        self._bary_table = np.ascontiguousarray(self._transform.reshape(len(self._transform), 6))
+        self._grid_table = np.array([self._grid_origin[0], self._grid_origin[1], self._grid_inv_cell])
+        self._edge_starts = np.ascontiguousarray(self._hull_start, dtype=np.float64)
+        self._edge_deltas = np.ascontiguousarray(self._hull_delta, dtype=np.float64)
+        self._edge_inv_length2 = np.ascontiguousarray(self._hull_inv_length2, dtype=np.float64)
+        self._edge_values = np.ascontiguousarray(self._edge_start_values)
+        self._edge_value_deltas = np.ascontiguousarray(self._edge_delta_values)
+
     # ---------------------------------------------------------------- queries
     def find_triangle(self, x: float, y: float) -> int:
         """Index of a triangle containing (x, y), or -1 outside the hull."""
@@ -205,14 +227,17 @@ class TriangleInterpolator:
         return best_edge, best_s
 
     def value(self, x: float, y: float) -> np.ndarray:
-        """Interpolated (m,) value at one point (a new array)."""
+        """Interpolated (m,) value at one point (a new array): one compiled call doing what
+        :meth:`find_triangle` and :meth:`nearest_hull_point` do, then the triangle's affine map
+        or the hull edge's interpolation."""
         if not (math.isfinite(x) and math.isfinite(y)):
             raise ValueError(f"query point must be finite, got ({x}, {y})")
-        t = self.find_triangle(x, y)
-        if t >= 0:
-            return self._affine_list[t] @ np.array((x, y, 1.0))
-        edge, s = self.nearest_hull_point(x, y)
-        return self._edge_start_values[edge] + s * self._edge_delta_values[edge]
+        out = np.empty(self.values.shape[1])
+        nx, ny = self._grid_shape
+        _value_kernel(x, y, self._grid_table, nx, ny, self._cell_offsets, self._cell_triangles, self._bary_table,
+                      self._affine, self._edge_offsets, self._cell_edge_items, self._edge_starts, self._edge_deltas,
+                      self._edge_inv_length2, self._edge_values, self._edge_value_deltas, out)
+        return out
 
     def values_many(self, points: np.ndarray) -> np.ndarray:
         """Interpolated values (k, m) at points (k, 2).
@@ -297,6 +322,70 @@ class TriangleInterpolator:
         edge, s = self.nearest_hull_point(x, y)
         ax, ay, dx, dy, _ = self._hull_list[edge]
         return ax + s * dx, ay + s * dy
+
+
+@intrinsic
+def _fma(typingctx, a, b, c):  # pragma: no cover - compiled
+    """a * b + c with one rounding (the processor's fused multiply-add)."""
+    signature = types.float64(types.float64, types.float64, types.float64)
+
+    def codegen(context, builder, sig, args):
+        return builder.fma(*args)
+
+    return signature, codegen
+
+
+@njit(cache=True, nogil=True)
+def _value_kernel(x: float, y: float, grid: np.ndarray, nx: int, ny: int, cell_offsets: np.ndarray,
+                  cell_triangles: np.ndarray, bary: np.ndarray, affine: np.ndarray, edge_offsets: np.ndarray,
+                  cell_edges: np.ndarray, starts: np.ndarray, deltas: np.ndarray, inv_length2: np.ndarray,
+                  edge_values: np.ndarray, edge_value_deltas: np.ndarray,
+                  out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """:meth:`TriangleInterpolator.value` at (x, y) into ``out``: the triangle of the lookup
+    grid's cell that contains the point (barycentric test with ``INSIDE_TOLERANCE``) and its
+    affine map ``A @ (x, y, 1)``, evaluated as ``fma(A0, x, A1 * y) + A2`` (the order and
+    roundings of the BLAS kernel numpy's matrix product uses on x86-64, so single and many
+    queries agree to the bit there); else the nearest hull edge (the cell's candidates, or
+    every edge outside the grid) and the values interpolated along it."""
+    fx = (x - grid[0]) * grid[2]
+    fy = (y - grid[1]) * grid[2]
+    cell = -1
+    if 0.0 <= fx < nx and 0.0 <= fy < ny:
+        cell = int(fy) * nx + int(fx)
+        for k in range(cell_offsets[cell], cell_offsets[cell + 1]):
+            t = cell_triangles[k]
+            dx = x - bary[t, 4]
+            dy = y - bary[t, 5]
+            b0 = bary[t, 0] * dx + bary[t, 1] * dy
+            if b0 < -INSIDE_TOLERANCE:
+                continue
+            b1 = bary[t, 2] * dx + bary[t, 3] * dy
+            if b1 < -INSIDE_TOLERANCE or b0 + b1 > 1.0 + INSIDE_TOLERANCE:
+                continue
+            for i in range(out.shape[0]):
+                out[i] = _fma(affine[t, i, 0], x, affine[t, i, 1] * y) + affine[t, i, 2]
+            return
+    first, last = (edge_offsets[cell], edge_offsets[cell + 1]) if cell >= 0 else (0, starts.shape[0])
+    best = math.inf
+    best_edge = 0
+    best_s = 0.0
+    for k in range(first, last):
+        e = cell_edges[k] if cell >= 0 else k
+        ax, ay, dx, dy = starts[e, 0], starts[e, 1], deltas[e, 0], deltas[e, 1]
+        s = ((x - ax) * dx + (y - ay) * dy) * inv_length2[e]
+        if s < 0.0:
+            s = 0.0
+        elif s > 1.0:
+            s = 1.0
+        ex = ax + s * dx - x
+        ey = ay + s * dy - y
+        dist2 = ex * ex + ey * ey
+        if dist2 < best:
+            best = dist2
+            best_edge = e
+            best_s = s
+    for i in range(out.shape[0]):
+        out[i] = edge_values[best_edge, i] + best_s * edge_value_deltas[best_edge, i]
 
 
 def _affine_maps(simplices: np.ndarray, transform: np.ndarray, values: np.ndarray) -> np.ndarray:
