@@ -344,9 +344,9 @@ def _value_kernel(x: float, y: float, grid: np.ndarray, nx: int, ny: int, cell_o
     """:meth:`TriangleInterpolator.value` at (x, y) into ``out``: the triangle of the lookup
     grid's cell that contains the point (barycentric test with ``INSIDE_TOLERANCE``) and its
     affine map ``A @ (x, y, 1)``, evaluated as ``fma(A0, x, A1 * y) + A2`` (the order and
-    roundings of the BLAS kernel numpy's matrix product uses on x86-64, so single and many
-    queries agree to the bit there); else the nearest hull edge (the cell's candidates, or
-    every edge outside the grid) and the values interpolated along it."""
+    roundings of the BLAS matrix-vector kernel this query used before it was compiled, on
+    x86-64, so matches did not change); else the nearest hull edge (the cell's candidates,
+    or every edge outside the grid) and the values interpolated along it."""
     fx = (x - grid[0]) * grid[2]
     fy = (y - grid[1]) * grid[2]
     cell = -1
