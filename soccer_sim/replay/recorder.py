@@ -106,7 +106,7 @@ class RerunRecorder:
         self._sizes = tuple(match.state.sizes)
         self._first_cycle = int(match.state.cycle)
         self._log_static(match)
-        self._reset_buffers()
+        self._allocate(sum(self._sizes))
         self._trail_seed = np.repeat(match.state.ball[None, :].astype(np.float32), self.trail, axis=0)
         self._possession = np.zeros(2, dtype=np.int64)
         self._formations: list[Any] = [None, None]
@@ -119,7 +119,7 @@ class RerunRecorder:
 
     def on_cycle(self, match: Match) -> None:
         self._buffer(match)
-        if len(self._cycles) >= self.flush_every:
+        if self._count >= self.flush_every:
             self._flush(match)
 
     def on_end(self, match: Match) -> None:
@@ -130,58 +130,102 @@ class RerunRecorder:
             rec.disconnect()
 
     # ------------------------------------------------------------------ buffering
-    def _reset_buffers(self) -> None:
-        self._cycles: list[int] = []
-        self._pos: list[np.ndarray] = []
-        self._ball: list[np.ndarray] = []
-        self._score: list[np.ndarray] = []
-        self._stamina: list[np.ndarray] = []
-        self._toucher: list[int] = []
+    def _allocate(self, players: int) -> None:
+        """Buffers for ``flush_every`` cycles, written row by row and sent as whole columns."""
+        cap = self.flush_every
+        self._count = 0
+        self._cycles = np.empty(cap, dtype=np.int64)
+        # Rows are written as the match holds them (float64: a plain copy) and converted to
+        # float32 once per block when sent.
+        self._pos = np.empty((cap, players, 2))
+        self._ball = np.empty((cap, 2))
+        self._score = np.empty((cap, 2))
+        self._stamina = np.empty((cap, players))
+        self._toucher = np.empty(cap, dtype=np.int64)
         """Row that last touched the ball in play on, -1 otherwise (possession)."""
-        self._signs: list[list[float]] = [[], []]
-        self._targets: list[list[np.ndarray]] = [[], []]
-        """Role targets as the team drew them (team frame), per cycle."""
-        self._assigned: list[list[np.ndarray | None]] = [[], []]
-        """Each outfield player's role target (team frame), per cycle; None before the first."""
+        self._signs = np.empty((2, cap), dtype=np.float32)
+        self._targets: list[np.ndarray | None] = [None, None]
+        """Per team: role targets as the team drew them (team frame), (cap, roles, 2)."""
+        self._assigned: list[np.ndarray | None] = [None, None]
+        """Per team: each outfield player's role target (team frame), (cap, k, 2)."""
+        self._drawn = np.zeros((2, cap), dtype=np.bool_)
+        """Whether the team had assigned roles (its assigned targets are drawn) in that cycle."""
         self._mesh_changes: list[list[tuple[int, np.ndarray]]] = [[], []]
         """(cycle, closed triangles (t, 4, 2), absolute frame) whenever a team's formation changed."""
 
     def _buffer(self, match: Match) -> None:
         state = match.state
-        self._cycles.append(state.cycle)
-        self._pos.append(state.pos.astype(np.float32))
-        self._ball.append(state.ball.astype(np.float32))
-        self._score.append(state.score.copy())
-        self._stamina.append(state.stamina.astype(np.float32))
-        self._toucher.append(state.last_touch if state.play_mode == PlayMode.PLAY_ON else NO_PLAYER)
-        if self.drawings:
-            for team, draw in self._drawers:
-                drawing = draw()
-                self._signs[team].append(state.home_attacks if team == 0 else -state.home_attacks)
-                self._targets[team].append(drawing["targets"])
-                self._assigned[team].append(drawing.get("assigned_targets"))
-                balls, triangles = drawing.get("formation_balls"), drawing.get("formation_triangles")
-                if balls is not None and triangles is not None:
-                    key = (id(balls), self._signs[team][-1])
-                    if self._formations[team] != key:
-                        self._formations[team] = key
-                        self._mesh_changes[team].append((int(state.cycle), self._mesh(key, balls, triangles)))
+        i = self._count
+        self._cycles[i] = state.cycle
+        self._pos[i] = state.pos
+        self._ball[i] = state.ball
+        self._score[i] = state.score
+        self._stamina[i] = state.stamina
+        self._toucher[i] = state.last_touch if state.play_mode == PlayMode.PLAY_ON else NO_PLAYER
+        for team, draw in self._drawers:
+            drawing = draw()
+            sign = state.home_attacks if team == 0 else -state.home_attacks
+            self._signs[team, i] = sign
+            targets, assigned = drawing["targets"], drawing.get("assigned_targets")
+            held, kept = self._targets[team], self._assigned[team]
+            if (held is not None and held.shape[1:] == targets.shape
+                    and (assigned is None or (kept is not None and kept.shape[1:] == assigned.shape))):
+                held[i] = targets  # the usual case: shapes as before
+                self._drawn[team, i] = assigned is not None
+                if assigned is not None:
+                    kept[i] = assigned
+            else:
+                self._keep_rows(team, targets, assigned, match)
+                i = self._count  # (a change of shape sends what was buffered first)
+            balls, triangles = drawing.get("formation_balls"), drawing.get("formation_triangles")
+            if balls is not None and triangles is not None:
+                key = (id(balls), sign)
+                if self._formations[team] != key:
+                    self._formations[team] = key
+                    self._mesh_changes[team].append((int(state.cycle), self._mesh(key, balls, triangles)))
+        self._count += 1
 
-    # ------------------------------------------------------------------ sending
+    def _keep_rows(self, team: int, targets: np.ndarray, assigned: np.ndarray | None, match: Match) -> None:
+        """Copy a team's drawn targets and assigned targets into this cycle's row; when their
+        shape differs from the buffers', the cycles buffered so far are sent first."""
+        targets = np.asarray(targets)
+        held = self._targets[team]
+        fits = held is not None and held.shape[1:] == targets.shape
+        if assigned is not None:
+            assigned = np.asarray(assigned)
+            kept = self._assigned[team]
+            fits = fits and (kept is None or kept.shape[1:] == assigned.shape)
+        if not fits:
+            if self._count:
+                self._flush(match, keep_current=True)
+            self._targets[team] = np.empty((self.flush_every,) + targets.shape)
+            if assigned is not None:
+                self._assigned[team] = np.empty((self.flush_every,) + assigned.shape)
+        i = self._count
+        self._targets[team][i] = targets
+        self._drawn[team, i] = assigned is not None
+        if assigned is not None:
+            if self._assigned[team] is None:
+                self._assigned[team] = np.empty((self.flush_every,) + assigned.shape)
+            self._assigned[team][i] = assigned
+
     # ------------------------------------------------------------------ sending
     def _times(self, cycles: np.ndarray) -> list[Any]:
         rr = self._rr
         return [rr.TimeColumn("cycle", sequence=cycles),
                 rr.TimeColumn("match_time", duration=cycles * self._seconds)]
 
-    def _flush(self, match: Match) -> None:
-        if not self._cycles:
+    def _flush(self, match: Match, keep_current: bool = False) -> None:
+        """Send the buffered cycles; ``keep_current``: the cycle being buffered (its world
+        already written, its drawings not) stays, moved to the first row."""
+        count = self._count
+        if not count:
             return
         rr, rec = self._rr, self.recording
-        cycles = np.asarray(self._cycles, dtype=np.int64)
+        cycles = self._cycles[:count].copy()
         times = self._times(cycles)
-        count = len(cycles)
-        pos = np.stack(self._pos)
+        # Copies: rerun may read the arrays after this returns, when the buffers hold new cycles.
+        pos = self._pos[:count].astype(np.float32)
         home = self._sizes[0]
         for team, key in enumerate(TEAM_KEYS):
             size = self._sizes[team]
@@ -192,17 +236,17 @@ class RerunRecorder:
                             columns=rr.Points2D.columns(positions=rows.reshape(-1, 2)).partition([size] * count),
                             recording=rec)
         for team, _ in self._drawers:
-            self._send_drawings(team, times, rows_of_team=pos[:, :home] if team == 0 else pos[:, home:])
+            self._send_drawings(team, times, count, rows_of_team=pos[:, :home] if team == 0 else pos[:, home:])
             self._send_meshes(team)
-        ball = np.stack(self._ball)
+        ball = self._ball[:count].astype(np.float32)
         rr.send_columns("world/ball", indexes=times, columns=rr.Points2D.columns(positions=ball), recording=rec)
         history = np.concatenate([self._trail_seed, ball])
         strips = np.stack([history[k:k + count] for k in range(self.trail + 1)], axis=1)
         rr.send_columns("world/ball/trail", indexes=times,
-                        columns=rr.LineStrips2D.columns(strips=strips), recording=rec)
+                        columns=rr.LineStrips2D.columns(strips=line_strips(strips)), recording=rec)
         self._trail_seed = history[-self.trail:]
-        score = np.stack(self._score).astype(np.float64)
-        stamina = np.stack(self._stamina)
+        score = self._score[:count].copy()
+        stamina = self._stamina[:count]
         for team, key in enumerate(TEAM_KEYS):
             rr.send_columns(f"stats/score/{key}", indexes=times, columns=rr.Scalars.columns(scalars=score[:, team]),
                             recording=rec)
@@ -210,7 +254,7 @@ class RerunRecorder:
                 mean = (stamina[:, :home] if team == 0 else stamina[:, home:]).mean(axis=1, dtype=np.float64)
                 rr.send_columns(f"stats/stamina/{key}", indexes=times, columns=rr.Scalars.columns(scalars=mean),
                                 recording=rec)
-        toucher = np.asarray(self._toucher)
+        toucher = self._toucher[:count].copy()
         home_has = np.cumsum((toucher >= 0) & (toucher < home)) + self._possession[0]
         away_has = np.cumsum(toucher >= home) + self._possession[1]
         self._possession[:] = home_has[-1], away_has[-1]
@@ -219,23 +263,29 @@ class RerunRecorder:
         rr.send_columns("stats/possession/home", indexes=times, columns=rr.Scalars.columns(scalars=share),
                         recording=rec)
         self._send_events(match)
-        self._reset_buffers()
+        self._count = 0
+        if keep_current:  # the row being written moves to the front
+            rows = [self._cycles, self._pos, self._ball, self._score, self._stamina, self._toucher]
+            rows += [b for b in self._targets + self._assigned if b is not None]
+            for buffer in rows:
+                buffer[0] = buffer[count]
+            self._signs[:, 0] = self._signs[:, count]
+            self._drawn[:, 0] = self._drawn[:, count]
 
-    def _send_drawings(self, team: int, times: list[Any], rows_of_team: np.ndarray) -> None:
+    def _send_drawings(self, team: int, times: list[Any], count: int, rows_of_team: np.ndarray) -> None:
         """The role targets and the player-to-target arrows of the buffered cycles, mirrored
         from the team's frame into the absolute frame."""
         rr, key = self._rr, TEAM_KEYS[team]
-        signs = np.asarray(self._signs[team], dtype=np.float32)[:, None, None]
-        targets = np.stack(self._targets[team]).astype(np.float32) * signs
-        count, roles = targets.shape[:2]
+        signs = self._signs[team, :count, None, None]
+        targets = self._targets[team][:count].astype(np.float32) * signs
+        roles = targets.shape[1]
         rr.send_columns(f"world/{key}/roles/targets", indexes=times,
                         columns=rr.Points2D.columns(positions=targets.reshape(-1, 2)).partition([roles] * count),
                         recording=self.recording)
-        assigned = self._assigned[team]
-        drawn = np.array([a is not None for a in assigned])
+        drawn = self._drawn[team, :count]
         lengths = np.zeros(count, dtype=np.int64)
         if drawn.any():
-            ends = np.stack([a for a in assigned if a is not None]).astype(np.float32) * signs[drawn]
+            ends = self._assigned[team][:count][drawn].astype(np.float32) * signs[drawn]
             starts = rows_of_team[drawn][:, self._outfield[team][:ends.shape[1]]]
             lengths[drawn] = ends.shape[1]
             origins, vectors = starts.reshape(-1, 2), (ends - starts).reshape(-1, 2)
@@ -307,8 +357,23 @@ class RerunRecorder:
         cycles = np.array([cycle for cycle, _ in changes], dtype=np.int64)
         strips = np.concatenate([mesh for _, mesh in changes])
         rr.send_columns(f"world/{TEAM_KEYS[team]}/roles/triangulation", indexes=self._times(cycles),
-                        columns=rr.LineStrips2D.columns(strips=strips).partition([len(m) for _, m in changes]),
+                        columns=rr.LineStrips2D.columns(strips=line_strips(strips)).partition(
+                            [len(m) for _, m in changes]),
                         recording=self.recording)
+        changes.clear()
+
+
+def line_strips(strips: np.ndarray) -> Any:
+    """(k, length, 2) strips of equal length as rerun's line-strip Arrow array, built in one
+    go (rerun's own conversion walks the strips one by one in Python)."""
+    import pyarrow as pa
+    from rerun.components import LineStrip2DBatch
+    from rerun.encodings import Vec2DBatch
+
+    k, length = strips.shape[:2]
+    offsets = np.arange(0, (k + 1) * length, length, dtype=np.int32)
+    points = Vec2DBatch(np.ascontiguousarray(strips, dtype=np.float32).reshape(-1, 2)).as_arrow_array()
+    return pa.ListArray.from_arrays(offsets, points, type=LineStrip2DBatch._ARROW_DATATYPE)
 
 
 _EVENT_NAMES = {EventKind.KICK: "kick", EventKind.PASS: "pass", EventKind.SHOT: "shot", EventKind.GOAL: "GOAL",
