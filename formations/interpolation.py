@@ -17,10 +17,12 @@ overhead per call, so single queries instead use
 
 * a uniform grid over the hull's bounding box whose cells list the triangles
   that may overlap them (the one containing the cell centre first), tested
-  with plain float arithmetic on the precomputed inverse barycentric
-  transforms; and
+  on the precomputed inverse barycentric transforms, and the hull edges that
+  may be nearest (for points outside the hull); and
 * one precomputed affine map per triangle, values = A_t @ (x, y, 1), since
-  barycentric interpolation is affine inside a triangle.
+  barycentric interpolation is affine inside a triangle;
+
+all in one compiled call (:func:`_value_kernel`).
 
 Many queries at once use ``find_simplex`` (which amortises its overhead) and
 gathers of the three corner values.
@@ -59,10 +61,7 @@ class TriangleInterpolator:
         self._simplices = simplices
         self._transform = transform
         self._affine = _affine_maps(simplices, transform, self.values)
-        self._affine_list = list(self._affine)
         self._affine_transposed = np.ascontiguousarray(self._affine.transpose(0, 2, 1))
-        # (T00, T01, T10, T11, r0, r1) per triangle as Python floats for the scalar point test.
-        self._bary = [tuple(row) for row in transform.reshape(len(transform), 6).tolist()]
         self._build_grid(tri.points)
         self._build_hull(tri)
         self._build_flat_tables()
@@ -120,10 +119,6 @@ class TriangleInterpolator:
         self._hull_start = start
         self._hull_delta = delta
         self._hull_inv_length2 = 1.0 / length2
-        self._hull_list = [
-            (float(a[0]), float(a[1]), float(d[0]), float(d[1]), float(w))
-            for a, d, w in zip(start, delta, self._hull_inv_length2)
-        ]
         self._edge_start_values = self.values[edges[:, 0]]
         self._edge_delta_values = self.values[edges[:, 1]] - self._edge_start_values
         # Candidate nearest edges per grid cell. Distance to an edge is
@@ -174,57 +169,16 @@ class TriangleInterpolator:
     # ---------------------------------------------------------------- queries
     def find_triangle(self, x: float, y: float) -> int:
         """Index of a triangle containing (x, y), or -1 outside the hull."""
-        ox, oy = self._grid_origin
-        inv = self._grid_inv_cell
-        fx = (x - ox) * inv
-        fy = (y - oy) * inv
         nx, ny = self._grid_shape
-        if not (0.0 <= fx < nx and 0.0 <= fy < ny):
-            return -1  # the grid reaches beyond the hull, so this point is outside
-        bary = self._bary
-        for t in self._cells[int(fy) * nx + int(fx)]:
-            a, b, c, d, rx, ry = bary[t]
-            dx = x - rx
-            dy = y - ry
-            b0 = a * dx + b * dy
-            if b0 < -INSIDE_TOLERANCE:
-                continue
-            b1 = c * dx + d * dy
-            if b1 < -INSIDE_TOLERANCE or b0 + b1 > 1.0 + INSIDE_TOLERANCE:
-                continue
-            return t
-        return -1
+        return _find_triangle_kernel(x, y, self._grid_table, nx, ny, self._cell_offsets, self._cell_triangles,
+                                     self._bary_table)[1]
 
     def nearest_hull_point(self, x: float, y: float) -> tuple[int, float]:
         """Nearest hull edge to (x, y) and the position s in [0, 1] along it."""
-        ox, oy = self._grid_origin
-        inv = self._grid_inv_cell
-        fx = (x - ox) * inv
-        fy = (y - oy) * inv
         nx, ny = self._grid_shape
-        if 0.0 <= fx < nx and 0.0 <= fy < ny:
-            candidates = self._cell_edges[int(fy) * nx + int(fx)]
-        else:
-            candidates = range(len(self._hull_list))
-        hull = self._hull_list
-        best = math.inf
-        best_edge = 0
-        best_s = 0.0
-        for k in candidates:
-            ax, ay, dx, dy, inv_length2 = hull[k]
-            s = ((x - ax) * dx + (y - ay) * dy) * inv_length2
-            if s < 0.0:
-                s = 0.0
-            elif s > 1.0:
-                s = 1.0
-            ex = ax + s * dx - x
-            ey = ay + s * dy - y
-            dist2 = ex * ex + ey * ey
-            if dist2 < best:
-                best = dist2
-                best_edge = k
-                best_s = s
-        return best_edge, best_s
+        cell = _grid_cell(x, y, self._grid_table, nx, ny)
+        return _nearest_edge_kernel(x, y, cell, self._edge_offsets, self._cell_edge_items, self._edge_starts,
+                                    self._edge_deltas, self._edge_inv_length2)
 
     def value(self, x: float, y: float) -> np.ndarray:
         """Interpolated (m,) value at one point (a new array): one compiled call doing what
@@ -292,7 +246,7 @@ class TriangleInterpolator:
         cell_xy = np.floor((points - self._grid_origin_array) * self._grid_inv_cell).astype(np.intp)
         in_grid = (cell_xy[:, 0] >= 0) & (cell_xy[:, 0] < nx) & (cell_xy[:, 1] >= 0) & (cell_xy[:, 1] < ny)
         cell = np.where(in_grid, cell_xy[:, 1] * nx + cell_xy[:, 0], 0)
-        count = np.where(in_grid, self._cell_edge_count[cell], len(self._hull_list))
+        count = np.where(in_grid, self._cell_edge_count[cell], len(self._hull_start))
         best_edge = np.zeros(k, dtype=np.intp)
         best_s = np.zeros(k, dtype=np.float64)
         best_d2 = np.full(k, np.inf)
@@ -320,7 +274,7 @@ class TriangleInterpolator:
         if self.find_triangle(x, y) >= 0:
             return x, y
         edge, s = self.nearest_hull_point(x, y)
-        ax, ay, dx, dy, _ = self._hull_list[edge]
+        (ax, ay), (dx, dy) = self._hull_start[edge].tolist(), self._hull_delta[edge].tolist()
         return ax + s * dx, ay + s * dy
 
 
@@ -336,35 +290,47 @@ def _fma(typingctx, a, b, c):  # pragma: no cover - compiled
 
 
 @njit(cache=True, nogil=True)
-def _value_kernel(x: float, y: float, grid: np.ndarray, nx: int, ny: int, cell_offsets: np.ndarray,
-                  cell_triangles: np.ndarray, bary: np.ndarray, affine: np.ndarray, edge_offsets: np.ndarray,
-                  cell_edges: np.ndarray, starts: np.ndarray, deltas: np.ndarray, inv_length2: np.ndarray,
-                  edge_values: np.ndarray, edge_value_deltas: np.ndarray,
-                  out: np.ndarray) -> None:  # pragma: no cover - compiled
-    """:meth:`TriangleInterpolator.value` at (x, y) into ``out``: the triangle of the lookup
-    grid's cell that contains the point (barycentric test with ``INSIDE_TOLERANCE``) and its
-    affine map ``A @ (x, y, 1)``, evaluated as ``fma(A0, x, A1 * y) + A2`` (the order and
-    roundings of the BLAS matrix-vector kernel this query used before it was compiled, on
-    x86-64, so matches did not change); else the nearest hull edge (the cell's candidates,
-    or every edge outside the grid) and the values interpolated along it."""
+def _grid_cell(x: float, y: float, grid: np.ndarray, nx: int, ny: int) -> int:  # pragma: no cover - compiled
+    """The lookup grid's cell holding (x, y), or -1 beyond the grid (``grid``: origin x, y and
+    the inverse cell size)."""
     fx = (x - grid[0]) * grid[2]
     fy = (y - grid[1]) * grid[2]
-    cell = -1
     if 0.0 <= fx < nx and 0.0 <= fy < ny:
-        cell = int(fy) * nx + int(fx)
-        for k in range(cell_offsets[cell], cell_offsets[cell + 1]):
-            t = cell_triangles[k]
-            dx = x - bary[t, 4]
-            dy = y - bary[t, 5]
-            b0 = bary[t, 0] * dx + bary[t, 1] * dy
-            if b0 < -INSIDE_TOLERANCE:
-                continue
-            b1 = bary[t, 2] * dx + bary[t, 3] * dy
-            if b1 < -INSIDE_TOLERANCE or b0 + b1 > 1.0 + INSIDE_TOLERANCE:
-                continue
-            for i in range(out.shape[0]):
-                out[i] = _fma(affine[t, i, 0], x, affine[t, i, 1] * y) + affine[t, i, 2]
-            return
+        return int(fy) * nx + int(fx)
+    return -1
+
+
+@njit(cache=True, nogil=True)
+def _find_triangle_kernel(x: float, y: float, grid: np.ndarray, nx: int, ny: int, cell_offsets: np.ndarray,
+                          cell_triangles: np.ndarray, bary: np.ndarray) -> tuple[int, int]:  # pragma: no cover
+    """(grid cell, triangle) of (x, y): the first of the cell's triangles whose barycentric
+    coordinates (``bary`` rows: the inverse transform's four entries and the reference
+    corner) are all at least ``-INSIDE_TOLERANCE``; triangle -1 when none is (outside the
+    hull), cell -1 beyond the grid."""
+    cell = _grid_cell(x, y, grid, nx, ny)
+    if cell < 0:
+        return cell, -1  # the grid reaches beyond the hull, so this point is outside
+    for k in range(cell_offsets[cell], cell_offsets[cell + 1]):
+        t = cell_triangles[k]
+        dx = x - bary[t, 4]
+        dy = y - bary[t, 5]
+        b0 = bary[t, 0] * dx + bary[t, 1] * dy
+        if b0 < -INSIDE_TOLERANCE:
+            continue
+        b1 = bary[t, 2] * dx + bary[t, 3] * dy
+        if b1 < -INSIDE_TOLERANCE or b0 + b1 > 1.0 + INSIDE_TOLERANCE:
+            continue
+        return cell, t
+    return cell, -1
+
+
+@njit(cache=True, nogil=True)
+def _nearest_edge_kernel(x: float, y: float, cell: int, edge_offsets: np.ndarray, cell_edges: np.ndarray,
+                         starts: np.ndarray, deltas: np.ndarray,
+                         inv_length2: np.ndarray) -> tuple[int, float]:  # pragma: no cover - compiled
+    """The hull edge nearest to (x, y) among the grid cell's candidates (every edge when
+    ``cell`` is -1) and the position s in [0, 1] of the nearest point along it (the first
+    edge among equally near ones)."""
     first, last = (edge_offsets[cell], edge_offsets[cell + 1]) if cell >= 0 else (0, starts.shape[0])
     best = math.inf
     best_edge = 0
@@ -384,8 +350,28 @@ def _value_kernel(x: float, y: float, grid: np.ndarray, nx: int, ny: int, cell_o
             best = dist2
             best_edge = e
             best_s = s
+    return best_edge, best_s
+
+
+@njit(cache=True, nogil=True)
+def _value_kernel(x: float, y: float, grid: np.ndarray, nx: int, ny: int, cell_offsets: np.ndarray,
+                  cell_triangles: np.ndarray, bary: np.ndarray, affine: np.ndarray, edge_offsets: np.ndarray,
+                  cell_edges: np.ndarray, starts: np.ndarray, deltas: np.ndarray, inv_length2: np.ndarray,
+                  edge_values: np.ndarray, edge_value_deltas: np.ndarray,
+                  out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """:meth:`TriangleInterpolator.value` at (x, y) into ``out``: inside the hull the
+    triangle's affine map ``A @ (x, y, 1)``, evaluated as ``fma(A0, x, A1 * y) + A2`` (the
+    order and roundings of the BLAS matrix-vector kernel this query used before it was
+    compiled, on x86-64, so matches did not change); else the values interpolated along the
+    nearest hull edge."""
+    cell, t = _find_triangle_kernel(x, y, grid, nx, ny, cell_offsets, cell_triangles, bary)
+    if t >= 0:
+        for i in range(out.shape[0]):
+            out[i] = _fma(affine[t, i, 0], x, affine[t, i, 1] * y) + affine[t, i, 2]
+        return
+    edge, s = _nearest_edge_kernel(x, y, cell, edge_offsets, cell_edges, starts, deltas, inv_length2)
     for i in range(out.shape[0]):
-        out[i] = edge_values[best_edge, i] + best_s * edge_value_deltas[best_edge, i]
+        out[i] = edge_values[edge, i] + s * edge_value_deltas[edge, i]
 
 
 def _affine_maps(simplices: np.ndarray, transform: np.ndarray, values: np.ndarray) -> np.ndarray:
