@@ -23,11 +23,13 @@ pathfinding benchmarks and :func:`load_voxel_map` their 3-D voxel format.
 
 from __future__ import annotations
 
+import functools
 import itertools
 import os
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 from scipy import ndimage
 
 from .errors import AssignmentError
@@ -75,13 +77,14 @@ class Workspace:
         self.blocked = as_occupancy(grid)
         self.shape = self.blocked.shape
         self.ndim = self.blocked.ndim
-        padded = np.pad(self.blocked, 1, constant_values=True)
+        padded = np.ones(tuple(side + 2 for side in self.shape), dtype=bool)
+        padded[(slice(1, -1),) * self.ndim] = self.blocked
         self.padded_shape = padded.shape
         self.strides = np.array(
             [int(np.prod(padded.shape[axis + 1:])) for axis in range(self.ndim)], dtype=np.int64
         )
         self.moves = _moves(padded, self.strides)
-        self.component, _ = ndimage.label(~padded)
+        self.component = _label_regions(padded, self.strides)
 
     def flat(self, cells: np.ndarray) -> np.ndarray:
         """Flat indices in the padded grid of ``(k, ndim)`` checked cell indices."""
@@ -153,34 +156,94 @@ def as_cells(points: object, name: str, blocked: np.ndarray) -> np.ndarray:
     return np.ascontiguousarray(cells)
 
 
+@functools.lru_cache(maxsize=None)
+def _move_table(ndim: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The 8 (2-D) or 26 (3-D) moves: ``(steps, half-unit costs, boxes)``.
+
+    ``steps`` is ``(k, ndim)``: the coordinate change of each move. Bit ``j`` of
+    ``boxes[m]`` is set when move ``j`` leads to a cell of move ``m``'s box (the cells a
+    move must find free: every non-empty part of its step, the target included).
+    """
+    steps = [d for d in itertools.product((-1, 0, 1), repeat=ndim) if any(d)]
+    costs = [STEP_HALF_COST[sum(map(abs, d))] for d in steps]
+    boxes = []
+    for step in steps:
+        parts = itertools.product(*[(0, d) if d else (0,) for d in step])
+        boxes.append(sum(1 << steps.index(part) for part in parts if any(part)))
+    table = (np.array(steps, dtype=np.int64), np.array(costs, dtype=np.int64), np.array(boxes, dtype=np.uint32))
+    for array in table:
+        array.setflags(write=False)
+    return table
+
+
 def _moves(padded: np.ndarray, strides: np.ndarray) -> Moves:
     """Offsets, costs and per-cell legality of the 8 (2-D) or 26 (3-D) moves of ``padded``.
 
-    Legality is computed with whole-array shifts: a move is legal from a cell
-    when every cell of the box between the cell and the move's target is free
-    (the border of obstacles keeps every move of a free cell inside the array).
+    A move is legal from a cell when every cell of the box between the cell and the
+    move's target is free (the border of obstacles keeps every move of a free cell
+    inside the array).
     """
-    ndim = padded.ndim
-    free = ~padded
-    flat_free = free.ravel()
-    size = flat_free.size
-    steps = [d for d in itertools.product((-1, 0, 1), repeat=ndim) if any(d)]
-    offsets = np.array([int(np.dot(d, strides)) for d in steps], dtype=np.int64)
-    costs = np.array([STEP_HALF_COST[int(np.count_nonzero(d))] for d in steps], dtype=np.int64)
-    allowed = np.zeros(size, dtype=np.uint32)
-    # Inner cells only: the border is an obstacle and no free cell lies on it.
-    lo = int(strides.sum())
-    hi = size - lo
-    for bit, step in enumerate(steps):
-        ok = flat_free[lo:hi].copy()
-        axes = [a for a in range(ndim) if step[a]]
-        for subset in itertools.product((0, 1), repeat=len(axes)):
-            if not any(subset):
-                continue
-            delta = sum(step[a] * strides[a] for a, use in zip(axes, subset) if use)
-            ok &= flat_free[lo + delta:hi + delta]
-        allowed[lo:hi] |= ok.astype(np.uint32) << np.uint32(bit)
-    return Moves(offsets, costs, allowed)
+    steps, costs, boxes = _move_table(padded.ndim)
+    offsets = steps @ strides
+    free = (~padded).ravel().view(np.uint8)
+    return Moves(offsets, costs.copy(), _allowed_moves(free, int(strides.sum()), offsets, boxes))
+
+
+@njit(cache=True, nogil=True)
+def _allowed_moves(free: np.ndarray, border: int, offsets: np.ndarray,
+                   boxes: np.ndarray) -> np.ndarray:  # pragma: no cover - compiled
+    """Per cell, bit ``m`` set when the cell is free and so is every neighbour of
+    ``boxes[m]`` (neighbours as in ``offsets``). Only cells ``border`` or more from either end
+    have neighbours looked up: no free cell lies on the obstacle border. Unsigned indices
+    (no wrap-around check) and one pass per neighbour and per move, so that the loops can
+    run on vectors.
+    """
+    n = free.shape[0]
+    first = np.uint64(border)
+    around = np.zeros(n, dtype=np.uint32)  # bit k: the neighbour offsets[k] away is free
+    for k in range(offsets.shape[0]):
+        start = np.uint64(border + offsets[k])
+        bit = np.uint32(k)
+        for c in range(n - 2 * border):
+            around[first + np.uint64(c)] |= np.uint32(free[start + np.uint64(c)]) << bit
+    allowed = np.zeros(n, dtype=np.uint32)
+    for m in range(boxes.shape[0]):
+        box = boxes[m]
+        bit = np.uint32(m)
+        for c in range(n):
+            allowed[c] |= np.uint32(((around[c] & box) == box) & (free[c] != 0)) << bit
+    return allowed
+
+
+def _label_regions(padded: np.ndarray, strides: np.ndarray) -> np.ndarray:
+    """Labels (1, 2, ...) of the axis-connected free regions of ``padded``, 0 on obstacles."""
+    return _flood_labels((~padded).ravel().view(np.uint8), strides).reshape(padded.shape)
+
+
+@njit(cache=True, nogil=True)
+def _flood_labels(free: np.ndarray, strides: np.ndarray) -> np.ndarray:  # pragma: no cover - compiled
+    """Label each free cell with its axis-connected region (a flood fill from each unlabelled
+    free cell in turn); obstacles get 0. The obstacle border keeps every step inside."""
+    labels = np.zeros(free.shape[0], dtype=np.int32)
+    stack = np.empty(free.shape[0], dtype=np.int64)
+    count = 0
+    for seed in range(free.shape[0]):
+        if free[seed] == 0 or labels[seed] != 0:
+            continue
+        count += 1
+        labels[seed] = count
+        stack[0] = seed
+        top = 1
+        while top > 0:
+            top -= 1
+            cell = stack[top]
+            for stride in strides:
+                for nb in (cell - stride, cell + stride):
+                    if free[nb] != 0 and labels[nb] == 0:
+                        labels[nb] = count
+                        stack[top] = nb
+                        top += 1
+    return labels
 
 
 def _map_error(path: str, line: int, message: str) -> AssignmentError:

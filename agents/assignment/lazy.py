@@ -17,10 +17,13 @@ same optimal total:
     assignment is kept between rounds with its dual prices (a shortest
     augmenting path Hungarian method): a pair whose cost rose loses its
     robot, and only those robots are matched again, so a round costs far less
-    than a fresh solve. (For more goals than robots each round is solved
+    than a fresh solve; the rounds, searches included, run in one compiled
+    call (:class:`~agents.assignment.pathcost.SearchPool` keeps every robot's
+    search in arrays). (For more goals than robots each round is solved
     afresh by SciPy's ``linear_sum_assignment``.)
 ``"all-pairs"`` -- the baseline: Dijkstra from each robot until every goal is
-    settled, then the Hungarian method on the full cost matrix.
+    settled (compiled, on the same heap as the A*), then the Hungarian method on
+    the full cost matrix.
 
 Pairs in different free regions of the grid are known unreachable before any
 search (no corner cutting makes reachability the axis-connected labelling); a
@@ -29,15 +32,13 @@ problem without a complete assignment is refused by name.
 
 from __future__ import annotations
 
-from collections import OrderedDict
-
 import numpy as np
 from numba import njit
 from scipy.optimize import linear_sum_assignment
 
 from .errors import AssignmentError
 from .grid import HALF, Workspace
-from .pathcost import UNREACHABLE, ResumableSearch, dijkstra_costs
+from .pathcost import UNREACHABLE, SearchPool, dijkstra_costs, pool_costs
 from .result import AssignmentResult
 
 #: Method names accepted by :func:`assign_on_grid`.
@@ -174,11 +175,27 @@ def _check_regions(workspace: Workspace, robot_cells: np.ndarray, goal_cells: np
 
 def _lower_bounds(robot_cells: np.ndarray, goal_cells: np.ndarray, kind: str) -> np.ndarray:
     """``(n, m)`` lower bounds on the path costs, in grid units."""
-    diff = np.abs(robot_cells[:, None, :] - goal_cells[None, :, :]).astype(np.float64)
-    if kind == "euclidean":
-        return np.sqrt((diff * diff).sum(axis=2))
-    # Obstacle-free cost of the 8/26-connected grid: (max + sum) half units.
-    return (diff.max(axis=2) + diff.sum(axis=2)) * HALF
+    return _bounds(robot_cells, goal_cells, kind == "euclidean")
+
+
+@njit(cache=True, nogil=True)
+def _bounds(robot_cells: np.ndarray, goal_cells: np.ndarray, euclidean: bool) -> np.ndarray:  # pragma: no cover
+    """:func:`_lower_bounds`: the Euclidean distances, or the obstacle-free grid costs
+    ((largest + sum of the coordinate differences) half units)."""
+    n, m, ndim = robot_cells.shape[0], goal_cells.shape[0], robot_cells.shape[1]
+    out = np.empty((n, m))
+    for i in range(n):
+        for j in range(m):
+            total = 0
+            largest = 0
+            squares = 0
+            for axis in range(ndim):
+                d = abs(robot_cells[i, axis] - goal_cells[j, axis])
+                total += d
+                largest = max(largest, d)
+                squares += d * d
+            out[i, j] = np.sqrt(np.float64(squares)) if euclidean else (largest + total) * HALF
+    return out
 
 
 def _solve(costs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -209,74 +226,147 @@ def _all_pairs(workspace: Workspace, robot_flat: np.ndarray, goal_flat: np.ndarr
     return _result(rows, cols, costs, n, "all-pairs", int(reachable.sum()), expanded, 1)
 
 
-class _Searches:
-    """The robots' resumable searches, created on first use, least recently used dropped past a memory budget."""
-
-    def __init__(self, workspace: Workspace, robot_flat: np.ndarray, budget: int) -> None:
-        self._workspace = workspace
-        self._robot_flat = robot_flat
-        self._budget = budget
-        self._live: OrderedDict[int, ResumableSearch] = OrderedDict()
-        self._bytes = 0
-        self.expanded = 0
-
-    def cost(self, robot: int, goal_cell: int) -> int:
-        search = self._live.get(robot)
-        if search is None:
-            search = ResumableSearch(self._workspace, int(self._robot_flat[robot]))
-            self._live[robot] = search
-        else:
-            self._live.move_to_end(robot)
-            self._bytes -= search.nbytes
-        before = search.expanded
-        half = search.cost_to(goal_cell)
-        self.expanded += search.expanded - before
-        self._bytes += search.nbytes
-        while self._bytes > self._budget and len(self._live) > 1:
-            _, dropped = self._live.popitem(last=False)
-            self._bytes -= dropped.nbytes
-        return half
-
-
 def _lazy(workspace: Workspace, robot_flat: np.ndarray, goal_flat: np.ndarray, reachable: np.ndarray,
           bounds: np.ndarray, budget: int) -> GridAssignmentResult:
     """Solve on bounds, search the chosen pairs still on bounds, repeat until all chosen costs are true."""
     n = len(robot_flat)
     costs = np.where(reachable, bounds, np.inf)
     exact = ~reachable
-    searches = _Searches(workspace, robot_flat, budget)
-    pairs = 0
-    rounds = 0
-    square = costs.shape[0] == costs.shape[1]
-    if square:
-        u, v = np.zeros(n), np.zeros(n + 1)
-        col_of_row, row_of_col = np.full(n, -1, dtype=np.int64), np.full(n + 1, -1, dtype=np.int64)
-        free = np.arange(n, dtype=np.int64)
-    while True:
-        if square:
-            if not _augment_rows(costs, u, v, col_of_row, row_of_col, free):
-                raise AssignmentError("no complete assignment exists")  # excluded by the region check
-            rows, cols = np.arange(n), col_of_row.copy()
-        else:
+    pool = SearchPool(workspace, robot_flat, budget)
+    if costs.shape[0] == costs.shape[1]:
+        cols, rounds, pairs, bad_robot, bad_goal = _lazy_square(costs, exact, goal_flat, *pool.arrays)
+        if bad_robot == _NO_ASSIGNMENT:  # excluded by the region check
+            raise AssignmentError("no complete assignment exists")
+        rows = np.arange(n)
+    else:
+        pairs = rounds = 0
+        bad_robot = _NONE
+        while True:
             rows, cols = _solve(costs)
+            rounds += 1
+            pending = ~exact[rows, cols]
+            if not pending.any():
+                break
+            rows_pending, cols_pending = rows[pending], cols[pending]
+            halves = pool.costs_to(rows_pending, goal_flat[cols_pending])
+            if (halves == UNREACHABLE).any():
+                failed = int(np.argmax(halves == UNREACHABLE))
+                bad_robot, bad_goal = int(rows_pending[failed]), int(cols_pending[failed])
+                break
+            costs[rows_pending, cols_pending] = halves * HALF
+            exact[rows_pending, cols_pending] = True
+            pairs += len(rows_pending)
+    if bad_robot >= 0:  # cannot happen within one region; kept as a guard
+        raise AssignmentError(f"goal {bad_goal} cannot be reached from robot {bad_robot}")
+    return _result(rows, cols, costs, n, "lazy", int(pairs), pool.expanded, int(rounds))
+
+
+#: ``_lazy_square``'s failure codes in place of a robot index.
+_NONE = -1
+_NO_ASSIGNMENT = -2
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _settle_pairs(costs: np.ndarray, exact: np.ndarray, rows: np.ndarray, cols: np.ndarray, goal_flat: np.ndarray,
+                  moves: tuple, searches: tuple) -> int:  # pragma: no cover - compiled
+    """Search the true cost of each pair ``(rows[k], cols[k])`` in order and write it into ``costs``
+    (marking it in ``exact``). Returns -1, or the first ``k`` whose goal cannot be reached."""
+    goals = np.empty(rows.shape[0], dtype=np.int64)
+    for k in range(rows.shape[0]):
+        goals[k] = goal_flat[cols[k]]
+    halves = pool_costs(moves, searches, rows, goals)
+    for k in range(rows.shape[0]):
+        if halves[k] < 0:
+            return k
+        costs[rows[k], cols[k]] = halves[k] * HALF
+        exact[rows[k], cols[k]] = True
+    return -1
+
+
+@njit(cache=True, nogil=True)
+def _lazy_square(costs: np.ndarray, exact: np.ndarray, goal_flat: np.ndarray, allowed: np.ndarray,
+                 offsets: np.ndarray, step_costs: np.ndarray, strides: np.ndarray, states: np.ndarray, heaps: object,
+                 record: np.ndarray, totals: np.ndarray, free_slots: np.ndarray, dirty: np.ndarray,
+                 sources: np.ndarray, budget: int) -> tuple:  # pragma: no cover - compiled
+    """The lazy rounds for as many goals as robots, in one compiled call.
+
+    Each round matches the free robots (:func:`_augment_rows`, keeping the prices), searches
+    the chosen pairs still on bounds in robot order and frees their robots. The arguments
+    after ``goal_flat`` are a :class:`SearchPool`'s ``arrays`` (one by one: numba types
+    single arrays far faster than tuples of them). Returns ``(goal of each robot, rounds,
+    pairs searched, robot, goal)``: robot is ``_NONE``, or ``_NO_ASSIGNMENT`` when the
+    matching fails, or the robot whose goal (the last field) cannot be reached.
+    """
+    moves = (allowed, offsets, step_costs, strides)
+    searches = (states, heaps, record, totals, free_slots, dirty, sources, budget)
+    n = costs.shape[0]
+    u, v = np.zeros(n), np.zeros(n + 1)
+    col_of_row = np.full(n, -1, dtype=np.int64)
+    row_of_col = np.full(n + 1, -1, dtype=np.int64)
+    free = np.arange(n)
+    pending = np.empty(n, dtype=np.int64)
+    rounds = pairs = 0
+    while True:
+        if not _augment_rows(costs, u, v, col_of_row, row_of_col, free):
+            return col_of_row, rounds, pairs, _NO_ASSIGNMENT, -1
         rounds += 1
-        pending = ~exact[rows, cols]
-        if not pending.any():
-            break
-        for i, j in zip(rows[pending].tolist(), cols[pending].tolist()):
-            half = searches.cost(i, int(goal_flat[j]))
-            if half == UNREACHABLE:  # cannot happen within one region; kept as a guard
-                raise AssignmentError(f"goal {j} cannot be reached from robot {i}")
-            costs[i, j] = half * HALF
-            exact[i, j] = True
-            pairs += 1
-        if square:
-            # The costs only rose, so the prices stay feasible; the robots of the pairs that
-            # are no longer tight are let go and matched again on the next round.
-            free = rows[pending].astype(np.int64)
-            row_of_col[col_of_row[free]] = -1
-            col_of_row[free] = -1
-    return _result(rows, cols, costs, n, "lazy", pairs, searches.expanded, rounds)
+        count = 0
+        for i in range(n):
+            if not exact[i, col_of_row[i]]:
+                pending[count] = i
+                count += 1
+        if count == 0:
+            return col_of_row, rounds, pairs, _NONE, -1
+        free = pending[:count].copy()
+        cols = col_of_row[free]
+        failed = _settle_pairs(costs, exact, free, cols, goal_flat, moves, searches)
+        if failed >= 0:
+            return col_of_row, rounds, pairs, free[failed], cols[failed]
+        pairs += count
+        # The costs only rose, so the prices stay feasible; the robots of the pairs that
+        # are no longer tight are let go and matched again on the next round.
+        row_of_col[cols] = -1
+        col_of_row[free] = -1
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _relax_row(row_costs: np.ndarray, base: float, v: np.ndarray, shortest: np.ndarray, came_from: np.ndarray,
+               row: int) -> None:  # pragma: no cover - compiled
+    """Lower ``shortest[j]`` to ``base + row_costs[j] - v[j]`` where that is shorter, noting
+    ``row`` as where column ``j`` came from. Selects instead of branches: the loop vectorises."""
+    for j in range(shortest.shape[0]):
+        length = base + row_costs[j] - v[j]
+        shorter = length < shortest[j]
+        came_from[j] = row if shorter else came_from[j]
+        shortest[j] = length if shorter else shortest[j]
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _first_least(values: np.ndarray) -> int:  # pragma: no cover - compiled
+    """Index of the first least of ``values`` (no NaN), -1 if all are ``inf``.
+
+    The minimum is taken in four independent running minima (a single one would make
+    each step wait for the previous comparison), then its first position is looked up.
+    """
+    n = values.shape[0]
+    m0 = m1 = m2 = m3 = np.inf
+    j = 0
+    while j + 4 <= n:
+        m0 = values[j] if values[j] < m0 else m0
+        m1 = values[j + 1] if values[j + 1] < m1 else m1
+        m2 = values[j + 2] if values[j + 2] < m2 else m2
+        m3 = values[j + 3] if values[j + 3] < m3 else m3
+        j += 4
+    while j < n:
+        m0 = values[j] if values[j] < m0 else m0
+        j += 1
+    least = min(min(m0, m1), min(m2, m3))
+    if least == np.inf:
+        return -1
+    j = 0
+    while values[j] != least:
+        j += 1
+    return j
 
 
 @njit(cache=True, nogil=True)
@@ -286,46 +376,55 @@ def _augment_rows(costs: np.ndarray, u: np.ndarray, v: np.ndarray, col_of_row: n
     ``costs[i, j] - u[i] - v[j]``, updating the prices so that every reduced cost stays
     non-negative and every matched pair's is zero: the matching stays a minimum-cost one for
     its rows. Square ``(n, n)`` costs, ``inf`` for forbidden pairs; ``v`` and ``row_of_col``
-    have one extra slot (index n) for the search's root. False if some row cannot be matched.
+    have one extra slot (index n, left alone). False if some row cannot be matched.
+
+    Dijkstra over the columns from the free row: ``shortest[j]`` is the length of the
+    shortest alternating path to column ``j`` found so far. A settled column's price is
+    parked at ``-inf`` during the search (so that no path reaches it again, without a
+    branch in the scan), and every price is updated once the path to a free column is
+    found, by how much shorter than that path each settled column was reached.
     """
     n = costs.shape[1]
-    root = n
-    shortest = np.empty(n + 1)
-    visited = np.zeros(n + 1, dtype=np.bool_)
-    came_from = np.empty(n + 1, dtype=np.int64)
+    shortest = np.empty(n)
+    came_from = np.empty(n, dtype=np.int64)  # the row before each column on its path
+    order = np.empty(n, dtype=np.int64)  # the columns in the order they were settled
+    length_of = np.empty(n)  # and the lengths of their paths
+    price_of = np.empty(n)  # and their prices
     for start in rows:
-        row_of_col[root] = start
         shortest[:] = np.inf
-        visited[:] = False
-        col = root
+        reached = 0.0  # length of the path to the last settled column
+        i = start
+        settled = 0
         while True:
-            visited[col] = True
-            i = row_of_col[col]
-            delta = np.inf
-            nearest = -1
-            for j in range(n):
-                if not visited[j]:
-                    reduced = costs[i, j] - u[i] - v[j]
-                    if reduced < shortest[j]:
-                        shortest[j] = reduced
-                        came_from[j] = col
-                    if shortest[j] < delta:
-                        delta = shortest[j]
-                        nearest = j
+            base = reached - u[i]
+            _relax_row(costs[i], base, v, shortest, came_from, i)
+            nearest = _first_least(shortest)
             if nearest < 0:
+                for k in range(settled):
+                    v[order[k]] = price_of[k]
                 return False
-            for j in range(n + 1):
-                if visited[j]:
-                    u[row_of_col[j]] += delta
-                    v[j] -= delta
-                else:
-                    shortest[j] -= delta
-            col = nearest
-            if row_of_col[col] < 0:
+            reached = shortest[nearest]
+            order[settled] = nearest
+            length_of[settled] = reached
+            price_of[settled] = v[nearest]
+            settled += 1
+            v[nearest] = -np.inf
+            shortest[nearest] = np.inf
+            if row_of_col[nearest] < 0:
                 break
-        while col != root:  # flip the path back to the root
-            previous = came_from[col]
-            row_of_col[col] = row_of_col[previous]
-            col_of_row[row_of_col[col]] = col
-            col = previous
+            i = row_of_col[nearest]
+        u[start] += reached
+        for k in range(settled):  # the sink (last) changes by nothing
+            j = order[k]
+            gain = reached - length_of[k]
+            v[j] = price_of[k] - gain
+            if k < settled - 1:
+                u[row_of_col[j]] += gain
+        j = order[settled - 1]
+        while True:  # flip the path back to the start row
+            i = came_from[j]
+            row_of_col[j] = i
+            j, col_of_row[i] = col_of_row[i], j
+            if i == start:
+                break
     return True

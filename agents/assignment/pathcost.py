@@ -1,23 +1,27 @@
 """Shortest path costs on grid workspaces: full Dijkstra and a resumable A* per robot.
 
 Both searches run compiled (numba) over the flat cell indices of a
-:class:`~agents.assignment.grid.Workspace`'s padded grid, with a binary heap
-of int64 keys and integer half-unit costs (exact, see
-:mod:`agents.assignment.grid`).
+:class:`~agents.assignment.grid.Workspace`'s padded grid, with integer
+half-unit costs (exact, see :mod:`agents.assignment.grid`) and the same binary
+heap: ``(int64 key, cell)`` pairs side by side in one int64 array.
 
 * :func:`dijkstra_costs` settles cells from one source in order of distance
   until every requested target is settled (or the source's region is
   exhausted): the all-pairs baseline runs it once per robot.
-* :class:`ResumableSearch` answers "cost from this robot to that goal" again
-  and again for one robot, never repeating work: the forward resumable A* of
+* :class:`SearchPool` answers "cost from this robot to that goal" again and
+  again for many robots, never repeating work: the forward resumable A* of
   "It Costs to Get Costs! A Heuristic-Based Scalable Goal Assignment Algorithm
-  for Multi-Robot Systems" (after Silver's reverse resumable A*).
+  for Multi-Robot Systems" (after Silver's reverse resumable A*), one search per
+  robot, a whole batch of queries in one compiled call (:func:`pool_costs`).
+  :class:`ResumableSearch` is the search of one robot.
 
 What the resumable search keeps between queries, and why the answers stay exact:
 
-- ``g`` (cost of the best path found so far from the robot to every reached
-  cell), the ``closed`` flags of the cells already expanded, and the open list
-  (a heap of the reached but not expanded cells).
+- One state per cell: 0 if not reached yet, ``g + 1`` if reached but not
+  expanded, ``-(g + 1)`` if expanded, where ``g`` is the cost of the best path
+  found so far from the robot (see :func:`state_dtype`); and the open list (a
+  heap of the reached cells keyed by ``f`` then larger ``g``, with stale
+  entries left behind when a cell's ``g`` improves).
 - The heuristic is ``h(c) = max_i |c_i - t_i| + sum_i |c_i - t_i|`` half units
   for goal ``t``: exactly the obstacle-free path cost on the grid (8- or
   26-connected with the costs above), hence admissible, and consistent
@@ -33,13 +37,16 @@ What the resumable search keeps between queries, and why the answers stay exact:
   continues: the standard A* argument (the first unexpanded cell on an
   optimal path to the popped cell has an exact ``g`` and no larger ``f``)
   only needs these two facts, not that the earlier expansions followed
-  ``h_new``. A goal already expanded is answered at once from ``g``.
+  ``h_new``. A goal already expanded is answered at once from its state.
 """
 
 from __future__ import annotations
 
+import mmap
+
 import numpy as np
 from numba import njit
+from numba.typed import List
 
 from .grid import Workspace
 
@@ -50,80 +57,131 @@ _G_MASK = (1 << _G_BITS) - 1
 
 
 @njit(cache=True, nogil=True)
-def _sift_down(keys, cells, start, size):
-    """Restore the heap below position ``start`` (min-heap on ``keys``)."""
+def _sift_down(heap, start, size):
+    """Restore the heap below entry ``start`` (a min-heap on the keys)."""
     pos = start
-    key = keys[pos]
-    cell = cells[pos]
+    key = heap[2 * pos]
+    value = heap[2 * pos + 1]
     while True:
         child = 2 * pos + 1
         if child >= size:
             break
-        if child + 1 < size and keys[child + 1] < keys[child]:
+        if child + 1 < size and heap[2 * child + 2] < heap[2 * child]:
             child += 1
-        if keys[child] >= key:
+        if heap[2 * child] >= key:
             break
-        keys[pos] = keys[child]
-        cells[pos] = cells[child]
+        heap[2 * pos] = heap[2 * child]
+        heap[2 * pos + 1] = heap[2 * child + 1]
         pos = child
-    keys[pos] = key
-    cells[pos] = cell
+    heap[2 * pos] = key
+    heap[2 * pos + 1] = value
 
 
 @njit(cache=True, nogil=True)
-def _push(keys, cells, size, key, cell):
-    """Push ``(key, cell)``; returns the (possibly grown) arrays and the new size."""
-    if size == keys.shape[0]:
-        bigger_keys = np.empty(2 * size + 16, dtype=np.int64)
-        bigger_cells = np.empty(2 * size + 16, dtype=np.int64)
-        bigger_keys[:size] = keys[:size]
-        bigger_cells[:size] = cells[:size]
-        keys = bigger_keys
-        cells = bigger_cells
+def _grown(heap, size):
+    """A copy of ``heap``'s ``size`` entries with room for as many again (and a few)."""
+    bigger = np.empty(4 * size + 32, dtype=np.int64)
+    bigger[:2 * size] = heap[:2 * size]
+    return bigger
+
+
+@njit(cache=True, nogil=True)
+def _push(heap, size, key, value):
+    """Add ``(key, value)`` to a heap with room for it; returns the new size.
+
+    The caller makes the room (``heap = _grown(heap, size)`` when ``2 * size`` fills it):
+    returning no array, the hot loops take and drop no references.
+    """
     pos = size
     while pos > 0:
         parent = (pos - 1) >> 1
-        if keys[parent] <= key:
+        if heap[2 * parent] <= key:
             break
-        keys[pos] = keys[parent]
-        cells[pos] = cells[parent]
+        heap[2 * pos] = heap[2 * parent]
+        heap[2 * pos + 1] = heap[2 * parent + 1]
         pos = parent
-    keys[pos] = key
-    cells[pos] = cell
-    return keys, cells, size + 1
+    heap[2 * pos] = key
+    heap[2 * pos + 1] = value
+    return size + 1
 
 
 @njit(cache=True, nogil=True)
-def _pop(keys, cells, size):
-    """Remove the smallest entry; returns ``(key, cell, new size)``."""
-    key = keys[0]
-    cell = cells[0]
+def _pop(heap, size):
+    """Remove the entry of the smallest key; returns ``(key, value, new size)``."""
+    key = heap[0]
+    value = heap[1]
     size -= 1
     if size > 0:
-        keys[0] = keys[size]
-        cells[0] = cells[size]
-        _sift_down(keys, cells, 0, size)
-    return key, cell, size
+        heap[0] = heap[2 * size]
+        heap[1] = heap[2 * size + 1]
+        _sift_down(heap, 0, size)
+    return key, value, size
 
 
 @njit(cache=True, nogil=True)
-def _heuristic(cell, goal, strides):
-    """Obstacle-free grid distance in half units between flat cells ``cell`` and ``goal``."""
+def _coordinates(cell, strides, out):
+    """Write the coordinates in the padded grid of flat cell ``cell`` into ``out`` (one per axis)."""
+    last = strides.shape[0] - 1
+    for axis in range(last):
+        q = cell // strides[axis]
+        out[axis] = q
+        cell -= q * strides[axis]
+    out[last] = cell  # the last stride is 1
+
+
+@njit(cache=True, nogil=True)
+def _heuristic(cell, goal_at, strides):
+    """Obstacle-free grid distance in half units from flat cell ``cell`` to the goal at coordinates ``goal_at``."""
     total = 0
     largest = 0
-    a = cell
-    b = goal
-    for axis in range(strides.shape[0]):
-        s = strides[axis]
-        qa = a // s
-        qb = b // s
-        a -= qa * s
-        b -= qb * s
-        d = abs(qa - qb)
+    last = strides.shape[0] - 1
+    for axis in range(last + 1):
+        if axis < last:
+            q = cell // strides[axis]
+            cell -= q * strides[axis]
+        else:
+            q = cell  # the last stride is 1
+        d = abs(q - goal_at[axis])
         total += d
         if d > largest:
             largest = d
     return total + largest
+
+
+#: What a search step returns when the open list may lack room for the next cell's moves.
+_NEEDS_ROOM = -2
+
+
+@njit(cache=True, nogil=True)
+def _settle(allowed, offsets, costs, dist, done, wanted, heap, size, remaining):
+    """Dijkstra's loop: settle cells until no wanted cell ``remains``, the heap empties, or
+    it may lack room for the next cell's moves (then ``remaining`` comes back as is, with
+    ``_NEEDS_ROOM`` as the first value). The heap is never reallocated here, so the loop
+    takes no references. Returns ``(_NEEDS_ROOM or 0, size, remaining, cells settled)``.
+    """
+    settled = 0
+    moves = offsets.shape[0]
+    room = heap.shape[0] // 2 - moves
+    while size > 0 and remaining > 0:
+        if size > room:
+            return _NEEDS_ROOM, size, remaining, settled
+        key, cell, size = _pop(heap, size)
+        d = key >> 32
+        if done[cell]:
+            continue
+        done[cell] = 1
+        settled += 1
+        if wanted[cell]:
+            remaining -= 1
+        mask = allowed[cell]
+        for m in range(moves):
+            if (mask >> m) & 1:
+                nb = cell + offsets[m]
+                nd = d + costs[m]
+                if done[nb] == 0 and (dist[nb] < 0 or nd < dist[nb]):
+                    dist[nb] = nd
+                    size = _push(heap, size, (nd << 32) | nb, nb)
+    return 0, size, remaining, settled
 
 
 @njit(cache=True, nogil=True)
@@ -141,30 +199,16 @@ def _dijkstra(allowed, offsets, costs, source, targets):
         if wanted[t] == 0:
             wanted[t] = 1
             remaining += 1
-    keys = np.empty(1024, dtype=np.int64)
-    dummy = np.empty(1024, dtype=np.int64)
+    heap = np.empty(2048, dtype=np.int64)
     dist[source] = 0
-    keys, dummy, size = _push(keys, dummy, 0, np.int64(source), np.int64(0))
+    size = _push(heap, 0, np.int64(source), source)
     settled = 0
-    moves = offsets.shape[0]
-    while size > 0 and remaining > 0:
-        key, _unused, size = _pop(keys, dummy, size)
-        cell = key & 0xFFFFFFFF
-        d = key >> 32
-        if done[cell]:
-            continue
-        done[cell] = 1
-        settled += 1
-        if wanted[cell]:
-            remaining -= 1
-        mask = allowed[cell]
-        for m in range(moves):
-            if (mask >> m) & 1:
-                nb = cell + offsets[m]
-                nd = d + costs[m]
-                if done[nb] == 0 and (dist[nb] < 0 or nd < dist[nb]):
-                    dist[nb] = nd
-                    keys, dummy, size = _push(keys, dummy, size, (nd << 32) | nb, np.int64(0))
+    while True:
+        status, size, remaining, count = _settle(allowed, offsets, costs, dist, done, wanted, heap, size, remaining)
+        settled += count
+        if status != _NEEDS_ROOM:
+            break
+        heap = _grown(heap, size)
     out = np.empty(targets.shape[0], dtype=np.int64)
     for i in range(targets.shape[0]):
         out[i] = dist[targets[i]] if done[targets[i]] else -1
@@ -172,60 +216,81 @@ def _dijkstra(allowed, offsets, costs, source, targets):
 
 
 @njit(cache=True, nogil=True)
-def _rekey(keys, cells, size, g, closed, goal, strides):
-    """Re-key the open list for a new goal: drop stale and duplicate entries, heapify. Returns the size."""
+def _rekey(heap, size, state, goal_at, strides):
+    """Re-key the open list for the goal at ``goal_at``: drop stale entries, heapify. Returns the size.
+
+    A cell is pushed only when its ``g`` strictly improves, so exactly one entry of an
+    open cell carries its current ``g``: the kept entries are one per open cell.
+    """
     kept = 0
     for i in range(size):
-        cell = cells[i]
-        entry_g = _G_MASK - (keys[i] & _G_MASK)
-        if closed[cell] != 0 or entry_g != g[cell]:
+        cell = heap[2 * i + 1]
+        g = _G_MASK - (heap[2 * i] & _G_MASK)
+        if state[cell] != g + 1:  # expanded since, or a stale entry
             continue
-        closed[cell] = 2  # temporary mark: this cell already has its one entry
-        f = g[cell] + _heuristic(cell, goal, strides)
-        keys[kept] = (f << _G_BITS) | (_G_MASK - g[cell])
-        cells[kept] = cell
+        heap[2 * kept] = ((g + _heuristic(cell, goal_at, strides)) << _G_BITS) | (_G_MASK - g)
+        heap[2 * kept + 1] = cell
         kept += 1
-    for i in range(kept):
-        closed[cells[i]] = 0
     for start in range(kept // 2 - 1, -1, -1):
-        _sift_down(keys, cells, start, kept)
+        _sift_down(heap, start, kept)
     return kept
 
 
 @njit(cache=True, nogil=True)
-def _resume(allowed, offsets, costs, strides, g, closed, keys, cells, size, aim, goal):
-    """Continue one robot's A* until ``goal`` is expanded.
-
-    ``aim`` is the goal the open list's keys were computed for. Returns
-    ``(cost in half units or -1, keys, cells, size, cells expanded)``.
+def _expand(allowed, offsets, costs, strides, state, heap, size, goal, goal_at):
+    """A*'s loop: expand cells until ``goal`` is expanded, the open list empties, or the heap
+    may lack room for the next cell's moves. The heap is never reallocated here, so the
+    loop takes no references. Returns ``(cost in half units, -1 or _NEEDS_ROOM; size;
+    cells expanded)``.
     """
-    if closed[goal]:
-        return g[goal], keys, cells, size, 0
-    if aim != goal:
-        size = _rekey(keys, cells, size, g, closed, goal, strides)
     expanded = 0
     moves = offsets.shape[0]
+    room = heap.shape[0] // 2 - moves
     while size > 0:
-        key, cell, size = _pop(keys, cells, size)
-        if closed[cell]:
-            continue
+        if size > room:
+            return _NEEDS_ROOM, size, expanded
+        key, cell, size = _pop(heap, size)
         gc = _G_MASK - (key & _G_MASK)
-        if gc != g[cell]:
+        if state[cell] != gc + 1:  # expanded already, or a stale entry
             continue
-        closed[cell] = 1
+        state[cell] = -(gc + 1)
         expanded += 1
         mask = allowed[cell]
         for m in range(moves):
             if (mask >> m) & 1:
                 nb = cell + offsets[m]
                 ng = gc + costs[m]
-                if closed[nb] == 0 and (g[nb] < 0 or ng < g[nb]):
-                    g[nb] = ng
-                    f = ng + _heuristic(nb, goal, strides)
-                    keys, cells, size = _push(keys, cells, size, (f << _G_BITS) | (_G_MASK - ng), nb)
+                reached = state[nb]
+                if reached == 0 or ng + 1 < reached:  # never for an expanded cell (negative state)
+                    state[nb] = ng + 1
+                    f = ng + _heuristic(nb, goal_at, strides)
+                    size = _push(heap, size, (f << _G_BITS) | (_G_MASK - ng), nb)
         if cell == goal:
-            return gc, keys, cells, size, expanded
-    return -1, keys, cells, size, expanded
+            return gc, size, expanded
+    return -1, size, expanded
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _resume(allowed, offsets, costs, strides, state, heap, size, aim, goal, goal_at):
+    """Continue one robot's A* until ``goal`` is expanded.
+
+    ``state`` is the search's cell states and ``heap`` its open list (see the module
+    docstring), ``aim`` the goal the open list's keys were computed for; ``goal_at`` is
+    room for the goal's coordinates. Returns ``(cost in half units or -1, heap, size,
+    cells expanded)``.
+    """
+    if state[goal] < 0:
+        return -np.int64(state[goal]) - 1, heap, size, 0
+    _coordinates(goal, strides, goal_at)
+    if aim != goal:
+        size = _rekey(heap, size, state, goal_at, strides)
+    expanded = 0
+    while True:
+        cost, size, count = _expand(allowed, offsets, costs, strides, state, heap, size, goal, goal_at)
+        expanded += count
+        if cost != _NEEDS_ROOM:
+            return cost, heap, size, expanded
+        heap = _grown(heap, size)
 
 
 def dijkstra_costs(workspace: Workspace, source: int, targets: np.ndarray) -> tuple[np.ndarray, int]:
@@ -240,47 +305,262 @@ def dijkstra_costs(workspace: Workspace, source: int, targets: np.ndarray) -> tu
     return out, int(settled)
 
 
+# Columns of a pool's per-robot record, and entries of its totals.
+_SIZE, _AIM, _LAST_USE, _SLOT = 0, 1, 2, 3
+_BYTES, _EXPANDED, _CLOCK, _LIVE_COUNT, _FREE_SLOTS = 0, 1, 2, 3, 4
+#: Entries a new search's open list has room for.
+_FIRST_HEAP = 256
+
+
+@njit(cache=True, nogil=True)
+def _empty_heaps(n):
+    """A typed list of ``n`` empty open lists."""
+    heaps = List()
+    for _ in range(n):
+        heaps.append(np.empty(0, dtype=np.int64))
+    return heaps
+
+
+@njit(cache=True, nogil=True)
+def _held(searches, robot):
+    """Bytes held by ``robot``'s (live) search: its row of cell states and its open list."""
+    return searches[0].shape[1] * searches[0].itemsize + searches[1][robot].nbytes
+
+
+@njit(cache=True, nogil=True)
+def _drop(searches, robot):
+    """Free ``robot``'s search state; its row of cell states goes back to the free rows."""
+    heaps, record, totals, free_slots = searches[1], searches[2], searches[3], searches[4]
+    totals[_BYTES] -= _held(searches, robot)
+    heaps[robot] = np.empty(0, dtype=np.int64)
+    free_slots[totals[_FREE_SLOTS]] = record[robot, _SLOT]
+    totals[_FREE_SLOTS] += 1
+    record[robot, _SLOT] = -1
+    totals[_LIVE_COUNT] -= 1
+
+
+@njit(cache=True, nogil=True)
+def _drop_oldest(searches):
+    """Drop the least recently used live search."""
+    record = searches[2]
+    oldest = -1
+    for other in range(record.shape[0]):
+        if record[other, _SLOT] >= 0 and (oldest < 0 or record[other, _LAST_USE] < record[oldest, _LAST_USE]):
+            oldest = other
+    _drop(searches, oldest)
+
+
+@njit(cache=True, nogil=True)
+def _start(searches, robot):
+    """Start ``robot``'s search in a free row (dropping the least recently used search when
+    none is free: the pool would be over its budget after this query and drop it then)."""
+    states, heaps, record, totals, free_slots, dirty, sources = searches[:7]
+    if totals[_FREE_SLOTS] == 0:
+        _drop_oldest(searches)
+    totals[_FREE_SLOTS] -= 1
+    slot = free_slots[totals[_FREE_SLOTS]]
+    if dirty[slot]:
+        states[slot, :] = 0
+    dirty[slot] = 1
+    source = sources[robot]
+    states[slot, source] = 1  # reached with g = 0
+    heap = np.empty(2 * _FIRST_HEAP, dtype=np.int64)
+    heap[0] = _G_MASK  # f = 0, g = 0
+    heap[1] = source
+    heaps[robot] = heap
+    record[robot, _SIZE] = 1
+    record[robot, _AIM] = source
+    record[robot, _SLOT] = slot
+    totals[_LIVE_COUNT] += 1
+    totals[_BYTES] += _held(searches, robot)
+
+
+@njit(cache=True, nogil=True, inline="always")
+def pool_costs(moves, searches, robots, goals):
+    """Exact half-unit costs (or -1) from each of ``robots`` to the flat cell of ``goals`` at the
+    same place, by each robot's resumable A*, queried in order.
+
+    ``moves`` and ``searches`` are a :class:`SearchPool`'s ``moves`` and ``searches``: compiled
+    code that holds them calls this directly. A robot's search starts on first use; after
+    each query the least recently used searches are dropped while the pool holds more than
+    its budget (never the last one).
+    """
+    allowed, offsets, step_costs, strides = moves
+    states, heaps, record, totals, budget = searches[0], searches[1], searches[2], searches[3], searches[7]
+    out = np.empty(robots.shape[0], dtype=np.int64)
+    goal_at = np.empty(strides.shape[0], dtype=np.int64)
+    for k in range(robots.shape[0]):
+        robot, goal = robots[k], goals[k]
+        if record[robot, _SLOT] < 0:
+            _start(searches, robot)
+        heap = heaps[robot]
+        held = heap.nbytes
+        out[k], heap, size, expanded = _resume(allowed, offsets, step_costs, strides, states[record[robot, _SLOT]],
+                                               heap, record[robot, _SIZE], record[robot, _AIM], goal, goal_at)
+        if heap.nbytes != held:  # the open list grew
+            heaps[robot] = heap
+            totals[_BYTES] += heap.nbytes - held
+        record[robot, _SIZE] = size
+        record[robot, _AIM] = goal
+        record[robot, _LAST_USE] = totals[_CLOCK]
+        totals[_CLOCK] += 1
+        totals[_EXPANDED] += expanded
+        while totals[_BYTES] > budget and totals[_LIVE_COUNT] > 1:
+            _drop_oldest(searches)
+    return out
+
+
+@njit(cache=True, nogil=True)
+def _pool_costs(robots, goals, allowed, offsets, costs, strides, states, heaps, record, totals, free_slots, dirty,
+                sources, budget):
+    """:func:`pool_costs` called with a :class:`SearchPool`'s ``arrays``."""
+    return pool_costs((allowed, offsets, costs, strides),
+                      (states, heaps, record, totals, free_slots, dirty, sources, budget), robots, goals)
+
+
+#: Largest block of cell states taken from the C allocator (bytes); larger ones are mapped directly.
+_ALLOCATED_BLOCK = 32 * 1024**2
+
+
+@njit(cache=True, nogil=True)
+def _allocated_zeros(rows, cells, like):
+    """A zeroed ``(rows, cells)`` block of ``like``'s dtype from the C allocator."""
+    return np.zeros((rows, cells), dtype=like.dtype)
+
+
+def _zeroed_rows(rows: int, cells: int, dtype: np.dtype) -> np.ndarray:
+    """A zeroed ``(rows, cells)`` block of ``dtype`` for the cell states of a :class:`SearchPool`.
+
+    Blocks up to ``_ALLOCATED_BLOCK`` come from the C allocator, which (on glibc) keeps
+    such blocks' memory for the next call: cleared in place, no page is faulted in again.
+    Larger blocks are always fresh memory there, so they are mapped from the operating
+    system directly: zero pages handed out as the searches first touch them, which are
+    few of a large grid's cells. (Not through numpy, which asks for huge pages on large
+    arrays: their compaction can stall for long on a fragmented memory.)
+    """
+    size = rows * cells * dtype.itemsize
+    if size <= _ALLOCATED_BLOCK:
+        return _allocated_zeros(rows, cells, np.empty(0, dtype=dtype))
+    return np.frombuffer(mmap.mmap(-1, size), dtype=dtype).reshape(rows, cells)
+
+
+def state_dtype(workspace: Workspace) -> np.dtype:
+    """The narrowest signed integer type that holds every cell state of a search on ``workspace``.
+
+    A state is at most ``g + 1`` in magnitude. An expanded cell's ``g`` is its distance, at
+    most the dearest move times the free cells less one (a shortest path visits no cell
+    twice), and a reached cell's ``g`` is an expanded neighbour's plus one move: so ``g``
+    is at most the dearest move times the free cells. int16 for small grids (a 100 x 100
+    grid needs 3 * 10000 + 1 < 2**15), int32 beyond: half the bytes for the states that
+    every robot's search keeps.
+    """
+    free = int(np.count_nonzero(~workspace.blocked))
+    largest = int(workspace.moves.costs.max()) * free + 1
+    return np.dtype(np.int16) if largest <= np.iinfo(np.int16).max else np.dtype(np.int32)
+
+
+class SearchPool:
+    """The resumable A* searches of many robots on one workspace, within a memory budget.
+
+    Each robot's search (see the module docstring) is created on its first query and
+    kept; past ``budget`` bytes of search state the least recently used searches are
+    dropped (a dropped robot's search starts afresh if queried again). The state lives
+    in arrays and a typed list, so compiled code can run many queries in one call:
+    ``moves`` and ``searches`` are the arguments of :func:`pool_costs`.
+
+    The cell states of the live searches are rows of one zeroed block (of
+    :func:`state_dtype`), as many rows as the budget allows searches at once (at most
+    one per robot), instead of every search allocating and clearing a grid of its own.
+
+    Attributes:
+        moves: ``(allowed, offsets, costs, strides)`` of the workspace.
+        searches: the search state: the block of cell-state rows; a typed list of the
+            robots' open lists; per robot its open-list size, the goal its keys aim at,
+            its last use and its row (-1 when not live); totals (bytes held, cells
+            expanded, queries, live searches, free rows); the stack of free rows; which
+            rows were used before; the robots' flat cells; the budget.
+    """
+
+    def __init__(self, workspace: Workspace, sources: np.ndarray, budget: int) -> None:
+        moves = workspace.moves
+        self.moves = (moves.allowed, moves.offsets, moves.costs, workspace.strides)
+        sources = np.ascontiguousarray(sources, dtype=np.int64)
+        n = len(sources)
+        cells = moves.allowed.shape[0]
+        budget = min(budget, 2**62)
+        dtype = state_dtype(workspace)
+        rows = max(1, min(n, budget // (cells * dtype.itemsize)))
+        record = np.zeros((n, 4), dtype=np.int64)
+        record[:, _SLOT] = -1
+        totals = np.zeros(5, dtype=np.int64)
+        totals[_FREE_SLOTS] = rows
+        self.searches = (_zeroed_rows(rows, cells, dtype), _empty_heaps(n), record, totals,
+                         np.arange(rows - 1, -1, -1, dtype=np.int64), np.zeros(rows, dtype=np.uint8), sources,
+                         np.int64(budget))
+
+    @property
+    def arrays(self) -> tuple:
+        """``moves`` and ``searches`` one array after the other, for compiled functions that
+        take them so (numba types single arrays far faster than tuples of them)."""
+        return (*self.moves, *self.searches)
+
+    def costs_to(self, robots: np.ndarray, goals: np.ndarray) -> np.ndarray:
+        """Half-unit costs from each of ``robots`` (indices) to the flat cell ``goals`` at the same
+        place (``UNREACHABLE`` if none), queried in order."""
+        return _pool_costs(np.ascontiguousarray(robots, dtype=np.int64), np.ascontiguousarray(goals, dtype=np.int64),
+                           *self.arrays)
+
+    @property
+    def expanded(self) -> int:
+        """Cells expanded by all queries so far (a restarted search counts its cells again)."""
+        return int(self.searches[3][_EXPANDED])
+
+    @property
+    def nbytes(self) -> int:
+        """Memory held by the live searches (bytes): their rows of cell states and open lists."""
+        return int(self.searches[3][_BYTES])
+
+    @property
+    def live(self) -> int:
+        """Searches kept (not dropped, or started again since)."""
+        return int(self.searches[3][_LIVE_COUNT])
+
+    def known_costs(self, robot: int, goals: np.ndarray) -> np.ndarray:
+        """Half-unit costs from ``robot`` to the flat cells ``goals`` its search has already
+        expanded, ``UNREACHABLE`` elsewhere (and everywhere if its search is not live)."""
+        slot = self.searches[2][robot, _SLOT]
+        if slot < 0:
+            return np.full(len(goals), UNREACHABLE, dtype=np.int64)
+        reached = self.searches[0][slot, goals].astype(np.int64)
+        return np.where(reached < 0, -reached - 1, UNREACHABLE)
+
+
 class ResumableSearch:
     """One robot's forward resumable A*: path costs to goal after goal, no work repeated.
 
     ``cost_to(goal)`` returns the exact half-unit cost from the robot's cell to
     flat padded cell ``goal`` (``UNREACHABLE`` if none); see the module
     docstring for what is kept between calls and why the answers are exact.
-
-    Attributes:
-        expanded: cells expanded so far over all queries.
-        nbytes: memory held by the search state (bytes).
+    A :class:`SearchPool` of one robot with no memory limit.
     """
 
     def __init__(self, workspace: Workspace, source: int) -> None:
-        self._workspace = workspace
-        cells = workspace.moves.allowed.shape[0]
-        self._g = np.full(cells, -1, dtype=np.int32)
-        self._closed = np.zeros(cells, dtype=np.uint8)
-        self._keys = np.empty(256, dtype=np.int64)
-        self._cells = np.empty(256, dtype=np.int64)
-        self._g[source] = 0
-        self._keys[0] = _G_MASK  # f = 0, g = 0
-        self._cells[0] = source
-        self._size = 1
-        self._aim = source
-        self.expanded = 0
+        self._pool = SearchPool(workspace, np.array([source]), 2**62)
+
+    @property
+    def expanded(self) -> int:
+        """Cells expanded so far over all queries."""
+        return self._pool.expanded
 
     @property
     def nbytes(self) -> int:
-        return self._g.nbytes + self._closed.nbytes + self._keys.nbytes + self._cells.nbytes
+        """Memory held by the search state (bytes)."""
+        return self._pool.nbytes
 
     def cost_to(self, goal: int) -> int:
         """Exact half-unit path cost to flat padded cell ``goal`` (``UNREACHABLE`` if none)."""
-        moves = self._workspace.moves
-        cost, self._keys, self._cells, self._size, expanded = _resume(
-            moves.allowed, moves.offsets, moves.costs, self._workspace.strides, self._g, self._closed,
-            self._keys, self._cells, self._size, np.int64(self._aim), np.int64(goal),
-        )
-        self._aim = goal
-        self.expanded += int(expanded)
-        return int(cost)
+        return int(self._pool.costs_to(np.zeros(1, dtype=np.int64), np.array([goal]))[0])
 
     def known_costs(self, goals: np.ndarray) -> np.ndarray:
         """Half-unit costs to the flat cells ``goals`` already expanded, ``UNREACHABLE`` elsewhere."""
-        return np.where(self._closed[goals] == 1, self._g[goals], UNREACHABLE)
+        return self._pool.known_costs(0, goals)
