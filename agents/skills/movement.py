@@ -71,10 +71,11 @@ def speed_caps(model: MotionModel, view: object, urgent: np.ndarray | bool = Fal
     if near is not None:
         gap = view.own_pos - view.ball
         hurry = hurry | (np.einsum("ij,ij->i", gap, gap) <= near * near)
-    fresh = view.stamina > model.stamina_low + stamina_reserve * model.stamina_max
-    # Both speeds are proportional to the effort (see MotionModel.sustainable_speed).
-    pace = np.where(hurry & fresh, model.top_speed, model.jog_speed)
-    return pace * view_effort(view, model.players_per_team)
+    n = model.players_per_team
+    caps = np.empty(n)
+    _caps_kernel(np.broadcast_to(hurry, (n,)), float_array("stamina", view.stamina, (n,)), view_effort(view, n),
+                 model.top_speed, model.jog_speed, model.stamina_low + stamina_reserve * model.stamina_max, caps)
+    return caps
 
 
 def paced_dashes(model: MotionModel, view: object, targets: np.ndarray, urgent: np.ndarray,
@@ -105,10 +106,19 @@ def _paced_dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, ef
     """:func:`speed_caps`'s caps (top speed for the urgent and fresh, else the jogging speed,
     times effort) fed to :func:`_dash_kernel`, player by player."""
     caps = np.empty(pos.shape[0])
-    for i in range(pos.shape[0]):
+    _caps_kernel(urgent, stamina, effort, top_speed, jog_speed, fresh, caps)
+    _dash_kernel(pos, vel, targets, effort, caps, accel_max, speed_max, tolerance, out)
+
+
+@njit(cache=True, nogil=True)
+def _caps_kernel(urgent: np.ndarray, stamina: np.ndarray, effort: np.ndarray, top_speed: float, jog_speed: float,
+                 fresh: float, caps: np.ndarray) -> None:  # pragma: no cover - compiled
+    """The running-speed rule of :func:`speed_caps`: the top speed for a player who is urgent
+    and has stamina above ``fresh``, else the jogging speed; both times its effort (both
+    speeds are proportional to it, see MotionModel.sustainable_speed)."""
+    for i in range(caps.shape[0]):
         pace = top_speed if urgent[i] and stamina[i] > fresh else jog_speed
         caps[i] = pace * effort[i]
-    _dash_kernel(pos, vel, targets, effort, caps, accel_max, speed_max, tolerance, out)
 
 
 _ONES: dict[int, np.ndarray] = {}

@@ -219,7 +219,7 @@ class FormationTeam:
         shifted = mode == _PLAY_ON and shift != 0.0
         narrowed = situation == Situation.ATTACK and ball_ref[0] > self._half_length / 3.0 and style.box_narrowing
         if shifted or narrowed:
-            _shape_targets(targets, self._match_roles, shift if shifted else 0.0, shifted, self._half_length - 2.0,
+            _shape_targets(targets, self._match_roles, shift, shifted, self._half_length - 2.0,
                            self._forward_roles, 1.0 - style.box_narrowing, bool(narrowed))
         self._assign_roles(view, targets, ball_ref)
         urgent = np.zeros(self.n, dtype=bool)
