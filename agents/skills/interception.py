@@ -137,12 +137,8 @@ def _intercept_checked(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarra
     points = np.empty((1, n, 2))
     _intercept_kernel(ball, ball_vel, pos, vel, effort, radius, catch_radius, model.reach, model.ball_travel,
                       model.player_coast, params, _NO_LIMITS, cycles, points, _ALL)
-    row = cycles[0]
-    first = int(row.argmin()) if n else -1
-    first_cycle = int(row[first]) if n else UNREACHABLE
-    if first_cycle >= UNREACHABLE:
-        first = -1
-    return Interception(row, points[0], first, first_cycle)
+    first, first_cycle = _first_of(cycles[0])
+    return Interception(cycles[0], points[0], first, first_cycle)
 
 
 def intercept_many(model: MotionModel, ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, vel: np.ndarray,
