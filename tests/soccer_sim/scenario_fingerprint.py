@@ -11,6 +11,10 @@ them on a new platform, run this module on the pre-scenario commit d7c8672 (a ``
 of it, with this file copied in) and merge its output into ``scenario_fingerprints.json``::
 
     python -m tests.soccer_sim.scenario_fingerprint
+
+The ``rocketlake`` entry was recorded at commit 2af3b60, whose matches the ``znver4`` entry
+had checked against d7c8672; its hashes equal the ``znver4`` ones case for case, so the
+trajectories did not depend on the processor there.
 """
 
 from __future__ import annotations
