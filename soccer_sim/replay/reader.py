@@ -19,7 +19,8 @@ class Replay:
     ``static_paths`` the entities logged as static (the field, styles); ``targets[key]`` the
     role targets per cycle (a list of (k, 2) arrays) when the team drew them;
     ``lines[key]`` the player-to-target segments per cycle ((k, 2, 2) arrays);
-    ``temporal_paths`` the entities with data on the ``cycle`` timeline; ``has_blueprint`` whether a default blueprint is stored;
+    ``temporal_paths`` the entities with data on the ``cycle`` timeline; ``has_blueprint``
+    whether a default blueprint is stored;
     ``static_values[entity][component]`` what the static entities hold, e.g.
     ``static_values["/world"]["Transform3D:scale"]`` (the viewer's mirror of y).
     """

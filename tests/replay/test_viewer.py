@@ -116,3 +116,14 @@ def test_formation_meshes_are_recorded_but_hidden_unless_asked_for(replays) -> N
         assert hidden == (set() if shown else set(MESH_PATHS))
         # Nothing else is hidden: players, ball, targets and assignment lines show.
         assert sum(values.get("EntityBehavior:visible") == [[False]] for values in blueprint.values()) == len(hidden)
+
+
+def test_read_blueprint_refuses_other_files(tmp_path) -> None:
+    from soccer_sim.replay import ReplayError
+
+    with pytest.raises(ReplayError, match="no such replay file"):
+        read_blueprint(tmp_path / "missing.rrd")
+    junk = tmp_path / "junk.rrd"
+    junk.write_bytes(b"not a recording")
+    with pytest.raises(ReplayError, match="junk.rrd: not a rerun recording"):
+        read_blueprint(junk)
