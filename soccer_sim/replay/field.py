@@ -1,10 +1,15 @@
-"""The field's markings as polylines (absolute frame, metres), for replays and pictures."""
+"""The field's markings as polylines (absolute frame, metres) and its colours, for replays and pictures."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from soccer_sim.config import FieldConfig
+
+GRASS_COLOUR = (35, 90, 40)
+LINE_COLOUR = (255, 255, 255)
+"""The pitch (RGB): white lines on a dark green, in the viewer (whose theme then does not
+matter: the grass is drawn under the field and is the view's background) and in pictures."""
 
 
 def _circle(cx: float, cy: float, radius: float, start: float = 0.0, stop: float = 2 * np.pi,

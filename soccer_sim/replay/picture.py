@@ -7,7 +7,7 @@ import os
 import numpy as np
 
 from soccer_sim.config import FieldConfig
-from soccer_sim.replay.field import field_lines, goal_frames
+from soccer_sim.replay.field import GRASS_COLOUR, LINE_COLOUR, field_lines, goal_frames
 from soccer_sim.replay.reader import Replay
 from soccer_sim.replay.recorder import TEAM_COLOURS, TEAM_KEYS, ReplayError
 
@@ -38,9 +38,9 @@ def draw_replay(replay: Replay, path: str | os.PathLike, cycle: int | None = Non
                           f"{int(replay.cycles[-1])})")
     k = int(found[0])
     fig, ax = plt.subplots(figsize=(10.5, 7.2))
-    ax.set_facecolor((0.33, 0.55, 0.3))
+    ax.set_facecolor(np.array(GRASS_COLOUR) / 255.0)
     for line in field_lines(field) + goal_frames(field):
-        ax.plot(line[:, 0], line[:, 1], color="white", lw=1.2, zorder=1)
+        ax.plot(line[:, 0], line[:, 1], color=np.array(LINE_COLOUR) / 255.0, lw=1.2, zorder=1)
     for team, key in enumerate(TEAM_KEYS):
         colour = np.array(TEAM_COLOURS[team]) / 255.0
         if key in replay.targets and k < len(replay.targets[key]):

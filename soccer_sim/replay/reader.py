@@ -19,7 +19,10 @@ class Replay:
     ``static_paths`` the entities logged as static (the field, styles); ``targets[key]`` the
     role targets per cycle (a list of (k, 2) arrays) when the team drew them;
     ``lines[key]`` the player-to-target segments per cycle ((k, 2, 2) arrays);
-    ``temporal_paths`` the entities with data on the ``cycle`` timeline; ``has_blueprint`` whether a default blueprint is stored.
+    ``temporal_paths`` the entities with data on the ``cycle`` timeline; ``has_blueprint``
+    whether a default blueprint is stored;
+    ``static_values[entity][component]`` what the static entities hold, e.g.
+    ``static_values["/world"]["Transform3D:scale"]`` (the viewer's mirror of y).
     """
 
     cycles: np.ndarray
@@ -32,6 +35,7 @@ class Replay:
     lines: dict[str, list[np.ndarray]] = field(default_factory=dict)
     temporal_paths: set[str] = field(default_factory=set)
     has_blueprint: bool = False
+    static_values: dict[str, dict[str, list]] = field(default_factory=dict)
 
 
 def _column(batch, suffix: str):
@@ -41,8 +45,17 @@ def _column(batch, suffix: str):
     return None
 
 
-def read_replay(path: str | os.PathLike) -> Replay:
-    """Read ``path`` (written by :class:`RerunRecorder`); ReplayError if it is not a replay."""
+def _components(batch) -> dict[str, list]:
+    """A chunk's component columns as Python lists (``"Archetype:field"`` names; rerun's row ids
+    and time columns left out)."""
+    import pyarrow as pa
+
+    return {name: batch.column(name).to_pylist() for name in batch.column_names
+            if ":" in name and not pa.types.is_timestamp(batch.column(name).type)}
+
+
+def _open(path: str | os.PathLike):
+    """The reader of ``path``, or ReplayError if it is missing or not a rerun recording."""
     import_rerun()
     from rerun.chunk import RrdReader
 
@@ -51,15 +64,40 @@ def read_replay(path: str | os.PathLike) -> Replay:
         raise ReplayError(f"{name}: no such replay file")
     try:
         reader = RrdReader(name)
+        reader.recordings()
+    except Exception as exc:
+        raise ReplayError(f"{name}: not a rerun recording ({exc})") from exc
+    return reader
+
+
+def read_blueprint(path: str | os.PathLike) -> dict[str, dict[str, list]]:
+    """The default blueprint stored in ``path`` as {blueprint entity: {component: values}},
+    e.g. a view's ``ViewBlueprint:space_origin`` or the ``EntityBehavior:visible`` of an entity
+    it hides; empty when none is stored."""
+    reader = _open(path)
+    found: dict[str, dict[str, list]] = {}
+    for store in reader.blueprints()[:1]:
+        for chunk in reader.stream(store=store).to_chunks():
+            found.setdefault(chunk.entity_path, {}).update(_components(chunk.to_record_batch()))
+    return found
+
+
+def read_replay(path: str | os.PathLike) -> Replay:
+    """Read ``path`` (written by :class:`RerunRecorder`); ReplayError if it is not a replay."""
+    reader = _open(path)
+    name = os.fspath(path)
+    try:
         chunks = reader.stream().to_chunks()
     except Exception as exc:
         raise ReplayError(f"{name}: not a rerun recording ({exc})") from exc
     static: set[str] = set()
+    static_values: dict[str, dict[str, list]] = {}
     series: dict[str, list[tuple[np.ndarray, list]]] = {}
     for chunk in chunks:
         entity = chunk.entity_path
         if chunk.is_static:
             static.add(entity)
+            static_values.setdefault(entity, {}).update(_components(chunk.to_record_batch()))
             continue
         batch = chunk.to_record_batch()
         if "cycle" not in batch.column_names:
@@ -107,4 +145,5 @@ def read_replay(path: str | os.PathLike) -> Replay:
     return Replay(cycles=cycles, players=players, ball=np.asarray([b[0] for b in ball], dtype=np.float32),
                   score=score, events=[(int(c), t[0] if isinstance(t, list) else t) for c, t in zip(event_cycles, texts)],
                   static_paths=static, targets=targets, lines=lines,
-                  temporal_paths={key.rsplit(':', 1)[0] for key in series}, has_blueprint=has_blueprint)
+                  temporal_paths={key.rsplit(':', 1)[0] for key in series}, has_blueprint=has_blueprint,
+                  static_values=static_values)

@@ -7,13 +7,18 @@ whole block of cycles), so recording costs little next to the match.
 
 What a replay holds (absolute frame, metres; entity paths):
 
-- ``/world/field/lines``, ``/world/field/goals``: the markings, static.
+- ``/world``: a static transform that mirrors y (:data:`VIEW_SCALE`), so that the viewer's
+  2-D view, which draws +y downwards, shows +y upwards like the pictures; the data below stay
+  in the absolute frame.
+- ``/world/field/grass`` (a green image under everything), ``/world/field/lines``,
+  ``/world/field/goals``: the pitch and its markings, static.
 - ``/world/home/players``, ``/world/away/players``: positions every cycle, team colours,
   shirt numbers as labels (static).
 - ``/world/ball`` and ``/world/ball/trail`` (the last :attr:`trail` positions).
 - ``/world/home/roles/targets``, ``.../roles/assignment`` (an arrow from each player to its role's target) and
-  ``.../roles/triangulation`` (the formation's Delaunay mesh, logged when it changes), for a
-  team with a ``drawing()`` method (see :mod:`agents.teams`); each a layer the viewer toggles.
+  ``.../roles/triangulation`` (the formation's Delaunay mesh, logged when it changes; hidden
+  when the replay opens unless ``formation_meshes=True``), for a team with a ``drawing()``
+  method (see :mod:`agents.teams`); each a layer the viewer toggles.
 - ``/events``: a text log of goals, shots, passes, set plays, offside, ...
 - ``/stats/score/{home,away}``, ``/stats/possession/home`` (share of play-on cycles in which
   home touched the ball last), ``/stats/stamina/{home,away}`` (team mean).
@@ -31,7 +36,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from soccer_sim.replay.blueprint import default_blueprint
-from soccer_sim.replay.field import field_lines, goal_frames
+from soccer_sim.replay.field import GRASS_COLOUR, LINE_COLOUR, field_lines, goal_frames
 from soccer_sim.state import NO_PLAYER, EventKind, PlayMode
 
 if TYPE_CHECKING:
@@ -41,7 +46,13 @@ TEAM_KEYS = ("home", "away")
 TEAM_COLOURS = ((220, 50, 47), (38, 139, 210))
 """Home red, away blue (RGB)."""
 BALL_COLOUR = (250, 250, 250)
-FIELD_COLOUR = (200, 230, 200)
+GRASS_DRAW_ORDER = -100.0
+"""Below everything else (rerun draws images at -10, lines at 20 and points at 30 by default)."""
+PLAYER_DRAW_RADIUS = 0.8
+"""Players are drawn at least this large (metres) to be seen on a whole-field view."""
+VIEW_SCALE = (1.0, -1.0, 1.0)
+"""The scale of ``/world``: the viewer's 2-D view draws +y downwards and takes no view
+coordinates, so mirroring y there puts +y up with labels upright, as in the pictures."""
 
 
 class ReplayError(RuntimeError):
@@ -72,10 +83,13 @@ class RerunRecorder:
     ``trail``: cycles of ball trail drawn behind the ball. ``flush_every``: cycles buffered
     before they are sent (smaller streams more smoothly to a live viewer). ``drawings``:
     whether to record the teams' role targets, assignment lines and triangulation.
+    ``formation_meshes``: whether the triangulations are shown when the replay opens (they are
+    recorded either way; the viewer's visibility toggle shows or hides them).
     """
 
     def __init__(self, path: str | os.PathLike | None = None, *, spawn: bool = False, recording: Any = None,
-                 trail: int = 10, flush_every: int = 1000, drawings: bool = True) -> None:
+                 trail: int = 10, flush_every: int = 1000, drawings: bool = True,
+                 formation_meshes: bool = False) -> None:
         if path is None and not spawn and recording is None:
             raise ValueError("RerunRecorder needs a path, spawn=True or a recording stream")
         if trail < 1 or flush_every < 1:
@@ -85,6 +99,7 @@ class RerunRecorder:
         self.trail = int(trail)
         self.flush_every = int(flush_every)
         self.drawings = drawings
+        self.formation_meshes = formation_meshes
         self.recording = recording
         self._rr = import_rerun()
 
@@ -94,7 +109,7 @@ class RerunRecorder:
         names = match.team_names
         if self.recording is None:
             self.recording = rr.RecordingStream("soccer-sim", recording_id=f"{names[0]}-v-{names[1]}-seed-{match.seed}")
-        blueprint = default_blueprint(match.config.field)
+        blueprint = default_blueprint(match.config.field, formation_meshes=self.formation_meshes)
         try:
             if self.path is not None:
                 self.recording.save(self.path, default_blueprint=blueprint)
@@ -314,16 +329,18 @@ class RerunRecorder:
     def _log_static(self, match: Match) -> None:
         rr, rec = self._rr, self.recording
         field = match.config.field
-        rec.log("world/field/lines", rr.LineStrips2D(field_lines(field), colors=[FIELD_COLOUR], radii=0.12),
+        rec.log("world", rr.Transform3D(scale=VIEW_SCALE), static=True)
+        self._log_grass(field)
+        rec.log("world/field/lines", rr.LineStrips2D(field_lines(field), colors=[LINE_COLOUR], radii=0.12),
                 static=True)
-        rec.log("world/field/goals", rr.LineStrips2D(goal_frames(field), colors=[(255, 255, 255)], radii=0.2),
+        rec.log("world/field/goals", rr.LineStrips2D(goal_frames(field), colors=[LINE_COLOUR], radii=0.2),
                 static=True)
         radius = float(match.config.physics.player_radius)
         for team, key in enumerate(TEAM_KEYS):
             size = self._sizes[team]
             if size:
                 rec.log(f"world/{key}/players", rr.Points2D.from_fields(
-                    colors=[TEAM_COLOURS[team]] * size, radii=[max(radius, 0.5)] * size,
+                    colors=[TEAM_COLOURS[team]] * size, radii=[max(radius, PLAYER_DRAW_RADIUS)] * size,
                     labels=[str(i + 1) for i in range(size)], show_labels=True), static=True)
                 rec.log(f"world/{key}/roles/targets", rr.Points2D.from_fields(
                     colors=[TEAM_COLOURS[team]], radii=[0.3]), static=True)
@@ -332,11 +349,20 @@ class RerunRecorder:
                 rec.log(f"world/{key}/roles/triangulation", rr.LineStrips2D.from_fields(
                     colors=[TEAM_COLOURS[team] + (70,)], radii=[0.04]), static=True)
         rec.log("world/ball", rr.Points2D.from_fields(colors=[BALL_COLOUR], radii=[0.4]), static=True)
-        rec.log("world/ball/trail", rr.LineStrips2D.from_fields(colors=[(250, 250, 250, 120)], radii=[0.1]),
+        rec.log("world/ball/trail", rr.LineStrips2D.from_fields(colors=[BALL_COLOUR + (120,)], radii=[0.1]),
                 static=True)
         names = match.team_names
         rec.log("match", rr.TextDocument(f"{names[0]} (home, red) v {names[1]} (away, blue), seed {match.seed}"),
                 static=True)
+
+    def _log_grass(self, field: Any) -> None:
+        """The pitch and its margin as a green 2x2-pixel image stretched over them, under the
+        lines: white markings and ball then read on the viewer's light and dark themes alike."""
+        rr, rec = self._rr, self.recording
+        half = np.array([field.length / 2.0 + field.margin, field.width / 2.0 + field.margin])
+        pixels = np.broadcast_to(np.array(GRASS_COLOUR, dtype=np.uint8), (2, 2, 3)).copy()
+        rec.log("world/field/grass", rr.Transform3D(translation=[*-half, 0.0], scale=[*half, 1.0]), static=True)
+        rec.log("world/field/grass", rr.Image(pixels, color_model="RGB", draw_order=GRASS_DRAW_ORDER), static=True)
 
     def _mesh(self, key: tuple, balls: np.ndarray, triangles: np.ndarray) -> np.ndarray:
         """A formation's Delaunay mesh as closed triangles (t, 4, 2) in the absolute frame
