@@ -112,6 +112,8 @@ def formation_from_helios_text(text: str, source: str, *, name: str = "") -> For
 # ----------------------------------------------------------------- lines
 @dataclass(frozen=True)
 class Line:
+    """A meaningful line of a formation file (comments and blank lines are never one)."""
+
     number: int
     """1-based line number in the file."""
     text: str
