@@ -8,7 +8,14 @@ The layout read here (librcsc's JSON formation files)::
      "data": [{"index": 0, "ball": {"x": 0.0, "y": 0.0},
                "1": {"x": -50.0, "y": 0.0}, ..., "11": {"x": ..., "y": ...}}, ...]}
 
+* ``method`` is ``DelaunayTriangulation`` (samples of positions per ball
+  position) or ``Static`` (helios-base's ``before-kick-off.conf`` and the
+  other fixed line-ups): exactly one sample, whose positions hold whatever
+  the ball does; it becomes the four corner samples of
+  :func:`~formations.helios_roles.static_samples`.
 * ``type`` is G, DF, MF or FW (goalkeeper, defender, midfielder, forward).
+  A static formation may say ``Unknown`` (as helios-base's do); the kind then
+  comes from the role's name or depth (:func:`~formations.helios_roles.role_kind`).
 * ``pair`` says how a role mirrors: 0 a central role, -1 a role that others
   mirror, n > 0 the mirror of role n. ``side`` is optional and not needed.
 * Coordinates are those of the RoboCup soccer server for the left team: x
@@ -20,17 +27,31 @@ The layout read here (librcsc's JSON formation files)::
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
 import numpy as np
 
 from formations.errors import FormationError
 from formations.formation import Formation
-from formations.helios_roles import HELIOS_KINDS, ROLE_COUNT, partners_from_pairs, server_to_team_frame
+from formations.helios_roles import (
+    HELIOS_KINDS,
+    ROLE_COUNT,
+    partners_from_pairs,
+    role_kind,
+    server_to_team_frame,
+    static_samples,
+)
 from formations.roles import Role
 
 HELIOS_METHOD = "DelaunayTriangulation"
-"""The only helios formation method whose samples mean what ours mean."""
+"""The helios formation method whose samples mean what ours mean."""
+
+STATIC_METHOD = "Static"
+"""helios's fixed line-up: one sample, the same positions for every ball position."""
+
+UNKNOWN_TYPE = "Unknown"
+"""Role type helios writes in static formations, which need none."""
 
 HELIOS_ROLE_COUNT = ROLE_COUNT
 
@@ -45,28 +66,43 @@ def is_helios_layout(document: dict[str, Any]) -> bool:
 def formation_from_helios(document: dict[str, Any], source: str, *, name: str = "") -> Formation:
     """Convert a parsed helios-base JSON formation into a :class:`Formation`."""
     method = document.get("method")
-    if method != HELIOS_METHOD:
-        raise FormationError(source, f"helios formation method {method!r} is not supported (only {HELIOS_METHOD!r})")
+    if method not in (HELIOS_METHOD, STATIC_METHOD):
+        raise FormationError(
+            source, f"helios formation method {method!r} is not supported (only {HELIOS_METHOD!r} and {STATIC_METHOD!r})"
+        )
+    static = method == STATIC_METHOD
     role_items = document.get("role")
     if not isinstance(role_items, list):
         raise FormationError(source, "missing 'role' list")
     data_items = document.get("data")
     if not isinstance(data_items, list):
         raise FormationError(source, "missing 'data' list")
-    roles = _parse_roles(role_items, source)
+    entries = _parse_roles(role_items, source, static)
     balls, positions = _parse_data(data_items, source)
+    if static:
+        if len(balls) != 1:
+            raise FormationError(source, f"a static formation holds exactly one sample (its line-up), found {len(balls)}")
+        balls, positions = static_samples(positions[0])
     server_to_team_frame(balls, positions)
-    return Formation(
-        roles,
-        balls,
-        positions,
-        name=name,
-        description=f"imported from helios-base formation {source}",
-        source=source,
+    partners = partners_from_pairs(
+        {number: item["pair"] for number, item in entries.items()}, source, lambda number: f"role {number}"
     )
+    roles = []
+    for n in range(1, HELIOS_ROLE_COUNT + 1):
+        given = HELIOS_KINDS.get(entries[n]["type"])
+        kind = role_kind(given, entries[n]["name"], float(positions[:, n - 1, 0].mean()))
+        roles.append(Role(n, entries[n]["name"], kind, partners.get(n)))
+    description = f"imported from helios-base formation {source}" + (" (static)" if static else "")
+    try:
+        return Formation(roles, balls, positions, name=name, description=description, source=source)
+    except FormationError as error:
+        if static and error.where:  # the four samples are copies of the file's one sample
+            raise FormationError(source, error.problem, re.sub(r"^sample \d+", "sample 0", error.where)) from None
+        raise
 
 
-def _parse_roles(items: list[Any], source: str) -> list[Role]:
+def _parse_roles(items: list[Any], source: str, static: bool) -> dict[int, dict[str, Any]]:
+    """Role number -> its checked entry; ``Unknown`` types are allowed only if *static*."""
     entries: dict[int, dict[str, Any]] = {}
     for i, item in enumerate(items):
         where = f"role entry {i}"
@@ -83,10 +119,9 @@ def _parse_roles(items: list[Any], source: str) -> list[Role]:
             raise FormationError(source, f"unknown field(s) {', '.join(map(repr, unknown))}", where)
         if not isinstance(item.get("name"), str) or not item["name"]:
             raise FormationError(source, "'name' must be a non-empty string", where)
-        if item.get("type") not in HELIOS_KINDS:
-            raise FormationError(
-                source, f"'type' must be one of {', '.join(HELIOS_KINDS)}, got {item.get('type')!r}", where
-            )
+        if item.get("type") not in HELIOS_KINDS and not (static and item.get("type") == UNKNOWN_TYPE):
+            allowed = ", ".join(HELIOS_KINDS) + (f" or {UNKNOWN_TYPE}" if static else "")
+            raise FormationError(source, f"'type' must be one of {allowed}, got {item.get('type')!r}", where)
         pair = item.get("pair")
         if isinstance(pair, bool) or not isinstance(pair, int) or not -1 <= pair <= HELIOS_ROLE_COUNT:
             raise FormationError(source, f"'pair' must be -1, 0 or a role number, got {pair!r}", where)
@@ -94,13 +129,7 @@ def _parse_roles(items: list[Any], source: str) -> list[Role]:
     missing = sorted(set(range(1, HELIOS_ROLE_COUNT + 1)) - set(entries))
     if missing:
         raise FormationError(source, f"roles {missing} are missing (a helios formation has roles 1..11)")
-    partners = partners_from_pairs(
-        {number: item["pair"] for number, item in entries.items()}, source, lambda number: f"role {number}"
-    )
-    return [
-        Role(n, entries[n]["name"], HELIOS_KINDS[entries[n]["type"]], partners.get(n))
-        for n in range(1, HELIOS_ROLE_COUNT + 1)
-    ]
+    return entries
 
 
 def _parse_data(items: list[Any], source: str) -> tuple[np.ndarray, np.ndarray]:

@@ -24,8 +24,9 @@ e.g. ``{"before-kick-off": "our_set_play"}``.
 
 A set needs the same roles in every formation, so every member takes the
 roles (names, kinds, partners) of the normal formation; a file whose role
-names or pairs differ is noted in the report. Files may be in agent2d's text layouts or helios's JSON layout
-(:func:`formations.files.load_helios`).
+names or pairs differ is noted in the report. Files may be in any layout
+:func:`formations.files.load_helios` reads: agent2d's text layouts,
+helios-base's comma-separated layout or its JSON layout, static or not.
 """
 
 from __future__ import annotations
@@ -57,6 +58,7 @@ LEFT_OUT_REASONS: dict[str, str] = {
     "goal-kick-opp": "their goal kicks only; their_set_play takes setplay-opp-formation.conf",
     "goalie-catch-our": "after our goalkeeper's catches only; our sets have no situation for it",
     "goalie-catch-opp": "after their goalkeeper's catches only; our sets have no situation for it",
+    "goalie-formation": "helios-base's players never load it (their strategy reads no goalie-formation.conf)",
 }
 """Reasons given for agent2d's other known files."""
 

@@ -1,4 +1,4 @@
-"""Roles of agent2d / helios-base formations: kinds from role names, partners from pairs.
+"""What agent2d / helios-base formation layouts share: roles, frame and static line-ups.
 
 Both helios layouts (librcsc's JSON files and agent2d's text files) give every
 role a *pair* (the text layout calls it the symmetry number): 0 for a central
@@ -10,6 +10,10 @@ The text layouts (except version 3) give no role type, only a name such as
 ``CenterBack``; :func:`kind_from_name` maps the names agent2d-based teams use
 onto our kinds, and :func:`kind_from_depth` places any other name (agent2d's
 ``Sample``, for instance) by where the role stands.
+
+Every layout also has a *static* form (agent2d's ``before-kick-off.conf``):
+one position per player whatever the ball does; :func:`static_samples` turns
+it into samples our formations interpolate.
 """
 
 from __future__ import annotations
@@ -68,6 +72,11 @@ def kind_from_name(name: str) -> str | None:
     return None
 
 
+def role_kind(given: str | None, name: str, mean_x: float) -> str:
+    """Our kind of a role: *given* (from a type column) if any, else from its *name*, else from its depth."""
+    return given or kind_from_name(name) or kind_from_depth(mean_x)
+
+
 def kind_from_depth(mean_x: float) -> str:
     """Kind of a role of unknown name from its mean x over the samples (metres, our frame)."""
     if mean_x < -DEPTH_THIRD:
@@ -116,3 +125,26 @@ def server_to_team_frame(balls: np.ndarray, positions: np.ndarray) -> None:
     """
     balls[:, 1] *= -1.0
     positions[..., 1] *= -1.0
+
+
+STATIC_BALLS = np.array(
+    [
+        (-STANDARD_FIELD.half_length, -STANDARD_FIELD.half_width),
+        (-STANDARD_FIELD.half_length, STANDARD_FIELD.half_width),
+        (STANDARD_FIELD.half_length, -STANDARD_FIELD.half_width),
+        (STANDARD_FIELD.half_length, STANDARD_FIELD.half_width),
+    ]
+)
+"""Ball positions of the samples a static formation becomes (the field's corners, symmetric
+about both axes, so the same in the server's frame and ours)."""
+
+
+def static_samples(positions: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Samples (balls (4, 2), positions (4, n, 2)) that hold *positions* (n, 2) for every ball.
+
+    A static formation has one position per player whatever the ball does;
+    the same positions at the four corners of the field make every ball
+    position on the field give exactly them.
+    """
+    balls = STATIC_BALLS.copy()
+    return balls, np.repeat(np.asarray(positions, dtype=np.float64)[None], len(balls), axis=0)

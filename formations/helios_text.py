@@ -27,10 +27,15 @@ Other layouts read here:
 * ``Formation DelaunayTriangulation 3``: role lines ``number type name
   symmetry marker setplay_marker`` where the type (G, DF, MF, FW) gives the
   kind; the samples as in version 2.
-* ``Formation Static``: one line ``number name x y`` per player; the same
-  positions for every ball position (agent2d's ``before-kick-off.conf``).
-  It becomes a formation whose four samples, at the field's corners, all hold
-  those positions, so every ball position gives them exactly.
+* ``Formation Static`` (also ``Formation Static 0``, as librcsc's editor
+  writes it): one line ``number name x y`` per player; the same positions for
+  every ball position (agent2d's ``before-kick-off.conf``). The editor ends
+  the file with an empty samples block, ``Begin Samples 2 0`` / ``End
+  Samples``, read and dropped here. It becomes a formation whose four samples,
+  at the field's corners, all hold those positions
+  (:func:`~formations.helios_roles.static_samples`).
+* helios-base's comma-separated layout (first line ``Method,...``), read by
+  :mod:`formations.helios_csv`.
 
 A ``Begin Constraints`` block after the samples (edges helios's editor forces
 into its triangulation) is skipped: our triangulation is plain Delaunay.
@@ -50,15 +55,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from formations.errors import FormationError
-from formations.field import STANDARD_FIELD
 from formations.formation import Formation
 from formations.helios_roles import (
     HELIOS_KINDS,
     ROLE_COUNT,
-    kind_from_depth,
-    kind_from_name,
     partners_from_pairs,
+    role_kind,
     server_to_team_frame,
+    static_samples,
 )
 from formations.roles import Role
 
@@ -66,17 +70,7 @@ DT_METHOD = "DelaunayTriangulation"
 STATIC_METHOD = "Static"
 DT_VERSIONS = (1, 2, 3)
 """Versions of the ``Formation DelaunayTriangulation`` layout this module reads."""
-HEADER_EXAMPLES = "'Formation DelaunayTriangulation 2' or 'Formation Static'"
-
-STATIC_BALLS = np.array(
-    [
-        (-STANDARD_FIELD.half_length, -STANDARD_FIELD.half_width),
-        (-STANDARD_FIELD.half_length, STANDARD_FIELD.half_width),
-        (STANDARD_FIELD.half_length, -STANDARD_FIELD.half_width),
-        (STANDARD_FIELD.half_length, STANDARD_FIELD.half_width),
-    ]
-)
-"""Ball positions of the samples a static formation becomes (the field's corners)."""
+HEADER_EXAMPLES = "'Formation DelaunayTriangulation 2', 'Formation Static' or 'Method,DelaunayTriangulation'"
 
 _NUMBER = re.compile(r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?")
 _INTEGER = re.compile(r"[+-]?\d+")
@@ -85,46 +79,58 @@ _ALL_ROLES = range(1, ROLE_COUNT + 1)
 
 
 def is_helios_text(text: str) -> bool:
-    """True if the first meaningful line of *text* is an agent2d ``Formation ...`` header."""
+    """True if the first meaningful line of *text* is an agent2d ``Formation ...`` or ``Method,...`` header."""
     for line in _content_lines(text):
-        return line.tokens[0] == "Formation"
+        return line.tokens[0] == "Formation" or is_csv_header(line)
     return False
+
+
+def is_csv_header(line: Line) -> bool:
+    """True for the first line of helios-base's comma-separated layout (``Method,...``)."""
+    return line.text.split(",", 1)[0].strip() == "Method" and "," in line.text
 
 
 def formation_from_helios_text(text: str, source: str, *, name: str = "") -> Formation:
     """Parse agent2d's text formation *text* (read from *source*) into a :class:`Formation`."""
-    reader = _Reader(text, source)
+    reader = LineReader(text, source)
     header = reader.next("the header line (" + HEADER_EXAMPLES + ")")
-    method, version = _parse_header(reader, header)
-    if method == STATIC_METHOD:
-        parsed = _parse_static(reader)
-        layout = "Formation Static"
+    if is_csv_header(header):
+        from formations.helios_csv import parse_csv
+
+        parsed, layout = parse_csv(reader, header)
     else:
-        parsed = _parse_dt_v1(reader) if version == 1 else _parse_dt(reader, version)
-        layout = f"Formation {DT_METHOD} {version}"
-    return _build(parsed, source, name, f"imported from agent2d formation {source} ({layout})")
+        method, version = _parse_header(reader, header)
+        if method == STATIC_METHOD:
+            parsed = _parse_static(reader)
+            layout = "Formation Static"
+        else:
+            parsed = _parse_dt_v1(reader) if version == 1 else _parse_dt(reader, version)
+            layout = f"Formation {DT_METHOD} {version}"
+    return build_formation(parsed, source, name, f"imported from agent2d formation {source} ({layout})")
 
 
 # ----------------------------------------------------------------- lines
 @dataclass(frozen=True)
-class _Line:
+class Line:
+    """A meaningful line of a formation file (comments and blank lines are never one)."""
+
     number: int
     """1-based line number in the file."""
     text: str
     tokens: list[str]
 
 
-def _content_lines(text: str) -> list[_Line]:
+def _content_lines(text: str) -> list[Line]:
     lines = []
     for number, raw in enumerate(text.splitlines(), start=1):
         stripped = raw.strip()
         if not stripped or stripped.startswith("#") or stripped.startswith("//"):
             continue
-        lines.append(_Line(number, stripped, stripped.split()))
+        lines.append(Line(number, stripped, stripped.split()))
     return lines
 
 
-class _Reader:
+class LineReader:
     """The meaningful lines of a file, read one at a time; errors name the line."""
 
     def __init__(self, text: str, source: str) -> None:
@@ -133,45 +139,49 @@ class _Reader:
         self.last_number = max(len(text.splitlines()), 1)
         self.index = 0
 
-    def peek(self) -> _Line | None:
+    def peek(self) -> Line | None:
         return self.lines[self.index] if self.index < len(self.lines) else None
 
-    def next(self, expected: str) -> _Line:
+    def next(self, expected: str) -> Line:
         line = self.peek()
         if line is None:
             raise FormationError(self.source, f"the file ends where {expected} was expected", f"line {self.last_number}")
         self.index += 1
         return line
 
-    def error(self, line: _Line | None, problem: str) -> FormationError:
+    def error(self, line: Line | None, problem: str) -> FormationError:
         number = line.number if line is not None else self.last_number
         return FormationError(self.source, problem, f"line {number}")
 
-    def number(self, line: _Line, token: str, what: str) -> float:
+    def number(self, line: Line, token: str, what: str) -> float:
         if not _NUMBER.fullmatch(token):
             raise self.error(line, f"{token!r} is not a number ({what})")
         return float(token)
 
-    def integer(self, line: _Line, token: str, what: str) -> int:
+    def integer(self, line: Line, token: str, what: str) -> int:
         if not _INTEGER.fullmatch(token):
             raise self.error(line, f"{token!r} is not an integer ({what})")
         return int(token)
 
-    def role_number(self, line: _Line, token: str, what: str) -> int:
+    def role_number(self, line: Line, token: str, what: str) -> int:
         number = self.integer(line, token, what)
         if number not in _ALL_ROLES:
             raise self.error(line, f"{what} {number} is out of range (agent2d numbers players 1..{ROLE_COUNT})")
         return number
 
 
-def _is_tag(line: _Line | None, *words: str) -> bool:
+def _is_tag(line: Line | None, *words: str) -> bool:
     return line is not None and line.tokens[: len(words)] == list(words)
 
 
 # ----------------------------------------------------------------- parsing
 @dataclass
-class _Parsed:
-    """What a text layout says, before conversion to our frame and roles."""
+class ParsedLayout:
+    """What a text layout says, before conversion to our frame and roles.
+
+    *types* holds the kinds a type column gives; roles without one get theirs
+    from their names or depth. Coordinates are still the server's.
+    """
 
     names: dict[int, str] = field(default_factory=dict)
     pairs: dict[int, int] = field(default_factory=dict)
@@ -182,8 +192,16 @@ class _Parsed:
     sample_lines: list[int] = field(default_factory=list)
     static: bool = False
 
+    def hold_static(self, positions: np.ndarray, line: int) -> None:
+        """Make this a static formation of *positions* (11, 2); *line* is where they are written."""
+        self.static = True
+        for ball, sample in zip(*static_samples(positions)):
+            self.balls.append((float(ball[0]), float(ball[1])))
+            self.positions.append(sample)
+            self.sample_lines.append(line)
 
-def _parse_header(reader: _Reader, line: _Line) -> tuple[str, int]:
+
+def _parse_header(reader: LineReader, line: Line) -> tuple[str, int]:
     tokens = line.tokens
     if tokens[0] != "Formation":
         raise reader.error(
@@ -209,15 +227,15 @@ def _parse_header(reader: _Reader, line: _Line) -> tuple[str, int]:
     return method, version
 
 
-def _parse_dt(reader: _Reader, version: int) -> _Parsed:
-    parsed = _Parsed()
+def _parse_dt(reader: LineReader, version: int) -> ParsedLayout:
+    parsed = ParsedLayout()
     _parse_roles_block(reader, parsed, version)
     _parse_samples_block(reader, parsed)
     _parse_trailer(reader)
     return parsed
 
 
-def _parse_roles_block(reader: _Reader, parsed: _Parsed, version: int) -> None:
+def _parse_roles_block(reader: LineReader, parsed: ParsedLayout, version: int) -> None:
     begin = reader.next("'Begin Roles'")
     if not _is_tag(begin, "Begin", "Roles") or len(begin.tokens) != 2:
         raise reader.error(begin, f"expected 'Begin Roles', found {begin.text!r}")
@@ -241,7 +259,7 @@ def _parse_roles_block(reader: _Reader, parsed: _Parsed, version: int) -> None:
             if role_type not in HELIOS_KINDS:
                 raise reader.error(line, f"role type {role_type!r} of role {number} is not one of {', '.join(HELIOS_KINDS)}")
             parsed.types[number] = HELIOS_KINDS[role_type]
-        parsed.pairs[number] = _pair(reader, line, pair_token, number)
+        parsed.pairs[number] = symmetry_number(reader, line, pair_token, number)
         parsed.names[number] = role_name
         parsed.role_lines[number] = line.number
     missing = sorted(set(_ALL_ROLES) - set(parsed.names))
@@ -249,14 +267,16 @@ def _parse_roles_block(reader: _Reader, parsed: _Parsed, version: int) -> None:
         raise reader.error(line, f"roles {missing} are missing (an agent2d formation declares roles 1..{ROLE_COUNT})")
 
 
-def _pair(reader: _Reader, line: _Line, token: str, number: int) -> int:
+def symmetry_number(reader: LineReader, line: Line, token: str, number: int) -> int:
+    """Role *number*'s symmetry number *token*: -1, 0 or a role number."""
     pair = reader.integer(line, token, f"symmetry number of role {number}")
     if not -1 <= pair <= ROLE_COUNT:
         raise reader.error(line, f"symmetry number {pair} of role {number} must be -1, 0 or a role number 1..{ROLE_COUNT}")
     return pair
 
 
-def _parse_samples_block(reader: _Reader, parsed: _Parsed) -> None:
+def _samples_header(reader: LineReader) -> tuple[Line, int]:
+    """Read 'Begin Samples 2 N': the line and N."""
     begin = reader.next("'Begin Samples 2 N'")
     if not _is_tag(begin, "Begin", "Samples") or len(begin.tokens) != 4:
         raise reader.error(begin, f"expected 'Begin Samples 2 N' (N the number of samples), found {begin.text!r}")
@@ -266,6 +286,11 @@ def _parse_samples_block(reader: _Reader, parsed: _Parsed) -> None:
     count = reader.integer(begin, begin.tokens[3], "number of samples")
     if count < 0:
         raise reader.error(begin, f"the number of samples must not be negative, got {count}")
+    return begin, count
+
+
+def _parse_samples_block(reader: LineReader, parsed: ParsedLayout) -> None:
+    begin, count = _samples_header(reader)
     for k in range(count):
         line = reader.next(f"'----- {k} -----' (sample {k} of the {count} announced on line {begin.number})")
         if _is_tag(line, "End", "Samples"):
@@ -278,7 +303,7 @@ def _parse_samples_block(reader: _Reader, parsed: _Parsed) -> None:
         reader.next("'End Samples'")
 
 
-def _parse_sample(reader: _Reader, parsed: _Parsed, header: _Line, k: int) -> None:
+def _parse_sample(reader: LineReader, parsed: ParsedLayout, header: Line, k: int) -> None:
     match = _SAMPLE_HEADER.fullmatch(header.text)
     if match is None:
         raise reader.error(header, f"expected the sample header '----- {k} -----', found {header.text!r}")
@@ -315,7 +340,7 @@ def _parse_sample(reader: _Reader, parsed: _Parsed, header: _Line, k: int) -> No
     parsed.sample_lines.append(header.number)
 
 
-def _parse_trailer(reader: _Reader) -> None:
+def _parse_trailer(reader: LineReader) -> None:
     """Skip an optional constraints block and the closing 'End'; nothing may follow."""
     line = reader.peek()
     if _is_tag(line, "Begin", "Constraints"):
@@ -330,14 +355,14 @@ def _parse_trailer(reader: _Reader) -> None:
         raise reader.error(line, f"unexpected line after the samples: {line.text!r}")
 
 
-def _parse_dt_v1(reader: _Reader) -> _Parsed:
-    parsed = _Parsed()
+def _parse_dt_v1(reader: LineReader) -> ParsedLayout:
+    parsed = ParsedLayout()
     roles = reader.next("the role line (11 'name symmetry' pairs)")
     if len(roles.tokens) != 2 * ROLE_COUNT:
         raise reader.error(roles, f"the role line holds 11 'name symmetry' pairs (22 fields), found {len(roles.tokens)}")
     for number in _ALL_ROLES:
         parsed.names[number] = roles.tokens[2 * number - 2]
-        parsed.pairs[number] = _pair(reader, roles, roles.tokens[2 * number - 1], number)
+        parsed.pairs[number] = symmetry_number(reader, roles, roles.tokens[2 * number - 1], number)
         parsed.role_lines[number] = roles.number
     fields = 2 + 2 * ROLE_COUNT
     while (line := reader.peek()) is not None and line.tokens != ["End"]:
@@ -347,7 +372,7 @@ def _parse_dt_v1(reader: _Reader) -> _Parsed:
             raise reader.error(
                 line, f"sample {k} has {len(line.tokens)} numbers, expected {fields} (ball x y, then x y of players 1..11)"
             )
-        values = [reader.number(line, token, _v1_field(i, k)) for i, token in enumerate(line.tokens)]
+        values = [reader.number(line, token, sample_field(i, k)) for i, token in enumerate(line.tokens)]
         parsed.balls.append((values[0], values[1]))
         parsed.positions.append(np.array(values[2:]).reshape(ROLE_COUNT, 2))
         parsed.sample_lines.append(line.number)
@@ -357,15 +382,16 @@ def _parse_dt_v1(reader: _Reader) -> _Parsed:
     return parsed
 
 
-def _v1_field(i: int, k: int) -> str:
+def sample_field(i: int, k: int) -> str:
+    """Name of value *i* of sample *k* in a row 'ball x y, then x y of players 1..11'."""
     axis = "xy"[i % 2]
     return f"ball {axis} of sample {k}" if i < 2 else f"{axis} of player {i // 2} in sample {k}"
 
 
-def _parse_static(reader: _Reader) -> _Parsed:
-    parsed = _Parsed(static=True)
+def _parse_static(reader: LineReader) -> ParsedLayout:
+    parsed = ParsedLayout()
     positions = np.full((ROLE_COUNT, 2), np.nan)
-    while (line := reader.peek()) is not None and line.tokens != ["End"]:
+    while (line := reader.peek()) is not None and line.tokens != ["End"] and not _is_tag(line, "Begin", "Samples"):
         reader.next("a player line")
         if len(line.tokens) != 4:
             raise reader.error(line, f"a static formation line is 'number name x y', found {line.text!r}")
@@ -382,18 +408,28 @@ def _parse_static(reader: _Reader) -> _Parsed:
     missing = sorted(set(_ALL_ROLES) - set(parsed.names))
     if missing:
         raise reader.error(line, f"players {missing} have no position (a static formation lists players 1..{ROLE_COUNT})")
-    if line is not None:
-        reader.next("'End'")
-        _parse_trailer(reader)
-    for ball in STATIC_BALLS:
-        parsed.balls.append((float(ball[0]), float(ball[1])))  # the corners: the same in either frame
-        parsed.positions.append(positions)
-        parsed.sample_lines.append(min(parsed.role_lines.values()))
+    if _is_tag(line, "Begin", "Samples"):
+        _skip_empty_samples_block(reader)
+    _parse_trailer(reader)
+    parsed.hold_static(positions, min(parsed.role_lines.values()))
     return parsed
 
 
+def _skip_empty_samples_block(reader: LineReader) -> None:
+    """Read the empty 'Begin Samples 2 0' / 'End Samples' block librcsc's editor ends a static file with."""
+    begin, count = _samples_header(reader)
+    if count != 0:
+        raise reader.error(
+            begin, f"a static formation holds no samples, but this block announces {count} (expected 'Begin Samples 2 0')"
+        )
+    end = reader.next(f"'End Samples' (the empty samples block begins on line {begin.number})")
+    if not _is_tag(end, "End", "Samples"):
+        raise reader.error(end, f"expected 'End Samples' after the empty samples block of line {begin.number}, found {end.text!r}")
+
+
 # ----------------------------------------------------------------- building
-def _build(parsed: _Parsed, source: str, name: str, description: str) -> Formation:
+def build_formation(parsed: ParsedLayout, source: str, name: str, description: str) -> Formation:
+    """The :class:`Formation` *parsed* describes, in our frame; errors name the line at fault."""
     balls = np.array(parsed.balls, dtype=np.float64).reshape(-1, 2)
     positions = np.array(parsed.positions, dtype=np.float64).reshape(-1, ROLE_COUNT, 2)
     server_to_team_frame(balls, positions)
@@ -403,9 +439,8 @@ def _build(parsed: _Parsed, source: str, name: str, description: str) -> Formati
     roles = []
     for number in _ALL_ROLES:
         role_name = parsed.names[number]
-        kind = parsed.types.get(number) or kind_from_name(role_name)
-        if kind is None:
-            kind = kind_from_depth(float(positions[:, number - 1, 0].mean())) if len(positions) else "midfielder"
+        mean_x = float(positions[:, number - 1, 0].mean()) if len(positions) else 0.0
+        kind = role_kind(parsed.types.get(number), role_name, mean_x)
         roles.append(Role(number, role_name, kind, partners.get(number)))
     try:
         return Formation(roles, balls, positions, name=name, description=description, source=source)
@@ -413,7 +448,7 @@ def _build(parsed: _Parsed, source: str, name: str, description: str) -> Formati
         raise _locate(error, parsed) from None
 
 
-def _locate(error: FormationError, parsed: _Parsed) -> FormationError:
+def _locate(error: FormationError, parsed: ParsedLayout) -> FormationError:
     """Prefix the line of the sample (or, for a static formation, the role) an error names."""
     match = re.match(r"sample (\d+)(?:, role (\d+))?", error.where or "")
     if match is None:

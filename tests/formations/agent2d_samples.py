@@ -102,3 +102,82 @@ def write_directory(root: Path, files: dict[str, str]) -> Path:
     for name, text in files.items():
         (root / name).write_text(text, encoding="utf-8")
     return root
+
+
+# ----------------------------------------------------------------- other layouts helios-base uses
+LINEUP = [
+    (1, "Keeper", -48.5, 0.0),
+    (2, "CenterBack", -31.0, -7.5),
+    (3, "CenterBack", -31.0, 7.5),
+    (4, "SideBack", -27.5, -19.0),
+    (5, "SideBack", -27.5, 19.0),
+    (6, "DefensiveHalf", -22.0, 0.5),
+    (7, "OffensiveHalf", -14.0, -11.5),
+    (8, "OffensiveHalf", -14.0, 11.5),
+    (9, "Winger", -4.0, -27.0),
+    (10, "Winger", -4.0, 27.0),
+    (11, "Striker", -9.5, 0.0),
+]
+"""number, name, x, y of a fixed line-up (server frame)."""
+
+LINEUP_KINDS = ["goalkeeper"] + ["defender"] * 4 + ["midfielder"] * 3 + ["forward"] * 3
+"""Kinds of :data:`LINEUP` from its role names."""
+
+
+def lineup_positions() -> np.ndarray:
+    """(11, 2) positions of :data:`LINEUP`, server frame."""
+    return np.array([(x, y) for _, _, x, y in LINEUP], dtype=float)
+
+
+def static_v0_text(*, end: bool = False) -> str:
+    """A ``Formation Static 0`` file as librcsc's editor saves one: player lines, then an empty
+    ``Begin Samples 2 0`` / ``End Samples`` block (and ``End`` if *end*)."""
+    lines = ["Formation Static 0"] + [f"{n} {name} {_number(x)} {_number(y)}" for n, name, x, y in LINEUP]
+    lines += ["Begin Samples 2 0", "End Samples"] + (["End"] if end else [])
+    return "\n".join(lines) + "\n"
+
+
+def static_json_document(role_type: str = "Unknown", ball: tuple[float, float] = (0.0, 0.0)) -> dict:
+    """helios-base's JSON static layout: every role of type *role_type*, side C, pair 0, one sample."""
+    sample = {"index": 0, "ball": {"x": ball[0], "y": ball[1]}}
+    sample.update({str(n): {"x": x, "y": y} for n, _, x, y in LINEUP})
+    roles = [{"number": n, "name": name, "type": role_type, "side": "C", "pair": 0} for n, name, _, _ in LINEUP]
+    return {"version": "", "method": "Static", "role": roles, "data": [sample]}
+
+
+CSV_TYPES = ["G", "DF", "DF", "DF", "DF", "MF", "MF", "MF", "FW", "FW", "FW"]
+"""RoleType row of :func:`csv_dt_text` (G, DF, MF, FW)."""
+
+
+def csv_dt_text(samples=None, types=CSV_TYPES) -> str:
+    """helios-base's comma-separated ``Method,DelaunayTriangulation`` layout, with a time-stamp comment."""
+    samples = mirrored_samples() if samples is None else samples
+    numbers = ",".join(str(n) for n, _, _ in ROLES)
+    lines = [
+        "# 20240101-120000",
+        "Method,DelaunayTriangulation",
+        "RoleNumber," + numbers,
+        "RoleName," + ",".join(name for _, name, _ in ROLES),
+        "RoleType," + ",".join(types),
+        "SymmetryNumber," + ",".join(str(pair) for _, _, pair in ROLES),
+        "Marker," + ",".join("0" for _ in ROLES),
+        "SetplayMarker," + ",".join("0" for _ in ROLES),
+        "SampleData",
+        f"Size,{len(samples)}",
+        "idx,ballX,ballY," + ",".join(f"{n}X,{n}Y" for n, _, _ in ROLES),
+    ]
+    for k, (ball, positions) in enumerate(samples):
+        lines.append(",".join(_number(v) for v in (k, *ball, *positions.ravel())))
+    return "\n".join(lines) + "\n"
+
+
+def csv_static_text() -> str:
+    """helios-base's comma-separated ``Method,Static`` layout of :data:`LINEUP`."""
+    lines = [
+        "Method,Static",
+        "RoleNumber," + ",".join(str(n) for n, _, _, _ in LINEUP),
+        "RoleName," + ",".join(name for _, name, _, _ in LINEUP),
+        "#PositionIdx," + ",".join(f"{n}X,{n}Y" for n, _, _, _ in LINEUP),
+        "Position," + ",".join(_number(v) for v in lineup_positions().ravel()),
+    ]
+    return "\n".join(lines) + "\n"

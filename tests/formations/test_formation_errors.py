@@ -175,7 +175,7 @@ def _helios() -> dict[str, Any]:
 
 
 HELIOS_BAD: list[tuple[str, Mutation, str]] = [
-    ("other method", _set(["method"], "Static"), r"method 'Static' is not supported"),
+    ("other method", _set(["method"], "KNN"), r"method 'KNN' is not supported"),
     ("missing role", lambda d: d["role"].pop(), r"roles \[11\] are missing"),
     ("duplicate role", _set(["role", 10, "number"], 3), r"role 3: role number is used twice"),
     ("bad type", _set(["role", 3, "type"], "XX"), r"role 4: 'type' must be one of"),
