@@ -4,7 +4,9 @@ All players are handled at once on (2n, 2) arrays in the absolute frame (player 
 :class:`~soccer_sim.state.WorldState`). Units: metres, m/cycle, m/cycle². The rules follow
 the RoboCup 2D soccer simulator (rcssserver):
 
-* **Dash**: a team requests an acceleration; the match finds the dash power that gives it,
+* **Dash**: a team requests an acceleration (any finite length: a request longer than
+  ``1e100`` is first shortened to that length, direction kept, so that it cannot overflow);
+  the match finds the dash power that gives it,
   ``power = |a| / (dash_power_rate * effort * dir_rate)``, clipped to ``dash_power_max`` and to
   the player's stamina plus ``extra_stamina``, pays that power in stamina, and applies
   ``power * dash_power_rate * effort * dir_rate`` in the requested direction. ``dir_rate`` is
@@ -48,6 +50,11 @@ from numba import njit
 from soccer_sim.config import MatchConfig
 
 _EPS = 1e-12
+_REQUEST_CAP = 1e100
+"""Longest dash request (m/cycle²) the dash rule works with: a longer one is shortened to this
+length in the same direction first. Any request above the physical limits is clipped to them
+anyway; shortening it first keeps its squared length and the products of the angle rule from
+overflowing to inf (which would turn a request of 1e160 into no dash at all)."""
 
 
 class CycleNoise:
@@ -194,10 +201,16 @@ def _dash_kernel(vel: np.ndarray, stamina: np.ndarray, effort: np.ndarray, recov
     rec_thr, rec_dec, rec_min = params[10], params[11], params[12]
     eff_dec_thr, eff_dec, eff_min = params[13], params[14], params[15]
     eff_inc_thr, eff_inc, eff_max = params[16], params[17], params[18]
+    request_cap = _REQUEST_CAP
     fastest = 0.0
     for i in range(vel.shape[0]):
         ax, ay = dash[i, 0], dash[i, 1]
         size = math.sqrt(ax * ax + ay * ay)
+        if size > request_cap:  # huge (or overflowing) request: same direction, finite length
+            big = max(abs(ax), abs(ay))
+            ax = ax / big * request_cap
+            ay = ay / big * request_cap
+            size = math.sqrt(ax * ax + ay * ay)
         vx, vy = vel[i, 0], vel[i, 1]
         if size > 0.0:
             rate = 1.0
