@@ -21,7 +21,8 @@ the RoboCup 2D soccer simulator (rcssserver):
   recovery_per_cycle`` paid from the half's capacity (see config.StaminaConfig). A player
   who sprints until its stamina is spent keeps dashing with ``recover_min *
   recovery_per_cycle + extra_stamina`` power per cycle at ``effort_min``: about 0.44 m/cycle.
-* **Kick**: a player whose centre is within ``kickable_distance`` of the ball's centre may
+* **Kick** (a request longer than ``1e100`` is first shortened like a dash's): a player whose
+  centre is within ``kickable_distance`` of the ball's centre may
   change the ball's velocity by at most ``kick_speed_max`` times an effectiveness that loses
   ``kick_distance_penalty`` at the far edge of the kickable margin and ``kick_angle_penalty``
   when kicking straight back through itself. The kicks of one cycle add up and the sum is
@@ -51,10 +52,10 @@ from soccer_sim.config import MatchConfig
 
 _EPS = 1e-12
 _REQUEST_CAP = 1e100
-"""Longest dash request (m/cycle²) the dash rule works with: a longer one is shortened to this
-length in the same direction first. Any request above the physical limits is clipped to them
-anyway; shortening it first keeps its squared length and the products of the angle rule from
-overflowing to inf (which would turn a request of 1e160 into no dash at all)."""
+"""Longest dash or kick request the rules work with: a longer one is shortened to this length in
+the same direction first. Any request above the physical limits is clipped to them anyway;
+shortening it first keeps its length (and the products of the angle rules) from overflowing to
+inf, which would turn a dash of 1e160 or a kick of 1.7e308 into none at all."""
 
 
 class CycleNoise:
@@ -127,6 +128,11 @@ class Kinematics:
         for row in kickers.tolist():
             kx, ky = float(kick[row, 0]), float(kick[row, 1])
             power = math.hypot(kx, ky)
+            if power > _REQUEST_CAP:  # huge (or overflowing) request: same direction, finite length
+                big = max(abs(kx), abs(ky))
+                kx = kx / big * _REQUEST_CAP
+                ky = ky / big * _REQUEST_CAP
+                power = math.hypot(kx, ky)
             if power > kick_max:
                 kx *= kick_max / power
                 ky *= kick_max / power
