@@ -37,6 +37,7 @@ from formations.errors import FormationError
 from formations.formation import Formation
 from formations.formation_set import FormationSet
 from formations.roles import Role, check_roles
+from formations.validation import check_role_count
 
 FORMAT_FORMATION = "soccer-sim-formation"
 """Value of ``format`` in a single-formation file."""
@@ -158,6 +159,7 @@ def formation_from_dict(document: dict[str, Any], source: str) -> Formation:
     description = _optional_string(document, "description", source)
     roles = _parse_roles(_require(document, "roles", list, source, None), source)
     check_roles(roles, source)  # before the samples, which refer to the roles
+    check_role_count(roles, source)
     balls, positions = _parse_samples(_require(document, "samples", list, source, None), roles, source)
     return Formation(roles, balls, positions, name=name, description=description, source=source)
 

@@ -4,7 +4,9 @@ All players are handled at once on (2n, 2) arrays in the absolute frame (player 
 :class:`~soccer_sim.state.WorldState`). Units: metres, m/cycle, m/cycle². The rules follow
 the RoboCup 2D soccer simulator (rcssserver):
 
-* **Dash**: a team requests an acceleration; the match finds the dash power that gives it,
+* **Dash**: a team requests an acceleration (any finite length: a request longer than
+  ``1e100`` is first shortened to that length, direction kept, so that it cannot overflow);
+  the match finds the dash power that gives it,
   ``power = |a| / (dash_power_rate * effort * dir_rate)``, clipped to ``dash_power_max`` and to
   the player's stamina plus ``extra_stamina``, pays that power in stamina, and applies
   ``power * dash_power_rate * effort * dir_rate`` in the requested direction. ``dir_rate`` is
@@ -19,7 +21,8 @@ the RoboCup 2D soccer simulator (rcssserver):
   recovery_per_cycle`` paid from the half's capacity (see config.StaminaConfig). A player
   who sprints until its stamina is spent keeps dashing with ``recover_min *
   recovery_per_cycle + extra_stamina`` power per cycle at ``effort_min``: about 0.44 m/cycle.
-* **Kick**: a player whose centre is within ``kickable_distance`` of the ball's centre may
+* **Kick** (a request longer than ``1e100`` is first shortened like a dash's): a player whose
+  centre is within ``kickable_distance`` of the ball's centre may
   change the ball's velocity by at most ``kick_speed_max`` times an effectiveness that loses
   ``kick_distance_penalty`` at the far edge of the kickable margin and ``kick_angle_penalty``
   when kicking straight back through itself. The kicks of one cycle add up and the sum is
@@ -48,6 +51,11 @@ from numba import njit
 from soccer_sim.config import MatchConfig
 
 _EPS = 1e-12
+_REQUEST_CAP = 1e100
+"""Longest dash or kick request the rules work with: a longer one is shortened to this length in
+the same direction first. Any request above the physical limits is clipped to them anyway;
+shortening it first keeps its length (and the products of the angle rules) from overflowing to
+inf, which would turn a dash of 1e160 or a kick of 1.7e308 into none at all."""
 
 
 class CycleNoise:
@@ -120,6 +128,11 @@ class Kinematics:
         for row in kickers.tolist():
             kx, ky = float(kick[row, 0]), float(kick[row, 1])
             power = math.hypot(kx, ky)
+            if power > _REQUEST_CAP:  # huge (or overflowing) request: same direction, finite length
+                big = max(abs(kx), abs(ky))
+                kx = kx / big * _REQUEST_CAP
+                ky = ky / big * _REQUEST_CAP
+                power = math.hypot(kx, ky)
             if power > kick_max:
                 kx *= kick_max / power
                 ky *= kick_max / power
@@ -194,10 +207,16 @@ def _dash_kernel(vel: np.ndarray, stamina: np.ndarray, effort: np.ndarray, recov
     rec_thr, rec_dec, rec_min = params[10], params[11], params[12]
     eff_dec_thr, eff_dec, eff_min = params[13], params[14], params[15]
     eff_inc_thr, eff_inc, eff_max = params[16], params[17], params[18]
+    request_cap = _REQUEST_CAP
     fastest = 0.0
     for i in range(vel.shape[0]):
         ax, ay = dash[i, 0], dash[i, 1]
         size = math.sqrt(ax * ax + ay * ay)
+        if size > request_cap:  # huge (or overflowing) request: same direction, finite length
+            big = max(abs(ax), abs(ay))
+            ax = ax / big * request_cap
+            ay = ay / big * request_cap
+            size = math.sqrt(ax * ax + ay * ay)
         vx, vy = vel[i, 0], vel[i, 1]
         if size > 0.0:
             rate = 1.0

@@ -204,8 +204,8 @@ class Match:
             rng = np.random.default_rng(self._team_seeds[team])
             try:
                 self.teams[team].reset(info, self.config, rng)
-            except Exception as exc:
-                raise TeamError(self.team_names[team], f"reset() raised {type(exc).__name__}: {exc}") from exc
+            except (Exception, SystemExit) as exc:
+                raise _team_failure(self.team_names[team], "reset", exc) from exc
         scenario = self.scenario
         self.referee.start(self.state, scenario.start_play_mode, scenario.start_side)
         self._event_mark = len(self.events)
@@ -294,8 +294,8 @@ class Match:
             view = frame.update_view(state, sign)
             try:
                 command = self.teams[team].act(view)
-            except Exception as exc:
-                raise TeamError(frame.name, f"act() raised {type(exc).__name__}: {exc}") from exc
+            except (Exception, SystemExit) as exc:
+                raise _team_failure(frame.name, "act", exc) from exc
             self._catch[team], moves[team] = frame.read_command(command, sign)
             sign = -sign
         return moves
@@ -360,6 +360,15 @@ def run_match(home: Team | str | type, away: Team | str | type, seed: int = 0,
     The result is a pure function of the teams, the config, the scenario and the seed.
     """
     return Match(home, away, seed=seed, config=config, recorders=recorders, scenario=scenario).run()
+
+
+def _team_failure(name: str, method: str, exc: BaseException) -> TeamError:
+    """The TeamError for an exception out of a team's ``reset``/``act``. ``sys.exit()`` in a
+    team's code is a failure of that team too: it must not end the program that plays the match
+    (a tournament, an environment, ``soccer-sim play``) with the team's exit status."""
+    if isinstance(exc, SystemExit):
+        return TeamError(name, f"called sys.exit({exc.code!r}) in {method}()")
+    return TeamError(name, f"{method}() raised {type(exc).__name__}: {exc}")
 
 
 def _resolve_scenario(scenario: Scenario | str | None) -> Scenario:

@@ -37,20 +37,51 @@ def available_teams() -> dict[str, str]:
     return dict(sorted(teams.items()))
 
 
-def _load_path(path: str) -> Any:
+def _load_path(path: str, name: str | None = None) -> Any:
+    """The object ``package.module:Attribute`` names. Whatever goes wrong on the way (no such
+    module, a syntax error in it, an exception or ``sys.exit`` while it is imported, no such
+    attribute) is a one-line :class:`TeamNotFoundError` naming the team, the module and the
+    cause, so every caller (play, tournaments, the environment) reports it the same way."""
     module_name, _, attribute = path.partition(":")
+    label = f"team path {path!r}" if name is None or name == path else f"team {name!r} ({path})"
     if not module_name or not attribute:
-        raise TeamNotFoundError(f"team path {path!r} must look like 'package.module:Attribute'")
+        raise TeamNotFoundError(f"{label} must look like 'package.module:Attribute'")
     try:
         target: Any = importlib.import_module(module_name)
     except ImportError as exc:
-        raise TeamNotFoundError(f"team path {path!r}: cannot import module {module_name!r} ({exc})") from exc
+        raise TeamNotFoundError(f"{label}: cannot import module {module_name!r} ({_one_line(exc)})") from exc
+    except SyntaxError as exc:
+        where = f"{exc.filename}:{exc.lineno}" if exc.filename else f"line {exc.lineno}"
+        raise TeamNotFoundError(f"{label}: module {module_name!r} has a syntax error at {where}: {exc.msg}") from exc
+    except SystemExit as exc:
+        raise TeamNotFoundError(f"{label}: importing module {module_name!r} called sys.exit({exc.code!r})") from exc
+    except Exception as exc:
+        raise TeamNotFoundError(f"{label}: importing module {module_name!r} raised {type(exc).__name__}: "
+                                f"{_one_line(exc)}{_origin(exc)}") from exc
     for part in attribute.split("."):
         try:
             target = getattr(target, part)
         except AttributeError as exc:
-            raise TeamNotFoundError(f"team path {path!r}: {module_name!r} has no attribute {attribute!r}") from exc
+            raise TeamNotFoundError(f"{label}: {module_name!r} has no attribute {attribute!r}") from exc
+        except Exception as exc:
+            raise TeamNotFoundError(f"{label}: reading {attribute!r} from {module_name!r} raised "
+                                    f"{type(exc).__name__}: {_one_line(exc)}") from exc
     return target
+
+
+def _one_line(exc: BaseException) -> str:
+    """An exception's message on one line (error messages of the commands are one line)."""
+    return " ".join(str(exc).split())
+
+
+def _origin(exc: BaseException) -> str:
+    """`` (at FILE:LINE)``: where the exception was raised, or nothing if unknown."""
+    frame = exc.__traceback__
+    if frame is None:
+        return ""
+    while frame.tb_next is not None:
+        frame = frame.tb_next
+    return f" (at {frame.tb_frame.f_code.co_filename}:{frame.tb_lineno})"
 
 
 def _instantiate(target: Any, name: str) -> Team:
@@ -59,9 +90,12 @@ def _instantiate(target: Any, name: str) -> Team:
     if callable(target):
         try:
             team = target()
+        except SystemExit as exc:
+            raise TeamNotFoundError(f"team {name!r}: calling {target!r} without arguments called "
+                                    f"sys.exit({exc.code!r})") from exc
         except Exception as exc:
             raise TeamNotFoundError(f"team {name!r}: calling {target!r} without arguments failed: "
-                                    f"{type(exc).__name__}: {exc}") from exc
+                                    f"{type(exc).__name__}: {_one_line(exc)}") from exc
         if isinstance(team, Team):
             return team
         raise TeamNotFoundError(f"team {name!r}: calling {target!r} gave {type(team).__name__}, "
@@ -82,7 +116,7 @@ def resolve_team(spec: Team | str | type) -> tuple[Team, str]:
                 f"unknown team {spec!r}; registered teams: {', '.join(teams) or '(none)'}; "
                 "or give a path 'package.module:Attribute'"
             )
-        return _instantiate(_load_path(teams[spec]), spec), spec
+        return _instantiate(_load_path(teams[spec], spec), spec), spec
     if isinstance(spec, type):
         return _instantiate(spec, spec.__name__), spec.__name__
     if isinstance(spec, Team):

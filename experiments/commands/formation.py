@@ -110,7 +110,8 @@ def run_validate(args: argparse.Namespace) -> int:
 
 
 def run_show(args: argparse.Namespace) -> int:
-    from formations import Formation
+    from formations import Formation, FormationError
+    from formations.validation import check_ball_position
     from formations.plotting import save_picture
 
     item = _read(args.file)
@@ -126,6 +127,10 @@ def run_show(args: argparse.Namespace) -> int:
     ball = (float(args.ball[0]), float(args.ball[1]))
     if not all(math.isfinite(v) for v in ball):
         return _fail(f"--ball must be two finite numbers (metres), got {ball[0]:g} {ball[1]:g}", 2)
+    try:
+        check_ball_position(ball, "--ball")
+    except FormationError as error:
+        return _fail(str(error), 2)
     label = (formation.name if isinstance(item, Formation) else item.name) or Path(args.file).stem
     out = _picture_path(args.out, label, args.situation, isinstance(item, Formation))
     try:

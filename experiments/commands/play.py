@@ -1,12 +1,24 @@
 """``soccer-sim play [HOME] [AWAY] --seed N [--cycles N] [--json] [--scenario NAME|FILE]
-[--record FILE.rrd]``: play one match and print its report: half-time and final score, the goals (cycle, team, scorer's shirt
-number), set plays of each kind, offside calls and both teams' statistics; ``--json`` prints the
-same as one JSON object. ``--record`` also writes the match as a rerun replay (see
-:mod:`soccer_sim.replay`; watch it with ``soccer-sim replay FILE.rrd``).
+[--record FILE.rrd] [--match-timeout SECONDS]``: play one match and print its report: half-time
+and final score, the goals (cycle, team, scorer's shirt number), set plays of each kind, offside
+calls and both teams' statistics; ``--json`` prints the same as one JSON object. ``--record`` also
+writes the match as a rerun replay (see :mod:`soccer_sim.replay`; watch it with
+``soccer-sim replay FILE.rrd``).
 
 ``--cycles`` up to a regulation match (2 x 3000 cycles) stops the match early; a longer count
-lengthens both halves to half of it each (half time stays in the middle). Ctrl-C stops the match
-with the message "interrupted" and exit status 130.
+lengthens both halves to half of it each (half time stays in the middle).
+
+Stdout carries only the report; every error is one line on stderr. Exit status: 0 for a match
+played (also when the reader of stdout went away, ``play --json | head -1``), 2 for bad input
+(an unknown or unimportable team, a bad scenario file, an unwritable replay), 1 for a match that
+failed (a team raised, returned a malformed command or called ``sys.exit`` in its code, or the
+match overran ``--match-timeout``), 130 after Ctrl-C ("interrupted").
+
+``--match-timeout`` has the tournament's meaning and default (600 s) and its mechanism: a timer
+signal that stops the match where it hangs (in a team's ``act`` or anywhere else in Python
+code); the match is played in this process as without the option, so output and speed do not
+change. Code that never returns to the interpreter (a compiled loop) cannot be stopped this way;
+a tournament also kills its worker process in that case.
 """
 
 from __future__ import annotations
@@ -31,6 +43,12 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                              "(default: the regular match)")
     parser.add_argument("--record", default=None, metavar="FILE.rrd",
                         help="also write the match as a rerun replay (watch it with `soccer-sim replay FILE.rrd`)")
+    from experiments.runner.options import positive_float
+    from experiments.runner.run import DEFAULT_MATCH_TIMEOUT
+
+    parser.add_argument("--match-timeout", type=positive_float, default=DEFAULT_MATCH_TIMEOUT, metavar="SECONDS",
+                        help=f"stop the match with an error if it takes longer, e.g. a team that never returns "
+                             f"from act() (default: {DEFAULT_MATCH_TIMEOUT:g}, as for tournaments)")
     parser.set_defaults(func=run)
 
 
@@ -60,28 +78,39 @@ def run(args: argparse.Namespace) -> int:
     import sys
     import time
 
-    from rich.console import Console
     from rich.markup import escape
 
     from experiments.match_report import match_report
+    from experiments.runner.worker import MatchTimeout, _arm_timer, _disarm_timer
     from soccer_sim import ConfigError, TeamError, TeamNotFoundError, run_match
     from soccer_sim.replay import ReplayError
 
-    console = Console()
+    timeout = getattr(args, "match_timeout", None)
     try:
         config = match_config(args.cycles)
         scenario = _scenario(getattr(args, "scenario", None))
         recorders = _recorders(getattr(args, "record", None))
         start = time.perf_counter()
-        result = run_match(args.home, args.away, seed=args.seed, config=config, scenario=scenario,
-                           recorders=recorders)
+        alarm = _arm_timer(timeout)  # the tournament's timer: MatchTimeout where the match hangs
+        try:
+            result = run_match(args.home, args.away, seed=args.seed, config=config, scenario=scenario,
+                               recorders=recorders)
+        finally:
+            _disarm_timer(alarm)
         elapsed = time.perf_counter() - start
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return 130
-    except (TeamNotFoundError, TeamError, ConfigError, ValueError, ReplayError) as exc:
-        console.print(f"[red]error:[/red] {escape(str(exc))}")
-        return 2
+    except MatchTimeout as exc:
+        return _fail(f"match stopped: it exceeded its time budget of {exc.seconds:g} s (--match-timeout)", 1)
+    except TeamError as exc:  # a team failed during the match: a failed run
+        if isinstance(exc.__cause__, MatchTimeout):
+            method = exc.message.split("(", 1)[0]
+            return _fail(f"match stopped: it exceeded its time budget of {exc.__cause__.seconds:g} s "
+                         f"(--match-timeout) while team {exc.team_name!r} was in {method}()", 1)
+        return _fail(str(exc), 1)
+    except (TeamNotFoundError, ConfigError, ValueError, ReplayError) as exc:  # bad input
+        return _fail(str(exc), 2)
     report = match_report(result)
     try:
         if args.json:
@@ -90,6 +119,7 @@ def run(args: argparse.Namespace) -> int:
                 data.update(scenario=result.scenario, end_reason=result.end_reason)
             print(json.dumps(data, indent=2))
         else:
+            console = _report_console()
             _print_report(console, report, elapsed)
             if scenario is not None:
                 console.print(f"scenario {escape(result.scenario)}: ended by {result.end_reason} after "
@@ -103,6 +133,26 @@ def run(args: argparse.Namespace) -> int:
 
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no second error at exit
     return 0
+
+
+def _fail(message: str, status: int) -> int:
+    """``error: message`` as one line on stderr (stdout carries only the report); the status."""
+    from experiments.runner.options import fail
+
+    return fail(" ".join(message.split()), status)
+
+
+def _report_console():
+    """A rich console for the report that lets a closed stdout raise BrokenPipeError (rich's
+    own handling would exit with status 1 where ``--json`` exits with 0)."""
+    from rich.console import Console
+
+    class ReportConsole(Console):
+        def on_broken_pipe(self) -> None:
+            self.quiet = True
+            raise BrokenPipeError
+
+    return ReportConsole()
 
 
 def _scenario(text: str | None):

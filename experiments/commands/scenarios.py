@@ -39,8 +39,8 @@ def run(args: argparse.Namespace) -> int:
         text = args.scenario
         scenario = load_scenario(text) if text.lower().endswith((".json", ".toml")) else get_scenario(text)
         scenario.check(MatchConfig())
-    except ScenarioError as exc:
-        Console(stderr=True).print(f"error: {exc}", style="red", markup=False)
+    except ScenarioError as exc:  # one plain line (a rich console would wrap a long message)
+        print(f"error: {' '.join(str(exc).split())}", file=sys.stderr)
         return 2
     try:
         print(_compact_points(json.dumps(scenario_to_dict(scenario), indent=2)))

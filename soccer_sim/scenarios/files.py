@@ -89,17 +89,21 @@ def load_scenario(path: str | Path) -> Scenario:
     """Read a scenario from a ``.json`` or ``.toml`` file; ScenarioError for a bad file."""
     path = Path(path)
     suffix = path.suffix.lower()
+    if suffix not in (".json", ".toml"):
+        raise ScenarioError("Scenario", f"{path}: expected a .json or .toml file")
+    kind = suffix[1:].upper()
     try:
-        if suffix == ".json":
-            data = json.loads(path.read_text())
-        elif suffix == ".toml":
-            data = tomllib.loads(path.read_text())
-        else:
-            raise ScenarioError("Scenario", f"{path}: expected a .json or .toml file")
+        text = path.read_text(encoding="utf-8")
+        data = json.loads(text) if suffix == ".json" else tomllib.loads(text)
     except OSError as exc:
         raise ScenarioError("Scenario", f"cannot read {path}: {exc.strerror or exc}") from None
+    except UnicodeDecodeError as exc:
+        raise ScenarioError("Scenario", f"{path} is not a UTF-8 text {kind} file (byte {exc.start} is not "
+                                        "UTF-8)") from None
     except (json.JSONDecodeError, tomllib.TOMLDecodeError) as exc:
-        raise ScenarioError("Scenario", f"{path} is not valid {suffix[1:].upper()}: {exc}") from None
+        raise ScenarioError("Scenario", f"{path} is not valid {kind}: {exc}") from None
+    except RecursionError:
+        raise ScenarioError("Scenario", f"{path} is not a usable {kind} scenario: nested too deeply") from None
     return scenario_from_dict(data, str(path))
 
 

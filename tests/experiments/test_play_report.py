@@ -93,8 +93,9 @@ def test_error_text_with_brackets_is_printed(monkeypatch, capsys):
         raise TeamError("x", "command.dash is not finite: [nan, nan]", player=3)
 
     monkeypatch.setattr(soccer_sim, "run_match", failing)
-    assert main(["play", "--cycles", "5"]) == 2
-    assert "command.dash is not finite: [nan, nan]" in capsys.readouterr().out
+    assert main(["play", "--cycles", "5"]) == 1  # a team failing during the match: a failed run
+    captured = capsys.readouterr()
+    assert "command.dash is not finite: [nan, nan]" in captured.err and captured.out == ""
 
 
 def test_ctrl_c_prints_interrupted_and_exits_130(monkeypatch, capsys):
