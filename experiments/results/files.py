@@ -23,20 +23,21 @@ SQLITE_COMPANIONS = ("", "-wal", "-shm", "-journal")
 SQLITE_HEADER = b"SQLite format 3\x00"
 
 
-def is_input(target: str | os.PathLike, inputs: Iterable[str | os.PathLike]) -> bool:
-    """True when writing ``target`` would write onto one of ``inputs`` (the same file by path
-    or by inode, through symbolic or hard links) or onto an input's SQLite companion files."""
+def written_input(target: str | os.PathLike, inputs: Iterable[str | os.PathLike]) -> str | None:
+    """The input that writing ``target`` would write onto (the same file by path or by inode,
+    through symbolic or hard links, or the input's SQLite ``-wal``/``-shm``/``-journal``
+    file), or None."""
     target = Path(target)
     resolved = target.resolve()
     for source in inputs:
         for suffix in SQLITE_COMPANIONS:
             companion = Path(f"{source}{suffix}")
             if companion.resolve() == resolved:
-                return True
+                return str(companion)
             with contextlib.suppress(OSError):
                 if target.exists() and companion.exists() and os.path.samefile(target, companion):
-                    return True
-    return False
+                    return str(companion)
+    return None
 
 
 def directory_problem(directory: str | os.PathLike) -> str | None:
@@ -66,8 +67,9 @@ def file_problem(path: str | os.PathLike, inputs: Iterable[str | os.PathLike] = 
     """Why the output file ``path`` cannot be written (before any work is done), or None: it is
     one of ``inputs``, a directory, in a missing or unwritable directory."""
     path = Path(path)
-    if is_input(path, inputs):
-        return "is the file being read; give another output file"
+    source = written_input(path, inputs)
+    if source is not None:
+        return f"would overwrite {source}, which this command reads; give another output file"
     if path.is_dir():
         return "is a directory; give a file name"
     parent = path.parent
@@ -85,6 +87,8 @@ def atomic_output(path: str | os.PathLike) -> Iterator[Path]:
     OSErrors come out naming ``path``. An existing SQLite database at ``path`` is never replaced
     (an output name that collides with a results file is a mistake, not a wish)."""
     path = Path(path)
+    if path.is_symlink():
+        path = path.resolve()               # write where the link points, as open() would
     if _is_sqlite(path):
         raise FileExistsError(errno.EEXIST, "is an SQLite database, not overwritten", str(path))
     try:
