@@ -262,18 +262,24 @@ def _connect_read_only(path: Path) -> tuple[sqlite3.Connection, Callable[[], Non
     created (read-only media), the files are read from a private copy instead."""
     pending = [Path(f"{path}{suffix}") for suffix in ("-wal", "-journal") if Path(f"{path}{suffix}").exists()]
     uri = path.resolve().as_uri() + ("?mode=ro" if pending else "?mode=ro&immutable=1")
-    db = sqlite3.connect(uri, uri=True, timeout=30.0)
+    db = None
     try:
+        db = sqlite3.connect(uri, uri=True, timeout=30.0)
         db.execute("SELECT COUNT(*) FROM sqlite_master").fetchone()      # the file is opened lazily
-    except sqlite3.OperationalError:
-        db.close()
-        if not pending:
-            raise
-        return _private_copy(path, pending)
-    except sqlite3.DatabaseError:
-        db.close()
+    except sqlite3.DatabaseError as exc:
+        if db is not None:
+            db.close()
+        if pending and _cannot_open(exc):
+            return _private_copy(path, pending)
         raise
     return db, None
+
+
+def _cannot_open(exc: sqlite3.DatabaseError) -> bool:
+    """True when SQLite could not open (or would have to write) the files to read them."""
+    name = getattr(exc, "sqlite_errorname", "") or ""
+    text = str(exc).lower()
+    return name.startswith(("SQLITE_CANTOPEN", "SQLITE_READONLY")) or "unable to open" in text or "readonly" in text
 
 
 def _private_copy(path: Path, companions: list[Path]) -> tuple[sqlite3.Connection, Callable[[], None]]:
