@@ -65,13 +65,18 @@ def directory_problem(directory: str | os.PathLike) -> str | None:
 
 def file_problem(path: str | os.PathLike, inputs: Iterable[str | os.PathLike] = ()) -> str | None:
     """Why the output file ``path`` cannot be written (before any work is done), or None: it is
-    one of ``inputs``, a directory, in a missing or unwritable directory."""
+    one of ``inputs``, a directory, an SQLite database (a results file, most likely), read-only, in a
+    missing or unwritable directory."""
     path = Path(path)
     source = written_input(path, inputs)
     if source is not None:
         return f"would overwrite {source}, which this command reads; give another output file"
     if path.is_dir():
         return "is a directory; give a file name"
+    if is_sqlite(path):
+        return "is an SQLite database, never overwritten by an output; give another file name"
+    if path.exists() and not os.access(path, os.W_OK):
+        return "not writable (permission denied)"
     parent = path.parent
     if not parent.is_dir():
         return f"directory {parent} does not exist"
@@ -89,7 +94,7 @@ def atomic_output(path: str | os.PathLike) -> Iterator[Path]:
     path = Path(path)
     if path.is_symlink():
         path = path.resolve()               # write where the link points, as open() would
-    if _is_sqlite(path):
+    if is_sqlite(path):
         raise FileExistsError(errno.EEXIST, "is an SQLite database, not overwritten", str(path))
     try:
         handle, name = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=path.suffix)
@@ -119,7 +124,8 @@ def _mode_for(path: Path) -> int:
         return 0o666 & ~mask
 
 
-def _is_sqlite(path: Path) -> bool:
+def is_sqlite(path: str | os.PathLike) -> bool:
+    """True when ``path`` is an SQLite database file (by its header)."""
     try:
         with open(path, "rb") as handle:
             return handle.read(len(SQLITE_HEADER)) == SQLITE_HEADER

@@ -80,6 +80,11 @@ def test_export_never_writes_onto_the_results_file(results, tmp_path, capsys) ->
         line = error_line(capsys)
         assert f"{option} {target}: would overwrite" in line and "which this command reads" in line
         assert digest(results) == before
+    other = tmp_path / "other.sqlite"                               # another results file: never an output
+    shutil.copyfile(results, other)
+    assert main(["results", "export", str(results), "--csv", str(other)]) == 2
+    assert f"--csv {other}: is an SQLite database, never overwritten" in error_line(capsys)
+    assert digest(other) == before
     with ResultStore.open(results) as store:
         assert store.count() == 2
 
