@@ -69,12 +69,16 @@ class ResultStore:
         """Open an existing results file read-only (it is never changed, even when it is not a
         results file); ResultsError naming the file if it is missing or not a results file."""
         path = Path(path)
+        if path.is_dir():
+            raise ResultsError(f"{path}: is a directory, not a results file")
         if not path.is_file():
             raise ResultsError(f"{path}: no such results file")
         try:
             connection, cleanup = _connect_read_only(path)
+        except sqlite3.OperationalError as exc:                  # e.g. no permission to read it
+            raise ResultsError(f"{path}: cannot be read ({exc})") from None
         except sqlite3.DatabaseError as exc:
-            raise ResultsError(f"{path}: cannot be read as a results file ({exc})") from None
+            raise ResultsError(f"{path}: not a soccer-sim results file ({exc})") from None
         store = cls(path, connection, cleanup=cleanup)
         try:
             meta = store.meta()
