@@ -119,7 +119,8 @@ def test_reading_an_empty_or_foreign_file_changes_nothing(tmp_path, capsys) -> N
     db.close()
     before = files_in(tmp_path)
     for path, what in ((empty, "an empty file"), (foreign, "an SQLite database with tables people")):
-        for command in (["results", "show", str(path)], ["results", "export", str(path), "--csv", str(tmp_path / "m.csv")],
+        for command in (["results", "show", str(path)],
+                        ["results", "export", str(path), "--csv", str(tmp_path / "m.csv")],
                         ["replay", "--results", str(path), "--row", "0", "--out", str(tmp_path / "m.rrd")]):
             assert main(command) == 2
             assert error_line(capsys) == f"error: {path}: not a soccer-sim results file ({what})"
@@ -145,8 +146,9 @@ def test_reading_a_results_file_opens_it_read_only(results, capsys) -> None:
 
 def test_a_log_left_by_kill_9_is_read_without_changing_anything(tmp_path, monkeypatch) -> None:
     writer = ResultStore.create(tmp_path / "r.sqlite", "tournament", "abc", "{}", {})
-    with monkeypatch.context() as patch:                             # rows only in the -wal file, as in a
-        patch.setattr(ResultStore, "_checkpoint", lambda self, mode: None, raising=False)   # file left by an older version
+    with monkeypatch.context() as patch:
+        # Rows only in the -wal file, as in a file an older version left behind.
+        patch.setattr(ResultStore, "_checkpoint", lambda self, mode: None, raising=False)
         for seed in range(3):
             writer.add(MatchRecord("A", "B", seed, "abc", home_goals=1, away_goals=0))
         crashed, locked = tmp_path / "crashed", tmp_path / "locked"
