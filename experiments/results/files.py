@@ -44,8 +44,8 @@ def directory_problem(directory: str | os.PathLike) -> str | None:
     """Why files cannot be written into ``directory`` (created later if missing), or None.
 
     A missing directory is fine when its nearest existing ancestor is a directory we can write
-    in. Writability is probed by creating (and removing) a temporary file, so read-only mounts
-    and access rules are seen as they are (``os.access`` says yes to root on a read-only mount)."""
+    in. Writability is probed by creating (and removing) a temporary file: the check meets
+    whatever a write would (permissions, a read-only mount, no free inodes)."""
     directory = Path(directory)
     existing = directory
     while not existing.exists():
