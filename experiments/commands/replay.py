@@ -8,7 +8,9 @@
 - ``soccer-sim replay --results results.sqlite --row K --out match.rrd`` plays match ``K``
   (0-based, in the order of ``soccer-sim results export``) of a stored run again and records
   it: a match is a pure function of its teams, configuration and seed, so the replay is the
-  match that was stored (on the same platform; the command checks the score).
+  match that was stored (on the same platform; the command checks the score). A row whose
+  match failed (a team raised, sent a malformed command or ran out of time, or its worker
+  died) holds no match to re-create: the command says which failure it was and stops.
 """
 
 from __future__ import annotations
@@ -91,7 +93,7 @@ def _recreate(args: argparse.Namespace) -> int:
     from experiments.results.store import ResultsError, ResultStore
     from experiments.runner.spec import config_for, config_hash
     from experiments.runner.worker import make_team
-    from soccer_sim import run_match
+    from soccer_sim import TeamError, TeamNotFoundError, run_match
     from soccer_sim.replay import RerunRecorder
 
     if args.row is None:
@@ -105,38 +107,53 @@ def _recreate(args: argparse.Namespace) -> int:
     if not 0 <= args.row < len(records):
         return _fail(f"--row {args.row}: {args.results} holds rows 0 to {len(records) - 1}")
     record = records[args.row]
+    if not record.played:
+        return _fail(f"--row {args.row}: {_failure(record)}; only a match played to its end can be re-created")
     config = config_for(params.get("cycles"))
     if config_hash(config) != record.config_hash:
         return _fail(f"row {args.row} was played with configuration {record.config_hash}, which this version "
                      f"cannot rebuild (it builds {config_hash(config)})")
-    problem = _unwritable_replay(args.out)
+    problem = _unwritable_replay(args.out, args.results)
     if problem:
         return _fail(f"--out {args.out}: {problem}")
-    home, away = make_team(record.home)[0], make_team(record.away)[0]
-    result = run_match(home, away, seed=record.seed, config=config, recorders=[RerunRecorder(args.out)])
+    try:
+        home, away = make_team(record.home)[0], make_team(record.away)[0]
+    except TeamNotFoundError as exc:
+        return _fail(f"row {args.row}: {exc}")
+    try:
+        result = run_match(home, away, seed=record.seed, config=config, recorders=[RerunRecorder(args.out)])
+    except TeamError as exc:
+        return _fail(f"row {args.row}: the match failed this time ({type(exc).__name__}: {exc}), though it was "
+                     "played to its end when stored: the team's code has changed since", 1)
+    except KeyboardInterrupt:
+        print(f"interrupted: the replay in {args.out} is incomplete", file=sys.stderr)
+        return 130
     stored = (record.home_goals, record.away_goals)
     print(f"{record.home} {result.score[0]} - {result.score[1]} {record.away} (seed {record.seed}); "
           f"replay written to {args.out}")
-    if record.error:
-        print(f"note: the stored row has an error ({record.error.splitlines()[0]}); the replay plays the "
-              f"match without the failure")
-    elif tuple(int(g) for g in result.score) != stored:
+    if tuple(int(g) for g in result.score) != stored:
         print(f"note: the stored score was {stored[0]} - {stored[1]}: this machine or library versions "
               f"differ from the ones that played it (a match is bit-identical only on the same platform)")
     return 0
 
 
-def _unwritable_replay(path: str) -> str | None:
+def _failure(record) -> str:
+    """Which failure a stored row holds, in one line: the match, who forfeited it, the error."""
+    from experiments.stats import blamed_team
+
+    who = blamed_team(record)
+    blame = f"forfeited by {who}" if who else "not played to its end (no team blamed)"
+    error = (record.error or "").strip().splitlines()
+    return (f"{record.home} v {record.away}, seed {record.seed}, was {blame}: "
+            f"{error[0] if error else 'no error message stored'}")
+
+
+def _unwritable_replay(path: str, results: str) -> str | None:
     """Why a replay cannot be written to ``path`` (before the match is played), or None."""
     from pathlib import Path
 
-    target = Path(path)
-    if target.suffix != ".rrd":
+    from experiments.results.files import file_problem
+
+    if Path(path).suffix != ".rrd":
         return "a replay file must end in .rrd"
-    if not target.parent.is_dir():
-        return f"directory {target.parent} does not exist"
-    try:
-        target.touch()
-    except OSError as exc:
-        return f"cannot write it ({exc.strerror or exc})"
-    return None
+    return file_problem(path, inputs=[results])

@@ -3,6 +3,10 @@
 
 ``show`` prints the same tables as the command that made the file (``tournament``,
 ``experiment case-study``, ``experiment drop-in``), from the stored matches alone.
+
+Both only read the results file: it is opened read-only and never changed (so they work on
+read-only media too), and an output that would land on it is refused. Exit status 2 for bad
+input (with a one-line message), 1 when an output cannot be written (nothing partial is left).
 """
 
 from __future__ import annotations
@@ -33,23 +37,33 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     show.set_defaults(func=run_show)
 
 
-def _fail(message: str) -> int:
+def _fail(message: str, status: int = 2) -> int:
     print(f"error: {message}", file=sys.stderr)
-    return 2
+    return status
 
 
 def run_export(args: argparse.Namespace) -> int:
     from pathlib import Path
 
-    from experiments.results.export import ExportError, export_csv, export_parquet
+    from experiments.results.export import ExportError, export_csv, export_parquet, parquet_library
+    from experiments.results.files import describe, file_problem
     from experiments.results.store import ResultsError, ResultStore
 
+    option, out = ("--csv", Path(args.csv)) if args.csv else ("--parquet", Path(args.parquet))
+    problem = file_problem(out, inputs=[args.file])
+    if problem:
+        return _fail(f"{option} {out}: {problem}")
     try:
+        if args.parquet:
+            parquet_library()
         with ResultStore.open(args.file) as store:
             records = store.records()
-        path = export_csv(records, Path(args.csv)) if args.csv else export_parquet(records, Path(args.parquet))
     except (ResultsError, ExportError) as exc:
         return _fail(str(exc))
+    try:
+        path = export_csv(records, out) if args.csv else export_parquet(records, out)
+    except OSError as exc:
+        return _fail(f"{option}: cannot write {describe(exc)}; nothing was written", 1)
     print(f"wrote {path}: {len(records)} matches")
     return 0
 
@@ -58,8 +72,13 @@ def run_show(args: argparse.Namespace) -> int:
     import importlib
     from pathlib import Path
 
+    from experiments.results.files import describe, directory_problem
     from experiments.results.store import ResultsError, ResultStore
 
+    out_dir = Path(args.tables) if args.tables else None
+    problem = directory_problem(out_dir) if out_dir is not None else None
+    if problem:
+        return _fail(f"--tables {out_dir}: {problem}")
     try:
         with ResultStore.open(args.file) as store:
             kind, params, records, meta = store.kind, store.params, store.records(), store.meta()
@@ -73,12 +92,10 @@ def run_show(args: argparse.Namespace) -> int:
     failed = sum(not r.played for r in mine)
     print(f"{args.file}: {kind}, {len(mine)} of {len(wanted)} matches stored ({failed} failed), "
           f"configuration {meta.get('config_hash')}, code {sorted({r.code_version for r in mine}) or '-'}")
-    out_dir = None
-    if args.tables:
-        out_dir = Path(args.tables)
-        try:
+    try:
+        if out_dir is not None:
             out_dir.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            return _fail(f"--tables {out_dir}: cannot create the directory ({exc.strerror})")
-    module.report(mine, params, out_dir)
+        module.report(mine, params, out_dir)
+    except OSError as exc:
+        return _fail(f"--tables {out_dir}: cannot write {describe(exc)}", 1)
     return 0

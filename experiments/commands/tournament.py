@@ -6,8 +6,9 @@ each team at home, the same seeds for every pairing, so two teams' results again
 opponent can be compared match by match. Matches are stored in ``--out`` as they finish;
 re-running the same command plays only what is missing. Prints the league table (points,
 W/D/L, goals, mean goal difference and its standard error) and the pairwise goal-difference
-matrix, and writes both as CSV with a PNG (mean goal difference with 95% intervals; the
-pairwise heatmap) to ``--tables``.
+matrix, and writes both to ``--tables`` as CSV (``league.csv``, ``pairwise.csv``), as Markdown
+(``tournament.md``) and as a PNG (``tournament.png``: mean goal difference with 95% intervals;
+the pairwise heatmap). Each file is written whole or not at all.
 """
 
 from __future__ import annotations
@@ -98,8 +99,10 @@ def tables(records: Sequence, teams: Sequence[str]) -> tuple:
 
 def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list[Path]:
     """Print the league table and the pairwise matrix; with ``out_dir``, write league.csv,
-    pairwise.csv and tournament.png there. Returns the files written."""
-    from experiments.reporting import ESTIMATE_COLUMNS, write_csv
+    pairwise.csv, tournament.md and tournament.png there, each through a temporary file (an
+    OSError naming the file leaves no partial one). Returns the files written."""
+    from experiments.reporting import ESTIMATE_COLUMNS, write_csv, write_markdown
+    from experiments.results.files import atomic_output
 
     teams = params["teams"]
     league, matrix, league_rows, pair_rows = tables(records, teams)
@@ -107,13 +110,24 @@ def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list
     matrix.print()
     if out_dir is None:
         return []
-    written = [
-        write_csv(out_dir / "league.csv", ["rank", "team", "games", "points", "wins", "draws", "losses", "forfeits",
-                                           "goals_for", "goals_against", *ESTIMATE_COLUMNS], league_rows),
-        write_csv(out_dir / "pairwise.csv", ["team", "opponent", "games", "wins", "draws", "losses", "forfeits",
-                                             "goals_for", "goals_against", *ESTIMATE_COLUMNS], pair_rows),
-        _figure(out_dir / "tournament.png", teams, league_rows, pair_rows),
-    ]
+    cycles = params["cycles"] or "regulation (6000)"
+    writers = {
+        "league.csv": lambda path: write_csv(path, ["rank", "team", "games", "points", "wins", "draws", "losses",
+                                                    "forfeits", "goals_for", "goals_against", *ESTIMATE_COLUMNS],
+                                             league_rows),
+        "pairwise.csv": lambda path: write_csv(path, ["team", "opponent", "games", "wins", "draws", "losses",
+                                                      "forfeits", "goals_for", "goals_against", *ESTIMATE_COLUMNS],
+                                               pair_rows),
+        "tournament.md": lambda path: write_markdown(path, [league, matrix],
+                                                     f"Tournament: {len(records)} matches, seeds from "
+                                                     f"{params['seed']}, cycles per match: {cycles}."),
+        "tournament.png": lambda path: _figure(path, teams, league_rows, pair_rows),
+    }
+    written = []
+    for name, write in writers.items():
+        with atomic_output(out_dir / name) as temporary:
+            write(temporary)
+        written.append(out_dir / name)
     print("wrote " + ", ".join(str(path) for path in written))
     return written
 

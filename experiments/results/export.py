@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from pathlib import Path
 
+from experiments.results.files import atomic_output
 from experiments.results.record import MatchRecord
 
 BASE_COLUMNS = ("home", "away", "seed", "config_hash", "code_version", "home_goals", "away_goals", "cycles",
@@ -13,7 +14,7 @@ BASE_COLUMNS = ("home", "away", "seed", "config_hash", "code_version", "home_goa
 
 
 class ExportError(Exception):
-    """An export could not be written (missing optional dependency, unwritable path)."""
+    """An export cannot be made (a missing optional dependency)."""
 
 
 def flat_rows(records: Sequence[MatchRecord]) -> tuple[list[str], list[dict[str, object]]]:
@@ -32,33 +33,35 @@ def flat_rows(records: Sequence[MatchRecord]) -> tuple[list[str], list[dict[str,
 
 
 def export_csv(records: Sequence[MatchRecord], path: Path) -> Path:
+    """Write ``records`` to ``path`` as CSV, whole or not at all (OSError naming ``path``)."""
     import csv
 
     columns, rows = flat_rows(records)
-    try:
-        with open(path, "w", newline="") as handle:
-            writer = csv.DictWriter(handle, fieldnames=columns)
-            writer.writeheader()
-            writer.writerows(rows)
-    except OSError as exc:
-        raise ExportError(f"{path}: cannot write ({exc.strerror})") from None
+    with atomic_output(path) as temporary, open(temporary, "w", newline="") as handle:
+        writer = csv.DictWriter(handle, fieldnames=columns)
+        writer.writeheader()
+        writer.writerows(rows)
     return path
 
 
-def export_parquet(records: Sequence[MatchRecord], path: Path) -> Path:
-    """Parquet through pyarrow (the optional ``parquet`` extra)."""
+def parquet_library():
+    """(pyarrow, pyarrow.parquet), or ExportError saying how to install them."""
     try:
         import pyarrow as pa
         import pyarrow.parquet as pq
     except ImportError:
         raise ExportError("Parquet export needs pyarrow: pip install 'soccer-sim[parquet]' (or pip install pyarrow); "
                           "--csv needs nothing extra") from None
+    return pa, pq
+
+
+def export_parquet(records: Sequence[MatchRecord], path: Path) -> Path:
+    """Parquet through pyarrow (the optional ``parquet`` extra), whole or not at all."""
+    pa, pq = parquet_library()
     columns, rows = flat_rows(records)
     table = pa.Table.from_pylist(rows, schema=_schema(pa, columns, rows))
-    try:
-        pq.write_table(table, str(path))
-    except OSError as exc:
-        raise ExportError(f"{path}: cannot write ({exc})") from None
+    with atomic_output(path) as temporary:
+        pq.write_table(table, str(temporary))
     return path
 
 

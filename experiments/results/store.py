@@ -5,14 +5,22 @@ The parent process writes every finished match in its own transaction, so an int
 (home, away, seed, configuration hash) makes re-running the same command play only what is
 missing. The file also records what made it (the command's kind and parameters and the match
 configuration): results of a different configuration or command are never mixed into it.
+
+Reading never changes a file: :meth:`ResultStore.open` opens it read-only (no journal-mode
+switch, no new tables, nothing written into an empty or foreign file), which also works on
+read-only media. Writing checkpoints the write-ahead log after every stored match and on
+close, so the ``.sqlite`` file alone holds every stored row even after ``kill -9`` (a leftover
+``-wal`` file is merged by the next writer, and read as it is by readers).
 """
 
 from __future__ import annotations
 
 import json
 import os
+import shutil
 import sqlite3
-from collections.abc import Iterable
+import tempfile
+from collections.abc import Callable, Iterable
 from pathlib import Path
 
 from experiments.results.record import FORFEIT_NONE, MatchRecord
@@ -40,29 +48,47 @@ class ResultsError(Exception):
     different configuration or command. The message names the file and says what to do."""
 
 
+class StorageError(Exception):
+    """Writing to a results file failed (disk full, I/O error, permission lost): every match
+    stored before is kept. The message names the file and what was kept."""
+
+
 class ResultStore:
     """An open results file. Use :meth:`create` to run into it and :meth:`open` to read it."""
 
-    def __init__(self, path: Path, connection: sqlite3.Connection) -> None:
+    def __init__(self, path: Path, connection: sqlite3.Connection, writable: bool = False,
+                 cleanup: Callable[[], None] | None = None) -> None:
         self.path = path
         self._db = connection
+        self._writable = writable
+        self._cleanup = cleanup
 
     # -- opening ----------------------------------------------------------------------------
     @classmethod
     def open(cls, path: str | os.PathLike) -> ResultStore:
-        """Open an existing results file for reading."""
+        """Open an existing results file read-only (it is never changed, even when it is not a
+        results file); ResultsError naming the file if it is missing or not a results file."""
         path = Path(path)
+        if path.is_dir():
+            raise ResultsError(f"{path}: is a directory, not a results file")
         if not path.is_file():
             raise ResultsError(f"{path}: no such results file")
-        store = cls(path, _connect(path))
+        try:
+            connection, cleanup = _connect_read_only(path)
+        except sqlite3.OperationalError as exc:                  # e.g. no permission to read it
+            raise ResultsError(f"{path}: cannot be read ({exc})") from None
+        except sqlite3.DatabaseError as exc:
+            raise ResultsError(f"{path}: not a soccer-sim results file ({exc})") from None
+        store = cls(path, connection, cleanup=cleanup)
         try:
             meta = store.meta()
         except sqlite3.DatabaseError as exc:
             store.close()
             raise ResultsError(f"{path}: not a soccer-sim results file ({exc})") from None
         if "kind" not in meta:
+            contents = _contents(path, store)
             store.close()
-            raise ResultsError(f"{path}: not a soccer-sim results file (no run description)")
+            raise ResultsError(f"{path}: not a soccer-sim results file ({contents})")
         return store
 
     @classmethod
@@ -70,8 +96,10 @@ class ResultStore:
                params: dict[str, object]) -> ResultStore:
         """Open ``path`` to store matches of command ``kind`` played with configuration
         ``config_hash`` (``config``: its description), creating the file if needed. An existing
-        file must hold the same kind and configuration; ``params`` (the command's parameters)
-        replace the stored ones, so ``results show`` repeats the latest run's tables."""
+        file must hold the same kind and configuration (checked read-only, before anything is
+        written: another program's database is refused untouched); ``params`` (the command's
+        parameters) replace the stored ones, so ``results show`` repeats the latest run's tables.
+        StorageError when the file cannot be written (disk full)."""
         path = Path(path)
         parent = path.parent if str(path.parent) else Path(".")
         if path.is_dir():
@@ -80,33 +108,22 @@ class ResultStore:
             raise ResultsError(f"{path}: directory {parent} does not exist")
         if not os.access(parent, os.W_OK) or (path.exists() and not os.access(path, os.W_OK)):
             raise ResultsError(f"{path}: not writable (permission denied)")
-        existed = path.exists() and path.stat().st_size > 0
+        if path.exists() and path.stat().st_size > 0:
+            _check_existing(path, kind, config_hash)
         try:
-            store = cls(path, _connect(path))
-            if existed:
-                meta = store.meta()
-                store._check_same_run(meta, kind, config_hash)
+            store = cls(path, _connect_writable(path), writable=True)
+        except sqlite3.DatabaseError as exc:
+            raise _write_failure(path, exc, "no match was played") from None
+        try:
             with store._db:
                 store._db.executescript(_SCHEMA)
                 for key, value in (("schema", SCHEMA_VERSION), ("kind", kind), ("config_hash", config_hash),
                                    ("config", config), ("params", json.dumps(params, sort_keys=True))):
                     store._db.execute("INSERT OR REPLACE INTO meta VALUES (?, ?)", (key, value))
         except sqlite3.DatabaseError as exc:
-            raise ResultsError(f"{path}: cannot be used as a results file ({exc}); delete it or give another --out") from None
+            store.close()
+            raise _write_failure(path, exc, "no match was played") from None
         return store
-
-    def _check_same_run(self, meta: dict[str, str], kind: str, config_hash: str) -> None:
-        if not meta:
-            return
-        fresh = f"to start fresh, delete {self.path} or give another --out"
-        if meta.get("kind") not in (None, kind):
-            self.close()
-            raise ResultsError(f"{self.path} holds the results of '{meta['kind']}', not '{kind}'; {fresh}")
-        if meta.get("config_hash") not in (None, config_hash):
-            self.close()
-            raise ResultsError(f"{self.path} holds results of a different match configuration "
-                               f"(hash {meta['config_hash']}, this run: {config_hash}; e.g. another --cycles); "
-                               f"results of different configurations are never mixed; {fresh}")
 
     # -- reading ----------------------------------------------------------------------------
     def meta(self) -> dict[str, str]:
@@ -142,11 +159,13 @@ class ResultStore:
 
     # -- writing ----------------------------------------------------------------------------
     def add(self, record: MatchRecord) -> None:
-        """Store one finished match in its own transaction (a key already stored is kept)."""
+        """Store one finished match in its own transaction (a key already stored is kept), then
+        copy it from the write-ahead log into the file itself."""
         row = record.to_row()
         with self._db:
             self._db.execute(f"INSERT OR IGNORE INTO matches ({', '.join(COLUMNS)}) VALUES "
                              f"({', '.join('?' for _ in COLUMNS)})", [row[c] for c in COLUMNS])
+        self._checkpoint("PASSIVE")
 
     def forget_errors(self, keys: Iterable[tuple[str, str, int]], unattributed_only: bool = False) -> int:
         """Delete the failed matches among ``keys`` so they are played again (only those no team
@@ -156,8 +175,25 @@ class ResultStore:
             return sum(self._db.execute("DELETE FROM matches WHERE home = ? AND away = ? AND seed = ? "
                                         f"AND error IS NOT NULL{extra}", key).rowcount for key in keys)
 
+    def _checkpoint(self, mode: str) -> None:
+        """Copy committed rows from the ``-wal`` file into the database file (``TRUNCATE`` also
+        empties the log). A failure is harmless: the rows stay committed in the log, which the
+        next writer merges and readers read, so it is not an error of the run."""
+        try:
+            self._db.execute(f"PRAGMA wal_checkpoint({mode})").fetchall()
+        except sqlite3.Error:
+            pass
+
     def close(self) -> None:
-        self._db.close()
+        """Close the file; a writer first checkpoints, so the ``.sqlite`` file is complete on its own."""
+        try:
+            if self._writable:
+                self._checkpoint("TRUNCATE")
+        finally:
+            self._db.close()
+            if self._cleanup is not None:
+                self._cleanup()
+                self._cleanup = None
 
     def __enter__(self) -> ResultStore:
         return self
@@ -166,11 +202,120 @@ class ResultStore:
         self.close()
 
 
-def _connect(path: Path) -> sqlite3.Connection:
+def _check_existing(path: Path, kind: str, config_hash: str) -> None:
+    """Refuse (ResultsError) to run into ``path`` unless it is an empty database or holds the
+    results of the same command and configuration; read-only, so a refused file is left as it was."""
+    unusable = f"{path}: cannot be used as a results file ({{}}); delete it or give another --out"
     try:
-        db = sqlite3.connect(str(path), timeout=30.0)
+        connection, cleanup = _connect_read_only(path)
+    except sqlite3.DatabaseError as exc:
+        raise ResultsError(unusable.format(exc)) from None
+    store = ResultStore(path, connection, cleanup=cleanup)
+    try:
+        try:
+            meta, tables = store.meta(), _tables(store._db)
+        except sqlite3.DatabaseError as exc:
+            raise ResultsError(unusable.format(exc)) from None
+        if not tables:
+            return                                            # an empty database: ours to fill
+        if "kind" not in meta:
+            raise ResultsError(f"{path}: not a soccer-sim results file ({_contents(path, store)}); it is left "
+                               "untouched: give another --out")
+        fresh = f"to start fresh, delete {path} or give another --out"
+        if meta["kind"] != kind:
+            raise ResultsError(f"{path} holds the results of '{meta['kind']}', not '{kind}'; {fresh}")
+        if meta.get("config_hash") not in (None, config_hash):
+            raise ResultsError(f"{path} holds results of a different match configuration "
+                               f"(hash {meta['config_hash']}, this run: {config_hash}; e.g. another --cycles); "
+                               f"results of different configurations are never mixed; {fresh}")
+    finally:
+        store.close()
+
+
+def _tables(db: sqlite3.Connection) -> list[str]:
+    return [row[0] for row in db.execute("SELECT name FROM sqlite_master WHERE type = 'table' ORDER BY name")]
+
+
+def _contents(path: Path, store: ResultStore) -> str:
+    """What a file that is not a results file holds, for messages."""
+    if path.stat().st_size == 0:
+        return "an empty file"
+    tables = _tables(store._db)
+    return f"an SQLite database with tables {', '.join(tables)}" if tables else "an empty SQLite database"
+
+
+def _connect_writable(path: Path) -> sqlite3.Connection:
+    db = sqlite3.connect(str(path), timeout=30.0)
+    try:
         db.execute("PRAGMA journal_mode = WAL")       # each commit is atomic and survives kill -9
         db.execute("PRAGMA synchronous = NORMAL")
-    except sqlite3.DatabaseError as exc:
-        raise ResultsError(f"{path}: cannot open as a results file ({exc})") from None
+    except sqlite3.DatabaseError:
+        db.close()
+        raise
     return db
+
+
+def _connect_read_only(path: Path) -> tuple[sqlite3.Connection, Callable[[], None] | None]:
+    """A read-only connection to ``path`` that changes nothing on disk, and its clean-up.
+
+    Without a ``-wal`` (or ``-journal``) file the database file is complete, and ``immutable``
+    reads it as it is: SQLite creates no ``-wal``/``-shm`` files and takes no locks (which
+    read-only media could not hold). With one (a run in progress, or killed), plain
+    ``mode=ro`` reads the file and its log through the shared ``-shm`` index, as a reader next
+    to a writer must (``immutable`` would ignore the log's rows); where that index cannot be
+    created (read-only media), the files are read from a private copy instead."""
+    pending = [Path(f"{path}{suffix}") for suffix in ("-wal", "-journal") if Path(f"{path}{suffix}").exists()]
+    uri = path.resolve().as_uri() + ("?mode=ro" if pending else "?mode=ro&immutable=1")
+    db = None
+    try:
+        db = sqlite3.connect(uri, uri=True, timeout=30.0)
+        db.execute("SELECT COUNT(*) FROM sqlite_master").fetchone()      # the file is opened lazily
+    except sqlite3.DatabaseError as exc:
+        if db is not None:
+            db.close()
+        if pending and _cannot_open(exc):
+            return _private_copy(path, pending)
+        raise
+    return db, None
+
+
+def _cannot_open(exc: sqlite3.DatabaseError) -> bool:
+    """True when SQLite could not open (or would have to write) the files to read them."""
+    name = getattr(exc, "sqlite_errorname", "") or ""
+    text = str(exc).lower()
+    return name.startswith(("SQLITE_CANTOPEN", "SQLITE_READONLY")) or "unable to open" in text or "readonly" in text
+
+
+def _private_copy(path: Path, companions: list[Path]) -> tuple[sqlite3.Connection, Callable[[], None]]:
+    """A connection to a copy of ``path`` and its ``companions`` in a temporary directory (where
+    SQLite may merge the log), and the clean-up that removes the copy."""
+    directory = tempfile.mkdtemp(prefix="soccer-sim-results-")
+    try:
+        copy = Path(directory) / path.name
+        shutil.copyfile(path, copy)
+        for companion in companions:
+            shutil.copyfile(companion, Path(f"{copy}{companion.name[len(path.name):]}"))
+        db = sqlite3.connect(str(copy))
+        db.execute("SELECT COUNT(*) FROM sqlite_master").fetchone()
+    except BaseException:
+        shutil.rmtree(directory, ignore_errors=True)
+        raise
+    return db, lambda: shutil.rmtree(directory, ignore_errors=True)
+
+
+def _write_failure(path: Path, exc: sqlite3.DatabaseError, kept: str) -> Exception:
+    """StorageError for a failed write (disk full, I/O error, read-only), else ResultsError."""
+    if is_storage_failure(exc):
+        return StorageError(f"{path}: cannot write ({exc}); {kept}")
+    return ResultsError(f"{path}: cannot be used as a results file ({exc}); delete it or give another --out")
+
+
+def is_storage_failure(exc: BaseException) -> bool:
+    """True for an error of the disk or the file system rather than of the file's contents."""
+    if isinstance(exc, OSError):
+        return True
+    name = getattr(exc, "sqlite_errorname", "") or ""
+    text = str(exc).lower()
+    return (name.startswith(("SQLITE_FULL", "SQLITE_IOERR", "SQLITE_READONLY", "SQLITE_CANTOPEN", "SQLITE_PERM"))
+            or any(words in text for words in ("disk is full", "disk i/o error", "readonly database",
+                                               "unable to open")))

@@ -84,14 +84,29 @@ def add_team_option(parser: argparse.ArgumentParser, option: str, defaults: tupl
 
 def run_command(args: argparse.Namespace, kind: str, params_of, build_specs, report) -> int:
     """The body of every command that runs matches: parameters from ``args`` (``params_of``
-    may raise RunInputError), the run, the report into ``--tables``; exit status 2 with a
-    message for bad input, 130 after Ctrl-C."""
+    may raise RunInputError), the run, the report into ``--tables``. Exit status 2 with a
+    message for bad input (the tables directory included: it is checked before the first
+    match), 1 when the results or the tables cannot be written (the message says what is
+    kept), 130 after Ctrl-C."""
+    from experiments.results.store import StorageError
+
     try:
         params = params_of(args)
+        tables = tables_dir(args)
         summary = execute(args, kind, build_specs(params), params)
-        report(summary.records, params, tables_dir(args))
+        try:
+            tables.mkdir(parents=True, exist_ok=True)
+            report(summary.records, params, tables)
+        except OSError as exc:
+            from experiments.results.files import describe
+
+            raise StorageError(f"--tables {tables}: cannot write {describe(exc)}; the {len(summary.records)} "
+                               f"matches are stored in {args.out}: `soccer-sim results show {args.out} --tables "
+                               f"{tables}` writes the tables again") from None
     except RunInputError as exc:
         return fail(str(exc))
+    except StorageError as exc:
+        return fail(str(exc), 1)
     except KeyboardInterrupt:
         return interrupted(args.out)
     print_failures(summary)
@@ -126,14 +141,15 @@ def team_list(text: str, option: str, minimum: int = 1) -> list[str]:
 
 
 def tables_dir(args: argparse.Namespace) -> Path:
-    """The directory for the tables and figures (created; a RunInputError if impossible)."""
+    """The directory for the tables and figures, checked (not created: nothing is left behind
+    by a run refused later) before any match is played; a RunInputError if it is a file or
+    cannot be written in."""
+    from experiments.results.files import directory_problem
+
     path = Path(args.tables) if args.tables else Path(args.out).with_name(Path(args.out).stem + "-tables")
-    try:
-        path.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise RunInputError(f"--tables {path}: cannot create the directory ({exc.strerror})") from None
-    if not os.access(path, os.W_OK):
-        raise RunInputError(f"--tables {path}: not writable")
+    problem = directory_problem(path)
+    if problem:
+        raise RunInputError(f"--tables {path}: {problem}")
     return path
 
 

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from experiments.results.record import MatchRecord
-from experiments.results.store import ResultStore
+from experiments.results.store import ResultStore, StorageError
 from experiments.runner.progress import RunProgress
 from experiments.runner.spec import MatchSpec, code_version, config_description, config_for, config_hash
 
@@ -23,6 +23,9 @@ DEFAULT_MATCH_TIMEOUT = 600.0
 built-in teams takes about a second or two)."""
 
 BACKENDS = ("local", "ray")
+
+MAX_SEED = 2**63 - 1
+"""The largest seed a results file can store (SQLite integers are signed 64-bit)."""
 
 
 @dataclass
@@ -58,14 +61,17 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
     ``record_dir``: write a rerun replay of every ``record_every``-th spec (in the order given,
     the first included) played in this run into that directory, named after its teams and seed.
 
-    Raises :class:`~experiments.results.store.ResultsError` for an unusable file and
-    :class:`~experiments.runner.ray_backend.RayUnavailable` when Ray cannot be used;
-    KeyboardInterrupt leaves every finished match stored."""
+    Raises ValueError for seeds a results file cannot store,
+    :class:`~experiments.results.store.ResultsError` for an unusable file,
+    :class:`~experiments.results.store.StorageError` when storing fails part-way (disk full) and
+    :class:`~experiments.runner.ray_backend.RayUnavailable` when Ray cannot be used; every
+    finished match stays stored, after Ctrl-C (KeyboardInterrupt) too."""
     if any(spec.cycles != cycles for spec in specs):
         raise ValueError("every spec of a run must use the run's cycles")
     if backend not in BACKENDS:
         raise ValueError(f"unknown backend {backend!r}; choose one of {', '.join(BACKENDS)}")
     specs = list(dict.fromkeys(specs))
+    check_seeds(specs)
     if record_dir is not None:
         specs = with_replays(specs, Path(record_dir), record_every)
     config = config_for(cycles)
@@ -86,13 +92,40 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
             try:
                 with RunProgress(len(todo), kind, enabled=progress) as bar:
                     for record in pool.run(todo):
-                        store.add(record)
+                        _store(store, record, keys)
                         bar.advance(record.error is not None)
             finally:
                 pool.close()
         records = store.records(keys)
     return RunSummary(str(path), len(specs), len(specs) - len(todo), len(todo),
                       sum(r.error is not None for r in records), time.monotonic() - start, used, records)
+
+
+def check_seeds(specs: Sequence[MatchSpec]) -> None:
+    """ValueError unless every seed of ``specs`` fits a results file (0 to MAX_SEED), saying
+    which first seed (``--seed``) would: the specs' seeds run from the first one upwards."""
+    if not specs:
+        return
+    low, high = min(spec.seed for spec in specs), max(spec.seed for spec in specs)
+    if low < 0 or high > MAX_SEED:
+        raise ValueError(f"--seed must be between 0 and {MAX_SEED - (high - low)} for this run (its seeds go "
+                         f"from --seed to --seed + {high - low}, and a results file stores seeds up to {MAX_SEED})")
+
+
+def _store(store: ResultStore, record: MatchRecord, keys: list[tuple[str, str, int]]) -> None:
+    """Add ``record`` to ``store``; a failed write (disk full, I/O error) becomes a StorageError
+    saying how many of the run's matches are kept and how to continue."""
+    import sqlite3
+
+    try:
+        store.add(record)
+    except (sqlite3.Error, OSError) as exc:
+        try:
+            kept = f"{len(store.keys() & set(keys))} of the run's {len(keys)} matches are stored in {store.path}"
+        except sqlite3.Error:
+            kept = f"every match stored before is kept in {store.path}"
+        raise StorageError(f"{store.path}: cannot store a match ({exc}); {kept}; make room (or fix the "
+                           "file's permissions) and re-run the same command to resume") from None
 
 
 def _pool(backend: str, workers: int, digest: str, version: str, timeout: float | None, address: str | None):

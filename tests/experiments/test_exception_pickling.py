@@ -27,6 +27,7 @@ EXAMPLES: dict[str, tuple] = {
     "soccer_sim.scenarios.scenario.ScenarioError": ("home.goalie", "index 4 is beyond the side's 3 players"),
     "experiments.benchmarks.assignment.BenchmarkArgumentError": ("--sizes: bad",),
     "experiments.results.store.ResultsError": ("r.sqlite: not writable",),
+    "experiments.results.store.StorageError": ("r.sqlite: cannot store a match (database or disk is full)",),
     "experiments.results.export.ExportError": ("needs pyarrow",),
     "experiments.runner.worker.MatchTimeout": (2.5,),
     "experiments.runner.ray_backend.RayUnavailable": ("no ray",),

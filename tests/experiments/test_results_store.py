@@ -28,6 +28,7 @@ def test_rows_round_trip_and_keys_are_unique(tmp_path) -> None:
         assert first == record
         assert (second.played, second.forfeit, second.traceback) == (False, 0, "tb")
         assert store.params == {"teams": ["A", "B"]} and store.kind == "tournament"
+    with make(path) as store:                                  # (open() is read-only)
         assert store.forget_errors([("B", "A", 3)], unattributed_only=True) == 0
         assert store.forget_errors([("B", "A", 3)]) == 1 and store.count() == 1
 
