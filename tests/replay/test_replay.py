@@ -99,8 +99,11 @@ def test_play_record_then_replay_png(tmp_path, capsys) -> None:
 def test_play_record_refuses_bad_paths(tmp_path, capsys) -> None:
     assert main(["play", "chaser", "idle", "--cycles", "5", "--record", str(tmp_path / "x.txt")]) == 2
     assert main(["play", "chaser", "idle", "--cycles", "5", "--record", str(tmp_path / "no" / "x.rrd")]) == 2
-    printed = " ".join(capsys.readouterr().out.split())
-    assert "must end in .rrd" in printed and "does not exist" in printed
+    captured = capsys.readouterr()
+    assert captured.out == ""
+    lines = captured.err.splitlines()
+    assert len(lines) == 2  # one line per refused command, on stderr
+    assert "must end in .rrd" in lines[0] and "does not exist" in lines[1]
 
 
 def test_a_stored_match_is_recreated_by_its_row(tmp_path, capsys) -> None:
