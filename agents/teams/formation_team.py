@@ -170,6 +170,8 @@ class FormationTeam:
         self._goal_kick_leaving = False
         self._set_play_taker = -1
         """Our taker of the current set play (-1: not chosen yet)."""
+        self._sprinter = -1
+        """The player who runs flat out this cycle whatever its stamina (our set-play taker)."""
         self._taken: tuple[int, float, float, int] | None = None
         """(mode, ball x, ball y, cycle) of the last set play we kicked."""
         self._tried_takers: list[int] = []
@@ -244,6 +246,7 @@ class FormationTeam:
                            self._forward_roles, 1.0 - style.box_narrowing, bool(narrowed))
         self._assign_roles(view, targets, ball_ref)
         urgent = np.zeros(self.n, dtype=bool)
+        self._sprinter = -1
         if mode == _PLAY_ON:
             self._play_on(view, race, urgent)
         elif mode in (_KICK_OFF, _AFTER_GOAL):
@@ -253,6 +256,12 @@ class FormationTeam:
         else:
             self._set_play(view, urgent)
         skills.paced_dashes(model, view, self.goals, urgent, command.dash)
+        if self._sprinter >= 0:
+            # Our set-play taker runs flat out whatever its stamina: a set play not taken in
+            # time is lost (the ball is dropped).
+            r = slice(self._sprinter, self._sprinter + 1)
+            skills.dash_to_points(model, view.own_pos[r], view.own_vel[r], self.goals[r],
+                                  skills.view_effort(view, self.n)[r], out=command.dash[r])
         if self._dribble_dash is not None:  # the dribbler runs with the ball, not to a point
             command.dash[self._kicker_row] = self._dribble_dash
             self._dribble_dash = None
@@ -467,6 +476,7 @@ class FormationTeam:
             taker = self._set_play_taker = self._taker(view)
         self.goals[taker] = view.ball
         urgent[taker] = True
+        self._sprinter = taker
         waited = view.cycle - self._mode_since
         if waited < self.style.set_play_wait:
             return taker
