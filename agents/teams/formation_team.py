@@ -17,7 +17,9 @@ Every cycle (team frame: we attack +x, our goal at x = -half_length):
    player) runs to the interception point; a style may send a second presser when defending.
    A player who can kick decides with :func:`agents.skills.decide_on_ball` (shoot, pass,
    dribble or clear). At our set plays the player nearest the ball takes it after the others
-   had ``set_play_wait`` cycles to take their places; the goalkeeper distributes a held ball.
+   had ``set_play_wait`` cycles to take their places (see :meth:`FormationTeam._take_set_play`:
+   taken in time, retaken set plays by another player and another kick); the goalkeeper
+   distributes a held ball.
 5. **Everybody else** runs to their targets (attackers kept onside), sprinting only when it
    matters (:func:`agents.skills.speed_caps`); the goalkeeper guards the line between ball and
    goal and catches (never a back-pass).
@@ -333,7 +335,7 @@ class FormationTeam:
         model, command, goals = self.model, self.command, self.goals
         if self._goal_kick_leaving:
             if model.in_penalty_area(view.ball):
-                return  # our goal kick is on its way out: nobody may play it yet
+                return  # our goal kick is on its way out: with proper goal kicks nobody may play it yet
             self._goal_kick_leaving = False
         ball_player = self._ball_player(view, race)
         if not self.style.stationary:
