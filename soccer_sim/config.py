@@ -289,7 +289,8 @@ class RuleConfig:
     set_play_clearance: float = 9.15
     """Opponents are kept at least this far from the ball at set plays (m)."""
     set_play_timeout: int = 100
-    """A set play not taken within this many cycles is restarted by dropping the ball."""
+    """A set play not taken within this many cycles is restarted by dropping the ball
+    (rcssserver ``drop_ball_time``)."""
     catch_length: float = 1.2
     """Length of the goalkeeper's catchable area, measured from the goalkeeper towards the ball (m)."""
     catch_width: float = 1.0
@@ -319,8 +320,17 @@ class RuleConfig:
     """A ball stuck for this many cycles of play on is dropped where it lies (both teams may
     play it at once). None: never."""
     goal_kick_leaves_area: bool = True
-    """A goal kick must leave the penalty area before anybody plays it again; a kick or
-    touch before that retakes the goal kick (rcssserver)."""
+    """A goal kick must leave the penalty area before it is in play (rcssserver): the
+    opponents wait outside the area, and one of them playing the ball before it has left
+    retakes the goal kick. What a team-mate of the taker may do is ``proper_goal_kicks``."""
+    proper_goal_kicks: bool = False
+    """Also a team-mate of the taker playing the ball before it has left the penalty area
+    retakes the goal kick (rcssserver ``proper_goal_kicks``, off by default: then the ball is
+    in play once a team-mate plays it). The taker itself may play it again (no double touch)."""
+    max_goal_kicks: int = 3
+    """With ``proper_goal_kicks``: once a goal kick has been retaken this many times in a row
+    for its own team's fault, the next such fault gives the opponents an indirect free kick
+    on the penalty area's edge (rcssserver ``max_goal_kicks``)."""
 
     def validate(self) -> None:
         for name in ("half_cycles", "set_play_timeout", "goalie_hold_cycles"):
@@ -338,7 +348,9 @@ class RuleConfig:
             raise ConfigError(f"RuleConfig.goal_pause_cycles must be a non-negative integer, got {self.goal_pause_cycles!r}")
         if self.stuck_ball_cycles is not None and not (_is_integer(self.stuck_ball_cycles) and self.stuck_ball_cycles > 0):
             raise ConfigError(f"RuleConfig.stuck_ball_cycles must be None or a positive integer, got {self.stuck_ball_cycles!r}")
-        for name in ("offside", "back_pass_rule", "goal_kick_leaves_area"):
+        if not (_is_integer(self.max_goal_kicks) and self.max_goal_kicks >= 0):
+            raise ConfigError(f"RuleConfig.max_goal_kicks must be a non-negative integer, got {self.max_goal_kicks!r}")
+        for name in ("offside", "back_pass_rule", "goal_kick_leaves_area", "proper_goal_kicks"):
             if not isinstance(getattr(self, name), bool):
                 raise ConfigError(f"RuleConfig.{name} must be a bool, got {getattr(self, name)!r}")
         if not (_is_integer(self.goalie_index) and 0 <= self.goalie_index):

@@ -30,8 +30,11 @@ Decisions where the rules leave room:
   pushed to ``set_play_clearance`` every cycle (at a kick-off to the larger of that and the
   centre-circle radius); players pushed by the referee lose their velocity. There is no
   double-touch rule. At a goal kick the opponents also leave the penalty area, and once
-  taken the ball must leave the area before anybody plays it again, else the goal kick is
-  retaken (``goal_kick_leaves_area``). Free kicks are indirect in name only: a goal scored
+  taken the ball must leave the area before an opponent plays it, else the goal kick is
+  retaken (``goal_kick_leaves_area``); a team-mate of the taker playing it first puts it in
+  play, or with ``proper_goal_kicks`` retakes it too, at most ``max_goal_kicks`` times in a
+  row before the opponents get an indirect free kick on the penalty area's edge (rcssserver's
+  rule; the taker may play it again). Free kicks are indirect in name only: a goal scored
   straight from a free kick or a kick-off counts.
 * **After a goal** the play mode is AFTER_GOAL for ``goal_pause_cycles``: the ball waits on
   the centre spot, nobody kicks, the teams may place their players (``apply_moves``); then
@@ -216,8 +219,11 @@ class Referee:
         """x of the offside line (absolute frame) when the current marks were made."""
         self._stuck_cycles = r.stuck_ball_cycles
         self._stuck_radius2 = r.stuck_ball_radius ** 2
-        self._goal_kick_pending: tuple[int, float, float] | None = None
-        """(team, spot) of a goal kick taken whose ball has not yet left the penalty area."""
+        self._goal_kick_pending: tuple[int, float, float, int] | None = None
+        """(team, spot, taker's row) of a goal kick taken whose ball has not yet left the
+        penalty area."""
+        self._goal_kick_retakes = 0
+        """Retakes in a row of the current goal kick for its own team's fault (``max_goal_kicks``)."""
         self._stuck_anchor = (math.nan, math.nan)
         self._stuck_since = 0
         """The ball has stayed within ``stuck_ball_radius`` of ``_stuck_anchor`` since this cycle."""
@@ -508,6 +514,7 @@ class Referee:
                 self._restart(state, PlayMode.CORNER_KICK, attacker, sx, sy)
             else:
                 sx, sy = goal_kick_spot(f, goal_side, y)
+                self._goal_kick_retakes = 0
                 self._restart(state, PlayMode.GOAL_KICK, defender, sx, sy)
             return
         self.events.add(state.cycle, EventKind.OUT, last_team, last_index, x, y, 0)
@@ -552,8 +559,7 @@ class Referee:
                 if self._offside[row]:
                     self._call_offside(state, row)
                     return
-        if self._goal_kick_pending is not None:
-            self._retake_goal_kick(state)
+        if self._goal_kick_pending is not None and self._goal_kick_played_early(state, rows):
             return
         self._played(state, rows, state.last_touch, bx, by, kicked=True)
         teams = sorted({HOME if row < n else AWAY for row in rows})
@@ -569,7 +575,7 @@ class Referee:
             first = rows[0]
             self._set_mode(state, _PLAY_ON, NO_TEAM, player=first - state.team_of(first) * n)
             if mode == _GOAL_KICK and self.config.rules.goal_kick_leaves_area:
-                self._goal_kick_pending = (state.team_of(first), bx, by)
+                self._goal_kick_pending = (state.team_of(first), bx, by, first)
         self._judge_offside_positions(state, rows, mode, bx)
 
     def _played(self, state: WorldState, rows: list[int], main: int, x: float, y: float, *,
@@ -608,8 +614,7 @@ class Referee:
                 if self._offside[row]:
                     self._call_offside(state, row)
                     return
-        if self._goal_kick_pending is not None:
-            self._retake_goal_kick(state)
+        if self._goal_kick_pending is not None and self._goal_kick_played_early(state, rows):
             return
         self._judge_offside_positions(state, rows, _PLAY_ON, bx)
         previous = self._touching
@@ -692,10 +697,32 @@ class Referee:
         if not in_penalty_area(self.config.field, state.attack_direction(team), bx, by):
             self._goal_kick_pending = None
 
-    def _retake_goal_kick(self, state: WorldState) -> None:
-        """The ball was played before it left the penalty area: the goal kick is taken again."""
-        team, x, y = self._goal_kick_pending
+    def _goal_kick_played_early(self, state: WorldState, rows: list[int]) -> bool:
+        """``rows`` (sorted) played the ball of a goal kick before it left the penalty area.
+        An opponent among them retakes the goal kick (not counted against the team); a
+        team-mate of the taker retakes it with ``proper_goal_kicks`` (counted, a free kick for
+        the opponents once ``max_goal_kicks`` retakes in a row are used up), else puts the ball
+        in play; the taker alone changes nothing. Returns whether play was restarted."""
+        team, x, y, taker = self._goal_kick_pending
+        rules = self.config.rules
+        if any(state.team_of(row) != team for row in rows):
+            self._goal_kick_retakes = 0
+            self._restart(state, _GOAL_KICK, team, x, y)
+            return True
+        if all(row == taker for row in rows):
+            return False
+        if not rules.proper_goal_kicks:
+            self._goal_kick_pending = None
+            return False
+        if self._goal_kick_retakes >= rules.max_goal_kicks:
+            self._goal_kick_retakes = 0
+            fx, fy = penalty_area_edge_spot(self.config.field, state.attack_direction(team),
+                                            float(state.ball[0]), float(state.ball[1]))
+            self._restart(state, PlayMode.FREE_KICK, 1 - team, fx, fy)
+            return True
+        self._goal_kick_retakes += 1
         self._restart(state, _GOAL_KICK, team, x, y)
+        return True
 
     def _check_stuck_ball(self, state: WorldState, bx: float, by: float) -> None:
         """Drop the ball where it lies when it has stayed within ``stuck_ball_radius`` for

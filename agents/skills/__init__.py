@@ -44,8 +44,8 @@ The API, by module:
   :class:`ShotParams`, :class:`ShotPlan`.
 * :mod:`~agents.skills.dribbling`: :func:`dribble`, :func:`dribble_directions`,
   :class:`DribbleParams`, :class:`DribblePlan`.
-* :mod:`~agents.skills.clearing`: :func:`best_clearance`, :class:`ClearParams`,
-  :class:`ClearPlan`.
+* :mod:`~agents.skills.clearing`: :func:`best_clearance`, :func:`goal_kick_clearance`,
+  :class:`ClearParams`, :class:`ClearPlan`.
 * :mod:`~agents.skills.goalkeeping`: :func:`guard_position`, :func:`should_catch`,
   :func:`distribute`, :class:`GoalieParams`.
 * :mod:`~agents.skills.decision`: :func:`decide_on_ball`, :class:`DecisionParams`,
@@ -63,7 +63,7 @@ Timings of every call for a team of 11: ``python -m agents.skills.timing``
 (:mod:`agents.skills.timing`).
 """
 
-from agents.skills.clearing import ClearParams, ClearPlan, best_clearance
+from agents.skills.clearing import ClearParams, ClearPlan, best_clearance, goal_kick_clearance
 from agents.skills.decision import BallDecision, DecisionParams, OnBallAction, decide_on_ball
 from agents.skills.dribbling import DribbleParams, DribblePlan, dribble, dribble_directions
 from agents.skills.goalkeeping import Distribution, GoalieParams, distribute, guard_position, guard_xy, should_catch
@@ -80,7 +80,7 @@ __all__ = [
     "DribbleParams", "DribblePlan", "GoalieParams", "Interception", "MotionModel", "OnBallAction", "PassParams",
     "PassPlan", "ShotParams", "ShotPlan", "SkillInputError", "aim_points", "ball_race", "best_clearance",
     "best_pass", "best_shot", "dash_to_points", "decide_on_ball", "distribute", "dribble", "dribble_directions",
-    "guard_position", "guard_xy", "intercept", "intercept_many", "kick_effectiveness", "kick_for_velocity", "kickable",
+    "goal_kick_clearance", "guard_position", "guard_xy", "intercept", "intercept_many", "kick_effectiveness", "kick_for_velocity", "kickable",
     "lane_open", "offside_positions", "opponent_cycles", "pass_candidates", "paced_dashes", "should_catch", "speed_caps",
     "teammate_cycles", "view_effort",
 ]

@@ -60,24 +60,59 @@ class ClearPlan:
 def best_clearance(model: MotionModel, view: object, kicker: int, params: ClearParams = ClearParams(),
                    holder: bool = False) -> ClearPlan:
     """The best clearance kick for ``kicker`` (see the module docstring)."""
-    kicker = check_player(kicker, model.players_per_team, "kicker")
-    angles = np.radians(np.linspace(-params.spread_deg, params.spread_deg, params.fan)) if params.fan > 1 \
-        else np.zeros(1)
-    dirs = np.column_stack([np.cos(angles), np.sin(angles)])
-    ball = np.asarray(view.ball, float)
-    kicks, velocities = kick_for_velocity(model, view.own_pos[kicker], ball, view.ball_vel,
-                                          dirs * model.ball_speed_max, holder)
-    theirs, _ = opponent_cycles(model, view, ball, velocities)
-    ours, _ = teammate_cycles(model, view, ball, velocities)
-    ours = ours.copy()
-    ours[:, kicker] = UNREACHABLE
-    our_first = ours.min(axis=1)
-    rest = ball + velocities * model.ball_travel[-1]
-    out = ~model.in_field(rest) & ~((rest[:, 0] > model.half_length) & (np.abs(rest[:, 1]) < model.goal_half_width))
-    score = (params.weight_ours * (our_first < theirs)
-             + params.weight_time * np.minimum(theirs, params.time_cap) / params.time_cap
-             + params.weight_forward * np.cos(angles) + params.weight_wing * np.abs(np.sin(angles))
-             - params.weight_out * out)
-    best = int(np.argmax(score))
-    return ClearPlan(direction=dirs[best].copy(), kick=kicks[best].copy(), ball_vel=velocities[best].copy(),
-                     opponent_cycle=int(theirs[best]), teammate_cycle=int(our_first[best]), score=float(score[best]))
+    lanes = _Lanes(model, view, kicker, params, holder)
+    return lanes.plan(int(np.argmax(lanes.score)))
+
+
+def goal_kick_clearance(model: MotionModel, view: object, kicker: int, params: ClearParams = ClearParams(),
+                        avoid: tuple[np.ndarray, ...] = (), avoid_deg: float = 20.0) -> ClearPlan:
+    """The kick of a goal kick taken by ``kicker``: the best clearance (the module's score)
+    among the directions whose ball leaves our penalty area before any other player of
+    either team could reach it, so that nobody plays it early and the goal kick is never
+    retaken. Directions within ``avoid_deg`` of one of ``avoid`` (unit vectors of kicks that
+    were retaken) rank after every other; when every direction is blocked the best blocked
+    one is taken."""
+    lanes = _Lanes(model, view, kicker, params, False)
+    velocities = lanes.velocities
+    points = lanes.ball + model.ball_travel[None, :, None] * velocities[:, None, :]  # (P, horizon + 1, 2)
+    inside = model.in_penalty_area(points)
+    leaves = np.where(inside.all(axis=1), UNREACHABLE, np.argmin(inside, axis=1))
+    blocked = (lanes.theirs <= leaves) | (lanes.our_first <= leaves)
+    avoided = np.zeros(len(velocities), dtype=bool)
+    cos_limit = np.cos(np.radians(avoid_deg))
+    for direction in avoid:
+        avoided |= lanes.dirs @ np.asarray(direction, float) >= cos_limit
+    # The score lies within a few units: these penalties order whole classes of directions.
+    rank = lanes.score - 100.0 * blocked - 10.0 * avoided
+    return lanes.plan(int(np.argmax(rank)))
+
+
+class _Lanes:
+    """The fan of clearance directions of one kick: kicks, ball velocities, both teams'
+    first interception cycles and the module's score per direction."""
+
+    def __init__(self, model: MotionModel, view: object, kicker: int, params: ClearParams, holder: bool) -> None:
+        kicker = check_player(kicker, model.players_per_team, "kicker")
+        angles = np.radians(np.linspace(-params.spread_deg, params.spread_deg, params.fan)) if params.fan > 1 \
+            else np.zeros(1)
+        self.dirs = np.column_stack([np.cos(angles), np.sin(angles)])
+        self.ball = ball = np.asarray(view.ball, float)
+        self.kicks, self.velocities = kick_for_velocity(model, view.own_pos[kicker], ball, view.ball_vel,
+                                                        self.dirs * model.ball_speed_max, holder)
+        self.theirs, _ = opponent_cycles(model, view, ball, self.velocities)
+        ours, _ = teammate_cycles(model, view, ball, self.velocities)
+        ours = ours.copy()
+        ours[:, kicker] = UNREACHABLE
+        self.our_first = ours.min(axis=1)
+        rest = ball + self.velocities * model.ball_travel[-1]
+        out = ~model.in_field(rest) & ~((rest[:, 0] > model.half_length)
+                                        & (np.abs(rest[:, 1]) < model.goal_half_width))
+        self.score = (params.weight_ours * (self.our_first < self.theirs)
+                      + params.weight_time * np.minimum(self.theirs, params.time_cap) / params.time_cap
+                      + params.weight_forward * np.cos(angles) + params.weight_wing * np.abs(np.sin(angles))
+                      - params.weight_out * out)
+
+    def plan(self, best: int) -> ClearPlan:
+        return ClearPlan(direction=self.dirs[best].copy(), kick=self.kicks[best].copy(),
+                         ball_vel=self.velocities[best].copy(), opponent_cycle=int(self.theirs[best]),
+                         teammate_cycle=int(self.our_first[best]), score=float(self.score[best]))

@@ -17,7 +17,9 @@ Every cycle (team frame: we attack +x, our goal at x = -half_length):
    player) runs to the interception point; a style may send a second presser when defending.
    A player who can kick decides with :func:`agents.skills.decide_on_ball` (shoot, pass,
    dribble or clear). At our set plays the player nearest the ball takes it after the others
-   had ``set_play_wait`` cycles to take their places; the goalkeeper distributes a held ball.
+   had ``set_play_wait`` cycles to take their places (see :meth:`FormationTeam._take_set_play`:
+   taken in time, retaken set plays by another player and another kick); the goalkeeper
+   distributes a held ball.
 5. **Everybody else** runs to their targets (attackers kept onside), sprinting only when it
    matters (:func:`agents.skills.speed_caps`); the goalkeeper guards the line between ball and
    goal and catches (never a back-pass).
@@ -52,6 +54,9 @@ _PLAY_ON = PlayMode.PLAY_ON
 _KICK_OFF = PlayMode.KICK_OFF
 _AFTER_GOAL = PlayMode.AFTER_GOAL
 _GOALIE_HOLDS = PlayMode.GOALIE_HOLDS
+_RETAKE_WINDOW = 50
+"""A set play of ours given again at the same spot within this many cycles of our kick is
+that set play retaken."""
 _CYCLES_PER_MINUTE = 600
 """Cycles of 100 ms in a minute of game time."""
 
@@ -165,6 +170,22 @@ class FormationTeam:
         self._dribble_dash: np.ndarray | None = None
         self._kicker_row = -1
         self._goal_kick_leaving = False
+        self._set_play_taker = -1
+        """Our taker of the current set play (-1: not chosen yet)."""
+        self._sprinter = -1
+        """The player who runs flat out this cycle whatever its stamina (our set-play taker)."""
+        self._taken: tuple[int, float, float, int] | None = None
+        """(mode, ball x, ball y, cycle) of the last set play we kicked."""
+        self._tried_takers: list[int] = []
+        self._tried_kicks: list[np.ndarray] = []
+        """Takers and kick directions of the current set play's attempts (a retake tries others)."""
+        self._patience = max(self.style.set_play_wait, config.rules.set_play_timeout // 2)
+        """Cycles of a set play after which whoever of ours can kick the ball takes it."""
+        self._kick_off_gap = config.physics.player_radius + config.physics.ball_radius + 0.1
+        """How far behind the ball our kick-off taker is placed (m)."""
+        self._goal_centre_guard = np.array([-self._half_length + skills.GoalieParams().depth_far, 0.0])
+        """Where our goalkeeper waits at our goal kicks: in front of the goal's centre, away
+        from the spot on the goal area's corner and from every kick out of it."""
         self._eligible = np.ones(n, dtype=bool)
         # Per-match figures.
         self._cycles = 0
@@ -203,9 +224,13 @@ class FormationTeam:
         command.move = None
         mode = view.play_mode
         key = (int(mode), bool(view.mode_ours))
-        if key != self._mode_key:
+        # Our set-play kick of the last cycle leaves a set play only when the referee restarted
+        # it at once (a touch in the kick's cycle): that is a new set play too.
+        restarted = mode != _PLAY_ON and self._taken is not None and self._taken[3] == view.cycle - 1
+        if key != self._mode_key or restarted:
             if mode != _PLAY_ON:
                 self._goal_kick_leaving = False
+                self._begin_set_play(view)
             self._mode_key, self._mode_since = key, view.cycle
         model = self.model
         race = skills.ball_race(model, view, self._eligible if self._our_pass_in_flight else None,
@@ -223,6 +248,7 @@ class FormationTeam:
                            self._forward_roles, 1.0 - style.box_narrowing, bool(narrowed))
         self._assign_roles(view, targets, ball_ref)
         urgent = np.zeros(self.n, dtype=bool)
+        self._sprinter = -1
         if mode == _PLAY_ON:
             self._play_on(view, race, urgent)
         elif mode in (_KICK_OFF, _AFTER_GOAL):
@@ -232,6 +258,12 @@ class FormationTeam:
         else:
             self._set_play(view, urgent)
         skills.paced_dashes(model, view, self.goals, urgent, command.dash)
+        if self._sprinter >= 0:
+            # Our set-play taker runs flat out whatever its stamina: a set play not taken in
+            # time is lost (the ball is dropped).
+            r = slice(self._sprinter, self._sprinter + 1)
+            skills.dash_to_points(model, view.own_pos[r], view.own_vel[r], self.goals[r],
+                                  skills.view_effort(view, self.n)[r], out=command.dash[r])
         if self._dribble_dash is not None:  # the dribbler runs with the ball, not to a point
             command.dash[self._kicker_row] = self._dribble_dash
             self._dribble_dash = None
@@ -303,7 +335,7 @@ class FormationTeam:
         model, command, goals = self.model, self.command, self.goals
         if self._goal_kick_leaving:
             if model.in_penalty_area(view.ball):
-                return  # our goal kick is on its way out: nobody may play it yet
+                return  # our goal kick is on its way out: with proper goal kicks nobody may play it yet
             self._goal_kick_leaving = False
         ball_player = self._ball_player(view, race)
         if not self.style.stationary:
@@ -396,37 +428,92 @@ class FormationTeam:
         _pull_onside(self.goals, self.outfield, view.opp_pos, float(view.ball[0]), self.style.offside_margin)
 
     # ------------------------------------------------------------------ set plays
+    def _begin_set_play(self, view: TeamView) -> None:
+        """A new play mode other than play on: forget the taker; at a set play of ours that is
+        the one we just kicked given again (a retake), remember who took it and how, so that
+        another player takes it another way."""
+        self._set_play_taker = -1
+        taken = self._taken
+        retake = (view.mode_ours and taken is not None and taken[0] == int(view.play_mode)
+                  and view.cycle - taken[3] <= _RETAKE_WINDOW
+                  and taken[1] == float(view.ball[0]) and taken[2] == float(view.ball[1]))
+        if not retake:
+            self._tried_takers.clear()
+            self._tried_kicks.clear()
+
     def _taker(self, view: TeamView) -> int:
-        candidates = self.outfield if len(self.outfield) else np.arange(self.n)  # a lone goalkeeper takes it
+        """The outfield player nearest the ball that has not tried this set play yet (a lone
+        goalkeeper takes it)."""
+        candidates = self.outfield if len(self.outfield) else np.arange(self.n)
+        fresh = np.setdiff1d(candidates, self._tried_takers)
+        if fresh.size:
+            candidates = fresh
         gaps = np.hypot(*(view.own_pos[candidates] - view.ball).T)
         return int(candidates[int(np.argmin(gaps))])
 
     def _kick_off(self, view: TeamView, urgent: np.ndarray) -> None:
         """Before a kick-off (and in the pause after a goal) place everybody on the set-play
-        formation; at our kick-off the taker at the ball plays it once the wait is over."""
+        formation; at our kick-off the taker is placed just behind the ball and plays it once
+        the wait is over."""
+        taker = self._take_set_play(view, urgent) if view.play_mode == _KICK_OFF and view.mode_ours else -1
         move = self.goals.copy()
+        if taker >= 0:
+            move[taker] = (view.ball[0] - self._kick_off_gap, view.ball[1])
         self.command.move = move
-        if view.play_mode == _KICK_OFF and view.mode_ours:
-            self._take_set_play(view, urgent)
 
     def _set_play(self, view: TeamView, urgent: np.ndarray) -> None:
-        if view.mode_ours:
-            self._take_set_play(view, urgent)
+        if not view.mode_ours:
+            return
+        if view.play_mode == PlayMode.GOAL_KICK and self.goalie >= 0:
+            self.goals[self.goalie] = self._goal_centre_guard
+        self._take_set_play(view, urgent)
 
-    def _take_set_play(self, view: TeamView, urgent: np.ndarray) -> None:
-        taker = self._taker(view)
+    def _take_set_play(self, view: TeamView, urgent: np.ndarray) -> int:
+        """Our set play: the taker (chosen once per set play) runs to the ball and, the wait
+        over, kicks it; if it is not there after ``_patience`` cycles, whoever of ours can kick
+        the ball takes it, so a set play is always taken well within the referee's timeout.
+        Returns the taker."""
+        taker = self._set_play_taker
+        if taker < 0:
+            taker = self._set_play_taker = self._taker(view)
         self.goals[taker] = view.ball
         urgent[taker] = True
-        ready = view.cycle - self._mode_since >= self.style.set_play_wait
-        if ready and np.hypot(*(view.own_pos[taker] - view.ball)) <= self._kickable:
-            if view.play_mode == PlayMode.GOAL_KICK:
-                # The ball must leave our penalty area before anybody plays it again: kick long,
-                # and keep off it until it is out (see _play_on).
-                self.command.kick[taker] = skills.best_clearance(self.model, view, taker).kick
-                self._goal_kick_leaving = True
-            else:
-                decision = skills.decide_on_ball(self.model, view, taker, self.style.decision)
-                self.command.kick[taker] = decision.kick
+        self._sprinter = taker
+        waited = view.cycle - self._mode_since
+        if waited < self.style.set_play_wait:
+            return taker
+        gaps = np.hypot(*(view.own_pos - view.ball).T)
+        kicker = taker
+        if gaps[taker] > self._kickable:
+            kicker = int(np.argmin(gaps))
+            if waited < self._patience or gaps[kicker] > self._kickable:
+                return taker
+        self._kick_set_play(view, kicker)
+        return taker
+
+    def _kick_set_play(self, view: TeamView, kicker: int) -> None:
+        """``kicker`` takes our set play. A goal kick is cleared along a path nobody else can
+        reach before the ball leaves our penalty area (the kicks of earlier attempts avoided);
+        other set plays are played as in open play, or cleared when retaken."""
+        model = self.model
+        if view.play_mode == PlayMode.GOAL_KICK:
+            plan = skills.goal_kick_clearance(model, view, kicker, avoid=tuple(self._tried_kicks))
+            kick, direction = plan.kick, plan.direction
+            # With proper goal kicks our own players must keep off the ball until it is out of
+            # the area (see _play_on).
+            self._goal_kick_leaving = self.config.rules.proper_goal_kicks
+        else:
+            kick = None
+            if not self._tried_kicks:
+                kick = skills.decide_on_ball(model, view, kicker, self.style.decision).kick
+            if kick is None or not kick.any():
+                kick = skills.best_clearance(model, view, kicker).kick
+            speed = float(np.hypot(*kick))
+            direction = kick / speed if speed > 0.0 else np.array([1.0, 0.0])
+        self.command.kick[kicker] = kick
+        self._taken = (int(view.play_mode), float(view.ball[0]), float(view.ball[1]), view.cycle)
+        self._tried_takers.append(kicker)
+        self._tried_kicks.append(direction)
 
     def _goalie_holds(self, view: TeamView) -> None:
         if self.goalie < 0:

@@ -4,17 +4,19 @@ played before scenarios existed, bit for bit.
 A fingerprint hashes every cycle's world (player and ball positions and velocities, play
 mode, score), the whole event log and both teams' statistics. It uses only the public API
 that existed before scenarios (``run_match`` with recorders), so the same code recorded the
-expected values on the older code base. Floating-point results depend on the processor and
-on the numerical libraries' versions (numba compiles for the host CPU; numpy and scipy pick
-vector kernels at run time), so the recordings are kept per :func:`platform_key`. To record
-them on a new platform, run this module on the pre-scenario commit d7c8672 (a ``git worktree``
-of it, with this file copied in) and merge its output into ``scenario_fingerprints.json``::
+expected values on the older code base (commit d7c8672). Floating-point results depend on
+the processor and on the numerical libraries' versions (numba compiles for the host CPU; numpy
+and scipy pick vector kernels at run time), so the recordings are kept per
+:func:`platform_key`. When play changes on purpose (a rule or a built-in team's behaviour),
+the recordings are made again with this module on the new code, which prints the entry of
+this platform to put into ``scenario_fingerprints.json``::
 
     python -m tests.soccer_sim.scenario_fingerprint
 
-The ``rocketlake`` entry was recorded at commit 2af3b60, whose matches the ``znver4`` entry
-had checked against d7c8672; its hashes equal the ``znver4`` ones case for case, so the
-trajectories did not depend on the processor there.
+(The goal-kick rule of rcssserver, ``proper_goal_kicks`` off, and the built-in teams' set plays
+that never stall changed play; the recordings since then are of that code.)
+Before that change the recordings on ``znver4`` and ``rocketlake`` processors were equal case
+for case, so the trajectories did not depend on which of the two played them.
 """
 
 from __future__ import annotations

@@ -23,6 +23,8 @@ from soccer_sim import ConfigError, FieldConfig, MatchConfig, PhysicsConfig, Rul
     (lambda: PhysicsConfig(player_speed_max=float("nan")), "player_speed_max"),
     (lambda: StaminaConfig(maximum=-1.0), "StaminaConfig.maximum"),
     (lambda: RuleConfig(half_cycles=0), "RuleConfig.half_cycles"),
+    (lambda: RuleConfig(max_goal_kicks=-1), "RuleConfig.max_goal_kicks must be a non-negative integer"),
+    (lambda: RuleConfig(proper_goal_kicks=1), "RuleConfig.proper_goal_kicks must be a bool"),
 ])
 def test_impossible_parts_are_rejected(make, fragment: str) -> None:
     with pytest.raises(ConfigError, match=fragment):

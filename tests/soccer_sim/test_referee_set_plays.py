@@ -230,23 +230,87 @@ def test_a_moving_ball_is_never_dropped():
     assert EventKind.DROP_BALL not in kinds(ev)
 
 
-def test_a_goal_kick_played_again_inside_the_penalty_area_is_retaken():
-    spot = (HL - CFG.field.goal_area_length, 9.16)  # away defends +x: its goal kick
-    ref, st, ev = make_world(ball=spot, mode=PlayMode.GOAL_KICK, mode_team=AWAY,
-                             moves={N + 4: (spot[0] - 0.5, spot[1]), N + 5: (40.0, 5.0)})
-    kick(ref, st, [N + 4], (-1.0, 0.0))
+GOAL_KICK_SPOT = (HL - CFG.field.goal_area_length, 9.16)  # away defends +x: its goal kick
+TAKER, MATE, OPPONENT = N + 4, N + 5, 6
+
+
+def goal_kick_taken(config: MatchConfig = CFG):
+    """An away goal kick just taken by TAKER, the ball still inside the penalty area, a
+    team-mate and an opponent of the taker close to it."""
+    spot = GOAL_KICK_SPOT
+    ref, st, ev = make_world(ball=spot, mode=PlayMode.GOAL_KICK, mode_team=AWAY, config=config,
+                             moves={TAKER: (spot[0] + 0.5, spot[1]), MATE: (44.0, 8.0), OPPONENT: (-10.0, 0.0)})
+    kick(ref, st, [TAKER], (-1.0, 0.0))
     assert st.play_mode == PlayMode.PLAY_ON
     st.ball[:] = (45.0, 8.0)  # still inside the penalty area
     step(ref, st)
-    step(ref, st, touchers=[N + 5])  # a team-mate plays it too early
+    return ref, st, ev
+
+
+def test_an_opponent_playing_a_goal_kick_inside_the_penalty_area_has_it_retaken():
+    ref, st, ev = goal_kick_taken()
+    step(ref, st, touchers=[OPPONENT])
     assert (st.play_mode, st.mode_team) == (PlayMode.GOAL_KICK, AWAY)
-    assert st.ball.tolist() == list(spot)
+    assert st.ball.tolist() == list(GOAL_KICK_SPOT)
     # Taken properly: the ball leaves the area, then anybody may play it.
-    kick(ref, st, [N + 4], (-2.5, 0.0))
+    kick(ref, st, [TAKER], (-2.5, 0.0))
     st.ball[:] = (30.0, 8.0)
     step(ref, st)
-    step(ref, st, touchers=[N + 5])
+    step(ref, st, touchers=[OPPONENT])
     assert st.play_mode == PlayMode.PLAY_ON
+
+
+def test_a_team_mate_playing_a_goal_kick_early_puts_it_in_play_by_default():
+    """rcssserver's default (proper_goal_kicks off): no retake for the taker's team-mates."""
+    assert not CFG.rules.proper_goal_kicks
+    ref, st, ev = goal_kick_taken()
+    step(ref, st, touchers=[MATE])
+    assert st.play_mode == PlayMode.PLAY_ON
+    kick(ref, st, [MATE], (-0.5, 0.0))
+    assert st.play_mode == PlayMode.PLAY_ON
+    # The ball is in play: an opponent may play it inside the area now.
+    step(ref, st, touchers=[OPPONENT])
+    assert st.play_mode == PlayMode.PLAY_ON
+    assert set_play_modes(ev).count(PlayMode.GOAL_KICK) == 0
+
+
+def test_the_goal_kick_taker_may_play_the_ball_again_before_it_leaves_the_area():
+    ref, st, ev = goal_kick_taken(config_with(proper_goal_kicks=True))
+    step(ref, st, touchers=[TAKER])
+    kick(ref, st, [TAKER], (-1.0, 0.0))
+    assert st.play_mode == PlayMode.PLAY_ON
+    step(ref, st, touchers=[OPPONENT])  # the goal kick is still not in play for the opponents
+    assert (st.play_mode, st.mode_team) == (PlayMode.GOAL_KICK, AWAY)
+
+
+def test_proper_goal_kicks_retake_for_team_mates_then_give_the_opponents_a_free_kick():
+    rules = config_with(proper_goal_kicks=True, max_goal_kicks=2)
+    ref, st, ev = goal_kick_taken(rules)
+    for retake in range(3):
+        step(ref, st, touchers=[MATE])  # a team-mate plays it too early
+        if retake < 2:
+            assert (st.play_mode, st.mode_team) == (PlayMode.GOAL_KICK, AWAY), retake
+            assert st.ball.tolist() == list(GOAL_KICK_SPOT)
+            kick(ref, st, [TAKER], (-1.0, 0.0))
+            st.ball[:] = (45.0, 8.0)
+            step(ref, st)
+    # The third fault in a row, with two retakes allowed: an indirect free kick for home on the
+    # penalty area's edge nearest the ball.
+    assert (st.play_mode, st.mode_team) == (PlayMode.FREE_KICK, HOME)
+    assert st.ball.tolist() == [HL - CFG.field.penalty_area_length, 8.0]
+    assert set_play_modes(ev).count(PlayMode.GOAL_KICK) == 2
+
+
+def test_retakes_forced_by_the_opponents_do_not_use_up_the_goal_kicks():
+    ref, st, ev = goal_kick_taken(config_with(proper_goal_kicks=True, max_goal_kicks=1))
+    for _ in range(4):
+        step(ref, st, touchers=[OPPONENT])
+        assert (st.play_mode, st.mode_team) == (PlayMode.GOAL_KICK, AWAY)
+        kick(ref, st, [TAKER], (-1.0, 0.0))
+        st.ball[:] = (45.0, 8.0)
+        step(ref, st)
+    step(ref, st, touchers=[MATE])  # the team's first fault: retaken
+    assert (st.play_mode, st.mode_team) == (PlayMode.GOAL_KICK, AWAY)
 
 
 def test_opponents_leave_the_penalty_area_at_a_goal_kick():

@@ -2,9 +2,10 @@
 
 The expected fingerprints (score, cycles, hashes of every cycle's world, of the event log and
 of the statistics, in ``scenario_fingerprints.json``) were recorded with
-``tests/soccer_sim/scenario_fingerprint.py`` on the code base before scenarios existed (commit
-d7c8672). The same matches played now, without a scenario, with ``Scenario()`` and with the
-library's ``full-match``, must give them exactly. The bits depend on the processor and the
+``tests/soccer_sim/scenario_fingerprint.py``, first on the code base before scenarios existed
+(commit d7c8672), again whenever play changed on purpose (see that module). The same matches
+played now, without a scenario, with ``Scenario()`` and with the library's ``full-match``,
+must give them exactly. The bits depend on the processor and the
 numerical libraries, so the comparison with the recording runs where one exists for this
 platform; everywhere, a match without a scenario and the same match with the default scenario
 must be identical.
@@ -22,14 +23,14 @@ from soccer_sim.scenarios import get_scenario
 from tests.soccer_sim.scenario_fingerprint import CASES, SLOW_CASES, fingerprint, platform_key
 
 RECORDINGS = json.loads(Path(__file__).with_name("scenario_fingerprints.json").read_text())
-"""Platform -> fingerprint of every case, recorded at commit d7c8672 (before scenarios)."""
+"""Platform -> fingerprint of every case (see scenario_fingerprint.py for when they were recorded)."""
 
 
 def recorded(name: str) -> dict:
     """The recorded fingerprint of a case on this platform (the test is skipped where none is)."""
     platform = platform_key()
     if platform not in RECORDINGS:
-        pytest.skip(f"no pre-scenario recording for platform {platform!r} (see scenario_fingerprint.py)")
+        pytest.skip(f"no recording for platform {platform!r} (see scenario_fingerprint.py)")
     return RECORDINGS[platform][name]
 
 
