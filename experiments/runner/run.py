@@ -82,6 +82,7 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
         used = 0
         if todo:
             pool = _pool(backend, workers, digest, version, match_timeout, address)
+            pool.warm_up(todo)  # compile the kernels once, before any worker, match clock or ETA starts
             used = pool.size
             try:
                 with RunProgress(len(todo), kind, enabled=progress) as bar:
