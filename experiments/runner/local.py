@@ -27,12 +27,18 @@ KILL_GRACE = 10.0
 """Seconds a worker may overrun ``--match-timeout`` before it is killed (its own timer should
 have stopped the match first)."""
 
+READY = "ready"
+"""What a worker sends once it has started and loaded the kernels: the parent's clock for its
+first match starts then, so start-up is never charged to a match's time budget."""
+
 
 def _worker_main(connection: Connection, config_hash: str, version: str, timeout: float | None,
                  kernels: tuple[Kernel, ...] = ()) -> None:
-    """A worker: load ``kernels``, then play the specs the parent sends until it sends None or goes away."""
+    """A worker: load ``kernels``, say READY, then play the specs the parent sends until it sends
+    None or goes away."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
     load_kernels(kernels)
+    connection.send(READY)
     while True:
         try:
             spec = connection.recv()
@@ -49,6 +55,9 @@ class _Worker:
     connection: Connection
     spec: MatchSpec | None = None
     started: float = 0.0
+    """When the parent's clock for ``spec`` started (once the worker is ready)."""
+    ready: bool = False
+    """Whether the worker has said READY (its first spec may wait in the pipe until then)."""
 
 
 class LocalPool:
@@ -98,6 +107,9 @@ class LocalPool:
                             record = worker.connection.recv()
                         except (EOFError, OSError):
                             record = None
+                        if record == READY:
+                            worker.ready, worker.started = True, time.monotonic()
+                            continue
                         if record is not None:
                             worker.spec = None
                             yield record
@@ -117,13 +129,15 @@ class LocalPool:
             self.close()
 
     def _wait_time(self, busy: list[_Worker]) -> float | None:
-        if self._timeout is None:
+        timed = [w for w in busy if w.ready]
+        if self._timeout is None or not timed:
             return 1.0
         now = time.monotonic()
-        return max(0.05, min(w.started + self._timeout + KILL_GRACE - now for w in busy))
+        return max(0.05, min(w.started + self._timeout + KILL_GRACE - now for w in timed))
 
     def _overdue(self, worker: _Worker) -> bool:
-        return self._timeout is not None and time.monotonic() > worker.started + self._timeout + KILL_GRACE
+        return (self._timeout is not None and worker.ready
+                and time.monotonic() > worker.started + self._timeout + KILL_GRACE)
 
     @staticmethod
     def _failed(worker: _Worker, config_hash: str, version: str, message: str) -> MatchRecord:

@@ -262,3 +262,27 @@ print(json.dumps(misses))
 """, tmp_path, cache)
     assert second.stderr == ""
     assert json.loads(second.stdout) == []
+
+
+def test_a_worker_is_not_timed_until_it_is_ready() -> None:
+    from experiments.runner.local import LocalPool, _Worker
+
+    pool = LocalPool(1, "hash", "version", 1.0)
+    worker = _Worker(process=None, connection=None, spec=object(), started=0.0)  # sent long ago
+    assert not pool._overdue(worker) and pool._wait_time([worker]) == 1.0
+    worker.ready = True
+    assert pool._overdue(worker)
+
+
+@pytest.mark.slow
+def test_compile_time_is_not_charged_to_a_tight_match_timeout(tmp_path: Path) -> None:
+    done = _run(f"""
+from experiments.runner import MatchSpec, run_matches
+if __name__ == "__main__":
+    specs = [MatchSpec("chaser", "idle", seed, 20) for seed in range(3)]
+    summary = run_matches(specs, {str(tmp_path / 'r.sqlite')!r}, "tournament", {{}}, cycles=20, workers=2,
+                          match_timeout=1.0, progress=False)
+    print(summary.errors, [r.error for r in summary.records])
+""", tmp_path, tmp_path / "cache")
+    assert done.stderr.splitlines()[0] == COMPILING_LINE  # the cache was cold: compiled before the matches
+    assert done.stdout.split()[0] == "0", done.stdout
