@@ -158,6 +158,10 @@ def compile_kernels(kernels: Sequence[Kernel], processes: int) -> int:
         helper.start()
     try:
         _compile_share(work, counter)
+    except BaseException:  # Ctrl-C: do not wait for the helpers (each cache file is written atomically)
+        for helper in helpers:
+            helper.terminate()
+        raise
     finally:
         for helper in helpers:
             helper.join()
