@@ -63,12 +63,13 @@ class WarmUp:
 
 
 def kernels_for(teams: Iterable[str]) -> tuple[Kernel, ...]:
-    """The kernels the matches of ``teams`` call, from the manifest: every registered team's own,
-    a mixed team's members'; nothing for a team the manifest does not know (such as a
-    ``package.module:Attribute`` path), whose kernels compile on first use."""
+    """The kernels the matches of ``teams`` call, from the manifest: the simulator's own (those
+    every built-in team's matches call), every registered team's, a mixed team's members'. A team
+    the manifest does not know (a ``package.module:Attribute`` path) adds none: its own kernels
+    compile on first use."""
     from experiments.kernel_manifest import KERNELS, TEAMS
 
-    indices: set[int] = set()
+    indices: set[int] = set.intersection(*(set(ids) for ids in TEAMS.values()))
     for team in teams:
         for name in _member_names(team):
             indices.update(TEAMS.get(name, ()))

@@ -82,9 +82,9 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
         used = 0
         if todo:
             pool = _pool(backend, workers, digest, version, match_timeout, address)
-            pool.warm_up(todo)  # compile the kernels once, before any worker, match clock or ETA starts
             used = pool.size
             try:
+                pool.warm_up(todo)  # compile the kernels once, before any worker, match clock or ETA starts
                 with RunProgress(len(todo), kind, enabled=progress) as bar:
                     for record in pool.run(todo):
                         store.add(record)

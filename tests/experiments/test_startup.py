@@ -129,7 +129,9 @@ def test_kernels_for_takes_the_union_of_the_teams_and_of_mixed_members() -> None
 
     assert set(kernels_for(["mmd+msd2", "press-433"])) == of("mmd+msd2", "press-433")
     assert set(kernels_for(["mixed(static|greedy|static)", "idle"])) == of("static", "greedy", "idle")
-    assert kernels_for(["examples.my_team:MyTeam"]) == ()
+    engine = set(kernels_for(["examples.my_team:MyTeam"]))  # the simulator's kernels only
+    assert engine and all(engine <= of(team) for team in TEAMS)
+    assert {k.module.split(".")[0] for k in engine} == {"soccer_sim"}
 
 
 def test_help_imports_no_numpy_numba_rich_or_simulator(tmp_path: Path) -> None:
