@@ -118,8 +118,10 @@ def manifest_text(recordings: dict[str, list[dict]]) -> str:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m experiments.kernel_record", description=__doc__.split("\n\n")[0])
     parser.add_argument("--team", help="record this team's self-play in this process and print it as JSON")
-    parser.add_argument("--cycles", type=int, default=RECORD_CYCLES, help=f"cycles per match (default: {RECORD_CYCLES})")
-    parser.add_argument("--write", action="store_true", help=f"record every built-in team and rewrite {MANIFEST_PATH.name}")
+    parser.add_argument("--cycles", type=int, default=RECORD_CYCLES,
+                        help=f"cycles per match (default: {RECORD_CYCLES})")
+    parser.add_argument("--write", action="store_true",
+                        help=f"record every built-in team and rewrite {MANIFEST_PATH.name}")
     args = parser.parse_args(argv)
     if args.team:
         print(json.dumps(record_match(args.team, args.team, cycles=args.cycles)))

@@ -257,9 +257,9 @@ from experiments.warmup import warm_kernels
 from soccer_sim import MatchConfig, run_match
 warm_kernels(["mmd+msd2", "press-433"])
 run_match("mmd+msd2", "press-433", seed=0, config=MatchConfig(max_cycles=600))
+ours = ("soccer_sim", "agents", "formations")
 misses = sorted(f"{d.py_func.__module__}:{d.py_func.__qualname__}" for d in gc.get_objects()
-                if isinstance(d, Dispatcher) and d.py_func.__module__.split(".")[0] in ("soccer_sim", "agents", "formations")
-                and d.stats.cache_misses)
+                if isinstance(d, Dispatcher) and d.py_func.__module__.split(".")[0] in ours and d.stats.cache_misses)
 print(json.dumps(misses))
 """, tmp_path, cache)
     assert second.stderr == ""
