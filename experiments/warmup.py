@@ -90,7 +90,7 @@ def warm_kernels(teams: Iterable[str], processes: int | None = None, stream: Tex
 
 def ensure_cached(kernels: Sequence[Kernel], processes: int | None = None, stream: TextIO | None = None) -> WarmUp:
     """Make sure every one of ``kernels`` is in the on-disk cache, compiling the missing ones on
-    ``processes`` processes (default: every core; this one included), with one line on
+    ``processes`` processes (default and at most: every core; this one included), with one line on
     ``stream`` (default stderr) before and one after when anything had to be compiled."""
     start = time.perf_counter()
     kernels = tuple(kernels)
@@ -99,7 +99,8 @@ def ensure_cached(kernels: Sequence[Kernel], processes: int | None = None, strea
         return WarmUp(kernels, 0, 0, time.perf_counter() - start)
     stream = stream if stream is not None else sys.stderr
     print(COMPILING_LINE, file=stream, flush=True)
-    used = compile_kernels(missing, processes or os.cpu_count() or 1)
+    cores = os.cpu_count() or 1
+    used = compile_kernels(missing, min(processes or cores, cores))
     seconds = time.perf_counter() - start
     print(f"compiled {len(missing)} kernels in {seconds:.1f} s on {used} process(es)", file=stream, flush=True)
     return WarmUp(kernels, len(missing), used, seconds)
