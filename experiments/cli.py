@@ -4,6 +4,11 @@ Each sub-command lives in its own module under :mod:`experiments.commands`,
 which exposes ``register(subparsers)``: it adds its parser and sets
 ``func(args) -> int`` as the parser's default. This module only wires them up,
 so adding a command never means editing another command's code.
+
+Listing the commands (``soccer-sim --help``) must stay quick, so building the parser imports
+no numpy, numba or simulator code: command modules import what they need when they run, and a
+command whose arguments are costly to build passes ``populate=`` to ``add_parser`` (the
+sub-parsers are :class:`~experiments.lazy_parser.LazyParser`) to build them only when chosen.
 """
 
 from __future__ import annotations
@@ -13,6 +18,8 @@ import importlib
 import os
 import sys
 from collections.abc import Sequence
+
+from experiments.lazy_parser import LazyParser
 
 #: Modules that each contribute one top-level sub-command.
 COMMAND_MODULES: tuple[str, ...] = (
@@ -33,7 +40,7 @@ def build_parser() -> argparse.ArgumentParser:
         prog="soccer-sim",
         description="2D 11v11 soccer simulator for point robots and a lab for multi-robot role assignment.",
     )
-    subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
+    subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=LazyParser)
     for module_name in COMMAND_MODULES:
         importlib.import_module(module_name).register(subparsers)
     return parser

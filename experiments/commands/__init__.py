@@ -13,13 +13,21 @@ def add_module_commands(subparsers, name: str, help_text: str, dest: str, metava
                         modules: dict[str, tuple[str, str]]) -> None:
     """Add command ``name`` whose sub-commands are modules: ``modules`` maps each sub-command
     to (module, one-line help); each module exposes ``add_arguments(parser)`` and
-    ``run(args) -> int`` and is imported when the parser is built."""
-    import importlib
+    ``run(args) -> int`` and is imported only when its sub-command is chosen (its parser is a
+    :class:`~experiments.lazy_parser.LazyParser`), so listing the commands stays fast."""
+    import functools
+
+    from experiments.lazy_parser import LazyParser
 
     parser = subparsers.add_parser(name, help=help_text)
-    sub = parser.add_subparsers(dest=dest, metavar=metavar, required=True)
+    sub = parser.add_subparsers(dest=dest, metavar=metavar, required=True, parser_class=LazyParser)
     for sub_name, (module_name, sub_help) in modules.items():
-        sub_parser = sub.add_parser(sub_name, help=sub_help)
-        module = importlib.import_module(module_name)
-        module.add_arguments(sub_parser)
-        sub_parser.set_defaults(func=module.run)
+        sub.add_parser(sub_name, help=sub_help, populate=functools.partial(_add_module_arguments, module_name))
+
+
+def _add_module_arguments(module_name: str, parser) -> None:
+    import importlib
+
+    module = importlib.import_module(module_name)
+    module.add_arguments(parser)
+    parser.set_defaults(func=module.run)

@@ -23,6 +23,8 @@ BENCHMARKS: dict[str, tuple[str, str]] = {
     "roles": ("experiments.benchmarks.roles", "microseconds per call of every role assigner"),
     "skills": ("experiments.benchmarks.skills", "microseconds per call of every soccer skill"),
     "soccer": ("experiments.benchmarks.soccer", "goals, shots, passes and crowding near the ball between two teams"),
+    "startup": ("experiments.benchmarks.startup",
+                "wall time of a first play with a cold and a warm kernel cache, and of --help"),
 }
 
 

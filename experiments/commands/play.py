@@ -82,6 +82,7 @@ def run(args: argparse.Namespace) -> int:
 
     from experiments.match_report import match_report
     from experiments.runner.worker import MatchTimeout, _arm_timer, _disarm_timer
+    from experiments.warmup import warm_kernels
     from soccer_sim import ConfigError, TeamError, TeamNotFoundError, run_match
     from soccer_sim.replay import ReplayError
 
@@ -90,6 +91,7 @@ def run(args: argparse.Namespace) -> int:
         config = match_config(args.cycles)
         scenario = _scenario(getattr(args, "scenario", None))
         recorders = _recorders(getattr(args, "record", None))
+        warm_kernels((args.home, args.away))  # a cold cache is filled here, not on the match's clock
         start = time.perf_counter()
         alarm = _arm_timer(timeout)  # the tournament's timer: MatchTimeout where the match hangs
         try:

@@ -29,11 +29,15 @@ DEFAULT_TEAMS = ("mmdr", "mmd+msd2", "static", "greedy")
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
+    subparsers.add_parser(
+        "tournament", help="round robin: league table and pairwise goal differences with standard errors",
+        description=doc_summary(__doc__), populate=_add_arguments)
+
+
+def _add_arguments(parser: argparse.ArgumentParser) -> None:
+    """The options (built only when the command is chosen: listing the teams imports the simulator)."""
     from experiments.runner.options import add_run_arguments, add_team_option
 
-    parser = subparsers.add_parser(
-        "tournament", help="round robin: league table and pairwise goal differences with standard errors",
-        description=doc_summary(__doc__))
     add_team_option(parser, "--teams", DEFAULT_TEAMS, "the teams")
     parser.add_argument("--games", type=positive_int, default=DEFAULT_GAMES,
                         help="matches per pairing, rounded up to even: sides swapped on paired seeds "

@@ -3,7 +3,9 @@
 Unlike ``concurrent.futures``, the pool watches every worker itself: a worker that dies (a
 crash, ``kill -9``) or overruns a match's time budget is replaced and its match recorded as
 failed, and the run goes on. Workers are reused from match to match (the simulator's compiled
-kernels load once per worker).
+kernels load once per worker). :meth:`LocalPool.warm_up` compiles the kernels into numba's
+on-disk cache before the first worker starts, and each worker loads them before its first
+match, so neither compile nor load time is charged to a match's time budget.
 """
 
 from __future__ import annotations
@@ -19,15 +21,24 @@ from multiprocessing.connection import Connection, wait
 from experiments.results.record import MatchRecord
 from experiments.runner.spec import MatchSpec
 from experiments.runner.worker import failed_record, play_spec
+from experiments.warmup import Kernel, load_kernels, warm_kernels
 
 KILL_GRACE = 10.0
 """Seconds a worker may overrun ``--match-timeout`` before it is killed (its own timer should
 have stopped the match first)."""
 
+READY = "ready"
+"""What a worker sends once it has started and loaded the kernels: the parent's clock for its
+first match starts then, so start-up is never charged to a match's time budget."""
 
-def _worker_main(connection: Connection, config_hash: str, version: str, timeout: float | None) -> None:
-    """A worker: play the specs the parent sends until it sends None or goes away."""
+
+def _worker_main(connection: Connection, config_hash: str, version: str, timeout: float | None,
+                 kernels: tuple[Kernel, ...] = ()) -> None:
+    """A worker: load ``kernels``, say READY, then play the specs the parent sends until it sends
+    None or goes away."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
+    load_kernels(kernels)
+    connection.send(READY)
     while True:
         try:
             spec = connection.recv()
@@ -44,6 +55,9 @@ class _Worker:
     connection: Connection
     spec: MatchSpec | None = None
     started: float = 0.0
+    """When the parent's clock for ``spec`` started (once the worker is ready)."""
+    ready: bool = False
+    """Whether the worker has said READY (its first spec may wait in the pipe until then)."""
 
 
 class LocalPool:
@@ -55,11 +69,18 @@ class LocalPool:
         self._timeout = timeout
         self._context = multiprocessing.get_context("spawn")
         self._workers: list[_Worker] = []
+        self._kernels: tuple[Kernel, ...] = ()
+
+    def warm_up(self, specs: Iterable[MatchSpec]) -> None:
+        """Compile the kernels the teams of ``specs`` need into the on-disk cache (on this pool's
+        number of processes, only if the cache is cold); workers started later load them."""
+        teams = sorted({name for spec in specs for name in (spec.home, spec.away)})
+        self._kernels = warm_kernels(teams, processes=self.size).kernels
 
     def _start_worker(self) -> _Worker:
         parent_end, child_end = self._context.Pipe()
-        process = self._context.Process(target=_worker_main, args=(child_end, *self._args), daemon=True,
-                                        name="soccer-sim-worker")
+        process = self._context.Process(target=_worker_main, args=(child_end, *self._args, self._kernels),
+                                        daemon=True, name="soccer-sim-worker")
         process.start()
         child_end.close()
         return _Worker(process, parent_end)
@@ -86,6 +107,9 @@ class LocalPool:
                             record = worker.connection.recv()
                         except (EOFError, OSError):
                             record = None
+                        if record == READY:
+                            worker.ready, worker.started = True, time.monotonic()
+                            continue
                         if record is not None:
                             worker.spec = None
                             yield record
@@ -105,13 +129,15 @@ class LocalPool:
             self.close()
 
     def _wait_time(self, busy: list[_Worker]) -> float | None:
-        if self._timeout is None:
+        timed = [w for w in busy if w.ready]
+        if self._timeout is None or not timed:
             return 1.0
         now = time.monotonic()
-        return max(0.05, min(w.started + self._timeout + KILL_GRACE - now for w in busy))
+        return max(0.05, min(w.started + self._timeout + KILL_GRACE - now for w in timed))
 
     def _overdue(self, worker: _Worker) -> bool:
-        return self._timeout is not None and time.monotonic() > worker.started + self._timeout + KILL_GRACE
+        return (self._timeout is not None and worker.ready
+                and time.monotonic() > worker.started + self._timeout + KILL_GRACE)
 
     @staticmethod
     def _failed(worker: _Worker, config_hash: str, version: str, message: str) -> MatchRecord:

@@ -7,10 +7,13 @@ import argparse
 import os
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from experiments.commands.play import positive_int
-from experiments.runner.run import BACKENDS, DEFAULT_MATCH_TIMEOUT, RunSummary, run_matches
-from experiments.runner.spec import MatchSpec
+
+if TYPE_CHECKING:  # the runner imports the simulator: only when a command runs
+    from experiments.runner.run import RunSummary
+    from experiments.runner.spec import MatchSpec
 
 
 class RunInputError(Exception):
@@ -49,6 +52,8 @@ def registered_teams_text() -> str:
 def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None:
     """--games, --seed, --cycles, --workers, --backend, --address, --out, --tables,
     --match-timeout, --retry-errors, --record-dir, --record-every, --no-progress."""
+    from experiments.runner.run import BACKENDS, DEFAULT_MATCH_TIMEOUT
+
     parser.add_argument("--seed", type=seed_value, default=0, help="first seed; a pairing plays seeds seed, seed+1, ... (default: 0)")
     parser.add_argument("--cycles", type=positive_int, default=None,
                         help="cycles per match (default: a regulation match of 6000); part of the configuration hash")
@@ -158,6 +163,7 @@ def execute(args: argparse.Namespace, kind: str, specs: list[MatchSpec], params:
     (KeyboardInterrupt propagates: every finished match is stored)."""
     from experiments.results.store import ResultsError
     from experiments.runner.ray_backend import RayUnavailable
+    from experiments.runner.run import run_matches
 
     if args.address and args.backend != "ray":
         raise RunInputError("--address needs --backend ray")

@@ -52,6 +52,14 @@ class RayPool:
         self.size = min(workers, cpus) if (workers and not address) else cpus
         self._remote = ray.remote(num_cpus=1, max_retries=0)(play_spec)
 
+    def warm_up(self, specs: Iterable[MatchSpec]) -> None:
+        """Compile the kernels the teams of ``specs`` need into this machine's numba cache before
+        any task starts (the workers of a local Ray instance load them from there; nodes of a
+        remote cluster compile on their first match, within ``RAY_GRACE``)."""
+        from experiments.warmup import warm_kernels
+
+        warm_kernels(sorted({name for spec in specs for name in (spec.home, spec.away)}), processes=self.size)
+
     def run(self, specs: Iterable[MatchSpec]) -> Iterator[MatchRecord]:
         ray = self._ray
         pending = deque(specs)

@@ -90,6 +90,7 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
             pool = _pool(backend, workers, digest, version, match_timeout, address)
             used = pool.size
             try:
+                pool.warm_up(todo)  # compile the kernels once, before any worker, match clock or ETA starts
                 with RunProgress(len(todo), kind, enabled=progress) as bar:
                     for record in pool.run(todo):
                         _store(store, record, keys)

@@ -13,8 +13,10 @@ import json
 import subprocess
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from soccer_sim import MatchConfig
+if TYPE_CHECKING:  # annotations only: importing the simulator is left to what plays matches
+    from soccer_sim import MatchConfig
 
 
 @dataclass(frozen=True, order=True)
