@@ -14,7 +14,7 @@ Assignment with Minimal-makespan for Formational Positioning":
     the standard deviation of the distances within an assignment (averaged
     over instances).
 
-While the runtime table is measured, each cell's time is shown on stderr as it is made.
+While the runtime table is measured on a terminal, each cell's time is shown on stderr as it is made.
 """
 
 from __future__ import annotations
@@ -201,7 +201,8 @@ def _runtime_table(args) -> None:
             median = float(np.median(times))
             previous = (n, median)
             cells.append(_format_ms(median))
-            print(f"  {label:18s} n = {n:6d}: {_format_ms(median)} ms", file=sys.stderr, flush=True)
+            if sys.stderr.isatty():  # progress for a person watching; nothing in a log
+                print(f"  {label:18s} n = {n:6d}: {_format_ms(median)} ms", file=sys.stderr, flush=True)
         if skipped_reason is not None:
             notes.append(f"{label}: {skipped_reason}")
         table.rows.append([label, *cells])

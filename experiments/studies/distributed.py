@@ -326,7 +326,8 @@ def _plot_scaling(summary: list[dict], fits: dict, path: Path, r_comm: float) ->
         ax.set_xlabel(f"{quantity}  (r_comm = {r_comm:g}, v_max = 1)")
         ax.set_ylabel("completion time (mean ± sd)")
         ax.set_title(title)
-        ax.legend(fontsize=8)
+        if ax.get_legend_handles_labels()[0]:  # a panel whose series were all skipped has none
+            ax.legend(fontsize=8)
         ax.grid(True, which="both", alpha=0.3)
     fig.tight_layout()
     fig.savefig(path, dpi=120)

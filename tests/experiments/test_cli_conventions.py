@@ -88,6 +88,18 @@ def test_a_study_that_finds_nothing_fails_in_one_line(capsys):
     assert "joins the corners" in one_error_line(capsys.readouterr().err)
 
 
+def test_a_study_with_an_empty_figure_panel_warns_nothing(tmp_path, capsys):
+    import warnings
+
+    argv = ["experiment", "distributed", "--grid-sizes", "", "--etsp-sizes", "4", "--worst-sizes", "",
+            "--sweep-areas", "", "--trials", "1", "--out", str(tmp_path)]
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        assert main(argv) == 0
+    assert [str(w.message) for w in caught if not issubclass(w.category, DeprecationWarning)] == []
+    assert (tmp_path / "distributed_scaling.png").stat().st_size > 1000
+
+
 def test_ctrl_c_exits_130_with_one_line(monkeypatch, capsys):
     import agents.roles.timing
     import formations
