@@ -40,7 +40,7 @@ pytestmark = pytest.mark.filterwarnings("ignore:Generating overly large repr")
 
 FAST = settings(max_examples=60, deadline=None, derandomize=True, database=None,
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
-SLOW = settings(max_examples=600, deadline=None, database=None,
+SLOW = settings(max_examples=200, deadline=None, database=None,
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 
 JUNK = ["", "0", "-1", "1", "2", "x", "nan", "inf", "-", "--", ",", "a,b", "é", "a\nb", "1e3", "-5.5", "None",
