@@ -23,7 +23,6 @@ import hashlib
 import io
 import json
 import os
-import types
 import warnings
 from dataclasses import dataclass
 from pathlib import Path
@@ -139,6 +138,15 @@ def _cli_is_wired() -> bool:
     return isinstance(build_parser(), CommandParser)
 
 
+def _as_command_parsers(parser: argparse.ArgumentParser) -> None:
+    """Make ``parser`` and every sub-parser under it a CommandParser (it adds no state)."""
+    parser.__class__ = CommandParser
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sub in action.choices.values():
+                _as_command_parsers(sub)
+
+
 @contextlib.contextmanager
 def _one_line_parser():
     """experiments.cli's parser as a CommandParser (what cli.py is to build: usage errors in one
@@ -148,9 +156,14 @@ def _one_line_parser():
     if _cli_is_wired():
         yield
         return
-    shim = types.SimpleNamespace(**vars(argparse))
-    shim.ArgumentParser = CommandParser
-    with mock.patch.object(cli, "argparse", shim):
+    real = cli.build_parser
+
+    def build_parser():
+        parser = real()
+        _as_command_parsers(parser)
+        return parser
+
+    with mock.patch.object(cli, "build_parser", build_parser):
         yield
 
 
