@@ -19,6 +19,7 @@ import os
 import sys
 from collections.abc import Sequence
 
+from experiments.commands.errors import CommandParser, call
 from experiments.lazy_parser import LazyParser
 
 #: Modules that each contribute one top-level sub-command.
@@ -36,10 +37,11 @@ COMMAND_MODULES: tuple[str, ...] = (
 
 def build_parser() -> argparse.ArgumentParser:
     """Return the parser with every sub-command registered."""
-    parser = argparse.ArgumentParser(
+    parser = CommandParser(
         prog="soccer-sim",
         description="2D 11v11 soccer simulator for point robots and a lab for multi-robot role assignment.",
     )
+    parser.add_argument("--version", action="version", version=f"%(prog)s {installed_version()}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=LazyParser)
     for module_name in COMMAND_MODULES:
         importlib.import_module(module_name).register(subparsers)
@@ -57,7 +59,18 @@ def main(argv: Sequence[str] | None = None) -> int:
     if not hasattr(args, "func"):
         parser.print_help()
         return 2
-    return int(args.func(args) or 0)
+    return call(args.func, args)
+
+
+def installed_version() -> str:
+    """The installed distribution's version (``unknown`` when the code runs from a source tree
+    that was never installed)."""
+    from importlib import metadata
+
+    try:
+        return metadata.version("soccer-sim")
+    except metadata.PackageNotFoundError:
+        return "unknown"
 
 
 if __name__ == "__main__":

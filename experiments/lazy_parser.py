@@ -12,9 +12,12 @@ from __future__ import annotations
 import argparse
 from collections.abc import Callable
 
+from experiments.commands.errors import CommandParser
 
-class LazyParser(argparse.ArgumentParser):
-    """An ``ArgumentParser`` that calls ``populate(self)`` once, before its first parse or help.
+
+class LazyParser(CommandParser):
+    """An ``ArgumentParser`` that calls ``populate(self)`` once, before its first parse or help
+    (a :class:`~experiments.commands.errors.CommandParser`: its usage errors are one line).
 
     Use it as a sub-parser: ``subparsers.add_parser(name, help=..., populate=fn)`` on a
     sub-parsers action made with ``parser_class=LazyParser``."""

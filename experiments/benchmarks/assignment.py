@@ -13,6 +13,8 @@ Assignment with Minimal-makespan for Formational Positioning":
     100 x 100 integer grid: average makespan, average distance per robot, and
     the standard deviation of the distances within an assignment (averaged
     over instances).
+
+While the runtime table is measured on a terminal, each cell's time is shown on stderr as it is made.
 """
 
 from __future__ import annotations
@@ -137,20 +139,32 @@ def _format_ms(seconds: float) -> str:
     return f"{ms:,.0f}"
 
 
-def _runtime_table(args, console) -> None:
+def _check_numbers(args) -> None:
+    """--repeats, --quality-instances and --time-limit within their ranges."""
+    import math
+
+    if args.repeats < 1:
+        raise BenchmarkArgumentError(f"--repeats: must be at least 1, got {args.repeats}")
+    if args.quality_instances < 0:
+        raise BenchmarkArgumentError(f"--quality-instances: must be 0 or more, got {args.quality_instances}")
+    if not (math.isfinite(args.time_limit) and args.time_limit > 0):
+        raise BenchmarkArgumentError(f"--time-limit: must be a positive number of seconds, got {args.time_limit:g}")
+
+
+def _runtime_table(args) -> None:
+    import sys
+
     import numpy as np
-    from rich.table import Table
 
     from agents.assignment import assign
+    from experiments.reporting import Table
 
     sizes = _parse_sizes(args.sizes)
     wanted = _parse_methods(args.methods)
     rows = [row for row in RUNTIME_ROWS if not wanted or row[0] in wanted]
-    table = Table(title="Median time of one assign() call in milliseconds "
-                        "(n robots, n targets, random integer points on an n² x n² grid)")
-    table.add_column("method")
-    for n in sizes:
-        table.add_column(f"n = {n}", justify="right")
+    table = Table("Median time of one assign() call in milliseconds "
+                  "(n robots, n targets, random integer points on an n² x n² grid)",
+                  ["method", *(f"n = {n}" for n in sizes)])
     notes: list[str] = []
     rng = np.random.default_rng(args.seed)
     instances = {n: [_grid_instance(rng, n, n * n) for _ in range(max(1, args.repeats))] for n in sizes}
@@ -187,20 +201,21 @@ def _runtime_table(args, console) -> None:
             median = float(np.median(times))
             previous = (n, median)
             cells.append(_format_ms(median))
-            console.print(f"  {label:18s} n = {n:6d}: {_format_ms(median)} ms", style="dim")
+            if sys.stderr.isatty():  # progress for a person watching; nothing in a log
+                print(f"  {label:18s} n = {n:6d}: {_format_ms(median)} ms", file=sys.stderr, flush=True)
         if skipped_reason is not None:
             notes.append(f"{label}: {skipped_reason}")
-        table.add_row(label, *cells)
-    console.print(table)
+        table.rows.append([label, *cells])
+    table.print()
     for note in notes:
-        console.print(f"  — {note}")
+        print(f"  — {note}")
 
 
-def _quality_table(args, console) -> None:
+def _quality_table(args) -> None:
     import numpy as np
-    from rich.table import Table
 
     from agents.assignment import assign
+    from experiments.reporting import Table
 
     count = args.quality_instances
     labels = ("mmd+msd2", "mmdr", "msd2", "msd", "random", "greedy")
@@ -216,31 +231,27 @@ def _quality_table(args, console) -> None:
             makespans[label][k] = result.makespan
             means[label][k] = result.distances.mean()
             spreads[label][k] = result.distances.std()
-    table = Table(title=f"Quality over {count:,} random instances: 10 robots, 10 targets, 100 x 100 integer grid")
-    table.add_column("method")
-    table.add_column("average makespan", justify="right")
-    table.add_column("average distance", justify="right")
-    table.add_column("distance std. dev.", justify="right")
+    table = Table(f"Quality over {count:,} random instances: 10 robots, 10 targets, 100 x 100 integer grid",
+                  ["method", "average makespan", "average distance", "distance std. dev."],
+                  caption="distance std. dev.: standard deviation of the 10 distances of one assignment, "
+                          "averaged over instances")
     for label in labels:
-        table.add_row(label, f"{makespans[label].mean():.2f}", f"{means[label].mean():.2f}",
-                      f"{spreads[label].mean():.2f}")
-    console.print(table)
-    console.print("  distance std. dev.: standard deviation of the 10 distances of one assignment, "
-                  "averaged over instances")
+        table.rows.append([label, f"{makespans[label].mean():.2f}", f"{means[label].mean():.2f}",
+                           f"{spreads[label].mean():.2f}"])
+    table.print()
 
 
 def run(args: argparse.Namespace) -> int:
-    from rich.console import Console
+    from experiments.commands.errors import fail
 
-    console = Console()
     try:
         _parse_sizes(args.sizes)
         _parse_methods(args.methods)
+        _check_numbers(args)
     except BenchmarkArgumentError as exc:
-        Console(stderr=True).print(f"error: {exc}", style="red", markup=False)
-        return 2
+        return fail(str(exc))
     if args.sizes.strip():
-        _runtime_table(args, console)
+        _runtime_table(args)
     if args.quality_instances > 0:
-        _quality_table(args, console)
+        _quality_table(args)
     return 0

@@ -38,9 +38,7 @@ class _ReplayedPolicy:
 
 
 def run(args: argparse.Namespace) -> int:
-    from rich.console import Console
-    from rich.table import Table
-
+    from experiments.reporting import Table
     from soccer_sim import MatchConfig, run_match
     from soccer_sim.env import PolicyTeam, parallel_env
 
@@ -74,12 +72,11 @@ def run(args: argparse.Namespace) -> int:
             env_times.append(elapsed / steps)
             plain_times.append(plain / args.cycles)
     env_step, plain_cycle = statistics.median(env_times), statistics.median(plain_times)
-    table_out = Table(title=f"PettingZoo environment, 22 agents, {args.action_mode} actions "
-                            f"({args.repeats} runs of {args.cycles} cycles, medians)")
-    for name in ("µs / env step", "env steps / s", "µs / plain match cycle", "env step / plain cycle"):
-        table_out.add_column(name, justify="right")
-    table_out.add_row(f"{env_step * 1e6:.0f}", f"{1.0 / env_step:,.0f}",
-                      "-" if np.isnan(plain_cycle) else f"{plain_cycle * 1e6:.0f}",
-                      "-" if np.isnan(plain_cycle) else f"{env_step / plain_cycle:.2f}")
-    Console().print(table_out)
+    table_out = Table(f"PettingZoo environment, 22 agents, {args.action_mode} actions "
+                      f"({args.repeats} runs of {args.cycles} cycles, medians)",
+                      ["µs / env step", "env steps / s", "µs / plain match cycle", "env step / plain cycle"], labels=0)
+    table_out.rows.append([f"{env_step * 1e6:.0f}", f"{1.0 / env_step:.0f}",
+                           "-" if np.isnan(plain_cycle) else f"{plain_cycle * 1e6:.0f}",
+                           "-" if np.isnan(plain_cycle) else f"{env_step / plain_cycle:.2f}"])
+    table_out.print()
     return 0

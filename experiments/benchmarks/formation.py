@@ -17,10 +17,12 @@ import argparse
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--queries", type=int, default=100_000, help="balls per vectorised call (default 100000)")
-    parser.add_argument("--single", type=int, default=20_000, help="single calls timed per case (default 20000)")
-    parser.add_argument("--batch", type=int, default=200, help="calls per timed batch (default 200)")
-    parser.add_argument("--repeats", type=int, default=5, help="vectorised calls timed; the best is reported")
+    from experiments.commands.play import positive_int
+
+    parser.add_argument("--queries", type=positive_int, default=100_000, help="balls per vectorised call (default 100000)")
+    parser.add_argument("--single", type=positive_int, default=20_000, help="single calls timed per case (default 20000)")
+    parser.add_argument("--batch", type=positive_int, default=200, help="calls per timed batch (default 200)")
+    parser.add_argument("--repeats", type=positive_int, default=5, help="vectorised calls timed; the best is reported")
     parser.add_argument("--seed", type=int, default=0, help="seed of the random ball positions")
     parser.add_argument(
         "--set", dest="sets", action="append", metavar="NAME", help="only this built-in set (repeatable; default: all)"
@@ -28,22 +30,22 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    import sys
     import time
 
     import numpy as np
-    from rich.console import Console
-    from rich.table import Table
 
     import formations
+    from experiments.commands.errors import fail
+    from experiments.reporting import Table
     from formations.field import STANDARD_FIELD
 
-    console = Console(width=None if sys.stdout.isatty() else 110)
     names = args.sets or formations.builtin_names()
     unknown = sorted(set(names) - set(formations.builtin_names()))
     if unknown:
-        console.print(f"[red]error:[/red] unknown formation set(s) {unknown}; available: {formations.builtin_names()}")
-        return 2
+        return fail(f"--set: unknown formation set(s) {', '.join(unknown)}; built-in: "
+                    f"{', '.join(formations.builtin_names())}")
+    if args.batch > args.single:
+        return fail(f"--batch ({args.batch}) must not exceed --single ({args.single})")
     rng = np.random.default_rng(args.seed)
     hl, hw = STANDARD_FIELD.half_length, STANDARD_FIELD.half_width
     inside = np.column_stack((rng.uniform(-hl, hl, args.single), rng.uniform(-hw, hw, args.single)))
@@ -56,16 +58,13 @@ def run(args: argparse.Namespace) -> int:
     outside_list = [tuple(p) for p in outside.tolist()]
 
     table = Table(
-        title="Formation queries",
+        "Formation queries",
+        ["set", "situation", "samples", "triangles", "1 ball in (µs)", "1 ball out (µs)",
+         f"{args.queries:,} balls (s)", "µs/ball"],
+        labels=2,
         caption=f"1 ball: median over batches of {args.batch} calls, in field / out of play; "
         f"{args.queries:,} balls: one vectorised call, best of {args.repeats}",
     )
-    for column in ("set", "situation", "samples", "triangles"):
-        table.add_column(column)
-    table.add_column("1 ball in (µs)", justify="right")
-    table.add_column("1 ball out (µs)", justify="right")
-    table.add_column(f"{args.queries:,} balls (s)", justify="right")
-    table.add_column("µs/ball", justify="right")
     worst_single = 0.0
     worst_many = 0.0
     for name in names:
@@ -80,7 +79,7 @@ def run(args: argparse.Namespace) -> int:
                 best = min(best, time.perf_counter() - start)
             worst_single = max(worst_single, single_in, single_out)
             worst_many = max(worst_many, best)
-            table.add_row(
+            table.rows.append([
                 name,
                 situation.value,
                 str(formation.n_samples),
@@ -89,9 +88,9 @@ def run(args: argparse.Namespace) -> int:
                 f"{single_out:.2f}",
                 f"{best:.4f}",
                 f"{best / len(many) * 1e6:.3f}",
-            )
-    console.print(table)
-    console.print(
+            ])
+    table.print()
+    print(
         f"slowest single-query median: {worst_single:.2f} µs (target < 20 µs); "
         f"slowest vectorised {args.queries:,}-ball call: {worst_many:.4f} s (target < 0.2 s for 100,000)"
     )

@@ -13,6 +13,10 @@ every instance; a difference stops the benchmark with an error.
 Rows: every ``--sizes`` x ``--robots`` at the first of ``--densities``; the other densities
 at the smallest size and the first robot count (the paper's density block); and the
 ``--sizes-3d`` cubes (26-connected) at the first density with the first robot count.
+
+The command prints the table; with ``--out DIR`` it also writes ``trials.csv`` (one line per
+instance), ``table.csv`` (one per row) and ``speedup.png`` there. Without ``--out`` nothing
+is written.
 """
 
 from __future__ import annotations
@@ -42,6 +46,10 @@ PAPER_TABLE_1: dict[tuple[int, int, int], tuple[int, float, float, float]] = {
     (200, 10, 200): (1427, 104, 8, 13.0), (200, 15, 200): (1661, 95, 9, 10.6),
     (200, 25, 200): (2312, 81, 10, 8.1),
 }
+
+
+class TotalsDiffer(AssignmentError):
+    """The lazy method and the all-pairs baseline reached different totals on one instance."""
 
 
 @dataclass(frozen=True)
@@ -89,8 +97,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "'' for none (default: %(default)s)")
     parser.add_argument("--repeats", type=int, default=3, help="random instances per row (default: %(default)s)")
     parser.add_argument("--seed", type=int, default=0, help="seed of the instances (default: %(default)s)")
-    parser.add_argument("--out", default="results-tables/lazy-assignment",
-                        help="directory for the CSV files and the PNG plot (default: %(default)s)")
+    parser.add_argument("--out", default=None, metavar="DIR",
+                        help="also write the CSV files and the PNG plot into DIR (created if missing; "
+                             "default: print the table only)")
 
 
 def _numbers(text: str, kind: type, name: str) -> list:
@@ -123,7 +132,8 @@ def rows_of(args: argparse.Namespace) -> list[Row]:
 
 
 def play_row(row: Row, repeats: int, rng: np.random.Generator) -> list[Trial]:
-    """``repeats`` instances of ``row`` solved by both methods; AssignmentError if their totals differ."""
+    """``repeats`` instances of ``row`` solved by both methods; TotalsDiffer if their totals differ
+    (an AssignmentError of another kind: the row's instance cannot be made, e.g. too many robots)."""
     trials = []
     for k in range(repeats):
         grid, robots, goals = random_instance(row.shape, row.density, row.robots, row.robots, rng)
@@ -133,7 +143,7 @@ def play_row(row: Row, repeats: int, rng: np.random.Generator) -> list[Trial]:
         full = assign_on_grid(grid, robots, goals, method="all-pairs")
         end = time.perf_counter()
         if not np.isclose(lazy.total, full.total, rtol=1e-12, atol=1e-9):
-            raise AssignmentError(f"row {row.label} density {row.density} robots {row.robots}, instance {k}: "
+            raise TotalsDiffer(f"row {row.label} density {row.density} robots {row.robots}, instance {k}: "
                                   f"lazy total {lazy.total} differs from all-pairs total {full.total}")
         trials.append(Trial(row, k, lazy.pairs_computed, full.pairs_computed, lazy.rounds, middle - start,
                             end - middle, float(lazy.total)))
@@ -213,34 +223,36 @@ def _plot(summaries: list[dict[str, object]], path: Path) -> None:
 
 
 def _print_table(summaries: list[dict[str, object]]) -> None:
-    from rich.console import Console
-    from rich.table import Table
+    from experiments.reporting import Table
 
-    table = Table(title="Lazy path-cost assignment vs all pairs (mean ± sd over the instances)")
-    for name in ("workspace", "obst.", "R", "pairs (lazy)", "all pairs", "all-pairs s", "lazy s", "speed-up",
-                 "paper pairs", "paper speed-up"):
-        table.add_column(name, justify="right")
+    table = Table("Lazy path-cost assignment vs all pairs (mean ± sd over the instances)",
+                  ["workspace", "obst.", "R", "pairs (lazy)", "all pairs", "all-pairs s", "lazy s", "speed-up",
+                   "paper pairs", "paper speed-up"], labels=0)
     for s in summaries:
-        table.add_row(
+        table.rows.append([
             str(s["workspace"]), f"{round(100 * s['density'])}%", str(s["robots"]),
             f"{s['pairs_lazy_mean']:.0f} ± {s['pairs_lazy_sd']:.0f}", str(s["pairs_all"]),
             f"{s['seconds_all_mean']:.2f} ± {s['seconds_all_sd']:.2f}",
             f"{s['seconds_lazy_mean']:.3f} ± {s['seconds_lazy_sd']:.3f}", f"{s['speedup']:.1f}",
             "-" if s["paper_pairs"] is None else str(s["paper_pairs"]),
             "-" if s["paper_speedup"] is None else f"{s['paper_speedup']:.1f}",
-        )
-    console = Console()
-    if not console.is_terminal:  # piped or redirected: rich would squeeze the table into 80 columns
-        console = Console(width=max(console.width, 140))
-    console.print(table)
+        ])
+    table.print()
 
 
 def run(args: argparse.Namespace) -> int:
+    from experiments.commands.errors import FAILED, fail
+
     try:
         rows = rows_of(args)
     except ValueError as exc:
-        print(f"error: {exc}")
-        return 2
+        return fail(str(exc))
+    out = Path(args.out) if args.out is not None else None
+    if out is not None:
+        try:
+            out.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            return fail(f"--out {out}: cannot make the directory ({exc.strerror or exc})")
     rng = np.random.default_rng(args.seed)
     _warm_up()
     started = time.perf_counter()
@@ -249,17 +261,20 @@ def run(args: argparse.Namespace) -> int:
     for row in rows:
         try:
             row_trials = play_row(row, args.repeats, rng)
-        except AssignmentError as exc:  # unequal totals, or a workspace too crowded for its robots
-            print(f"error: {exc}")
-            return 1
+        except TotalsDiffer as exc:  # the benchmark's own check failed
+            return fail(str(exc), FAILED)
+        except AssignmentError as exc:  # the options ask for an impossible instance (too many robots)
+            return fail(f"row {row.label}, density {row.density}, {row.robots} robots: {exc}")
         trials += row_trials
         summaries.append(summarise(row_trials))
     _print_table(summaries)
+    print(f"{len(trials)} instances, both totals equal on every one; {time.perf_counter() - started:.1f} s")
+    if out is None:
+        print("table only; --out DIR also writes the instances and the table (CSV) and the speed-up plot")
+        return 0
     try:
-        paths = write_outputs(trials, summaries, Path(args.out))
+        paths = write_outputs(trials, summaries, out)
     except OSError as exc:
-        print(f"error: cannot write to {args.out}: {exc.strerror or exc}")
-        return 2
-    print(f"{len(trials)} instances, both totals equal on every one; {time.perf_counter() - started:.1f} s. "
-          f"Wrote {', '.join(str(p) for p in paths)}")
+        return fail(f"--out {out}: cannot write ({exc.strerror or exc})")
+    print(f"wrote {', '.join(str(p) for p in paths)}")
     return 0

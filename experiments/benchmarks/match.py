@@ -26,18 +26,15 @@ def run(args: argparse.Namespace) -> int:
     import statistics
     import time
 
-    from rich.console import Console
-    from rich.table import Table
-
+    from experiments.commands.errors import fail
+    from experiments.reporting import Table
     from soccer_sim import ConfigError, MatchConfig, TeamError, TeamNotFoundError, run_match
 
-    console = Console()
     config = MatchConfig(max_cycles=args.cycles)
     try:  # the warm-up match also checks the teams and the seed
         run_match(args.home, args.away, seed=args.seed, config=MatchConfig(max_cycles=200))
     except (TeamNotFoundError, TeamError, ConfigError, ValueError) as exc:
-        console.print(f"[red]error:[/red] {exc}")
-        return 2
+        return fail(str(exc))
     times, cycles, goals = [], [], []
     for i in range(args.matches):
         start = time.perf_counter()
@@ -47,12 +44,12 @@ def run(args: argparse.Namespace) -> int:
         goals.append(sum(result.score))
     median = statistics.median(times)
     per_cycle = [t / c * 1e6 for t, c in zip(times, cycles)]
-    table = Table(title=f"{args.home} vs {args.away}: {args.matches} matches of {cycles[0]} cycles")
-    for column in ("median s / match", "min s / match", "median µs / cycle", "min µs / cycle", "goals / match"):
-        table.add_column(column, justify="right")
-    table.add_row(f"{median:.3f}", f"{min(times):.3f}", f"{statistics.median(per_cycle):.1f}",
-                  f"{min(per_cycle):.1f}", f"{statistics.mean(goals):.1f}")
-    console.print(table)
+    table = Table(f"{args.home} vs {args.away}: {args.matches} matches of {cycles[0]} cycles",
+                  ["median s / match", "min s / match", "median µs / cycle", "min µs / cycle", "goals / match"],
+                  labels=0)
+    table.rows.append([f"{median:.3f}", f"{min(times):.3f}", f"{statistics.median(per_cycle):.1f}",
+                       f"{min(per_cycle):.1f}", f"{statistics.mean(goals):.1f}"])
+    table.print()
     if args.profile:
         profiler = cProfile.Profile()
         profiler.enable()

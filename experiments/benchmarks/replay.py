@@ -25,11 +25,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from rich.console import Console
-    from rich.table import Table
-
+    from experiments.commands.errors import fail
     from experiments.commands.play import match_config
-    from soccer_sim import TeamNotFoundError, run_match
+    from experiments.reporting import Table
+    from soccer_sim import ConfigError, TeamError, TeamNotFoundError, run_match
     from soccer_sim.replay import RerunRecorder
 
     config = match_config(args.cycles)
@@ -39,9 +38,8 @@ def run(args: argparse.Namespace) -> int:
             # Warm-up: loads the compiled kernels and rerun, once per process in real use too.
             run_match(args.home, args.away, seed=0, config=match_config(50),
                       recorders=[RerunRecorder(Path(scratch) / "warm-up.rrd")])
-        except TeamNotFoundError as exc:
-            print(f"error: {exc}")
-            return 2
+        except (TeamNotFoundError, TeamError, ConfigError) as exc:
+            return fail(str(exc))
         for seed in range(args.matches):
             path = Path(scratch) / f"{seed}.rrd"
             order = (False, True) if seed % 2 == 0 else (True, False)
@@ -52,12 +50,11 @@ def run(args: argparse.Namespace) -> int:
                 (recorded if record else plain).append(time.perf_counter() - start)
             sizes.append(path.stat().st_size / 1e6)
     overheads = [r / p - 1.0 for r, p in zip(recorded, plain)]
-    table = Table(title=f"Recording {args.home} vs {args.away}: {args.matches} matches")
-    for name in ("median s, plain", "median s, recorded", "median overhead", "largest overhead", "median file MB",
-                 "largest file MB"):
-        table.add_column(name, justify="right")
-    table.add_row(f"{statistics.median(plain):.3f}", f"{statistics.median(recorded):.3f}",
-                  f"{100 * statistics.median(overheads):.1f} %", f"{100 * max(overheads):.1f} %",
-                  f"{statistics.median(sizes):.2f}", f"{max(sizes):.2f}")
-    Console().print(table)
+    table = Table(f"Recording {args.home} vs {args.away}: {args.matches} matches",
+                  ["median s, plain", "median s, recorded", "median overhead", "largest overhead", "median file MB",
+                   "largest file MB"], labels=0)
+    table.rows.append([f"{statistics.median(plain):.3f}", f"{statistics.median(recorded):.3f}",
+                       f"{100 * statistics.median(overheads):.1f} %", f"{100 * max(overheads):.1f} %",
+                       f"{statistics.median(sizes):.2f}", f"{max(sizes):.2f}"])
+    table.print()
     return 0

@@ -19,17 +19,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from rich.console import Console
-    from rich.table import Table
-
     from agents.roles.timing import time_assigners
+    from experiments.reporting import Table
 
-    table = Table(title=f"role assigners: µs per call, {args.players} players, median over {args.situations} situations")
     columns = ("assign", "steer", "assign+steer")
-    table.add_column("assigner")
-    for column in columns:
-        table.add_column(column, justify="right")
+    table = Table(f"role assigners: µs per call, {args.players} players, median over {args.situations} situations",
+                  ["assigner", *columns])
     for name, times in time_assigners(args.players, args.situations, number=args.number).items():
-        table.add_row(name, *(f"{times[c]:.1f}" if c in times else "" for c in columns))
-    Console().print(table)
+        table.rows.append([name, *(f"{times[c]:.1f}" if c in times else "" for c in columns)])
+    table.print()
     return 0

@@ -18,15 +18,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from rich.console import Console
-    from rich.table import Table
-
     from agents.skills.timing import time_skills
+    from experiments.reporting import Table
 
-    table = Table(title=f"skills: µs per call, 11 players, median over {args.views} situations")
-    table.add_column("call")
-    table.add_column("µs", justify="right")
+    table = Table(f"skills: µs per call, 11 players, median over {args.views} situations", ["call", "µs"])
     for name, micro in time_skills(args.views, number=args.number).items():
-        table.add_row(name, f"{micro:.1f}")
-    Console().print(table)
+        table.rows.append([name, f"{micro:.1f}"])
+    table.print()
     return 0

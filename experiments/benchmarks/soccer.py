@@ -81,23 +81,18 @@ def measure(home: str, away: str, matches: int, seed: int = 0, cycles: int | Non
 
 
 def run(args: argparse.Namespace) -> int:
-    from rich.console import Console
-    from rich.table import Table
-
+    from experiments.commands.errors import fail
+    from experiments.reporting import Table
     from soccer_sim import ConfigError, TeamError, TeamNotFoundError
 
-    console = Console()
     try:
         figures = measure(args.home, args.away, args.matches, args.seed, args.cycles)
     except (TeamNotFoundError, TeamError, ConfigError, ValueError) as exc:
-        console.print(f"error: {exc}", markup=False)
-        return 2
-    table = Table(title=f"{args.home} vs {args.away}: {args.matches} matches (seeds {args.seed}..{args.seed + args.matches - 1})")
-    table.add_column("per match (both teams)")
-    table.add_column("mean", justify="right")
-    table.add_column("std. error", justify="right")
+        return fail(str(exc))
+    table = Table(f"{args.home} vs {args.away}: {args.matches} matches (seeds {args.seed}..{args.seed + args.matches - 1})",
+                  ["per match (both teams)", "mean", "std. error"])
     for name, values in figures.items():
         error = values.std(ddof=1) / np.sqrt(values.size) if values.size > 1 else float("nan")
-        table.add_row(name, f"{values.mean():.2f}", f"{error:.2f}")
-    console.print(table)
+        table.rows.append([name, f"{values.mean():.2f}", f"{error:.2f}"])
+    table.print()
     return 0

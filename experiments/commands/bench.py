@@ -3,6 +3,10 @@
 Each benchmark is a module in :mod:`experiments.benchmarks` exposing
 ``add_arguments(parser)`` and ``run(args) -> int``; it is imported only when
 chosen, so one benchmark's heavy imports never slow another.
+
+Every benchmark prints its tables through :class:`experiments.reporting.Table` (plain and
+tab-separated when stdout is not a terminal) and takes ``--json``; only ``lazy-assignment``
+writes files, and only with ``--out DIR``.
 """
 
 from __future__ import annotations

@@ -3,6 +3,11 @@
 Each study is a module in :mod:`experiments.studies` exposing ``add_arguments(parser)`` and
 ``run(args) -> int``; it is imported only when its parser is built, so adding a study means
 adding one line to :data:`STUDIES`.
+
+Every study prints its tables through :class:`experiments.reporting.Table` and takes
+``--json``. The studies that stand alone write CSV files and figures only with ``--out DIR``;
+those that run many matches (``case-study``, ``drop-in``) store them in a results file
+(``--out``) and write their tables beside it (``--tables``).
 """
 
 from __future__ import annotations

@@ -1,17 +1,22 @@
 """``soccer-sim formation ...``: check, draw and import formation files.
 
 * ``validate FILE``: read a formation or formation set and report what it
-  holds (samples, triangles, symmetry); exit 1 if it is malformed.
+  holds (samples, triangles, symmetry); with ``--require-symmetry`` exit 1 if
+  it is not mirror-symmetric.
 * ``show FILE --ball X Y --out picture.png``: draw the field, triangulation,
-  samples and the interpolated positions for one ball position.
+  samples and the interpolated positions for one ball position, and print the
+  positions.
 * ``import helios FILE OUT``: convert a helios-base / agent2d formation (their
   JSON layout or agent2d's text layouts) into this project's layout;
   ``import helios DIR OUT`` converts a whole ``formations-dt`` directory into
   one formation set and lists the files it could not place.
 
 FILE may also be the name of a built-in formation set (e.g. ``4-3-3``).
-Errors print one line naming the file and the problem: exit status 1 for a
-malformed formation, 2 for a file that cannot be read or written.
+``validate`` and ``show`` take ``--json`` to print what they report as one JSON
+object. Errors print one line on stderr naming the file and the problem (see
+:mod:`experiments.commands.errors`): exit status 2 for bad input (a malformed
+formation, a file that cannot be read or written, a bad option), 1 when
+``validate --require-symmetry`` finds asymmetries, 130 after Ctrl-C.
 """
 
 from __future__ import annotations
@@ -19,8 +24,9 @@ from __future__ import annotations
 import argparse
 import math
 import os
-import sys
 from pathlib import Path
+
+from experiments.commands.errors import BAD_INPUT, FAILED, fail as _fail, guarded
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -32,9 +38,10 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         "file", metavar="FILE", help="formation file (ours, helios-base JSON or agent2d text) or built-in name"
     )
     validate.add_argument(
-        "--require-symmetry", action="store_true", help="also fail if the samples are not mirror-symmetric"
+        "--require-symmetry", action="store_true", help="also fail (exit 1) if the samples are not mirror-symmetric"
     )
-    validate.set_defaults(func=run_validate)
+    validate.add_argument("--json", action="store_true", help="print the report as one JSON object")
+    validate.set_defaults(func=guarded(run_validate))
 
     show = actions.add_parser("show", help="draw a formation for one ball position")
     show.add_argument("file", metavar="FILE", help="formation file (any layout validate reads) or built-in name")
@@ -58,7 +65,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         help="output picture, e.g. picture.png (.png is added to a name without extension; "
         "an existing directory receives NAME-SITUATION.png)",
     )
-    show.set_defaults(func=run_show)
+    show.add_argument("--json", action="store_true", help="print the picture's path and the positions as one JSON object")
+    show.set_defaults(func=guarded(run_show))
 
     imports = actions.add_parser("import", help="convert another program's formation file")
     imports.add_argument("layout", choices=["helios"], help="layout of the input file")
@@ -74,10 +82,12 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         help="with a directory: place FILE (e.g. before-kick-off) in SITUATION (e.g. our_set_play); repeatable",
     )
     imports.add_argument("--name", default=None, help="with a directory: name of the set (default: the directory's)")
-    imports.set_defaults(func=run_import)
+    imports.set_defaults(func=guarded(run_import))
 
 
 def run_validate(args: argparse.Namespace) -> int:
+    import json
+
     from formations import Formation
     from formations.symmetry import asymmetries
 
@@ -85,31 +95,42 @@ def run_validate(args: argparse.Namespace) -> int:
     if isinstance(item, int):
         return item
     formations = (
-        [("", item)]
+        [(None, item)]
         if isinstance(item, Formation)
-        else [(f"[{situation.value}] ", formation) for situation, formation in item.own_formations().items()]
+        else [(situation.value, formation) for situation, formation in item.own_formations().items()]
     )
-    if not isinstance(item, Formation):
-        print(f"{args.file}: formation set {item.name!r} with {len(formations)} situations")
-    broken = 0
-    for label, formation in formations:
+    report = []
+    for situation, formation in formations:
         problems = asymmetries(formation, tolerance=1e-6)
-        symmetry = "mirror-symmetric" if not problems else f"{len(problems)} asymmetries"
-        print(
-            f"{args.file}: {label}{formation.name or 'formation'}: {len(formation.roles)} roles, "
-            f"{formation.n_samples} samples, {len(formation.triangles)} triangles, {symmetry}"
-        )
-        for problem in problems[:5]:
-            print(f"    {problem.describe()}")
-        if problems and args.require_symmetry:
-            broken += 1
+        report.append({"situation": situation, "name": formation.name or "formation", "roles": len(formation.roles),
+                       "samples": formation.n_samples, "triangles": len(formation.triangles),
+                       "asymmetries": [problem.describe() for problem in problems]})
+    broken = sum(bool(entry["asymmetries"]) for entry in report) if args.require_symmetry else 0
+    if args.json:
+        print(json.dumps({"file": args.file, "set": None if isinstance(item, Formation) else item.name,
+                          "formations": report, "ok": not broken}, indent=2))
+    else:
+        if not isinstance(item, Formation):
+            print(f"{args.file}: formation set {item.name!r} with {len(formations)} situations")
+        for entry in report:
+            problems = entry["asymmetries"]
+            label = f"[{entry['situation']}] " if entry["situation"] else ""
+            symmetry = "mirror-symmetric" if not problems else f"{len(problems)} asymmetries"
+            print(f"{args.file}: {label}{entry['name']}: {entry['roles']} roles, {entry['samples']} samples, "
+                  f"{entry['triangles']} triangles, {symmetry}")
+            for problem in problems[:5]:
+                print(f"    {problem}")
     if broken:
-        return _fail(f"{args.file}: {broken} formation(s) are not mirror-symmetric", 1)
-    print(f"{args.file}: OK")
+        return _fail(f"{args.file}: {broken} formation(s) are not mirror-symmetric", FAILED)
+    if not args.json:
+        print(f"{args.file}: OK")
     return 0
 
 
 def run_show(args: argparse.Namespace) -> int:
+    import json
+
+    from experiments.reporting import Table
     from formations import Formation, FormationError
     from formations.validation import check_ball_position
     from formations.plotting import save_picture
@@ -123,23 +144,32 @@ def run_show(args: argparse.Namespace) -> int:
         try:
             formation = item.formation(args.situation)
         except ValueError as error:
-            return _fail(f"{args.file}: {error}", 2)
+            return _fail(f"{args.file}: {error}")
     ball = (float(args.ball[0]), float(args.ball[1]))
     if not all(math.isfinite(v) for v in ball):
-        return _fail(f"--ball must be two finite numbers (metres), got {ball[0]:g} {ball[1]:g}", 2)
+        return _fail(f"--ball must be two finite numbers (metres), got {ball[0]:g} {ball[1]:g}")
     try:
         check_ball_position(ball, "--ball")
     except FormationError as error:
-        return _fail(str(error), 2)
+        return _fail(str(error))
     label = (formation.name if isinstance(item, Formation) else item.name) or Path(args.file).stem
     out = _picture_path(args.out, label, args.situation, isinstance(item, Formation))
     try:
         positions = save_picture(formation, ball, out)
     except (OSError, ValueError) as error:
-        return _fail(_os_message(str(out), error) if isinstance(error, OSError) else f"{out}: {error}", 2)
+        return _fail(_os_message(str(out), error) if isinstance(error, OSError) else f"{out}: {error}")
+    rows = [(role.number, role.name, float(x), float(y)) for role, (x, y) in zip(formation.roles, positions)]
+    if args.json:
+        print(json.dumps({"file": args.file, "situation": None if isinstance(item, Formation) else args.situation,
+                          "ball": list(ball), "picture": str(out),
+                          "positions": [{"number": n, "role": name, "x": x, "y": y} for n, name, x, y in rows]},
+                         indent=2))
+        return 0
     print(f"wrote {out}")
-    for role, (x, y) in zip(formation.roles, positions):
-        print(f"  {role.number:>2} {role.name:<26} ({x:7.2f}, {y:7.2f})")
+    table = Table(f"positions for the ball at ({ball[0]:g}, {ball[1]:g})", ["number", "role", "x (m)", "y (m)"],
+                  labels=2)
+    table.rows = [[str(n), name, f"{x:.2f}", f"{y:.2f}"] for n, name, x, y in rows]
+    table.print()
     return 0
 
 
@@ -150,17 +180,17 @@ def run_import(args: argparse.Namespace) -> int:
     if os.path.isdir(args.file):
         return _import_directory(args)
     if args.map or args.name is not None:
-        return _fail("--map and --name apply to a directory import only", 2)
+        return _fail("--map and --name apply to a directory import only")
     try:
         formation = load_helios(args.file)
     except FormationError as error:
-        return _fail(str(error), 1)
+        return _fail(str(error))
     except OSError as error:
-        return _fail(_os_message(args.file, error), 2)
+        return _fail(_os_message(args.file, error))
     try:
         save(formation, args.out)
     except OSError as error:
-        return _fail(_os_message(args.out, error), 2)
+        return _fail(_os_message(args.out, error))
     print(f"wrote {args.out}: {len(formation.roles)} roles, {formation.n_samples} samples")
     return 0
 
@@ -175,21 +205,21 @@ def _import_directory(args: argparse.Namespace) -> int:
     for entry in args.map:
         key, sep, value = entry.partition("=")
         if not sep or not key or not value:
-            return _fail(f"--map takes FILE=SITUATION (e.g. before-kick-off=our_set_play), got {entry!r}", 2)
+            return _fail(f"--map takes FILE=SITUATION (e.g. before-kick-off=our_set_play), got {entry!r}")
         mapping[key] = value
     try:
         result = import_helios_directory(args.file, name=args.name, mapping=mapping)
     except FormationError as error:
-        return _fail(str(error), 1)
+        return _fail(str(error))
     except OSError as error:
-        return _fail(_os_message(args.file, error), 2)
+        return _fail(_os_message(args.file, error))
     out = Path(args.out)
     if out.is_dir():
         out = out / f"{result.formation_set.name}.json"
     try:
         save(result.formation_set, out)
     except OSError as error:
-        return _fail(_os_message(str(out), error), 2)
+        return _fail(_os_message(str(out), error))
     print(f"wrote {out}: formation set {result.formation_set.name!r}")
     for situation in Situation:
         if situation not in result.placed:
@@ -222,8 +252,8 @@ def _picture_path(out: str, name: str, situation: str, single: bool) -> Path:
 
 def _read(name: str):
     """The formation or set in FILE (or the built-in set of that name if no
-    such file exists), or the exit status after printing why it cannot be read:
-    1 for a malformed formation, 2 for an unreadable file."""
+    such file exists), or the exit status (2: bad input) after printing why it
+    cannot be read: a malformed formation or an unreadable file."""
     from formations import FormationError, builtin_names, load_builtin, read_any
 
     try:
@@ -231,15 +261,10 @@ def _read(name: str):
             return load_builtin(name)
         return read_any(name)
     except FormationError as error:
-        return _fail(str(error), 1)
+        return _fail(str(error), BAD_INPUT)
     except OSError as error:
-        return _fail(_os_message(name, error), 2)
+        return _fail(_os_message(name, error), BAD_INPUT)
 
 
 def _os_message(path: str, error: OSError) -> str:
     return f"{path}: {error.strerror or error}"
-
-
-def _fail(message: str, status: int) -> int:
-    print(f"error: {message}", file=sys.stderr)
-    return status

@@ -170,31 +170,44 @@ class _Runner:
 
 
 def _table(title: str, header: list[str], rows: list[list[str]]) -> None:
-    from rich.console import Console
-    from rich.table import Table
+    from experiments.reporting import Table
 
-    table = Table(title=title)
-    for i, name in enumerate(header):
-        table.add_column(name, justify="left" if i == 0 else "right")
-    for row in rows:
-        table.add_row(*row)
-    Console().print(table)
+    Table(title, header, rows).print()
+
+
+def _teams(text: str, option: str, minimum: int) -> list[str]:
+    """The comma-separated teams of ``option``, each registered or an importable path; a
+    RunInputError naming the option otherwise."""
+    from experiments.runner.options import team_list
+
+    return team_list(text, option, minimum=minimum)
 
 
 def run(args: argparse.Namespace) -> int:
-    from soccer_sim import TeamNotFoundError, available_teams
+    from experiments.commands.errors import FAILED, fail
+    from experiments.runner.options import RunInputError
+    from soccer_sim import ConfigError, TeamError
 
-    league = [t for t in args.league.split(",") if t]
-    claims = [t for t in args.assigners.split(",") if t]
-    known = available_teams()
-    for name in [*league, *claims, args.opponent, "mmd+msd2", "random", "statues"]:
-        if name not in known and ":" not in name:
-            print(f"error: {TeamNotFoundError.__name__}: unknown team {name!r}; registered: {', '.join(known)}")
-            return 2
+    parts = ("league", "chaser", "baselines", "claims") if args.part == "all" else (args.part,)
+    try:
+        if args.seed < 0:
+            raise RunInputError(f"--seed must be a non-negative integer, got {args.seed}")
+        league = _teams(args.league, "--league", 2 if "league" in parts else 0)
+        claims = _teams(args.assigners, "--assigners", 1 if "claims" in parts else 0)
+        opponent = _teams(args.opponent, "--opponent", 1)
+        if len(opponent) != 1:
+            raise RunInputError(f"--opponent: give one team, got {args.opponent!r}")
+        args.opponent = opponent[0]
+        if "chaser" in parts and not (league or claims):
+            raise RunInputError("the chaser part needs a team in --league or --assigners")
+    except RunInputError as exc:
+        return fail(str(exc))
     start = time.perf_counter()
     runner = _Runner(args.workers)
     try:
         _study(args, league, claims, runner)
+    except (TeamError, ConfigError) as exc:  # a team that broke during a match
+        return fail(str(exc), FAILED)
     finally:
         runner.close()
     print(f"wall time {time.perf_counter() - start:.0f} s")

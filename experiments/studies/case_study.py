@@ -57,10 +57,13 @@ def run(args: argparse.Namespace) -> int:
 def _params(args: argparse.Namespace) -> dict:
     from experiments.runner.options import RunInputError, team_list
 
+    # Each list on its own first, so a bad --opponents is named as such before --baseline is
+    # checked against --teams.
     teams = team_list(args.teams, "--teams")
+    opponents = team_list(args.opponents, "--opponents")
     if args.baseline not in teams:
         raise RunInputError(f"--baseline {args.baseline!r} must be one of --teams ({', '.join(teams)})")
-    return {"teams": teams, "opponents": team_list(args.opponents, "--opponents"), "baseline": args.baseline,
+    return {"teams": teams, "opponents": opponents, "baseline": args.baseline,
             "games": args.games, "seed": args.seed, "cycles": args.cycles}
 
 

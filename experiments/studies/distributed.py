@@ -248,21 +248,18 @@ SERIES_TITLES = {
 }
 
 
-def _print_tables(summary: list[dict], fits: dict, console) -> None:
-    from rich.table import Table
+def _print_tables(summary: list[dict], fits: dict) -> None:
+    from experiments.reporting import Table
 
     for series, title in SERIES_TITLES.items():
         rows = [row for row in summary if row["series"] == series]
         if not rows:
             continue
-        table = Table(title=title)
         normaliser = {"grid-dense": "T/√|E|", "sweep": None}.get(series, "T/√(n|E|)")
         columns = ["alg", "n", "|E|/nr²", "runs", "T", "sd", normaliser, "dist", "max", "s/run"]
         if series == "grid-dense":
             columns.insert(4, "empty")
-        for column in columns:
-            if column is not None:
-                table.add_column(column, justify="left" if column == "alg" else "right")
+        table = Table(title, [column for column in columns if column is not None])
         for row in rows:
             cells = [row["algorithm"], str(row["n"]), f"{row['area_per_agent_r2']:.2g}", str(row["trials"]),
                      f"{row['time_mean']:.1f}", f"{row['time_sd']:.1f}", f"{row['time_mean'] / row['scale']:.3f}",
@@ -271,12 +268,12 @@ def _print_tables(summary: list[dict], fits: dict, console) -> None:
                 del cells[6]
             if series == "grid-dense":
                 cells.insert(4, f"{row['empty_cell_share']:.0%}")
-            table.add_row(*cells)
-        console.print(table)
+            table.rows.append(cells)
+        table.print()
         if series in fits:
             slope, factor = fits[series]
             quantity = "sqrt(|E|)" if series == "grid-dense" else "sqrt(n |E|)"
-            console.print(f"fit: T = {factor:.3g} * {quantity}^{slope:.3f}", markup=False)
+            print(f"fit: T = {factor:.3g} * {quantity}^{slope:.3f}")
 
 
 def _write_csv(path: Path, rows: list[dict]) -> None:
@@ -329,7 +326,8 @@ def _plot_scaling(summary: list[dict], fits: dict, path: Path, r_comm: float) ->
         ax.set_xlabel(f"{quantity}  (r_comm = {r_comm:g}, v_max = 1)")
         ax.set_ylabel("completion time (mean ± sd)")
         ax.set_title(title)
-        ax.legend(fontsize=8)
+        if ax.get_legend_handles_labels()[0]:  # a panel whose series were all skipped has none
+            ax.legend(fontsize=8)
         ax.grid(True, which="both", alpha=0.3)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
@@ -370,24 +368,23 @@ def _plot_sweep(summary: list[dict], path: Path) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from rich.console import Console
+    from experiments.commands.errors import fail
 
-    console = Console()
-    if not console.is_terminal:  # piped or redirected: rich would squeeze the tables into 80 columns
-        console = Console(width=max(console.width, 120))
     try:
         plan = _check_args(args)
         if args.out is not None:
-            args.out.mkdir(parents=True, exist_ok=True)
-    except (StudyArgumentError, OSError) as exc:
-        Console(stderr=True).print(f"error: {exc}", style="red", markup=False)
-        return 2
+            try:
+                args.out.mkdir(parents=True, exist_ok=True)
+            except OSError as exc:
+                raise StudyArgumentError(f"--out {args.out}: cannot make the directory ({exc.strerror or exc})") from None
+    except StudyArgumentError as exc:
+        return fail(str(exc))
     start = time.perf_counter()
     runs = _collect(plan, args)
     summary = summarise(runs, args.r_comm)
     fits = _fits(summary)
-    _print_tables(summary, fits, console)
-    console.print(f"{len(runs)} runs in {time.perf_counter() - start:.1f} s", markup=False)
+    _print_tables(summary, fits)
+    print(f"{len(runs)} runs in {time.perf_counter() - start:.1f} s")
     if args.out is not None and runs:
         _write_csv(args.out / "distributed_trials.csv", _trial_rows(runs))
         _write_csv(args.out / "distributed_summary.csv", summary)
@@ -398,5 +395,7 @@ def run(args: argparse.Namespace) -> int:
         if any(row["series"] == "sweep" for row in summary):
             _plot_sweep(summary, args.out / "distributed_environment.png")
             written.append("distributed_environment.png")
-        console.print(f"wrote {', '.join(str(args.out / name) for name in written)}", markup=False)
+        print(f"wrote {', '.join(str(args.out / name) for name in written)}")
+    elif args.out is None:
+        print("tables only; --out DIR also writes the runs and the summary (CSV) and the figures")
     return 0

@@ -143,23 +143,22 @@ def summarise(trials: list[Trial]) -> list[dict]:
     return rows
 
 
-def _print_tables(summary: list[dict], degree: int | None, args, console) -> None:
-    from rich.table import Table
+def _print_tables(summary: list[dict], degree: int | None, args) -> None:
+    from experiments.reporting import Table
 
-    table = Table(title=f"new pair corner to corner, n = {args.n}, degree {degree or 'all'}, {args.trials} deployments "
-                        "(mean ± sd)")
-    for column in ("λ", "moved", "finish time", "mean dist", "total dist", "vs Dijkstra", "stage ms"):
-        table.add_column(column, justify="right")
+    table = Table(f"new pair corner to corner, n = {args.n}, degree {degree or 'all'}, {args.trials} deployments "
+                  "(mean ± sd)", ["λ", "moved", "finish time", "mean dist", "total dist", "vs Dijkstra", "stage ms"],
+                  labels=0)
     for row in summary:
-        table.add_row(f"{row['lam']:.2g}", f"{row['moved']:.1f}±{row['moved_sd']:.1f}",
-                      f"{row['finishing_time']:.2f}±{row['finishing_time_sd']:.2f}",
-                      f"{row['mean_distance']:.2f}±{row['mean_distance_sd']:.2f}",
-                      f"{row['total_distance']:.1f}", f"{row['excess_over_dijkstra_mean']:+.2%}",
-                      f"{row['stage_ms']:.1f}")
-    console.print(table)
+        table.rows.append([f"{row['lam']:.2g}", f"{row['moved']:.1f}±{row['moved_sd']:.1f}",
+                           f"{row['finishing_time']:.2f}±{row['finishing_time_sd']:.2f}",
+                           f"{row['mean_distance']:.2f}±{row['mean_distance_sd']:.2f}",
+                           f"{row['total_distance']:.1f}", f"{row['excess_over_dijkstra_mean']:+.2%}",
+                           f"{row['stage_ms']:.1f}"])
+    table.print()
     first = summary[0]
-    console.print(f"λ = {first['lam']:g} route vs Dijkstra's shortest path: mean {first['excess_over_dijkstra_mean']:+.4%}, "
-                  f"worst {first['excess_over_dijkstra_max']:+.4%} longer", markup=False)
+    print(f"λ = {first['lam']:g} route vs Dijkstra's shortest path: mean {first['excess_over_dijkstra_mean']:+.4%}, "
+          f"worst {first['excess_over_dijkstra_max']:+.4%} longer")
 
 
 def _write_csv(path: Path, rows: list[dict]) -> None:
@@ -205,37 +204,36 @@ def _plot(summary: list[dict], degree: int | None, args, path: Path) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from rich.console import Console
+    from experiments.commands.errors import FAILED, fail
 
-    console = Console()
     try:
         lambdas, degree = _check_args(args)
         if args.out is not None:
-            args.out.mkdir(parents=True, exist_ok=True)
-    except (StudyArgumentError, OSError) as exc:
-        Console(stderr=True).print(f"error: {exc}", style="red", markup=False)
-        return 2
+            try:
+                args.out.mkdir(parents=True, exist_ok=True)
+            except OSError as exc:
+                raise StudyArgumentError(f"--out {args.out}: cannot make the directory ({exc.strerror or exc})") from None
+    except StudyArgumentError as exc:
+        return fail(str(exc))
     start = time.perf_counter()
     try:
         trials = collect(lambdas, degree, args)
     except AssignmentError as exc:
-        Console(stderr=True).print(f"error: {exc}", style="red", markup=False)
-        return 1
-    summary = summarise(trials)
-    _print_tables(summary, degree, args, console)
+        return fail(str(exc), FAILED)
     if not trials:
-        Console(stderr=True).print(f"error: no deployment's degree-{degree} graph joins the corners", style="red",
-                                   markup=False)
-        return 1
+        return fail(f"no deployment's degree-{degree} graph joins the corners", FAILED)
+    summary = summarise(trials)
+    _print_tables(summary, degree, args)
     skipped = args.trials - len({t.trial for t in trials})
     if skipped:
-        console.print(f"{skipped} of {args.trials} deployments skipped: their graph does not join the corners",
-                      markup=False)
-    console.print(f"{len(trials)} routes in {time.perf_counter() - start:.1f} s", markup=False)
+        print(f"{skipped} of {args.trials} deployments skipped: their graph does not join the corners")
+    print(f"{len(trials)} routes in {time.perf_counter() - start:.1f} s")
     if args.out is not None:
         _write_csv(args.out / "incremental_trials.csv", [asdict(t) for t in trials])
         _write_csv(args.out / "incremental_summary.csv", summary)
         _plot(summary, degree, args, args.out / "incremental.png")
         names = ("incremental_trials.csv", "incremental_summary.csv", "incremental.png")
-        console.print(f"wrote {', '.join(str(args.out / name) for name in names)}", markup=False)
+        print(f"wrote {', '.join(str(args.out / name) for name in names)}")
+    else:
+        print("tables only; --out DIR also writes the routes and the summary (CSV) and the figure")
     return 0

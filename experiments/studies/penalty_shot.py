@@ -21,9 +21,10 @@ Three conditions, the same team code (``--team``, potential-field bidding by def
 Each condition's times are compared marker by marker with the Wilcoxon signed-rank test
 (``scipy.stats.wilcoxon``, two-sided). Then the same again with a goalkeeper (``--keeper``'s
 team, one player) defending the goal. Prints the tables (mean, standard deviation and median
-time per condition, timeouts, p-values) and writes ``penalty_shot_trials.csv`` (one row per
-trial), ``penalty_shot_summary.csv``, ``penalty_shot_tests.csv`` and ``penalty_shot.png`` (box
-plots) to ``--out``.
+time per condition, timeouts, p-values); with ``--out DIR`` it also writes
+``penalty_shot_trials.csv`` (one row per trial), ``penalty_shot_summary.csv``,
+``penalty_shot_tests.csv`` and ``penalty_shot.png`` (box plots) there. Without ``--out``
+nothing is written.
 """
 
 from __future__ import annotations
@@ -39,6 +40,7 @@ from pathlib import Path
 import numpy as np
 
 from experiments.commands import doc_summary
+from experiments.reporting import write_csv
 
 CONDITIONS = ("one", "uncoordinated", "coordinated")
 SETTINGS = ("empty goal", "goalkeeper")
@@ -85,8 +87,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--seed", type=int, default=0, help="seed of the markers and the matches (default: %(default)s)")
     parser.add_argument("--workers", type=positive_int, default=None,
                         help="processes playing the six chains of trials (default: every core, at most 6)")
-    parser.add_argument("--out", type=Path, default=Path("penalty-shot"),
-                        help="directory for the CSV files and the box plot (default: %(default)s)")
+    parser.add_argument("--out", type=Path, default=None, metavar="DIR",
+                        help="also write the CSV files and the box plot into DIR (created if missing; "
+                             "default: print the tables only)")
 
 
 # ---------------------------------------------------------------------------------- the design
@@ -349,13 +352,10 @@ def _plot(trials: Sequence[Trial], args: argparse.Namespace, path: Path) -> None
 
 
 def run(args: argparse.Namespace) -> int:
-    from rich.console import Console
-
-    from experiments.reporting import write_csv
+    from experiments.commands.errors import FAILED, fail
     from soccer_sim import ScenarioError, TeamError, TeamNotFoundError, resolve_team
     from soccer_sim.scenarios import MAX_PLAYERS
 
-    console, errors = Console(), Console(stderr=True)
     try:
         if args.seed < 0:
             raise StudyArgumentError(f"--seed must be a non-negative integer, got {args.seed}")
@@ -366,30 +366,32 @@ def run(args: argparse.Namespace) -> int:
                 resolve_team(name)
             except TeamNotFoundError as exc:
                 raise StudyArgumentError(f"{option}: {exc}") from None
-        try:
-            args.out.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise StudyArgumentError(f"--out {args.out}: cannot make the directory "
-                                     f"({exc.strerror or exc})") from None
+        if args.out is not None:
+            try:
+                args.out.mkdir(parents=True, exist_ok=True)
+            except OSError as exc:
+                raise StudyArgumentError(f"--out {args.out}: cannot make the directory "
+                                         f"({exc.strerror or exc})") from None
     except StudyArgumentError as exc:
-        errors.print(f"error: {exc}", style="red", markup=False)
-        return 2
+        return fail(str(exc))
     start = time.perf_counter()
     try:
         trials = collect(args)
     except (TeamError, ScenarioError, ValueError) as exc:
-        errors.print(f"error: {exc}", style="red", markup=False)
-        return 1
+        return fail(str(exc), FAILED)
     elapsed = time.perf_counter() - start
     summary, tests = summarise(trials)
     for table in _tables(summary, tests, args):
-        table.print(console)
-    console.print(f"{len(trials)} trials in {elapsed:.1f} s", markup=False)
+        table.print()
+    print(f"{len(trials)} trials in {elapsed:.1f} s")
+    if args.out is None:
+        print("tables only; --out DIR also writes the trials, the summary, the tests (CSV) and the box plot")
+        return 0
     rows = [asdict(t) for t in trials]
     write_csv(args.out / "penalty_shot_trials.csv", list(rows[0]), [list(r.values()) for r in rows])
     write_csv(args.out / "penalty_shot_summary.csv", list(summary[0]), [list(r.values()) for r in summary])
     write_csv(args.out / "penalty_shot_tests.csv", list(tests[0]), [list(r.values()) for r in tests])
     _plot(trials, args, args.out / "penalty_shot.png")
     names = ("penalty_shot_trials.csv", "penalty_shot_summary.csv", "penalty_shot_tests.csv", "penalty_shot.png")
-    console.print(f"wrote {', '.join(str(args.out / n) for n in names)}", markup=False)
+    print(f"wrote {', '.join(str(args.out / n) for n in names)}")
     return 0

@@ -43,4 +43,4 @@ def test_the_study_runs_end_to_end(capsys) -> None:
 
 def test_an_unknown_team_is_refused(capsys) -> None:
     assert main(["experiment", "assigners", "--part", "claims", "--assigners", "nobody", "--workers", "1"]) == 2
-    assert "unknown team 'nobody'" in capsys.readouterr().out
+    assert "unknown team 'nobody'" in capsys.readouterr().err

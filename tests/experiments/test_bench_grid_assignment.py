@@ -49,7 +49,7 @@ def test_same_seed_same_instances(tmp_path) -> None:
 ])
 def test_bad_options_are_named(bad, message, capsys) -> None:
     assert main(["bench", "lazy-assignment", *bad]) == 2
-    assert message in capsys.readouterr().out
+    assert message in capsys.readouterr().err
 
 
 def test_unequal_totals_stop_the_benchmark(monkeypatch) -> None:

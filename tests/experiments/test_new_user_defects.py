@@ -45,7 +45,7 @@ def test_long_team_names_are_printed_whole(capsys) -> None:
     name = "examples.scripted_team:ScriptedTeam"
     table = Table("league", ["#", "team", "games", "mean GD (SE)"], labels=2)
     table.rows.append(["1", name, "4", "+1.00 (0.50)"])
-    table.print(Console(width=40, file=None))
+    table.print(Console(width=40, file=None, force_terminal=True))
     printed = capsys.readouterr().out
     cells = "".join(line.split("│")[2].strip() for line in printed.splitlines() if line.count("│") > 2)
     assert name in cells

@@ -29,7 +29,7 @@ def test_bench_match_reports_times(capsys) -> None:
 
 def test_bench_match_rejects_bad_arguments_with_a_message(capsys) -> None:
     assert main(["bench", "match", "--home", "nobody", "--matches", "1", "--cycles", "10"]) == 2
-    assert "unknown team 'nobody'" in capsys.readouterr().out
+    assert "unknown team 'nobody'" in capsys.readouterr().err
     for bad in (["--cycles", "0"], ["--matches", "-1"]):
         with pytest.raises(SystemExit) as usage_error:
             main(["bench", "match", *bad])
@@ -54,7 +54,7 @@ def test_bench_soccer_reports_the_figures_of_the_play(capsys) -> None:
     for figure in ("goals", "shots", "passes", "offside calls", "teammate contacts", "players within 2 m"):
         assert figure in out
     assert main(["bench", "soccer", "--home", "no-such-team", "--matches", "1", "--cycles", "10"]) == 2
-    assert "unknown team" in capsys.readouterr().out
+    assert "unknown team" in capsys.readouterr().err
 
 
 def test_near_ball_recorder_counts_players_within_two_metres() -> None:

@@ -216,13 +216,13 @@ def test_cli_imports_a_file_and_a_directory(tmp_path, capsys):
 
 def test_cli_reports_broken_files_and_bad_mapping(tmp_path, capsys):
     bad = _write(tmp_path, "bad.conf", dt_v2_text().replace("\n11 CenterForward 0\n", "\n12 CenterForward 0\n"))
-    assert cli(["formation", "import", "helios", str(bad), str(tmp_path / "o.json")]) == 1
+    assert cli(["formation", "import", "helios", str(bad), str(tmp_path / "o.json")]) == 2
     assert re.search(r"bad.conf: line 14: role number 12 is out of range", capsys.readouterr().err)
     assert cli(["formation", "import", "helios", str(_directory(tmp_path)), str(tmp_path / "o.json"), "--map", "x"]) == 2
     assert "--map takes FILE=SITUATION" in capsys.readouterr().err
-    assert cli(["formation", "import", "helios", str(_directory(tmp_path)), str(tmp_path / "o.json"), "--map", "normal-formation=corner"]) == 1
+    assert cli(["formation", "import", "helios", str(_directory(tmp_path)), str(tmp_path / "o.json"), "--map", "normal-formation=corner"]) == 2
     assert "unknown situation 'corner'" in capsys.readouterr().err
-    assert cli(["formation", "validate", str(bad)]) == 1
+    assert cli(["formation", "validate", str(bad)]) == 2
 
 
 def test_show_writes_the_file_it_names(tmp_path, capsys):

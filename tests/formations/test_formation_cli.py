@@ -35,22 +35,22 @@ def test_validate_a_builtin_set_by_name(capsys):
     assert out.count("mirror-symmetric") == 5
 
 
-def test_validate_bad_file_prints_one_line_and_exits_1(write_json, capsys):
+def test_validate_bad_file_prints_one_line_and_exits_2(write_json, capsys):
     document = small_document()
     document["samples"][2]["positions"]["2"] = ["x", 0]
     path = write_json("bad.json", document)
-    assert run("formation", "validate", str(path)) == 1
+    assert run("formation", "validate", str(path)) == 2
     err = capsys.readouterr().err.strip()
     assert err.count("\n") == 0
     assert err.startswith("error: ") and str(path) in err and "sample 2, role 2" in err
 
 
 @pytest.mark.parametrize("label, mutate, message", BAD_DOCUMENTS + HELIOS_BAD, ids=[c[0] for c in BAD_DOCUMENTS + HELIOS_BAD])
-def test_every_bad_input_is_one_line_and_exit_1(write_json, capsys, label, mutate, message):
+def test_every_bad_input_is_one_line_and_exit_2(write_json, capsys, label, mutate, message):
     document = helios_document() if (label, mutate, message) in HELIOS_BAD else small_document()
     mutate(document)
     path = write_json("bad.json", document)
-    assert run("formation", "validate", str(path)) == 1
+    assert run("formation", "validate", str(path)) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and err.startswith(f"error: {path}: ")
     assert re.search(message, err), err
@@ -100,7 +100,7 @@ def test_import_helios(tmp_path, write_json, capsys):
     assert json.loads(out.read_text())["format"] == "soccer-sim-formation"
     assert formations.load(out).n_samples == 6
     not_helios = write_json("ours.json", small_document())
-    assert run("formation", "import", "helios", str(not_helios), str(tmp_path / "x.json")) == 1
+    assert run("formation", "import", "helios", str(not_helios), str(tmp_path / "x.json")) == 2
     assert "not a helios-base formation" in capsys.readouterr().err
 
 
