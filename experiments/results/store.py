@@ -15,12 +15,13 @@ close, so the ``.sqlite`` file alone holds every stored row even after ``kill -9
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import shutil
 import sqlite3
 import tempfile
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 
 from experiments.results.record import FORFEIT_NONE, MatchRecord
@@ -142,20 +143,32 @@ class ResultStore:
 
     def keys(self) -> set[tuple[str, str, int]]:
         """(home, away, seed) of every stored match."""
-        return {tuple(row) for row in self._db.execute("SELECT home, away, seed FROM matches")}
+        with self._reading():
+            return {tuple(row) for row in self._db.execute("SELECT home, away, seed FROM matches")}
 
     def records(self, keys: Iterable[tuple[str, str, int]] | None = None) -> list[MatchRecord]:
         """Stored matches (all, or those of ``keys``), sorted by key: the same list whatever
         order the matches finished in."""
-        cursor = self._db.execute(f"SELECT {', '.join(COLUMNS)} FROM matches ORDER BY home, away, seed")
-        records = [MatchRecord.from_row(dict(zip(COLUMNS, row))) for row in cursor]
+        with self._reading():
+            cursor = self._db.execute(f"SELECT {', '.join(COLUMNS)} FROM matches ORDER BY home, away, seed")
+            records = [MatchRecord.from_row(dict(zip(COLUMNS, row))) for row in cursor]
         if keys is not None:
             wanted = set(keys)
             records = [r for r in records if r.key in wanted]
         return records
 
     def count(self) -> int:
-        return int(self._db.execute("SELECT COUNT(*) FROM matches").fetchone()[0])
+        with self._reading():
+            return int(self._db.execute("SELECT COUNT(*) FROM matches").fetchone()[0])
+
+    @contextlib.contextmanager
+    def _reading(self) -> Iterator[None]:
+        """Reads of stored rows: a damaged file (SQLite finds a malformed page only when it
+        reads it) becomes a ResultsError naming the file."""
+        try:
+            yield
+        except sqlite3.DatabaseError as exc:
+            raise ResultsError(f"{self.path}: damaged results file, its rows cannot be read ({exc})") from None
 
     # -- writing ----------------------------------------------------------------------------
     def add(self, record: MatchRecord) -> None:
