@@ -244,6 +244,6 @@ def test_cli_imports_the_static_file_librcsc_writes(tmp_path, capsys):
     assert re.search(r"wrote .*kickoff.json: 11 roles, 4 samples", capsys.readouterr().out)
     _assert_holds_lineup(formations.load(out))
     bad = _write(tmp_path, "bad.conf", static_v0_text().replace("Begin Samples 2 0", "Begin Samples 2 1"))
-    assert cli(["formation", "import", "helios", str(bad), str(tmp_path / "o.json")]) == 1
+    assert cli(["formation", "import", "helios", str(bad), str(tmp_path / "o.json")]) == 2  # bad input
     assert re.search(r"bad.conf: line 13: a static formation holds no samples", capsys.readouterr().err)
     assert not (tmp_path / "o.json").exists()

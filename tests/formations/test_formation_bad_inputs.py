@@ -36,7 +36,7 @@ def twelve_role_document() -> dict:
 
 def test_validate_refuses_twelve_roles_naming_the_file_and_count(write_json, capsys) -> None:
     path = write_json("twelve.json", twelve_role_document())
-    assert run("formation", "validate", str(path)) == 1
+    assert run("formation", "validate", str(path)) == 2  # bad input
     captured = capsys.readouterr()
     assert captured.err == f"error: {path}: 12 roles; a formation places one team, at most 11 players\n"
     assert "OK" not in captured.out
