@@ -140,8 +140,11 @@ def json_output(run: Callable[[], int]) -> int:
 
 
 def write_csv(path: Path, header: Sequence[str], rows: Sequence[Sequence[object]]) -> Path:
-    """One CSV file with a header row (numbers as Python prints them)."""
-    with open(path, "w", newline="") as handle:
+    """One CSV file with a header row (numbers as Python prints them), written whole or not at
+    all (:func:`~experiments.results.files.atomic_output`: a full disk leaves no partial file)."""
+    from experiments.results.files import atomic_output
+
+    with atomic_output(path) as temporary, open(temporary, "w", newline="") as handle:
         writer = csv.writer(handle)
         writer.writerow(header)
         writer.writerows(rows)
@@ -149,5 +152,9 @@ def write_csv(path: Path, header: Sequence[str], rows: Sequence[Sequence[object]
 
 
 def write_markdown(path: Path, tables: Sequence[Table], preface: str = "") -> Path:
-    path.write_text((preface + "\n\n" if preface else "") + "\n".join(t.markdown() for t in tables))
+    """The tables as Markdown, written whole or not at all (as :func:`write_csv`)."""
+    from experiments.results.files import atomic_output
+
+    with atomic_output(path) as temporary:
+        temporary.write_text((preface + "\n\n" if preface else "") + "\n".join(t.markdown() for t in tables))
     return path

@@ -50,6 +50,15 @@ class CommandParser(argparse.ArgumentParser):
         sys.stderr.write(f"error: {one_line(message)} (see: {self.prog} --help)\n")
         sys.exit(BAD_INPUT)
 
+    def parse_known_args(self, args=None, namespace=None):
+        parsed, extras = super().parse_known_args(args, namespace)
+        # Python 3.11's argparse can hand a single-valued positional an empty list when "--" is
+        # repeated (``formation import helios -- -- --map``): refuse it as a missing value.
+        for action in self._actions:
+            if not action.option_strings and action.nargs is None and isinstance(getattr(parsed, action.dest, None), list):
+                self.error(f"argument {action.metavar or action.dest}: expected one value")
+        return parsed, extras
+
 
 def call(func: Callable[[argparse.Namespace], int | None], args: argparse.Namespace) -> int:
     """Run ``func(args)`` and return its exit status, ending every way out by the convention:

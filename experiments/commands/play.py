@@ -139,9 +139,9 @@ def run(args: argparse.Namespace) -> int:
 
 def _fail(message: str, status: int) -> int:
     """``error: message`` as one line on stderr (stdout carries only the report); the status."""
-    from experiments.runner.options import fail
+    from experiments.commands.errors import fail
 
-    return fail(" ".join(message.split()), status)
+    return fail(message, status)
 
 
 def _report_console():

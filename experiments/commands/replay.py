@@ -18,7 +18,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from experiments.runner.options import fail as _fail
+from experiments.commands.errors import fail as _fail
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:

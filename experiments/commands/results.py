@@ -14,6 +14,9 @@ from __future__ import annotations
 import argparse
 import sys
 
+from experiments.commands import add_json_option, table_command
+from experiments.commands.errors import fail as _fail
+
 #: Kind stored in a results file -> the module that made it (``build_specs``, ``report``).
 REPORTERS: dict[str, str] = {
     "tournament": "experiments.commands.tournament",
@@ -34,12 +37,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     show = sub.add_parser("show", help="print the tables of a stored run")
     show.add_argument("file", metavar="FILE", help="results file (e.g. results.sqlite)")
     show.add_argument("--tables", metavar="DIR", default=None, help="also write the CSV/Markdown tables and PNG here")
-    show.set_defaults(func=run_show)
-
-
-def _fail(message: str, status: int = 2) -> int:
-    print(f"error: {message}", file=sys.stderr)
-    return status
+    add_json_option(show)
+    show.set_defaults(func=table_command(run_show))
 
 
 def run_export(args: argparse.Namespace) -> int:
@@ -96,6 +95,8 @@ def run_show(args: argparse.Namespace) -> int:
         if out_dir is not None:
             out_dir.mkdir(parents=True, exist_ok=True)
         module.report(mine, params, out_dir)
+    except BrokenPipeError:
+        raise                                # the reader of stdout went away: not a --tables problem
     except OSError as exc:
         return _fail(f"--tables {out_dir}: cannot write {describe(exc)}", 1)
     return 0

@@ -19,6 +19,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                                    description=doc_summary(__doc__))
     parser.add_argument("scenario", nargs="?", default=None, metavar="NAME|FILE",
                         help="a library name or a .json/.toml file: check it and print it as JSON")
+    parser.add_argument("--json", action="store_true",
+                        help="the library listing as one JSON object (a named scenario is printed as JSON anyway)")
     parser.set_defaults(func=run)
 
 
@@ -26,22 +28,24 @@ def run(args: argparse.Namespace) -> int:
     import json
     import sys
 
-    from rich.console import Console
-
     from soccer_sim import MatchConfig
     from soccer_sim.scenarios import ScenarioError, get_scenario, library, load_scenario, scenario_to_dict
 
-    console = Console()
     try:
         if args.scenario is None:
-            _print_library(console, library(), MatchConfig())
+            if args.json:
+                from experiments.reporting import json_output
+
+                return json_output(lambda: _print_library(library(), MatchConfig()) or 0)
+            _print_library(library(), MatchConfig())
             return 0
         text = args.scenario
         scenario = load_scenario(text) if text.lower().endswith((".json", ".toml")) else get_scenario(text)
         scenario.check(MatchConfig())
-    except ScenarioError as exc:  # one plain line (a rich console would wrap a long message)
-        print(f"error: {' '.join(str(exc).split())}", file=sys.stderr)
-        return 2
+    except ScenarioError as exc:
+        from experiments.commands.errors import fail
+
+        return fail(str(exc))
     try:
         print(_compact_points(json.dumps(scenario_to_dict(scenario), indent=2)))
         sys.stdout.flush()
@@ -67,22 +71,20 @@ def _sides(scenario, config) -> str:
     return " v ".join(parts)
 
 
-def _print_library(console, scenarios: dict, config) -> None:
-    from rich.markup import escape
-    from rich.table import Table
+def _print_library(scenarios: dict, config) -> None:
+    """The library as one table (drawn on a terminal, tab-separated when piped, see
+    :class:`experiments.reporting.Table`), then each scenario's description on its own line."""
+    from experiments.reporting import Table
 
-    table = Table(title="Scenarios (soccer-sim play HOME AWAY --scenario NAME)")
-    # Names in full (they are what --scenario takes); the other columns wrap instead.
-    table.add_column("name", no_wrap=True, min_width=max(map(len, scenarios), default=4))
-    for column in ("home v away", "start", "ends on", "cycle limit", "drawn from the seed"):
-        table.add_column(column)
+    header = ["name", "home v away", "start", "ends on", "cycle limit", "drawn from the seed"]
+    table = Table("Scenarios (soccer-sim play HOME AWAY --scenario NAME)", header, labels=len(header))
     for name, s in scenarios.items():
         drawn = [what for what, on in (("ball", s.ball.area is not None), ("home", s.home.jitter > 0),
                                        ("away", s.away.jitter > 0)) if on]
         start = s.start_mode.replace("_", " ") + ("" if s.start_mode == "play_on" else f" ({s.start_team})")
         limit = s.cycle_limit if s.cycle_limit is not None else config.total_cycles
-        table.add_row(escape(name), _sides(s, config), start, ", ".join(s.end_on) or "time", str(limit),
-                      ", ".join(drawn) or "-")
-    console.print(table)
+        table.rows.append([name, _sides(s, config), start, ", ".join(s.end_on) or "time", str(limit),
+                           ", ".join(drawn) or "-"])
+    table.print()
     for name, s in scenarios.items():
-        console.print(f"[bold]{escape(name)}[/bold]: {escape(s.description)}")
+        print(f"{name}: {' '.join(s.description.split())}")

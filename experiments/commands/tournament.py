@@ -19,7 +19,7 @@ import math
 from collections.abc import Sequence
 from pathlib import Path
 
-from experiments.commands import doc_summary
+from experiments.commands import add_json_option, doc_summary, table_command
 from experiments.commands.play import positive_int
 
 KIND = "tournament"
@@ -43,7 +43,8 @@ def _add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="matches per pairing, rounded up to even: sides swapped on paired seeds "
                              f"(default: {DEFAULT_GAMES}, a few minutes on two cores)")
     add_run_arguments(parser, "results.sqlite")
-    parser.set_defaults(func=run)
+    add_json_option(parser)
+    parser.set_defaults(func=table_command(run))
 
 
 def build_specs(params: dict) -> list:

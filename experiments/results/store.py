@@ -78,12 +78,12 @@ class ResultStore:
             connection, cleanup = _connect_read_only(path)
         except sqlite3.OperationalError as exc:                  # e.g. no permission to read it
             raise ResultsError(f"{path}: cannot be read ({exc})") from None
-        except sqlite3.DatabaseError as exc:
+        except (sqlite3.DatabaseError, UnicodeDecodeError) as exc:  # SQLite decodes damaged text too
             raise ResultsError(f"{path}: not a soccer-sim results file ({exc})") from None
         store = cls(path, connection, cleanup=cleanup)
         try:
             meta = store.meta()
-        except sqlite3.DatabaseError as exc:
+        except (sqlite3.DatabaseError, UnicodeDecodeError) as exc:
             store.close()
             raise ResultsError(f"{path}: not a soccer-sim results file ({exc})") from None
         if "kind" not in meta:
@@ -167,7 +167,7 @@ class ResultStore:
         reads it) becomes a ResultsError naming the file."""
         try:
             yield
-        except sqlite3.DatabaseError as exc:
+        except (sqlite3.DatabaseError, UnicodeDecodeError) as exc:
             raise ResultsError(f"{self.path}: damaged results file, its rows cannot be read ({exc})") from None
 
     # -- writing ----------------------------------------------------------------------------

@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from experiments.commands.errors import fail
 from experiments.commands.play import positive_int
 
 if TYPE_CHECKING:  # the runner imports the simulator: only when a command runs
@@ -102,6 +103,8 @@ def run_command(args: argparse.Namespace, kind: str, params_of, build_specs, rep
         try:
             tables.mkdir(parents=True, exist_ok=True)
             report(summary.records, params, tables)
+        except BrokenPipeError:
+            raise                            # the reader of stdout went away: not a --tables problem
         except OSError as exc:
             from experiments.results.files import describe
 
@@ -176,12 +179,6 @@ def execute(args: argparse.Namespace, kind: str, specs: list[MatchSpec], params:
         raise RunInputError(str(exc)) from None
     print(summary.line())
     return summary
-
-
-def fail(message: str, status: int = 2) -> int:
-    """Print ``error: message`` to stderr and return the exit status."""
-    print(f"error: {message}", file=sys.stderr)
-    return status
 
 
 def interrupted(out: str) -> int:

@@ -248,3 +248,12 @@ def test_every_bench_and_experiment_takes_json():
         for name in names:
             args = parser.parse_args([command, name, "--json"])
             assert args.json is True and isinstance(args, argparse.Namespace)
+
+
+def test_a_positional_left_empty_by_repeated_double_dashes_is_a_usage_error(capsys):
+    # Python 3.11's argparse hands FILE an empty list here; the command must not receive it.
+    with pytest.raises(SystemExit) as exit_info:
+        main(["formation", "import", "helios", "--", "--", "--map"])
+    assert exit_info.value.code == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("error: argument FILE: expected one value")

@@ -43,7 +43,7 @@ SLOW = settings(max_examples=200, deadline=None, database=None,
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 
 JUNK = ["", "0", "-1", "1", "2", "x", "nan", "inf", "-", "--", ",", "a,b", "é", "a\nb", "1e3", "-5.5", "None",
-        "idle", "chaser", "nobody", "no_such_pkg.mod:Team", "experiments.cli:main", "4-3-3", "kick-off"]
+        "idle", "chaser", "nobody", "no_such_pkg.mod:Team", "experiments.cli:COMMAND_MODULES", "4-3-3", "kick-off"]
 """Values and positionals mixed with the real flags."""
 
 OUTPUT_FLAGS = {"--out", "--png", "--csv", "--parquet", "--tables", "--record", "--record-dir"}
