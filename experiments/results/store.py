@@ -164,11 +164,13 @@ class ResultStore:
     @contextlib.contextmanager
     def _reading(self) -> Iterator[None]:
         """Reads of stored rows: a damaged file (SQLite finds a malformed page only when it
-        reads it) becomes a ResultsError naming the file."""
+        reads it; a damaged row's JSON or text fails to decode) becomes a ResultsError naming
+        the file."""
         try:
             yield
-        except (sqlite3.DatabaseError, UnicodeDecodeError) as exc:
-            raise ResultsError(f"{self.path}: damaged results file, its rows cannot be read ({exc})") from None
+        except (sqlite3.DatabaseError, ValueError, TypeError, KeyError) as exc:  # damaged pages or row text
+            raise ResultsError(f"{self.path}: damaged results file, its rows cannot be read "
+                               f"({type(exc).__name__}: {exc})") from None
 
     # -- writing ----------------------------------------------------------------------------
     def add(self, record: MatchRecord) -> None:

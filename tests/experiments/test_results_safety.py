@@ -297,3 +297,22 @@ def test_tournament_writes_the_markdown_tables_its_help_promises(played, capsys)
     assert markdown.startswith("Tournament: 2 matches, seeds from 0, cycles per match: 30.")
     assert "**league: 2 teams, 2 matches**" in markdown and "| 1 | " in markdown
     assert "| idle |  | " in markdown and "| chaser | " in markdown
+
+
+def test_a_damaged_row_is_one_error_naming_the_file(tmp_path, capsys):
+    import sqlite3
+
+    from experiments.cli import main
+
+    out = tmp_path / "r.sqlite"
+    assert main(["tournament", "--teams", "chaser,idle", "--games", "2", "--cycles", "50", "--workers", "1",
+                 "--out", str(out), "--tables", str(tmp_path / "t"), "--no-progress"]) == 0
+    with sqlite3.connect(out) as db:               # a stored row's statistics no longer JSON
+        db.execute("UPDATE matches SET home_stats = '{x' WHERE seed = (SELECT MIN(seed) FROM matches)")
+    db.close()
+    capsys.readouterr()
+    before = out.read_bytes()
+    assert main(["results", "show", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and f"{out}: damaged results file" in err
+    assert out.read_bytes() == before
