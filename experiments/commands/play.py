@@ -24,6 +24,9 @@ a tournament also kills its worker process in that case.
 from __future__ import annotations
 
 import argparse
+import contextlib
+import sys
+from collections.abc import Iterator
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -90,16 +93,16 @@ def run(args: argparse.Namespace) -> int:
     try:
         config = match_config(args.cycles)
         scenario = _scenario(getattr(args, "scenario", None))
-        recorders = _recorders(getattr(args, "record", None))
-        warm_kernels((args.home, args.away))  # a cold cache is filled here, not on the match's clock
-        start = time.perf_counter()
-        alarm = _arm_timer(timeout)  # the tournament's timer: MatchTimeout where the match hangs
-        try:
-            result = run_match(args.home, args.away, seed=args.seed, config=config, scenario=scenario,
-                               recorders=recorders)
-        finally:
-            _disarm_timer(alarm)
-        elapsed = time.perf_counter() - start
+        with _recording(getattr(args, "record", None)) as recorders:
+            warm_kernels((args.home, args.away))  # a cold cache is filled here, not on the match's clock
+            start = time.perf_counter()
+            alarm = _arm_timer(timeout)  # the tournament's timer: MatchTimeout where the match hangs
+            try:
+                result = run_match(args.home, args.away, seed=args.seed, config=config, scenario=scenario,
+                                   recorders=recorders)
+            finally:
+                _disarm_timer(alarm)
+            elapsed = time.perf_counter() - start
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return 130
@@ -221,12 +224,17 @@ def _format(key: str, value: float | None) -> str:
     return f"{value:.3g}"
 
 
-def _recorders(path: str | None) -> list:
-    """A replay recorder writing ``path`` (after checking that the file can be written), or none."""
+@contextlib.contextmanager
+def _recording(path: str | None) -> Iterator[list]:
+    """The recorders of ``--record``: none, or a replay recorder writing a temporary file beside
+    ``path`` that replaces it only when the match has been played (a match that fails or is
+    interrupted leaves no partial replay and an earlier file of that name as it was)."""
     if path is None:
-        return []
+        yield []
+        return
     from pathlib import Path
 
+    from experiments.results.files import atomic_output, describe
     from soccer_sim.replay import ReplayError, RerunRecorder
 
     target = Path(path)
@@ -234,8 +242,17 @@ def _recorders(path: str | None) -> list:
         raise ReplayError(f"--record {path}: a replay file must end in .rrd")
     if not target.parent.is_dir():
         raise ReplayError(f"--record {path}: directory {target.parent} does not exist")
+    output = atomic_output(target)
     try:
-        target.touch()
+        temporary = output.__enter__()
     except OSError as exc:
-        raise ReplayError(f"--record {path}: cannot write it ({exc.strerror})") from None
-    return [RerunRecorder(target)]
+        raise ReplayError(f"--record {path}: cannot write it ({describe(exc)})") from None
+    try:
+        yield [RerunRecorder(temporary)]
+    except BaseException:
+        output.__exit__(*sys.exc_info())    # removes the temporary file; the exception goes on
+        raise
+    try:
+        output.__exit__(None, None, None)
+    except OSError as exc:
+        raise ReplayError(f"--record {path}: cannot write it ({describe(exc)})") from None

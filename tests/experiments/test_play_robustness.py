@@ -136,3 +136,18 @@ def test_json_piped_into_head_ends_quietly() -> None:
     pipeline = subprocess.run(f"{sys.executable} -m experiments.cli play chaser idle --cycles 20 --json | head -1",
                               shell=True, capture_output=True, text=True, timeout=300)
     assert pipeline.stdout == "{\n" and pipeline.stderr == ""
+
+
+def test_a_failed_match_leaves_no_partial_replay_and_an_earlier_one_unchanged(team_module, tmp_path, capsys) -> None:
+    module = team_module("play_exiting_team_rec", TEAM_SOURCE)
+    fresh = tmp_path / "fresh.rrd"
+    assert main(["play", "idle", f"{module}:Exiting", "--cycles", "10", "--record", str(fresh)]) == 1
+    assert not fresh.exists()
+    earlier = tmp_path / "earlier.rrd"
+    earlier.write_bytes(b"an earlier replay")
+    assert main(["play", "idle", f"{module}:Exiting", "--cycles", "10", "--record", str(earlier)]) == 1
+    assert earlier.read_bytes() == b"an earlier replay"
+    assert sorted(p.name for p in tmp_path.iterdir() if p.suffix == ".rrd") == ["earlier.rrd"]
+    capsys.readouterr()
+    assert main(["play", "chaser", "idle", "--cycles", "10", "--record", str(fresh)]) == 0
+    assert fresh.stat().st_size > 1000
