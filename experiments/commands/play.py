@@ -24,9 +24,6 @@ a tournament also kills its worker process in that case.
 from __future__ import annotations
 
 import argparse
-import contextlib
-import sys
-from collections.abc import Iterator
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -84,6 +81,7 @@ def run(args: argparse.Namespace) -> int:
     from rich.markup import escape
 
     from experiments.match_report import match_report
+    from experiments.recording import replay_recording
     from experiments.runner.worker import MatchTimeout, _arm_timer, _disarm_timer
     from experiments.warmup import warm_kernels
     from soccer_sim import ConfigError, TeamError, TeamNotFoundError, run_match
@@ -93,7 +91,7 @@ def run(args: argparse.Namespace) -> int:
     try:
         config = match_config(args.cycles)
         scenario = _scenario(getattr(args, "scenario", None))
-        with _recording(getattr(args, "record", None)) as recorders:
+        with replay_recording(getattr(args, "record", None), "--record") as recorders:
             warm_kernels((args.home, args.away))  # a cold cache is filled here, not on the match's clock
             start = time.perf_counter()
             alarm = _arm_timer(timeout)  # the tournament's timer: MatchTimeout where the match hangs
@@ -222,37 +220,3 @@ def _format(key: str, value: float | None) -> str:
     if float(value).is_integer():
         return str(int(value))
     return f"{value:.3g}"
-
-
-@contextlib.contextmanager
-def _recording(path: str | None) -> Iterator[list]:
-    """The recorders of ``--record``: none, or a replay recorder writing a temporary file beside
-    ``path`` that replaces it only when the match has been played (a match that fails or is
-    interrupted leaves no partial replay and an earlier file of that name as it was)."""
-    if path is None:
-        yield []
-        return
-    from pathlib import Path
-
-    from experiments.results.files import atomic_output, describe
-    from soccer_sim.replay import ReplayError, RerunRecorder
-
-    target = Path(path)
-    if target.suffix != ".rrd":
-        raise ReplayError(f"--record {path}: a replay file must end in .rrd")
-    if not target.parent.is_dir():
-        raise ReplayError(f"--record {path}: directory {target.parent} does not exist")
-    output = atomic_output(target)
-    try:
-        temporary = output.__enter__()
-    except OSError as exc:
-        raise ReplayError(f"--record {path}: cannot write it ({describe(exc)})") from None
-    try:
-        yield [RerunRecorder(temporary)]
-    except BaseException:
-        output.__exit__(*sys.exc_info())    # removes the temporary file; the exception goes on
-        raise
-    try:
-        output.__exit__(None, None, None)
-    except OSError as exc:
-        raise ReplayError(f"--record {path}: cannot write it ({describe(exc)})") from None

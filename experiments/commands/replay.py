@@ -94,7 +94,8 @@ def _recreate(args: argparse.Namespace) -> int:
     from experiments.runner.spec import config_for, config_hash
     from experiments.runner.worker import make_team
     from soccer_sim import TeamError, TeamNotFoundError, run_match
-    from soccer_sim.replay import RerunRecorder
+    from experiments.recording import replay_recording
+    from soccer_sim.replay import ReplayError
 
     if args.row is None:
         return _fail("--results needs --row K (the match's row, 0-based)")
@@ -121,12 +122,15 @@ def _recreate(args: argparse.Namespace) -> int:
     except TeamNotFoundError as exc:
         return _fail(f"row {args.row}: {exc}")
     try:
-        result = run_match(home, away, seed=record.seed, config=config, recorders=[RerunRecorder(args.out)])
+        with replay_recording(args.out, "--out") as recorders:
+            result = run_match(home, away, seed=record.seed, config=config, recorders=recorders)
+    except ReplayError as exc:
+        return _fail(str(exc))
     except TeamError as exc:
         return _fail(f"row {args.row}: the match failed this time ({type(exc).__name__}: {exc}), though it was "
                      "played to its end when stored: the team's code has changed since", 1)
     except KeyboardInterrupt:
-        print(f"interrupted: the replay in {args.out} is incomplete", file=sys.stderr)
+        print(f"interrupted: no replay written to {args.out}", file=sys.stderr)
         return 130
     stored = (record.home_goals, record.away_goals)
     print(f"{record.home} {result.score[0]} - {result.score[1]} {record.away} (seed {record.seed}); "
