@@ -31,6 +31,7 @@ import numpy as np
 
 from agents.assignment import AssignmentError, assign_on_grid
 from agents.assignment.grid import random_instance
+from experiments.results.files import make_output_directory
 
 #: Table 1 of the paper: (side, density %, robots) -> (pairs explored, baseline s, lazy s, speed-up).
 #: Where the paper lists a row twice, the first is kept.
@@ -248,11 +249,8 @@ def run(args: argparse.Namespace) -> int:
     except ValueError as exc:
         return fail(str(exc))
     out = Path(args.out) if args.out is not None else None
-    if out is not None:
-        try:
-            out.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            return fail(f"--out {out}: cannot make the directory ({exc.strerror or exc})")
+    if out is not None and (problem := make_output_directory(out)):
+        return fail(f"--out {out}: {problem}")
     rng = np.random.default_rng(args.seed)
     _warm_up()
     started = time.perf_counter()

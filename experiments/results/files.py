@@ -40,6 +40,16 @@ def written_input(target: str | os.PathLike, inputs: Iterable[str | os.PathLike]
     return None
 
 
+def make_output_directory(directory: str | os.PathLike) -> str | None:
+    """Create ``directory`` (and its parents) for a command's output files; why it cannot be
+    made (one line), or None."""
+    try:
+        Path(directory).mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        return f"cannot make the directory ({exc.strerror or exc})"
+    return None
+
+
 def directory_problem(directory: str | os.PathLike) -> str | None:
     """Why files cannot be written into ``directory`` (created later if missing), or None.
 

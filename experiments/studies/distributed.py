@@ -34,6 +34,8 @@ from pathlib import Path
 
 import numpy as np
 
+from experiments.results.files import make_output_directory
+
 #: Side of the squares of the worst-case construction, in units of r_comm (> 2: isolated targets).
 WORST_CASE_SPACING = 2.5
 #: The paper's empirical band for GRID ASSGMT in dense environments: T / sqrt(|E|) in [1.5, 2.5].
@@ -372,11 +374,8 @@ def run(args: argparse.Namespace) -> int:
 
     try:
         plan = _check_args(args)
-        if args.out is not None:
-            try:
-                args.out.mkdir(parents=True, exist_ok=True)
-            except OSError as exc:
-                raise StudyArgumentError(f"--out {args.out}: cannot make the directory ({exc.strerror or exc})") from None
+        if args.out is not None and (problem := make_output_directory(args.out)):
+            raise StudyArgumentError(f"--out {args.out}: {problem}")
     except StudyArgumentError as exc:
         return fail(str(exc))
     start = time.perf_counter()

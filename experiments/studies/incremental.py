@@ -30,6 +30,7 @@ from pathlib import Path
 import numpy as np
 
 from agents.assignment import AssignmentError, IncrementalAssignment
+from experiments.results.files import make_output_directory
 
 
 class StudyArgumentError(ValueError):
@@ -208,11 +209,8 @@ def run(args: argparse.Namespace) -> int:
 
     try:
         lambdas, degree = _check_args(args)
-        if args.out is not None:
-            try:
-                args.out.mkdir(parents=True, exist_ok=True)
-            except OSError as exc:
-                raise StudyArgumentError(f"--out {args.out}: cannot make the directory ({exc.strerror or exc})") from None
+        if args.out is not None and (problem := make_output_directory(args.out)):
+            raise StudyArgumentError(f"--out {args.out}: {problem}")
     except StudyArgumentError as exc:
         return fail(str(exc))
     start = time.perf_counter()

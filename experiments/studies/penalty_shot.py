@@ -41,6 +41,7 @@ import numpy as np
 
 from experiments.commands import doc_summary
 from experiments.reporting import write_csv
+from experiments.results.files import make_output_directory
 
 CONDITIONS = ("one", "uncoordinated", "coordinated")
 SETTINGS = ("empty goal", "goalkeeper")
@@ -366,12 +367,8 @@ def run(args: argparse.Namespace) -> int:
                 resolve_team(name)
             except TeamNotFoundError as exc:
                 raise StudyArgumentError(f"{option}: {exc}") from None
-        if args.out is not None:
-            try:
-                args.out.mkdir(parents=True, exist_ok=True)
-            except OSError as exc:
-                raise StudyArgumentError(f"--out {args.out}: cannot make the directory "
-                                         f"({exc.strerror or exc})") from None
+        if args.out is not None and (problem := make_output_directory(args.out)):
+            raise StudyArgumentError(f"--out {args.out}: {problem}")
     except StudyArgumentError as exc:
         return fail(str(exc))
     start = time.perf_counter()

@@ -36,18 +36,6 @@ class Hanging(Exiting):
 """
 
 
-@pytest.fixture
-def team_module(tmp_path, monkeypatch):
-    """Write a module ``name`` with ``source`` on a fresh sys.path entry; return its name."""
-    monkeypatch.syspath_prepend(str(tmp_path))
-
-    def write(name: str, source: str) -> str:
-        (tmp_path / f"{name}.py").write_text(source)
-        return name
-
-    return write
-
-
 def one_error_line(capsys) -> str:
     """The single error line play wrote on stderr (stdout must stay empty)."""
     captured = capsys.readouterr()

@@ -13,18 +13,6 @@ from soccer_sim.scenarios import BallStart, Scenario, ScenarioError, Side, load_
 N = 11
 
 
-@pytest.fixture
-def team_module(tmp_path, monkeypatch):
-    """Write a module ``name`` with ``source`` on a fresh sys.path entry; return its name."""
-    monkeypatch.syspath_prepend(str(tmp_path))
-
-    def write(name: str, source: str) -> str:
-        (tmp_path / f"{name}.py").write_text(source)
-        return name
-
-    return write
-
-
 # --- team modules that fail while being imported ---------------------------------------------
 def test_a_syntax_error_names_the_team_the_module_and_file_line(team_module) -> None:
     module = team_module("syntax_broken_team", "class Team:\n    def act(self view):\n        pass\n")
