@@ -257,3 +257,27 @@ def test_a_positional_left_empty_by_repeated_double_dashes_is_a_usage_error(caps
     assert exit_info.value.code == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and err.startswith("error: argument FILE: expected one value")
+
+
+def test_version_prints_the_installed_version(capsys):
+    from importlib import metadata
+
+    with pytest.raises(SystemExit) as exit_info:
+        main(["--version"])
+    assert exit_info.value.code == 0
+    assert capsys.readouterr().out.strip() == f"soccer-sim {metadata.version('soccer-sim')}"
+
+
+def test_git_ignores_what_runs_leave_behind():
+    import shutil
+    import subprocess
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[2]
+    if shutil.which("git") is None or not (root / ".git").exists():
+        pytest.skip("not a git checkout")
+    left_behind = ["results.sqlite", "results.sqlite-wal", "results.sqlite-shm", "results-tables/league.csv",
+                   "case-study.sqlite-wal"]
+    ignored = subprocess.run(["git", "-C", str(root), "check-ignore", "--no-index", *left_behind],
+                             capture_output=True, text=True).stdout.split()
+    assert sorted(ignored) == sorted(left_behind)
