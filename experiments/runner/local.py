@@ -4,10 +4,11 @@ Unlike ``concurrent.futures``, the pool watches every worker itself: a worker th
 crash, ``kill -9``) or overruns a match's time budget is replaced and its match recorded as
 failed, and the run goes on. Each worker has a slot of shared memory where it marks the side
 whose code it is running (see :class:`experiments.runner.worker._Watched`): a worker that dies
-or hangs inside a team's code forfeits the match for that team; otherwise nobody is blamed. Workers are reused from match to match (the simulator's compiled
-kernels load once per worker). :meth:`LocalPool.warm_up` compiles the kernels into numba's
-on-disk cache before the first worker starts, and each worker loads them before its first
-match, so neither compile nor load time is charged to a match's time budget.
+or hangs inside a team's code forfeits the match for that team; otherwise nobody is blamed.
+Workers are reused from match to match (the simulator's compiled kernels load once per
+worker). :meth:`LocalPool.warm_up` compiles the kernels into numba's on-disk cache before the
+first worker starts, and each worker loads them before its first match, so neither compile
+nor load time is charged to a match's time budget.
 """
 
 from __future__ import annotations
@@ -21,9 +22,7 @@ from dataclasses import dataclass
 from multiprocessing.connection import Connection, wait
 from typing import Any
 
-from experiments.results.record import FORFEIT_NONE
-
-from experiments.results.record import MatchRecord
+from experiments.results.record import FORFEIT_NONE, MatchRecord
 from experiments.runner.spec import MatchSpec
 from experiments.runner.worker import failed_record, play_spec
 from experiments.warmup import Kernel, load_kernels, warm_kernels

@@ -18,7 +18,6 @@ from experiments.results.store import ResultStore, StorageError
 from experiments.runner.progress import RunProgress
 from experiments.runner.spec import MatchSpec, code_version, config_description, config_for, config_hash
 
-
 DEFAULT_MATCH_TIMEOUT = 600.0
 """Seconds one match may take before it is stopped and forfeited (a full match between two
 built-in teams takes about a second or two)."""
