@@ -200,6 +200,12 @@ def failures(records: Iterable[MatchRecord]) -> list[MatchRecord]:
     return [r for r in records if not r.played]
 
 
+def unblamed(record: MatchRecord) -> bool:
+    """Whether ``record`` failed with no team at fault (a worker or node lost outside team
+    code, a storage or set-up problem): the match is missing from the tables, not a forfeit."""
+    return record.error is not None and record.forfeit == FORFEIT_NONE
+
+
 def blamed_team(record: MatchRecord) -> str | None:
     """The team that forfeited ``record``, or None."""
     return None if record.forfeit == FORFEIT_NONE else record.names()[record.forfeit]

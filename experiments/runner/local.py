@@ -2,10 +2,13 @@
 
 Unlike ``concurrent.futures``, the pool watches every worker itself: a worker that dies (a
 crash, ``kill -9``) or overruns a match's time budget is replaced and its match recorded as
-failed, and the run goes on. Workers are reused from match to match (the simulator's compiled
-kernels load once per worker). :meth:`LocalPool.warm_up` compiles the kernels into numba's
-on-disk cache before the first worker starts, and each worker loads them before its first
-match, so neither compile nor load time is charged to a match's time budget.
+failed, and the run goes on. Each worker has a slot of shared memory where it marks the side
+whose code it is running (see :class:`experiments.runner.worker._Watched`): a worker that dies
+or hangs inside a team's code forfeits the match for that team; otherwise nobody is blamed.
+Workers are reused from match to match (the simulator's compiled kernels load once per
+worker). :meth:`LocalPool.warm_up` compiles the kernels into numba's on-disk cache before the
+first worker starts, and each worker loads them before its first match, so neither compile
+nor load time is charged to a match's time budget.
 """
 
 from __future__ import annotations
@@ -14,11 +17,12 @@ import multiprocessing
 import signal
 import time
 from collections import deque
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from multiprocessing.connection import Connection, wait
+from typing import Any
 
-from experiments.results.record import MatchRecord
+from experiments.results.record import FORFEIT_NONE, MatchRecord
 from experiments.runner.spec import MatchSpec
 from experiments.runner.worker import failed_record, play_spec
 from experiments.warmup import Kernel, load_kernels, warm_kernels
@@ -33,9 +37,9 @@ first match starts then, so start-up is never charged to a match's time budget."
 
 
 def _worker_main(connection: Connection, config_hash: str, version: str, timeout: float | None,
-                 kernels: tuple[Kernel, ...] = ()) -> None:
+                 kernels: tuple[Kernel, ...] = (), slot: Any = None, figures: Callable | None = None) -> None:
     """A worker: load ``kernels``, say READY, then play the specs the parent sends until it sends
-    None or goes away."""
+    None or goes away, marking in ``slot`` (shared with the parent) the side whose code runs."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
     load_kernels(kernels)
     connection.send(READY)
@@ -46,7 +50,7 @@ def _worker_main(connection: Connection, config_hash: str, version: str, timeout
             return
         if spec is None:
             return
-        connection.send(play_spec(spec, config_hash, version, timeout))
+        connection.send(play_spec(spec, config_hash, version, timeout, deciding=slot, figures=figures))
 
 
 @dataclass
@@ -58,13 +62,21 @@ class _Worker:
     """When the parent's clock for ``spec`` started (once the worker is ready)."""
     ready: bool = False
     """Whether the worker has said READY (its first spec may wait in the pipe until then)."""
+    slot: Any = None
+    """Shared [side running team code, side whose act returned last] of the worker, or None."""
+
+    def culprit(self) -> int:
+        """The side whose code the worker is running now (FORFEIT_NONE if none, or no slot)."""
+        return FORFEIT_NONE if self.slot is None else int(self.slot[0])
 
 
 class LocalPool:
     """``workers`` processes (spawned, so nothing of the parent's state leaks into a match)."""
 
-    def __init__(self, workers: int, config_hash: str, version: str, timeout: float | None) -> None:
+    def __init__(self, workers: int, config_hash: str, version: str, timeout: float | None,
+                 figures: Callable | None = None) -> None:
         self.size = workers
+        self._figures = figures
         self._args = (config_hash, version, timeout)
         self._timeout = timeout
         self._context = multiprocessing.get_context("spawn")
@@ -79,11 +91,13 @@ class LocalPool:
 
     def _start_worker(self) -> _Worker:
         parent_end, child_end = self._context.Pipe()
-        process = self._context.Process(target=_worker_main, args=(child_end, *self._args, self._kernels),
+        slot = self._context.RawArray("i", [FORFEIT_NONE, FORFEIT_NONE])
+        process = self._context.Process(target=_worker_main,
+                                        args=(child_end, *self._args, self._kernels, slot, self._figures),
                                         daemon=True, name="soccer-sim-worker")
         process.start()
         child_end.close()
-        return _Worker(process, parent_end)
+        return _Worker(process, parent_end, slot=slot)
 
     def run(self, specs: Iterable[MatchSpec]) -> Iterator[MatchRecord]:
         """Play every spec; yield each record as its match finishes (in any order)."""
@@ -141,7 +155,13 @@ class LocalPool:
 
     @staticmethod
     def _failed(worker: _Worker, config_hash: str, version: str, message: str) -> MatchRecord:
-        return failed_record(worker.spec, config_hash, version, time.monotonic() - worker.started, message)
+        """The record of ``worker``'s match, given up on: forfeited by the team whose code the
+        worker was running (read before the worker is replaced), else nobody's fault."""
+        side = worker.culprit()
+        if side != FORFEIT_NONE:
+            message += f"; it was running the code of the {('home', 'away')[side]} team {worker.spec.key[side]!r}"
+        return failed_record(worker.spec, config_hash, version, time.monotonic() - worker.started, message,
+                             forfeit=side)
 
     def _replace(self, worker: _Worker) -> _Worker:
         _stop(worker)

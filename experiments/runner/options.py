@@ -88,18 +88,22 @@ def add_team_option(parser: argparse.ArgumentParser, option: str, defaults: tupl
                              f"{registered_teams_text()}; or package.module:Attribute paths")
 
 
-def run_command(args: argparse.Namespace, kind: str, params_of, build_specs, report) -> int:
+def run_command(args: argparse.Namespace, kind: str, params_of, build_specs, report, figures=None) -> int:
     """The body of every command that runs matches: parameters from ``args`` (``params_of``
     may raise RunInputError), the run, the report into ``--tables``. Exit status 2 with a
     message for bad input (the tables directory included: it is checked before the first
-    match), 1 when the results or the tables cannot be written (the message says what is
-    kept), 130 after Ctrl-C."""
+    match); 1 when the results or the tables cannot be written (the message says what is
+    kept), when the failure policy stopped the run, or when a match could not be played for a
+    reason other than a team's own fault (the tables are written without it; one line says how
+    many); 130 after Ctrl-C. 0 only when the tables are complete (forfeits are results).
+    ``figures``: see :func:`~experiments.runner.run.run_matches`."""
     from experiments.results.store import StorageError
+    from experiments.runner.run import RunStopped
 
     try:
         params = params_of(args)
         tables = tables_dir(args)
-        summary = execute(args, kind, build_specs(params), params)
+        summary = execute(args, kind, build_specs(params), params, figures)
         try:
             tables.mkdir(parents=True, exist_ok=True)
             report(summary.records, params, tables)
@@ -113,12 +117,22 @@ def run_command(args: argparse.Namespace, kind: str, params_of, build_specs, rep
                                f"{tables}` writes the tables again") from None
     except RunInputError as exc:
         return fail(str(exc))
-    except StorageError as exc:
+    except (StorageError, RunStopped) as exc:
         return fail(str(exc), 1)
     except KeyboardInterrupt:
         return interrupted(args.out)
     print_failures(summary)
-    return 0
+    return incomplete(summary)
+
+
+def incomplete(summary: RunSummary) -> int:
+    """Exit status 1 with one line on stderr when some matches of ``summary`` failed with no
+    team at fault (missing from the tables), else 0."""
+    if not summary.unplayed:
+        return 0
+    return fail(f"{summary.unplayed} of the {summary.total} matches could not be played (no team at fault), so the "
+                f"tables leave them out; they are kept as failed in {summary.path} and the same command plays them "
+                "again", 1)
 
 
 def team_list(text: str, option: str, minimum: int = 1) -> list[str]:
@@ -161,7 +175,8 @@ def tables_dir(args: argparse.Namespace) -> Path:
     return path
 
 
-def execute(args: argparse.Namespace, kind: str, specs: list[MatchSpec], params: dict[str, object]) -> RunSummary:
+def execute(args: argparse.Namespace, kind: str, specs: list[MatchSpec], params: dict[str, object],
+            figures=None) -> RunSummary:
     """Run ``specs`` into ``args.out``; errors about the file or the backend become RunInputError
     (KeyboardInterrupt propagates: every finished match is stored)."""
     from experiments.results.store import ResultsError
@@ -174,7 +189,7 @@ def execute(args: argparse.Namespace, kind: str, specs: list[MatchSpec], params:
         summary = run_matches(specs, args.out, kind, params, cycles=args.cycles, workers=args.workers,
                               backend=args.backend, address=args.address, match_timeout=args.match_timeout,
                               retry_errors=args.retry_errors, progress=not args.no_progress,
-                              record_dir=args.record_dir, record_every=args.record_every)
+                              record_dir=args.record_dir, record_every=args.record_every, figures=figures)
     except (ResultsError, RayUnavailable, ValueError) as exc:
         raise RunInputError(str(exc)) from None
     print(summary.line())
@@ -195,7 +210,8 @@ def print_failures(summary: RunSummary, limit: int = 5) -> None:
     failed = failures(summary.records)
     if not failed:
         return
-    print(f"{len(failed)} match(es) failed (forfeited by the team named, or not played); first ones:")
+    print(f"{len(failed)} match(es) failed (forfeited by the team named, or not played with no team at fault); "
+          "first ones:")
     for record in failed[:limit]:
         who = blamed_team(record)
         blame = f"forfeited by {who}" if who else "no team blamed"

@@ -11,13 +11,14 @@ QUIET_EVERY_SECONDS = 30.0
 
 
 class RunProgress:
-    """Counts finished matches and failures; shows done/total, rate, ETA and errors."""
+    """Counts finished matches and failures; shows done/total, rate, ETA and errors (and how
+    many of them no team is blamed for: those matches are missing from the tables)."""
 
     def __init__(self, total: int, label: str, stream: TextIO | None = None, enabled: bool = True) -> None:
         self.total, self.label = total, label
         self.stream = stream if stream is not None else sys.stderr
         self.enabled = enabled and total > 0
-        self.done = self.errors = 0
+        self.done = self.errors = self.unblamed = 0
         self._start = time.monotonic()
         self._live = None
         self._last_line = self._start
@@ -37,16 +38,19 @@ class RunProgress:
             self._task = self._live.add_task(self.label, total=self.total, rate="", errors="0 errors")
         return self
 
-    def advance(self, failed: bool = False) -> None:
+    def advance(self, failed: bool = False, unblamed: bool = False) -> None:
+        """One more match finished; ``failed``: not played to its end; ``unblamed``: failed
+        with no team at fault."""
         self.done += 1
         self.errors += int(failed)
+        self.unblamed += int(unblamed)
         if not self.enabled:
             return
         elapsed = max(time.monotonic() - self._start, 1e-9)
         rate = self.done / elapsed
         if self._live is not None:
             self._live.update(self._task, advance=1, rate=f"{rate * 60:.1f} matches/min",
-                              errors=f"[red]{self.errors} errors[/red]" if self.errors else "0 errors")
+                              errors=f"[red]{self._errors_text()}[/red]" if self.errors else "0 errors")
             return
         tenth = 10 * self.done // self.total
         now = time.monotonic()
@@ -54,7 +58,11 @@ class RunProgress:
             self._last_tenth, self._last_line = tenth, now
             eta = (self.total - self.done) / rate
             print(f"{self.label}: {self.done}/{self.total} matches, {rate * 60:.1f}/min, ETA {eta:.0f} s, "
-                  f"{self.errors} errors", file=self.stream, flush=True)
+                  f"{self._errors_text()}", file=self.stream, flush=True)
+
+    def _errors_text(self) -> str:
+        unblamed = f" ({self.unblamed} with no team at fault)" if self.unblamed else ""
+        return f"{self.errors} errors{unblamed}"
 
     def __exit__(self, *exc) -> None:
         if self._live is not None:

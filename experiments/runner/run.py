@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import os
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -24,8 +24,57 @@ built-in teams takes about a second or two)."""
 
 BACKENDS = ("local", "ray")
 
+FAILURE_SHARE = 0.2
+"""A run stops when more than this share of its finished matches failed with no team at
+fault (a worker or node lost outside team code) ..."""
+FAILURE_MIN_MATCHES = 20
+"""... once at least this many matches have finished (fewer say little about the cause)."""
+
 MAX_SEED = 2**63 - 1
 """The largest seed a results file can store (SQLite integers are signed 64-bit)."""
+
+
+def unblamed(record: MatchRecord) -> bool:
+    """:func:`experiments.stats.unblamed` (imported when called: the statistics need numpy)."""
+    from experiments.stats import unblamed as failed_with_no_team_at_fault
+
+    return failed_with_no_team_at_fault(record)
+
+
+class RunStopped(Exception):
+    """The failure policy stopped the run; the message says why, what is stored and how to resume."""
+
+
+@dataclass(frozen=True)
+class FailurePolicy:
+    """When a run gives up: more than ``max_share`` of at least ``min_matches`` finished
+    matches failed with no team at fault. A team's own failures (forfeits) never stop a run:
+    they are results."""
+
+    max_share: float = FAILURE_SHARE
+    min_matches: int = FAILURE_MIN_MATCHES
+
+    def exceeded(self, finished: int, failed: int) -> bool:
+        return finished >= self.min_matches and failed > self.max_share * finished
+
+
+@dataclass
+class _Tally:
+    """What the matches finished in this run came to."""
+
+    finished: int = 0
+    completed: int = 0
+    """Played to their end (a score)."""
+    unblamed: int = 0
+    """Failed with no team at fault."""
+    last_error: str = ""
+
+    def add(self, record: MatchRecord) -> None:
+        self.finished += 1
+        self.completed += record.played
+        if unblamed(record):
+            self.unblamed += 1
+            self.last_error = record.error or ""
 
 
 @dataclass
@@ -37,29 +86,46 @@ class RunSummary:
     """Distinct matches of the run."""
     already_stored: int
     played: int
+    """Matches run now (whatever their outcome)."""
     errors: int
     """Failed matches among all ``total`` (stored earlier or now)."""
     seconds: float
     workers: int
     records: list[MatchRecord] = field(default_factory=list)
+    completed: int = 0
+    """Matches run now and played to their end: the only ones the rate counts."""
+
+    @property
+    def unplayed(self) -> int:
+        """Matches of the run that failed with no team at fault: missing from the tables."""
+        return sum(unblamed(r) for r in self.records)
 
     def line(self) -> str:
-        rate = self.played / self.seconds * 3600 if self.seconds > 0 and self.played else 0.0
+        rate = self.completed / self.seconds * 3600 if self.seconds > 0 and self.completed else 0.0
         resumed = f" ({self.already_stored} already stored)" if self.already_stored else ""
+        unplayed = f" ({self.unplayed} with no team at fault)" if self.unplayed else ""
         return (f"{self.total} matches in {self.path}{resumed}: played {self.played} in {self.seconds:.1f} s "
-                f"on {self.workers} worker(s) ({rate:,.0f} matches/hour), {self.errors} failed")
+                f"on {self.workers} worker(s) ({rate:,.0f} matches/hour), {self.errors} failed{unplayed}")
 
 
 def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, params: dict[str, object], *,
                 cycles: int | None = None, workers: int | None = None, backend: str = "local",
                 address: str | None = None, match_timeout: float | None = DEFAULT_MATCH_TIMEOUT,
                 retry_errors: bool = False, progress: bool = True, record_dir: str | os.PathLike | None = None,
-                record_every: int = 1) -> RunSummary:
+                record_every: int = 1, policy: FailurePolicy = FailurePolicy(),
+                figures: Callable[[], object] | None = None) -> RunSummary:
     """Play every spec (all with ``cycles``) that ``path`` does not hold, store each as it
     finishes, and return the summary with the records of all ``specs``.
 
     ``record_dir``: write a rerun replay of every ``record_every``-th spec (in the order given,
     the first included) played in this run into that directory, named after its teams and seed.
+    ``figures``: a picklable factory of a :class:`~experiments.runner.worker.MatchFigures`
+    recorder whose figures of the whole match go into both teams' statistics (local backend).
+
+    Failure policy (``policy``, the same for every backend): a failure no team is blamed for
+    leaves the match out of the tables (a re-run plays it again); when more than
+    FAILURE_SHARE of at least FAILURE_MIN_MATCHES matches finished in this run failed that
+    way, the run stops with :class:`RunStopped`, every finished match stored.
 
     Raises ValueError for seeds a results file cannot store,
     :class:`~experiments.results.store.ResultsError` for an unusable file,
@@ -70,6 +136,9 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
         raise ValueError("every spec of a run must use the run's cycles")
     if backend not in BACKENDS:
         raise ValueError(f"unknown backend {backend!r}; choose one of {', '.join(BACKENDS)}")
+    if figures is not None and backend != "local":
+        raise ValueError("this command collects figures of its own during each match, which only the local "
+                         "backend does: leave out --backend ray")
     specs = list(dict.fromkeys(specs))
     check_seeds(specs)
     if record_dir is not None:
@@ -86,20 +155,32 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
         todo = [spec for spec in specs if spec.key not in stored]
         workers = workers or os.cpu_count() or 1
         used = 0
+        tally = _Tally()
         if todo:
-            pool = _pool(backend, workers, digest, version, match_timeout, address)
+            pool = _pool(backend, workers, digest, version, match_timeout, address, figures)
             used = pool.size
             try:
                 pool.warm_up(todo)  # compile the kernels once, before any worker, match clock or ETA starts
                 with RunProgress(len(todo), kind, enabled=progress) as bar:
                     for record in pool.run(todo):
                         _store(store, record, keys)
-                        bar.advance(record.error is not None)
+                        tally.add(record)
+                        bar.advance(record.error is not None, unblamed(record))
+                        if policy.exceeded(tally.finished, tally.unblamed):
+                            raise RunStopped(_stop_message(tally, policy, len(todo), store.path))
             finally:
                 pool.close()
         records = store.records(keys)
     return RunSummary(str(path), len(specs), len(specs) - len(todo), len(todo),
-                      sum(r.error is not None for r in records), time.monotonic() - start, used, records)
+                      sum(r.error is not None for r in records), time.monotonic() - start, used, records,
+                      tally.completed)
+
+
+def _stop_message(tally: _Tally, policy: FailurePolicy, todo: int, path: object) -> str:
+    return (f"run stopped: {tally.unblamed} of the {tally.finished} matches finished so far (of {todo} to play) "
+            f"failed with no team at fault, more than {policy.max_share:.0%} (the last: {tally.last_error}); "
+            f"every finished match is stored in {path}; fix the cause and run the same command again to resume "
+            "(the failed matches are played again)")
 
 
 def check_seeds(specs: Sequence[MatchSpec]) -> None:
@@ -129,14 +210,15 @@ def _store(store: ResultStore, record: MatchRecord, keys: list[tuple[str, str, i
                            "file's permissions) and re-run the same command to resume") from None
 
 
-def _pool(backend: str, workers: int, digest: str, version: str, timeout: float | None, address: str | None):
+def _pool(backend: str, workers: int, digest: str, version: str, timeout: float | None, address: str | None,
+          figures: Callable[[], object] | None = None):
     if backend == "ray":
         from experiments.runner.ray_backend import RayPool
 
         return RayPool(workers, digest, version, timeout, address)
     from experiments.runner.local import LocalPool
 
-    return LocalPool(workers, digest, version, timeout)
+    return LocalPool(workers, digest, version, timeout, figures)
 
 
 def replay_name(spec: MatchSpec) -> str:

@@ -1,10 +1,12 @@
 """Playing one match inside a worker process: never raises, always returns a record.
 
-A team that raises, returns a malformed command or overruns the time budget forfeits the
-match; the record names the side at fault and keeps the traceback. The time budget is
-enforced twice: here by a timer signal that interrupts the match where it hangs (so the
-traceback shows where), and by the parent, which kills a worker that does not answer a while
-after that (a hang inside compiled code the signal cannot interrupt).
+A team that raises (``sys.exit`` included), returns a malformed command or overruns the time
+budget forfeits the match; the record names the side at fault and keeps the traceback. The
+side whose code is running is also marked where the parent can read it (see
+:class:`_Watched`), so a crash of the whole worker inside a team's code is that team's
+forfeit. The time budget is enforced twice: here by a timer signal that interrupts the match
+where it hangs (so the traceback shows where), and by the parent, which kills a worker that
+does not answer a while after that (a hang inside compiled code the signal cannot interrupt).
 """
 
 from __future__ import annotations
@@ -13,9 +15,24 @@ import signal
 import threading
 import time
 import traceback as tb
+from collections.abc import Callable, MutableSequence
+from typing import Protocol
 
 from experiments.results.record import FORFEIT_NONE, MatchRecord
 from experiments.runner.spec import MatchSpec
+
+
+class MatchFigures(Protocol):
+    """A match recorder (``on_start``/``on_cycle``/``on_end``) that also reports figures of the
+    whole match once it is over (names prefixed ``match_`` by convention)."""
+
+    def on_start(self, match) -> None: ...
+
+    def on_cycle(self, match) -> None: ...
+
+    def on_end(self, match) -> None: ...
+
+    def figures(self) -> dict[str, float]: ...
 
 
 class MatchTimeout(Exception):
@@ -30,11 +47,13 @@ class MatchTimeout(Exception):
 
 
 class _Watched:
-    """A team wrapped so the worker knows which side was deciding when something went wrong.
+    """A team wrapped so the worker knows which side is running team code when something goes
+    wrong: ``deciding[0]`` holds the side while its ``reset``, ``act`` or any other method runs
+    (``statistics()``, drawing hooks, ...) and FORFEIT_NONE otherwise; ``deciding[1]`` the side
+    whose ``act`` returned last. ``deciding`` may be shared memory the parent reads when the
+    worker dies (see :mod:`experiments.runner.local`). A call that fails leaves its side marked."""
 
-    Forwards every other attribute (``statistics()``, drawing hooks, ...) to the team."""
-
-    def __init__(self, team: object, name: str, side: int, deciding: list[int]) -> None:
+    def __init__(self, team: object, name: str, side: int, deciding: MutableSequence[int]) -> None:
         self._team, self.name, self._side, self._deciding = team, name, side, deciding
 
     def reset(self, side_info, config, rng) -> None:
@@ -50,7 +69,17 @@ class _Watched:
         return command
 
     def __getattr__(self, name: str):
-        return getattr(self._team, name)
+        value = getattr(self._team, name)
+        if not callable(value):
+            return value
+
+        def marked(*args, **kwargs):
+            self._deciding[0] = self._side
+            result = value(*args, **kwargs)
+            self._deciding[0] = FORFEIT_NONE
+            return result
+
+        return marked
 
 
 def make_team(name: str) -> tuple[object, str]:
@@ -64,18 +93,26 @@ def make_team(name: str) -> tuple[object, str]:
     return resolve_team(name)
 
 
-def play_spec(spec: MatchSpec, config_hash: str, code_version: str, timeout: float | None) -> MatchRecord:
-    """Play ``spec`` and return its record; every failure becomes a forfeit or an error row."""
+def play_spec(spec: MatchSpec, config_hash: str, code_version: str, timeout: float | None,
+              deciding: MutableSequence[int] | None = None,
+              figures: Callable[[], MatchFigures] | None = None) -> MatchRecord:
+    """Play ``spec`` and return its record; every failure becomes a forfeit or an error row.
+
+    ``deciding``: two integers (a worker's shared slot) set to [side running team code now,
+    side whose act returned last], so a parent can blame the team whose code was running if the
+    worker dies; a private list if None. ``figures``: makes a recorder whose figures of the
+    whole match are added to both teams' statistics of a match played to its end."""
     from soccer_sim import run_match
 
     record = MatchRecord(spec.home, spec.away, spec.seed, config_hash, code_version)
-    deciding = [FORFEIT_NONE, FORFEIT_NONE]
-    """[side inside reset/act now, side whose act returned last]."""
+    if deciding is None:
+        deciding = [FORFEIT_NONE, FORFEIT_NONE]
+    deciding[0] = deciding[1] = FORFEIT_NONE
     start = time.perf_counter()
     alarm = _arm_timer(timeout)
     try:
         home, away = (_Watched(*make_team(name), side, deciding) for side, name in enumerate((spec.home, spec.away)))
-        recorders = []
+        recorders = [] if figures is None else [figures()]
         if spec.record is not None:
             from soccer_sim.replay import RerunRecorder
 
@@ -85,6 +122,10 @@ def play_spec(spec: MatchSpec, config_hash: str, code_version: str, timeout: flo
         record.home_goals, record.away_goals = (int(g) for g in result.score)
         record.cycles = int(result.cycles)
         record.home_stats, record.away_stats = (s.as_dict() for s in result.statistics)
+        if figures is not None:
+            extra = recorders[0].figures()
+            record.home_stats.update(extra)
+            record.away_stats.update(extra)
     except BaseException as exc:  # noqa: BLE001 - a worker must survive anything a team does
         _disarm_timer(alarm)
         if isinstance(exc, KeyboardInterrupt) and timeout is None:
@@ -92,11 +133,12 @@ def play_spec(spec: MatchSpec, config_hash: str, code_version: str, timeout: flo
         record.error = f"{type(exc).__name__}: {exc}"
         record.traceback = tb.format_exc()
         record.forfeit = _culprit(exc, spec, deciding)
+    deciding[0] = FORFEIT_NONE  # the match is over: no team's code runs until the next one
     record.wall_time = time.perf_counter() - start
     return record
 
 
-def _culprit(exc: BaseException, spec: MatchSpec, deciding: list[int]) -> int:
+def _culprit(exc: BaseException, spec: MatchSpec, deciding: MutableSequence[int]) -> int:
     """The side at fault: the one deciding when the failure struck, else the side a TeamError
     names (its last act() when both sides share the name), else nobody."""
     from soccer_sim import TeamError
@@ -131,8 +173,10 @@ def _disarm_timer(previous) -> None:
         signal.signal(signal.SIGALRM, previous)
 
 
-def failed_record(spec: MatchSpec, config_hash: str, code_version: str, seconds: float, message: str) -> MatchRecord:
+def failed_record(spec: MatchSpec, config_hash: str, code_version: str, seconds: float, message: str,
+                  forfeit: int = FORFEIT_NONE) -> MatchRecord:
     """The record of a match the parent had to give up on (its worker died or was stopped):
-    nobody is blamed, as the worker could not say which side was deciding."""
+    ``forfeit`` is the side whose code was running then, if the worker's slot says so; nobody
+    is blamed otherwise."""
     return MatchRecord(spec.home, spec.away, spec.seed, config_hash, code_version, error=message,
-                       traceback=message, forfeit=FORFEIT_NONE, wall_time=seconds)
+                       traceback=message, forfeit=forfeit, wall_time=seconds)

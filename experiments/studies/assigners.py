@@ -1,6 +1,6 @@
 """``soccer-sim experiment assigners``: does positioning matter, and what do the role assigners do?
 
-Three parts, each a set of matches on paired seeds: seed ``s`` is played twice, once with each
+Four parts, each a set of matches on paired seeds: seed ``s`` is played twice, once with each
 team at home, so that both sides of the pitch and both halves' noise are shared.
 
 * **league**: every pairing of the built-in teams given with ``--league`` (default: the
@@ -15,7 +15,11 @@ team at home, so that both sides of the pitch and both halves' noise are shared.
   role switches per minute, teammate contacts and distances to the role targets per match --
   SCRAM's claims in our game (MMDR switches least, SCRAM teams collide least).
 
-Matches run in a process pool (``--workers``, default: every core).
+The matches run on the local worker pool of every command that plays many matches
+(``--workers``, ``--match-timeout``) and are stored in a results file (``--out``): re-running
+the same command continues it, and a team that fails forfeits its match without stopping the
+study. The tables (from the matches played to their end) are printed and written as Markdown
+and CSV to ``--tables``.
 """
 
 from __future__ import annotations
@@ -23,17 +27,26 @@ from __future__ import annotations
 import argparse
 import itertools
 import math
-import os
-import time
 from collections import Counter
+from collections.abc import Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from experiments.commands.play import positive_int
 
+if TYPE_CHECKING:
+    from experiments.reporting import Table
+
+KIND = "assigners"
+PARTS = ("league", "chaser", "baselines", "claims")
 STALL_RADIUS = 3.0
 """The ball 'barely moves' while it stays within this distance of where it was (m)."""
+STALL_FIGURE = "match_longest_stall"
+SET_PLAY_PREFIX = "match_set_play_"
+"""The study's figures of the whole match, stored with both teams' statistics."""
 
 DEFAULT_LEAGUE = ("mmdr", "mmd+msd2", "static", "greedy", "bidding", "counter-442", "press-433", "possession")
 DEFAULT_CLAIMS = ("mmdr", "mmd+msd2", "greedy", "greedy-offense", "static", "bidding")
@@ -41,7 +54,7 @@ DEFAULT_CLAIMS = ("mmdr", "mmd+msd2", "greedy", "greedy-offense", "static", "bid
 
 @dataclass
 class MatchSummary:
-    """What a study keeps of one match (home first)."""
+    """What the study keeps of one match (home first)."""
 
     home: str
     away: str
@@ -51,19 +64,34 @@ class MatchSummary:
     passes: tuple[int, int]
     contacts: tuple[int, int]
     reported: tuple[dict[str, float], dict[str, float]]
+    """Each side's statistics, the figures its team reports included."""
     set_plays: dict[str, int] = field(default_factory=dict)
     longest_stall: int = 0
     """Longest run of play-on cycles with the ball within STALL_RADIUS of one point."""
     seconds: float = 0.0
 
+    @classmethod
+    def of(cls, record) -> MatchSummary:
+        """The summary of a stored match played to its end (a
+        :class:`~experiments.results.record.MatchRecord` with the study's figures)."""
+        home, away = record.home_stats, record.away_stats
+        set_plays = {name[len(SET_PLAY_PREFIX):]: int(count) for name, count in home.items()
+                     if name.startswith(SET_PLAY_PREFIX)}
+        return cls(record.home, record.away, record.seed, record.goals(), (home["shots"], away["shots"]),
+                   (home["passes"], away["passes"]), (home["teammate_contacts"], away["teammate_contacts"]),
+                   (dict(home), dict(away)), set_plays, int(home.get(STALL_FIGURE, 0)), record.wall_time)
 
-class _StallWatch:
-    """Recorder: the longest stretch of play on with the ball barely moving."""
+
+class StudyFigures:
+    """Recorder run in the worker with every match of the study: the longest stretch of play
+    on with the ball barely moving, and the set plays of each kind (see
+    :class:`~experiments.runner.worker.MatchFigures`)."""
 
     def on_start(self, match) -> None:
         self.anchor: np.ndarray | None = None
         self.since = 0
         self.longest = 0
+        self.set_plays: Counter[str] = Counter()
 
     def on_cycle(self, match) -> None:
         from soccer_sim.state import PlayMode
@@ -77,31 +105,16 @@ class _StallWatch:
         self.longest = max(self.longest, state.cycle - self.since)
 
     def on_end(self, match) -> None:
-        pass
+        from soccer_sim import EventKind, PlayMode
 
+        events = match.events.as_arrays()
+        modes = events["detail"][events["kind"] == EventKind.SET_PLAY]
+        self.set_plays = Counter(PlayMode(int(m)).name.lower() for m in modes
+                                 if m not in (PlayMode.PLAY_ON, PlayMode.TIME_OVER))
 
-def play_one(job: tuple[str, str, int, int | None]) -> MatchSummary:
-    """Play one match (``home``, ``away``, ``seed``, cycles or None) and summarise it."""
-    from soccer_sim import EventKind, MatchConfig, PlayMode, run_match
-
-    home, away, seed, cycles = job
-    watch = _StallWatch()
-    start = time.perf_counter()
-    result = run_match(home, away, seed=seed, config=MatchConfig(max_cycles=cycles), recorders=[watch])
-    events = result.events.as_arrays()
-    modes = events["detail"][events["kind"] == EventKind.SET_PLAY]
-    set_plays = Counter(PlayMode(int(m)).name.lower() for m in modes if m not in (PlayMode.PLAY_ON,
-                                                                                   PlayMode.TIME_OVER))
-    h, a = result.statistics
-    return MatchSummary(home, away, seed, result.score, (h.shots, a.shots), (h.passes, a.passes),
-                        (h.teammate_contacts, a.teammate_contacts), (dict(h.reported), dict(a.reported)),
-                        dict(set_plays), watch.longest, time.perf_counter() - start)
-
-
-def paired_jobs(team: str, opponent: str, games: int, seed: int, cycles: int | None) -> list[tuple]:
-    """``games`` matches (rounded up to even): each seed with ``team`` at home and away."""
-    return [job for s in range(seed, seed + (games + 1) // 2)
-            for job in ((team, opponent, s, cycles), (opponent, team, s, cycles))]
+    def figures(self) -> dict[str, float]:
+        return {STALL_FIGURE: self.longest,
+                **{SET_PLAY_PREFIX + kind: count for kind, count in sorted(self.set_plays.items())}}
 
 
 def goal_differences(summaries: list[MatchSummary], team: str) -> np.ndarray:
@@ -134,7 +147,11 @@ def team_figure(summaries: list[MatchSummary], team: str, figure: str) -> np.nda
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--part", choices=("all", "league", "chaser", "baselines", "claims"), default="all")
+    from experiments.commands import doc_summary
+    from experiments.runner.options import add_run_arguments
+
+    parser.description = doc_summary(__doc__)
+    parser.add_argument("--part", choices=("all", *PARTS), default="all")
     parser.add_argument("--games", type=positive_int, default=100,
                         help="matches per pairing, sides swapped on paired seeds (default: 100)")
     parser.add_argument("--league", default=",".join(DEFAULT_LEAGUE), help="teams of the league part")
@@ -142,125 +159,147 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="matches per pairing in the league part (default: 8)")
     parser.add_argument("--assigners", default=",".join(DEFAULT_CLAIMS), help="teams of the claims part")
     parser.add_argument("--opponent", default="press-433", help="opponent of the claims part")
-    parser.add_argument("--cycles", type=positive_int, default=None, help="cycles per match (default: full)")
-    parser.add_argument("--seed", type=int, default=0, help="first seed")
-    parser.add_argument("--workers", type=positive_int, default=os.cpu_count() or 1,
-                        help="processes (default: every core)")
-
-
-class _Runner:
-    """Plays jobs in one pool of ``workers`` processes kept for the whole study (or inline)."""
-
-    def __init__(self, workers: int) -> None:
-        self.pool = None
-        if workers > 1:
-            from multiprocessing import get_context
-
-            self.pool = get_context("spawn").Pool(workers)
-
-    def __call__(self, jobs: list[tuple]) -> list[MatchSummary]:
-        if self.pool is None:
-            return [play_one(job) for job in jobs]
-        return self.pool.map(play_one, jobs, chunksize=1)
-
-    def close(self) -> None:
-        if self.pool is not None:
-            self.pool.close()
-            self.pool.join()
-
-
-def _table(title: str, header: list[str], rows: list[list[str]]) -> None:
-    from experiments.reporting import Table
-
-    Table(title, header, rows).print()
-
-
-def _teams(text: str, option: str, minimum: int) -> list[str]:
-    """The comma-separated teams of ``option``, each registered or an importable path; a
-    RunInputError naming the option otherwise."""
-    from experiments.runner.options import team_list
-
-    return team_list(text, option, minimum=minimum)
+    add_run_arguments(parser, "assigners.sqlite")
 
 
 def run(args: argparse.Namespace) -> int:
-    from experiments.commands.errors import FAILED, fail
-    from experiments.runner.options import RunInputError
-    from soccer_sim import ConfigError, TeamError
+    from experiments.runner.options import run_command
 
-    parts = ("league", "chaser", "baselines", "claims") if args.part == "all" else (args.part,)
-    try:
-        if args.seed < 0:
-            raise RunInputError(f"--seed must be a non-negative integer, got {args.seed}")
-        league = _teams(args.league, "--league", 2 if "league" in parts else 0)
-        claims = _teams(args.assigners, "--assigners", 1 if "claims" in parts else 0)
-        opponent = _teams(args.opponent, "--opponent", 1)
-        if len(opponent) != 1:
-            raise RunInputError(f"--opponent: give one team, got {args.opponent!r}")
-        args.opponent = opponent[0]
-        if "chaser" in parts and not (league or claims):
-            raise RunInputError("the chaser part needs a team in --league or --assigners")
-    except RunInputError as exc:
-        return fail(str(exc))
-    start = time.perf_counter()
-    runner = _Runner(args.workers)
-    try:
-        _study(args, league, claims, runner)
-    except (TeamError, ConfigError) as exc:  # a team that broke during a match
-        return fail(str(exc), FAILED)
-    finally:
-        runner.close()
-    print(f"wall time {time.perf_counter() - start:.0f} s")
-    return 0
+    return run_command(args, KIND, _params, build_specs, report, figures=StudyFigures)
 
 
-def _study(args: argparse.Namespace, league: list[str], claims: list[str], runner: _Runner) -> None:
-    _run = runner
-    if args.part in ("all", "league"):
-        jobs = [job for a, b in itertools.combinations(league, 2)
-                for job in paired_jobs(a, b, args.league_games, args.seed, args.cycles)]
-        done = _run(jobs)
-        goals = np.array([sum(s.score) for s in done], float)
-        shots = np.array([sum(s.shots) for s in done], float)
-        passes = np.array([sum(s.passes) for s in done], float)
-        stalls = np.array([s.longest_stall for s in done], float)
-        kinds = Counter()
-        for s in done:
-            kinds.update({k: 1 for k in s.set_plays})
-        _table(f"league: {len(done)} matches between {len(league)} teams", ["per match (both teams)", "mean", "std. error", "max"],
-               [[name, f"{v.mean():.2f}", f"{v.std(ddof=1) / math.sqrt(v.size):.2f}", f"{v.max():.0f}"]
-                for name, v in (("goals", goals), ("shots", shots), ("passes received", passes),
-                                ("longest stall (cycles)", stalls))])
-        print("matches with each kind of set play: " + ", ".join(f"{k} {v}" for k, v in sorted(kinds.items())))
-        worst = max(done, key=lambda s: s.longest_stall)
-        print(f"longest stall: {worst.longest_stall} cycles, {worst.home} v {worst.away}, seed {worst.seed}")
-    if args.part in ("all", "chaser"):
-        rows = []
-        for team in dict.fromkeys([*league, *claims]):
-            done = _run(paired_jobs(team, "chaser", args.league_games, args.seed, args.cycles))
-            gd = goal_differences(done, team)
-            rows.append([team, str(gd.size), f"{gd.mean():+.2f}", f"{gd.min():+.0f}"])
-        _table("every team against chaser", ["team", "games", "mean GD", "worst GD"], rows)
-    if args.part in ("all", "baselines"):
-        rows = []
-        for opponent in ("random", "statues"):
-            done = _run(paired_jobs("mmd+msd2", opponent, args.games, args.seed, args.cycles))
-            gd = goal_differences(done, "mmd+msd2")
-            mean, se, low, high = mean_interval(gd)
-            wins, draws = int((gd > 0).sum()), int((gd == 0).sum())
-            rows.append([f"mmd+msd2 vs {opponent}", str(gd.size), f"{mean:+.2f}", f"{se:.2f}", f"[{low:+.2f}, {high:+.2f}]",
-                         f"{wins}/{draws}/{gd.size - wins - draws}"])
-        _table("baselines: goal difference of mmd+msd2", ["pairing", "games", "mean GD", "SE", "95% CI", "W/D/L"], rows)
-    if args.part in ("all", "claims"):
-        rows = []
-        for team in claims:
-            done = _run(paired_jobs(team, args.opponent, args.games, args.seed, args.cycles))
-            gd = goal_differences(done, team)
-            cells = [team, f"{gd.mean():+.2f} ({gd.std(ddof=1) / math.sqrt(gd.size):.2f})"]
-            for figure in ("role_switches_per_minute", "contacts", "target_distance_mean", "target_distance_max"):
-                values = team_figure(done, team, figure)
-                cells.append(f"{values.mean():.2f} ({values.std(ddof=1) / math.sqrt(values.size):.2f})")
-            rows.append(cells)
-        _table(f"claims: each assigner against {args.opponent}, {args.games} games, mean (SE) per match",
-               ["team", "GD", "role switches / min", "teammate contacts", "mean distance to target (m)",
-                "largest distance to target (m)"], rows)
+def _params(args: argparse.Namespace) -> dict:
+    """The study's parameters, every team list checked (a RunInputError naming the option)."""
+    from experiments.runner.options import RunInputError, team_list
+
+    parts = list(PARTS) if args.part == "all" else [args.part]
+    league = team_list(args.league, "--league", 2 if "league" in parts else 0)
+    claims = team_list(args.assigners, "--assigners", 1 if "claims" in parts else 0)
+    opponent = team_list(args.opponent, "--opponent", 1)
+    if len(opponent) != 1:
+        raise RunInputError(f"--opponent: give one team, got {args.opponent!r}")
+    if "chaser" in parts and not (league or claims):
+        raise RunInputError("the chaser part needs a team in --league or --assigners")
+    return {"parts": parts, "league": league, "claims": claims, "opponent": opponent[0], "games": args.games,
+            "league_games": args.league_games, "seed": args.seed, "cycles": args.cycles}
+
+
+def groups(params: dict) -> list[tuple[str, str, list]]:
+    """(part, team or opponent, specs) of every table row of the study, in table order."""
+    from experiments.runner.spec import paired_specs
+
+    seed, cycles, league, claims = params["seed"], params["cycles"], params["league"], params["claims"]
+    found = []
+    if "league" in params["parts"]:
+        found.append(("league", "", [spec for a, b in itertools.combinations(league, 2)
+                                     for spec in paired_specs(a, b, params["league_games"], seed, cycles)]))
+    if "chaser" in params["parts"]:
+        found += [("chaser", team, paired_specs(team, "chaser", params["league_games"], seed, cycles))
+                  for team in dict.fromkeys([*league, *claims])]
+    if "baselines" in params["parts"]:
+        found += [("baselines", opponent, paired_specs("mmd+msd2", opponent, params["games"], seed, cycles))
+                  for opponent in ("random", "statues")]
+    if "claims" in params["parts"]:
+        found += [("claims", team, paired_specs(team, params["opponent"], params["games"], seed, cycles))
+                  for team in claims]
+    return found
+
+
+def build_specs(params: dict) -> list:
+    """Every match of the study once (parts share the matches they have in common)."""
+    return list(dict.fromkeys(spec for _, _, specs in groups(params) for spec in specs))
+
+
+def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list[Path]:
+    """Print the tables of the parts run, from the matches played to their end (in the order
+    the study lists them); with ``out_dir`` write them as assigners.md and one CSV per part."""
+    from experiments.reporting import write_csv, write_markdown
+
+    by_key = {record.key: record for record in records if record.played}
+    tables: dict[str, Table] = {}
+    league_lines: list[str] = []
+    for part, name, specs in groups(params):
+        done = [MatchSummary.of(by_key[spec.key]) for spec in specs if spec.key in by_key]
+        if part == "league":
+            league_lines = _league(done, params, tables)
+        else:
+            _row(part, name, done, params, tables)
+    for part in PARTS:
+        if part in tables:
+            tables[part].print()
+        if part == "league":
+            for line in league_lines:
+                print(line)
+    if out_dir is None:
+        return []
+    written = [write_csv(out_dir / f"{part}.csv", table.header, table.rows) for part, table in tables.items()]
+    cycles = params["cycles"] or "regulation (6000)"
+    written.append(write_markdown(out_dir / "assigners.md", list(tables.values()),
+                                  f"Assigners study: seeds from {params['seed']}, cycles per match: {cycles}."
+                                  + "".join(f"\n\n{line}" for line in league_lines)))
+    print("wrote " + ", ".join(str(path) for path in written))
+    return written
+
+
+def _table(tables: dict[str, Table], part: str, title: str, header: list[str]) -> Table:
+    """The table of ``part`` (made on its first row)."""
+    from experiments.reporting import Table
+
+    if part not in tables:
+        tables[part] = Table(title, header)
+    return tables[part]
+
+
+def _league(done: list[MatchSummary], params: dict, tables: dict[str, Table]) -> list[str]:
+    """The league table (added to ``tables``) and its two lines of text."""
+    if not done:
+        return ["league: no match was played to its end"]
+    goals = np.array([sum(s.score) for s in done], float)
+    shots = np.array([sum(s.shots) for s in done], float)
+    passes = np.array([sum(s.passes) for s in done], float)
+    stalls = np.array([s.longest_stall for s in done], float)
+    kinds = Counter()
+    for s in done:
+        kinds.update({k: 1 for k in s.set_plays})
+    table = _table(tables, "league", f"league: {len(done)} matches between {len(params['league'])} teams",
+                   ["per match (both teams)", "mean", "std. error", "max"])
+    table.rows += [[name, f"{v.mean():.2f}", f"{v.std(ddof=1) / math.sqrt(v.size):.2f}", f"{v.max():.0f}"]
+                   for name, v in (("goals", goals), ("shots", shots), ("passes received", passes),
+                                   ("longest stall (cycles)", stalls))]
+    worst = max(done, key=lambda s: s.longest_stall)
+    return ["matches with each kind of set play: " + ", ".join(f"{k} {v}" for k, v in sorted(kinds.items())),
+            f"longest stall: {worst.longest_stall} cycles, {worst.home} v {worst.away}, seed {worst.seed}"]
+
+
+def _row(part: str, name: str, done: list[MatchSummary], params: dict, tables: dict[str, Table]) -> None:
+    """One row of the chaser, baselines or claims table (``-`` where no match was played)."""
+    if part == "chaser":
+        gd = goal_differences(done, name)
+        table = _table(tables, part, "every team against chaser", ["team", "games", "mean GD", "worst GD"])
+        table.rows.append([name, str(gd.size), f"{gd.mean():+.2f}" if gd.size else "-",
+                           f"{gd.min():+.0f}" if gd.size else "-"])
+    elif part == "baselines":
+        gd = goal_differences(done, "mmd+msd2")
+        mean, se, low, high = mean_interval(gd)
+        wins, draws = int((gd > 0).sum()), int((gd == 0).sum())
+        table = _table(tables, part, "baselines: goal difference of mmd+msd2",
+                       ["pairing", "games", "mean GD", "SE", "95% CI", "W/D/L"])
+        table.rows.append([f"mmd+msd2 vs {name}", str(gd.size), f"{mean:+.2f}", f"{se:.2f}",
+                           f"[{low:+.2f}, {high:+.2f}]", f"{wins}/{draws}/{gd.size - wins - draws}"])
+    else:
+        gd = goal_differences(done, name)
+        table = _table(tables, part, f"claims: each assigner against {params['opponent']}, {params['games']} games, "
+                                     "mean (SE) per match",
+                       ["team", "GD", "role switches / min", "teammate contacts", "mean distance to target (m)",
+                        "largest distance to target (m)"])
+        cells = [name, _mean_se(gd, signed=True)]
+        for figure in ("role_switches_per_minute", "contacts", "target_distance_mean", "target_distance_max"):
+            cells.append(_mean_se(team_figure(done, name, figure)))
+        table.rows.append(cells)
+
+
+def _mean_se(values: np.ndarray, signed: bool = False) -> str:
+    """``mean (SE)`` of ``values`` (``-`` for none)."""
+    if values.size == 0:
+        return "-"
+    return f"{values.mean():{'+' if signed else ''}.2f} ({values.std(ddof=1) / math.sqrt(values.size):.2f})"

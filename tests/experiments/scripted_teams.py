@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import os
 import signal
+import sys
 import time
 
 import numpy as np
@@ -63,6 +64,31 @@ class CrashingTeam(_Still):
 
     def misbehave(self) -> None:
         os._exit(3)
+
+
+class ExitingTeam(_Still):
+    """Calls sys.exit inside act(): its own fault, like any exception."""
+
+    def misbehave(self) -> None:
+        sys.exit(1)
+
+
+class CrashingFigures:
+    """A match recorder (a ``figures`` factory of the runner) that ends its worker abruptly at
+    cycle 5, outside any team's code: a failure no team is to blame for."""
+
+    def on_start(self, match) -> None:
+        pass
+
+    def on_cycle(self, match) -> None:
+        if match.state.cycle >= 5:
+            os._exit(1)
+
+    def on_end(self, match) -> None:
+        pass
+
+    def figures(self) -> dict[str, float]:
+        return {}
 
 
 class Constant:

@@ -6,16 +6,21 @@ import numpy as np
 import pytest
 
 from experiments.cli import main
-from experiments.studies.assigners import MatchSummary, goal_differences, mean_interval, paired_jobs, team_figure
+from experiments.runner import MatchSpec
+from experiments.studies.assigners import MatchSummary, build_specs, goal_differences, mean_interval, team_figure
 
 
 def summary(home, away, score, contacts=(0, 0), reported=({}, {})):
     return MatchSummary(home, away, 0, score, (0, 0), (0, 0), contacts, reported)
 
 
-def test_paired_jobs_play_each_seed_with_both_sides_at_home() -> None:
-    assert paired_jobs("a", "b", 3, 5, 100) == [("a", "b", 5, 100), ("b", "a", 5, 100), ("a", "b", 6, 100),
-                                                ("b", "a", 6, 100)]
+def test_each_seed_is_played_with_both_sides_at_home_and_parts_share_their_matches() -> None:
+    params = {"parts": ["baselines", "claims"], "league": [], "claims": ["mmd+msd2"], "opponent": "random",
+              "games": 3, "league_games": 2, "seed": 5, "cycles": 100}
+    assert build_specs(params) == [MatchSpec("mmd+msd2", "random", 5, 100), MatchSpec("random", "mmd+msd2", 5, 100),
+                                   MatchSpec("mmd+msd2", "random", 6, 100), MatchSpec("random", "mmd+msd2", 6, 100),
+                                   MatchSpec("mmd+msd2", "statues", 5, 100), MatchSpec("statues", "mmd+msd2", 5, 100),
+                                   MatchSpec("mmd+msd2", "statues", 6, 100), MatchSpec("statues", "mmd+msd2", 6, 100)]
 
 
 def test_goal_differences_and_interval_by_hand() -> None:
@@ -32,9 +37,10 @@ def test_goal_differences_and_interval_by_hand() -> None:
     assert team_figure(figures, "a", "x").tolist() == [1.5, 2.5]
 
 
-def test_the_study_runs_end_to_end(capsys) -> None:
+def test_the_study_runs_end_to_end(capsys, tmp_path) -> None:
     code = main(["experiment", "assigners", "--league", "static,press-433", "--league-games", "2", "--games", "2",
-                 "--assigners", "static", "--cycles", "120", "--workers", "1"])
+                 "--assigners", "static", "--cycles", "120", "--workers", "1", "--out", str(tmp_path / "a.sqlite"),
+                 "--no-progress"])
     assert code == 0
     out = capsys.readouterr().out
     for heading in ("league", "every team against chaser", "baselines", "claims", "longest stall", "95% CI"):

@@ -1,5 +1,5 @@
 """The runner keeps going when teams fail: an erroring, a hanging, a deaf-hanging and a
-crashing team are recorded (forfeit or not-played) and the other matches are played."""
+crashing team are recorded as forfeits of the team at fault and the other matches are played."""
 
 from __future__ import annotations
 
@@ -35,10 +35,10 @@ def test_failing_teams_are_recorded_and_the_run_completes(tmp_path, monkeypatch)
     assert hung.forfeit == 1 and "MatchTimeout" in hung.error and "time.sleep" in hung.traceback
 
     deaf = by_home[(SCRIPTED + "DeafHangingTeam", "idle", 0)]
-    assert deaf.forfeit == -1 and "killed" in deaf.error
+    assert deaf.forfeit == 0 and "killed" in deaf.error and "DeafHangingTeam" in deaf.error
 
     crashed = by_home[(SCRIPTED + "CrashingTeam", "idle", 0)]
-    assert crashed.forfeit == -1 and "exit code 3" in crashed.error
+    assert crashed.forfeit == 0 and "exit code 3" in crashed.error
 
     for seed in (0, 1):
         played = by_home[("chaser", "idle", seed)]
@@ -51,13 +51,13 @@ def test_failing_teams_are_recorded_and_the_run_completes(tmp_path, monkeypatch)
     assert table["chaser"].wins >= 2
 
 
-def test_rerun_keeps_forfeits_and_replays_unblamed_failures(tmp_path) -> None:
+def test_rerun_keeps_forfeits_a_crash_inside_act_included(tmp_path) -> None:
     specs = [MatchSpec(SCRIPTED + "RaisingTeam", "idle", 0, 50), MatchSpec(SCRIPTED + "CrashingTeam", "idle", 0, 50)]
     path = tmp_path / "r.sqlite"
     first = run_matches(specs, path, "tournament", {}, cycles=50, workers=1, progress=False)
     assert first.played == 2
     again = run_matches(specs, path, "tournament", {}, cycles=50, workers=1, progress=False)
-    assert (again.already_stored, again.played) == (1, 1)          # only the worker crash is retried
+    assert (again.already_stored, again.played) == (2, 0)          # the crash was the team's: kept
     retried = run_matches(specs, path, "tournament", {}, cycles=50, workers=1, progress=False, retry_errors=True)
     assert (retried.already_stored, retried.played) == (0, 2)
     assert len(retried.records) == 2

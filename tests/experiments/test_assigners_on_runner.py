@@ -1,0 +1,75 @@
+"""``soccer-sim experiment assigners`` on the shared runner: a failing or hanging team is a
+forfeit, not the end of the study; a stopped study resumes; the tables do not depend on the
+number of workers or on resuming; ``results show`` repeats them; the study's own figures of
+a match are the same whether the match is played in a worker or here."""
+
+from __future__ import annotations
+
+from experiments.cli import main
+from experiments.runner import MatchSpec, config_for, run_matches
+from experiments.studies.assigners import SET_PLAY_PREFIX, STALL_FIGURE, MatchSummary, StudyFigures
+from tests.experiments.conftest import SCRIPTED
+
+STUDY = ["experiment", "assigners", "--cycles", "60", "--no-progress"]
+
+
+def tables_only(out: str) -> list[str]:
+    """The printed tables and lines of the study, without the runner's and the file lines."""
+    return [line for line in out.splitlines() if " matches in " not in line and not line.startswith("wrote ")]
+
+
+def test_a_failing_and_a_hanging_team_forfeit_and_the_study_goes_on(tmp_path, capsys) -> None:
+    raising, hanging = SCRIPTED + "RaisingTeam", SCRIPTED + "HangingTeam"
+    code = main([*STUDY, "--part", "league", "--league", f"idle,chaser,{raising},{hanging}", "--league-games", "2",
+                 "--workers", "2", "--match-timeout", "2", "--out", str(tmp_path / "a.sqlite")])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    assert "Traceback" not in err and "error" not in err
+    assert "league: 2 matches between 4 teams" in out              # idle v chaser, both seeds' sides
+    assert f"forfeited by {raising}" in out and "MatchTimeout" in out
+    assert (tmp_path / "a-tables" / "league.csv").is_file() and (tmp_path / "a-tables" / "assigners.md").is_file()
+
+
+def test_a_resumed_study_prints_the_same_tables_as_one_run_and_as_results_show(tmp_path, capsys) -> None:
+    whole, resumed = tmp_path / "whole.sqlite", tmp_path / "resumed.sqlite"
+    teams = ["--league", "idle,static", "--assigners", "static"]
+    assert main([*STUDY, "--part", "chaser", *teams, "--league-games", "2", "--workers", "2", "--out", str(whole)]) == 0
+    reference = tables_only(capsys.readouterr().out)
+    assert any("every team against chaser" in line for line in reference)
+    # Half of the study first (as if stopped), then all of it on one worker: only the rest is played.
+    assert main([*STUDY, "--part", "chaser", "--league", "idle", "--assigners", "idle", "--league-games", "2",
+                 "--workers", "1", "--out", str(resumed)]) == 0
+    capsys.readouterr()
+    assert main([*STUDY, "--part", "chaser", *teams, "--league-games", "2", "--workers", "1",
+                 "--out", str(resumed)]) == 0
+    out = capsys.readouterr().out
+    assert "4 matches in" in out and "(2 already stored): played 2" in out
+    assert tables_only(out) == reference
+    assert main(["results", "show", str(resumed)]) == 0
+    shown = capsys.readouterr().out.splitlines()
+    assert shown[0].startswith(f"{resumed}: assigners, 4 of 4 matches stored (0 failed)")
+    assert shown[1:] == reference
+
+
+def test_the_studys_figures_are_the_same_in_a_worker_and_here(tmp_path) -> None:
+    from soccer_sim import run_match
+
+    spec = MatchSpec("chaser", "static", 3, 400)
+    (record,) = run_matches([spec], tmp_path / "f.sqlite", "assigners", {}, cycles=400, workers=1, progress=False,
+                            figures=StudyFigures).records
+    here = StudyFigures()
+    result = run_match("chaser", "static", seed=3, config=config_for(400), recorders=[here])
+    summary = MatchSummary.of(record)
+    assert summary.score == tuple(int(g) for g in result.score)
+    assert summary.longest_stall == here.longest > 0
+    assert summary.set_plays == dict(here.set_plays) and summary.set_plays   # a kick-off at least
+    assert record.home_stats[STALL_FIGURE] == record.away_stats[STALL_FIGURE]
+    assert all(name.startswith(SET_PLAY_PREFIX) for name in record.home_stats if "set_play" in name)
+
+
+def test_the_ray_backend_is_refused_in_one_line(tmp_path, capsys) -> None:
+    assert main([*STUDY, "--part", "chaser", "--league", "idle", "--backend", "ray",
+                 "--out", str(tmp_path / "r.sqlite")]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 1 and "leave out --backend ray" in err[0]
+    assert not (tmp_path / "r.sqlite").exists()
