@@ -29,7 +29,7 @@ the match's last cycle.
 **Scenarios** (:mod:`soccer_sim.scenarios`): the sides may differ in size (player rows
 ``0..h-1`` home, the rest away) and a side may have no goalkeeper (no catch); play may open
 with any set play or in play on (:meth:`Referee.start`); without set plays every restart
-becomes a dropped ball on its spot (:meth:`PlayModes.drop_ball`); the match may end early
+becomes a dropped ball on its spot (:meth:`~soccer_sim.rules.play_modes.PlayModes.drop_ball`); the match may end early
 (:meth:`Referee.stop`, or a shorter ``end_cycle``) and may have no half time.
 
 **Events.** ``KICK``: every kick applied. ``GOAL``: team = scoring team, player = last
