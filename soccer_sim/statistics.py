@@ -37,7 +37,7 @@ class TeamStatistics:
     goals: int = 0
     shots: int = 0
     """Kicks whose noiseless path crosses the opponents' goal line between the posts, plus every
-    goal scored without such a kick (see the SHOT event in :mod:`soccer_sim.referee`)."""
+    goal scored without such a kick (see the SHOT event in :mod:`soccer_sim.analysis.plays`)."""
     kicks: int = 0
     passes: int = 0
     """Kicks received by a team-mate (kick, body touch or catch) with no opponent touch between."""

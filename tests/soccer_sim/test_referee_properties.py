@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from soccer_sim.config import MatchConfig
-from soccer_sim.offside import mark_offside_positions
+from soccer_sim.rules.offside import mark_offside_positions
 from soccer_sim.state import AWAY, HOME, EventKind, PlayMode
 from tests.soccer_sim.referee_world import N, make_world, step
 
