@@ -65,10 +65,14 @@ def make_team(name: str) -> tuple[object, str]:
 
 
 def play_spec(spec: MatchSpec, config_hash: str, code_version: str, timeout: float | None) -> MatchRecord:
-    """Play ``spec`` and return its record; every failure becomes a forfeit or an error row."""
+    """Play ``spec`` and return its record; every failure becomes a forfeit or an error row.
+
+    The record carries the code version of this process (the code that really played), not
+    the ``code_version`` the caller expects; the caller compares them."""
+    from experiments.runner.fingerprint import code_version as running_code_version
     from soccer_sim import run_match
 
-    record = MatchRecord(spec.home, spec.away, spec.seed, config_hash, code_version)
+    record = MatchRecord(spec.home, spec.away, spec.seed, config_hash, running_code_version())
     deciding = [FORFEIT_NONE, FORFEIT_NONE]
     """[side inside reset/act now, side whose act returned last]."""
     start = time.perf_counter()
