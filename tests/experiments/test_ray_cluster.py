@@ -1,0 +1,231 @@
+"""The Ray backend on a real multi-node cluster in this process (``ray.cluster_utils.Cluster``):
+nodes that cannot import the project or run different code are found before any match and
+left out, the code version stored is the one each worker ran, the cluster RAY_ADDRESS names is
+joined without local resources, and nodes that leave or join during a run are followed.
+
+Every node's worker processes get their own PYTHONPATH (``env_vars`` of the node): this
+checkout (a good node), a copy of the project with one source file changed (different code),
+or a directory whose ``sitecustomize`` hides the editable install (a venv with Ray but without
+the project). The driver runs from an empty directory so Ray does not put a checkout on the
+workers' path."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+
+from experiments.cli import main
+from experiments.results.store import ResultStore
+from experiments.runner.fingerprint import DIGITS, PACKAGES, package_dirs, source_digest
+from experiments.runner.preflight import failure_reason
+from experiments.runner.spec import MatchSpec, code_version, config_for, config_hash
+
+ROOT = Path(__file__).resolve().parents[2]
+
+HIDE_PROJECT = '''"""Hide the editable install of the project: this interpreter plays a venv without it."""
+import sys
+
+sys.meta_path[:] = [f for f in sys.meta_path if "__editable__" not in getattr(f, "__module__", "")]
+'''
+
+
+def copy_project(destination: Path, change: str | None = None) -> Path:
+    """The four packages copied under ``destination`` (no caches), with ``change`` (a relative
+    path) given an extra line of code."""
+    for name in PACKAGES:
+        shutil.copytree(ROOT / name, destination / name, ignore=shutil.ignore_patterns("__pycache__"))
+    if change:
+        with open(destination / change, "a") as file:
+            file.write("\nLOCAL_CHANGE = True\n")
+    return destination
+
+
+# ---- the code version (no Ray) -----------------------------------------------------------------
+
+def test_code_version_is_the_hash_of_the_imported_sources(tmp_path) -> None:
+    dirs = package_dirs()
+    assert all(dirs[name] == ROOT / name for name in PACKAGES)  # this checkout is what the tests import
+    assert code_version() == source_digest(dirs)[:DIGITS]
+    same = copy_project(tmp_path / "same")
+    (same / "agents" / "__pycache__").mkdir(exist_ok=True)
+    (same / "agents" / "__pycache__" / "stale.py").write_text("x = 1\n")  # caches are not code
+    assert source_digest({name: same / name for name in PACKAGES}) == source_digest(dirs)
+    changed = copy_project(tmp_path / "changed", "agents/skills.py")
+    assert source_digest({name: changed / name for name in PACKAGES}) != source_digest(dirs)
+
+
+def test_package_data_that_changes_play_is_part_of_the_code_version(tmp_path) -> None:
+    project = copy_project(tmp_path / "p")
+    dirs = {name: project / name for name in PACKAGES}
+    before = source_digest(dirs)
+    formation = next((project / "formations" / "data").glob("*.json"))
+    formation.write_text(formation.read_text() + " ")
+    assert source_digest(dirs) != before
+
+
+def test_a_played_record_carries_the_code_version_of_the_process_that_played(tmp_path) -> None:
+    from experiments.runner.worker import play_spec
+
+    spec = MatchSpec("chaser", "idle", 3, 20)
+    record = play_spec(spec, config_hash(config_for(20)), "the driver's version", None)
+    assert record.error is None
+    assert record.code_version == code_version() != "the driver's version"
+
+
+def test_failure_reason_names_the_missing_module() -> None:
+    error = RuntimeError("The remote function failed to import on the worker.\n  Traceback ...\n"
+                         "ModuleNotFoundError: No module named 'experiments'")
+    assert failure_reason(error) == "cannot import the project (No module named 'experiments')"
+    assert failure_reason(OSError("first\nlast line")) == "OSError: last line"
+
+
+def test_code_is_shipped_as_py_modules_to_a_cluster_and_on_pythonpath_to_a_local_instance() -> None:
+    from experiments.runner.ray_backend import code_runtime_env
+
+    cluster = code_runtime_env(local=False)
+    assert sorted(cluster["py_modules"]) == sorted(str(ROOT / name) for name in PACKAGES)
+    assert "__pycache__" in cluster["excludes"]
+    local = code_runtime_env(local=True)
+    assert local["env_vars"]["PYTHONPATH"].split(":")[0] == str(ROOT)
+
+
+# ---- a cluster in this process ------------------------------------------------------------------
+
+ray = pytest.importorskip("ray")
+
+
+@pytest.fixture
+def cluster(tmp_path, monkeypatch):
+    """A one-node cluster (the head, a good node) torn down afterwards; the driver runs from an
+    empty directory and RAY_ADDRESS is unset."""
+    from ray.cluster_utils import Cluster
+
+    driver = tmp_path / "driver"
+    driver.mkdir()
+    monkeypatch.chdir(driver)
+    monkeypatch.delenv("RAY_ADDRESS", raising=False)
+    made = Cluster(initialize_head=True, head_node_args={"num_cpus": 1, "env_vars": {"PYTHONPATH": str(ROOT)}})
+    try:
+        yield made
+    finally:
+        ray.shutdown()
+        made.shutdown()
+
+
+def add_good_node(cluster, cpus: int = 1):
+    return cluster.add_node(num_cpus=cpus, env_vars={"PYTHONPATH": str(ROOT)})
+
+
+def add_bare_node(cluster, tmp_path: Path):
+    hidden = tmp_path / "bare"
+    hidden.mkdir()
+    (hidden / "sitecustomize.py").write_text(HIDE_PROJECT)
+    return cluster.add_node(num_cpus=1, env_vars={"PYTHONPATH": str(hidden)})
+
+
+def add_other_code_node(cluster, tmp_path: Path):
+    other = copy_project(tmp_path / "other", "soccer_sim/__init__.py")
+    node = cluster.add_node(num_cpus=1, env_vars={"PYTHONPATH": str(other)})
+    return node, source_digest({name: other / name for name in PACKAGES})[:DIGITS]
+
+
+TOURNAMENT = ["tournament", "--teams", "chaser,idle", "--games", "4", "--cycles", "100", "--workers", "2",
+              "--no-progress", "--backend", "ray"]
+
+
+def test_nodes_without_the_project_or_with_other_code_are_excluded_and_nothing_wrong_is_stored(
+        cluster, tmp_path, monkeypatch, capsys) -> None:
+    bare = add_bare_node(cluster, tmp_path)
+    other, other_version = add_other_code_node(cluster, tmp_path)
+    monkeypatch.setenv("RAY_ADDRESS", cluster.address)  # as under `ray job submit`: no --address
+    out = tmp_path / "cluster.sqlite"
+    assert main([*TOURNAMENT, "--no-ship-code", "--out", str(out)]) == 0
+    err = capsys.readouterr().err
+    assert f"joined the cluster at {cluster.address} (RAY_ADDRESS): 3 node(s), 3 CPU(s) used" in err
+    assert (f"node {bare.node_id} ({bare.node_ip_address}) excluded: cannot import the project "
+            "(No module named 'experiments')") in err
+    assert (f"node {other.node_id} ({other.node_ip_address}) excluded: runs different code "
+            f"(version {other_version} != driver's {code_version()})") in err
+    assert other_version != code_version()
+    with ResultStore.open(out) as store:
+        records = store.records()
+    assert len(records) == 4
+    assert all(record.error is None for record in records)
+    assert {record.code_version for record in records} == {code_version()}
+
+
+@pytest.mark.slow
+def test_with_code_shipped_a_node_without_the_project_plays(cluster, tmp_path, capsys) -> None:
+    from experiments.runner.ray_backend import RayPool
+
+    bare = add_bare_node(cluster, tmp_path)
+    version = code_version()
+    pool = RayPool(None, config_hash(config_for(100)), version, None, cluster.address, ship_code=True)
+    try:
+        specs = [MatchSpec("chaser", "idle", seed, 100) for seed in range(6)]
+        pool.warm_up(specs)
+        records = list(pool.run(specs))
+        played = pool.played_per_node
+    finally:
+        pool.close()
+    assert "excluded" not in capsys.readouterr().err
+    assert sorted(r.seed for r in records) == list(range(6))
+    assert all(r.error is None and r.code_version == version for r in records)
+    assert played.get(f"node {bare.node_id} ({bare.node_ip_address})", 0) > 0
+
+
+@pytest.mark.slow
+def test_a_node_that_leaves_mid_run_has_its_matches_played_elsewhere(cluster, tmp_path, capsys) -> None:
+    from experiments.runner.ray_backend import RayPool
+
+    leaving = add_good_node(cluster)
+    version = code_version()
+    pool = RayPool(None, config_hash(config_for(2000)), version, None, cluster.address, ship_code=False)
+    specs = [MatchSpec("chaser", "idle", seed, 2000) for seed in range(8)]
+    records = []
+    try:
+        pool.warm_up(specs)
+        for record in pool.run(specs):
+            records.append(record)
+            if len(records) == 1:
+                cluster.remove_node(leaving, allow_graceful=False)
+    finally:
+        pool.close()
+    err = capsys.readouterr().err
+    assert f"node {leaving.node_id} ({leaving.node_ip_address}) excluded" in err
+    assert sorted(r.seed for r in records) == list(range(8))
+    assert all(r.error is None and r.code_version == version for r in records)
+
+
+@pytest.mark.slow
+def test_a_node_that_joins_mid_run_is_checked_and_used(cluster, tmp_path) -> None:
+    from experiments.runner.ray_backend import RayPool
+
+    version = code_version()
+    pool = RayPool(None, config_hash(config_for(1500)), version, None, cluster.address, ship_code=False)
+    specs = [MatchSpec("chaser", "idle", seed, 1500) for seed in range(12)]
+    records, joined = [], None
+    try:
+        pool.warm_up(specs)
+        for record in pool.run(specs):
+            records.append(record)
+            if joined is None:
+                joined = add_good_node(cluster)
+        played = pool.played_per_node
+    finally:
+        pool.close()
+    assert len(records) == 12 and all(r.error is None for r in records)
+    assert played.get(f"node {joined.node_id} ({joined.node_ip_address})", 0) > 0
+
+
+@pytest.mark.slow
+def test_without_address_a_cluster_on_this_machine_is_not_joined(cluster, tmp_path, capsys) -> None:
+    out = tmp_path / "local.sqlite"
+    assert main([*TOURNAMENT, "--workers", "1", "--out", str(out)]) == 0
+    err = capsys.readouterr().err
+    assert "started a private local Ray instance: 1 node(s), 1 CPU(s) used" in err
+    with ResultStore.open(out) as store:
+        assert len(store.records()) == 4
+
