@@ -101,6 +101,8 @@ class _Task:
     node: _Node
     started: float
     attempt: int
+    failed_on: frozenset[str] = frozenset()
+    """Nodes this match failed on before (tried last)."""
 
 
 def code_runtime_env(local: bool) -> dict:
@@ -115,6 +117,15 @@ def code_runtime_env(local: bool) -> dict:
         existing = [entry for entry in os.environ.get("PYTHONPATH", "").split(os.pathsep) if entry]
         return {"env_vars": {"PYTHONPATH": os.pathsep.join(dict.fromkeys(roots + existing))}}
     return {"py_modules": [str(path) for path in dirs.values()], "excludes": SHIP_EXCLUDES}
+
+
+def _node_gone(exc: BaseException) -> bool:
+    """Whether a task failed because its node died or no longer exists."""
+    from ray import exceptions
+
+    gone = tuple(getattr(exceptions, name) for name in ("NodeDiedError", "TaskUnschedulableError")
+                 if hasattr(exceptions, name))
+    return isinstance(exc, gone)
 
 
 class RayPool:
@@ -231,7 +242,7 @@ class RayPool:
 
     def _requeue(self, task: _Task, message: str) -> list[MatchRecord]:
         if task.attempt < MATCH_RETRIES:
-            self._pending.appendleft((task.spec, task.attempt + 1))
+            self._pending.appendleft((task.spec, task.attempt + 1, task.failed_on | {task.node.id}))
             return []
         config_hash, version, _ = self._args
         return [failed_record(task.spec, config_hash, version, time.monotonic() - task.started,
@@ -253,7 +264,7 @@ class RayPool:
 
             warm_kernels(teams, processes=self.size)
         self._in_flight: dict[object, _Task] = {}
-        self._pending: deque[tuple[MatchSpec, int]] = deque()
+        self._pending: deque[tuple[MatchSpec, int, frozenset[str]]] = deque()
         self._poll()
         deadline = time.monotonic() + PREFLIGHT_TIMEOUT
         while self._checks and time.monotonic() < deadline:
@@ -279,7 +290,7 @@ class RayPool:
         if self._expected is None:
             self.warm_up(specs)
         ray = self._ray
-        self._pending.extend((spec, 0) for spec in specs)
+        self._pending.extend((spec, 0, frozenset()) for spec in specs)
         config_hash, version, timeout = self._args
         idle_since: float | None = None
         try:
@@ -322,7 +333,8 @@ class RayPool:
             self._checks.clear()
 
     def _submit(self) -> None:
-        """Start pending matches on ready nodes with a free CPU, one node after another."""
+        """Start pending matches on ready nodes with a free CPU, one node after another; a
+        match that failed on a node goes elsewhere when another node is ready."""
         ready = [node for node in self._nodes.values() if node.state == "ready"]
         while self._pending and ready:
             for node in list(ready):
@@ -331,9 +343,13 @@ class RayPool:
                 if node.busy >= node.slots:
                     ready.remove(node)
                     continue
-                spec, attempt = self._pending.popleft()
+                spec, attempt, failed_on = self._pending[0]
+                if node.id in failed_on and any(other.id not in failed_on for other in ready):
+                    continue
+                self._pending.popleft()
                 node.busy += 1
-                self._in_flight[node.submit(spec, *self._args)] = _Task(spec, node, time.monotonic(), attempt)
+                task = _Task(spec, node, time.monotonic(), attempt, failed_on)
+                self._in_flight[node.submit(spec, *self._args)] = task
 
     def _finished(self, ref, task: _Task, version: str) -> Iterator[MatchRecord]:
         node = task.node
@@ -343,7 +359,9 @@ class RayPool:
         except Exception as exc:  # noqa: BLE001 - a dead worker, a lost node, a module missing there
             reason = failure_reason(exc)
             node.failures += 1
-            if node.failures >= NODE_FAILURE_LIMIT and node.state != "out":
+            if node.state != "out" and _node_gone(exc):
+                yield from self._take_out(node, "left the cluster")
+            elif node.failures >= NODE_FAILURE_LIMIT and node.state != "out":
                 yield from self._take_out(node, f"{node.failures} tasks failed in a row (last: {reason})")
             yield from self._requeue(task, f"RayTaskFailed on {node.name}: {reason}")
             return
@@ -363,7 +381,7 @@ class RayPool:
         config_hash, version, _ = self._args
         self._say(f"ray: no usable node for {NODE_WAIT:g} s; {len(self._pending)} match(es) left unplayed")
         while self._pending:
-            spec, _ = self._pending.popleft()
+            spec, _, _ = self._pending.popleft()
             yield failed_record(spec, config_hash, version, 0.0,
                                 "RayNoNode: no node of the cluster could play this match (see the excluded nodes)")
 
