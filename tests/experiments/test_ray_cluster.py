@@ -229,3 +229,28 @@ def test_without_address_a_cluster_on_this_machine_is_not_joined(cluster, tmp_pa
     with ResultStore.open(out) as store:
         assert len(store.records()) == 4
 
+
+
+@pytest.mark.slow
+def test_a_cluster_where_no_node_can_play_is_refused_before_any_match(tmp_path, monkeypatch, capsys) -> None:
+    from ray.cluster_utils import Cluster
+
+    hidden = tmp_path / "bare"
+    hidden.mkdir()
+    (hidden / "sitecustomize.py").write_text(HIDE_PROJECT)
+    driver = tmp_path / "driver"
+    driver.mkdir()
+    monkeypatch.chdir(driver)
+    monkeypatch.delenv("RAY_ADDRESS", raising=False)
+    bare = Cluster(initialize_head=True, head_node_args={"num_cpus": 1, "env_vars": {"PYTHONPATH": str(hidden)}})
+    try:
+        out = tmp_path / "none.sqlite"
+        assert main([*TOURNAMENT, "--no-ship-code", "--address", bare.address, "--out", str(out)]) == 2
+    finally:
+        ray.shutdown()
+        bare.shutdown()
+    err = capsys.readouterr().err
+    assert "excluded: cannot import the project (No module named 'experiments')" in err
+    assert err.splitlines()[-1].startswith("error: no node of the Ray cluster can play this run (1 checked")
+    with ResultStore.open(out) as store:
+        assert store.records() == []
