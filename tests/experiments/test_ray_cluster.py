@@ -12,11 +12,13 @@ workers' path."""
 from __future__ import annotations
 
 import shutil
+import time
 from pathlib import Path
 
 import pytest
 
 from experiments.cli import main
+from experiments.results.record import FORFEIT_NONE
 from experiments.results.store import ResultStore
 from experiments.runner.fingerprint import DIGITS, PACKAGES, package_dirs, source_digest
 from experiments.runner.preflight import failure_reason
@@ -89,6 +91,73 @@ def test_code_is_shipped_as_py_modules_to_a_cluster_and_on_pythonpath_to_a_local
     assert "__pycache__" in cluster["excludes"]
     local = code_runtime_env(local=True)
     assert local["env_vars"]["PYTHONPATH"].split(":")[0] == str(ROOT)
+
+
+# ---- the driver's bookkeeping (no Ray: a stand-in answers get and cancel) ---------------------
+
+class _Answers:
+    """Stands in for the ``ray`` module: ``get`` returns or raises what each ref was given."""
+
+    def __init__(self, answers: dict) -> None:
+        self.answers = answers
+
+    def get(self, ref):
+        answer = self.answers[ref]
+        if isinstance(answer, BaseException):
+            raise answer
+        return answer
+
+    def cancel(self, ref, force: bool = False) -> None:
+        pass
+
+
+def _pool_with_nodes(answers: dict, *node_ids: str):
+    import io
+    from collections import Counter, deque
+
+    from experiments.runner.ray_backend import RayPool, _Node
+
+    pool = object.__new__(RayPool)
+    pool._ray, pool._args, pool._timeout, pool._stream = _Answers(answers), ("hash", "driver", None), None, io.StringIO()
+    pool._in_flight, pool._pending, pool._played, pool._checks = {}, deque(), Counter(), {}
+    pool._nodes = {node_id: _Node(node_id, "10.0.0.1", 1, "ready") for node_id in node_ids}
+    return pool
+
+
+def _finish(pool, ref, spec: MatchSpec, node_id: str, attempt: int = 0) -> list:
+    from experiments.runner.ray_backend import _Task
+
+    node = pool._nodes[node_id]
+    node.busy += 1
+    return list(pool._finished(ref, _Task(spec, node, time.monotonic(), attempt), "driver"))
+
+
+def test_a_row_played_by_other_code_is_not_stored_and_its_node_is_taken_out() -> None:
+    from experiments.results.record import MatchRecord
+
+    spec = MatchSpec("chaser", "idle", 1, 100)
+    pool = _pool_with_nodes({"r": MatchRecord("chaser", "idle", 1, "hash", "other")}, "a", "b")
+    assert _finish(pool, "r", spec, "a") == []
+    assert pool._nodes["a"].state == "out" and pool._nodes["b"].state == "ready"
+    assert "node a (10.0.0.1) excluded: runs different code (version other != driver's driver)" in pool._stream.getvalue()
+    assert [(s, attempt) for s, attempt, _ in pool._pending] == [(spec, 1)]
+
+
+def test_a_node_failing_three_tasks_in_a_row_is_taken_out_and_retries_are_bounded() -> None:
+    from experiments.runner.ray_backend import MATCH_RETRIES, NODE_FAILURE_LIMIT
+
+    assert (NODE_FAILURE_LIMIT, MATCH_RETRIES) == (3, 2)  # the documented defaults
+    failure = RuntimeError("ModuleNotFoundError: No module named 'agents'")
+    pool = _pool_with_nodes({ref: failure for ref in "xyz"}, "a", "b")
+    specs = [MatchSpec("chaser", "idle", seed, 100) for seed in range(3)]
+    assert _finish(pool, "x", specs[0], "a") == [] and _finish(pool, "y", specs[1], "a") == []
+    assert pool._nodes["a"].state == "ready"  # two in a row: still in
+    given_up = _finish(pool, "z", specs[2], "a", attempt=MATCH_RETRIES)
+    assert pool._nodes["a"].state == "out"
+    assert "3 tasks failed in a row (last: cannot import the project (No module named 'agents'))" in pool._stream.getvalue()
+    assert [record.seed for record in given_up] == [2]  # its third play failed: recorded, nobody blamed
+    assert given_up[0].error.endswith("(played 3 times)") and given_up[0].forfeit == FORFEIT_NONE
+    assert sorted(s.seed for s, _, failed_on in pool._pending if failed_on == {"a"}) == [0, 1]
 
 
 # ---- a cluster in this process ------------------------------------------------------------------
