@@ -83,6 +83,17 @@ def test_failure_reason_names_the_missing_module() -> None:
     assert failure_reason(OSError("first\nlast line")) == "OSError: last line"
 
 
+def test_the_preflight_refuses_other_libraries_and_configurations() -> None:
+    from experiments.runner.preflight import Expected, check_node, library_versions
+
+    mine = code_version(), config_hash(config_for(100))
+    other_numpy = tuple((name, "0.0.1" if name == "numpy" else version) for name, version in library_versions())
+    found = check_node(Expected(*mine, 100, ("chaser",), other_numpy))
+    assert found.problem == f"has numpy {dict(library_versions())['numpy']} (driver: 0.0.1)"
+    found = check_node(Expected(mine[0], "0123456789abcdef", 100, ("chaser",), library_versions()))
+    assert found.problem == f"has a different match configuration (hash {mine[1]} != driver's 0123456789abcdef)"
+
+
 def test_code_is_shipped_as_py_modules_to_a_cluster_and_on_pythonpath_to_a_local_instance() -> None:
     from experiments.runner.ray_backend import code_runtime_env
 
