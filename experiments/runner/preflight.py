@@ -3,8 +3,9 @@
 Before a node gets its first match, one task pinned to it (:func:`check_node`) imports the
 project, compares the node's code version (:mod:`experiments.runner.fingerprint`), the
 configuration hash of the run and the versions of the libraries that shape play with the
-driver's, and only then compiles the teams' numba kernels into the node's cache (so no match
-clock includes a compile). A node that fails is left out of the run and named in one line.
+driver's, loads the run's teams, and only then compiles their numba kernels into the node's
+cache (so no match clock includes a compile). A node that fails is left out of the run and
+named in one line.
 """
 
 from __future__ import annotations
@@ -80,6 +81,13 @@ def check_node(expected: Expected) -> NodeCheck:
     for (name, mine), (_, theirs) in zip(library_versions(), expected.libraries):
         if mine != theirs:
             return result(f"has {name} {mine or 'missing'} (driver: {theirs or 'missing'})")
+    from experiments.runner.worker import make_team
+
+    for team in expected.teams:  # a team module installed on the driver only fails here, not per match
+        try:
+            make_team(team)
+        except Exception as exc:  # noqa: BLE001 - whatever stops the team from loading on this node
+            return result(f"cannot load team {team!r} ({type(exc).__name__}: {exc})")
     import io
 
     from experiments.warmup import warm_kernels

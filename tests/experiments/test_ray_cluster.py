@@ -92,6 +92,8 @@ def test_the_preflight_refuses_other_libraries_and_configurations() -> None:
     assert found.problem == f"has numpy {dict(library_versions())['numpy']} (driver: 0.0.1)"
     found = check_node(Expected(mine[0], "0123456789abcdef", 100, ("chaser",), library_versions()))
     assert found.problem == f"has a different match configuration (hash {mine[1]} != driver's 0123456789abcdef)"
+    found = check_node(Expected(*mine, 100, ("chaser", "no_such_module:Team"), library_versions()))
+    assert found.problem.startswith("cannot load team 'no_such_module:Team' (")
 
 
 def test_code_is_shipped_as_py_modules_to_a_cluster_and_on_pythonpath_to_a_local_instance() -> None:
