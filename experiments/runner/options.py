@@ -64,7 +64,11 @@ def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None
     parser.add_argument("--backend", choices=BACKENDS, default="local",
                         help="local process pool (default) or a Ray cluster (needs: pip install 'soccer-sim[ray]')")
     parser.add_argument("--address", default=None,
-                        help="Ray cluster to join: 'auto' or HOST:PORT (default: start a local Ray instance)")
+                        help="Ray cluster to join: HOST:PORT or 'auto' (default: the cluster RAY_ADDRESS names, "
+                             "else a private local Ray instance)")
+    parser.add_argument("--ship-code", action=argparse.BooleanOptionalAction, default=True,
+                        help="with --backend ray: send this machine's project code to every node with the job "
+                             "(default: on); --no-ship-code: the nodes must have the same code installed")
     parser.add_argument("--out", default=default_out,
                         help=f"SQLite results file; re-running the same command continues it (default: {default_out})")
     parser.add_argument("--tables", default=None, metavar="DIR",
@@ -180,16 +184,17 @@ def execute(args: argparse.Namespace, kind: str, specs: list[MatchSpec], params:
     """Run ``specs`` into ``args.out``; errors about the file or the backend become RunInputError
     (KeyboardInterrupt propagates: every finished match is stored)."""
     from experiments.results.store import ResultsError
-    from experiments.runner.ray_backend import RayUnavailable
+    from experiments.runner.ray_backend import RayUnavailable, code_shipping
     from experiments.runner.run import run_matches
 
     if args.address and args.backend != "ray":
         raise RunInputError("--address needs --backend ray")
     try:
-        summary = run_matches(specs, args.out, kind, params, cycles=args.cycles, workers=args.workers,
-                              backend=args.backend, address=args.address, match_timeout=args.match_timeout,
-                              retry_errors=args.retry_errors, progress=not args.no_progress,
-                              record_dir=args.record_dir, record_every=args.record_every, figures=figures)
+        with code_shipping(getattr(args, "ship_code", True)):
+            summary = run_matches(specs, args.out, kind, params, cycles=args.cycles, workers=args.workers,
+                                  backend=args.backend, address=args.address, match_timeout=args.match_timeout,
+                                  retry_errors=args.retry_errors, progress=not args.no_progress,
+                                  record_dir=args.record_dir, record_every=args.record_every, figures=figures)
     except (ResultsError, RayUnavailable, ValueError) as exc:
         raise RunInputError(str(exc)) from None
     print(summary.line())

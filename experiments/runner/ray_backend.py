@@ -1,34 +1,138 @@
-"""The cluster backend: the same matches as Ray tasks (``--backend ray --address auto|HOST:PORT``).
+"""The cluster backend: the same matches as Ray tasks (``--backend ray [--address HOST:PORT]``).
 
-Needs the optional ``ray`` extra (``pip install -e ".[ray]"``). With no address a local Ray
-instance is started with ``--workers`` CPUs. At most one task per CPU of the cluster is in
-flight, so a task's submission time is close to its start and an overdue task (past
-``--match-timeout`` plus a grace period) can be cancelled and recorded as failed.
+Needs the optional ``ray`` extra (``pip install -e ".[ray]"``).
+
+Which cluster: ``--address`` names one; without it the cluster Ray's own convention names
+(the ``RAY_ADDRESS`` variable, as set by ``ray job submit``) is joined, and otherwise a private
+local instance with ``--workers`` CPUs is started (never another cluster on this machine, and
+never local resources passed to an existing cluster). One line on stderr says which.
+
+Which code: with code shipping on (the default) the driver's own packages go with the job: as
+Ray ``py_modules`` to a cluster, on ``PYTHONPATH`` to a private local instance (same files, same
+numba cache). Every node then passes a pre-flight (:mod:`experiments.runner.preflight`,
+one task pinned to the node) before any match: same code version, configuration hash and
+libraries as the driver, kernels compiled. Failing nodes are left out, one stderr line each.
+
+Scheduling: every match is pinned to an accepted node with a free CPU (node affinity), so the
+driver knows where each runs. Nodes that join during the run are pre-flighted and used; a node
+that leaves, or fails :data:`NODE_FAILURE_LIMIT` tasks in a row for reasons outside the match
+(a dead worker, a missing module), is taken out and its matches go to the other nodes, each
+at most :data:`MATCH_RETRIES` more times. A returned row whose code version is not the
+driver's is never stored: its node is taken out and the match played elsewhere. An overdue
+task (past ``--match-timeout`` plus :data:`RAY_GRACE`) is cancelled and recorded as failed.
 """
 
 from __future__ import annotations
 
+import contextlib
+import os
+import sys
 import time
-from collections import deque
+from collections import Counter, deque
 from collections.abc import Iterable, Iterator
+from contextvars import ContextVar
+from dataclasses import dataclass
+from typing import TextIO
 
 from experiments.results.record import MatchRecord
+from experiments.runner.preflight import PREFLIGHT_TIMEOUT, Expected, NodeCheck, check_node, failure_reason
 from experiments.runner.spec import MatchSpec
 from experiments.runner.worker import failed_record, play_spec
 
 RAY_GRACE = 30.0
 """Seconds a Ray task may overrun ``--match-timeout`` (worker start-up included) before it is cancelled."""
 
+NODE_FAILURE_LIMIT = 3
+"""Tasks in a row a node may fail for reasons outside the match before it is taken out."""
+
+MATCH_RETRIES = 2
+"""Times a match whose node failed or left is played again on another node within the run."""
+
+NODE_POLL = 2.0
+"""Seconds between looks at the cluster's membership (nodes joining or leaving)."""
+
+NODE_WAIT = 60.0
+"""Seconds a run with matches left but no usable node waits for one to join before giving up."""
+
+SHIP_EXCLUDES = ["__pycache__", "*.pyc", "*.nbi", "*.nbc"]
+"""Left out of the shipped packages: caches that belong to this machine."""
+
+SHIP_CODE: ContextVar[bool] = ContextVar("ship_code", default=True)
+"""Whether a RayPool made without ``ship_code`` ships the driver's code (``--no-ship-code``)."""
+
+
+@contextlib.contextmanager
+def code_shipping(enabled: bool) -> Iterator[None]:
+    """Within the block, Ray pools ship the driver's code (or not)."""
+    token = SHIP_CODE.set(enabled)
+    try:
+        yield
+    finally:
+        SHIP_CODE.reset(token)
+
 
 class RayUnavailable(Exception):
-    """Ray is not installed or the cluster cannot be reached."""
+    """Ray is not installed, the cluster cannot be reached or none of its nodes can play."""
+
+
+@dataclass
+class _Node:
+    """A node of the cluster as the run sees it."""
+
+    id: str
+    ip: str
+    slots: int
+    state: str = "checking"
+    """checking (pre-flight running), ready, or out."""
+    busy: int = 0
+    failures: int = 0
+    """Tasks failed in a row for reasons outside the match."""
+    submit: object = None
+    """The match task pinned to this node."""
+
+    @property
+    def name(self) -> str:
+        return f"node {self.id} ({self.ip})"
+
+
+@dataclass
+class _Task:
+    spec: MatchSpec
+    node: _Node
+    started: float
+    attempt: int
+    failed_on: frozenset[str] = frozenset()
+    """Nodes this match failed on before (tried last)."""
+
+
+def code_runtime_env(local: bool) -> dict:
+    """The job's runtime_env that makes Ray workers import the driver's packages: their parent
+    directories first on PYTHONPATH for a private local instance (the same files, so the same
+    numba cache), the package directories as ``py_modules`` for a cluster."""
+    from experiments.runner.fingerprint import package_dirs
+
+    dirs = package_dirs()
+    if local:
+        roots = list(dict.fromkeys(str(path.parent) for path in dirs.values()))
+        existing = [entry for entry in os.environ.get("PYTHONPATH", "").split(os.pathsep) if entry]
+        return {"env_vars": {"PYTHONPATH": os.pathsep.join(dict.fromkeys(roots + existing))}}
+    return {"py_modules": [str(path) for path in dirs.values()], "excludes": SHIP_EXCLUDES}
+
+
+def _node_gone(exc: BaseException) -> bool:
+    """Whether a task failed because its node died or no longer exists."""
+    from ray import exceptions
+
+    gone = tuple(getattr(exceptions, name) for name in ("NodeDiedError", "TaskUnschedulableError")
+                 if hasattr(exceptions, name))
+    return isinstance(exc, gone)
 
 
 class RayPool:
-    """Plays specs as Ray tasks on the cluster at ``address`` (None: a new local instance)."""
+    """Plays specs as Ray tasks on the cluster at ``address`` (see the module docstring)."""
 
     def __init__(self, workers: int | None, config_hash: str, version: str, timeout: float | None,
-                 address: str | None = None) -> None:
+                 address: str | None = None, *, ship_code: bool | None = None, stream: TextIO | None = None) -> None:
         try:
             import ray
         except ImportError:
@@ -37,61 +141,257 @@ class RayPool:
         self._ray = ray
         self._args = (config_hash, version, timeout)
         self._timeout = timeout
+        self._stream = stream
+        ship = SHIP_CODE.get() if ship_code is None else ship_code
+        target = address or os.environ.get("RAY_ADDRESS") or None
+        self._local = target is None
         self._started_here = not ray.is_initialized()
         if self._started_here:
-            options = dict(include_dashboard=False, log_to_driver=False, configure_logging=False)
+            options: dict = dict(include_dashboard=False, log_to_driver=False, configure_logging=False)
+            if ship:
+                options["runtime_env"] = code_runtime_env(self._local)
             try:
-                if address:
-                    ray.init(address=address, **options)
+                if target:
+                    ray.init(address=target, **options)  # an existing cluster: its own resources
                 else:
-                    ray.init(num_cpus=workers, **options)
+                    ray.init(address="local", num_cpus=workers, **options)
             except Exception as exc:  # noqa: BLE001 - Ray raises many kinds for an unreachable cluster
-                raise RayUnavailable(f"cannot start or reach Ray{f' at {address}' if address else ''}: "
-                                     f"{type(exc).__name__}: {exc}") from None
-        cpus = int(ray.cluster_resources().get("CPU", 1))
-        self.size = min(workers, cpus) if (workers and not address) else cpus
+                where = f" at {target}" if target else ""
+                raise RayUnavailable(f"cannot start or reach Ray{where}: {type(exc).__name__}: {exc}") from None
+            self._local = target is None
+            where = (f"joined the cluster at {ray.get_runtime_context().gcs_address}"
+                     f"{'' if address else ' (RAY_ADDRESS)'}") if target else "started a private local Ray instance"
+        else:
+            self._local = False
+            where = "using the Ray session already initialized in this process"
+        self._cap = workers if self._local else None
+        nodes = self._alive()
+        cpus = sum(self._slots(info) for info in nodes.values())
+        self.size = max(cpus, 1)
+        shipped = ("driver's code shipped" if ship and self._started_here else
+                   "code not shipped: every node must have the project installed")
+        self._say(f"ray: {where}: {len(nodes)} node(s), {cpus} CPU(s) used; {shipped}")
         self._remote = ray.remote(num_cpus=1, max_retries=0)(play_spec)
+        self._check = ray.remote(num_cpus=1, max_retries=0)(check_node)
+        self._nodes: dict[str, _Node] = {}
+        self._checks: dict[object, tuple[_Node, float]] = {}
+        self._expected: Expected | None = None
+        self._played: Counter[str] = Counter()
+        self._last_poll = 0.0
+
+    # ---- cluster membership -------------------------------------------------------------
+
+    def _say(self, line: str) -> None:
+        print(line, file=self._stream if self._stream is not None else sys.stderr, flush=True)
+
+    def _alive(self) -> dict[str, dict]:
+        """The cluster's live nodes that have CPUs, by node id."""
+        return {info["NodeID"]: info for info in self._ray.nodes()
+                if info.get("Alive") and self._slots(info) > 0}
+
+    def _slots(self, info: dict) -> int:
+        cpus = int(info.get("Resources", {}).get("CPU", 0))
+        return min(cpus, self._cap) if self._cap else cpus
+
+    def _poll(self) -> list[MatchRecord]:
+        """Pre-flight new nodes, take out nodes that left; the records of matches given up."""
+        from ray.util.scheduling_strategies import NodeAffinitySchedulingStrategy
+
+        self._last_poll = time.monotonic()
+        alive = self._alive()
+        given_up: list[MatchRecord] = []
+        for node_id, info in alive.items():
+            if node_id not in self._nodes:
+                node = _Node(node_id, info.get("NodeManagerAddress", "?"), self._slots(info))
+                pin = NodeAffinitySchedulingStrategy(node_id, soft=False)
+                node.submit = self._remote.options(scheduling_strategy=pin).remote
+                self._nodes[node_id] = node
+                self._checks[self._check.options(scheduling_strategy=pin).remote(self._expected)] = (node, time.monotonic())
+        for node in self._nodes.values():
+            if node.state != "out" and node.id not in alive:
+                given_up += self._take_out(node, "left the cluster")
+        return given_up
+
+    def _checked(self, ref, node: _Node) -> None:
+        """Accept or leave out ``node`` by its pre-flight's result."""
+        try:
+            check: NodeCheck = self._ray.get(ref)
+            problem = check.problem
+        except Exception as exc:  # noqa: BLE001 - the node could not even run the check
+            problem = failure_reason(exc)
+        if node.state == "out":
+            return
+        if problem is None:
+            node.state = "ready"
+        else:
+            self._take_out(node, problem)
+
+    def _take_out(self, node: _Node, reason: str) -> list[MatchRecord]:
+        """Leave ``node`` out of the run; its matches in flight go back to the queue (or are
+        given up after :data:`MATCH_RETRIES`); returns the records of those given up."""
+        node.state = "out"
+        self._say(f"ray: {node.name} excluded: {reason}")
+        given_up = []
+        for ref, task in list(self._in_flight.items()):
+            if task.node is node:
+                self._ray.cancel(ref, force=True)
+                del self._in_flight[ref]
+                given_up += self._requeue(task, f"RayNodeLost: {node.name} {reason}")
+        node.busy = 0
+        return given_up
+
+    def _requeue(self, task: _Task, message: str) -> list[MatchRecord]:
+        if task.attempt < MATCH_RETRIES:
+            self._pending.appendleft((task.spec, task.attempt + 1, task.failed_on | {task.node.id}))
+            return []
+        config_hash, version, _ = self._args
+        return [failed_record(task.spec, config_hash, version, time.monotonic() - task.started,
+                              f"{message} (played {task.attempt + 1} times)")]
+
+    # ---- the run --------------------------------------------------------------------------
 
     def warm_up(self, specs: Iterable[MatchSpec]) -> None:
-        """Compile the kernels the teams of ``specs`` need into this machine's numba cache before
-        any task starts (the workers of a local Ray instance load them from there; nodes of a
-        remote cluster compile on their first match, within ``RAY_GRACE``)."""
-        from experiments.warmup import warm_kernels
+        """Pre-flight every node of the cluster (imports, code version, configuration hash,
+        libraries, kernels) before any match; RayUnavailable when none passes. A private local
+        instance first compiles the kernels here on every core (its workers share this cache)."""
+        specs = list(specs)
+        teams = tuple(sorted({name for spec in specs for name in (spec.home, spec.away)}))
+        cycles = specs[0].cycles if specs else None
+        config_hash, version, _ = self._args
+        self._expected = Expected.of_driver(version, config_hash, cycles, teams)
+        if self._local:
+            from experiments.warmup import warm_kernels
 
-        warm_kernels(sorted({name for spec in specs for name in (spec.home, spec.away)}), processes=self.size)
+            warm_kernels(teams, processes=self.size)
+        self._in_flight: dict[object, _Task] = {}
+        self._pending: deque[tuple[MatchSpec, int, frozenset[str]]] = deque()
+        self._poll()
+        deadline = time.monotonic() + PREFLIGHT_TIMEOUT
+        while self._checks and time.monotonic() < deadline:
+            done, _ = self._ray.wait(list(self._checks), num_returns=1, timeout=1.0)
+            for ref in done:
+                self._checked(ref, self._checks.pop(ref)[0])
+        self._expire_checks(force=True)
+        if not any(node.state == "ready" for node in self._nodes.values()):
+            raise RayUnavailable(f"no node of the Ray cluster can play this run ({len(self._nodes)} checked, "
+                                 "each excluded above); install the project on the nodes or ship it (--ship-code)")
+
+    def _expire_checks(self, force: bool = False) -> None:
+        now = time.monotonic()
+        for ref, (node, started) in list(self._checks.items()):
+            if force or now > started + PREFLIGHT_TIMEOUT:
+                self._ray.cancel(ref, force=True)
+                del self._checks[ref]
+                if node.state != "out":
+                    self._take_out(node, f"its pre-flight took longer than {PREFLIGHT_TIMEOUT:g} s")
 
     def run(self, specs: Iterable[MatchSpec]) -> Iterator[MatchRecord]:
+        specs = list(specs)
+        if self._expected is None:
+            self.warm_up(specs)
         ray = self._ray
-        pending = deque(specs)
-        in_flight: dict[object, tuple[MatchSpec, float]] = {}
+        self._pending.extend((spec, 0, frozenset()) for spec in specs)
         config_hash, version, timeout = self._args
+        idle_since: float | None = None
         try:
-            while pending or in_flight:
-                while pending and len(in_flight) < self.size:
-                    spec = pending.popleft()
-                    in_flight[self._remote.remote(spec, *self._args)] = (spec, time.monotonic())
-                done, _ = ray.wait(list(in_flight), num_returns=1, timeout=1.0)
+            while self._pending or self._in_flight:
+                if time.monotonic() - self._last_poll > NODE_POLL:
+                    yield from self._poll()
+                self._expire_checks()
+                self._submit()
+                if self._pending and not self._in_flight and not self._checks:
+                    idle_since = idle_since or time.monotonic()
+                    if time.monotonic() - idle_since > NODE_WAIT:
+                        yield from self._give_up()
+                        continue
+                else:
+                    idle_since = None
+                waiting = list(self._in_flight) + list(self._checks)
+                if not waiting:
+                    time.sleep(min(NODE_POLL, 1.0))
+                    continue
+                done, _ = ray.wait(waiting, num_returns=1, timeout=1.0)
                 for ref in done:
-                    spec, started = in_flight.pop(ref)
-                    try:
-                        yield ray.get(ref)
-                    except Exception as exc:  # noqa: BLE001 - a lost worker or node
-                        yield failed_record(spec, config_hash, version, time.monotonic() - started,
-                                            f"{type(exc).__name__}: {exc}")
+                    if ref in self._checks:
+                        self._checked(ref, self._checks.pop(ref)[0])
+                    elif ref in self._in_flight:
+                        yield from self._finished(ref, self._in_flight.pop(ref), version)
                 if timeout is not None:
                     now = time.monotonic()
-                    for ref, (spec, started) in list(in_flight.items()):
-                        if now > started + timeout + RAY_GRACE:
+                    for ref, task in list(self._in_flight.items()):
+                        if now > task.started + timeout + RAY_GRACE:
                             ray.cancel(ref, force=True)
-                            del in_flight[ref]
-                            yield failed_record(spec, config_hash, version, time.monotonic() - started,
+                            del self._in_flight[ref]
+                            task.node.busy -= 1
+                            yield failed_record(task.spec, config_hash, version, now - task.started,
                                                 f"MatchTimeout: match exceeded its time budget of {timeout:g} s "
                                                 "and its Ray task was cancelled")
         finally:
-            for ref in in_flight:
+            for ref in list(self._in_flight) + list(self._checks):
                 ray.cancel(ref, force=True)
+            self._in_flight.clear()
+            self._checks.clear()
+
+    def _submit(self) -> None:
+        """Start pending matches on ready nodes with a free CPU, one node after another; a
+        match that failed on a node goes elsewhere when another node is ready."""
+        ready = [node for node in self._nodes.values() if node.state == "ready"]
+        while self._pending and ready:
+            for node in list(ready):
+                if not self._pending:
+                    break
+                if node.busy >= node.slots:
+                    ready.remove(node)
+                    continue
+                spec, attempt, failed_on = self._pending[0]
+                if node.id in failed_on and any(other.id not in failed_on for other in ready):
+                    continue
+                self._pending.popleft()
+                node.busy += 1
+                task = _Task(spec, node, time.monotonic(), attempt, failed_on)
+                self._in_flight[node.submit(spec, *self._args)] = task
+
+    def _finished(self, ref, task: _Task, version: str) -> Iterator[MatchRecord]:
+        node = task.node
+        node.busy = max(node.busy - 1, 0)
+        try:
+            record: MatchRecord = self._ray.get(ref)
+        except Exception as exc:  # noqa: BLE001 - a dead worker, a lost node, a module missing there
+            reason = failure_reason(exc)
+            node.failures += 1
+            if node.state != "out" and _node_gone(exc):
+                yield from self._take_out(node, "left the cluster")
+            elif node.failures >= NODE_FAILURE_LIMIT and node.state != "out":
+                yield from self._take_out(node, f"{node.failures} tasks failed in a row (last: {reason})")
+            yield from self._requeue(task, f"RayTaskFailed on {node.name}: {reason}")
+            return
+        if record.code_version != version:  # never store what other code played
+            if node.state != "out":
+                yield from self._take_out(node, f"runs different code (version {record.code_version} "
+                                                f"!= driver's {version})")
+            yield from self._requeue(task, f"RayNodeLost: {node.name} runs different code")
+            return
+        node.failures = 0
+        self._played[node.name] += 1
+        yield record
+
+    def _give_up(self) -> Iterator[MatchRecord]:
+        """No node can play and none joined within NODE_WAIT: the matches left fail (unblamed,
+        so the next run plays them again)."""
+        config_hash, version, _ = self._args
+        self._say(f"ray: no usable node for {NODE_WAIT:g} s; {len(self._pending)} match(es) left unplayed")
+        while self._pending:
+            spec, _, _ = self._pending.popleft()
+            yield failed_record(spec, config_hash, version, 0.0,
+                                "RayNoNode: no node of the cluster could play this match (see the excluded nodes)")
+
+    @property
+    def played_per_node(self) -> dict[str, int]:
+        """Matches each node returned a stored row for, by node name (id and IP)."""
+        return dict(self._played)
 
     def close(self) -> None:
+        if len(self._played) > 1:
+            self._say("ray: matches per node: " + ", ".join(f"{name}: {n}" for name, n in sorted(self._played.items())))
         if self._started_here:
             self._ray.shutdown()
-

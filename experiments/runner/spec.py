@@ -7,12 +7,9 @@ its results file does not hold yet.
 
 from __future__ import annotations
 
-import functools
 import hashlib
 import json
-import subprocess
 from dataclasses import asdict, dataclass, field
-from pathlib import Path
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:  # annotations only: importing the simulator is left to what plays matches
@@ -69,21 +66,10 @@ def paired_specs(team: str, opponent: str, games: int, seed: int, cycles: int | 
             for spec in (MatchSpec(team, opponent, s, cycles), MatchSpec(opponent, team, s, cycles))]
 
 
-@functools.lru_cache(maxsize=1)
 def code_version() -> str:
-    """The package version and, in a git checkout, the commit (``+dirty`` with local changes)."""
-    from importlib import metadata
+    """The code version of this process: a hash of the project's source files as imported
+    here (see :mod:`experiments.runner.fingerprint`), so a worker on another machine reports
+    the code it really runs."""
+    from experiments.runner.fingerprint import code_version as imported_code_version
 
-    try:
-        version = metadata.version("soccer-sim")
-    except metadata.PackageNotFoundError:
-        version = "unknown"
-    root = Path(__file__).resolve().parents[2]
-    try:
-        commit = subprocess.run(["git", "-C", str(root), "rev-parse", "--short", "HEAD"], capture_output=True,
-                                text=True, timeout=10, check=True).stdout.strip()
-        dirty = subprocess.run(["git", "-C", str(root), "status", "--porcelain", "--untracked-files=no"],
-                               capture_output=True, text=True, timeout=10, check=True).stdout.strip()
-    except (OSError, subprocess.SubprocessError):
-        return version
-    return f"{version}+{commit}{'.dirty' if dirty else ''}"
+    return imported_code_version()

@@ -98,13 +98,16 @@ def play_spec(spec: MatchSpec, config_hash: str, code_version: str, timeout: flo
               figures: Callable[[], MatchFigures] | None = None) -> MatchRecord:
     """Play ``spec`` and return its record; every failure becomes a forfeit or an error row.
 
-    ``deciding``: two integers (a worker's shared slot) set to [side running team code now,
-    side whose act returned last], so a parent can blame the team whose code was running if the
-    worker dies; a private list if None. ``figures``: makes a recorder whose figures of the
-    whole match are added to both teams' statistics of a match played to its end."""
+    The record carries the code version of this process (the code that really played), not
+    the ``code_version`` the caller expects; the caller compares them. ``deciding``: two
+    integers (a worker's shared slot) set to [side running team code now, side whose act
+    returned last], so a parent can blame the team whose code was running if the worker dies;
+    a private list if None. ``figures``: makes a recorder whose figures of the whole match are
+    added to both teams' statistics of a match played to its end."""
+    from experiments.runner.fingerprint import code_version as running_code_version
     from soccer_sim import run_match
 
-    record = MatchRecord(spec.home, spec.away, spec.seed, config_hash, code_version)
+    record = MatchRecord(spec.home, spec.away, spec.seed, config_hash, running_code_version())
     if deciding is None:
         deciding = [FORFEIT_NONE, FORFEIT_NONE]
     deciding[0] = deciding[1] = FORFEIT_NONE
