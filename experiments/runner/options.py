@@ -184,17 +184,17 @@ def execute(args: argparse.Namespace, kind: str, specs: list[MatchSpec], params:
     """Run ``specs`` into ``args.out``; errors about the file or the backend become RunInputError
     (KeyboardInterrupt propagates: every finished match is stored)."""
     from experiments.results.store import ResultsError
-    from experiments.runner.ray_backend import RayUnavailable, code_shipping
+    from experiments.runner.ray_backend import RayUnavailable
     from experiments.runner.run import run_matches
 
     if args.address and args.backend != "ray":
         raise RunInputError("--address needs --backend ray")
     try:
-        with code_shipping(getattr(args, "ship_code", True)):
-            summary = run_matches(specs, args.out, kind, params, cycles=args.cycles, workers=args.workers,
-                                  backend=args.backend, address=args.address, match_timeout=args.match_timeout,
-                                  retry_errors=args.retry_errors, progress=not args.no_progress,
-                                  record_dir=args.record_dir, record_every=args.record_every, figures=figures)
+        summary = run_matches(specs, args.out, kind, params, cycles=args.cycles, workers=args.workers,
+                              backend=args.backend, address=args.address, match_timeout=args.match_timeout,
+                              retry_errors=args.retry_errors, progress=not args.no_progress,
+                              record_dir=args.record_dir, record_every=args.record_every, figures=figures,
+                              ship_code=getattr(args, "ship_code", True))
     except (ResultsError, RayUnavailable, ValueError) as exc:
         raise RunInputError(str(exc)) from None
     print(summary.line())

@@ -24,13 +24,11 @@ task (past ``--match-timeout`` plus :data:`RAY_GRACE`) is cancelled and recorded
 
 from __future__ import annotations
 
-import contextlib
 import os
 import sys
 import time
 from collections import Counter, deque
-from collections.abc import Iterable, Iterator
-from contextvars import ContextVar
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from typing import TextIO
 
@@ -56,20 +54,6 @@ NODE_WAIT = 60.0
 
 SHIP_EXCLUDES = ["__pycache__", "*.pyc", "*.nbi", "*.nbc"]
 """Left out of the shipped packages: caches that belong to this machine."""
-
-SHIP_CODE: ContextVar[bool] = ContextVar("ship_code", default=True)
-"""Whether a RayPool made without ``ship_code`` ships the driver's code (``--no-ship-code``)."""
-
-
-@contextlib.contextmanager
-def code_shipping(enabled: bool) -> Iterator[None]:
-    """Within the block, Ray pools ship the driver's code (or not)."""
-    token = SHIP_CODE.set(enabled)
-    try:
-        yield
-    finally:
-        SHIP_CODE.reset(token)
-
 
 class RayUnavailable(Exception):
     """Ray is not installed, the cluster cannot be reached or none of its nodes can play."""
@@ -132,7 +116,8 @@ class RayPool:
     """Plays specs as Ray tasks on the cluster at ``address`` (see the module docstring)."""
 
     def __init__(self, workers: int | None, config_hash: str, version: str, timeout: float | None,
-                 address: str | None = None, *, ship_code: bool | None = None, stream: TextIO | None = None) -> None:
+                 address: str | None = None, *, ship_code: bool = True, figures: Callable[[], object] | None = None,
+                 stream: TextIO | None = None) -> None:
         try:
             import ray
         except ImportError:
@@ -142,7 +127,8 @@ class RayPool:
         self._args = (config_hash, version, timeout)
         self._timeout = timeout
         self._stream = stream
-        ship = SHIP_CODE.get() if ship_code is None else ship_code
+        ship = ship_code
+        self._figures = figures
         target = address or os.environ.get("RAY_ADDRESS") or None
         self._local = target is None
         self._started_here = not ray.is_initialized()
@@ -349,7 +335,7 @@ class RayPool:
                 self._pending.popleft()
                 node.busy += 1
                 task = _Task(spec, node, time.monotonic(), attempt, failed_on)
-                self._in_flight[node.submit(spec, *self._args)] = task
+                self._in_flight[node.submit(spec, *self._args, figures=self._figures)] = task
 
     def _finished(self, ref, task: _Task, version: str) -> Iterator[MatchRecord]:
         node = task.node

@@ -113,14 +113,16 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
                 address: str | None = None, match_timeout: float | None = DEFAULT_MATCH_TIMEOUT,
                 retry_errors: bool = False, progress: bool = True, record_dir: str | os.PathLike | None = None,
                 record_every: int = 1, policy: FailurePolicy = FailurePolicy(),
-                figures: Callable[[], object] | None = None) -> RunSummary:
+                figures: Callable[[], object] | None = None, ship_code: bool = True) -> RunSummary:
     """Play every spec (all with ``cycles``) that ``path`` does not hold, store each as it
     finishes, and return the summary with the records of all ``specs``.
 
     ``record_dir``: write a rerun replay of every ``record_every``-th spec (in the order given,
     the first included) played in this run into that directory, named after its teams and seed.
     ``figures``: a picklable factory of a :class:`~experiments.runner.worker.MatchFigures`
-    recorder whose figures of the whole match go into both teams' statistics (local backend).
+    recorder whose figures of the whole match go into both teams' statistics.
+    ``ship_code``: with the Ray backend, send the driver's packages with the job (``--ship-code``;
+    off: every node must have the project installed).
 
     Failure policy (``policy``, the same for every backend): a failure no team is blamed for
     leaves the match out of the tables (a re-run plays it again); when more than
@@ -136,9 +138,6 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
         raise ValueError("every spec of a run must use the run's cycles")
     if backend not in BACKENDS:
         raise ValueError(f"unknown backend {backend!r}; choose one of {', '.join(BACKENDS)}")
-    if figures is not None and backend != "local":
-        raise ValueError("this command collects figures of its own during each match, which only the local "
-                         "backend does: leave out --backend ray")
     specs = list(dict.fromkeys(specs))
     check_seeds(specs)
     if record_dir is not None:
@@ -157,7 +156,7 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
         used = 0
         tally = _Tally()
         if todo:
-            pool = _pool(backend, workers, digest, version, match_timeout, address, figures)
+            pool = _pool(backend, workers, digest, version, match_timeout, address, figures, ship_code)
             used = pool.size
             try:
                 pool.warm_up(todo)  # compile the kernels once, before any worker, match clock or ETA starts
@@ -211,11 +210,11 @@ def _store(store: ResultStore, record: MatchRecord, keys: list[tuple[str, str, i
 
 
 def _pool(backend: str, workers: int, digest: str, version: str, timeout: float | None, address: str | None,
-          figures: Callable[[], object] | None = None):
+          figures: Callable[[], object] | None = None, ship_code: bool = True):
     if backend == "ray":
         from experiments.runner.ray_backend import RayPool
 
-        return RayPool(workers, digest, version, timeout, address)
+        return RayPool(workers, digest, version, timeout, address, ship_code=ship_code, figures=figures)
     from experiments.runner.local import LocalPool
 
     return LocalPool(workers, digest, version, timeout, figures)

@@ -67,9 +67,21 @@ def test_the_studys_figures_are_the_same_in_a_worker_and_here(tmp_path) -> None:
     assert all(name.startswith(SET_PLAY_PREFIX) for name in record.home_stats if "set_play" in name)
 
 
-def test_the_ray_backend_is_refused_in_one_line(tmp_path, capsys) -> None:
-    assert main([*STUDY, "--part", "chaser", "--league", "idle", "--backend", "ray",
-                 "--out", str(tmp_path / "r.sqlite")]) == 2
-    err = capsys.readouterr().err.splitlines()
-    assert len(err) == 1 and "leave out --backend ray" in err[0]
-    assert not (tmp_path / "r.sqlite").exists()
+def test_on_ray_the_study_records_the_same_figures_as_on_the_local_pool(tmp_path, capsys) -> None:
+    import pytest
+
+    pytest.importorskip("ray")
+    from experiments.results.store import ResultStore
+
+    common = [*STUDY, "--part", "chaser", "--league", "idle", "--assigners", "idle", "--league-games", "2",
+              "--workers", "2"]
+    assert main([*common, "--backend", "ray", "--out", str(tmp_path / "ray.sqlite")]) == 0
+    on_ray = tables_only(capsys.readouterr().out)
+    assert main([*common, "--out", str(tmp_path / "local.sqlite")]) == 0
+    assert tables_only(capsys.readouterr().out) == on_ray
+    with ResultStore.open(tmp_path / "ray.sqlite") as ray, ResultStore.open(tmp_path / "local.sqlite") as local:
+        figures = [{k: v for k, v in r.home_stats.items() if k == STALL_FIGURE or k.startswith(SET_PLAY_PREFIX)}
+                   for r in ray.records()]
+        assert figures and all(STALL_FIGURE in f for f in figures)
+        assert figures == [{k: v for k, v in r.home_stats.items() if k == STALL_FIGURE or k.startswith(SET_PLAY_PREFIX)}
+                           for r in local.records()]
