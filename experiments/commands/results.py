@@ -2,7 +2,8 @@
 ``soccer-sim results show FILE``: a stored run's matches as a flat table, or its tables again.
 
 ``show`` prints the same tables as the command that made the file (``tournament``,
-``experiment case-study``, ``experiment drop-in``, ``experiment assigners``), from the stored
+``experiment case-study``, ``experiment drop-in``, ``experiment assigners``,
+``experiment penalty-shot``), from the stored
 matches alone.
 
 Both only read the results file: it is opened read-only and never changed (so they work on
@@ -24,6 +25,7 @@ REPORTERS: dict[str, str] = {
     "case-study": "experiments.studies.case_study",
     "drop-in": "experiments.studies.drop_in",
     "assigners": "experiments.studies.assigners",
+    "penalty-shot": "experiments.studies.penalty_shot",
 }
 
 

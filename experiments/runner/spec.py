@@ -29,6 +29,15 @@ class MatchSpec:
     record: str | None = field(default=None, compare=False)
     """A path to write the match's rerun replay to (``--record-dir``), or None; not part of
     the match's identity."""
+    play: str | None = None
+    """A ``package.module:function`` path that plays this spec instead of one match (a study's
+    own unit of work, e.g. a chain of scenario trials), or None for a match between ``home`` and
+    ``away``. The worker calls ``function(spec, record, watch)``: the function plays, wrapping
+    every team object it plays with ``watch(team, name, side)`` (so a failure in that team's
+    code forfeits the spec for ``side``), and fills ``record``'s goals, cycles and statistics.
+    Part of the identity; the names and the seed must still make the key unique in a file."""
+    play_args: tuple[tuple[str, object], ...] = ()
+    """(name, value) pairs the ``play`` function reads (hashable, picklable); part of the identity."""
 
     @property
     def key(self) -> tuple[str, str, int]:

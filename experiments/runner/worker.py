@@ -105,7 +105,6 @@ def play_spec(spec: MatchSpec, config_hash: str, code_version: str, timeout: flo
     a private list if None. ``figures``: makes a recorder whose figures of the whole match are
     added to both teams' statistics of a match played to its end."""
     from experiments.runner.fingerprint import code_version as running_code_version
-    from soccer_sim import run_match
 
     record = MatchRecord(spec.home, spec.away, spec.seed, config_hash, running_code_version())
     if deciding is None:
@@ -114,21 +113,15 @@ def play_spec(spec: MatchSpec, config_hash: str, code_version: str, timeout: flo
     start = time.perf_counter()
     alarm = _arm_timer(timeout)
     try:
-        home, away = (_Watched(*make_team(name), side, deciding) for side, name in enumerate((spec.home, spec.away)))
-        recorders = [] if figures is None else [figures()]
-        if spec.record is not None:
-            from soccer_sim.replay import RerunRecorder
+        if spec.play is not None:  # a study's own unit of work (see MatchSpec.play)
+            import importlib
 
-            recorders.append(RerunRecorder(spec.record))
-        result = run_match(home, away, seed=spec.seed, config=spec.config(), recorders=recorders)
-        _disarm_timer(alarm)
-        record.home_goals, record.away_goals = (int(g) for g in result.score)
-        record.cycles = int(result.cycles)
-        record.home_stats, record.away_stats = (s.as_dict() for s in result.statistics)
-        if figures is not None:
-            extra = recorders[0].figures()
-            record.home_stats.update(extra)
-            record.away_stats.update(extra)
+            module, _, function = spec.play.partition(":")
+            play = getattr(importlib.import_module(module), function)
+            play(spec, record, lambda team, name, side: _Watched(team, name, side, deciding))
+            _disarm_timer(alarm)
+        else:
+            _play_match(spec, record, deciding, figures, alarm)
     except BaseException as exc:  # noqa: BLE001 - a worker must survive anything a team does
         _disarm_timer(alarm)
         if isinstance(exc, KeyboardInterrupt) and timeout is None:
@@ -139,6 +132,28 @@ def play_spec(spec: MatchSpec, config_hash: str, code_version: str, timeout: flo
     deciding[0] = FORFEIT_NONE  # the match is over: no team's code runs until the next one
     record.wall_time = time.perf_counter() - start
     return record
+
+
+def _play_match(spec: MatchSpec, record: MatchRecord, deciding: MutableSequence[int],
+                figures: Callable[[], MatchFigures] | None, alarm) -> None:
+    """Play the match between ``spec.home`` and ``spec.away`` into ``record``."""
+    from soccer_sim import run_match
+
+    home, away = (_Watched(*make_team(name), side, deciding) for side, name in enumerate((spec.home, spec.away)))
+    recorders = [] if figures is None else [figures()]
+    if spec.record is not None:
+        from soccer_sim.replay import RerunRecorder
+
+        recorders.append(RerunRecorder(spec.record))
+    result = run_match(home, away, seed=spec.seed, config=spec.config(), recorders=recorders)
+    _disarm_timer(alarm)
+    record.home_goals, record.away_goals = (int(g) for g in result.score)
+    record.cycles = int(result.cycles)
+    record.home_stats, record.away_stats = (s.as_dict() for s in result.statistics)
+    if figures is not None:
+        extra = recorders[0].figures()
+        record.home_stats.update(extra)
+        record.away_stats.update(extra)
 
 
 def _culprit(exc: BaseException, spec: MatchSpec, deciding: MutableSequence[int]) -> int:

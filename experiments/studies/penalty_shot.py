@@ -21,28 +21,34 @@ Three conditions, the same team code (``--team``, potential-field bidding by def
 Each condition's times are compared marker by marker with the Wilcoxon signed-rank test
 (``scipy.stats.wilcoxon``, two-sided). Then the same again with a goalkeeper (``--keeper``'s
 team, one player) defending the goal. Prints the tables (mean, standard deviation and median
-time per condition, timeouts, p-values); with ``--out DIR`` it also writes
-``penalty_shot_trials.csv`` (one row per trial), ``penalty_shot_summary.csv``,
-``penalty_shot_tests.csv`` and ``penalty_shot.png`` (box plots) there. Without ``--out``
-nothing is written.
+time per condition, timeouts, p-values) and writes ``penalty_shot_trials.csv`` (one row per
+trial), ``penalty_shot_summary.csv``, ``penalty_shot_tests.csv``, ``penalty_shot.md`` and
+``penalty_shot.png`` (box plots) to ``--tables``.
+
+The six chains (setting x condition) run on the shared runner (:mod:`experiments.runner`), one
+chain per runner spec (:attr:`~experiments.runner.spec.MatchSpec.play` names
+:func:`play_chain`): progress, a results file (``--out``) that a re-run continues, a time
+budget per chain (``--match-timeout``), and a team that fails forfeits its chain without
+stopping the others. A chain's key names the attackers (team, condition, robots), the defence
+(empty goal or the keeper's team), the trial count and limit, and ``--seed``, so a results file
+never mixes chains of other parameters; ``soccer-sim results show FILE`` prints the tables again.
 """
 
 from __future__ import annotations
 
 import argparse
 import math
-import time
 from collections.abc import Callable, Sequence
-from concurrent.futures import ProcessPoolExecutor
-from dataclasses import asdict, dataclass
+from dataclasses import astuple, dataclass, fields
 from pathlib import Path
 
 import numpy as np
 
 from experiments.commands import doc_summary
-from experiments.reporting import write_csv
-from experiments.results.files import make_output_directory
 
+KIND = "penalty-shot"
+PLAY = "experiments.studies.penalty_shot:play_chain"
+"""What the runner calls to play one chain (see :attr:`experiments.runner.spec.MatchSpec.play`)."""
 CONDITIONS = ("one", "uncoordinated", "coordinated")
 SETTINGS = ("empty goal", "goalkeeper")
 PAIRS = (("one", "uncoordinated"), ("one", "coordinated"), ("uncoordinated", "coordinated"))
@@ -51,10 +57,6 @@ MARKER_INSET = 3.0
 """Markers lie at least this far (m) inside the lines."""
 ROBOT_SPACING = 4.0
 """Metres between the attackers on their goal line at the first trial."""
-
-
-class StudyArgumentError(ValueError):
-    """A command-line value the study cannot use; the message names the option."""
 
 
 @dataclass(frozen=True)
@@ -73,6 +75,7 @@ class Trial:
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     from experiments.commands.play import positive_int
+    from experiments.runner.options import add_run_arguments
 
     parser.description = doc_summary(__doc__)
     parser.add_argument("--trials", type=positive_int, default=60,
@@ -85,12 +88,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="the goalkeeper's team in the second setting, played with one player (default: %(default)s)")
     parser.add_argument("--limit", type=positive_int, default=1200,
                         help="cycles a trial may last before it counts as a timeout (default: %(default)s, 2 minutes)")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the markers and the matches (default: %(default)s)")
-    parser.add_argument("--workers", type=positive_int, default=None,
-                        help="processes playing the six chains of trials (default: every core, at most 6)")
-    parser.add_argument("--out", type=Path, default=None, metavar="DIR",
-                        help="also write the CSV files and the box plot into DIR (created if missing; "
-                             "default: print the tables only)")
+    add_run_arguments(parser, "penalty-shot.sqlite")
 
 
 # ---------------------------------------------------------------------------------- the design
@@ -216,16 +214,19 @@ def _attackers(condition: str, team: str, robots: int):
 
 
 def run_chain(setting: str, condition: str, team: str, keeper_team: str, robots: int, marker_list: np.ndarray,
-              limit: int, seed: int) -> list[Trial]:
+              limit: int, seed: int, watch: Callable[[object, int], object] | None = None) -> list[Trial]:
     """Play one condition's trials in order, each starting where the previous goal left the
-    attackers."""
+    attackers. ``watch(team, side)`` wraps each team object played (0: the attackers, 1: the
+    keeper), e.g. so the runner can blame the side whose code fails."""
     from soccer_sim import MatchConfig, resolve_team, run_match
 
+    watch = watch or (lambda team_object, side: team_object)
     config = MatchConfig()
     f, phys = config.field, config.physics
     keeper = setting == "goalkeeper"
     attackers, count = _attackers(condition, team, robots)
-    keeper_side = resolve_team(keeper_team)[0] if keeper else "idle"
+    attackers = watch(attackers, 0)
+    keeper_side = watch(resolve_team(keeper_team)[0], 1) if keeper else "idle"
     positions = first_positions(count, f.half_length)
     trials = []
     for i, marker in enumerate(marker_list):
@@ -239,28 +240,73 @@ def run_chain(setting: str, condition: str, team: str, keeper_team: str, robots:
     return trials
 
 
-def _chain(job: tuple) -> list[Trial]:
-    return run_chain(*job)
+# ---------------------------------------------------------------------------------- on the runner
+def chain_names(setting: str, condition: str, params: dict) -> tuple[str, str]:
+    """(home, away) naming one chain in a results file: the attackers (team, condition, robots)
+    and the defence with the trial count and limit; with ``--seed`` the key of the chain."""
+    robots = 1 if condition == "one" else params["robots"]
+    home = f"{params['team']} ({condition}, {robots} robot{'' if robots == 1 else 's'})"
+    defence = "empty goal" if setting == "empty goal" else f"{params['keeper']} goalkeeper"
+    return home, f"{defence}, {params['trials']} trials of {params['limit']} cycles"
 
 
-def collect(args: argparse.Namespace) -> list[Trial]:
-    """Every trial of every setting and condition (the six chains run in parallel)."""
-    marker_list = markers(args.trials, args.seed)
-    jobs = [(setting, condition, args.team, args.keeper, args.robots, marker_list, args.limit, args.seed)
-            for setting in SETTINGS for condition in CONDITIONS]
-    workers = args.workers or min(len(jobs), _cores())
-    if workers <= 1:
-        chains = [_chain(job) for job in jobs]
-    else:
-        with ProcessPoolExecutor(max_workers=workers) as pool:
-            chains = list(pool.map(_chain, jobs))
-    return [trial for chain in chains for trial in chain]
+def chain_specs(params: dict) -> list[tuple[str, str, object]]:
+    """(setting, condition, runner spec) of every chain, in table order."""
+    from experiments.runner.spec import MatchSpec
+
+    found = []
+    for setting in SETTINGS:
+        for condition in CONDITIONS:
+            home, away = chain_names(setting, condition, params)
+            arguments = (("setting", setting), ("condition", condition), ("team", params["team"]),
+                         ("keeper", params["keeper"]), ("robots", params["robots"]), ("trials", params["trials"]),
+                         ("limit", params["limit"]))
+            found.append((setting, condition, MatchSpec(home, away, params["seed"], None, play=PLAY,
+                                                        play_args=arguments)))
+    return found
 
 
-def _cores() -> int:
-    import os
+def build_specs(params: dict) -> list:
+    """The six chains of the study as runner specs."""
+    return [spec for _, _, spec in chain_specs(params)]
 
-    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+
+def play_chain(spec, record, watch) -> None:
+    """Play the chain of ``spec`` in a runner worker (see
+    :attr:`~experiments.runner.spec.MatchSpec.play`) and fill ``record``: the home goals are the
+    trials scored, the cycles those of all trials, and the home statistics hold each trial's
+    cycles and whether it scored (``trial_0000_cycles``, ``trial_0000_scored``, ...)."""
+    args = dict(spec.play_args)
+    names = (spec.home, spec.away)
+    trials = run_chain(args["setting"], args["condition"], args["team"], args["keeper"], args["robots"],
+                       markers(args["trials"], spec.seed), args["limit"], spec.seed,
+                       watch=lambda team, side: watch(team, names[side], side))
+    record.home_goals, record.away_goals = sum(t.scored for t in trials), 0
+    record.cycles = sum(t.cycles for t in trials)
+    record.home_stats = {name: value for t in trials
+                         for name, value in ((f"trial_{t.trial:04d}_cycles", t.cycles),
+                                             (f"trial_{t.trial:04d}_scored", int(t.scored)))}
+    record.away_stats = {}
+
+
+def stored_trials(records: Sequence, params: dict) -> list[Trial]:
+    """Every trial of the chains played to their end among ``records`` (forfeited chains have
+    none), rebuilt from the stored statistics."""
+    from soccer_sim import MatchConfig
+
+    cycle_seconds = MatchConfig().physics.cycle_seconds
+    marker_list = markers(params["trials"], params["seed"])
+    by_key = {record.key: record for record in records if record.played}
+    trials = []
+    for setting, condition, spec in chain_specs(params):
+        record = by_key.get(spec.key)
+        if record is None:
+            continue
+        for i, marker in enumerate(marker_list):
+            cycles = int(record.home_stats[f"trial_{i:04d}_cycles"])
+            trials.append(Trial(setting, condition, i, float(marker[0]), float(marker[1]), cycles,
+                                cycles * cycle_seconds, bool(record.home_stats[f"trial_{i:04d}_scored"])))
+    return trials
 
 
 # ---------------------------------------------------------------------------------- statistics
@@ -272,10 +318,10 @@ def times(trials: Sequence[Trial], setting: str, condition: str) -> np.ndarray:
 
 def signed_rank_p(a: np.ndarray, b: np.ndarray) -> float:
     """Two-sided p-value of the Wilcoxon signed-rank test on the paired times; 1.0 when every
-    pair is equal, NaN with fewer than two pairs."""
+    pair is equal, NaN with fewer than two pairs (or unpaired times: a forfeited chain)."""
     from scipy.stats import wilcoxon
 
-    if len(a) < 2:
+    if len(a) < 2 or len(a) != len(b):
         return math.nan
     if np.all(a == b):
         return 1.0
@@ -298,19 +344,19 @@ def summarise(trials: Sequence[Trial]) -> tuple[list[dict], list[dict]]:
         for first, second in PAIRS:
             a, b = times(trials, setting, first), times(trials, setting, second)
             tests.append({"setting": setting, "pair": f"{first} vs {second}",
-                          "mean_difference_s": float((a - b).mean()) if len(a) else math.nan,
+                          "mean_difference_s": float((a - b).mean()) if len(a) and len(a) == len(b) else math.nan,
                           "p_value": signed_rank_p(a, b)})
     return summary, tests
 
 
 # ---------------------------------------------------------------------------------- output
-def _tables(summary: list[dict], tests: list[dict], args: argparse.Namespace):
+def _tables(summary: list[dict], tests: list[dict], params: dict):
     from experiments.reporting import Table
 
     def fmt(value: float, digits: int = 2) -> str:
         return "-" if math.isnan(value) else f"{value:.{digits}f}"
 
-    times_table = Table(f"Time to score (s), {args.trials} markers, {args.robots} robots in the team conditions",
+    times_table = Table(f"Time to score (s), {params['trials']} markers, {params['robots']} robots in the team conditions",
                         ["setting", "condition", "mean", "sd", "median", "timeouts"], labels=2)
     for row in summary:
         times_table.rows.append([row["setting"], row["condition"], fmt(row["mean_s"]), fmt(row["sd_s"]),
@@ -331,7 +377,7 @@ def _p(value: float) -> str:
     return f"{value:.2g}" if value >= 1e-4 else f"{value:.1e}"
 
 
-def _plot(trials: Sequence[Trial], args: argparse.Namespace, path: Path) -> None:
+def _plot(trials: Sequence[Trial], params: dict, path: Path) -> Path:
     import matplotlib
 
     matplotlib.use("Agg")
@@ -341,54 +387,72 @@ def _plot(trials: Sequence[Trial], args: argparse.Namespace, path: Path) -> None
     for ax, setting in zip(np.atleast_1d(axes), SETTINGS):
         data = [times(trials, setting, c) for c in CONDITIONS]
         ax.boxplot(data, showmeans=True)
-        ax.set_xticks(range(1, len(CONDITIONS) + 1), [f"{c}\n({1 if c == 'one' else args.robots} robot"
+        ax.set_xticks(range(1, len(CONDITIONS) + 1), [f"{c}\n({1 if c == 'one' else params['robots']} robot"
                                                        f"{'' if c == 'one' else 's'})" for c in CONDITIONS])
         ax.set_title(setting)
         ax.grid(axis="y", alpha=0.3)
     np.atleast_1d(axes)[0].set_ylabel("time to score (s)")
-    fig.suptitle(f"penalty shot: {args.trials} markers, team {args.team!r}, keeper {args.keeper!r}")
+    fig.suptitle(f"penalty shot: {params['trials']} markers, team {params['team']!r}, keeper {params['keeper']!r}")
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    return path
 
 
 def run(args: argparse.Namespace) -> int:
-    from experiments.commands.errors import FAILED, fail
-    from soccer_sim import ScenarioError, TeamError, TeamNotFoundError, resolve_team
+    from experiments.runner.options import run_command
+
+    return run_command(args, KIND, _params, build_specs, report)
+
+
+def _params(args: argparse.Namespace) -> dict:
+    """The study's parameters; a RunInputError naming the option that cannot be used."""
+    from experiments.runner.options import RunInputError
+    from soccer_sim import TeamNotFoundError, resolve_team
     from soccer_sim.scenarios import MAX_PLAYERS
 
-    try:
-        if args.seed < 0:
-            raise StudyArgumentError(f"--seed must be a non-negative integer, got {args.seed}")
-        if args.robots > MAX_PLAYERS:
-            raise StudyArgumentError(f"--robots must be at most {MAX_PLAYERS} (players a side), got {args.robots}")
-        for option, name in (("--team", args.team), ("--keeper", args.keeper)):
-            try:
-                resolve_team(name)
-            except TeamNotFoundError as exc:
-                raise StudyArgumentError(f"{option}: {exc}") from None
-        if args.out is not None and (problem := make_output_directory(args.out)):
-            raise StudyArgumentError(f"--out {args.out}: {problem}")
-    except StudyArgumentError as exc:
-        return fail(str(exc))
-    start = time.perf_counter()
-    try:
-        trials = collect(args)
-    except (TeamError, ScenarioError, ValueError) as exc:
-        return fail(str(exc), FAILED)
-    elapsed = time.perf_counter() - start
+    if args.robots > MAX_PLAYERS:
+        raise RunInputError(f"--robots must be at most {MAX_PLAYERS} (players a side), got {args.robots}")
+    for option, name in (("--team", args.team), ("--keeper", args.keeper)):
+        try:
+            resolve_team(name)
+        except TeamNotFoundError as exc:
+            raise RunInputError(f"{option}: {exc}") from None
+    # A chain is many scenario matches with no single configuration length or replay, and its
+    # key names no team a Ray node could load before play: these options do not apply.
+    if args.cycles is not None:
+        raise RunInputError("--cycles does not apply to penalty-shot: a trial lasts at most --limit cycles")
+    if args.record_dir is not None:
+        raise RunInputError("--record-dir does not apply to penalty-shot (a chain is many short trials)")
+    if args.backend != "local":
+        raise RunInputError("--backend ray: penalty-shot runs its six chains on the local pool only")
+    return {"trials": args.trials, "robots": args.robots, "team": args.team, "keeper": args.keeper,
+            "limit": args.limit, "seed": args.seed, "cycles": None}
+
+
+def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list[Path]:
+    """Print the tables from the chains played to their end (a forfeited chain's row is empty,
+    its tests ``-``); with ``out_dir`` write the trials, the summary and the tests as CSV, the
+    tables as Markdown and the box plot there. Returns the files written."""
+    from experiments.reporting import write_csv, write_markdown
+
+    trials = stored_trials(records, params)
     summary, tests = summarise(trials)
-    for table in _tables(summary, tests, args):
+    tables = _tables(summary, tests, params)
+    for table in tables:
         table.print()
-    print(f"{len(trials)} trials in {elapsed:.1f} s")
-    if args.out is None:
-        print("tables only; --out DIR also writes the trials, the summary, the tests (CSV) and the box plot")
-        return 0
-    rows = [asdict(t) for t in trials]
-    write_csv(args.out / "penalty_shot_trials.csv", list(rows[0]), [list(r.values()) for r in rows])
-    write_csv(args.out / "penalty_shot_summary.csv", list(summary[0]), [list(r.values()) for r in summary])
-    write_csv(args.out / "penalty_shot_tests.csv", list(tests[0]), [list(r.values()) for r in tests])
-    _plot(trials, args, args.out / "penalty_shot.png")
-    names = ("penalty_shot_trials.csv", "penalty_shot_summary.csv", "penalty_shot_tests.csv", "penalty_shot.png")
-    print(f"wrote {', '.join(str(args.out / n) for n in names)}")
-    return 0
+    chains = len({(t.setting, t.condition) for t in trials})
+    print(f"{len(trials)} trials in {chains} of {len(SETTINGS) * len(CONDITIONS)} chains")
+    if out_dir is None:
+        return []
+    written = [
+        write_csv(out_dir / "penalty_shot_trials.csv", [f.name for f in fields(Trial)], [astuple(t) for t in trials]),
+        write_csv(out_dir / "penalty_shot_summary.csv", list(summary[0]), [list(r.values()) for r in summary]),
+        write_csv(out_dir / "penalty_shot_tests.csv", list(tests[0]), [list(r.values()) for r in tests]),
+        write_markdown(out_dir / "penalty_shot.md", list(tables),
+                       f"Penalty shot: {params['trials']} markers, team {params['team']}, keeper {params['keeper']}, "
+                       f"limit {params['limit']} cycles, seed {params['seed']}."),
+        _plot(trials, params, out_dir / "penalty_shot.png"),
+    ]
+    print("wrote " + ", ".join(str(path) for path in written))
+    return written
