@@ -360,7 +360,7 @@ def _tables(summary: list[dict], tests: list[dict], params: dict):
                         ["setting", "condition", "mean", "sd", "median", "timeouts"], labels=2)
     for row in summary:
         times_table.rows.append([row["setting"], row["condition"], fmt(row["mean_s"]), fmt(row["sd_s"]),
-                                 fmt(row["median_s"]), str(row["timeouts"])])
+                                 fmt(row["median_s"]), str(row["timeouts"]) if row["trials"] else "-"])
     tests_table = Table("Wilcoxon signed-rank tests (paired by marker, two-sided)",
                         ["pair", *(f"{s}: mean diff (s)" for s in SETTINGS), *(f"{s}: p" for s in SETTINGS)])
     for first, second in PAIRS:

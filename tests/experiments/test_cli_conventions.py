@@ -166,7 +166,6 @@ def test_lazy_assignment_writes_nothing_without_out(capsys, in_tmp):
 
 
 @pytest.mark.parametrize("argv", [
-    ["experiment", "penalty-shot", "--trials", "1", "--limit", "10", "--workers", "1"],
     ["experiment", "incremental", "--n", "12", "--trials", "1", "--lambdas", "0,1"],
     ["experiment", "distributed", "--grid-sizes", "", "--etsp-sizes", "4", "--worst-sizes", "", "--sweep-areas", "",
      "--trials", "1"],

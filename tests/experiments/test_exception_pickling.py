@@ -22,7 +22,6 @@ EXAMPLES: dict[str, tuple] = {
     "agents.skills.model.SkillInputError": ("horizon must be positive",),
     "experiments.studies.incremental.StudyArgumentError": ("--lams: bad",),
     "experiments.studies.distributed.StudyArgumentError": ("--sizes: bad",),
-    "experiments.studies.penalty_shot.StudyArgumentError": ("--team: unknown team",),
     "soccer_sim.replay.recorder.ReplayError": ("replays need rerun-sdk: pip install rerun-sdk",),
     "soccer_sim.scenarios.scenario.ScenarioError": ("home.goalie", "index 4 is beyond the side's 3 players"),
     "experiments.benchmarks.assignment.BenchmarkArgumentError": ("--sizes: bad",),

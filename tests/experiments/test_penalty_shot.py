@@ -10,8 +10,10 @@ import pytest
 
 import soccer_sim
 from experiments.cli import main
+from experiments.results.store import ResultStore
 from experiments.studies import penalty_shot as ps
 from soccer_sim import TeamCommand
+from tests.experiments.conftest import SCRIPTED, outcome
 
 
 def test_markers_are_fixed_alternate_halves_and_stay_off_the_lines_and_the_goal_area():
@@ -91,10 +93,10 @@ def test_signed_rank_p_values():
 
 def test_the_command_on_two_trials_prints_the_tables_and_writes_the_files(tmp_path, capsys):
     out = tmp_path / "ps"
-    assert main(["experiment", "penalty-shot", "--trials", "2", "--workers", "1", "--limit", "150",
-                 "--out", str(out)]) == 0
+    assert main(["experiment", "penalty-shot", "--trials", "2", "--workers", "1", "--limit", "150", "--no-progress",
+                 "--out", str(tmp_path / "ps.sqlite"), "--tables", str(out)]) == 0
     printed = capsys.readouterr().out
-    assert "Time to score" in printed and "Wilcoxon" in printed and "12 trials in" in printed
+    assert "Time to score" in printed and "Wilcoxon" in printed and "12 trials in 6 of 6 chains" in printed
     with open(out / "penalty_shot_trials.csv") as handle:
         rows = list(csv.DictReader(handle))
     assert len(rows) == 2 * len(ps.CONDITIONS) * len(ps.SETTINGS)
@@ -104,16 +106,129 @@ def test_the_command_on_two_trials_prints_the_tables_and_writes_the_files(tmp_pa
     with open(out / "penalty_shot_tests.csv") as handle:
         assert len(list(csv.DictReader(handle))) == len(ps.PAIRS) * len(ps.SETTINGS)
     assert (out / "penalty_shot.png").stat().st_size > 1000
+    assert "Time to score" in (out / "penalty_shot.md").read_text()
 
 
 def test_bad_options_are_reported_without_a_traceback(tmp_path, capsys):
-    assert main(["experiment", "penalty-shot", "--trials", "2", "--team", "no-such-team", "--out", str(tmp_path)]) == 2
+    results = str(tmp_path / "ps.sqlite")
+    assert main(["experiment", "penalty-shot", "--trials", "2", "--team", "no-such-team", "--out", results]) == 2
     err = capsys.readouterr().err
     assert "--team" in err and "Traceback" not in err
-    assert main(["experiment", "penalty-shot", "--trials", "1", "--robots", "12", "--out", str(tmp_path)]) == 2
+    assert main(["experiment", "penalty-shot", "--trials", "1", "--robots", "12", "--out", results]) == 2
     err = capsys.readouterr().err
     assert "--robots must be at most 11" in err and "Traceback" not in err
     (tmp_path / "a-file").write_text("")
-    assert main(["experiment", "penalty-shot", "--trials", "1", "--out", str(tmp_path / "a-file")]) == 2
+    assert main(["experiment", "penalty-shot", "--trials", "1", "--out", results, "--tables",
+                 str(tmp_path / "a-file")]) == 2
     err = capsys.readouterr().err
-    assert "--out" in err and "Traceback" not in err
+    assert "--tables" in err and "Traceback" not in err
+    for option in (["--cycles", "100"], ["--record-dir", str(tmp_path / "replays")], ["--backend", "ray"]):
+        assert main(["experiment", "penalty-shot", "--trials", "1", "--out", results, *option]) == 2
+        err = capsys.readouterr().err
+        assert option[0] in err and "Traceback" not in err
+    assert not (tmp_path / "ps.sqlite").exists() and not (tmp_path / "replays").exists()
+
+
+# ------------------------------------------------------------------------------ on the runner
+TINY = ["--trials", "2", "--limit", "120", "--robots", "2", "--team", "chaser", "--no-progress"]
+PARAMS = {"trials": 2, "robots": 2, "team": "chaser", "keeper": "static", "limit": 120, "seed": 0, "cycles": None}
+
+
+def _run(tmp_path, name: str, *extra: str) -> int:
+    """Run the tiny study into ``name``.sqlite (tables in ``name``/); its exit status."""
+    return main(["experiment", "penalty-shot", *TINY, "--out", str(tmp_path / f"{name}.sqlite"),
+                 "--tables", str(tmp_path / name), *extra])
+
+
+def _tables_printed(text: str) -> str:
+    """The printed tables of a run (from the first table's title to the trial count)."""
+    start = text.index("# Time to score")
+    return text[start:text.index(" chains", start)]
+
+
+def _records(path) -> list:
+    with ResultStore.open(path) as store:
+        return store.records()
+
+
+def test_the_chain_keys_cover_every_parameter_that_changes_a_trial():
+    specs = ps.build_specs(PARAMS)
+    assert len({spec.key for spec in specs}) == 6 and all(spec.play == ps.PLAY for spec in specs)
+    for name, value in (("trials", 3), ("robots", 3), ("team", "idle"), ("keeper", "idle"), ("limit", 121),
+                        ("seed", 1)):
+        other = {spec.key for spec in ps.build_specs({**PARAMS, name: value})}
+        changed = {spec.key for spec in specs} - other
+        # The empty goal ignores the keeper and a single robot ignores --robots: those chains are shared.
+        assert len(changed) == {"keeper": 3, "robots": 4}.get(name, 6), name
+
+
+def test_a_chain_played_by_a_worker_is_the_chain_of_run_chain():
+    from experiments.runner.worker import play_spec
+
+    spec = ps.build_specs(PARAMS)[5]  # goalkeeper, coordinated
+    record = play_spec(spec, "hash", "version", timeout=None)
+    trials = ps.run_chain("goalkeeper", "coordinated", "chaser", "static", 2, ps.markers(2, 0), 120, 0)
+    assert record.error is None and record.cycles == sum(t.cycles for t in trials)
+    assert record.home_goals == sum(t.scored for t in trials)
+    assert ps.stored_trials([record], PARAMS) == trials
+
+
+@pytest.mark.parametrize("side", [0, 1])
+def test_a_chain_whose_team_raises_is_forfeited_by_that_team(side):
+    from experiments.runner.worker import play_spec
+
+    raising = SCRIPTED + "RaisingTeam"
+    params = {**PARAMS, ("team", "keeper")[side]: raising}
+    spec = ps.build_specs(params)[4]  # goalkeeper, uncoordinated: the keeper plays, the attackers are copies
+    record = play_spec(spec, "hash", "version", timeout=None)
+    assert record.forfeit == side and "scripted failure" in record.error and record.home_goals is None
+
+
+def test_a_forfeited_chain_leaves_its_rows_empty_and_the_study_goes_on(tmp_path, capsys):
+    status = _run(tmp_path, "ff", "--keeper", SCRIPTED + "RaisingTeam", "--workers", "1")
+    printed = capsys.readouterr().out
+    assert status == 0  # forfeits are results
+    records = _records(tmp_path / "ff.sqlite")
+    assert sorted((r.away.startswith(SCRIPTED), r.forfeit) for r in records) == [(False, -1)] * 3 + [(True, 1)] * 3
+    assert "6 trials in 3 of 6 chains" in printed and "forfeited by " + SCRIPTED + "RaisingTeam goalkeeper" in printed
+    with open(tmp_path / "ff" / "penalty_shot_summary.csv") as handle:
+        summary = list(csv.DictReader(handle))
+    assert [int(row["trials"]) for row in summary] == [2, 2, 2, 0, 0, 0]
+    with open(tmp_path / "ff" / "penalty_shot_tests.csv") as handle:
+        tests = list(csv.DictReader(handle))
+    assert [row["p_value"] == "nan" for row in tests] == [False] * 3 + [True] * 3
+
+
+def test_a_resumed_run_equals_one_run_and_results_show_repeats_its_tables(tmp_path, capsys):
+    from experiments.runner import run_matches
+
+    assert _run(tmp_path, "whole", "--workers", "1") == 0
+    whole = capsys.readouterr().out
+    run_matches(ps.build_specs(PARAMS)[:2], tmp_path / "resumed.sqlite", ps.KIND, PARAMS, workers=1, progress=False)
+    capsys.readouterr()
+    assert _run(tmp_path, "resumed", "--workers", "1") == 0
+    resumed = capsys.readouterr().out
+    assert "(2 already stored): played 4" in resumed
+    assert outcome(_records(tmp_path / "resumed.sqlite")) == outcome(_records(tmp_path / "whole.sqlite"))
+    assert _tables_printed(resumed) == _tables_printed(whole)
+    for name in ("trials", "summary", "tests"):
+        assert ((tmp_path / "resumed" / f"penalty_shot_{name}.csv").read_text()
+                == (tmp_path / "whole" / f"penalty_shot_{name}.csv").read_text())
+    assert main(["results", "show", str(tmp_path / "whole.sqlite"), "--tables", str(tmp_path / "shown")]) == 0
+    shown = capsys.readouterr().out
+    assert "penalty-shot, 6 of 6 matches stored (0 failed)" in shown
+    assert _tables_printed(shown) == _tables_printed(whole)
+    assert ((tmp_path / "shown" / "penalty_shot_tests.csv").read_text()
+            == (tmp_path / "whole" / "penalty_shot_tests.csv").read_text())
+
+
+def test_the_tables_are_the_same_with_one_and_two_workers(tmp_path, capsys):
+    assert _run(tmp_path, "one", "--workers", "1") == 0
+    one = capsys.readouterr().out
+    assert _run(tmp_path, "two", "--workers", "2") == 0
+    two = capsys.readouterr().out
+    assert "on 2 worker(s)" in two
+    assert _tables_printed(one) == _tables_printed(two)
+    assert outcome(_records(tmp_path / "one.sqlite")) == outcome(_records(tmp_path / "two.sqlite"))
+    assert ((tmp_path / "one" / "penalty_shot_trials.csv").read_text()
+            == (tmp_path / "two" / "penalty_shot_trials.csv").read_text())
