@@ -254,7 +254,7 @@ SLOW_COMMANDS: dict[tuple[str, ...], list[str]] = {
     ("experiment", "case-study"): ["--teams", "idle,chaser", "--opponents", "chaser", "--baseline", "idle",
                                    "--games", "2", "--cycles", "5", "--workers", "1", "--no-progress"],
     ("experiment", "penalty-shot"): ["--trials", "1", "--limit", "5", "--workers", "1", "--team", "chaser",
-                                     "--keeper", "idle"],
+                                     "--keeper", "idle", "--no-progress"],
     ("bench", "soccer"): ["--matches", "1", "--cycles", "5", "--home", "idle", "--away", "chaser"],
     ("bench", "roles"): ["--situations", "1", "--number", "1"],
     ("bench", "assignment"): ["--sizes", "4", "--repeats", "1", "--quality-instances", "2"],
