@@ -35,7 +35,8 @@ class MatchSpec:
     ``away``. The worker calls ``function(spec, record, watch)``: the function plays, wrapping
     every team object it plays with ``watch(team, name, side)`` (so a failure in that team's
     code forfeits the spec for ``side``), and fills ``record``'s goals, cycles and statistics.
-    Part of the identity; the names and the seed must still make the key unique in a file."""
+    The run's ``figures`` recorder and ``record`` replay do not apply to it. Part of the identity;
+    the names and the seed must still make the key unique in a results file."""
     play_args: tuple[tuple[str, object], ...] = ()
     """(name, value) pairs the ``play`` function reads (hashable, picklable); part of the identity."""
 
