@@ -57,6 +57,8 @@ MARKER_INSET = 3.0
 """Markers lie at least this far (m) inside the lines."""
 ROBOT_SPACING = 4.0
 """Metres between the attackers on their goal line at the first trial."""
+KEEPER_START = (51.5, 0.0)
+"""Where the goalkeeper starts every trial (on the line of the goal the attackers attack)."""
 
 
 @dataclass(frozen=True)
@@ -117,10 +119,13 @@ def first_positions(robots: int, half_length: float = 52.5) -> np.ndarray:
     return np.column_stack([np.full(robots, -half_length + 0.5), y])
 
 
-def settle(positions: np.ndarray, half_length: float, half_width: float, gap: float) -> np.ndarray:
+def settle(positions: np.ndarray, half_length: float, half_width: float, gap: float,
+           fixed: Sequence[tuple[float, float]] = ()) -> np.ndarray:
     """``positions`` moved onto the field (a scorer may stand behind the goal line), half a metre
     inside the lines, and apart by at least ``gap`` (m), so that they are a valid start for the
-    next trial: each overlapping pair is pushed apart symmetrically until none is left."""
+    next trial: each overlapping pair is pushed apart symmetrically until none is left. An
+    attacker closer than ``gap`` to one of the ``fixed`` players (the goalkeeper's start on its
+    line) is moved sideways off it."""
     pos = positions.astype(float).copy()
     x_max, y_max = half_length - 0.5, half_width - 0.5
     for _ in range(100):
@@ -138,6 +143,14 @@ def settle(positions: np.ndarray, half_length: float, half_width: float, gap: fl
                     pos[i] -= shift
                     pos[j] += shift
                     moved = True
+        for q in fixed:
+            for i in range(len(pos)):
+                d = pos[i] - q
+                if float(np.hypot(*d)) < gap:
+                    # Sideways: a scorer on the goal line cannot go further back.
+                    side = 1.0 if d[1] >= 0 else -1.0
+                    pos[i, 1] = q[1] + side * (math.sqrt(max(gap * gap - d[0] * d[0], 0.0)) + 1e-6)
+                    moved = True
         if not moved:
             return pos
     raise ValueError(f"cannot place {len(pos)} attackers {gap} m apart on the field")
@@ -148,7 +161,7 @@ def trial_scenario(marker: np.ndarray, attackers: np.ndarray, keeper: bool, limi
     on ``marker``, an empty goal or a goalkeeper on its line; ends at the goal or ``limit``."""
     from soccer_sim.scenarios import BallStart, Scenario, Side
 
-    away = Side(positions=[(51.5, 0.0)], goalie=0) if keeper else Side(players=0)
+    away = Side(positions=[KEEPER_START], goalie=0) if keeper else Side(players=0)
     return Scenario(name="penalty-shot", description="attackers score from a marker",
                     home=Side(positions=[tuple(p) for p in attackers.tolist()], goalie=None), away=away,
                     ball=BallStart(position=tuple(marker.tolist())), start_mode="play_on", end_on=("scored",),
@@ -230,7 +243,8 @@ def run_chain(setting: str, condition: str, team: str, keeper_team: str, robots:
     positions = first_positions(count, f.half_length)
     trials = []
     for i, marker in enumerate(marker_list):
-        start = settle(positions, f.half_length, f.half_width, 2.0 * phys.player_radius + 0.05)
+        start = settle(positions, f.half_length, f.half_width, 2.0 * phys.player_radius + 0.05,
+                       fixed=[KEEPER_START] if keeper else [])
         result = run_match(attackers, keeper_side, seed=seed + i, config=config,
                            scenario=trial_scenario(marker, start, keeper, limit))
         scored = result.end_reason == "scored"

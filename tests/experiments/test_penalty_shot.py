@@ -36,6 +36,25 @@ def test_settle_keeps_attackers_on_the_field_and_apart(start):
     assert min(gaps) >= 0.65 - 1e-9
 
 
+@pytest.mark.parametrize("start", [
+    [[52.0, 0.0086]],  # a scorer left on the goal line where the goalkeeper starts
+    [[52.0, -0.1], [51.8, 0.2]],
+    [[51.5, 0.0], [51.5, 0.0], [52.3, 0.4]],
+])
+def test_settle_keeps_attackers_off_the_goalkeepers_start(start):
+    pos = ps.settle(np.array(start), 52.5, 34.0, 0.65, fixed=[ps.KEEPER_START])
+    assert (np.abs(pos[:, 0]) <= 52.0).all()
+    assert all(np.hypot(*(p - np.array(ps.KEEPER_START))) >= 0.65 - 1e-9 for p in pos)
+    gaps = [np.hypot(*(pos[i] - pos[j])) for i in range(len(pos)) for j in range(i + 1, len(pos))]
+    assert min(gaps, default=1.0) >= 0.65 - 1e-9
+
+
+def test_a_goal_scored_from_the_goalkeepers_spot_does_not_stop_the_chain():
+    # chaser scores its first trial from on the goal line beside the keeper's start (seed 0)
+    trials = ps.run_chain("goalkeeper", "one", "chaser", "static", 1, ps.markers(3, 0), 1200, 0)
+    assert [t.trial for t in trials] == [0, 1, 2]
+
+
 def test_each_trial_starts_where_the_previous_goal_left_the_attackers(monkeypatch):
     played = []
     real = soccer_sim.run_match
@@ -232,3 +251,12 @@ def test_the_tables_are_the_same_with_one_and_two_workers(tmp_path, capsys):
     assert outcome(_records(tmp_path / "one.sqlite")) == outcome(_records(tmp_path / "two.sqlite"))
     assert ((tmp_path / "one" / "penalty_shot_trials.csv").read_text()
             == (tmp_path / "two" / "penalty_shot_trials.csv").read_text())
+
+
+def test_the_time_budget_covers_the_whole_chain():
+    from experiments.runner.worker import play_spec
+
+    ps.run_chain("goalkeeper", "one", "chaser", "static", 1, ps.markers(1, 0), 10, 0)  # imports done: only play is timed
+    spec = ps.build_specs({**PARAMS, "trials": 200, "limit": 1200})[3]  # goalkeeper, one robot: minutes of play
+    record = play_spec(spec, "hash", "version", timeout=1.0)
+    assert record.error.startswith("MatchTimeout") and record.home_goals is None and record.wall_time < 60.0
