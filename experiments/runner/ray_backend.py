@@ -26,7 +26,8 @@ running) in a small file on its node (:mod:`experiments.runner.slots`). When a t
 because its worker died, one more task pinned to that node reads the slot: a worker that died
 inside a team's code forfeits the match for that team, as on the local pool, and that failure
 does not count against the node. If nobody is to blame (or the node is gone) the failure is
-the node's, as above.
+the node's, as above. An overdue task's slot is read the same way once it is cancelled (a team
+hung deaf to the worker's timer forfeits).
 """
 
 from __future__ import annotations
@@ -189,8 +190,9 @@ class RayPool:
         self._remote = ray.remote(num_cpus=1, max_retries=0)(play_on_node)
         self._check = ray.remote(num_cpus=1, max_retries=0)(check_node)
         self._take_slot = ray.remote(num_cpus=0, max_retries=0)(take_slot)
-        self._blames: dict[object, tuple[_Task, str, float]] = {}
-        """Slot reads in flight: the failed task, why it failed, when the read started."""
+        self._blames: dict[object, tuple[_Task, str, float, bool]] = {}
+        """Slot reads in flight: the failed task, why it failed, when (the read started then),
+        whether it was cancelled as overdue (else its worker died)."""
         self._nodes: dict[str, _Node] = {}
         self._checks: dict[object, tuple[_Node, float]] = {}
         self._expected: Expected | None = None
@@ -307,7 +309,7 @@ class RayPool:
             self.warm_up(specs)
         ray = self._ray
         self._pending.extend((spec, 0, frozenset()) for spec in specs)
-        config_hash, version, timeout = self._args
+        _, version, timeout = self._args
         idle_since: float | None = None
         try:
             while self._pending or self._in_flight or self._blames:
@@ -333,7 +335,7 @@ class RayPool:
                     elif ref in self._in_flight:
                         yield from self._finished(ref, self._in_flight.pop(ref), version)
                     elif ref in self._blames:
-                        yield from self._blamed(ref, *self._blames.pop(ref)[:2])
+                        yield from self._blamed(ref, *self._blames.pop(ref))
                 yield from self._expire_blames()
                 if timeout is not None:
                     now = time.monotonic()
@@ -342,9 +344,8 @@ class RayPool:
                             ray.cancel(ref, force=True)
                             del self._in_flight[ref]
                             task.node.busy -= 1
-                            yield failed_record(task.spec, config_hash, version, now - task.started,
-                                                f"MatchTimeout: match exceeded its time budget of {timeout:g} s "
-                                                "and its Ray task was cancelled")
+                            self._ask_slot(task, f"MatchTimeout: match exceeded its time budget of {timeout:g} s "
+                                                 "and its Ray task was cancelled", overdue=True)
         finally:
             for ref in list(self._in_flight) + list(self._checks) + list(self._blames):
                 ray.cancel(ref, force=True)
@@ -379,9 +380,7 @@ class RayPool:
         except Exception as exc:  # noqa: BLE001 - a dead worker, a lost node, a module missing there
             reason = failure_reason(exc)
             if _worker_died(exc) and not _node_gone(exc):  # whose code was it running? ask its node
-                pin = self._pin(node.id)
-                self._blames[self._take_slot.options(scheduling_strategy=pin).remote(task.token)] = (
-                    task, reason, time.monotonic())
+                self._ask_slot(task, reason)
                 return
             yield from self._node_failed(task, reason, _node_gone(exc))
             return
@@ -412,30 +411,41 @@ class RayPool:
             yield from self._take_out(node, f"{node.failures} tasks failed in a row (last: {reason})")
         yield from self._requeue(task, f"RayTaskFailed on {node.name}: {reason}")
 
-    def _blamed(self, ref, task: _Task, reason: str) -> Iterator[MatchRecord]:
-        """The slot of ``task``'s dead worker has been read (``ref``): the match is forfeited by
-        the side whose code the worker was running; with no side (or no answer) the node failed."""
-        try:
-            side = int(self._ray.get(ref))
-        except Exception:  # noqa: BLE001 - the node went away too: nobody can be blamed
-            side = FORFEIT_NONE
-        if side == FORFEIT_NONE:
+    def _ask_slot(self, task: _Task, reason: str, overdue: bool = False) -> None:
+        """Read, on its node, the slot of ``task``, whose worker died (or, if ``overdue``, was
+        cancelled): whose code was it running? The answer is handled by :meth:`_blamed`."""
+        ref = self._take_slot.options(scheduling_strategy=self._pin(task.node.id)).remote(task.token)
+        self._blames[ref] = (task, reason, time.monotonic(), overdue)
+
+    def _blamed(self, ref, task: _Task, reason: str, ended: float, overdue: bool,
+                answered: bool = True) -> Iterator[MatchRecord]:
+        """The slot of ``task`` has been read (``ref``; not if ``answered`` is False): the match
+        is forfeited by the side whose code the worker was running. With no side (or no
+        answer), an overdue match fails unblamed and a dead worker is its node's failure."""
+        side = FORFEIT_NONE
+        if answered:
+            try:
+                side = int(self._ray.get(ref))
+            except Exception:  # noqa: BLE001 - the node went away too: nobody can be blamed
+                pass
+        if side == FORFEIT_NONE and not overdue:
             yield from self._node_failed(task, reason)
             return
         config_hash, version, _ = self._args
-        yield failed_record(task.spec, config_hash, version, time.monotonic() - task.started,
-                            f"WorkerDied: the Ray worker process on {task.node.name} died while playing this match "
-                            f"({reason}); it was running the code of the {('home', 'away')[side]} team "
-                            f"{task.spec.key[side]!r}", forfeit=side)
+        message = reason if overdue else (f"WorkerDied: the Ray worker process on {task.node.name} died while "
+                                          f"playing this match ({reason})")
+        if side != FORFEIT_NONE:
+            message += f"; it was running the code of the {('home', 'away')[side]} team {task.spec.key[side]!r}"
+        yield failed_record(task.spec, config_hash, version, ended - task.started, message, forfeit=side)
 
     def _expire_blames(self) -> Iterator[MatchRecord]:
         """Slot reads unanswered after :data:`BLAME_TIMEOUT`: cancelled, nobody blamed."""
         now = time.monotonic()
-        for ref, (task, reason, started) in list(self._blames.items()):
-            if now > started + BLAME_TIMEOUT:
+        for ref, (task, reason, ended, overdue) in list(self._blames.items()):
+            if now > ended + BLAME_TIMEOUT:
                 self._ray.cancel(ref, force=True)
                 del self._blames[ref]
-                yield from self._node_failed(task, reason)
+                yield from self._blamed(ref, task, reason, ended, overdue, answered=False)
 
     def _give_up(self) -> Iterator[MatchRecord]:
         """No node can play and none joined within NODE_WAIT: the matches left fail (unblamed,

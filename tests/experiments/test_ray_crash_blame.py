@@ -96,3 +96,27 @@ def test_on_ray_a_worker_that_dies_outside_team_code_is_the_nodes_failure(monkey
     assert len(records) == 1 and records[0].forfeit == FORFEIT_NONE
     assert records[0].error.startswith("RayTaskFailed on node ") and "WorkerCrashedError" in records[0].error
     assert node.state == "out" and node.failures == NODE_FAILURE_LIMIT
+
+
+@pytest.mark.slow
+def test_on_ray_a_team_hung_deaf_to_the_timer_forfeits_when_its_task_is_cancelled(tmp_path, monkeypatch,
+                                                                                   capsys) -> None:
+    from experiments.cli import main
+    from experiments.results.store import ResultStore
+    from experiments.runner import ray_backend
+
+    monkeypatch.setattr(ray_backend, "RAY_GRACE", 0.5)
+    hanging = SCRIPTED + "DeafHangingTeam"
+    out = tmp_path / "ray.sqlite"
+    status = main(["tournament", "--teams", f"{hanging},idle", "--games", "2", "--cycles", "60", "--workers", "2",
+                   "--match-timeout", "4", "--no-progress", "--backend", "ray", "--out", str(out)])
+    err = capsys.readouterr().err
+    assert status == 0, err
+    with ResultStore.open(out) as store:
+        records = store.records()
+    assert len(records) == 2
+    for record in records:
+        side = (record.home, record.away).index(hanging)
+        assert record.forfeit == side
+        assert record.error == ("MatchTimeout: match exceeded its time budget of 4 s and its Ray task was cancelled; "
+                                f"it was running the code of the {('home', 'away')[side]} team {hanging!r}")
