@@ -15,12 +15,16 @@ import os
 import re
 import struct
 import tempfile
+import time
 from pathlib import Path
 
 from experiments.results.record import FORFEIT_NONE
 
 SLOT_DIR = "soccer-sim-slots"
 """Directory under the node's temporary directory that holds the slot files."""
+
+STALE_AFTER = 24 * 3600.0
+"""Seconds after which a slot file no task removed (its driver was killed too) is swept away."""
 
 _FORMAT = "=2q"
 _TOKEN = re.compile(r"[0-9a-f]{8,64}")
@@ -36,11 +40,13 @@ def slot_path(token: str) -> Path:
 class FileSlot:
     """Two int64 mapped from the slot file of ``token``, both FORFEIT_NONE at first; used as a
     context manager, whose exit unmaps and removes the file (a process that dies leaves it for
-    :func:`take_slot`). ``values`` is the sequence of two integers to pass as ``deciding``."""
+    :func:`take_slot`). ``values`` is the sequence of two integers to pass as ``deciding``.
+    Slot files older than :data:`STALE_AFTER` are removed first."""
 
     def __init__(self, token: str) -> None:
         self.path = slot_path(token)
         self.path.parent.mkdir(parents=True, exist_ok=True)
+        sweep_stale(self.path.parent)
         with open(self.path, "wb") as file:
             file.write(struct.pack(_FORMAT, FORFEIT_NONE, FORFEIT_NONE))
         with open(self.path, "r+b") as file:
@@ -70,6 +76,19 @@ def take_slot(token: str) -> int:
         return FORFEIT_NONE
     side = struct.unpack(_FORMAT, data)[0]
     return side if side in (0, 1) else FORFEIT_NONE
+
+
+def sweep_stale(directory: Path, now: float | None = None) -> None:
+    """Remove the slot files in ``directory`` last changed more than :data:`STALE_AFTER` ago:
+    those of tasks whose worker and driver both died, so nobody read them."""
+    now = time.time() if now is None else now
+    with os.scandir(directory) as entries:
+        for entry in entries:
+            try:
+                if entry.name.endswith(".slot") and entry.stat().st_mtime < now - STALE_AFTER:
+                    os.unlink(entry.path)
+            except FileNotFoundError:  # read or removed meanwhile by its own task
+                pass
 
 
 def new_token() -> str:

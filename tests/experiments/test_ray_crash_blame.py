@@ -4,13 +4,14 @@ count against the node; a worker that dies outside any team's code is the node's
 
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 
 import pytest
 
 from experiments.results.record import FORFEIT_NONE
-from experiments.runner.slots import FileSlot, slot_path, take_slot
+from experiments.runner.slots import STALE_AFTER, FileSlot, slot_path, sweep_stale, take_slot
 from tests.experiments.conftest import SCRIPTED
 
 # ---- the slot file (no Ray) ----------------------------------------------------------------------
@@ -42,6 +43,17 @@ def test_a_slot_starts_unblamed_and_its_file_goes_when_the_task_returns() -> Non
         slot.values[0] = 0
         assert slot_path(token).read_bytes() != b""
     assert not slot_path(token).exists()
+
+
+def test_slot_files_nobody_read_are_swept_once_stale(tmp_path) -> None:
+    stale, fresh, other = tmp_path / "a.slot", tmp_path / "b.slot", tmp_path / "c.txt"
+    for path in (stale, fresh, other):
+        path.write_bytes(b"x")
+    now = stale.stat().st_mtime + STALE_AFTER + 1
+    os.utime(fresh, (now, now))
+    os.utime(other, (0, 0))
+    sweep_stale(tmp_path, now)
+    assert not stale.exists() and fresh.exists() and other.exists()
 
 
 def test_a_slot_token_must_be_hex() -> None:
