@@ -20,6 +20,14 @@ that leaves, or fails :data:`NODE_FAILURE_LIMIT` tasks in a row for reasons outs
 at most :data:`MATCH_RETRIES` more times. A returned row whose code version is not the
 driver's is never stored: its node is taken out and the match played elsewhere. An overdue
 task (past ``--match-timeout`` plus :data:`RAY_GRACE`) is cancelled and recorded as failed.
+
+Crash blame: each match task keeps its worker's deciding slot (the side whose team code is
+running) in a small file on its node (:mod:`experiments.runner.slots`). When a task fails
+because its worker died, one more task pinned to that node reads the slot: a worker that died
+inside a team's code forfeits the match for that team, as on the local pool, and that failure
+does not count against the node. If nobody is to blame (or the node is gone) the failure is
+the node's, as above. An overdue task's slot is read the same way once it is cancelled (a team
+hung deaf to the worker's timer forfeits).
 """
 
 from __future__ import annotations
@@ -32,8 +40,9 @@ from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from typing import TextIO
 
-from experiments.results.record import MatchRecord
+from experiments.results.record import FORFEIT_NONE, MatchRecord
 from experiments.runner.preflight import PREFLIGHT_TIMEOUT, Expected, NodeCheck, check_node, failure_reason
+from experiments.runner.slots import FileSlot, new_token, take_slot
 from experiments.runner.spec import MatchSpec
 from experiments.runner.worker import failed_record, play_spec
 
@@ -54,6 +63,9 @@ NODE_WAIT = 60.0
 
 SHIP_EXCLUDES = ["__pycache__", "*.pyc", "*.nbi", "*.nbc"]
 """Left out of the shipped packages: caches that belong to this machine."""
+
+BLAME_TIMEOUT = 30.0
+"""Seconds the task that reads a dead worker's slot on its node may take; past that nobody is blamed."""
 
 class RayUnavailable(Exception):
     """Ray is not installed, the cluster cannot be reached or none of its nodes can play."""
@@ -87,6 +99,16 @@ class _Task:
     attempt: int
     failed_on: frozenset[str] = frozenset()
     """Nodes this match failed on before (tried last)."""
+    token: str = ""
+    """Names the task's slot file on its node (:mod:`experiments.runner.slots`)."""
+
+
+def play_on_node(token: str, spec: MatchSpec, config_hash: str, code_version: str, timeout: float | None,
+                 figures: Callable[[], object] | None = None) -> MatchRecord:
+    """The match task: :func:`play_spec` with its deciding slot in the file ``token`` names on
+    this node, removed when the match returns (left for the driver if the worker dies)."""
+    with FileSlot(token) as slot:
+        return play_spec(spec, config_hash, code_version, timeout, deciding=slot.values, figures=figures)
 
 
 def code_runtime_env(local: bool) -> dict:
@@ -110,6 +132,14 @@ def _node_gone(exc: BaseException) -> bool:
     gone = tuple(getattr(exceptions, name) for name in ("NodeDiedError", "TaskUnschedulableError")
                  if hasattr(exceptions, name))
     return isinstance(exc, gone)
+
+
+def _worker_died(exc: BaseException) -> bool:
+    """Whether a task failed because the worker process running it ended (a crash, os._exit)."""
+    from ray import exceptions
+
+    return isinstance(exc, exceptions.WorkerCrashedError) or (
+        isinstance(exc, exceptions.RayTaskError) and isinstance(exc.cause, exceptions.WorkerCrashedError))
 
 
 class RayPool:
@@ -157,8 +187,12 @@ class RayPool:
         shipped = ("driver's code shipped" if ship and self._started_here else
                    "code not shipped: every node must have the project installed")
         self._say(f"ray: {where}: {len(nodes)} node(s), {cpus} CPU(s) used; {shipped}")
-        self._remote = ray.remote(num_cpus=1, max_retries=0)(play_spec)
+        self._remote = ray.remote(num_cpus=1, max_retries=0)(play_on_node)
         self._check = ray.remote(num_cpus=1, max_retries=0)(check_node)
+        self._take_slot = ray.remote(num_cpus=0, max_retries=0)(take_slot)
+        self._blames: dict[object, tuple[_Task, str, float, bool]] = {}
+        """Slot reads in flight: the failed task, why it failed, when (the read started then),
+        whether it was cancelled as overdue (else its worker died)."""
         self._nodes: dict[str, _Node] = {}
         self._checks: dict[object, tuple[_Node, float]] = {}
         self._expected: Expected | None = None
@@ -181,15 +215,13 @@ class RayPool:
 
     def _poll(self) -> list[MatchRecord]:
         """Pre-flight new nodes, take out nodes that left; the records of matches given up."""
-        from ray.util.scheduling_strategies import NodeAffinitySchedulingStrategy
-
         self._last_poll = time.monotonic()
         alive = self._alive()
         given_up: list[MatchRecord] = []
         for node_id, info in alive.items():
             if node_id not in self._nodes:
                 node = _Node(node_id, info.get("NodeManagerAddress", "?"), self._slots(info))
-                pin = NodeAffinitySchedulingStrategy(node_id, soft=False)
+                pin = self._pin(node_id)
                 node.submit = self._remote.options(scheduling_strategy=pin).remote
                 self._nodes[node_id] = node
                 self._checks[self._check.options(scheduling_strategy=pin).remote(self._expected)] = (node, time.monotonic())
@@ -277,22 +309,22 @@ class RayPool:
             self.warm_up(specs)
         ray = self._ray
         self._pending.extend((spec, 0, frozenset()) for spec in specs)
-        config_hash, version, timeout = self._args
+        _, version, timeout = self._args
         idle_since: float | None = None
         try:
-            while self._pending or self._in_flight:
+            while self._pending or self._in_flight or self._blames:
                 if time.monotonic() - self._last_poll > NODE_POLL:
                     yield from self._poll()
                 self._expire_checks()
                 self._submit()
-                if self._pending and not self._in_flight and not self._checks:
+                if self._pending and not self._in_flight and not self._checks and not self._blames:
                     idle_since = idle_since or time.monotonic()
                     if time.monotonic() - idle_since > NODE_WAIT:
                         yield from self._give_up()
                         continue
                 else:
                     idle_since = None
-                waiting = list(self._in_flight) + list(self._checks)
+                waiting = list(self._in_flight) + list(self._checks) + list(self._blames)
                 if not waiting:
                     time.sleep(min(NODE_POLL, 1.0))
                     continue
@@ -302,6 +334,9 @@ class RayPool:
                         self._checked(ref, self._checks.pop(ref)[0])
                     elif ref in self._in_flight:
                         yield from self._finished(ref, self._in_flight.pop(ref), version)
+                    elif ref in self._blames:
+                        yield from self._blamed(ref, *self._blames.pop(ref))
+                yield from self._expire_blames()
                 if timeout is not None:
                     now = time.monotonic()
                     for ref, task in list(self._in_flight.items()):
@@ -309,14 +344,14 @@ class RayPool:
                             ray.cancel(ref, force=True)
                             del self._in_flight[ref]
                             task.node.busy -= 1
-                            yield failed_record(task.spec, config_hash, version, now - task.started,
-                                                f"MatchTimeout: match exceeded its time budget of {timeout:g} s "
-                                                "and its Ray task was cancelled")
+                            self._ask_slot(task, f"MatchTimeout: match exceeded its time budget of {timeout:g} s "
+                                                 "and its Ray task was cancelled", overdue=True)
         finally:
-            for ref in list(self._in_flight) + list(self._checks):
+            for ref in list(self._in_flight) + list(self._checks) + list(self._blames):
                 ray.cancel(ref, force=True)
             self._in_flight.clear()
             self._checks.clear()
+            self._blames.clear()
 
     def _submit(self) -> None:
         """Start pending matches on ready nodes with a free CPU, one node after another; a
@@ -334,8 +369,8 @@ class RayPool:
                     continue
                 self._pending.popleft()
                 node.busy += 1
-                task = _Task(spec, node, time.monotonic(), attempt, failed_on)
-                self._in_flight[node.submit(spec, *self._args, figures=self._figures)] = task
+                task = _Task(spec, node, time.monotonic(), attempt, failed_on, new_token())
+                self._in_flight[node.submit(task.token, spec, *self._args, figures=self._figures)] = task
 
     def _finished(self, ref, task: _Task, version: str) -> Iterator[MatchRecord]:
         node = task.node
@@ -344,12 +379,10 @@ class RayPool:
             record: MatchRecord = self._ray.get(ref)
         except Exception as exc:  # noqa: BLE001 - a dead worker, a lost node, a module missing there
             reason = failure_reason(exc)
-            node.failures += 1
-            if node.state != "out" and _node_gone(exc):
-                yield from self._take_out(node, "left the cluster")
-            elif node.failures >= NODE_FAILURE_LIMIT and node.state != "out":
-                yield from self._take_out(node, f"{node.failures} tasks failed in a row (last: {reason})")
-            yield from self._requeue(task, f"RayTaskFailed on {node.name}: {reason}")
+            if _worker_died(exc) and not _node_gone(exc):  # whose code was it running? ask its node
+                self._ask_slot(task, reason)
+                return
+            yield from self._node_failed(task, reason, _node_gone(exc))
             return
         if record.code_version != version:  # never store what other code played
             if node.state != "out":
@@ -360,6 +393,59 @@ class RayPool:
         node.failures = 0
         self._played[node.name] += 1
         yield record
+
+    @staticmethod
+    def _pin(node_id: str):
+        from ray.util.scheduling_strategies import NodeAffinitySchedulingStrategy
+
+        return NodeAffinitySchedulingStrategy(node_id, soft=False)
+
+    def _node_failed(self, task: _Task, reason: str, gone: bool = False) -> Iterator[MatchRecord]:
+        """``task`` failed with nobody to blame: one more failure in a row of its node (taken
+        out at :data:`NODE_FAILURE_LIMIT`, or at once if ``gone``), the match played again."""
+        node = task.node
+        node.failures += 1
+        if node.state != "out" and gone:
+            yield from self._take_out(node, "left the cluster")
+        elif node.failures >= NODE_FAILURE_LIMIT and node.state != "out":
+            yield from self._take_out(node, f"{node.failures} tasks failed in a row (last: {reason})")
+        yield from self._requeue(task, f"RayTaskFailed on {node.name}: {reason}")
+
+    def _ask_slot(self, task: _Task, reason: str, overdue: bool = False) -> None:
+        """Read, on its node, the slot of ``task``, whose worker died (or, if ``overdue``, was
+        cancelled): whose code was it running? The answer is handled by :meth:`_blamed`."""
+        ref = self._take_slot.options(scheduling_strategy=self._pin(task.node.id)).remote(task.token)
+        self._blames[ref] = (task, reason, time.monotonic(), overdue)
+
+    def _blamed(self, ref, task: _Task, reason: str, ended: float, overdue: bool,
+                answered: bool = True) -> Iterator[MatchRecord]:
+        """The slot of ``task`` has been read (``ref``; not if ``answered`` is False): the match
+        is forfeited by the side whose code the worker was running. With no side (or no
+        answer), an overdue match fails unblamed and a dead worker is its node's failure."""
+        side = FORFEIT_NONE
+        if answered:
+            try:
+                side = int(self._ray.get(ref))
+            except Exception:  # noqa: BLE001 - the node went away too: nobody can be blamed
+                pass
+        if side == FORFEIT_NONE and not overdue:
+            yield from self._node_failed(task, reason)
+            return
+        config_hash, version, _ = self._args
+        message = reason if overdue else (f"WorkerDied: the Ray worker process on {task.node.name} died while "
+                                          f"playing this match ({reason})")
+        if side != FORFEIT_NONE:
+            message += f"; it was running the code of the {('home', 'away')[side]} team {task.spec.key[side]!r}"
+        yield failed_record(task.spec, config_hash, version, ended - task.started, message, forfeit=side)
+
+    def _expire_blames(self) -> Iterator[MatchRecord]:
+        """Slot reads unanswered after :data:`BLAME_TIMEOUT`: cancelled, nobody blamed."""
+        now = time.monotonic()
+        for ref, (task, reason, ended, overdue) in list(self._blames.items()):
+            if now > ended + BLAME_TIMEOUT:
+                self._ray.cancel(ref, force=True)
+                del self._blames[ref]
+                yield from self._blamed(ref, task, reason, ended, overdue, answered=False)
 
     def _give_up(self) -> Iterator[MatchRecord]:
         """No node can play and none joined within NODE_WAIT: the matches left fail (unblamed,

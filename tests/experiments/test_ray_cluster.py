@@ -23,6 +23,8 @@ from experiments.results.store import ResultStore
 from experiments.runner.fingerprint import DIGITS, PACKAGES, package_dirs, source_digest
 from experiments.runner.preflight import failure_reason
 from experiments.runner.spec import MatchSpec, code_version, config_for, config_hash
+from experiments.runner.worker import play_spec
+from tests.experiments.conftest import outcome
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -279,6 +281,9 @@ def test_a_node_that_leaves_mid_run_has_its_matches_played_elsewhere(cluster, tm
     assert f"node {leaving.node_id} ({leaving.node_ip_address}) excluded" in err
     assert sorted(r.seed for r in records) == list(range(8))
     assert all(r.error is None and r.code_version == version for r in records)
+    # The same rows as the matches played uninterrupted, one after another in this process.
+    uninterrupted = [play_spec(spec, config_hash(config_for(2000)), version, None) for spec in specs]
+    assert outcome(sorted(records, key=lambda r: r.seed)) == outcome(uninterrupted)
 
 
 @pytest.mark.slow
