@@ -158,8 +158,6 @@ class LocalPool:
         """The record of ``worker``'s match, given up on: forfeited by the team whose code the
         worker was running (read before the worker is replaced), else nobody's fault."""
         side = worker.culprit()
-        if side != FORFEIT_NONE:
-            message += f"; it was running the code of the {('home', 'away')[side]} team {worker.spec.key[side]!r}"
         return failed_record(worker.spec, config_hash, version, time.monotonic() - worker.started, message,
                              forfeit=side)
 

@@ -434,8 +434,6 @@ class RayPool:
         config_hash, version, _ = self._args
         message = reason if overdue else (f"WorkerDied: the Ray worker process on {task.node.name} died while "
                                           f"playing this match ({reason})")
-        if side != FORFEIT_NONE:
-            message += f"; it was running the code of the {('home', 'away')[side]} team {task.spec.key[side]!r}"
         yield failed_record(task.spec, config_hash, version, ended - task.started, message, forfeit=side)
 
     def _expire_blames(self) -> Iterator[MatchRecord]:

@@ -195,6 +195,8 @@ def failed_record(spec: MatchSpec, config_hash: str, code_version: str, seconds:
                   forfeit: int = FORFEIT_NONE) -> MatchRecord:
     """The record of a match the parent had to give up on (its worker died or was stopped):
     ``forfeit`` is the side whose code was running then, if the worker's slot says so; nobody
-    is blamed otherwise."""
+    is blamed otherwise, and the message then names that team."""
+    if forfeit != FORFEIT_NONE:
+        message += f"; it was running the code of the {('home', 'away')[forfeit]} team {spec.key[forfeit]!r}"
     return MatchRecord(spec.home, spec.away, spec.seed, config_hash, code_version, error=message,
                        traceback=message, forfeit=forfeit, wall_time=seconds)
