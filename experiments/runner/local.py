@@ -86,7 +86,7 @@ class LocalPool:
     def warm_up(self, specs: Iterable[MatchSpec]) -> None:
         """Compile the kernels the teams of ``specs`` need into the on-disk cache (on this pool's
         number of processes, only if the cache is cold); workers started later load them."""
-        teams = sorted({name for spec in specs for name in (spec.home, spec.away)})
+        teams = sorted({name for spec in specs for name in spec.team_names})
         self._kernels = warm_kernels(teams, processes=self.size).kernels
 
     def _start_worker(self) -> _Worker:

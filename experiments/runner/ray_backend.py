@@ -273,7 +273,7 @@ class RayPool:
         libraries, kernels) before any match; RayUnavailable when none passes. A private local
         instance first compiles the kernels here on every core (its workers share this cache)."""
         specs = list(specs)
-        teams = tuple(sorted({name for spec in specs for name in (spec.home, spec.away)}))
+        teams = tuple(sorted({name for spec in specs for name in spec.team_names}))
         cycles = specs[0].cycles if specs else None
         config_hash, version, _ = self._args
         self._expected = Expected.of_driver(version, config_hash, cycles, teams)

@@ -39,6 +39,15 @@ class MatchSpec:
     the names and the seed must still make the key unique in a results file."""
     play_args: tuple[tuple[str, object], ...] = ()
     """(name, value) pairs the ``play`` function reads (hashable, picklable); part of the identity."""
+    plays_teams: tuple[str, ...] | None = field(default=None, compare=False)
+    """The teams a ``play`` function plays (their kernels are warmed and a Ray node's
+    pre-flight loads them); None: ``home`` and ``away``. Follows from ``play_args``, so it is
+    not part of the identity."""
+
+    @property
+    def team_names(self) -> tuple[str, ...]:
+        """The team names this spec plays: ``plays_teams``, else (home, away)."""
+        return self.plays_teams if self.plays_teams is not None else (self.home, self.away)
 
     @property
     def key(self) -> tuple[str, str, int]:

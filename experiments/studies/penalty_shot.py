@@ -275,8 +275,9 @@ def chain_specs(params: dict) -> list[tuple[str, str, object]]:
             arguments = (("setting", setting), ("condition", condition), ("team", params["team"]),
                          ("keeper", params["keeper"]), ("robots", params["robots"]), ("trials", params["trials"]),
                          ("limit", params["limit"]))
+            teams = (params["team"], params["keeper"]) if setting == "goalkeeper" else (params["team"], "idle")
             found.append((setting, condition, MatchSpec(home, away, params["seed"], None, play=PLAY,
-                                                        play_args=arguments)))
+                                                        play_args=arguments, plays_teams=teams)))
     return found
 
 
@@ -416,16 +417,7 @@ def _plot(trials: Sequence[Trial], params: dict, path: Path) -> Path:
 def run(args: argparse.Namespace) -> int:
     from experiments.runner.options import run_command
 
-    def params_of(args: argparse.Namespace) -> dict:
-        from experiments.warmup import warm_kernels
-
-        params = _params(args)
-        # The pool warms the kernels of the specs' names, and a chain's names are no team names:
-        # compile the teams' kernels here, so no chain's time budget includes a compile.
-        warm_kernels([params["team"], params["keeper"]], processes=args.workers)
-        return params
-
-    return run_command(args, KIND, params_of, build_specs, report)
+    return run_command(args, KIND, _params, build_specs, report)
 
 
 def _params(args: argparse.Namespace) -> dict:
@@ -441,14 +433,12 @@ def _params(args: argparse.Namespace) -> dict:
             resolve_team(name)
         except TeamNotFoundError as exc:
             raise RunInputError(f"{option}: {exc}") from None
-    # A chain is many scenario matches with no single configuration length or replay, and its
-    # key names no team a Ray node could load before play: these options do not apply.
+    # A chain is many scenario matches with no single configuration length or replay: these
+    # options do not apply.
     if args.cycles is not None:
         raise RunInputError("--cycles does not apply to penalty-shot: a trial lasts at most --limit cycles")
     if args.record_dir is not None:
         raise RunInputError("--record-dir does not apply to penalty-shot (a chain is many short trials)")
-    if args.backend != "local":
-        raise RunInputError("--backend ray: penalty-shot runs its six chains on the local pool only")
     return {"trials": args.trials, "robots": args.robots, "team": args.team, "keeper": args.keeper,
             "limit": args.limit, "seed": args.seed, "cycles": None}
 

@@ -141,7 +141,7 @@ def test_bad_options_are_reported_without_a_traceback(tmp_path, capsys):
                  str(tmp_path / "a-file")]) == 2
     err = capsys.readouterr().err
     assert "--tables" in err and "Traceback" not in err
-    for option in (["--cycles", "100"], ["--record-dir", str(tmp_path / "replays")], ["--backend", "ray"]):
+    for option in (["--cycles", "100"], ["--record-dir", str(tmp_path / "replays")]):
         assert main(["experiment", "penalty-shot", "--trials", "1", "--out", results, *option]) == 2
         err = capsys.readouterr().err
         assert option[0] in err and "Traceback" not in err
@@ -259,4 +259,28 @@ def test_the_time_budget_covers_the_whole_chain():
     ps.run_chain("goalkeeper", "one", "chaser", "static", 1, ps.markers(1, 0), 10, 0)  # imports done: only play is timed
     spec = ps.build_specs({**PARAMS, "trials": 200, "limit": 1200})[3]  # goalkeeper, one robot: minutes of play
     record = play_spec(spec, "hash", "version", timeout=1.0)
-    assert record.error.startswith("MatchTimeout") and record.home_goals is None and record.wall_time < 60.0
+    # The timer strikes wherever the chain is: in the simulator (a bare MatchTimeout) or inside a
+    # team's act (a TeamError carrying it, and that side forfeits).
+    assert "MatchTimeout: match exceeded its time budget of 1 s" in record.error
+    assert record.home_goals is None and record.wall_time < 60.0
+
+
+def test_the_chains_name_the_teams_they_play_for_warm_up_and_ray_nodes() -> None:
+    from experiments.studies.penalty_shot import chain_specs
+
+    teams = {(setting, condition): spec.team_names for setting, condition, spec in chain_specs(PARAMS)}
+    assert teams[("goalkeeper", "coordinated")] == ("chaser", "static")
+    assert teams[("empty goal", "one")] == ("chaser", "idle")
+
+
+def test_on_ray_the_study_gives_the_local_pools_tables(tmp_path, capsys) -> None:
+    import pytest
+
+    pytest.importorskip("ray")
+    assert _run(tmp_path, "local", "--workers", "2") == 0
+    local = [line for line in capsys.readouterr().out.splitlines() if " matches in " not in line]
+    assert _run(tmp_path, "ray", "--workers", "2", "--backend", "ray") == 0
+    on_ray = [line for line in capsys.readouterr().out.splitlines() if " matches in " not in line]
+    strip = lambda lines: [line.replace(str(tmp_path / "ray"), "T").replace(str(tmp_path / "local"), "T")
+                           for line in lines]
+    assert strip(on_ray) == strip(local) and any("coordinated" in line for line in local)
