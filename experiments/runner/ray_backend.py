@@ -62,7 +62,7 @@ class RayPool:
 
     def run(self, specs: Iterable[MatchSpec]) -> Iterator[MatchRecord]:
         ray = self._ray
-        pending = deque(specs)
+        pending = specs if hasattr(specs, "popleft") else deque(specs)  # a ClaimQueue: claimed lazily
         in_flight: dict[object, tuple[MatchSpec, float]] = {}
         config_hash, version, timeout = self._args
         try:
