@@ -25,6 +25,7 @@ import os
 import shutil
 import sqlite3
 import tempfile
+import time
 from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 
@@ -360,10 +361,24 @@ def _contents(path: Path, store: ResultStore) -> str:
     return f"an SQLite database with tables {', '.join(tables)}" if tables else "an empty SQLite database"
 
 
+BUSY_SECONDS = 30.0
+"""How long a writer waits for another process's write transaction on the same file."""
+
+
 def _connect_writable(path: Path) -> sqlite3.Connection:
-    db = sqlite3.connect(str(path), timeout=30.0)
+    db = sqlite3.connect(str(path), timeout=BUSY_SECONDS)
+    deadline = time.monotonic() + BUSY_SECONDS
     try:
-        db.execute("PRAGMA journal_mode = WAL")       # each commit is atomic and survives kill -9
+        while True:
+            try:
+                db.execute("PRAGMA journal_mode = WAL")   # each commit is atomic and survives kill -9
+                break
+            except sqlite3.OperationalError as exc:
+                # Switching a new file to WAL while another process does the same can report
+                # "locked" at once, without SQLite's busy wait: wait here instead.
+                if "locked" not in str(exc) or time.monotonic() > deadline:
+                    raise
+                time.sleep(0.01)
         db.execute("PRAGMA synchronous = NORMAL")
     except sqlite3.DatabaseError:
         db.close()
