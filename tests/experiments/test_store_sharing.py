@@ -81,8 +81,6 @@ def test_rows_of_another_configuration_are_neither_read_nor_counted(tmp_path) ->
     path = tmp_path / "r.sqlite"
     with ResultStore.create(path, "tournament", "aaa", "{}", {}) as store:
         store.add(MatchRecord("A", "B", 1, "aaa", home_goals=1, away_goals=0))
-        with pytest.raises(ValueError, match="configuration bbb"):
-            store.add(MatchRecord("A", "B", 2, "bbb", home_goals=1, away_goals=0))
     _foreign_row(path, ("A", "B", 2), "bbb", error="WorkerDied: gone")
     _foreign_row(path, ("A", "B", 1), "bbb")
     for opened in (lambda: ResultStore.open(path), lambda: ResultStore.create(path, "tournament", "aaa", "{}", {})):
@@ -96,6 +94,9 @@ def test_rows_of_another_configuration_are_neither_read_nor_counted(tmp_path) ->
     with sqlite3.connect(path) as db:
         assert db.execute("SELECT COUNT(*) FROM matches").fetchone()[0] == 3
     db.close()
+    with ResultStore.create(path, "tournament", "aaa", "{}", {}) as store, \
+            pytest.raises(ValueError, match="configuration bbb cannot be stored in a file of configuration aaa"):
+        store.add(MatchRecord("A", "B", 3, "bbb", home_goals=1, away_goals=0))
 
 
 def test_a_run_plays_the_matches_only_another_configuration_has_stored(tmp_path) -> None:
@@ -144,7 +145,10 @@ def test_two_runs_on_one_file_split_the_matches_and_both_end_complete(tmp_path) 
 
 
 def _lease(path: Path, key: tuple[str, str, int], owner: str, expires_in: float) -> None:
+    """Another run's lease on ``key`` (its owner id, expiring ``expires_in`` seconds from now)."""
     with sqlite3.connect(path) as db:
+        db.execute("CREATE TABLE IF NOT EXISTS leases (home TEXT NOT NULL, away TEXT NOT NULL, seed INTEGER NOT "
+                   "NULL, owner TEXT NOT NULL, expires_at REAL NOT NULL, PRIMARY KEY (home, away, seed))")
         db.execute("INSERT INTO leases VALUES (?, ?, ?, ?, ?)", (*key, owner, time.time() + expires_in))
     db.close()
 
@@ -161,57 +165,42 @@ def _prepared(path: Path, specs) -> None:
     ResultStore.create(path, "tournament", config_hash(config), config_description(config), {}).close()
 
 
-def test_leases_of_killed_runs_are_taken_over_and_live_ones_are_not(tmp_path) -> None:
+def test_leases_of_killed_runs_are_taken_over_and_a_live_runs_match_is_waited_for(tmp_path) -> None:
     path = tmp_path / "r.sqlite"
-    specs = paired_specs("idle", "chaser", 4, 0, CYCLES)
+    specs = paired_specs("idle", "chaser", 6, 0, CYCLES)
     _prepared(path, specs)
     _lease(path, specs[0].key, "elsewhere:1234:feed", expires_in=-1.0)                      # expired
     _lease(path, specs[1].key, f"{socket.gethostname()}:{_dead_pid()}:dead", expires_in=3600)  # process gone
-    _lease(path, specs[2].key, "elsewhere:1234:live", expires_in=3600)                      # another live run
-    summary = run_matches(specs, path, "tournament", {}, cycles=CYCLES, workers=1, progress=False, wait=0)
-    assert (summary.played, summary.unfinished) == (3, 1)
-    assert sorted(r.key for r in summary.records) == sorted(spec.key for spec in specs if spec != specs[2])
-    assert "matches are being played by another driver" in summary.incomplete()
-    with sqlite3.connect(path) as db:                       # only the live lease is left
-        assert db.execute("SELECT home, away, seed, owner FROM leases").fetchall() == [
-            (*specs[2].key, "elsewhere:1234:live")]
-    db.close()
-
-
-def test_a_run_waits_for_the_match_another_run_is_playing(tmp_path) -> None:
-    path = tmp_path / "r.sqlite"
-    specs = paired_specs("idle", "chaser", 4, 0, CYCLES)
-    _prepared(path, specs)
-    other = "elsewhere:99:other"
-    _lease(path, specs[3].key, other, expires_in=3600)
+    other = "elsewhere:99:live"
+    _lease(path, specs[2].key, other, expires_in=3600)                                      # another live run
     digest = config_hash(config_for(CYCLES))
-    marker = MatchRecord(*specs[3].key, digest, "v", 7, 7, CYCLES)
 
     def other_run() -> None:                 # stores its match once the first run has played the rest
         deadline = time.monotonic() + 300
         while time.monotonic() < deadline:
             with ResultStore.open(path) as store:
-                if len(store.keys()) == 3:
+                if len(store.keys()) >= len(specs) - 1:
                     break
             time.sleep(0.05)
         with ResultStore.create(path, "tournament", digest, config_description(config_for(CYCLES)), {}) as store:
             store.lease_owner = other
-            store.add(marker)
+            store.add(MatchRecord(*specs[2].key, digest, "v", 7, 7, CYCLES))
 
     thread = threading.Thread(target=other_run)
     thread.start()
     try:
-        summary = run_matches(specs, path, "tournament", {}, cycles=CYCLES, workers=1, progress=False, wait=300)
+        summary = run_matches(specs, path, "tournament", {}, cycles=CYCLES, workers=1, progress=False)
     finally:
         thread.join()
-    assert (summary.played, summary.by_others, summary.unfinished) == (3, 1, 0)
-    assert len(summary.records) == 4
-    assert [r.home_goals for r in summary.records if r.key == specs[3].key] == [7]
+    assert (summary.played, summary.by_others, summary.unfinished) == (len(specs) - 1, 1, 0)
+    assert sorted(r.key for r in summary.records) == sorted(spec.key for spec in specs)
+    assert [r.home_goals for r in summary.records if r.key == specs[2].key] == [7]     # not played again
+    with sqlite3.connect(path) as db:
+        assert db.execute("SELECT COUNT(*) FROM leases").fetchone()[0] == 0
+    db.close()
 
 
-def test_a_run_ending_before_another_runs_matches_exits_1(tmp_path, capsys, monkeypatch) -> None:
-    import functools
-
+def test_a_run_that_stops_waiting_for_another_runs_matches_exits_1(tmp_path, capsys, monkeypatch) -> None:
     import experiments.runner.run as run_module
 
     path = tmp_path / "t.sqlite"
@@ -219,14 +208,17 @@ def test_a_run_ending_before_another_runs_matches_exits_1(tmp_path, capsys, monk
     capsys.readouterr()
     specs = paired_specs("idle", "chaser", 4, 0, CYCLES)
     _lease(path, specs[3].key, "elsewhere:1234:live", expires_in=3600)
-    monkeypatch.setattr(run_module, "run_matches", functools.partial(run_module.run_matches, wait=0))
-    status = main(["tournament", "--teams", "idle,chaser", "--games", "4", "--out", str(path), *QUICK])
+    monkeypatch.setattr(run_module, "LEASE_SECONDS", 0.0, raising=False)   # wait: the match timeout only
+    status = main(["tournament", "--teams", "idle,chaser", "--games", "4", "--out", str(path),
+                   "--match-timeout", "2", *QUICK])
     captured = capsys.readouterr()
-    assert status == 1
     assert captured.err.strip().splitlines()[-1] == (
         "error: tables incomplete: 1 matches are being played by another driver; run the same command again "
         "when it finishes")
+    assert status == 1
     assert "(2 already stored): played 1" in captured.out
+    with ResultStore.open(path) as store:
+        assert len(store.keys()) == 3
 
 
 # -- code versions ---------------------------------------------------------------------------------
