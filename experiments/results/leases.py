@@ -24,7 +24,7 @@ from collections import deque
 from collections.abc import Callable, Iterable
 from typing import Protocol
 
-from experiments.results.store import ResultStore
+from experiments.results.store import ResultStore, StorageError
 
 LEASE_SECONDS = 60.0
 """How long a lease lasts without renewal: a run that stops renewing (killed on another host,
@@ -78,31 +78,39 @@ class Leases:
         """Try to lease ``key``: ``"claimed"`` (now ours), ``"stored"`` (already stored) or
         ``"elsewhere"`` (leased by another live run)."""
         now = time.time()
-        with self.store.immediate() as db:
-            if db.execute("SELECT 1 FROM matches WHERE home = ? AND away = ? AND seed = ? AND config_hash = ?",
-                          (*key, self.store.config_hash)).fetchone():
-                return "stored"
-            lease = db.execute("SELECT owner, expires_at FROM leases WHERE home = ? AND away = ? AND seed = ?",
-                               key).fetchone()
-            if lease is not None and lease[0] != self.owner and lease[1] > now and not owner_is_gone(lease[0]):
-                return "elsewhere"
-            db.execute("INSERT OR REPLACE INTO leases VALUES (?, ?, ?, ?, ?)", (*key, self.owner, now + self.seconds))
+        try:
+            with self.store.immediate() as db:
+                if db.execute("SELECT 1 FROM matches WHERE home = ? AND away = ? AND seed = ? AND config_hash = ?",
+                              (*key, self.store.config_hash)).fetchone():
+                    return "stored"
+                if self._held_elsewhere(db, key, now):
+                    return "elsewhere"
+                db.execute("INSERT OR REPLACE INTO leases VALUES (?, ?, ?, ?, ?)",
+                           (*key, self.owner, now + self.seconds))
+        except sqlite3.Error as exc:
+            raise self._failure(exc) from None
         self._start_renewing()
         return "claimed"
 
     def held_elsewhere(self, keys: Iterable[Key]) -> set[Key]:
         """The keys among ``keys`` not stored and leased by another live run."""
-        now, held = time.time(), set()
-        stored = self.store.keys()
-        with self.store.immediate() as connection:       # one consistent view of the leases
-            for key in keys:
-                if key in stored:
-                    continue
-                lease = connection.execute("SELECT owner, expires_at FROM leases WHERE home = ? AND away = ? "
-                                           "AND seed = ?", key).fetchone()
-                if lease is not None and lease[0] != self.owner and lease[1] > now and not owner_is_gone(lease[0]):
-                    held.add(key)
-        return held
+        now = time.time()
+        try:
+            stored = self.store.keys()
+            with self.store.immediate() as db:       # one consistent view of the leases
+                return {key for key in keys if key not in stored and self._held_elsewhere(db, key, now)}
+        except sqlite3.Error as exc:
+            raise self._failure(exc) from None
+
+    def _held_elsewhere(self, db: sqlite3.Connection, key: Key, now: float) -> bool:
+        """Whether another run holds a live lease on ``key``: not expired, and its process not known gone."""
+        lease = db.execute("SELECT owner, expires_at FROM leases WHERE home = ? AND away = ? AND seed = ?",
+                           key).fetchone()
+        return lease is not None and lease[0] != self.owner and lease[1] > now and not owner_is_gone(lease[0])
+
+    def _failure(self, exc: sqlite3.Error) -> StorageError:
+        return StorageError(f"{self.store.path}: cannot claim a match to play ({exc}); every match stored before "
+                            "is kept; re-run the same command to resume")
 
     def release_all(self) -> None:
         """Stop renewing and give up every lease of this run (its unplayed matches become free)."""
@@ -209,10 +217,6 @@ class SharedWork:
         """Matches of this run stored by other runs."""
         self.unfinished = 0
         """Matches still leased by another run when this one stopped waiting."""
-
-    @property
-    def owner(self) -> str:
-        return self.leases.owner
 
     def queues(self) -> Iterable[ClaimQueue]:
         remaining = self._specs
