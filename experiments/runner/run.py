@@ -96,7 +96,7 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
     config = config_for(cycles)
     digest, version = config_hash(config), code_version()
     start = time.monotonic()
-    check_code_versions(path, digest, version, specs, retry_errors, same_code)
+    check_code_versions(path, kind, digest, version, specs, retry_errors, same_code)
     with ResultStore.create(path, kind, digest, config_description(config), params) as store:
         keys = [spec.key for spec in specs]
         # A failure no team is blamed for (a worker that died, a lost Ray node) is played again;
@@ -128,8 +128,8 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
                       shared.by_others, shared.unfinished)
 
 
-def check_code_versions(path: str | os.PathLike, digest: str, version: str, specs: Sequence[MatchSpec],
-                        retry_errors: bool, same_code: bool) -> None:
+def check_code_versions(path: str | os.PathLike, kind: str, digest: str, version: str,
+                        specs: Sequence[MatchSpec], retry_errors: bool, same_code: bool) -> None:
     """Before a resume into ``path`` plays anything: one warning line on stderr when the file
     holds matches of another code version (its tables would mix versions), or ResultsError
     with ``same_code``. Read-only, so a refused file is left as it was; a file the run cannot
@@ -139,20 +139,21 @@ def check_code_versions(path: str | os.PathLike, digest: str, version: str, spec
         return
     try:
         with ResultStore.open(path) as stored:
-            if stored.config_hash != digest or not stored.code_versions() - {version}:
+            if stored.kind != kind or stored.config_hash != digest or not stored.code_versions() - {version}:
                 return
-            kept = {r.key for r in stored.records() if r.error is None or (not retry_errors and r.forfeit != FORFEIT_NONE)}
-            versions = sorted(stored.code_versions())
+            kept = {r.key for r in stored.records()
+                    if r.error is None or (not retry_errors and r.forfeit != FORFEIT_NONE)}
+            others = ", ".join(sorted(stored.code_versions() - {version}))
     except ResultsError:
         return
     if all(spec.key in kept for spec in specs):
         return                                         # nothing to play: nothing is mixed
-    listed = ", ".join(versions)
     if same_code:
-        raise ResultsError(f"{path} holds matches played by code version {listed}, not by this code ({version}); "
-                           "--same-code refuses to mix them: give another --out, or leave out --same-code")
-    print(f"warning: {path} holds matches played by code version {listed}; this run plays the rest with "
-          f"{version}, so its tables mix code versions (--same-code refuses this)", file=sys.stderr)
+        raise ResultsError(f"{path} holds matches played by another code version ({others}), not by this code "
+                           f"({version}); --same-code refuses to mix them: give another --out, or leave out "
+                           "--same-code")
+    print(f"warning: {path} holds matches played by another code version ({others}); this run plays the rest "
+          f"with {version}, so its tables mix code versions (--same-code refuses this)", file=sys.stderr)
 
 
 def _note(message: str) -> None:
