@@ -4,7 +4,11 @@ The parent process writes every finished match in its own transaction, so an int
 (Ctrl-C, ``kill -9``, a crashed worker) leaves only whole rows behind, and the primary key
 (home, away, seed, configuration hash) makes re-running the same command play only what is
 missing. The file also records what made it (the command's kind and parameters and the match
-configuration): results of a different configuration or command are never mixed into it.
+configuration): results of a different configuration or command are never mixed into it, and
+only rows of the file's configuration are read or counted. Several runs may share one file on a
+local disk: creating it and checking its settings is one transaction (of two runs starting on a
+new file with different settings, one is refused), and work is split between them through
+leases (:mod:`experiments.results.leases`).
 
 Reading never changes a file: :meth:`ResultStore.open` opens it read-only (no journal-mode
 switch, no new tables, nothing written into an empty or foreign file), which also works on
@@ -21,6 +25,7 @@ import os
 import shutil
 import sqlite3
 import tempfile
+import time
 from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 
@@ -37,6 +42,10 @@ CREATE TABLE IF NOT EXISTS matches (
     error TEXT, traceback TEXT, forfeit INTEGER NOT NULL,
     finished_at TEXT NOT NULL DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ', 'now')),
     PRIMARY KEY (home, away, seed, config_hash)
+);
+CREATE TABLE IF NOT EXISTS leases (
+    home TEXT NOT NULL, away TEXT NOT NULL, seed INTEGER NOT NULL, owner TEXT NOT NULL, expires_at REAL NOT NULL,
+    PRIMARY KEY (home, away, seed)
 );
 """
 
@@ -58,11 +67,15 @@ class ResultStore:
     """An open results file. Use :meth:`create` to run into it and :meth:`open` to read it."""
 
     def __init__(self, path: Path, connection: sqlite3.Connection, writable: bool = False,
-                 cleanup: Callable[[], None] | None = None) -> None:
+                 cleanup: Callable[[], None] | None = None, config_hash: str | None = None) -> None:
         self.path = path
         self._db = connection
         self._writable = writable
         self._cleanup = cleanup
+        self.config_hash = config_hash
+        """The configuration of the file's rows: only rows of it are read, counted or deleted."""
+        self.lease_owner: str | None = None
+        """The run whose lease on a match :meth:`add` releases (see :mod:`experiments.results.leases`)."""
 
     # -- opening ----------------------------------------------------------------------------
     @classmethod
@@ -90,6 +103,7 @@ class ResultStore:
             contents = _contents(path, store)
             store.close()
             raise ResultsError(f"{path}: not a soccer-sim results file ({contents})")
+        store.config_hash = meta.get("config_hash")
         return store
 
     @classmethod
@@ -110,28 +124,46 @@ class ResultStore:
         if not os.access(parent, os.W_OK) or (path.exists() and not os.access(path, os.W_OK)):
             raise ResultsError(f"{path}: not writable (permission denied)")
         if path.exists() and path.stat().st_size > 0:
-            _check_existing(path, kind, config_hash)
+            _check_existing(path, kind, config_hash, config)
         try:
-            store = cls(path, _connect_writable(path), writable=True)
+            store = cls(path, _connect_writable(path), writable=True, config_hash=config_hash)
         except sqlite3.DatabaseError as exc:
             raise _write_failure(path, exc, "no match was played") from None
         try:
-            with store._db:
-                store._db.executescript(_SCHEMA)
-                for key, value in (("schema", SCHEMA_VERSION), ("kind", kind), ("config_hash", config_hash),
-                                   ("config", config), ("params", json.dumps(params, sort_keys=True))):
-                    store._db.execute("INSERT OR REPLACE INTO meta VALUES (?, ?)", (key, value))
+            # One write transaction checks the settings and writes them: of two runs creating the
+            # same new file at once, the second sees the first's settings (and may be refused).
+            with store.immediate() as db:
+                refusal = _refusal(path, _meta(db), _tables(db), kind, config_hash, config)
+                if refusal is None:
+                    for statement in _SCHEMA.split(";"):
+                        if statement.strip():
+                            db.execute(statement)
+                    for key, value in (("schema", SCHEMA_VERSION), ("kind", kind), ("config_hash", config_hash),
+                                       ("config", config), ("params", json.dumps(params, sort_keys=True))):
+                        db.execute("INSERT OR REPLACE INTO meta VALUES (?, ?)", (key, value))
         except sqlite3.DatabaseError as exc:
             store.close()
             raise _write_failure(path, exc, "no match was played") from None
+        if refusal is not None:
+            store.close()
+            raise ResultsError(refusal)
         return store
+
+    @contextlib.contextmanager
+    def immediate(self) -> Iterator[sqlite3.Connection]:
+        """A write transaction taken at once (``BEGIN IMMEDIATE``): what is read in it cannot be
+        changed by another process before it commits (rolled back on an exception)."""
+        self._db.execute("BEGIN IMMEDIATE")
+        try:
+            yield self._db
+        except BaseException:
+            self._db.rollback()
+            raise
+        self._db.commit()
 
     # -- reading ----------------------------------------------------------------------------
     def meta(self) -> dict[str, str]:
-        tables = {row[0] for row in self._db.execute("SELECT name FROM sqlite_master WHERE type = 'table'")}
-        if "meta" not in tables:
-            return {}
-        return dict(self._db.execute("SELECT key, value FROM meta").fetchall())
+        return _meta(self._db)
 
     @property
     def kind(self) -> str:
@@ -142,15 +174,17 @@ class ResultStore:
         return json.loads(self.meta().get("params", "{}"))
 
     def keys(self) -> set[tuple[str, str, int]]:
-        """(home, away, seed) of every stored match."""
+        """(home, away, seed) of every stored match of the file's configuration."""
         with self._reading():
-            return {tuple(row) for row in self._db.execute("SELECT home, away, seed FROM matches")}
+            return {tuple(row) for row in self._db.execute(f"SELECT home, away, seed FROM matches{self._own()}",
+                                                           self._own_args())}
 
     def records(self, keys: Iterable[tuple[str, str, int]] | None = None) -> list[MatchRecord]:
-        """Stored matches (all, or those of ``keys``), sorted by key: the same list whatever
-        order the matches finished in."""
+        """Stored matches of the file's configuration (all, or those of ``keys``), sorted by key:
+        the same list whatever order the matches finished in."""
         with self._reading():
-            cursor = self._db.execute(f"SELECT {', '.join(COLUMNS)} FROM matches ORDER BY home, away, seed")
+            cursor = self._db.execute(f"SELECT {', '.join(COLUMNS)} FROM matches{self._own()} "
+                                      "ORDER BY home, away, seed", self._own_args())
             records = [MatchRecord.from_row(dict(zip(COLUMNS, row))) for row in cursor]
         if keys is not None:
             wanted = set(keys)
@@ -159,7 +193,20 @@ class ResultStore:
 
     def count(self) -> int:
         with self._reading():
-            return int(self._db.execute("SELECT COUNT(*) FROM matches").fetchone()[0])
+            return int(self._db.execute(f"SELECT COUNT(*) FROM matches{self._own()}", self._own_args()).fetchone()[0])
+
+    def code_versions(self) -> set[str]:
+        """The code versions that played the stored matches of the file's configuration."""
+        with self._reading():
+            return {row[0] for row in self._db.execute(f"SELECT DISTINCT code_version FROM matches{self._own()}",
+                                                       self._own_args())}
+
+    def _own(self, conjunction: str = " WHERE") -> str:
+        """The SQL condition keeping rows of the file's configuration (none for a file without one)."""
+        return f"{conjunction} config_hash = ?" if self.config_hash is not None else ""
+
+    def _own_args(self) -> tuple[str, ...]:
+        return (self.config_hash,) if self.config_hash is not None else ()
 
     @contextlib.contextmanager
     def _reading(self) -> Iterator[None]:
@@ -174,12 +221,19 @@ class ResultStore:
 
     # -- writing ----------------------------------------------------------------------------
     def add(self, record: MatchRecord) -> None:
-        """Store one finished match in its own transaction (a key already stored is kept), then
-        copy it from the write-ahead log into the file itself."""
+        """Store one finished match in its own transaction (a key already stored is kept), which
+        also releases this run's lease on it (:attr:`lease_owner`); then copy it from the
+        write-ahead log into the file itself. ValueError for a record of another configuration."""
+        if self.config_hash is not None and record.config_hash != self.config_hash:
+            raise ValueError(f"{self.path}: a match of configuration {record.config_hash} cannot be stored in a "
+                             f"file of configuration {self.config_hash}")
         row = record.to_row()
         with self._db:
             self._db.execute(f"INSERT OR IGNORE INTO matches ({', '.join(COLUMNS)}) VALUES "
                              f"({', '.join('?' for _ in COLUMNS)})", [row[c] for c in COLUMNS])
+            if self.lease_owner is not None:
+                self._db.execute("DELETE FROM leases WHERE home = ? AND away = ? AND seed = ? AND owner = ?",
+                                 (*record.key, self.lease_owner))
         self._checkpoint("PASSIVE")
 
     def forget_errors(self, keys: Iterable[tuple[str, str, int]], unattributed_only: bool = False) -> int:
@@ -188,7 +242,8 @@ class ResultStore:
         extra = f" AND forfeit = {FORFEIT_NONE}" if unattributed_only else ""
         with self._db:
             return sum(self._db.execute("DELETE FROM matches WHERE home = ? AND away = ? AND seed = ? "
-                                        f"AND error IS NOT NULL{extra}", key).rowcount for key in keys)
+                                        f"AND error IS NOT NULL{extra}{self._own(' AND')}",
+                                        (*key, *self._own_args())).rowcount for key in keys)
 
     def _checkpoint(self, mode: str) -> None:
         """Copy committed rows from the ``-wal`` file into the database file (``TRUNCATE`` also
@@ -217,34 +272,81 @@ class ResultStore:
         self.close()
 
 
-def _check_existing(path: Path, kind: str, config_hash: str) -> None:
+def _check_existing(path: Path, kind: str, config_hash: str, config: str) -> None:
     """Refuse (ResultsError) to run into ``path`` unless it is an empty database or holds the
     results of the same command and configuration; read-only, so a refused file is left as it was."""
-    unusable = f"{path}: cannot be used as a results file ({{}}); delete it or give another --out"
     try:
         connection, cleanup = _connect_read_only(path)
     except sqlite3.DatabaseError as exc:
-        raise ResultsError(unusable.format(exc)) from None
+        raise ResultsError(_UNUSABLE.format(path=path, why=exc)) from None
     store = ResultStore(path, connection, cleanup=cleanup)
     try:
         try:
             meta, tables = store.meta(), _tables(store._db)
         except sqlite3.DatabaseError as exc:
-            raise ResultsError(unusable.format(exc)) from None
-        if not tables:
-            return                                            # an empty database: ours to fill
-        if "kind" not in meta:
-            raise ResultsError(f"{path}: not a soccer-sim results file ({_contents(path, store)}); it is left "
-                               "untouched: give another --out")
-        fresh = f"to start fresh, delete {path} or give another --out"
-        if meta["kind"] != kind:
-            raise ResultsError(f"{path} holds the results of '{meta['kind']}', not '{kind}'; {fresh}")
-        if meta.get("config_hash") not in (None, config_hash):
-            raise ResultsError(f"{path} holds results of a different match configuration "
-                               f"(hash {meta['config_hash']}, this run: {config_hash}; e.g. another --cycles); "
-                               f"results of different configurations are never mixed; {fresh}")
+            raise ResultsError(_UNUSABLE.format(path=path, why=exc)) from None
+        refusal = _refusal(path, meta, tables, kind, config_hash, config,
+                           lambda: _contents(path, store))
     finally:
         store.close()
+    if refusal is not None:
+        raise ResultsError(refusal)
+
+
+_UNUSABLE = "{path}: cannot be used as a results file ({why}); delete it or give another --out"
+
+
+def _refusal(path: Path, meta: dict[str, str], tables: list[str], kind: str, config_hash: str, config: str,
+             contents: Callable[[], str] | None = None) -> str | None:
+    """Why a database with ``meta`` and ``tables`` cannot take the results of command ``kind``
+    with configuration ``config_hash`` (described by ``config``), or None when it can: it is
+    empty or holds results of the same command and configuration."""
+    if not tables:
+        return None                                           # an empty database: ours to fill
+    if "kind" not in meta:
+        what = contents() if contents is not None else f"an SQLite database with tables {', '.join(tables)}"
+        return f"{path}: not a soccer-sim results file ({what}); it is left untouched: give another --out"
+    fresh = f"to start fresh, delete {path} or give another --out"
+    if meta["kind"] != kind:
+        return f"{path} holds the results of '{meta['kind']}', not '{kind}'; {fresh}"
+    if meta.get("config_hash") not in (None, config_hash):
+        stored, this = _difference(meta.get("config", ""), config)
+        return (f"{path} holds results of a different match configuration (hash {meta['config_hash']}{stored}; "
+                f"this run: hash {config_hash}{this}; e.g. another --cycles); results of different "
+                f"configurations are never mixed; {fresh}")
+    return None
+
+
+def _difference(stored: str, this: str, limit: int = 4) -> tuple[str, str]:
+    """The parameters in which two configuration descriptions (JSON objects) differ, as
+    ``": name=value, ..."`` for each (empty strings when they cannot be compared)."""
+    try:
+        old, new = _flat(json.loads(stored)), _flat(json.loads(this))
+    except (ValueError, TypeError, AttributeError):
+        return "", ""
+    names = sorted(name for name in old.keys() | new.keys() if old.get(name) != new.get(name))[:limit]
+    if not names:
+        return "", ""
+    return tuple(": " + ", ".join(f"{name}={side.get(name, '(none)')}" for name in names)
+                 for side in (old, new))
+
+
+def _flat(value: dict, prefix: str = "") -> dict[str, object]:
+    """A nested JSON object as {"a.b": value}."""
+    flat: dict[str, object] = {}
+    for name, item in value.items():
+        if isinstance(item, dict):
+            flat.update(_flat(item, f"{prefix}{name}."))
+        else:
+            flat[f"{prefix}{name}"] = item
+    return flat
+
+
+def _meta(db: sqlite3.Connection) -> dict[str, str]:
+    """The meta table of a results file ({} when there is none)."""
+    if "meta" not in _tables(db):
+        return {}
+    return dict(db.execute("SELECT key, value FROM meta").fetchall())
 
 
 def _tables(db: sqlite3.Connection) -> list[str]:
@@ -259,10 +361,24 @@ def _contents(path: Path, store: ResultStore) -> str:
     return f"an SQLite database with tables {', '.join(tables)}" if tables else "an empty SQLite database"
 
 
+BUSY_SECONDS = 30.0
+"""How long a writer waits for another process's write transaction on the same file."""
+
+
 def _connect_writable(path: Path) -> sqlite3.Connection:
-    db = sqlite3.connect(str(path), timeout=30.0)
+    db = sqlite3.connect(str(path), timeout=BUSY_SECONDS)
+    deadline = time.monotonic() + BUSY_SECONDS
     try:
-        db.execute("PRAGMA journal_mode = WAL")       # each commit is atomic and survives kill -9
+        while True:
+            try:
+                db.execute("PRAGMA journal_mode = WAL")   # each commit is atomic and survives kill -9
+                break
+            except sqlite3.OperationalError as exc:
+                # Switching a new file to WAL while another process does the same can report
+                # "locked" at once, without SQLite's busy wait: wait here instead.
+                if "locked" not in str(exc) or time.monotonic() > deadline:
+                    raise
+                time.sleep(0.01)
         db.execute("PRAGMA synchronous = NORMAL")
     except sqlite3.DatabaseError:
         db.close()

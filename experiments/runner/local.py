@@ -101,7 +101,7 @@ class LocalPool:
 
     def run(self, specs: Iterable[MatchSpec]) -> Iterator[MatchRecord]:
         """Play every spec; yield each record as its match finishes (in any order)."""
-        pending = deque(specs)
+        pending = specs if hasattr(specs, "popleft") else deque(specs)  # a ClaimQueue: claimed lazily
         config_hash, version, _ = self._args
         try:
             self._workers = [self._start_worker() for _ in range(min(self.size, len(pending)))]

@@ -52,7 +52,7 @@ def registered_teams_text() -> str:
 
 def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None:
     """--games, --seed, --cycles, --workers, --backend, --address, --out, --tables,
-    --match-timeout, --retry-errors, --record-dir, --record-every, --no-progress."""
+    --match-timeout, --retry-errors, --record-dir, --record-every, --no-progress, --same-code."""
     from experiments.runner.run import BACKENDS, DEFAULT_MATCH_TIMEOUT
 
     parser.add_argument("--seed", type=seed_value, default=0, help="first seed; a pairing plays seeds seed, seed+1, ... (default: 0)")
@@ -83,6 +83,8 @@ def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None
     parser.add_argument("--record-every", type=positive_int, default=10, metavar="K",
                         help="with --record-dir: record every K-th match of the run (default: 10)")
     parser.add_argument("--no-progress", action="store_true", help="no progress bar or progress lines")
+    parser.add_argument("--same-code", action="store_true",
+                        help="refuse to resume into a --out holding matches of another code version (default: warn)")
 
 
 def add_team_option(parser: argparse.ArgumentParser, option: str, defaults: tuple[str, ...], what: str) -> None:
@@ -126,6 +128,8 @@ def run_command(args: argparse.Namespace, kind: str, params_of, build_specs, rep
     except KeyboardInterrupt:
         return interrupted(args.out)
     print_failures(summary)
+    if summary.unfinished:                   # another run on the same file still plays some of them
+        return fail(summary.incomplete(), 1)
     return incomplete(summary)
 
 
@@ -194,7 +198,7 @@ def execute(args: argparse.Namespace, kind: str, specs: list[MatchSpec], params:
                               backend=args.backend, address=args.address, match_timeout=args.match_timeout,
                               retry_errors=args.retry_errors, progress=not args.no_progress,
                               record_dir=args.record_dir, record_every=args.record_every, figures=figures,
-                              ship_code=getattr(args, "ship_code", True))
+                              ship_code=getattr(args, "ship_code", True), same_code=getattr(args, "same_code", False))
     except (ResultsError, RayUnavailable, ValueError) as exc:
         raise RunInputError(str(exc)) from None
     print(summary.line())

@@ -7,14 +7,17 @@ key: so the same specs give the same records with 1 or N workers, in one go or r
 
 from __future__ import annotations
 
+import contextlib
 import os
+import sys
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from experiments.results.record import MatchRecord
-from experiments.results.store import ResultStore, StorageError
+from experiments.results.leases import LEASE_SECONDS, SharedWork
+from experiments.results.record import FORFEIT_NONE, MatchRecord
+from experiments.results.store import ResultsError, ResultStore, StorageError
 from experiments.runner.progress import RunProgress
 from experiments.runner.spec import MatchSpec, code_version, config_description, config_for, config_hash
 
@@ -95,6 +98,11 @@ class RunSummary:
     completed: int = 0
     """Matches run now and played to their end: the only ones the rate counts."""
 
+    by_others: int = 0
+    """Matches of the run played and stored meanwhile by another run on the same file."""
+    unfinished: int = 0
+    """Matches another run on the same file was still playing when this one stopped waiting."""
+
     @property
     def unplayed(self) -> int:
         """Matches of the run that failed with no team at fault: missing from the tables."""
@@ -104,8 +112,14 @@ class RunSummary:
         rate = self.completed / self.seconds * 3600 if self.seconds > 0 and self.completed else 0.0
         resumed = f" ({self.already_stored} already stored)" if self.already_stored else ""
         unplayed = f" ({self.unplayed} with no team at fault)" if self.unplayed else ""
+        shared = f", {self.by_others} played by another run" if self.by_others else ""
         return (f"{self.total} matches in {self.path}{resumed}: played {self.played} in {self.seconds:.1f} s "
-                f"on {self.workers} worker(s) ({rate:,.0f} matches/hour), {self.errors} failed{unplayed}")
+                f"on {self.workers} worker(s) ({rate:,.0f} matches/hour){shared}, {self.errors} failed{unplayed}")
+
+    def incomplete(self) -> str:
+        """The message for a run whose tables lack matches another run is still playing."""
+        return (f"tables incomplete: {self.unfinished} matches are being played by another driver; run the same "
+                "command again when it finishes")
 
 
 def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, params: dict[str, object], *,
@@ -113,7 +127,8 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
                 address: str | None = None, match_timeout: float | None = DEFAULT_MATCH_TIMEOUT,
                 retry_errors: bool = False, progress: bool = True, record_dir: str | os.PathLike | None = None,
                 record_every: int = 1, policy: FailurePolicy = FailurePolicy(),
-                figures: Callable[[], object] | None = None, ship_code: bool = True) -> RunSummary:
+                figures: Callable[[], object] | None = None, ship_code: bool = True, same_code: bool = False,
+                wait: float | None = None) -> RunSummary:
     """Play every spec (all with ``cycles``) that ``path`` does not hold, store each as it
     finishes, and return the summary with the records of all ``specs``.
 
@@ -128,6 +143,12 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
     leaves the match out of the tables (a re-run plays it again); when more than
     FAILURE_SHARE of at least FAILURE_MIN_MATCHES matches finished in this run failed that
     way, the run stops with :class:`RunStopped`, every finished match stored.
+
+    Several runs may share ``path`` (see :mod:`experiments.results.leases`): each claims a match
+    before playing it, and at the end waits for the matches another run is still playing (up
+    to ``wait`` seconds without progress; default: the match timeout plus a lease's life), so
+    its records are complete unless ``RunSummary.unfinished`` says otherwise. A resume that
+    would mix code versions is warned about on stderr, or refused with ``same_code``.
 
     Raises ValueError for seeds a results file cannot store,
     :class:`~experiments.results.store.ResultsError` for an unusable file,
@@ -145,6 +166,7 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
     config = config_for(cycles)
     digest, version = config_hash(config), code_version()
     start = time.monotonic()
+    check_code_versions(path, kind, digest, version, specs, retry_errors, same_code)
     with ResultStore.create(path, kind, digest, config_description(config), params) as store:
         keys = [spec.key for spec in specs]
         # A failure no team is blamed for (a worker that died, a lost Ray node) is played again;
@@ -153,26 +175,31 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
         stored = store.keys()
         todo = [spec for spec in specs if spec.key not in stored]
         workers = workers or os.cpu_count() or 1
-        used = 0
+        used = played = 0
         tally = _Tally()
-        if todo:
-            pool = _pool(backend, workers, digest, version, match_timeout, address, figures, ship_code)
-            used = pool.size
-            try:
-                pool.warm_up(todo)  # compile the kernels once, before any worker, match clock or ETA starts
-                with RunProgress(len(todo), kind, enabled=progress) as bar:
-                    for record in pool.run(todo):
-                        _store(store, record, keys)
-                        tally.add(record)
-                        bar.advance(record.error is not None, unblamed(record))
-                        if policy.exceeded(tally.finished, tally.unblamed):
-                            raise RunStopped(_stop_message(tally, policy, len(todo), store.path))
-            finally:
-                pool.close()
+        if wait is None:
+            wait = (match_timeout or DEFAULT_MATCH_TIMEOUT) + LEASE_SECONDS
+        with SharedWork(store, todo, wait, log=_note) as shared, contextlib.ExitStack() as running:
+            pool = None
+            for claimed in shared.queues():        # matches claimed one by one, shared with other runs
+                if pool is None:
+                    pool = _pool(backend, workers, digest, version, match_timeout, address, figures, ship_code)
+                    running.callback(pool.close)
+                    used = pool.size
+                    pool.warm_up(todo)  # compile the kernels once, before any worker, match clock or ETA starts
+                    bar = running.enter_context(RunProgress(len(todo), kind, enabled=progress))
+                    shared.on_stored = lambda _spec: bar.advance()
+                for record in pool.run(claimed):
+                    _store(store, record, keys)  # (releases its lease)
+                    tally.add(record)
+                    bar.advance(record.error is not None, unblamed(record))
+                    played += 1
+                    if policy.exceeded(tally.finished, tally.unblamed):
+                        raise RunStopped(_stop_message(tally, policy, len(todo), store.path))
         records = store.records(keys)
-    return RunSummary(str(path), len(specs), len(specs) - len(todo), len(todo),
+    return RunSummary(str(path), len(specs), len(specs) - len(todo), played,
                       sum(r.error is not None for r in records), time.monotonic() - start, used, records,
-                      tally.completed)
+                      tally.completed, shared.by_others, shared.unfinished)
 
 
 def _stop_message(tally: _Tally, policy: FailurePolicy, todo: int, path: object) -> str:
@@ -180,6 +207,38 @@ def _stop_message(tally: _Tally, policy: FailurePolicy, todo: int, path: object)
             f"failed with no team at fault, more than {policy.max_share:.0%} (the last: {tally.last_error}); "
             f"every finished match is stored in {path}; fix the cause and run the same command again to resume "
             "(the failed matches are played again)")
+
+
+def check_code_versions(path: str | os.PathLike, kind: str, digest: str, version: str,
+                        specs: Sequence[MatchSpec], retry_errors: bool, same_code: bool) -> None:
+    """Before a resume into ``path`` plays anything: one warning line on stderr when the file
+    holds matches of another code version (its tables would mix versions), or ResultsError
+    with ``same_code``. Read-only, so a refused file is left as it was; a file the run cannot
+    use is left for :meth:`ResultStore.create` to refuse."""
+    path = Path(path)
+    if not path.is_file() or path.stat().st_size == 0:
+        return
+    try:
+        with ResultStore.open(path) as stored:
+            if stored.kind != kind or stored.config_hash != digest or not stored.code_versions() - {version}:
+                return
+            kept = {r.key for r in stored.records()
+                    if r.error is None or (not retry_errors and r.forfeit != FORFEIT_NONE)}
+            others = ", ".join(sorted(stored.code_versions() - {version}))
+    except ResultsError:
+        return
+    if all(spec.key in kept for spec in specs):
+        return                                         # nothing to play: nothing is mixed
+    if same_code:
+        raise ResultsError(f"{path} holds matches played by another code version ({others}), not by this code "
+                           f"({version}); --same-code refuses to mix them: give another --out, or leave out "
+                           "--same-code")
+    print(f"warning: {path} holds matches played by another code version ({others}); this run plays the rest "
+          f"with {version}, so its tables mix code versions (--same-code refuses this)", file=sys.stderr)
+
+
+def _note(message: str) -> None:
+    print(message, file=sys.stderr, flush=True)
 
 
 def check_seeds(specs: Sequence[MatchSpec]) -> None:
