@@ -15,6 +15,7 @@ from experiments.results.record import FORFEIT_NONE, MatchRecord
 from experiments.results.store import ResultStore
 from experiments.runner import MatchSpec, config_for, config_hash, run_matches
 from experiments.runner.run import FAILURE_MIN_MATCHES, FAILURE_SHARE, FailurePolicy, RunStopped
+from experiments.runner.spec import code_version
 from experiments.runner.worker import failed_record
 from tests.experiments.conftest import SCRIPTED
 from tests.experiments.scripted_teams import CrashingFigures
@@ -39,9 +40,9 @@ class ScriptedPool:
     def run(self, specs):
         for k, spec in enumerate(specs):
             if self.fails(k):
-                yield failed_record(spec, DIGEST, "test", 0.0, "NodeDied: the node running this match was lost")
+                yield failed_record(spec, DIGEST, code_version(), 0.0, "NodeDied: the node running this match was lost")
             else:
-                yield MatchRecord(spec.home, spec.away, spec.seed, DIGEST, "test", 1, 0, CYCLES, 0.01,
+                yield MatchRecord(spec.home, spec.away, spec.seed, DIGEST, code_version(), 1, 0, CYCLES, 0.01,
                                   {"goals": 1}, {"goals": 0})
 
     def close(self) -> None:

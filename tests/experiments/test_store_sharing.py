@@ -232,14 +232,15 @@ def _digest(path: Path) -> str:
     return hashlib.sha256(path.read_bytes()).hexdigest()
 
 
-def test_a_resume_mixing_code_versions_warns_and_same_code_refuses(tmp_path, capsys, monkeypatch) -> None:
-    import experiments.runner.run as run_module
+def test_a_resume_mixing_code_versions_warns_and_same_code_refuses(tmp_path, capsys) -> None:
+    import sqlite3
 
     path = tmp_path / "t.sqlite"
     command = ["tournament", "--teams", "idle,chaser", "--out", str(path), *QUICK]
-    monkeypatch.setattr(run_module, "code_version", lambda: "0.0.1+old")
     assert main([*command, "--games", "2"]) == 0
-    monkeypatch.undo()
+    with sqlite3.connect(path) as db:               # as if an older version of the code played them
+        db.execute("UPDATE matches SET code_version = '0.0.1+old'")
+    db.close()
     capsys.readouterr()
     assert main([*command, "--games", "2"]) == 0                  # nothing to play: nothing mixed
     assert "warning" not in capsys.readouterr().err
