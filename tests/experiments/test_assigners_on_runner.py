@@ -5,6 +5,8 @@ a match are the same whether the match is played in a worker or here."""
 
 from __future__ import annotations
 
+import pytest
+
 from experiments.cli import main
 from experiments.runner import MatchSpec, config_for, run_matches
 from experiments.studies.assigners import SET_PLAY_PREFIX, STALL_FIGURE, MatchSummary, StudyFigures
@@ -67,9 +69,8 @@ def test_the_studys_figures_are_the_same_in_a_worker_and_here(tmp_path) -> None:
     assert all(name.startswith(SET_PLAY_PREFIX) for name in record.home_stats if "set_play" in name)
 
 
+@pytest.mark.slow  # Ray start-up: the default suite keeps one Ray run of each kind
 def test_on_ray_the_study_records_the_same_figures_as_on_the_local_pool(tmp_path, capsys) -> None:
-    import pytest
-
     pytest.importorskip("ray")
     from experiments.results.store import ResultStore
 

@@ -273,9 +273,8 @@ def test_the_chains_name_the_teams_they_play_for_warm_up_and_ray_nodes() -> None
     assert teams[("empty goal", "one")] == ("chaser", "idle")
 
 
+@pytest.mark.slow  # Ray start-up: the default suite keeps one Ray run of each kind
 def test_on_ray_the_study_gives_the_local_pools_tables(tmp_path, capsys) -> None:
-    import pytest
-
     pytest.importorskip("ray")
     assert _run(tmp_path, "local", "--workers", "2") == 0
     local = [line for line in capsys.readouterr().out.splitlines() if " matches in " not in line]

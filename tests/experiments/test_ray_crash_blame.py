@@ -88,6 +88,7 @@ def test_on_ray_a_team_that_crashes_its_worker_forfeits_and_the_node_stays(tmp_p
         assert record.error.endswith(f"it was running the code of the {('home', 'away')[side]} team {crasher!r}")
 
 
+@pytest.mark.slow  # Ray start-up: the default suite keeps one Ray run of each kind
 def test_on_ray_a_worker_that_dies_outside_team_code_is_the_nodes_failure(monkeypatch) -> None:
     from experiments.runner import ray_backend
     from experiments.runner.ray_backend import MATCH_RETRIES, NODE_FAILURE_LIMIT, RayPool
