@@ -82,7 +82,7 @@ def run(args: argparse.Namespace) -> int:
 
     from experiments.match_report import match_report
     from experiments.recording import replay_recording
-    from experiments.runner.worker import MatchTimeout, _arm_timer, _disarm_timer
+    from experiments.runner.worker import MatchTimeout, arm_timer, disarm_timer
     from experiments.warmup import warm_kernels
     from soccer_sim import ConfigError, TeamError, TeamNotFoundError, run_match
     from soccer_sim.replay import ReplayError
@@ -94,12 +94,12 @@ def run(args: argparse.Namespace) -> int:
         with replay_recording(getattr(args, "record", None), "--record") as recorders:
             warm_kernels((args.home, args.away))  # a cold cache is filled here, not on the match's clock
             start = time.perf_counter()
-            alarm = _arm_timer(timeout)  # the tournament's timer: MatchTimeout where the match hangs
+            alarm = arm_timer(timeout)  # the tournament's timer: MatchTimeout where the match hangs
             try:
                 result = run_match(args.home, args.away, seed=args.seed, config=config, scenario=scenario,
                                    recorders=recorders)
             finally:
-                _disarm_timer(alarm)
+                disarm_timer(alarm)
             elapsed = time.perf_counter() - start
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)

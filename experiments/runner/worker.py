@@ -111,7 +111,7 @@ def play_spec(spec: MatchSpec, config_hash: str, code_version: str, timeout: flo
         deciding = [FORFEIT_NONE, FORFEIT_NONE]
     deciding[0] = deciding[1] = FORFEIT_NONE
     start = time.perf_counter()
-    alarm = _arm_timer(timeout)
+    alarm = arm_timer(timeout)
     try:
         if spec.play is not None:  # a study's own unit of work (see MatchSpec.play)
             import importlib
@@ -119,11 +119,11 @@ def play_spec(spec: MatchSpec, config_hash: str, code_version: str, timeout: flo
             module, _, function = spec.play.partition(":")
             play = getattr(importlib.import_module(module), function)
             play(spec, record, lambda team, name, side: _Watched(team, name, side, deciding))
-            _disarm_timer(alarm)
+            disarm_timer(alarm)
         else:
             _play_match(spec, record, deciding, figures, alarm)
     except BaseException as exc:  # noqa: BLE001 - a worker must survive anything a team does
-        _disarm_timer(alarm)
+        disarm_timer(alarm)
         if isinstance(exc, KeyboardInterrupt) and timeout is None:
             raise
         record.error = f"{type(exc).__name__}: {exc}"
@@ -146,7 +146,7 @@ def _play_match(spec: MatchSpec, record: MatchRecord, deciding: MutableSequence[
 
         recorders.append(RerunRecorder(spec.record))
     result = run_match(home, away, seed=spec.seed, config=spec.config(), recorders=recorders)
-    _disarm_timer(alarm)
+    disarm_timer(alarm)
     record.home_goals, record.away_goals = (int(g) for g in result.score)
     record.cycles = int(result.cycles)
     record.home_stats, record.away_stats = (s.as_dict() for s in result.statistics)
@@ -171,7 +171,7 @@ def _culprit(exc: BaseException, spec: MatchSpec, deciding: MutableSequence[int]
     return FORFEIT_NONE
 
 
-def _arm_timer(timeout: float | None):
+def arm_timer(timeout: float | None):
     """Start a timer that raises MatchTimeout in this (main) thread after ``timeout`` seconds;
     None where signals are unavailable (another thread, or no SIGALRM on this platform)."""
     if timeout is None or not hasattr(signal, "setitimer") or threading.current_thread() is not threading.main_thread():
@@ -185,7 +185,8 @@ def _arm_timer(timeout: float | None):
     return previous
 
 
-def _disarm_timer(previous) -> None:
+def disarm_timer(previous) -> None:
+    """Stop the timer of :func:`arm_timer` and restore the signal handler it replaced."""
     if previous is not None:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, previous)
