@@ -1,0 +1,59 @@
+"""Optional things a team may offer besides ``reset`` and ``act``.
+
+A team that implements one of these protocols gets more out of the tools around a match:
+
+* :class:`ReportsStatistics`: ``statistics()`` returns per-match figures (name -> number)
+  that match statistics, the results store and the tables carry as the team's own figures.
+* :class:`Drawable`: ``drawing()`` returns a :class:`Drawing` that a replay draws over the
+  pitch (role targets, where each player is going, the current formation's triangulation).
+
+Both are checked structurally (``isinstance(team, Drawable)``), so a team needs no base class.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Protocol, runtime_checkable
+
+import numpy as np
+
+
+@runtime_checkable
+class ReportsStatistics(Protocol):
+    """A team that reports its own per-match figures."""
+
+    def statistics(self) -> dict[str, float]:
+        """Figures of the match so far, by name (called once, when the match ends)."""
+        ...
+
+
+@dataclass(frozen=True)
+class Drawing:
+    """What a replay may draw for one team at one cycle, in the team's own frame (metres; the
+    team attacks towards +x).
+
+    ``targets`` (n, 2): each role's target. ``goals`` (n, 2): where each player is going.
+    ``outfield``: the outfield players' indices. ``role_of_player``: outfield player ->
+    outfield role (None before the first assignment). ``assigned_targets`` (k, 2): one row per
+    outfield player, its role's target (None before the first assignment).
+    ``formation_balls`` (m, 2) and ``formation_triangles`` (t, 3): the current formation's
+    sample ball positions and its Delaunay triangles (indices into ``formation_balls``); None
+    when the team has no formation to show.
+    """
+
+    targets: np.ndarray
+    goals: np.ndarray
+    outfield: np.ndarray
+    role_of_player: np.ndarray | None = None
+    assigned_targets: np.ndarray | None = None
+    formation_balls: np.ndarray | None = None
+    formation_triangles: np.ndarray | None = None
+
+
+@runtime_checkable
+class Drawable(Protocol):
+    """A team that can show a replay what it is thinking."""
+
+    def drawing(self) -> Drawing:
+        """The team's current drawing (called once per recorded cycle)."""
+        ...
