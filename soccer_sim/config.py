@@ -17,12 +17,14 @@ import numbers
 from dataclasses import dataclass, fields
 from dataclasses import field as default_of
 
+from soccer_sim.errors import SoccerSimError
+
 
 BODY_BALL_CONTACTS = ("rcssserver", "rigid")
 """The values of :attr:`PhysicsConfig.body_ball_contact`."""
 
 
-class ConfigError(ValueError):
+class ConfigError(SoccerSimError, ValueError):
     """A configuration value is impossible (negative size, goal wider than the field, ...)."""
 
 

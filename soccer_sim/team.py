@@ -14,13 +14,14 @@ from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 import numpy as np
 
+from soccer_sim.errors import SoccerSimError
 from soccer_sim.state import NO_PLAYER, PlayMode
 
 if TYPE_CHECKING:
     from soccer_sim.config import MatchConfig
 
 
-class TeamError(Exception):
+class TeamError(SoccerSimError):
     """A team misbehaved: its ``act``/``reset`` raised, or it returned a malformed command.
 
     ``team_name`` names the team and ``player`` is the index (within the team) of the player

@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from soccer_sim.errors import SoccerSimError
 from soccer_sim.state import AWAY, HOME, NO_PLAYER, SET_PLAYS, PlayMode
 
 if TYPE_CHECKING:
@@ -53,7 +54,7 @@ _SAME_POINT = 1e-6
 """Two start positions closer than this (m) are the same point."""
 
 
-class ScenarioError(ValueError):
+class ScenarioError(SoccerSimError, ValueError):
     """A scenario that cannot be played; ``field`` names the offending field
     (``"home.positions[2]"``, ``"end_on"``, ...) and the message says why."""
 
