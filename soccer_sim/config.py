@@ -200,6 +200,11 @@ class PhysicsConfig:
             raise ConfigError("PhysicsConfig.max_substep_distance must not exceed the ball-player contact diameter")
 
     @property
+    def cycles_per_minute(self) -> float:
+        """Cycles in one minute of game time (600 at the default ``cycle_seconds`` of 0.1 s)."""
+        return 60.0 / self.cycle_seconds
+
+    @property
     def player_accel_max(self) -> float:
         """Largest dash acceleration at full effort, straight ahead (m/cycle²):
         ``dash_power_max * dash_power_rate``."""
