@@ -24,7 +24,10 @@ per team, home first, then the scenario's start-state draws), and nothing else i
 
 A :class:`~soccer_sim.scenarios.Scenario` sets the sides' sizes (player rows ``0..h-1`` home,
 ``h..h+a-1`` away), the start state, the opening play mode, the rules it switches and the end
-conditions; the default scenario is the regular match.
+conditions; the default scenario is the regular match. The match resolves configuration and
+scenario once into a :class:`~soccer_sim.setup.MatchSetup`, which the referee and the teams'
+:class:`~soccer_sim.team.SideInfo` are built from; its :class:`~soccer_sim.ending.MatchEnd`
+decides when the match ends.
 """
 
 from __future__ import annotations

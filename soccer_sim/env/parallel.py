@@ -10,7 +10,9 @@ Rewards: +1 to every agent of a team when it scores, -1 when it concedes; with
 ``reward_shaping`` w > 0, every agent of a team also gets w times the ball's progress towards
 the opponents' goal in the cycle (metres along the team's attacking direction), off by default.
 An episode ends for all agents together: *terminated* at the end of the match (or at the
-first goal with ``end_on_goal``), *truncated* after ``max_cycles`` steps.
+first goal with ``end_on_goal``), *truncated* after ``max_cycles`` steps
+(:meth:`soccer_sim.ending.MatchEnd.episode_end` of the environment's
+:class:`~soccer_sim.setup.MatchSetup`).
 """
 
 from __future__ import annotations
