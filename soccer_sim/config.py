@@ -17,12 +17,14 @@ import numbers
 from dataclasses import dataclass, fields
 from dataclasses import field as default_of
 
+from soccer_sim.errors import SoccerSimError
+
 
 BODY_BALL_CONTACTS = ("rcssserver", "rigid")
 """The values of :attr:`PhysicsConfig.body_ball_contact`."""
 
 
-class ConfigError(ValueError):
+class ConfigError(SoccerSimError, ValueError):
     """A configuration value is impossible (negative size, goal wider than the field, ...)."""
 
 
@@ -196,6 +198,11 @@ class PhysicsConfig:
                               f"got {self.collision_velocity_factor!r}")
         if self.max_substep_distance > 2 * self.ball_radius + 2 * self.player_radius:
             raise ConfigError("PhysicsConfig.max_substep_distance must not exceed the ball-player contact diameter")
+
+    @property
+    def cycles_per_minute(self) -> float:
+        """Cycles in one minute of game time (600 at the default ``cycle_seconds`` of 0.1 s)."""
+        return 60.0 / self.cycle_seconds
 
     @property
     def player_accel_max(self) -> float:

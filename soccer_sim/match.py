@@ -24,14 +24,17 @@ per team, home first, then the scenario's start-state draws), and nothing else i
 
 A :class:`~soccer_sim.scenarios.Scenario` sets the sides' sizes (player rows ``0..h-1`` home,
 ``h..h+a-1`` away), the start state, the opening play mode, the rules it switches and the end
-conditions; the default scenario is the regular match.
+conditions; the default scenario is the regular match. The match resolves configuration and
+scenario once into a :class:`~soccer_sim.setup.MatchSetup`, which the referee and the teams'
+:class:`~soccer_sim.team.SideInfo` are built from; its :class:`~soccer_sim.ending.MatchEnd`
+decides when the match ends.
 """
 
 from __future__ import annotations
 
 import gc
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -41,10 +44,11 @@ from soccer_sim.physics import BodyBlock, Physics, SubstepPlanner
 from soccer_sim.recorder import Recorder
 from soccer_sim.referee import Referee
 from soccer_sim.registry import resolve_team
-from soccer_sim.scenarios.scenario import Scenario, ScenarioError, line_up
-from soccer_sim.state import AWAY, HOME, NO_PLAYER, NO_TEAM, EventKind, EventLog, PlayMode, WorldState
+from soccer_sim.scenarios.scenario import Scenario, line_up
+from soccer_sim.setup import MatchSetup, resolve_scenario
+from soccer_sim.state import AWAY, HOME, NO_PLAYER, NO_TEAM, EventLog, PlayMode, WorldState
 from soccer_sim.statistics import StatisticsRecorder, TeamStatistics
-from soccer_sim.team import SideInfo, Team, TeamError
+from soccer_sim.team import Team, TeamError
 from soccer_sim.view import TeamFrame
 
 _KICK_OFF = PlayMode.KICK_OFF
@@ -76,12 +80,6 @@ class MatchResult:
     """Name of the scenario played."""
 
 
-_GOAL = int(EventKind.GOAL)
-_END_KINDS = {_GOAL: "goal", int(EventKind.OUT): "out"}
-_LOST_KINDS = frozenset({int(EventKind.KICK), int(EventKind.TOUCH), int(EventKind.CATCH), int(EventKind.SET_PLAY)})
-"""Events of the defending side that mean the attackers lost the ball."""
-
-
 def initial_positions(config: MatchConfig) -> np.ndarray:
     """(2n, 2) opening line-up of the regular match, absolute frame: each team spread over its
     own half in three lines (the goalkeeper on its goal line's centre); the referee's kick-off
@@ -101,20 +99,22 @@ class Match:
 
     def __init__(self, home: Team | str | type, away: Team | str | type, seed: int = 0,
                  config: MatchConfig | None = None, recorders: Iterable[Recorder] = (),
-                 scenario: Scenario | str | None = None) -> None:
-        if config is None:
-            config = MatchConfig()
-        if not isinstance(config, MatchConfig):
-            raise TypeError(f"config must be a MatchConfig, got {type(config).__name__}")
+                 scenario: Scenario | str | None = None, *, setup: MatchSetup | None = None) -> None:
+        """``config`` and ``scenario`` are resolved into the match's :class:`MatchSetup`
+        (:meth:`MatchSetup.resolve`); or give an already resolved ``setup`` instead of them."""
+        if setup is None:
+            setup = MatchSetup.resolve(config, scenario)
+        elif not isinstance(setup, MatchSetup):
+            raise TypeError(f"setup must be a MatchSetup, got {type(setup).__name__}")
+        elif config is not None or scenario is not None:
+            raise TypeError("give either config and scenario or a setup resolved from them, not both")
         if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
             raise ValueError(f"seed must be a non-negative integer, got {seed!r}")
-        scenario = _resolve_scenario(scenario)
-        scenario.check(config)
-        if scenario.offside is not None and scenario.offside != config.rules.offside:
-            config = replace(config, rules=replace(config.rules, offside=scenario.offside))
-        self.config = config
+        self.setup = setup
+        """Sides, goalkeepers, rules on/off, start and end of the match, resolved once."""
+        self.config = config = setup.config
         """The configuration played (the scenario's offside switch applied)."""
-        self.scenario = scenario
+        self.scenario = scenario = setup.scenario
         self.seed = int(seed)
         (home_team, home_name), (away_team, away_name) = resolve_team(home), resolve_team(away)
         if home_team is away_team:
@@ -122,16 +122,15 @@ class Match:
         self.teams: tuple[Team, Team] = (home_team, away_team)
         self.team_names = (home_name, away_name)
 
-        self.sizes = sizes = scenario.sizes(config)
+        self.sizes = sizes = setup.sizes
         """(home, away) players."""
-        self.goalies = scenario.goalies(config)
+        self.goalies = setup.goalies
         """Each side's goalkeeper index within the side (-1: none)."""
         n2 = sizes[0] + sizes[1]
         physics_seq, home_seq, away_seq, scenario_seq = np.random.SeedSequence(self.seed).spawn(4)
         self._team_seeds = (home_seq, away_seq)
         self.block = BodyBlock(*sizes)
-        self.end_cycle = config.total_cycles if scenario.cycle_limit is None else min(
-            config.total_cycles, scenario.cycle_limit)
+        self.end_cycle = setup.end_cycle
         """Cycles the match lasts at most."""
         if scenario.is_regular:
             self.block.pos[:] = initial_positions(config)
@@ -144,8 +143,7 @@ class Match:
                                 ball=self.block.ball, ball_vel=self.block.ball_vel, effort=np.empty(n2),
                                 recovery=np.empty(n2), capacity=np.empty(n2), sizes=sizes)
         self.events = EventLog()
-        self.referee = Referee(config, self.events, sizes, self.goalies, set_plays=scenario.set_plays,
-                               end_cycle=self.end_cycle, half_time=scenario.half_time)
+        self.referee = Referee(setup, self.events)
         self.physics = Physics(config, self.block)
         self.kinematics = Kinematics(config, n2)
         self._restore_players()
@@ -156,9 +154,9 @@ class Match:
         self._kick = self.commands[:, 2:4]
         self.frames = (TeamFrame(HOME, home_name, sizes[0], self.block, self.commands, sizes[1]),
                        TeamFrame(AWAY, away_name, sizes[1], self.block, self.commands, sizes[0]))
-        self.end_reason = "time_over"
-        self._ends = scenario.end_on
-        self._defender = 1 - scenario.attacking_side
+        self._end = setup.end
+        self._condition: str | None = None
+        """The scenario's end condition that ended the match, if one did."""
         self._event_mark = 0
         self.statistics = StatisticsRecorder()
         self.recorders: tuple[Recorder, ...] = (self.statistics, *recorders)
@@ -170,6 +168,12 @@ class Match:
         self._started = False
 
     @property
+    def end_reason(self) -> str:
+        """Why the match ended (:attr:`MatchResult.end_reason`; ``"time_over"`` while it runs
+        and no end condition has been met)."""
+        return self._end.reason(self.state.cycle, self._condition)
+
+    @property
     def teammate_contacts(self) -> Sequence[int]:
         """New contacts between teammates so far, (home, away)."""
         return self.physics.teammate_contacts
@@ -178,13 +182,13 @@ class Match:
     def run(self) -> MatchResult:
         """Play the whole match and return its result."""
         self.start()
-        state, total = self.state, self.end_cycle
+        state, is_over = self.state, self._end.is_over
         # The loop allocates only short-lived objects; the cyclic garbage collector's passes
         # over them cost about a twentieth of a match, so it pauses until the end.
         collecting = gc.isenabled()
         gc.disable()
         try:
-            while state.cycle < total and state.play_mode != _TIME_OVER:
+            while not is_over(state):
                 self.step()
         finally:
             if collecting:
@@ -196,18 +200,14 @@ class Match:
         if self._started:
             raise RuntimeError("a Match can be played only once; create a new one")
         self._started = True
-        sizes, goalies = self.sizes, self.goalies
         for team in (HOME, AWAY):
-            info = SideInfo(team=team, name=self.team_names[team], opponent_name=self.team_names[1 - team],
-                            players_per_team=sizes[team], goalie_index=goalies[team],
-                            opponents=sizes[1 - team], opponent_goalie_index=goalies[1 - team])
+            info = self.setup.side_info(team, self.team_names)
             rng = np.random.default_rng(self._team_seeds[team])
             try:
                 self.teams[team].reset(info, self.config, rng)
             except (Exception, SystemExit) as exc:
                 raise _team_failure(self.team_names[team], "reset", exc) from exc
-        scenario = self.scenario
-        self.referee.start(self.state, scenario.start_play_mode, scenario.start_side)
+        self.referee.start(self.state, self.setup.start_mode, self.setup.start_side)
         self._event_mark = len(self.events)
         self._sync_state()
         for recorder in self.recorders:
@@ -219,9 +219,7 @@ class Match:
             recorder.on_end(self)
         state = self.state
         assert self.statistics.result is not None
-        reason = self.end_reason
-        if reason == "time_over" and state.cycle < self.config.total_cycles and state.cycle >= self.end_cycle:
-            reason = "cycle_limit"
+        reason = self._end.reason(state.cycle, self._condition)
         return MatchResult(score=(int(state.score[0]), int(state.score[1])), events=self.events,
                            statistics=self.statistics.result, state=state, team_names=self.team_names,
                            seed=self.seed, cycles=state.cycle, end_reason=reason, scenario=self.scenario.name)
@@ -276,7 +274,7 @@ class Match:
         kin.decay(state.vel, state.ball_vel, self.noise.ball)
         half = state.half
         referee.after_step(state, self.touchers)
-        if self._ends:
+        if self._end.conditions:
             self._check_end()
         if state.half != half:
             self._restore_players()  # players come back fresh for the second half
@@ -301,30 +299,17 @@ class Match:
         return moves
 
     def _check_end(self) -> None:
-        """The scenario's end conditions, judged on this cycle's events: a GOAL (of the
-        attackers: ``scored``), an OUT, or the defending side playing the ball (kick, touch,
-        catch) or being given a set play.
-        The first met, in the order of ``END_CONDITIONS``, ends the match (TIME_OVER)."""
+        """Judge the scenario's end conditions on this cycle's events
+        (:meth:`~soccer_sim.ending.MatchEnd.condition_met`); the first met ends the match
+        (the referee calls TIME_OVER)."""
         events = self.events
         mark, end = self._event_mark, len(events)
-        if end == mark:
-            return
         self._event_mark = end
-        kinds, teams = events.kind[mark:end], events.team[mark:end]
-        met = set()
-        for kind, team in zip(kinds, teams):
-            if kind in _END_KINDS:
-                met.add(_END_KINDS[kind])
-                if kind == _GOAL and team != self._defender:
-                    met.add("scored")
-            elif team == self._defender and kind in _LOST_KINDS:
-                met.add("lost")
-        for reason in self._ends:
-            if reason in met:
-                self.end_reason = reason
-                self.referee.stop(self.state)
-                self._event_mark = len(events)
-                return
+        condition = self._end.condition_met(events, mark, end)
+        if condition is not None:
+            self._condition = condition
+            self.referee.stop(self.state)
+            self._event_mark = len(events)
 
     def _restore_players(self) -> None:
         state = self.state
@@ -371,16 +356,5 @@ def _team_failure(name: str, method: str, exc: BaseException) -> TeamError:
     return TeamError(name, f"{method}() raised {type(exc).__name__}: {exc}")
 
 
-def _resolve_scenario(scenario: Scenario | str | None) -> Scenario:
-    if scenario is None:
-        return _REGULAR
-    if isinstance(scenario, Scenario):
-        return scenario
-    if isinstance(scenario, str):
-        from soccer_sim.scenarios.library import get_scenario
-
-        return get_scenario(scenario)
-    raise ScenarioError("Scenario", f"expected a Scenario, a library name or None, got {type(scenario).__name__}")
-
-
-_REGULAR = Scenario()
+_resolve_scenario = resolve_scenario
+"""Kept for callers of the old private name; :func:`soccer_sim.setup.resolve_scenario`."""

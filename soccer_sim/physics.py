@@ -22,6 +22,7 @@ import pymunk.batch as pbatch
 from numba import njit
 
 from soccer_sim.config import MatchConfig
+from soccer_sim.errors import SoccerSimError
 
 #: pymunk collision types of the bodies.
 HOME_PLAYER, AWAY_PLAYER, BALL, POST = 1, 2, 3, 4
@@ -58,7 +59,7 @@ CONTACT_END_GAP = 0.05
 jostling at the threshold from counting as many contacts."""
 
 
-class PymunkChangedError(RuntimeError):
+class PymunkChangedError(SoccerSimError, RuntimeError):
     """The installed pymunk does not behave like the pymunk 7 releases the bulk body transfer
     was written for (see :class:`_BulkBodies`)."""
 

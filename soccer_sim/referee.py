@@ -30,7 +30,9 @@ the match's last cycle.
 ``0..h-1`` home, the rest away) and a side may have no goalkeeper (no catch); play may open
 with any set play or in play on (:meth:`Referee.start`); without set plays every restart
 becomes a dropped ball on its spot (:meth:`~soccer_sim.rules.play_modes.PlayModes.drop_ball`); the match may end early
-(:meth:`Referee.stop`, or a shorter ``end_cycle``) and may have no half time.
+(:meth:`Referee.stop`, or a shorter ``end_cycle``) and may have no half time. All of this
+comes from the match's :class:`~soccer_sim.setup.MatchSetup`; when time is up is decided by
+its :class:`~soccer_sim.ending.MatchEnd`.
 
 **Events.** ``KICK``: every kick applied. ``GOAL``: team = scoring team, player = last
 toucher (of the other team on an own goal, then ``detail`` = 1). ``OUT``: team/player = last
@@ -46,7 +48,6 @@ from __future__ import annotations
 import numpy as np
 
 from soccer_sim.analysis.plays import PlayAnalysis
-from soccer_sim.config import MatchConfig
 from soccer_sim.rules import (
     BallOutJudge,
     BallStuckJudge,
@@ -58,7 +59,8 @@ from soccer_sim.rules import (
     PlayModes,
     TouchJudge,
 )
-from soccer_sim.state import AWAY, HOME, NO_PLAYER, EventKind, EventLog, PlayMode, WorldState
+from soccer_sim.setup import MatchSetup
+from soccer_sim.state import AWAY, HOME, EventKind, EventLog, PlayMode, WorldState
 
 _PLAY_ON = PlayMode.PLAY_ON
 _GOALIE_HOLDS = PlayMode.GOALIE_HOLDS
@@ -72,34 +74,25 @@ class Referee:
     rules in the order they hear every hook.
     """
 
-    def __init__(self, config: MatchConfig, events: EventLog, sizes: tuple[int, int] | None = None,
-                 goalies: tuple[int, int] | None = None, *, set_plays: bool = True, end_cycle: int | None = None,
-                 half_time: bool = True) -> None:
-        """``sizes``: (home, away) players (None: ``config.players_per_team`` each);
-        ``goalies``: each side's goalkeeper index within its side, -1 for none (None:
-        ``config.rules.goalie_index`` for both); ``set_plays`` False replaces every restart by a
-        dropped ball on the restart spot; ``end_cycle``: time over after this many cycles (None:
-        ``config.total_cycles``); ``half_time`` False: no half time (one period, no change of
-        ends)."""
-        self.config = config
+    def __init__(self, setup: MatchSetup, events: EventLog) -> None:
+        """``setup``: the match's sides, goalkeepers, rules on/off and end
+        (:meth:`MatchSetup.resolve`; ``MatchSetup.resolve(config)`` for the regular match)."""
+        if not isinstance(setup, MatchSetup):
+            raise TypeError(f"setup must be a MatchSetup (MatchSetup.resolve(config, scenario)), "
+                            f"got {type(setup).__name__}")
+        self.setup = setup
+        self.config = config = setup.config
         self.events = events
         r = config.rules
-        n = config.players_per_team
-        home, away = (n, n) if sizes is None else (int(sizes[0]), int(sizes[1]))
+        home = setup.sizes[0]
         self._n = home
-        self._sizes = (home, away)
-        goalies = (r.goalie_index, r.goalie_index) if goalies is None else goalies
-        first = (0, home)
-        goalie_rows = tuple(NO_PLAYER if g is None or g < 0 else first[t] + int(g) for t, g in enumerate(goalies))
+        self._sizes = setup.sizes
         self.hooks = Hooks()
-        self.modes = modes = PlayModes(
-            config, events, self.hooks, self._sizes, goalie_rows, set_plays=set_plays,
-            half_end=r.half_cycles if half_time else -1,
-            match_end=config.total_cycles if end_cycle is None else int(end_cycle))
+        self.modes = modes = PlayModes(setup, events, self.hooks)
         self.plays = PlayAnalysis(config, events, home)
         self.goalkeeper = GoalkeeperJudge(modes, self.plays.passer)
         judges: list[Judge] = [BallOutJudge(modes)]
-        if r.offside:
+        if setup.offside:
             judges.append(OffsideJudge(modes))
         if r.goal_kick_leaves_area:
             judges.append(GoalKickJudge(modes))

@@ -14,6 +14,7 @@ import importlib
 from importlib import metadata
 from typing import Any
 
+from soccer_sim.errors import SoccerSimError
 from soccer_sim.team import Team
 
 ENTRY_POINT_GROUP = "soccer_sim.teams"
@@ -25,7 +26,7 @@ BUILTIN_TEAMS: dict[str, str] = {
 """Teams shipped in soccer_sim itself (also declared as entry points in pyproject.toml)."""
 
 
-class TeamNotFoundError(LookupError):
+class TeamNotFoundError(SoccerSimError, LookupError):
     """A team name or path could not be resolved; the message lists the available names."""
 
 

@@ -14,13 +14,14 @@ from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 import numpy as np
 
+from soccer_sim.errors import SoccerSimError
 from soccer_sim.state import NO_PLAYER, PlayMode
 
 if TYPE_CHECKING:
     from soccer_sim.config import MatchConfig
 
 
-class TeamError(Exception):
+class TeamError(SoccerSimError):
     """A team misbehaved: its ``act``/``reset`` raised, or it returned a malformed command.
 
     ``team_name`` names the team and ``player`` is the index (within the team) of the player
@@ -56,10 +57,12 @@ class SideInfo:
     """Index of the team's goalkeeper within the team (the only player whose catch counts);
     -1 (``NO_PLAYER``) when the team has no goalkeeper (a scenario may leave it out)."""
     opponents: int | None = None
-    """Players of the opposing team (the rows of ``opp_pos``); None: as many as ours."""
+    """Players of the opposing team (the rows of ``opp_pos``). A match always gives it
+    (:meth:`soccer_sim.setup.MatchSetup.side_info`), so a team reads an int; only a SideInfo
+    built by hand for two even sides may leave it out, and then it is filled with ours."""
     opponent_goalie_index: int | None = None
-    """Index of the opponents' goalkeeper among them, -1 if they have none; None: the same
-    index as ours."""
+    """Index of the opponents' goalkeeper among them, -1 if they have none. A match always
+    gives it; left out of a SideInfo built by hand, it is filled with ours."""
 
     def __post_init__(self) -> None:
         if self.opponents is None:

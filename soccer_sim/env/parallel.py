@@ -10,7 +10,9 @@ Rewards: +1 to every agent of a team when it scores, -1 when it concedes; with
 ``reward_shaping`` w > 0, every agent of a team also gets w times the ball's progress towards
 the opponents' goal in the cycle (metres along the team's attacking direction), off by default.
 An episode ends for all agents together: *terminated* at the end of the match (or at the
-first goal with ``end_on_goal``), *truncated* after ``max_cycles`` steps.
+first goal with ``end_on_goal``), *truncated* after ``max_cycles`` steps
+(:meth:`soccer_sim.ending.MatchEnd.episode_end` of the environment's
+:class:`~soccer_sim.setup.MatchSetup`).
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ from soccer_sim.config import MatchConfig
 from soccer_sim.env.spaces import ACTION_SIZE, ActionDecoder, ObservationBuilder, check_actions
 from soccer_sim.match import Match
 from soccer_sim.registry import resolve_team
+from soccer_sim.setup import MatchSetup
 from soccer_sim.state import AWAY, HOME, PlayMode
 from soccer_sim.team import SideInfo, TeamCommand
 
@@ -95,13 +98,15 @@ class SoccerParallelEnv(ParallelEnv):
         self.end_on_goal = end_on_goal
         self.render_mode = render_mode
         self.reward_shaping = float(reward_shaping)
-        n = self.config.players_per_team
+        self.setup = setup = MatchSetup.resolve(self.config)
+        """The regular match every episode plays (sides, goalkeepers, end)."""
+        n = setup.sizes[HOME]
         self.n = n
         self.possible_agents = [f"{SIDES[side]}_{i}" for side in self.sides for i in range(n)]
         self._index = {agent: (int(agent.startswith("right")), int(agent.split("_")[1]))
                        for agent in self.possible_agents}
-        goalie = self.config.rules.goalie_index
-        size = ObservationBuilder(n, n, goalie, self.config).size
+        sizes, goalies = setup.sizes, setup.goalies
+        size = ObservationBuilder(sizes[HOME], sizes[AWAY], goalies[HOME], self.config).size
         self._observation_space = spaces.Box(-np.inf, np.inf, (size,), dtype=np.float32)
         self.action_mode = action_mode
         self._high_level = {side: load_action_mode(action_mode) for side in self.sides} \
@@ -110,8 +115,9 @@ class SoccerParallelEnv(ParallelEnv):
             self._action_space = spaces.Discrete(next(iter(self._high_level.values())).size(n))
         else:
             self._action_space = spaces.Box(-1.0, 1.0, (ACTION_SIZE,), dtype=np.float32)
-        self._builders = {side: ObservationBuilder(n, n, goalie, self.config) for side in self.sides}
-        self._decoders = {side: ActionDecoder(n, goalie, self.config) for side in self.sides}
+        self._builders = {side: ObservationBuilder(sizes[side], sizes[1 - side], goalies[side], self.config)
+                          for side in self.sides}
+        self._decoders = {side: ActionDecoder(sizes[side], goalies[side], self.config) for side in self.sides}
         self._side_agents = {side: [f"{SIDES[side]}_{i}" for i in range(n)] for side in self.sides}
         self._seeds = np.random.SeedSequence()
         self._match: Match | None = None
@@ -129,10 +135,7 @@ class SoccerParallelEnv(ParallelEnv):
         return self._action_space
 
     def _side_info(self, side: int) -> SideInfo:
-        match = self._match
-        return SideInfo(team=side, name=match.team_names[side], opponent_name=match.team_names[1 - side],
-                        players_per_team=match.sizes[side], goalie_index=match.goalies[side],
-                        opponents=match.sizes[1 - side], opponent_goalie_index=match.goalies[1 - side])
+        return self.setup.side_info(side, self._match.team_names)
 
     def _check_agent(self, agent: str) -> None:
         if agent not in self._index:
@@ -146,7 +149,7 @@ class SoccerParallelEnv(ParallelEnv):
         teams = [_ExternalTeam(f"agents-{SIDES[side]}") if side in self.sides else self.opponent
                  for side in (HOME, AWAY)]
         recorders = self._human_recorders()
-        self._match = Match(teams[HOME], teams[AWAY], seed=match_seed, config=self.config, recorders=recorders)
+        self._match = Match(teams[HOME], teams[AWAY], seed=match_seed, recorders=recorders, setup=self.setup)
         self._match.start()
         self._externals = {side: self._match.teams[side] for side in self.sides}
         for side, translator in self._high_level.items():
@@ -187,9 +190,9 @@ class SoccerParallelEnv(ParallelEnv):
             progress = (state.ball[0] - ball_before[0]) * state.home_attacks
             team_reward[HOME] += self.reward_shaping * progress
             team_reward[AWAY] -= self.reward_shaping * progress
-        ended = state.play_mode == PlayMode.TIME_OVER or state.cycle >= match.end_cycle
-        terminated = ended or (self.end_on_goal and bool(goals.any()))
-        truncated = not terminated and self.max_cycles is not None and self._steps >= self.max_cycles
+        terminated, truncated = self.setup.end.episode_end(state, goal_scored=bool(goals.any()),
+                                                           end_on_goal=self.end_on_goal, steps=self._steps,
+                                                           max_cycles=self.max_cycles)
         observations = self._observe()
         events = self._new_events()
         rewards = {agent: team_reward[self._index[agent][0]] for agent in self.agents}

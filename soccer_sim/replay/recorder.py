@@ -35,6 +35,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from soccer_sim.errors import SoccerSimError
 from soccer_sim.replay.blueprint import default_blueprint
 from soccer_sim.replay.field import GRASS_COLOUR, LINE_COLOUR, field_lines, goal_frames
 from soccer_sim.state import NO_PLAYER, EventKind, PlayMode
@@ -55,7 +56,7 @@ VIEW_SCALE = (1.0, -1.0, 1.0)
 coordinates, so mirroring y there puts +y up with labels upright, as in the pictures."""
 
 
-class ReplayError(RuntimeError):
+class ReplayError(SoccerSimError, RuntimeError):
     """rerun-sdk is missing, or a replay cannot be written or read; the message says what to do."""
 
 

@@ -30,9 +30,11 @@ Decisions where the rules leave room:
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
-from soccer_sim.config import MatchConfig
+from soccer_sim.ending import HALF_TIME_DUE, TIME_OVER_DUE
 from soccer_sim.rules.judge import Hooks
 from soccer_sim.rules.spots import (
     clamp_into_own_half,
@@ -43,6 +45,9 @@ from soccer_sim.rules.spots import (
     push_out_of_penalty_area,
 )
 from soccer_sim.state import AWAY, HOME, NO_PLAYER, NO_TEAM, SET_PLAYS, EventKind, EventLog, PlayMode, WorldState
+
+if TYPE_CHECKING:
+    from soccer_sim.setup import MatchSetup
 
 PLAY_ON = PlayMode.PLAY_ON
 KICK_OFF = PlayMode.KICK_OFF
@@ -61,29 +66,27 @@ def _frozen(a: np.ndarray) -> np.ndarray:
 
 
 class PlayModes:
-    """Play modes of one match, and the players' layout the judges share.
-
-    ``sizes``: (home, away) players; ``goalie_rows``: each team's goalkeeper row or NO_PLAYER;
-    ``set_plays`` False replaces every restart but the opening one by a dropped ball;
-    ``half_end`` / ``match_end``: cycles after which half time (-1: none) and time over come.
+    """Play modes of one match, and the players' layout the judges share, as the match's
+    :class:`~soccer_sim.setup.MatchSetup` gives them: the sides' sizes and goalkeepers, set
+    plays on or off (off: every restart but the opening one is a dropped ball) and, through
+    its :class:`~soccer_sim.ending.MatchEnd`, when half time and time over come.
     """
 
-    def __init__(self, config: MatchConfig, events: EventLog, hooks: Hooks, sizes: tuple[int, int],
-                 goalie_rows: tuple[int, int], *, set_plays: bool, half_end: int, match_end: int) -> None:
-        self.config = config
+    def __init__(self, setup: MatchSetup, events: EventLog, hooks: Hooks) -> None:
+        self.setup = setup
+        self.config = config = setup.config
         self.events = events
         self.hooks = hooks
-        home, away = sizes
+        home, away = setup.sizes
         n2 = home + away
         self.n = home
         """Home players: rows below it are home's, the others away's."""
         self.sizes = (home, away)
         self.rows = (slice(0, home), slice(home, n2))
-        self.goalie_rows = goalie_rows
+        self.goalie_rows = setup.goalie_rows
         """Each team's goalkeeper row, NO_PLAYER if it has none."""
-        self.set_plays = bool(set_plays)
-        self._half_end = half_end
-        self._match_end = match_end
+        self.set_plays = setup.set_plays
+        self._clock = setup.end.clock
         r = config.rules
         self._clearance = r.set_play_clearance
         self._kick_off_radius = max(r.set_play_clearance, config.field.centre_circle_radius)
@@ -164,11 +167,12 @@ class PlayModes:
             self.keep_set_play(state)
 
     def judge_time(self, state: WorldState) -> None:
-        """End of every cycle (rcssserver's ``TimeRef``): half time or time over when due."""
-        cycles_done = state.cycle + 1
-        if cycles_done >= self._match_end:
+        """End of every cycle (rcssserver's ``TimeRef``): half time or time over when due
+        (:meth:`soccer_sim.ending.MatchEnd.clock` decides)."""
+        due = self._clock(state.cycle + 1)
+        if due == TIME_OVER_DUE:
             self.time_over(state)
-        elif cycles_done == self._half_end:
+        elif due == HALF_TIME_DUE:
             self.half_time(state)
 
     # ------------------------------------------------------------------ transitions

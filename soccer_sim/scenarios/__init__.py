@@ -12,8 +12,11 @@ regular match. Pass one to :func:`soccer_sim.run_match` or :class:`soccer_sim.Ma
     result = run_match("mmdr", "static", seed=3, scenario="3-vs-1-with-keeper")
     result.end_reason          # "goal", "out", "lost" or "cycle_limit"
 
-Files (JSON or TOML) are described in :mod:`soccer_sim.scenarios.files`; the shipped
-scenarios in :mod:`soccer_sim.scenarios.library`.
+Modules: :mod:`~soccer_sim.scenarios.parts` (a scenario's sides and ball, its names and
+limits, :class:`ScenarioError`), :mod:`~soccer_sim.scenarios.scenario` (the :class:`Scenario`,
+its checks against a configuration and its start state), :mod:`~soccer_sim.scenarios.files`
+(JSON or TOML files) and :mod:`~soccer_sim.scenarios.library` (the shipped scenarios). A match
+resolves its scenario and configuration once into a :class:`soccer_sim.setup.MatchSetup`.
 """
 
 from soccer_sim.scenarios.files import load_scenario, save_scenario, scenario_from_dict, scenario_to_dict

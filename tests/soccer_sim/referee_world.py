@@ -13,6 +13,7 @@ import numpy as np
 
 from soccer_sim.config import MatchConfig, RuleConfig
 from soccer_sim.referee import Referee
+from soccer_sim.setup import MatchSetup
 from soccer_sim.state import HOME, NO_PLAYER, NO_TEAM, EventKind, EventLog, PlayMode, WorldState
 
 N = 11
@@ -51,7 +52,7 @@ def make_world(*, ball=(0.0, 0.0), ball_vel=(0.0, 0.0), mode: PlayMode = PlayMod
         mode_start=cycle, last_touch=last_touch,
     )
     events = EventLog()
-    return Referee(config, events), state, events
+    return Referee(MatchSetup.resolve(config), events), state, events
 
 
 def step(referee: Referee, state: WorldState, touchers=NO_TOUCH) -> None:

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from core_helpers import Scripted, quiet_config
+from tests.soccer_sim.core_helpers import Scripted, quiet_config
 
 from soccer_sim import TeamError, TeamNotFoundError, resolve_team, run_match
 from soccer_sim.scenarios import BallStart, Scenario, ScenarioError, Side, load_scenario

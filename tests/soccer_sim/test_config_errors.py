@@ -67,3 +67,9 @@ def test_numpy_numbers_are_accepted_and_bools_are_not() -> None:
         MatchConfig(max_cycles=True)
     with pytest.raises(ConfigError, match="player_radius"):
         MatchConfig(physics=PhysicsConfig(player_radius=True))
+
+
+def test_cycles_per_minute_follow_the_cycle_length() -> None:
+    assert PhysicsConfig().cycles_per_minute == 600.0
+    assert PhysicsConfig(cycle_seconds=0.05).cycles_per_minute == 1200.0
+    assert PhysicsConfig(cycle_seconds=0.2).cycles_per_minute == 300.0

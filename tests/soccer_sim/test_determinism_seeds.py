@@ -8,7 +8,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from core_helpers import TrajectoryHash
+from tests.soccer_sim.core_helpers import TrajectoryHash
 
 from soccer_sim import MatchConfig, run_match
 
@@ -34,10 +34,10 @@ def test_different_seeds_differ() -> None:
 
 def test_same_seed_is_bit_identical_across_processes() -> None:
     script = (
-        "import sys; sys.path[:0] = [{root!r}, {tests!r}]\n"
-        "from test_determinism_seeds import trajectory\n"
+        "import sys; sys.path[:0] = [{root!r}]\n"
+        "from tests.soccer_sim.test_determinism_seeds import trajectory\n"
         "print(trajectory(4)[0])\n"
-    ).format(root=str(ROOT), tests=str(Path(__file__).parent))
+    ).format(root=str(ROOT))
     output = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True,
                             cwd=ROOT, timeout=300)
     assert output.stdout.strip() == trajectory(4)[0]
@@ -54,11 +54,11 @@ def test_noise_comes_only_from_the_seed() -> None:
 @pytest.mark.slow
 def test_full_match_is_bit_identical_across_processes() -> None:
     script = (
-        "import sys; sys.path[:0] = [{root!r}, {tests!r}]\n"
-        "from core_helpers import TrajectoryHash\n"
+        "import sys; sys.path[:0] = [{root!r}]\n"
+        "from tests.soccer_sim.core_helpers import TrajectoryHash\n"
         "from soccer_sim import run_match\n"
         "r = TrajectoryHash(); run_match('chaser', 'chaser', seed=21, recorders=[r]); print(r.hexdigest())\n"
-    ).format(root=str(ROOT), tests=str(Path(__file__).parent))
+    ).format(root=str(ROOT))
     runs = [subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True,
                            cwd=ROOT, timeout=600).stdout.strip() for _ in range(2)]
     here = TrajectoryHash()

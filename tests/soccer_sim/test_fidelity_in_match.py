@@ -6,7 +6,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 import numpy as np
-from core_helpers import Scripted, quiet_config
+from tests.soccer_sim.core_helpers import Scripted, quiet_config
 
 from soccer_sim import Match, PlayMode
 from soccer_sim.config import PhysicsConfig, RuleConfig

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from core_helpers import Scripted
+from tests.soccer_sim.core_helpers import Scripted
 
 from soccer_sim import (AWAY, HOME, EventKind, Match, MatchConfig, MatchResult, PlayMode, TeamCommand,
                         TeamStatistics, run_match)
@@ -158,7 +158,7 @@ def test_chaser_kicks_towards_the_opponents_goal_in_its_own_frame() -> None:
 
 
 def test_distance_run_counts_running_not_standing() -> None:
-    from core_helpers import quiet_config
+    from tests.soccer_sim.core_helpers import quiet_config
 
     def run_right(view):
         dash = np.zeros((11, 2))
@@ -174,7 +174,7 @@ def test_distance_run_counts_running_not_standing() -> None:
 
 
 def test_goalkeeper_kicks_a_held_ball_away_through_its_own_body() -> None:
-    from core_helpers import quiet_config
+    from tests.soccer_sim.core_helpers import quiet_config
 
     from soccer_sim.state import NO_PLAYER
 

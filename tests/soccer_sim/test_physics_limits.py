@@ -8,7 +8,7 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
-from core_helpers import quiet_config
+from tests.soccer_sim.core_helpers import quiet_config
 
 from soccer_sim.config import StaminaConfig
 from soccer_sim.kinematics import CycleNoise, Kinematics

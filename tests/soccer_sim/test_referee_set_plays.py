@@ -6,6 +6,7 @@ import pytest
 from soccer_sim.config import MatchConfig
 from soccer_sim.state import AWAY, HOME, NO_PLAYER, NO_TEAM, EventKind, EventLog, PlayMode, WorldState
 from soccer_sim.referee import Referee
+from soccer_sim.setup import MatchSetup
 from tests.soccer_sim.referee_world import (
     N, config_with, default_positions, kick, kinds, make_world, set_play_modes, step,
 )
@@ -22,7 +23,7 @@ def test_start_is_a_home_kick_off_with_teams_in_their_halves():
     st = WorldState(pos=pos, vel=np.ones((2 * N, 2)), stamina=np.ones(2 * N), ball=np.array([4.0, 4.0]),
                     ball_vel=np.ones(2), cycle=0, play_mode=PlayMode.PLAY_ON, mode_team=NO_TEAM)
     ev = EventLog()
-    Referee(CFG, ev).start(st)
+    Referee(MatchSetup.resolve(CFG), ev).start(st)
     assert (st.play_mode, st.mode_team, st.mode_start) == (PlayMode.KICK_OFF, HOME, 0)
     assert st.ball.tolist() == [0.0, 0.0] and not st.ball_vel.any() and not st.vel.any()
     assert (st.pos[:N, 0] <= 0).all() and (st.pos[N:, 0] >= 0).all()
@@ -34,7 +35,7 @@ def test_start_rejects_a_state_of_the_wrong_size():
     st = WorldState(pos=np.zeros((10, 2)), vel=np.zeros((10, 2)), stamina=np.zeros(10),
                     ball=np.zeros(2), ball_vel=np.zeros(2))
     with pytest.raises(ValueError, match=r"WorldState.pos must have shape \(22, 2\)"):
-        Referee(CFG, EventLog()).start(st)
+        Referee(MatchSetup.resolve(CFG), EventLog()).start(st)
 
 
 def test_kick_off_keeps_teams_in_their_halves_and_the_defenders_out_of_the_circle_every_cycle():

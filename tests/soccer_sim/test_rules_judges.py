@@ -4,6 +4,7 @@ import pytest
 
 from soccer_sim.analysis import PlayAnalysis
 from soccer_sim.referee import Referee
+from soccer_sim.setup import MatchSetup
 from soccer_sim.rules import HOOKS, Hooks, Judge, PlayModes
 from soccer_sim.state import AWAY, HOME, EventKind, EventLog, PlayMode
 from tests.soccer_sim.referee_world import N, catch, config_with, kick, kinds, make_world, step
@@ -169,4 +170,4 @@ def test_play_analysis_is_the_one_pass_and_shot_definition():
     kick(ref, st, [9], (2.5, 0.0))  # towards the away goal at +x, well within reach
     assert ev.of_kind(EventKind.SHOT)[0][1:3] == (HOME, 9)
     assert ref.plays.passer() == 9  # the goalkeeper's back-pass rule asks the same object
-    assert Referee(config_with(), EventLog()).plays.passer() == -1
+    assert Referee(MatchSetup.resolve(config_with()), EventLog()).plays.passer() == -1

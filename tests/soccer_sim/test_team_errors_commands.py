@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from core_helpers import Scripted
+from tests.soccer_sim.core_helpers import Scripted
 
 from soccer_sim import MatchConfig, TeamCommand, TeamError, run_match
 

@@ -4,7 +4,7 @@ it turned by 180°, commands go back the same way, and the two views of mirrored
 from __future__ import annotations
 
 import numpy as np
-from core_helpers import Scripted
+from tests.soccer_sim.core_helpers import Scripted
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
