@@ -8,7 +8,8 @@
 * distance run: the sum over cycles of every player's displacement (m). Jumps longer than
   ``RELOCATION_FACTOR * player_speed_max`` in one cycle are the referee placing players
   (restarts, half time), not running, and are left out;
-* plus whatever the team reports through an optional ``statistics() -> dict`` method.
+* plus whatever the team reports through the optional ``statistics()`` hook
+  (:class:`~soccer_sim.team_hooks.ReportsStatistics`).
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from numba import njit
 
 from soccer_sim.state import AWAY, HOME, EventKind
 from soccer_sim.team import TeamError
+from soccer_sim.team_hooks import ReportsStatistics
 
 if TYPE_CHECKING:
     from soccer_sim.match import Match
@@ -105,13 +107,13 @@ class StatisticsRecorder:
 
 
 def _reported_figures(team: object, name: str) -> dict[str, float]:
-    """The figures ``team.statistics()`` reports (none if it has no such method), as floats;
-    a TeamError naming the team if the method fails or reports something that is not a number."""
-    report = getattr(team, "statistics", None)
-    if not callable(report):
+    """The figures a :class:`ReportsStatistics` team reports (none for other teams), as floats;
+    a TeamError naming the team if ``statistics()`` fails or reports something that is not a
+    number."""
+    if not isinstance(team, ReportsStatistics):
         return {}
     try:
-        figures = report()
+        figures = team.statistics()
         return {str(key): float(value) for key, value in dict(figures).items()}
     except Exception as exc:
         raise TeamError(name, f"statistics() must return a dict of numbers; it failed with "

@@ -17,8 +17,9 @@ What a replay holds (absolute frame, metres; entity paths):
 - ``/world/ball`` and ``/world/ball/trail`` (the last :attr:`trail` positions).
 - ``/world/home/roles/targets``, ``.../roles/assignment`` (an arrow from each player to its role's target) and
   ``.../roles/triangulation`` (the formation's Delaunay mesh, logged when it changes; hidden
-  when the replay opens unless ``formation_meshes=True``), for a team with a ``drawing()``
-  method (see :mod:`agents.teams`); each a layer the viewer toggles.
+  when the replay opens unless ``formation_meshes=True``), for a team with the ``drawing()``
+  hook (:class:`~soccer_sim.team_hooks.Drawable`, e.g. :mod:`agents.teams`); each a layer the
+  viewer toggles.
 - ``/events``: a text log of goals, shots, passes, set plays, offside, ...
 - ``/stats/score/{home,away}``, ``/stats/possession/home`` (share of play-on cycles in which
   home touched the ball last), ``/stats/stamina/{home,away}`` (team mean).
@@ -38,6 +39,8 @@ import numpy as np
 from soccer_sim.replay.blueprint import default_blueprint
 from soccer_sim.replay.field import GRASS_COLOUR, LINE_COLOUR, field_lines, goal_frames
 from soccer_sim.state import NO_PLAYER, EventKind, PlayMode
+from soccer_sim.team import TeamError
+from soccer_sim.team_hooks import Drawable, Drawing
 
 if TYPE_CHECKING:
     from soccer_sim.match import Match
@@ -126,9 +129,9 @@ class RerunRecorder:
         self._possession = np.zeros(2, dtype=np.int64)
         self._formations: list[Any] = [None, None]
         self._meshes: dict[tuple[int, int], np.ndarray] = {}
-        self._drawers = [(team, obj.drawing) for team, obj in enumerate(match.teams)
-                         if self.drawings and self._sizes[team] and callable(getattr(obj, "drawing", None))]
-        self._outfield = {team: np.asarray(draw()["outfield"]) for team, draw in self._drawers}
+        self._drawers = [(team, obj, match.team_names[team]) for team, obj in enumerate(match.teams)
+                         if self.drawings and self._sizes[team] and isinstance(obj, Drawable)]
+        self._outfield = {team: team_drawing(obj, name).outfield for team, obj, name in self._drawers}
         self._sent_events = 0
         self._buffer(match)
 
@@ -177,11 +180,11 @@ class RerunRecorder:
         self._score[i] = state.score
         self._stamina[i] = state.stamina
         self._toucher[i] = state.last_touch if state.play_mode == PlayMode.PLAY_ON else NO_PLAYER
-        for team, draw in self._drawers:
-            drawing = draw()
+        for team, obj, name in self._drawers:
+            drawing = team_drawing(obj, name)
             sign = state.home_attacks if team == 0 else -state.home_attacks
             self._signs[team, i] = sign
-            targets, assigned = drawing["targets"], drawing.get("assigned_targets")
+            targets, assigned = drawing.targets, drawing.assigned_targets
             held, kept = self._targets[team], self._assigned[team]
             if (held is not None and held.shape[1:] == targets.shape
                     and (assigned is None or (kept is not None and kept.shape[1:] == assigned.shape))):
@@ -192,7 +195,7 @@ class RerunRecorder:
             else:
                 self._keep_rows(team, targets, assigned, match)
                 i = self._count  # (a change of shape sends what was buffered first)
-            balls, triangles = drawing.get("formation_balls"), drawing.get("formation_triangles")
+            balls, triangles = drawing.formation_balls, drawing.formation_triangles
             if balls is not None and triangles is not None:
                 key = (id(balls), sign)
                 if self._formations[team] != key:
@@ -250,7 +253,7 @@ class RerunRecorder:
             rr.send_columns(f"world/{key}/players", indexes=times,
                             columns=rr.Points2D.columns(positions=rows.reshape(-1, 2)).partition([size] * count),
                             recording=rec)
-        for team, _ in self._drawers:
+        for team, _, _ in self._drawers:
             self._send_drawings(team, times, count, rows_of_team=pos[:, :home] if team == 0 else pos[:, home:])
             self._send_meshes(team)
         ball = self._ball[:count].astype(np.float32)
@@ -387,6 +390,18 @@ class RerunRecorder:
                             [len(m) for _, m in changes]),
                         recording=self.recording)
         changes.clear()
+
+
+def team_drawing(team: Drawable, name: str) -> Drawing:
+    """The team's current :class:`Drawing`; a TeamError naming the team if ``drawing()`` fails
+    or returns anything else."""
+    try:
+        drawing = team.drawing()
+    except Exception as exc:
+        raise TeamError(name, f"drawing() failed with {type(exc).__name__}: {exc}") from exc
+    if not isinstance(drawing, Drawing):
+        raise TeamError(name, f"drawing() must return a soccer_sim.team_hooks.Drawing, got {type(drawing).__name__}")
+    return drawing
 
 
 def line_strips(strips: np.ndarray) -> Any:
