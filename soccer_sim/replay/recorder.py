@@ -36,6 +36,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from soccer_sim.analysis.events import describe_event
 from soccer_sim.replay.blueprint import default_blueprint
 from soccer_sim.replay.field import GRASS_COLOUR, LINE_COLOUR, field_lines, goal_frames
 from soccer_sim.state import NO_PLAYER, EventKind, PlayMode
@@ -415,26 +416,3 @@ def line_strips(strips: np.ndarray) -> Any:
     offsets = np.arange(0, (k + 1) * length, length, dtype=np.int32)
     points = Vec2DBatch(np.ascontiguousarray(strips, dtype=np.float32).reshape(-1, 2)).as_arrow_array()
     return pa.ListArray.from_arrays(offsets, points, type=LineStrip2DBatch._ARROW_DATATYPE)
-
-
-_EVENT_NAMES = {EventKind.KICK: "kick", EventKind.PASS: "pass", EventKind.SHOT: "shot", EventKind.GOAL: "GOAL",
-                EventKind.CATCH: "catch", EventKind.OUT: "ball out", EventKind.SET_PLAY: "set play",
-                EventKind.OFFSIDE: "offside", EventKind.DROP_BALL: "dropped ball", EventKind.HALF_TIME: "half time",
-                EventKind.TIME_OVER: "time over", EventKind.TOUCH: "touch", EventKind.BACK_PASS: "back-pass"}
-
-
-def describe_event(names: tuple[str, str], kind: int, team: int, player: int, x: float, y: float,
-                   detail: int) -> str:
-    """One event as a line of the event log, e.g. ``"GOAL mmdr #9 at (50.1, 3.2)"``."""
-    text = _EVENT_NAMES.get(EventKind(kind), f"event {kind}")
-    if kind == EventKind.SET_PLAY:
-        text = f"{PlayMode(detail).name.lower().replace('_', ' ')}"
-    if team in (0, 1):
-        text += f" {names[team]}"
-        if player >= 0:
-            text += f" #{player + 1}"
-        if kind == EventKind.PASS and detail >= 0:
-            text += f" to #{detail + 1}"
-    if np.isfinite(x) and np.isfinite(y):
-        text += f" at ({x:.1f}, {y:.1f})"
-    return text
