@@ -1,8 +1,9 @@
 """Per-team match statistics, collected by a recorder that observes the match loop.
 
 * goals, kicks, shots and passes come from the event log;
-* possession share: the fraction of the cycles with a last toucher (in any play mode) in
-  which that toucher belonged to the team;
+* possession share: the share of the cycles in which the team's players touched the ball
+  last, among the cycles in which anybody had (:mod:`soccer_sim.analysis.possession`, the
+  definition replays use too);
 * teammate contacts: new body contacts between two players of the team (the collision solver
   counts them; the role-assignment literature expects good assignment to avoid them);
 * distance run: the sum over cycles of every player's displacement (m). Jumps longer than
@@ -21,6 +22,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numba import njit
 
+from soccer_sim.analysis.possession import Possession
 from soccer_sim.state import AWAY, HOME, EventKind
 from soccer_sim.team import TeamError
 from soccer_sim.team_hooks import ReportsStatistics
@@ -75,19 +77,16 @@ class StatisticsRecorder:
         self._relocation = RELOCATION_FACTOR * match.config.physics.player_speed_max
         self._previous = state.pos.copy()
         self._distance = np.zeros(state.pos.shape[0])
-        self._possession = [0, 0]
+        self._possession = Possession(self._n)
 
     def on_cycle(self, match: Match) -> None:
         state = match.state
         _add_distances(state.pos, self._previous, self._distance, self._relocation)
-        toucher = state.last_touch
-        if toucher >= 0:
-            self._possession[0 if toucher < self._n else 1] += 1
+        self._possession.add(state.last_touch)
 
     def on_end(self, match: Match) -> None:
         events = match.events.as_arrays()
         kinds, teams = events["kind"], events["team"]
-        touched = sum(self._possession)
         n = self._n
         stats = []
         for team in (HOME, AWAY):
@@ -98,7 +97,7 @@ class StatisticsRecorder:
                 shots=int(np.count_nonzero(mine & (kinds == EventKind.SHOT))),
                 kicks=int(np.count_nonzero(mine & (kinds == EventKind.KICK))),
                 passes=int(np.count_nonzero(mine & (kinds == EventKind.PASS))),
-                possession=self._possession[team] / touched if touched else 0.0,
+                possession=self._possession.share(team),
                 teammate_contacts=int(match.teammate_contacts[team]),
                 distance_run=float((self._distance[:n] if team == HOME else self._distance[n:]).sum()),
                 reported=reported,

@@ -21,8 +21,9 @@ What a replay holds (absolute frame, metres; entity paths):
   hook (:class:`~soccer_sim.team_hooks.Drawable`, e.g. :mod:`agents.teams`); each a layer the
   viewer toggles.
 - ``/events``: a text log of goals, shots, passes, set plays, offside, ...
-- ``/stats/score/{home,away}``, ``/stats/possession/home`` (share of play-on cycles in which
-  home touched the ball last), ``/stats/stamina/{home,away}`` (team mean).
+- ``/stats/score/{home,away}``, ``/stats/possession/home`` (home's possession share so far, as
+  :mod:`soccer_sim.analysis.possession` defines it and the match statistics report it),
+  ``/stats/stamina/{home,away}`` (team mean).
 
 Timelines: ``cycle`` (a sequence) and ``match_time`` (a duration, ``cycle_seconds`` per cycle).
 The default blueprint (:func:`soccer_sim.replay.blueprint.default_blueprint`) is stored with the
@@ -39,7 +40,8 @@ import numpy as np
 from soccer_sim.analysis.events import describe_event
 from soccer_sim.replay.blueprint import default_blueprint
 from soccer_sim.replay.field import GRASS_COLOUR, LINE_COLOUR, field_lines, goal_frames
-from soccer_sim.state import NO_PLAYER, EventKind, PlayMode
+from soccer_sim.analysis.possession import Possession
+from soccer_sim.state import HOME, EventKind
 from soccer_sim.team import TeamError
 from soccer_sim.team_hooks import Drawable, Drawing
 
@@ -127,14 +129,14 @@ class RerunRecorder:
         self._log_static(match)
         self._allocate(sum(self._sizes))
         self._trail_seed = np.repeat(match.state.ball[None, :].astype(np.float32), self.trail, axis=0)
-        self._possession = np.zeros(2, dtype=np.int64)
+        self._possession = Possession(self._sizes[0])
         self._formations: list[Any] = [None, None]
         self._meshes: dict[tuple[int, int], np.ndarray] = {}
         self._drawers = [(team, obj, match.team_names[team]) for team, obj in enumerate(match.teams)
                          if self.drawings and self._sizes[team] and isinstance(obj, Drawable)]
         self._outfield = {team: team_drawing(obj, name).outfield for team, obj, name in self._drawers}
         self._sent_events = 0
-        self._buffer(match)
+        self._buffer(match, played=False)
 
     def on_cycle(self, match: Match) -> None:
         self._buffer(match)
@@ -160,8 +162,8 @@ class RerunRecorder:
         self._ball = np.empty((cap, 2))
         self._score = np.empty((cap, 2))
         self._stamina = np.empty((cap, players))
-        self._toucher = np.empty(cap, dtype=np.int64)
-        """Row that last touched the ball in play on, -1 otherwise (possession)."""
+        self._share = np.empty(cap)
+        """Home's possession share after each cycle."""
         self._signs = np.empty((2, cap), dtype=np.float32)
         self._targets: list[np.ndarray | None] = [None, None]
         """Per team: role targets as the team drew them (team frame), (cap, roles, 2)."""
@@ -172,7 +174,9 @@ class RerunRecorder:
         self._mesh_changes: list[list[tuple[int, np.ndarray]]] = [[], []]
         """(cycle, closed triangles (t, 4, 2), absolute frame) whenever a team's formation changed."""
 
-    def _buffer(self, match: Match) -> None:
+    def _buffer(self, match: Match, played: bool = True) -> None:
+        """Copy this cycle into the buffers (``played``: a cycle of the match, not the state it
+        started from, which counts for no possession)."""
         state = match.state
         i = self._count
         self._cycles[i] = state.cycle
@@ -180,7 +184,9 @@ class RerunRecorder:
         self._ball[i] = state.ball
         self._score[i] = state.score
         self._stamina[i] = state.stamina
-        self._toucher[i] = state.last_touch if state.play_mode == PlayMode.PLAY_ON else NO_PLAYER
+        if played:
+            self._possession.add(state.last_touch)
+        self._share[i] = self._possession.share(HOME)
         for team, obj, name in self._drawers:
             drawing = team_drawing(obj, name)
             sign = state.home_attacks if team == 0 else -state.home_attacks
@@ -273,18 +279,13 @@ class RerunRecorder:
                 mean = (stamina[:, :home] if team == 0 else stamina[:, home:]).mean(axis=1, dtype=np.float64)
                 rr.send_columns(f"stats/stamina/{key}", indexes=times, columns=rr.Scalars.columns(scalars=mean),
                                 recording=rec)
-        toucher = self._toucher[:count].copy()
-        home_has = np.cumsum((toucher >= 0) & (toucher < home)) + self._possession[0]
-        away_has = np.cumsum(toucher >= home) + self._possession[1]
-        self._possession[:] = home_has[-1], away_has[-1]
-        total = home_has + away_has
-        share = np.where(total > 0, home_has / np.maximum(total, 1), 0.5)
+        share = self._share[:count].copy()
         rr.send_columns("stats/possession/home", indexes=times, columns=rr.Scalars.columns(scalars=share),
                         recording=rec)
         self._send_events(match)
         self._count = 0
         if keep_current:  # the row being written moves to the front
-            rows = [self._cycles, self._pos, self._ball, self._score, self._stamina, self._toucher]
+            rows = [self._cycles, self._pos, self._ball, self._score, self._stamina, self._share]
             rows += [b for b in self._targets + self._assigned if b is not None]
             for buffer in rows:
                 buffer[0] = buffer[count]

@@ -158,6 +158,39 @@ def test_recording_into_a_callers_stream(tmp_path) -> None:
     assert replay.cycles.tolist() == list(range(61)) and replay.players["home"].shape == (61, 11, 2)
 
 
+class LastTouches:
+    """Every cycle's last toucher and play mode (the match's start state left out)."""
+
+    def on_start(self, match) -> None:
+        self.n = match.state.sizes[0]
+        self.touchers, self.modes = [], []
+
+    def on_cycle(self, match) -> None:
+        self.touchers.append(int(match.state.last_touch))
+        self.modes.append(int(match.state.play_mode))
+
+    def on_end(self, match) -> None:
+        pass
+
+
+def test_the_replays_possession_is_the_statistics_possession_at_every_cycle(tmp_path) -> None:
+    from soccer_sim.state import PlayMode
+
+    touches = LastTouches()
+    result = run_match("chaser", "chaser", seed=5, config=MatchConfig(max_cycles=400),
+                       recorders=[touches, RerunRecorder(tmp_path / "p.rrd", flush_every=150, drawings=False)])
+    replay = read_replay(tmp_path / "p.rrd")
+    touchers = np.asarray(touches.touchers)
+    home = np.cumsum((touchers >= 0) & (touchers < touches.n))
+    away = np.cumsum(touchers >= touches.n)
+    expected = np.where(home + away > 0, home / np.maximum(home + away, 1), 0.0)
+    assert replay.possession.shape == (401,) and replay.possession[0] == 0.0  # the start: nobody had the ball
+    np.testing.assert_array_equal(replay.possession[1:], expected)
+    assert replay.possession[-1] == result.statistics[0].possession
+    # counted in every play mode, not only in play on (the match had restarts with a last toucher)
+    assert any(t >= 0 and m != PlayMode.PLAY_ON for t, m in zip(touches.touchers, touches.modes))
+
+
 def test_the_replay_logs_events_with_the_shared_event_text() -> None:
     import soccer_sim.replay
     import soccer_sim.replay.recorder
