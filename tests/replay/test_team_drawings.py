@@ -59,6 +59,44 @@ def test_a_drawable_teams_targets_and_assignment_are_recorded(tmp_path) -> None:
     assert "/world/away/roles/triangulation" in replay.temporal_paths
 
 
+class ChangingDrawer(ChaserTeam):
+    """Draws targets that move by 1 m a cycle; from cycle ``fewer`` on only six roles, and
+    assigned targets only from cycle ``assigned_from`` on (so buffers change shape mid-block)."""
+
+    def __init__(self, name: str, fewer: int, assigned_from: int) -> None:
+        self.name, self.fewer, self.assigned_from = name, fewer, assigned_from
+        self.cycles = 0
+
+    def act(self, view):
+        self.cycles += 1
+        return super().act(view)
+
+    def targets(self, cycle: int) -> np.ndarray:
+        return (TARGETS if cycle < self.fewer else TARGETS[:6]) + cycle
+
+    def drawing(self) -> Drawing:
+        targets = self.targets(self.cycles)
+        assigned = targets[1:] if self.cycles >= self.assigned_from else None
+        return Drawing(targets=targets, goals=targets, outfield=np.arange(1, len(targets)),
+                       assigned_targets=assigned)
+
+
+def test_drawings_that_change_shape_mid_block_are_recorded_cycle_by_cycle(tmp_path) -> None:
+    home, away = ChangingDrawer("home-drawer", 9, 3), ChangingDrawer("away-drawer", 5, 12)
+    path = tmp_path / "changing.rrd"
+    result = run_match(home, away, seed=1, config=MatchConfig(max_cycles=20),
+                       recorders=[RerunRecorder(path, flush_every=8)])
+    replay = read_replay(path)
+    attacks = {"home": 1.0, "away": -1.0} if result.state.home_attacks == 1 else {"home": -1.0, "away": 1.0}
+    for key, team in (("home", home), ("away", away)):
+        assert len(replay.targets[key]) == 21
+        for cycle, drawn in enumerate(replay.targets[key]):
+            np.testing.assert_allclose(drawn, (attacks[key] * team.targets(cycle)).astype(np.float32), rtol=1e-6)
+        lines = replay.lines[key]
+        assert [len(lines[c]) for c in range(21)] == [0 if c < team.assigned_from else len(team.targets(c)) - 1
+                                                      for c in range(21)]
+
+
 @pytest.mark.parametrize("drawn, message", [
     ({"targets": TARGETS, "outfield": OUTFIELD}, r"drawing\(\) must return a soccer_sim.team_hooks.Drawing, got dict"),
     (None, r"drawing\(\) must return a soccer_sim.team_hooks.Drawing, got NoneType"),
