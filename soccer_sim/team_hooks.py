@@ -8,6 +8,7 @@ A team that implements one of these protocols gets more out of the tools around 
   pitch (role targets, where each player is going, the current formation's triangulation).
 
 Both are checked structurally (``isinstance(team, Drawable)``), so a team needs no base class.
+Import them from here: ``from soccer_sim.team_hooks import Drawable, Drawing, ReportsStatistics``.
 """
 
 from __future__ import annotations
@@ -48,6 +49,30 @@ class Drawing:
     assigned_targets: np.ndarray | None = None
     formation_balls: np.ndarray | None = None
     formation_triangles: np.ndarray | None = None
+
+    def __post_init__(self) -> None:
+        """Hold every field as a numpy array of the documented shape (arrays of the right kind
+        pass through without a copy, so a formation's arrays keep their identity); a ValueError
+        naming the field otherwise."""
+        for name, columns, kind in _FIELDS:
+            value = getattr(self, name)
+            if value is None:
+                if name in _REQUIRED:
+                    raise ValueError(f"Drawing.{name} is required")
+                continue
+            array = value if isinstance(value, np.ndarray) and value.dtype.kind in kind else np.asarray(
+                value, dtype=np.float64 if kind == "f" else np.intp)
+            if array.ndim != (1 if columns is None else 2) or (columns is not None and array.shape[1] != columns):
+                shape = "(n,)" if columns is None else f"(n, {columns})"
+                raise ValueError(f"Drawing.{name} must have shape {shape}, got {array.shape}")
+            object.__setattr__(self, name, array)
+
+
+_FIELDS = (("targets", 2, "f"), ("goals", 2, "f"), ("outfield", None, "iu"), ("role_of_player", None, "iu"),
+           ("assigned_targets", 2, "f"), ("formation_balls", 2, "f"), ("formation_triangles", 3, "iu"))
+"""Each field of :class:`Drawing`: name, columns (None: one-dimensional) and the numpy kinds
+accepted as they are (others are converted to float64, or to intp for index fields)."""
+_REQUIRED = ("targets", "goals", "outfield")
 
 
 @runtime_checkable

@@ -242,7 +242,7 @@ class SoccerParallelEnv(ParallelEnv):
         return observations
 
     def _new_events(self) -> list[str]:
-        from soccer_sim.replay.recorder import describe_event
+        from soccer_sim.analysis.events import describe_event
 
         log = self._match.events
         names = self._match.team_names

@@ -33,7 +33,7 @@ def default_blueprint(field: FieldConfig, formation_meshes: bool = False):
                               visual_bounds=rrb.VisualBounds2D(x_range=[-hl - m, hl + m], y_range=[-hw - m, hw + m])),
             rrb.Vertical(
                 rrb.TimeSeriesView(origin="/stats/score", name="score"),
-                rrb.TimeSeriesView(origin="/stats/possession", name="possession (share of play-on cycles)"),
+                rrb.TimeSeriesView(origin="/stats/possession", name="possession (home's share)"),
                 rrb.TimeSeriesView(origin="/stats/stamina", name="mean stamina"),
                 rrb.TextLogView(origin="/events", name="events"),
             ),

@@ -15,7 +15,8 @@ class Replay:
     """What :func:`read_replay` finds in a ``.rrd`` file (absolute frame, metres).
 
     ``players[key]`` is (T, n, 2) for ``key`` in ("home", "away") at ``cycles`` (T,);
-    ``ball`` (T, 2); ``score`` (T, 2); ``events`` (cycle, text) pairs in order;
+    ``ball`` (T, 2); ``score`` (T, 2); ``possession`` (T,) home's possession share (empty if
+    the recording has none); ``events`` (cycle, text) pairs in order;
     ``static_paths`` the entities logged as static (the field, styles); ``targets[key]`` the
     role targets per cycle (a list of (k, 2) arrays) when the team drew them;
     ``lines[key]`` the player-to-target segments per cycle ((k, 2, 2) arrays);
@@ -34,6 +35,7 @@ class Replay:
     targets: dict[str, list[np.ndarray]] = field(default_factory=dict)
     lines: dict[str, list[np.ndarray]] = field(default_factory=dict)
     temporal_paths: set[str] = field(default_factory=set)
+    possession: np.ndarray = field(default_factory=lambda: np.zeros(0))
     has_blueprint: bool = False
     static_values: dict[str, dict[str, list]] = field(default_factory=dict)
 
@@ -137,6 +139,7 @@ def read_replay(path: str | os.PathLike) -> Replay:
             targets[key] = [np.asarray(r, dtype=np.float32).reshape(-1, 2) for r in rows]
     score = np.column_stack([np.asarray(ordered(f"/stats/score/{key}:scalars")[1], dtype=float).reshape(-1)
                              for key in TEAM_KEYS])
+    possession = np.asarray(ordered("/stats/possession/home:scalars")[1], dtype=float).reshape(-1)
     event_cycles, texts = ordered("/events:text")
     try:
         has_blueprint = bool(reader.blueprints())
@@ -145,5 +148,6 @@ def read_replay(path: str | os.PathLike) -> Replay:
     return Replay(cycles=cycles, players=players, ball=np.asarray([b[0] for b in ball], dtype=np.float32),
                   score=score, events=[(int(c), t[0] if isinstance(t, list) else t) for c, t in zip(event_cycles, texts)],
                   static_paths=static, targets=targets, lines=lines,
-                  temporal_paths={key.rsplit(':', 1)[0] for key in series}, has_blueprint=has_blueprint,
+                  temporal_paths={key.rsplit(':', 1)[0] for key in series}, possession=possession,
+                  has_blueprint=has_blueprint,
                   static_values=static_values)

@@ -17,11 +17,13 @@ What a replay holds (absolute frame, metres; entity paths):
 - ``/world/ball`` and ``/world/ball/trail`` (the last :attr:`trail` positions).
 - ``/world/home/roles/targets``, ``.../roles/assignment`` (an arrow from each player to its role's target) and
   ``.../roles/triangulation`` (the formation's Delaunay mesh, logged when it changes; hidden
-  when the replay opens unless ``formation_meshes=True``), for a team with a ``drawing()``
-  method (see :mod:`agents.teams`); each a layer the viewer toggles.
+  when the replay opens unless ``formation_meshes=True``), for a team with the ``drawing()``
+  hook (:class:`~soccer_sim.team_hooks.Drawable`, e.g. :mod:`agents.teams`); each a layer the
+  viewer toggles.
 - ``/events``: a text log of goals, shots, passes, set plays, offside, ...
-- ``/stats/score/{home,away}``, ``/stats/possession/home`` (share of play-on cycles in which
-  home touched the ball last), ``/stats/stamina/{home,away}`` (team mean).
+- ``/stats/score/{home,away}``, ``/stats/possession/home`` (home's possession share so far, as
+  :mod:`soccer_sim.analysis.possession` defines it and the match statistics report it),
+  ``/stats/stamina/{home,away}`` (team mean).
 
 Timelines: ``cycle`` (a sequence) and ``match_time`` (a duration, ``cycle_seconds`` per cycle).
 The default blueprint (:func:`soccer_sim.replay.blueprint.default_blueprint`) is stored with the
@@ -35,15 +37,18 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from soccer_sim.analysis.events import describe_event
+from soccer_sim.analysis.possession import Possession
 from soccer_sim.errors import SoccerSimError
 from soccer_sim.replay.blueprint import default_blueprint
+from soccer_sim.replay.drawings import TEAM_KEYS, TeamDrawings, line_strips
 from soccer_sim.replay.field import GRASS_COLOUR, LINE_COLOUR, field_lines, goal_frames
-from soccer_sim.state import NO_PLAYER, EventKind, PlayMode
+from soccer_sim.state import HOME, EventKind
+from soccer_sim.team_hooks import Drawable
 
 if TYPE_CHECKING:
     from soccer_sim.match import Match
 
-TEAM_KEYS = ("home", "away")
 TEAM_COLOURS = ((220, 50, 47), (38, 139, 210))
 """Home red, away blue (RGB)."""
 BALL_COLOUR = (250, 250, 250)
@@ -120,18 +125,15 @@ class RerunRecorder:
             raise ReplayError(f"cannot start the replay ({self.path or 'viewer'}): {exc}") from exc
         self._seconds = float(match.config.physics.cycle_seconds)
         self._sizes = tuple(match.state.sizes)
-        self._first_cycle = int(match.state.cycle)
         self._log_static(match)
         self._allocate(sum(self._sizes))
         self._trail_seed = np.repeat(match.state.ball[None, :].astype(np.float32), self.trail, axis=0)
-        self._possession = np.zeros(2, dtype=np.int64)
-        self._formations: list[Any] = [None, None]
-        self._meshes: dict[tuple[int, int], np.ndarray] = {}
-        self._drawers = [(team, obj.drawing) for team, obj in enumerate(match.teams)
-                         if self.drawings and self._sizes[team] and callable(getattr(obj, "drawing", None))]
-        self._outfield = {team: np.asarray(draw()["outfield"]) for team, draw in self._drawers}
+        self._possession = Possession(self._sizes[0])
+        self._drawers = [TeamDrawings(team, obj, match.team_names[team], self.flush_every)
+                         for team, obj in enumerate(match.teams)
+                         if self.drawings and self._sizes[team] and isinstance(obj, Drawable)]
         self._sent_events = 0
-        self._buffer(match)
+        self._buffer(match, played=False)
 
     def on_cycle(self, match: Match) -> None:
         self._buffer(match)
@@ -157,19 +159,12 @@ class RerunRecorder:
         self._ball = np.empty((cap, 2))
         self._score = np.empty((cap, 2))
         self._stamina = np.empty((cap, players))
-        self._toucher = np.empty(cap, dtype=np.int64)
-        """Row that last touched the ball in play on, -1 otherwise (possession)."""
-        self._signs = np.empty((2, cap), dtype=np.float32)
-        self._targets: list[np.ndarray | None] = [None, None]
-        """Per team: role targets as the team drew them (team frame), (cap, roles, 2)."""
-        self._assigned: list[np.ndarray | None] = [None, None]
-        """Per team: each outfield player's role target (team frame), (cap, k, 2)."""
-        self._drawn = np.zeros((2, cap), dtype=np.bool_)
-        """Whether the team had assigned roles (its assigned targets are drawn) in that cycle."""
-        self._mesh_changes: list[list[tuple[int, np.ndarray]]] = [[], []]
-        """(cycle, closed triangles (t, 4, 2), absolute frame) whenever a team's formation changed."""
+        self._share = np.empty(cap)
+        """Home's possession share after each cycle."""
 
-    def _buffer(self, match: Match) -> None:
+    def _buffer(self, match: Match, played: bool = True) -> None:
+        """Copy this cycle into the buffers (``played``: a cycle of the match, not the state it
+        started from, which counts for no possession)."""
         state = match.state
         i = self._count
         self._cycles[i] = state.cycle
@@ -177,53 +172,16 @@ class RerunRecorder:
         self._ball[i] = state.ball
         self._score[i] = state.score
         self._stamina[i] = state.stamina
-        self._toucher[i] = state.last_touch if state.play_mode == PlayMode.PLAY_ON else NO_PLAYER
-        for team, draw in self._drawers:
-            drawing = draw()
-            sign = state.home_attacks if team == 0 else -state.home_attacks
-            self._signs[team, i] = sign
-            targets, assigned = drawing["targets"], drawing.get("assigned_targets")
-            held, kept = self._targets[team], self._assigned[team]
-            if (held is not None and held.shape[1:] == targets.shape
-                    and (assigned is None or (kept is not None and kept.shape[1:] == assigned.shape))):
-                held[i] = targets  # the usual case: shapes as before
-                self._drawn[team, i] = assigned is not None
-                if assigned is not None:
-                    kept[i] = assigned
-            else:
-                self._keep_rows(team, targets, assigned, match)
-                i = self._count  # (a change of shape sends what was buffered first)
-            balls, triangles = drawing.get("formation_balls"), drawing.get("formation_triangles")
-            if balls is not None and triangles is not None:
-                key = (id(balls), sign)
-                if self._formations[team] != key:
-                    self._formations[team] = key
-                    self._mesh_changes[team].append((int(state.cycle), self._mesh(key, balls, triangles)))
+        if played:
+            self._possession.add(state.last_touch)
+        self._share[i] = self._possession.share(HOME)
+        for drawer in self._drawers:
+            drawing = drawer.current()
+            if not drawer.fits(drawing) and self._count:
+                self._flush(match, keep_current=True)  # a change of shape: send what was buffered first
+            sign = state.home_attacks if drawer.team == 0 else -state.home_attacks
+            drawer.write(self._count, drawing, sign, int(state.cycle))
         self._count += 1
-
-    def _keep_rows(self, team: int, targets: np.ndarray, assigned: np.ndarray | None, match: Match) -> None:
-        """Copy a team's drawn targets and assigned targets into this cycle's row; when their
-        shape differs from the buffers', the cycles buffered so far are sent first."""
-        targets = np.asarray(targets)
-        held = self._targets[team]
-        fits = held is not None and held.shape[1:] == targets.shape
-        if assigned is not None:
-            assigned = np.asarray(assigned)
-            kept = self._assigned[team]
-            fits = fits and (kept is None or kept.shape[1:] == assigned.shape)
-        if not fits:
-            if self._count:
-                self._flush(match, keep_current=True)
-            self._targets[team] = np.empty((self.flush_every,) + targets.shape)
-            if assigned is not None:
-                self._assigned[team] = np.empty((self.flush_every,) + assigned.shape)
-        i = self._count
-        self._targets[team][i] = targets
-        self._drawn[team, i] = assigned is not None
-        if assigned is not None:
-            if self._assigned[team] is None:
-                self._assigned[team] = np.empty((self.flush_every,) + assigned.shape)
-            self._assigned[team][i] = assigned
 
     # ------------------------------------------------------------------ sending
     def _times(self, cycles: np.ndarray) -> list[Any]:
@@ -251,9 +209,8 @@ class RerunRecorder:
             rr.send_columns(f"world/{key}/players", indexes=times,
                             columns=rr.Points2D.columns(positions=rows.reshape(-1, 2)).partition([size] * count),
                             recording=rec)
-        for team, _ in self._drawers:
-            self._send_drawings(team, times, count, rows_of_team=pos[:, :home] if team == 0 else pos[:, home:])
-            self._send_meshes(team)
+        for drawer in self._drawers:
+            drawer.send(rr, rec, times, count, pos[:, :home] if drawer.team == 0 else pos[:, home:], self._times)
         ball = self._ball[:count].astype(np.float32)
         rr.send_columns("world/ball", indexes=times, columns=rr.Points2D.columns(positions=ball), recording=rec)
         history = np.concatenate([self._trail_seed, ball])
@@ -270,46 +227,16 @@ class RerunRecorder:
                 mean = (stamina[:, :home] if team == 0 else stamina[:, home:]).mean(axis=1, dtype=np.float64)
                 rr.send_columns(f"stats/stamina/{key}", indexes=times, columns=rr.Scalars.columns(scalars=mean),
                                 recording=rec)
-        toucher = self._toucher[:count].copy()
-        home_has = np.cumsum((toucher >= 0) & (toucher < home)) + self._possession[0]
-        away_has = np.cumsum(toucher >= home) + self._possession[1]
-        self._possession[:] = home_has[-1], away_has[-1]
-        total = home_has + away_has
-        share = np.where(total > 0, home_has / np.maximum(total, 1), 0.5)
+        share = self._share[:count].copy()
         rr.send_columns("stats/possession/home", indexes=times, columns=rr.Scalars.columns(scalars=share),
                         recording=rec)
         self._send_events(match)
         self._count = 0
         if keep_current:  # the row being written moves to the front
-            rows = [self._cycles, self._pos, self._ball, self._score, self._stamina, self._toucher]
-            rows += [b for b in self._targets + self._assigned if b is not None]
-            for buffer in rows:
+            for buffer in (self._cycles, self._pos, self._ball, self._score, self._stamina, self._share):
                 buffer[0] = buffer[count]
-            self._signs[:, 0] = self._signs[:, count]
-            self._drawn[:, 0] = self._drawn[:, count]
-
-    def _send_drawings(self, team: int, times: list[Any], count: int, rows_of_team: np.ndarray) -> None:
-        """The role targets and the player-to-target arrows of the buffered cycles, mirrored
-        from the team's frame into the absolute frame."""
-        rr, key = self._rr, TEAM_KEYS[team]
-        signs = self._signs[team, :count, None, None]
-        targets = self._targets[team][:count].astype(np.float32) * signs
-        roles = targets.shape[1]
-        rr.send_columns(f"world/{key}/roles/targets", indexes=times,
-                        columns=rr.Points2D.columns(positions=targets.reshape(-1, 2)).partition([roles] * count),
-                        recording=self.recording)
-        drawn = self._drawn[team, :count]
-        lengths = np.zeros(count, dtype=np.int64)
-        if drawn.any():
-            ends = self._assigned[team][:count][drawn].astype(np.float32) * signs[drawn]
-            starts = rows_of_team[drawn][:, self._outfield[team][:ends.shape[1]]]
-            lengths[drawn] = ends.shape[1]
-            origins, vectors = starts.reshape(-1, 2), (ends - starts).reshape(-1, 2)
-        else:
-            origins = vectors = np.zeros((0, 2), np.float32)
-        rr.send_columns(f"world/{key}/roles/assignment", indexes=times,
-                        columns=rr.Arrows2D.columns(origins=origins, vectors=vectors).partition(lengths),
-                        recording=self.recording)
+            for drawer in self._drawers:
+                drawer.move_row(count, 0)
 
     def _send_events(self, match: Match) -> None:
         events = match.events.as_arrays()
@@ -364,63 +291,3 @@ class RerunRecorder:
         pixels = np.broadcast_to(np.array(GRASS_COLOUR, dtype=np.uint8), (2, 2, 3)).copy()
         rec.log("world/field/grass", rr.Transform3D(translation=[*-half, 0.0], scale=[*half, 1.0]), static=True)
         rec.log("world/field/grass", rr.Image(pixels, color_model="RGB", draw_order=GRASS_DRAW_ORDER), static=True)
-
-    def _mesh(self, key: tuple, balls: np.ndarray, triangles: np.ndarray) -> np.ndarray:
-        """A formation's Delaunay mesh as closed triangles (t, 4, 2) in the absolute frame
-        (``key[1]`` the team's attack direction), made once per formation and direction."""
-        mesh = self._meshes.get(key)
-        if mesh is None:
-            points = np.float32(key[1]) * np.asarray(balls, dtype=np.float32)
-            triangles = np.asarray(triangles)
-            mesh = self._meshes[key] = points[np.concatenate([triangles, triangles[:, :1]], axis=1)]
-        return mesh
-
-    def _send_meshes(self, team: int) -> None:
-        """The formation meshes that came into use in the buffered cycles, at those cycles."""
-        changes = self._mesh_changes[team]
-        if not changes:
-            return
-        rr = self._rr
-        cycles = np.array([cycle for cycle, _ in changes], dtype=np.int64)
-        strips = np.concatenate([mesh for _, mesh in changes])
-        rr.send_columns(f"world/{TEAM_KEYS[team]}/roles/triangulation", indexes=self._times(cycles),
-                        columns=rr.LineStrips2D.columns(strips=line_strips(strips)).partition(
-                            [len(m) for _, m in changes]),
-                        recording=self.recording)
-        changes.clear()
-
-
-def line_strips(strips: np.ndarray) -> Any:
-    """(k, length, 2) strips of equal length as rerun's line-strip Arrow array, built in one
-    go (rerun's own conversion walks the strips one by one in Python)."""
-    import pyarrow as pa
-    from rerun.components import LineStrip2DBatch
-    from rerun.encodings import Vec2DBatch
-
-    k, length = strips.shape[:2]
-    offsets = np.arange(0, (k + 1) * length, length, dtype=np.int32)
-    points = Vec2DBatch(np.ascontiguousarray(strips, dtype=np.float32).reshape(-1, 2)).as_arrow_array()
-    return pa.ListArray.from_arrays(offsets, points, type=LineStrip2DBatch._ARROW_DATATYPE)
-
-
-_EVENT_NAMES = {EventKind.KICK: "kick", EventKind.PASS: "pass", EventKind.SHOT: "shot", EventKind.GOAL: "GOAL",
-                EventKind.CATCH: "catch", EventKind.OUT: "ball out", EventKind.SET_PLAY: "set play",
-                EventKind.OFFSIDE: "offside", EventKind.DROP_BALL: "dropped ball", EventKind.HALF_TIME: "half time",
-                EventKind.TIME_OVER: "time over", EventKind.TOUCH: "touch", EventKind.BACK_PASS: "back-pass"}
-
-
-def describe_event(names: tuple[str, str], kind: int, team: int, player: int, x: float, y: float,
-                   detail: int) -> str:
-    """One event as a line of the event log, e.g. ``"GOAL mmdr #9 at (50.1, 3.2)"``."""
-    text = _EVENT_NAMES.get(EventKind(kind), f"event {kind}")
-    if kind == EventKind.SET_PLAY:
-        text = f"{PlayMode(detail).name.lower().replace('_', ' ')}"
-    if team in (0, 1):
-        text += f" {names[team]}"
-        if player >= 0:
-            text += f" #{player + 1}"
-        if kind == EventKind.PASS and detail >= 0:
-            text += f" to #{detail + 1}"
-    if np.isfinite(x) and np.isfinite(y):
-        text += f" at ({x:.1f}, {y:.1f})"
-    return text

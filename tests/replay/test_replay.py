@@ -158,15 +158,46 @@ def test_recording_into_a_callers_stream(tmp_path) -> None:
     assert replay.cycles.tolist() == list(range(61)) and replay.players["home"].shape == (61, 11, 2)
 
 
-def test_every_event_kind_has_a_line_in_the_log() -> None:
-    from soccer_sim.replay import describe_event
+class LastTouches:
+    """Every cycle's last toucher and play mode (the match's start state left out)."""
 
-    names = ("red", "blue")
-    for kind in EventKind:
-        text = describe_event(names, int(kind), 0, 3, 1.0, 2.0, 0)
-        assert not text.startswith("event ") and "red #4" in text
-    assert describe_event(names, int(EventKind.OFFSIDE), 1, 8, 10.0, 0.0, -1).startswith("offside blue #9")
-    assert describe_event(names, int(EventKind.GOAL), 0, 8, 52.6, 0.0, -1).startswith("GOAL red #9")
+    def on_start(self, match) -> None:
+        self.n = match.state.sizes[0]
+        self.touchers, self.modes = [], []
+
+    def on_cycle(self, match) -> None:
+        self.touchers.append(int(match.state.last_touch))
+        self.modes.append(int(match.state.play_mode))
+
+    def on_end(self, match) -> None:
+        pass
+
+
+def test_the_replays_possession_is_the_statistics_possession_at_every_cycle(tmp_path) -> None:
+    from soccer_sim.state import PlayMode
+
+    touches = LastTouches()
+    result = run_match("chaser", "chaser", seed=5, config=MatchConfig(max_cycles=400),
+                       recorders=[touches, RerunRecorder(tmp_path / "p.rrd", flush_every=150, drawings=False)])
+    replay = read_replay(tmp_path / "p.rrd")
+    touchers = np.asarray(touches.touchers)
+    home = np.cumsum((touchers >= 0) & (touchers < touches.n))
+    away = np.cumsum(touchers >= touches.n)
+    expected = np.where(home + away > 0, home / np.maximum(home + away, 1), 0.0)
+    assert replay.possession.shape == (401,) and replay.possession[0] == 0.0  # the start: nobody had the ball
+    np.testing.assert_array_equal(replay.possession[1:], expected)
+    assert replay.possession[-1] == result.statistics[0].possession
+    # counted in every play mode, not only in play on (the match had restarts with a last toucher)
+    assert any(t >= 0 and m != PlayMode.PLAY_ON for t, m in zip(touches.touchers, touches.modes))
+
+
+def test_the_replay_logs_events_with_the_shared_event_text() -> None:
+    import soccer_sim.replay
+    import soccer_sim.replay.recorder
+    from soccer_sim.analysis.events import describe_event
+
+    assert soccer_sim.replay.describe_event is describe_event  # still importable from the replay package
+    assert soccer_sim.replay.recorder.describe_event is describe_event
 
 
 def test_the_environments_human_mode_streams_through_the_recorder(tmp_path, monkeypatch) -> None:
