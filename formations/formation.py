@@ -24,6 +24,7 @@ from formations.interpolation import TriangleInterpolator
 from formations.roles import Role, check_roles
 from formations.triangulation import triangulate
 from formations.validation import check_samples
+from formations.writing import formation_to_dict, write_document
 
 
 class Formation:
@@ -140,9 +141,7 @@ class Formation:
     # ------------------------------------------------------------------ files
     def save(self, path: str | os.PathLike[str]) -> None:
         """Write this formation to *path* in the package's JSON layout."""
-        from formations.files import save
-
-        save(self, path)
+        write_document(formation_to_dict(self), path)
 
     def __reduce__(self):
         # Pickle the definition only (a few kB): the triangulation and lookup

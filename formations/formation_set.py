@@ -17,6 +17,7 @@ from numpy.typing import ArrayLike
 
 from formations.errors import FormationError
 from formations.formation import Formation
+from formations.writing import formation_set_to_dict, write_document
 
 
 class Situation(str, enum.Enum):
@@ -141,9 +142,7 @@ class FormationSet:
 
     def save(self, path: str | os.PathLike[str]) -> None:
         """Write this set to *path* in the package's JSON layout."""
-        from formations.files import save
-
-        save(self, path)
+        write_document(formation_set_to_dict(self), path)
 
     def __repr__(self) -> str:
         own = ", ".join(s.value for s in self.situations)
