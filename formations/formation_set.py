@@ -15,7 +15,7 @@ from collections.abc import Mapping
 import numpy as np
 from numpy.typing import ArrayLike
 
-from formations.errors import FormationError
+from formations.errors import FormationError, FormationInputError
 from formations.formation import Formation
 from formations.writing import formation_set_to_dict, write_document
 
@@ -48,7 +48,7 @@ SITUATION_ALIASES: dict[str, Situation] = {
 
 
 def parse_situation(name: str | Situation) -> Situation:
-    """The :class:`Situation` called *name* (a value or an alias); ValueError if none."""
+    """The :class:`Situation` called *name* (a value or an alias); FormationInputError (a ValueError) if none."""
     if isinstance(name, Situation):
         return name
     key = str(name).strip().lower().replace("-", "_")
@@ -58,7 +58,7 @@ def parse_situation(name: str | Situation) -> Situation:
         return Situation(key)
     except ValueError:
         valid = [s.value for s in Situation] + list(SITUATION_ALIASES)
-        raise ValueError(f"unknown situation {name!r}; expected one of {', '.join(valid)}") from None
+        raise FormationInputError(f"unknown situation {name!r}; expected one of {', '.join(valid)}") from None
 
 
 class FormationSet:

@@ -12,6 +12,8 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
+from agents.roles.errors import RoleError
+
 
 @dataclass
 class RoleContext:
@@ -112,9 +114,9 @@ class RoleAssigner(ABC):
         """A new match with ``n_roles`` roles (and as many players); ``rng`` is the team's
         seeded generator. Forgets everything remembered from a previous match."""
         if isinstance(n_roles, bool) or not isinstance(n_roles, (int, np.integer)) or n_roles < 1:
-            raise ValueError(f"role assigner {self.name!r}: n_roles must be a positive integer, got {n_roles!r}")
+            raise RoleError(f"role assigner {self.name!r}: n_roles must be a positive integer, got {n_roles!r}")
         if not isinstance(rng, np.random.Generator):
-            raise ValueError(f"role assigner {self.name!r}: rng must be a numpy Generator, got {type(rng).__name__}")
+            raise RoleError(f"role assigner {self.name!r}: rng must be a numpy Generator, got {type(rng).__name__}")
         self.n_roles = int(n_roles)
         self.rng = rng
 
@@ -147,18 +149,18 @@ class RoleAssigner(ABC):
 
     def check_inputs(self, players: np.ndarray, targets: np.ndarray) -> int:
         """The number of players k, after checking that :meth:`reset` was called and that
-        ``players`` and ``targets`` are (n_roles, 2) arrays; ValueError naming the problem."""
+        ``players`` and ``targets`` are (n_roles, 2) arrays; RoleError naming the problem."""
         k = self.n_roles
         if k is None:
-            raise ValueError(f"role assigner {self.name!r}: call reset(n_roles, rng) before assign")
+            raise RoleError(f"role assigner {self.name!r}: call reset(n_roles, rng) before assign")
         if players.shape != (k, 2) or targets.shape != (k, 2):
-            raise ValueError(f"role assigner {self.name!r} was reset for {k} roles: players and targets must "
+            raise RoleError(f"role assigner {self.name!r} was reset for {k} roles: players and targets must "
                              f"be ({k}, 2) arrays, got players {players.shape} and targets {targets.shape}")
         return k
 
     def check_order(self, role_order: np.ndarray, k: int) -> None:
-        """ValueError unless ``role_order`` is a permutation of ``range(k)`` (for assigners that
+        """RoleError unless ``role_order`` is a permutation of ``range(k)`` (for assigners that
         use it)."""
         if role_order.ndim != 1 or not is_permutation(role_order, k):
-            raise ValueError(f"role assigner {self.name!r}: role_order must be a permutation of range({k}), "
+            raise RoleError(f"role assigner {self.name!r}: role_order must be a permutation of range({k}), "
                              f"got {np.asarray(role_order).tolist()}")

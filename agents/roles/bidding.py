@@ -60,6 +60,7 @@ from numba import njit
 
 from agents.roles import potential_field as pf
 from agents.roles.base import RoleAssigner, RoleContext
+from agents.roles.errors import RoleError
 
 
 @dataclass(frozen=True)
@@ -87,23 +88,23 @@ class BiddingParams:
         for name in ("ball_cap", "angle_weight", "goal_side_weight", "switch_margin", "cover_slack"):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value < 0:
-                raise ValueError(f"BiddingParams.{name} must be a finite number >= 0, got {value!r}")
+                raise RoleError(f"BiddingParams.{name} must be a finite number >= 0, got {value!r}")
         if isinstance(self.min_hold, bool) or not isinstance(self.min_hold, (int, np.integer)) or self.min_hold < 0:
-            raise ValueError(f"BiddingParams.min_hold must be an integer >= 0 (cycles), got {self.min_hold!r}")
+            raise RoleError(f"BiddingParams.min_hold must be an integer >= 0 (cycles), got {self.min_hold!r}")
         if not isinstance(self.field, pf.FieldParams):
-            raise ValueError(f"BiddingParams.field must be a FieldParams, got {type(self.field).__name__}")
+            raise RoleError(f"BiddingParams.field must be a FieldParams, got {type(self.field).__name__}")
 
     @classmethod
     def with_overrides(cls, base: BiddingParams | None = None, **overrides: object) -> BiddingParams:
         """``base`` (default: the defaults) with keyword overrides; a key may name a field of
-        :class:`BiddingParams` or of its ``field`` (:class:`FieldParams`). ValueError listing
+        :class:`BiddingParams` or of its ``field`` (:class:`FieldParams`). RoleError listing
         the valid names for any other key."""
         base = base or cls()
         own = {f.name for f in fields(cls)}
         field_names = {f.name for f in fields(pf.FieldParams)}
         unknown = sorted(set(overrides) - own - field_names)
         if unknown:
-            raise ValueError(f"unknown bidding parameter(s) {', '.join(map(repr, unknown))}; valid: "
+            raise RoleError(f"unknown bidding parameter(s) {', '.join(map(repr, unknown))}; valid: "
                              f"{', '.join(sorted(own))} and the field's {', '.join(sorted(field_names))}")
         mine = {key: value for key, value in overrides.items() if key in own}
         theirs = {key: value for key, value in overrides.items() if key not in own}
@@ -162,10 +163,10 @@ class BiddingAssigner(RoleAssigner):
         if reach is None:
             return _NO_REACH
         if not (isinstance(reach, np.ndarray) and reach.shape == (k,) and reach.dtype == np.float64):
-            raise ValueError(f"role assigner 'bidding': context.ball_reach must be a float64 ({k},) array or None, "
+            raise RoleError(f"role assigner 'bidding': context.ball_reach must be a float64 ({k},) array or None, "
                              f"got {type(reach).__name__} {getattr(reach, 'shape', '')}")
         if np.isnan(reach).any():
-            raise ValueError("role assigner 'bidding': context.ball_reach holds NaN")
+            raise RoleError("role assigner 'bidding': context.ball_reach holds NaN")
         return reach
 
     def ball_player(self) -> int | None:

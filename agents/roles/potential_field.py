@@ -49,6 +49,8 @@ from dataclasses import astuple, dataclass, fields
 import numpy as np
 from numba import njit
 
+from agents.roles.errors import RoleError
+
 _EPS = 1e-9
 
 
@@ -111,10 +113,10 @@ class FieldParams:
         for f in fields(self):
             value = getattr(self, f.name)
             if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value < 0:
-                raise ValueError(f"FieldParams.{f.name} must be a finite number >= 0, got {value!r}")
+                raise RoleError(f"FieldParams.{f.name} must be a finite number >= 0, got {value!r}")
         for name in ("wall_reach", "area_reach", "teammate_reach", "corridor_width"):
             if getattr(self, name) <= 0:
-                raise ValueError(f"FieldParams.{name} must be > 0 (it divides the ramp), got {getattr(self, name)!r}")
+                raise RoleError(f"FieldParams.{name} must be > 0 (it divides the ramp), got {getattr(self, name)!r}")
 
     def as_array(self) -> np.ndarray:
         """The parameters as a float64 array in field order (what the compiled kernels read)."""

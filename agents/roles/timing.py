@@ -19,6 +19,7 @@ import numpy as np
 
 from agents.roles import assigner_names, make_assigner
 from agents.roles.base import RoleContext, offensive_order
+from agents.roles.errors import RoleError
 
 _HALF_LENGTH, _HALF_WIDTH = 52.5, 34.0
 
@@ -33,7 +34,7 @@ def time_assigners(k: int = 10, situations: int = 20, repeat: int = 5, number: i
     """Median microseconds per call, ``{assigner name: {"assign": ..., "steer": ...,
     "assign+steer": ...}}``, plus ``"offensive_order"`` (its ``"assign"`` entry only)."""
     if k < 1 or situations < 1 or repeat < 1 or number < 1:
-        raise ValueError(f"k, situations, repeat and number must be positive, got {k}, {situations}, {repeat}, {number}")
+        raise RoleError(f"k, situations, repeat and number must be positive, got {k}, {situations}, {repeat}, {number}")
     rng = np.random.default_rng(seed)
     cases = []
     for s in range(situations):

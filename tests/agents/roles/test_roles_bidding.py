@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from agents.roles import BiddingAssigner, BiddingParams, offensive_order
+from agents.roles import BiddingAssigner, BiddingParams, RoleError, offensive_order
 from tests.agents.roles.role_situations import HALF_LENGTH, HALF_WIDTH, context
 
 
@@ -205,5 +205,5 @@ def test_the_teams_ball_reach_replaces_the_straight_distance_in_the_ball_bid() -
     assigner.assign(players, targets, offensive_order(targets), None, reach)
     assert assigner.ball_player() == 1
     for bad, message in ((np.array([1.0, 2.0]), r"float64 \(3,\) array"), (np.array([1.0, np.nan, 2.0]), "NaN")):
-        with pytest.raises(ValueError, match=message):
+        with pytest.raises(RoleError, match=message):
             assigner.assign(players, targets, offensive_order(targets), None, replace(ctx, ball_reach=bad))

@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from agents.roles import FieldParams
+from agents.roles import FieldParams, RoleError
 from agents.roles import potential_field as pf
 from tests.agents.roles.role_situations import HALF_LENGTH, HALF_WIDTH, OPP_GOAL, OWN_GOAL, random_field_points
 
@@ -182,8 +182,8 @@ def test_descend_steps_downhill_no_further_than_max_step_and_stays_in_the_field(
 
 
 def test_field_parameters_are_checked() -> None:
-    with pytest.raises(ValueError, match="FieldParams.anchor_weight must be a finite number >= 0"):
+    with pytest.raises(RoleError, match="FieldParams.anchor_weight must be a finite number >= 0"):
         FieldParams(anchor_weight=-1.0)
-    with pytest.raises(ValueError, match="FieldParams.corridor_width must be > 0"):
+    with pytest.raises(RoleError, match="FieldParams.corridor_width must be > 0"):
         FieldParams(corridor_width=0.0)
     assert FieldParams().as_array().shape == (len(FieldParams.__dataclass_fields__),)
