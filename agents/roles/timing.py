@@ -20,8 +20,9 @@ import numpy as np
 from agents.roles import assigner_names, make_assigner
 from agents.roles.base import RoleContext, offensive_order
 from agents.roles.errors import RoleError
+from formations.field import STANDARD_FIELD
 
-_HALF_LENGTH, _HALF_WIDTH = 52.5, 34.0
+_HALF_LENGTH, _HALF_WIDTH = STANDARD_FIELD.half_length, STANDARD_FIELD.half_width
 
 
 def _points(rng: np.random.Generator, k: int) -> np.ndarray:
