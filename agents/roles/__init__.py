@@ -65,7 +65,7 @@ from agents.roles.base import RoleAssigner, RoleContext, offensive_order
 from agents.roles.bidding import BiddingAssigner, BiddingParams
 from agents.roles.errors import RoleError
 from agents.roles.matching import GreedyOffenseAssigner, MethodAssigner, RandomAssigner, StaticAssigner
-from agents.roles.potential_field import FieldParams
+from agents.roles.field_params import FieldParams
 
 
 def _method(method: str) -> Callable[[], RoleAssigner]:
