@@ -19,7 +19,7 @@ pictures), never the simulator. It reads helios-base / agent2d formation files
 """
 
 from formations.builtin import builtin_names, load_builtin
-from formations.errors import FormationError
+from formations.errors import FormationError, FormationInputError, UnknownRoleError
 from formations.field import STANDARD_FIELD, FieldDimensions
 from formations.files import load, load_helios, load_set, read_any, save
 from formations.formation import Formation
@@ -32,12 +32,14 @@ __all__ = [
     "DirectoryImport",
     "Formation",
     "FormationError",
+    "FormationInputError",
     "FormationSet",
     "FieldDimensions",
     "ROLE_KINDS",
     "Role",
     "STANDARD_FIELD",
     "Situation",
+    "UnknownRoleError",
     "asymmetries",
     "builtin_names",
     "import_helios_directory",

@@ -9,6 +9,7 @@ from __future__ import annotations
 from functools import lru_cache
 from importlib import resources
 
+from formations.errors import FormationInputError
 from formations.files import load_set
 from formations.formation_set import FormationSet
 
@@ -23,10 +24,10 @@ def builtin_names() -> list[str]:
 
 
 def builtin_path(name: str):
-    """Location of the JSON file of built-in set *name* (ValueError if unknown)."""
+    """Location of the JSON file of built-in set *name* (FormationInputError, a ValueError, if unknown)."""
     names = builtin_names()
     if name not in names:
-        raise ValueError(f"no built-in formation set {name!r}; available: {', '.join(names)}")
+        raise FormationInputError(f"no built-in formation set {name!r}; available: {', '.join(names)}")
     return resources.files(_DATA_PACKAGE).joinpath(_DATA_DIR, f"{name}.json")
 
 

@@ -21,6 +21,8 @@ layout (:mod:`formations.helios`) or agent2d's text layouts
 (:mod:`formations.helios_text`). Every problem is reported as a
 :class:`~formations.errors.FormationError` naming the file and the sample,
 role or formation at fault; a missing or unreadable file raises ``OSError``.
+The writer (and the layout's names and version) is :mod:`formations.writing`;
+:func:`dumps` and :func:`save` here take either a formation or a set.
 """
 
 from __future__ import annotations
@@ -36,15 +38,18 @@ import numpy as np
 from formations.errors import FormationError
 from formations.formation import Formation
 from formations.formation_set import FormationSet
+from formations.helios import formation_from_helios, is_helios_layout
+from formations.helios_text import formation_from_helios_text
 from formations.roles import Role, check_roles
 from formations.validation import check_role_count
-
-FORMAT_FORMATION = "soccer-sim-formation"
-"""Value of ``format`` in a single-formation file."""
-FORMAT_SET = "soccer-sim-formation-set"
-"""Value of ``format`` in a formation-set file."""
-FORMAT_VERSION = 1
-"""Layout version written by :func:`save` and the only one :func:`load` reads."""
+from formations.writing import (
+    FORMAT_FORMATION,
+    FORMAT_SET,
+    FORMAT_VERSION,
+    document_text,
+    formation_set_to_dict,
+    formation_to_dict,
+)
 
 _FORMATION_KEYS = {"format", "version", "name", "description", "roles", "samples"}
 _SET_KEYS = {"format", "version", "name", "description", "formations"}
@@ -91,9 +96,6 @@ def read_any(path: str | os.PathLike[str]) -> Formation | FormationSet:
     (``Formation DelaunayTriangulation 2``, ``Formation Static``, ...; see
     :mod:`formations.helios_text`).
     """
-    from formations.helios import formation_from_helios, is_helios_layout
-    from formations.helios_text import formation_from_helios_text
-
     source = str(path)
     text = read_text(path)
     if not looks_like_json(text):
@@ -118,9 +120,6 @@ def read_any(path: str | os.PathLike[str]) -> Formation | FormationSet:
 def load_helios(path: str | os.PathLike[str]) -> Formation:
     """Read a helios-base / agent2d formation from *path*: their JSON layout or agent2d's
     text layouts; FormationError for anything else (our own layouts included)."""
-    from formations.helios import formation_from_helios, is_helios_layout
-    from formations.helios_text import formation_from_helios_text
-
     source = str(path)
     text = read_text(path)
     if not looks_like_json(text):
@@ -241,39 +240,6 @@ def _number(value: Any, source: str, where: str) -> float:
 
 
 # ----------------------------------------------------------------- writing
-def formation_to_dict(formation: Formation, *, header: bool = True) -> dict[str, Any]:
-    """The JSON object of *formation* in our layout (``header`` adds format/version)."""
-    document: dict[str, Any] = {}
-    if header:
-        document.update(format=FORMAT_FORMATION, version=FORMAT_VERSION)
-    document["name"] = formation.name
-    document["description"] = formation.description
-    document["roles"] = [_role_to_dict(role) for role in formation.roles]
-    numbers = [str(role.number) for role in formation.roles]
-    document["samples"] = [
-        {
-            "ball": [float(ball[0]), float(ball[1])],
-            "positions": {n: [float(p[0]), float(p[1])] for n, p in zip(numbers, positions)},
-        }
-        for ball, positions in zip(formation.balls, formation.sample_positions)
-    ]
-    return document
-
-
-def formation_set_to_dict(formation_set: FormationSet) -> dict[str, Any]:
-    """The JSON object of *formation_set* in our set layout."""
-    return {
-        "format": FORMAT_SET,
-        "version": FORMAT_VERSION,
-        "name": formation_set.name,
-        "description": formation_set.description,
-        "formations": {
-            situation.value: formation_to_dict(formation, header=False)
-            for situation, formation in formation_set.own_formations().items()
-        },
-    }
-
-
 def dumps(item: Formation | FormationSet) -> str:
     """JSON text of a formation or set: readable, one sample per line, floats round-trip exactly."""
     if isinstance(item, FormationSet):
@@ -282,33 +248,12 @@ def dumps(item: Formation | FormationSet) -> str:
         document = formation_to_dict(item)
     else:
         raise TypeError(f"expected a Formation or FormationSet, got {type(item).__name__}")
-    return _format(document, 0) + "\n"
+    return document_text(document)
 
 
 def save(item: Formation | FormationSet, path: str | os.PathLike[str]) -> None:
     """Write a formation or a formation set to *path* in our JSON layout."""
     Path(path).write_text(dumps(item), encoding="utf-8")
-
-
-def _role_to_dict(role: Role) -> dict[str, Any]:
-    entry: dict[str, Any] = {"number": role.number, "name": role.name, "kind": role.kind}
-    if role.partner is not None:
-        entry["partner"] = role.partner
-    return entry
-
-
-def _format(value: Any, depth: int) -> str:
-    """Indent containers down to samples and roles, which stay on one line each."""
-    pad = "  " * (depth + 1)
-    if isinstance(value, dict) and not ({"ball", "positions"} <= value.keys() or "number" in value):
-        if not value:
-            return "{}"
-        items = [f"{pad}{json.dumps(k)}: {_format(v, depth + 1)}" for k, v in value.items()]
-        return "{\n" + ",\n".join(items) + "\n" + "  " * depth + "}"
-    if isinstance(value, list) and value and isinstance(value[0], dict):
-        items = [pad + _format(v, depth + 1) for v in value]
-        return "[\n" + ",\n".join(items) + "\n" + "  " * depth + "]"
-    return json.dumps(value, allow_nan=False)
 
 
 # ----------------------------------------------------------------- helpers

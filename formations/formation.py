@@ -19,11 +19,12 @@ from collections.abc import Sequence
 import numpy as np
 from numpy.typing import ArrayLike
 
-from formations.errors import FormationError
+from formations.errors import FormationError, FormationInputError, UnknownRoleError
 from formations.interpolation import TriangleInterpolator
 from formations.roles import Role, check_roles
 from formations.triangulation import triangulate
 from formations.validation import check_samples
+from formations.writing import formation_to_dict, write_document
 
 
 class Formation:
@@ -111,17 +112,17 @@ class Formation:
         try:
             return self._index_of[number]
         except KeyError:
-            raise KeyError(f"{self.source} has no role {number!r} (roles: {list(self._index_of)})") from None
+            raise UnknownRoleError(f"{self.source} has no role {number!r} (roles: {list(self._index_of)})") from None
 
     # ---------------------------------------------------------------- queries
     def positions(self, ball_xy: ArrayLike) -> np.ndarray:
         """(roles, 2) target positions for one ball position (x, y) in metres.
 
         Cheap enough to call every cycle: a few microseconds. Raises
-        ValueError for anything but two finite numbers.
+        FormationInputError (a ValueError) for anything but two finite numbers.
         """
         if len(ball_xy) != 2:
-            raise ValueError(f"a ball position is two numbers (x, y), got {len(ball_xy)}: {ball_xy!r}")
+            raise FormationInputError(f"a ball position is two numbers (x, y), got {len(ball_xy)}: {ball_xy!r}")
         return self._interpolator.value(float(ball_xy[0]), float(ball_xy[1])).reshape(self._n_roles, 2)
 
     def positions_many(self, balls: ArrayLike) -> np.ndarray:
@@ -140,9 +141,7 @@ class Formation:
     # ------------------------------------------------------------------ files
     def save(self, path: str | os.PathLike[str]) -> None:
         """Write this formation to *path* in the package's JSON layout."""
-        from formations.files import save
-
-        save(self, path)
+        write_document(formation_to_dict(self), path)
 
     def __reduce__(self):
         # Pickle the definition only (a few kB): the triangulation and lookup

@@ -15,8 +15,9 @@ from collections.abc import Mapping
 import numpy as np
 from numpy.typing import ArrayLike
 
-from formations.errors import FormationError
+from formations.errors import FormationError, FormationInputError
 from formations.formation import Formation
+from formations.writing import formation_set_to_dict, write_document
 
 
 class Situation(str, enum.Enum):
@@ -47,7 +48,7 @@ SITUATION_ALIASES: dict[str, Situation] = {
 
 
 def parse_situation(name: str | Situation) -> Situation:
-    """The :class:`Situation` called *name* (a value or an alias); ValueError if none."""
+    """The :class:`Situation` called *name* (a value or an alias); FormationInputError (a ValueError) if none."""
     if isinstance(name, Situation):
         return name
     key = str(name).strip().lower().replace("-", "_")
@@ -57,7 +58,7 @@ def parse_situation(name: str | Situation) -> Situation:
         return Situation(key)
     except ValueError:
         valid = [s.value for s in Situation] + list(SITUATION_ALIASES)
-        raise ValueError(f"unknown situation {name!r}; expected one of {', '.join(valid)}") from None
+        raise FormationInputError(f"unknown situation {name!r}; expected one of {', '.join(valid)}") from None
 
 
 class FormationSet:
@@ -141,9 +142,7 @@ class FormationSet:
 
     def save(self, path: str | os.PathLike[str]) -> None:
         """Write this set to *path* in the package's JSON layout."""
-        from formations.files import save
-
-        save(self, path)
+        write_document(formation_set_to_dict(self), path)
 
     def __repr__(self) -> str:
         own = ", ".join(s.value for s in self.situations)

@@ -24,7 +24,7 @@ and a static formation (``before-kick-off.conf``) as::
     RoleName,Goalie,...
     Position,-49,0,-25,-5,...              x y of players 1..11
 
-Rows are parsed into the same :class:`~formations.helios_text.ParsedLayout` as
+Rows are parsed into the same :class:`~formations.helios_lines.ParsedLayout` as
 the text layouts, so conversion and error locations are shared; every
 problem names the file and the line.
 """
@@ -33,8 +33,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from formations.helios_roles import HELIOS_KINDS, ROLE_COUNT
-from formations.helios_text import (
+from formations.helios_lines import (
+    ALL_ROLES,
     DT_METHOD,
     STATIC_METHOD,
     Line,
@@ -43,11 +43,10 @@ from formations.helios_text import (
     sample_field,
     symmetry_number,
 )
+from formations.helios_roles import HELIOS_KINDS, ROLE_COUNT
 
 UNKNOWN_TYPE = "Unknown"
 """Role type librcsc writes when it has none; the kind then comes from the role's name."""
-
-_ALL_ROLES = range(1, ROLE_COUNT + 1)
 
 
 def parse_csv(reader: LineReader, header: Line) -> tuple[ParsedLayout, str]:
@@ -61,10 +60,10 @@ def parse_csv(reader: LineReader, header: Line) -> tuple[ParsedLayout, str]:
     parsed = ParsedLayout()
     numbers, cells = _next_row(reader, "RoleNumber", ROLE_COUNT)
     found = [reader.integer(numbers, token, "role number") for token in cells]
-    if found != list(_ALL_ROLES):
+    if found != list(ALL_ROLES):
         raise reader.error(numbers, f"RoleNumber must list 1..{ROLE_COUNT} in order, found {found}")
     names, cells = _next_row(reader, "RoleName", ROLE_COUNT)
-    for number, name in zip(_ALL_ROLES, cells):
+    for number, name in zip(ALL_ROLES, cells):
         if not name:
             raise reader.error(names, f"role {number} has an empty name")
         parsed.names[number] = name
@@ -103,14 +102,14 @@ def _values(reader: LineReader, line: Line, label: str, count: int) -> list[str]
 def _parse_static_row(reader: LineReader, parsed: ParsedLayout) -> None:
     line, cells = _next_row(reader, "Position", 2 * ROLE_COUNT)
     values = [reader.number(line, token, f"{'xy'[i % 2]} of player {i // 2 + 1}") for i, token in enumerate(cells)]
-    for number in _ALL_ROLES:
+    for number in ALL_ROLES:
         parsed.role_lines[number] = line.number  # position errors point at this row
     parsed.hold_static(np.array(values).reshape(ROLE_COUNT, 2), line.number)
 
 
 def _parse_dt_rows(reader: LineReader, parsed: ParsedLayout) -> None:
     types, cells = _next_row(reader, "RoleType", ROLE_COUNT)
-    for number, role_type in zip(_ALL_ROLES, cells):
+    for number, role_type in zip(ALL_ROLES, cells):
         if role_type in HELIOS_KINDS:
             parsed.types[number] = HELIOS_KINDS[role_type]
         elif role_type != UNKNOWN_TYPE:
@@ -118,7 +117,7 @@ def _parse_dt_rows(reader: LineReader, parsed: ParsedLayout) -> None:
                 types, f"role type {role_type!r} of role {number} is not one of {', '.join(HELIOS_KINDS)} or {UNKNOWN_TYPE}"
             )
     pairs, cells = _next_row(reader, "SymmetryNumber", ROLE_COUNT)
-    for number, token in zip(_ALL_ROLES, cells):
+    for number, token in zip(ALL_ROLES, cells):
         parsed.pairs[number] = symmetry_number(reader, pairs, token, number)
         parsed.role_lines[number] = pairs.number  # pair errors point at this row
     _next_row(reader, "Marker", ROLE_COUNT)

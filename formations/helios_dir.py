@@ -37,6 +37,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from formations.errors import FormationError
+from formations.files import load_helios
 from formations.formation import Formation
 from formations.formation_set import FormationSet, Situation, parse_situation
 
@@ -93,8 +94,6 @@ def import_helios_directory(
     files claim one situation, or a placed file is malformed (the error names
     the file and line); ``OSError`` if the directory cannot be read.
     """
-    from formations.files import load_helios
-
     root = Path(directory)
     files = sorted(p for p in root.iterdir() if p.is_file() and p.suffix in FORMATION_SUFFIXES)
     table, displaced = _situation_table(mapping, str(root))

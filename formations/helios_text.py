@@ -37,6 +37,9 @@ Other layouts read here:
 * helios-base's comma-separated layout (first line ``Method,...``), read by
   :mod:`formations.helios_csv`.
 
+What the layouts share (reading lines, the parsed layout, the conversion to a
+formation) is :mod:`formations.helios_lines`.
+
 A ``Begin Constraints`` block after the samples (edges helios's editor forces
 into its triangulation) is skipped: our triangulation is plain Delaunay.
 
@@ -50,37 +53,43 @@ exactly as for helios's JSON files. Every problem is a
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
 
 import numpy as np
 
-from formations.errors import FormationError
 from formations.formation import Formation
-from formations.helios_roles import (
-    HELIOS_KINDS,
-    ROLE_COUNT,
-    partners_from_pairs,
-    role_kind,
-    server_to_team_frame,
-    static_samples,
+from formations.helios_csv import parse_csv
+from formations.helios_lines import (
+    ALL_ROLES,
+    DT_METHOD,
+    STATIC_METHOD,
+    Line,
+    LineReader,
+    ParsedLayout,
+    build_formation,
+    content_lines,
+    is_integer,
+    is_tag,
+    sample_field,
+    symmetry_number,
 )
-from formations.roles import Role
+from formations.helios_roles import HELIOS_KINDS, ROLE_COUNT
 
-DT_METHOD = "DelaunayTriangulation"
-STATIC_METHOD = "Static"
 DT_VERSIONS = (1, 2, 3)
 """Versions of the ``Formation DelaunayTriangulation`` layout this module reads."""
 HEADER_EXAMPLES = "'Formation DelaunayTriangulation 2', 'Formation Static' or 'Method,DelaunayTriangulation'"
 
-_NUMBER = re.compile(r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?")
-_INTEGER = re.compile(r"[+-]?\d+")
 _SAMPLE_HEADER = re.compile(r"-+\s*(\S+)\s*-+")
-_ALL_ROLES = range(1, ROLE_COUNT + 1)
+
+__all__ = [  # the shared pieces stay importable from here
+    "DT_METHOD", "DT_VERSIONS", "HEADER_EXAMPLES", "STATIC_METHOD", "Line", "LineReader", "ParsedLayout",
+    "build_formation", "formation_from_helios_text", "is_csv_header", "is_helios_text", "sample_field",
+    "symmetry_number",
+]
 
 
 def is_helios_text(text: str) -> bool:
     """True if the first meaningful line of *text* is an agent2d ``Formation ...`` or ``Method,...`` header."""
-    for line in _content_lines(text):
+    for line in content_lines(text):
         return line.tokens[0] == "Formation" or is_csv_header(line)
     return False
 
@@ -95,8 +104,6 @@ def formation_from_helios_text(text: str, source: str, *, name: str = "") -> For
     reader = LineReader(text, source)
     header = reader.next("the header line (" + HEADER_EXAMPLES + ")")
     if is_csv_header(header):
-        from formations.helios_csv import parse_csv
-
         parsed, layout = parse_csv(reader, header)
     else:
         method, version = _parse_header(reader, header)
@@ -109,98 +116,7 @@ def formation_from_helios_text(text: str, source: str, *, name: str = "") -> For
     return build_formation(parsed, source, name, f"imported from agent2d formation {source} ({layout})")
 
 
-# ----------------------------------------------------------------- lines
-@dataclass(frozen=True)
-class Line:
-    """A meaningful line of a formation file (comments and blank lines are never one)."""
-
-    number: int
-    """1-based line number in the file."""
-    text: str
-    tokens: list[str]
-
-
-def _content_lines(text: str) -> list[Line]:
-    lines = []
-    for number, raw in enumerate(text.splitlines(), start=1):
-        stripped = raw.strip()
-        if not stripped or stripped.startswith("#") or stripped.startswith("//"):
-            continue
-        lines.append(Line(number, stripped, stripped.split()))
-    return lines
-
-
-class LineReader:
-    """The meaningful lines of a file, read one at a time; errors name the line."""
-
-    def __init__(self, text: str, source: str) -> None:
-        self.source = source
-        self.lines = _content_lines(text)
-        self.last_number = max(len(text.splitlines()), 1)
-        self.index = 0
-
-    def peek(self) -> Line | None:
-        return self.lines[self.index] if self.index < len(self.lines) else None
-
-    def next(self, expected: str) -> Line:
-        line = self.peek()
-        if line is None:
-            raise FormationError(self.source, f"the file ends where {expected} was expected", f"line {self.last_number}")
-        self.index += 1
-        return line
-
-    def error(self, line: Line | None, problem: str) -> FormationError:
-        number = line.number if line is not None else self.last_number
-        return FormationError(self.source, problem, f"line {number}")
-
-    def number(self, line: Line, token: str, what: str) -> float:
-        if not _NUMBER.fullmatch(token):
-            raise self.error(line, f"{token!r} is not a number ({what})")
-        return float(token)
-
-    def integer(self, line: Line, token: str, what: str) -> int:
-        if not _INTEGER.fullmatch(token):
-            raise self.error(line, f"{token!r} is not an integer ({what})")
-        return int(token)
-
-    def role_number(self, line: Line, token: str, what: str) -> int:
-        number = self.integer(line, token, what)
-        if number not in _ALL_ROLES:
-            raise self.error(line, f"{what} {number} is out of range (agent2d numbers players 1..{ROLE_COUNT})")
-        return number
-
-
-def _is_tag(line: Line | None, *words: str) -> bool:
-    return line is not None and line.tokens[: len(words)] == list(words)
-
-
 # ----------------------------------------------------------------- parsing
-@dataclass
-class ParsedLayout:
-    """What a text layout says, before conversion to our frame and roles.
-
-    *types* holds the kinds a type column gives; roles without one get theirs
-    from their names or depth. Coordinates are still the server's.
-    """
-
-    names: dict[int, str] = field(default_factory=dict)
-    pairs: dict[int, int] = field(default_factory=dict)
-    types: dict[int, str] = field(default_factory=dict)
-    role_lines: dict[int, int] = field(default_factory=dict)
-    balls: list[tuple[float, float]] = field(default_factory=list)
-    positions: list[np.ndarray] = field(default_factory=list)
-    sample_lines: list[int] = field(default_factory=list)
-    static: bool = False
-
-    def hold_static(self, positions: np.ndarray, line: int) -> None:
-        """Make this a static formation of *positions* (11, 2); *line* is where they are written."""
-        self.static = True
-        for ball, sample in zip(*static_samples(positions)):
-            self.balls.append((float(ball[0]), float(ball[1])))
-            self.positions.append(sample)
-            self.sample_lines.append(line)
-
-
 def _parse_header(reader: LineReader, line: Line) -> tuple[str, int]:
     tokens = line.tokens
     if tokens[0] != "Formation":
@@ -237,14 +153,14 @@ def _parse_dt(reader: LineReader, version: int) -> ParsedLayout:
 
 def _parse_roles_block(reader: LineReader, parsed: ParsedLayout, version: int) -> None:
     begin = reader.next("'Begin Roles'")
-    if not _is_tag(begin, "Begin", "Roles") or len(begin.tokens) != 2:
+    if not is_tag(begin, "Begin", "Roles") or len(begin.tokens) != 2:
         raise reader.error(begin, f"expected 'Begin Roles', found {begin.text!r}")
     columns = "number name symmetry" if version == 2 else "number type name symmetry marker setplay_marker"
     while True:
         line = reader.next("a role line or 'End Roles'")
-        if _is_tag(line, "End", "Roles"):
+        if is_tag(line, "End", "Roles"):
             break
-        if _is_tag(line, "Begin", "Samples"):
+        if is_tag(line, "Begin", "Samples"):
             raise reader.error(line, f"'End Roles' is missing before 'Begin Samples' (roles begin on line {begin.number})")
         if len(line.tokens) != len(columns.split()):
             raise reader.error(line, f"a role line is '{columns}', found {line.text!r}")
@@ -262,23 +178,14 @@ def _parse_roles_block(reader: LineReader, parsed: ParsedLayout, version: int) -
         parsed.pairs[number] = symmetry_number(reader, line, pair_token, number)
         parsed.names[number] = role_name
         parsed.role_lines[number] = line.number
-    missing = sorted(set(_ALL_ROLES) - set(parsed.names))
+    missing = sorted(set(ALL_ROLES) - set(parsed.names))
     if missing:
         raise reader.error(line, f"roles {missing} are missing (an agent2d formation declares roles 1..{ROLE_COUNT})")
-
-
-def symmetry_number(reader: LineReader, line: Line, token: str, number: int) -> int:
-    """Role *number*'s symmetry number *token*: -1, 0 or a role number."""
-    pair = reader.integer(line, token, f"symmetry number of role {number}")
-    if not -1 <= pair <= ROLE_COUNT:
-        raise reader.error(line, f"symmetry number {pair} of role {number} must be -1, 0 or a role number 1..{ROLE_COUNT}")
-    return pair
-
 
 def _samples_header(reader: LineReader) -> tuple[Line, int]:
     """Read 'Begin Samples 2 N': the line and N."""
     begin = reader.next("'Begin Samples 2 N'")
-    if not _is_tag(begin, "Begin", "Samples") or len(begin.tokens) != 4:
+    if not is_tag(begin, "Begin", "Samples") or len(begin.tokens) != 4:
         raise reader.error(begin, f"expected 'Begin Samples 2 N' (N the number of samples), found {begin.text!r}")
     sample_version = reader.integer(begin, begin.tokens[2], "sample layout version")
     if sample_version != 2:
@@ -293,13 +200,13 @@ def _parse_samples_block(reader: LineReader, parsed: ParsedLayout) -> None:
     begin, count = _samples_header(reader)
     for k in range(count):
         line = reader.next(f"'----- {k} -----' (sample {k} of the {count} announced on line {begin.number})")
-        if _is_tag(line, "End", "Samples"):
+        if is_tag(line, "End", "Samples"):
             raise reader.error(line, f"only {k} samples precede 'End Samples', but line {begin.number} announces {count}")
         _parse_sample(reader, parsed, line, k)
     after = reader.peek()
     if after is not None and _SAMPLE_HEADER.fullmatch(after.text):
         raise reader.error(after, f"more samples than the {count} announced on line {begin.number}")
-    if _is_tag(after, "End", "Samples"):
+    if is_tag(after, "End", "Samples"):
         reader.next("'End Samples'")
 
 
@@ -317,7 +224,7 @@ def _parse_sample(reader: LineReader, parsed: ParsedLayout, header: Line, k: int
     by = reader.number(ball, ball.tokens[2], f"ball y of sample {k}")
     positions = np.full((ROLE_COUNT, 2), np.nan)
     seen: dict[int, int] = {}
-    while (line := reader.peek()) is not None and _INTEGER.fullmatch(line.tokens[0]):
+    while (line := reader.peek()) is not None and is_integer(line.tokens[0]):
         reader.next("a player line")
         if len(line.tokens) != 3:
             raise reader.error(line, f"a player line is 'number x y', found {line.text!r} (sample {k})")
@@ -329,7 +236,7 @@ def _parse_sample(reader: LineReader, parsed: ParsedLayout, header: Line, k: int
             reader.number(line, line.tokens[1], f"x of player {number} in sample {k}"),
             reader.number(line, line.tokens[2], f"y of player {number} in sample {k}"),
         )
-    missing = sorted(set(_ALL_ROLES) - set(seen))
+    missing = sorted(set(ALL_ROLES) - set(seen))
     if missing:
         found = f"found {line.text!r}" if line is not None else "the file ends"
         raise reader.error(
@@ -343,9 +250,9 @@ def _parse_sample(reader: LineReader, parsed: ParsedLayout, header: Line, k: int
 def _parse_trailer(reader: LineReader) -> None:
     """Skip an optional constraints block and the closing 'End'; nothing may follow."""
     line = reader.peek()
-    if _is_tag(line, "Begin", "Constraints"):
+    if is_tag(line, "Begin", "Constraints"):
         reader.next("'Begin Constraints'")
-        while not _is_tag(reader.next(f"'End Constraints' (constraints begin on line {line.number})"), "End", "Constraints"):
+        while not is_tag(reader.next(f"'End Constraints' (constraints begin on line {line.number})"), "End", "Constraints"):
             pass
         line = reader.peek()
     if line is not None and line.tokens == ["End"]:
@@ -360,7 +267,7 @@ def _parse_dt_v1(reader: LineReader) -> ParsedLayout:
     roles = reader.next("the role line (11 'name symmetry' pairs)")
     if len(roles.tokens) != 2 * ROLE_COUNT:
         raise reader.error(roles, f"the role line holds 11 'name symmetry' pairs (22 fields), found {len(roles.tokens)}")
-    for number in _ALL_ROLES:
+    for number in ALL_ROLES:
         parsed.names[number] = roles.tokens[2 * number - 2]
         parsed.pairs[number] = symmetry_number(reader, roles, roles.tokens[2 * number - 1], number)
         parsed.role_lines[number] = roles.number
@@ -381,17 +288,10 @@ def _parse_dt_v1(reader: LineReader) -> ParsedLayout:
         _parse_trailer(reader)
     return parsed
 
-
-def sample_field(i: int, k: int) -> str:
-    """Name of value *i* of sample *k* in a row 'ball x y, then x y of players 1..11'."""
-    axis = "xy"[i % 2]
-    return f"ball {axis} of sample {k}" if i < 2 else f"{axis} of player {i // 2} in sample {k}"
-
-
 def _parse_static(reader: LineReader) -> ParsedLayout:
     parsed = ParsedLayout()
     positions = np.full((ROLE_COUNT, 2), np.nan)
-    while (line := reader.peek()) is not None and line.tokens != ["End"] and not _is_tag(line, "Begin", "Samples"):
+    while (line := reader.peek()) is not None and line.tokens != ["End"] and not is_tag(line, "Begin", "Samples"):
         reader.next("a player line")
         if len(line.tokens) != 4:
             raise reader.error(line, f"a static formation line is 'number name x y', found {line.text!r}")
@@ -405,10 +305,10 @@ def _parse_static(reader: LineReader) -> ParsedLayout:
             reader.number(line, line.tokens[2], f"x of player {number}"),
             reader.number(line, line.tokens[3], f"y of player {number}"),
         )
-    missing = sorted(set(_ALL_ROLES) - set(parsed.names))
+    missing = sorted(set(ALL_ROLES) - set(parsed.names))
     if missing:
         raise reader.error(line, f"players {missing} have no position (a static formation lists players 1..{ROLE_COUNT})")
-    if _is_tag(line, "Begin", "Samples"):
+    if is_tag(line, "Begin", "Samples"):
         _skip_empty_samples_block(reader)
     _parse_trailer(reader)
     parsed.hold_static(positions, min(parsed.role_lines.values()))
@@ -423,38 +323,5 @@ def _skip_empty_samples_block(reader: LineReader) -> None:
             begin, f"a static formation holds no samples, but this block announces {count} (expected 'Begin Samples 2 0')"
         )
     end = reader.next(f"'End Samples' (the empty samples block begins on line {begin.number})")
-    if not _is_tag(end, "End", "Samples"):
+    if not is_tag(end, "End", "Samples"):
         raise reader.error(end, f"expected 'End Samples' after the empty samples block of line {begin.number}, found {end.text!r}")
-
-
-# ----------------------------------------------------------------- building
-def build_formation(parsed: ParsedLayout, source: str, name: str, description: str) -> Formation:
-    """The :class:`Formation` *parsed* describes, in our frame; errors name the line at fault."""
-    balls = np.array(parsed.balls, dtype=np.float64).reshape(-1, 2)
-    positions = np.array(parsed.positions, dtype=np.float64).reshape(-1, ROLE_COUNT, 2)
-    server_to_team_frame(balls, positions)
-    partners = partners_from_pairs(
-        parsed.pairs, source, lambda n: f"line {parsed.role_lines[n]}, role {n}", field="symmetry number"
-    )
-    roles = []
-    for number in _ALL_ROLES:
-        role_name = parsed.names[number]
-        mean_x = float(positions[:, number - 1, 0].mean()) if len(positions) else 0.0
-        kind = role_kind(parsed.types.get(number), role_name, mean_x)
-        roles.append(Role(number, role_name, kind, partners.get(number)))
-    try:
-        return Formation(roles, balls, positions, name=name, description=description, source=source)
-    except FormationError as error:
-        raise _locate(error, parsed) from None
-
-
-def _locate(error: FormationError, parsed: ParsedLayout) -> FormationError:
-    """Prefix the line of the sample (or, for a static formation, the role) an error names."""
-    match = re.match(r"sample (\d+)(?:, role (\d+))?", error.where or "")
-    if match is None:
-        return error
-    if parsed.static and match.group(2):
-        line = parsed.role_lines[int(match.group(2))]
-        return FormationError(error.source, error.problem, f"line {line}, role {match.group(2)}")
-    line = parsed.sample_lines[int(match.group(1))]
-    return FormationError(error.source, error.problem, f"line {line}, {error.where}")

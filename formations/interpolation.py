@@ -37,6 +37,8 @@ from numba import njit, types
 from numba.extending import intrinsic
 from scipy.spatial import Delaunay
 
+from formations.errors import FormationInputError
+
 GRID_CELLS_ALONG_LONG_SIDE = 64
 """Resolution of the triangle lookup grid (cells along the longer side of the
 hull's bounding box). Finer grids list fewer candidate triangles per cell."""
@@ -185,7 +187,7 @@ class TriangleInterpolator:
         :meth:`find_triangle` and :meth:`nearest_hull_point` do, then the triangle's affine map
         or the hull edge's interpolation."""
         if not (math.isfinite(x) and math.isfinite(y)):
-            raise ValueError(f"query point must be finite, got ({x}, {y})")
+            raise FormationInputError(f"query point must be finite, got ({x}, {y})")
         out = np.empty(self.values.shape[1])
         nx, ny = self._grid_shape
         _value_kernel(x, y, self._grid_table, nx, ny, self._cell_offsets, self._cell_triangles, self._bary_table,
@@ -203,10 +205,10 @@ class TriangleInterpolator:
         """
         points = np.ascontiguousarray(points, dtype=np.float64)
         if points.ndim != 2 or points.shape[1] != 2:
-            raise ValueError(f"query points must have shape (k, 2), got {points.shape}")
+            raise FormationInputError(f"query points must have shape (k, 2), got {points.shape}")
         if not np.isfinite(points).all():
             bad = int(np.flatnonzero(~np.isfinite(points).all(axis=1))[0])
-            raise ValueError(f"query point {bad} is not finite: {points[bad].tolist()}")
+            raise FormationInputError(f"query point {bad} is not finite: {points[bad].tolist()}")
         k = len(points)
         triangle = self.tri.find_simplex(points)
         homogeneous = np.empty((k, 3), dtype=np.float64)

@@ -58,9 +58,9 @@ def cells_per_side(side: float, r_comm: float) -> int:
     return max(1, math.ceil(math.sqrt(5.0) * side / r_comm))
 
 
-@njit(cache=True, nogil=True)
 def _cell_of(x: float, y: float, side: float, b: int) -> int:
-    """Cell id ``row * b + col`` of a point (a point on a border goes to the cell right / below)."""
+    """Cell id ``row * b + col`` of a point (a point on a border goes to the cell right / below);
+    plain Python: it runs once per agent and target when a simulation starts."""
     s = side / b
     col = min(int(x / s), b - 1)
     row = min(int((side - y) / s), b - 1)

@@ -26,7 +26,8 @@ cycles of 100 ms.
 * ``ball_player()`` the row the assigner sends to the ball, or None (the default).
 
 Wrong shapes, a ``role_order`` that is not a permutation, or ``assign`` before ``reset``
-raise ValueError naming the assigner and the problem. Every assigner is deterministic given
+raise :class:`RoleError` (an :class:`~agents.errors.AgentsError` and a ValueError) naming the
+assigner and the problem. Every assigner is deterministic given
 the generator given to ``reset`` (only ``random`` draws from it).
 
 **The assigners** (:data:`ASSIGNERS`, :func:`assigner_names`, :func:`make_assigner`):
@@ -62,8 +63,9 @@ from collections.abc import Callable
 
 from agents.roles.base import RoleAssigner, RoleContext, offensive_order
 from agents.roles.bidding import BiddingAssigner, BiddingParams
+from agents.roles.errors import RoleError
 from agents.roles.matching import GreedyOffenseAssigner, MethodAssigner, RandomAssigner, StaticAssigner
-from agents.roles.potential_field import FieldParams
+from agents.roles.field_params import FieldParams
 
 
 def _method(method: str) -> Callable[[], RoleAssigner]:
@@ -96,20 +98,20 @@ def make_assigner(name: str, **params: object) -> RoleAssigner:
     """A new assigner called ``name`` (see :data:`ASSIGNERS`) with keyword ``params``.
 
     Raises:
-        ValueError: for an unknown name (the message lists the known ones), parameters given
+        RoleError: (a ValueError) for an unknown name (the message lists the known ones), parameters given
             to an assigner that takes none, or unknown or invalid parameter values.
     """
     factory = ASSIGNERS.get(name)
     if factory is None:
-        raise ValueError(f"unknown role assigner {name!r}; known: {', '.join(ASSIGNERS)}")
+        raise RoleError(f"unknown role assigner {name!r}; known: {', '.join(ASSIGNERS)}")
     try:
         inspect.signature(factory).bind(**params)
     except TypeError as exc:
-        raise ValueError(f"role assigner {name!r} does not take parameters {', '.join(sorted(params))}: {exc}") from None
+        raise RoleError(f"role assigner {name!r} does not take parameters {', '.join(sorted(params))}: {exc}") from None
     return factory(**params)
 
 
 __all__ = [
-    "ASSIGNERS", "BiddingAssigner", "BiddingParams", "FieldParams", "RoleAssigner", "RoleContext",
+    "ASSIGNERS", "BiddingAssigner", "BiddingParams", "FieldParams", "RoleAssigner", "RoleContext", "RoleError",
     "assigner_names", "make_assigner", "offensive_order",
 ]

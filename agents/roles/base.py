@@ -1,6 +1,8 @@
 """The role-assigner interface: which outfield player takes which formation role.
 
-Team-relative frame (we attack +x, our goal at ``x = -half_length``), metres, cycles.
+Team-relative frame (we attack +x, our goal at ``x = -half_length``), metres, cycles. The
+field's default sizes are the formations' (:data:`formations.field.STANDARD_FIELD`), the same
+team frame and field the formation targets are given in.
 """
 
 from __future__ import annotations
@@ -11,6 +13,9 @@ from dataclasses import dataclass
 
 import numpy as np
 from numba import njit
+
+from agents.roles.errors import RoleError
+from formations.field import STANDARD_FIELD
 
 
 @dataclass
@@ -35,10 +40,11 @@ class RoleContext:
     """The match cycle (100 ms each); hysteresis counts in these."""
     attacking: bool
     """The situation: True when we expect to control the ball first (we attack)."""
-    penalty_area_length: float = 16.5
-    """Depth of the penalty area from the goal line (m; rcssserver's default)."""
-    penalty_area_half_width: float = 20.16
-    """Half the penalty area's width (m; rcssserver's default)."""
+    penalty_area_length: float = STANDARD_FIELD.penalty_area_depth
+    """Depth of the penalty area from the goal line (m; default: the standard field's, as
+    rcssserver's)."""
+    penalty_area_half_width: float = STANDARD_FIELD.penalty_area_width / 2.0
+    """Half the penalty area's width (m; default: the standard field's, as rcssserver's)."""
     ball_reach: np.ndarray | None = None
     """Optional (k,) how far (m) each outfield player (row of ``players``) effectively is from
     controlling the ball, when the team knows better than the straight distance to ``ball``
@@ -56,6 +62,8 @@ def offensive_order(targets: np.ndarray) -> np.ndarray:
     return np.argsort(-targets[:, 0], kind="stable")
 
 
+# The two small kernels below run every cycle; compiled, a call costs less than half of its numpy
+# or plain-Python equivalent (0.5 against 1.2 us for the order, 0.2 against 0.6 us for the check).
 @njit(cache=True, nogil=True)
 def _descending_x(targets: np.ndarray):  # pragma: no cover - compiled
     """Rows by x descending, ties by row (a stable insertion sort: k is about ten), or None
@@ -112,9 +120,9 @@ class RoleAssigner(ABC):
         """A new match with ``n_roles`` roles (and as many players); ``rng`` is the team's
         seeded generator. Forgets everything remembered from a previous match."""
         if isinstance(n_roles, bool) or not isinstance(n_roles, (int, np.integer)) or n_roles < 1:
-            raise ValueError(f"role assigner {self.name!r}: n_roles must be a positive integer, got {n_roles!r}")
+            raise RoleError(f"role assigner {self.name!r}: n_roles must be a positive integer, got {n_roles!r}")
         if not isinstance(rng, np.random.Generator):
-            raise ValueError(f"role assigner {self.name!r}: rng must be a numpy Generator, got {type(rng).__name__}")
+            raise RoleError(f"role assigner {self.name!r}: rng must be a numpy Generator, got {type(rng).__name__}")
         self.n_roles = int(n_roles)
         self.rng = rng
 
@@ -147,18 +155,18 @@ class RoleAssigner(ABC):
 
     def check_inputs(self, players: np.ndarray, targets: np.ndarray) -> int:
         """The number of players k, after checking that :meth:`reset` was called and that
-        ``players`` and ``targets`` are (n_roles, 2) arrays; ValueError naming the problem."""
+        ``players`` and ``targets`` are (n_roles, 2) arrays; RoleError naming the problem."""
         k = self.n_roles
         if k is None:
-            raise ValueError(f"role assigner {self.name!r}: call reset(n_roles, rng) before assign")
+            raise RoleError(f"role assigner {self.name!r}: call reset(n_roles, rng) before assign")
         if players.shape != (k, 2) or targets.shape != (k, 2):
-            raise ValueError(f"role assigner {self.name!r} was reset for {k} roles: players and targets must "
+            raise RoleError(f"role assigner {self.name!r} was reset for {k} roles: players and targets must "
                              f"be ({k}, 2) arrays, got players {players.shape} and targets {targets.shape}")
         return k
 
     def check_order(self, role_order: np.ndarray, k: int) -> None:
-        """ValueError unless ``role_order`` is a permutation of ``range(k)`` (for assigners that
+        """RoleError unless ``role_order`` is a permutation of ``range(k)`` (for assigners that
         use it)."""
         if role_order.ndim != 1 or not is_permutation(role_order, k):
-            raise ValueError(f"role assigner {self.name!r}: role_order must be a permutation of range({k}), "
+            raise RoleError(f"role assigner {self.name!r}: role_order must be a permutation of range({k}), "
                              f"got {np.asarray(role_order).tolist()}")

@@ -58,8 +58,10 @@ from dataclasses import dataclass, field, fields, replace
 import numpy as np
 from numba import njit
 
-from agents.roles import potential_field as pf
 from agents.roles.base import RoleAssigner, RoleContext
+from agents.roles.errors import RoleError
+from agents.roles.field_params import FieldParams
+from agents.roles.potential_field import descend, supporter_field
 
 
 @dataclass(frozen=True)
@@ -80,36 +82,48 @@ class BiddingParams:
     cover_slack: float = 10.0
     """The ball player keeps covering its own formation role while that role's target is at
     most this much (m) farther from the ball than the nearest role target."""
-    field: pf.FieldParams = field(default_factory=pf.FieldParams)
-    """The supporters' potential field (:class:`agents.roles.potential_field.FieldParams`)."""
+    field: FieldParams = field(default_factory=FieldParams)
+    """The supporters' potential field (:class:`agents.roles.field_params.FieldParams`)."""
 
     def __post_init__(self) -> None:
         for name in ("ball_cap", "angle_weight", "goal_side_weight", "switch_margin", "cover_slack"):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value < 0:
-                raise ValueError(f"BiddingParams.{name} must be a finite number >= 0, got {value!r}")
+                raise RoleError(f"BiddingParams.{name} must be a finite number >= 0, got {value!r}")
         if isinstance(self.min_hold, bool) or not isinstance(self.min_hold, (int, np.integer)) or self.min_hold < 0:
-            raise ValueError(f"BiddingParams.min_hold must be an integer >= 0 (cycles), got {self.min_hold!r}")
-        if not isinstance(self.field, pf.FieldParams):
-            raise ValueError(f"BiddingParams.field must be a FieldParams, got {type(self.field).__name__}")
+            raise RoleError(f"BiddingParams.min_hold must be an integer >= 0 (cycles), got {self.min_hold!r}")
+        if not isinstance(self.field, FieldParams):
+            raise RoleError(f"BiddingParams.field must be a FieldParams, got {type(self.field).__name__}")
 
     @classmethod
     def with_overrides(cls, base: BiddingParams | None = None, **overrides: object) -> BiddingParams:
         """``base`` (default: the defaults) with keyword overrides; a key may name a field of
-        :class:`BiddingParams` or of its ``field`` (:class:`FieldParams`). ValueError listing
+        :class:`BiddingParams` or of its ``field`` (:class:`FieldParams`). RoleError listing
         the valid names for any other key."""
         base = base or cls()
         own = {f.name for f in fields(cls)}
-        field_names = {f.name for f in fields(pf.FieldParams)}
+        field_names = {f.name for f in fields(FieldParams)}
         unknown = sorted(set(overrides) - own - field_names)
         if unknown:
-            raise ValueError(f"unknown bidding parameter(s) {', '.join(map(repr, unknown))}; valid: "
+            raise RoleError(f"unknown bidding parameter(s) {', '.join(map(repr, unknown))}; valid: "
                              f"{', '.join(sorted(own))} and the field's {', '.join(sorted(field_names))}")
         mine = {key: value for key, value in overrides.items() if key in own}
         theirs = {key: value for key, value in overrides.items() if key not in own}
         if theirs:
             mine["field"] = replace(mine.get("field", base.field), **theirs)
         return replace(base, **mine)
+
+    def as_record(self) -> np.ndarray:
+        """The numbers the compiled bidding reads, by name: a one-element :data:`BIDDING_DTYPE`
+        array (the field's parameters are :meth:`FieldParams.as_record`)."""
+        return np.array([(self.ball_cap, self.angle_weight, self.goal_side_weight, self.min_hold, self.switch_margin,
+                          self.cover_slack)], dtype=BIDDING_DTYPE)
+
+
+BIDDING_DTYPE = np.dtype([("ball_cap", np.float64), ("angle_weight", np.float64), ("goal_side_weight", np.float64),
+                          ("min_hold", np.int64), ("switch_margin", np.float64), ("cover_slack", np.float64)],
+                         align=True)
+"""The record the compiled bidding reads (:meth:`BiddingParams.as_record`)."""
 
 
 class BiddingAssigner(RoleAssigner):
@@ -121,8 +135,8 @@ class BiddingAssigner(RoleAssigner):
     def __init__(self, params: BiddingParams | None = None, **overrides: object) -> None:
         self.params = BiddingParams.with_overrides(params, **overrides)
         p = self.params
-        self._bid_weights = np.array([p.ball_cap, p.angle_weight, p.goal_side_weight])
-        self._field = p.field.as_array()
+        self._bidding = p.as_record()
+        self._field = p.field.as_record()
         self._ball_player: int | None = None
         self.covered = -1
         """The formation role the ball player took at the last ``assign`` (not auctioned)."""
@@ -142,17 +156,15 @@ class BiddingAssigner(RoleAssigner):
     def bids(self, players: np.ndarray, targets: np.ndarray, context: RoleContext) -> np.ndarray:
         """(k, k + 1) costs, lower is better: column r < k formation role r, column k the ball role."""
         k = self.check_inputs(players, targets)
-        return _bid_costs(players, targets, context.ball, context.opp_goal, self._reach(context, k), self._bid_weights)
+        return _bid_costs(players, targets, context.ball, context.opp_goal, self._reach(context, k), self._bidding)
 
     def assign(self, players: np.ndarray, targets: np.ndarray, role_order: np.ndarray,
                previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
         k = self.check_inputs(players, targets)
         self.check_order(role_order, k)
         role_of_player, ball_player, covered = _bidding_round(
-            players, targets, role_order, context.ball, context.opp_goal, self._reach(context, k),
-            self._bid_weights, self.holder,
-            self.since, self.last_role, context.cycle, self.params.min_hold, self.params.switch_margin,
-            self.params.cover_slack)
+            players, targets, role_order, context.ball, context.opp_goal, self._reach(context, k), self._bidding,
+            self.holder, self.since, self.last_role, context.cycle)
         self._ball_player, self.covered = int(ball_player), int(covered)
         return role_of_player
 
@@ -162,10 +174,10 @@ class BiddingAssigner(RoleAssigner):
         if reach is None:
             return _NO_REACH
         if not (isinstance(reach, np.ndarray) and reach.shape == (k,) and reach.dtype == np.float64):
-            raise ValueError(f"role assigner 'bidding': context.ball_reach must be a float64 ({k},) array or None, "
+            raise RoleError(f"role assigner 'bidding': context.ball_reach must be a float64 ({k},) array or None, "
                              f"got {type(reach).__name__} {getattr(reach, 'shape', '')}")
         if np.isnan(reach).any():
-            raise ValueError("role assigner 'bidding': context.ball_reach holds NaN")
+            raise RoleError("role assigner 'bidding': context.ball_reach holds NaN")
         return reach
 
     def ball_player(self) -> int | None:
@@ -179,11 +191,11 @@ class BiddingAssigner(RoleAssigner):
         self.check_inputs(players, targets)
         anchors = targets[role_of_player]
         offensive = anchors[:, 0] >= context.ball[0]
-        _, grad = pf.supporter_field(
+        _, grad = supporter_field(
             players, anchors, offensive, bool(context.attacking), context.ball, context.own_goal,
             context.opp_goal, context.field_half_length, context.field_half_width,
             context.penalty_area_length, context.penalty_area_half_width, self._field)
-        goals = pf.descend(players, grad, context.field_half_length, context.field_half_width, self._field)
+        goals = descend(players, grad, context.field_half_length, context.field_half_width, self._field)
         if self._ball_player is not None:
             goals[self._ball_player] = anchors[self._ball_player]
         return goals
@@ -194,12 +206,13 @@ _NO_REACH = np.empty(0)
 
 @njit(cache=True, nogil=True)
 def _bid_costs(players: np.ndarray, targets: np.ndarray, ball: np.ndarray, goal: np.ndarray, reach: np.ndarray,
-               weights: np.ndarray) -> np.ndarray:  # pragma: no cover - compiled
+               params: np.ndarray) -> np.ndarray:  # pragma: no cover - compiled
     """The bid costs of the module docstring; ``reach`` (k,) the ball reach of every player, or
-    empty for the straight distance; ``weights`` = (ball_cap, angle_weight, goal_side_weight).
-    Returns (k, k + 1): formation roles, then the ball role."""
+    empty for the straight distance; ``params`` is :meth:`BiddingParams.as_record` (the bid
+    weights are read from it). Returns (k, k + 1): formation roles, then the ball role."""
     k = players.shape[0]
-    cap, angle_weight, goal_side = weights[0], weights[1], weights[2]
+    p = params[0]
+    cap, angle_weight, goal_side = p.ball_cap, p.angle_weight, p.goal_side_weight
     costs = np.empty((k, k + 1))
     gx, gy = goal[0] - ball[0], goal[1] - ball[1]
     goal_dist = math.hypot(gx, gy)
@@ -260,13 +273,15 @@ def _covered_role(targets: np.ndarray, order: np.ndarray, ball: np.ndarray, kept
 
 @njit(cache=True, nogil=True)
 def _bidding_round(players: np.ndarray, targets: np.ndarray, order: np.ndarray, ball: np.ndarray,
-                   goal: np.ndarray, reach: np.ndarray, weights: np.ndarray, holder: np.ndarray, since: np.ndarray,
-                   last_role: np.ndarray, cycle: int, min_hold: int, margin: float,
-                   slack: float) -> tuple[np.ndarray, int, int]:  # pragma: no cover - compiled
-    """One cycle of bidding: (role_of_player, the ball player, the covered formation role);
-    updates the hysteresis memory (``holder``, ``since``) and ``last_role`` (each player's role)."""
+                   goal: np.ndarray, reach: np.ndarray, params: np.ndarray, holder: np.ndarray, since: np.ndarray,
+                   last_role: np.ndarray, cycle: int) -> tuple[np.ndarray, int, int]:  # pragma: no cover - compiled
+    """One cycle of bidding with ``params`` (:meth:`BiddingParams.as_record`): (role_of_player,
+    the ball player, the covered formation role); updates the hysteresis memory (``holder``,
+    ``since``) and ``last_role`` (each player's role)."""
     k = players.shape[0]
-    costs = _bid_costs(players, targets, ball, goal, reach, weights)
+    p = params[0]
+    min_hold, margin, slack = p.min_hold, p.switch_margin, p.cover_slack
+    costs = _bid_costs(players, targets, ball, goal, reach, params)
     taken = np.zeros(k, dtype=np.bool_)
     winners = np.full(k + 1, -1, dtype=np.int64)
     _auction(costs, np.array([k]), taken, holder, since, cycle, min_hold, margin, winners)

@@ -19,8 +19,10 @@ import numpy as np
 
 from agents.roles import assigner_names, make_assigner
 from agents.roles.base import RoleContext, offensive_order
+from agents.roles.errors import RoleError
+from formations.field import STANDARD_FIELD
 
-_HALF_LENGTH, _HALF_WIDTH = 52.5, 34.0
+_HALF_LENGTH, _HALF_WIDTH = STANDARD_FIELD.half_length, STANDARD_FIELD.half_width
 
 
 def _points(rng: np.random.Generator, k: int) -> np.ndarray:
@@ -33,7 +35,7 @@ def time_assigners(k: int = 10, situations: int = 20, repeat: int = 5, number: i
     """Median microseconds per call, ``{assigner name: {"assign": ..., "steer": ...,
     "assign+steer": ...}}``, plus ``"offensive_order"`` (its ``"assign"`` entry only)."""
     if k < 1 or situations < 1 or repeat < 1 or number < 1:
-        raise ValueError(f"k, situations, repeat and number must be positive, got {k}, {situations}, {repeat}, {number}")
+        raise RoleError(f"k, situations, repeat and number must be positive, got {k}, {situations}, {repeat}, {number}")
     rng = np.random.default_rng(seed)
     cases = []
     for s in range(situations):

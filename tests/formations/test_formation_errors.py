@@ -197,3 +197,45 @@ def test_bad_helios_file_is_reported(write_json, label, mutate, message):
     with pytest.raises(FormationError, match=message) as caught:
         formations.load(path)
     assert str(caught.value).startswith(str(path) + ":")
+
+
+def test_every_error_class_of_the_package_derives_from_formation_error():
+    import importlib
+    import inspect
+    import pkgutil
+
+    from formations.errors import FormationInputError, UnknownRoleError
+
+    found = set()
+    for info in pkgutil.walk_packages(formations.__path__, "formations."):
+        module = importlib.import_module(info.name)
+        for _, cls in inspect.getmembers(module, inspect.isclass):
+            if issubclass(cls, BaseException) and cls.__module__.startswith("formations"):
+                found.add(cls)
+                assert issubclass(cls, FormationError) and issubclass(cls, ValueError), cls
+    assert {FormationError, FormationInputError, UnknownRoleError} <= found
+
+
+def test_bad_query_arguments_are_formation_errors_and_stay_value_errors(random_formation):
+    import pickle
+
+    from formations.errors import FormationInputError, UnknownRoleError
+
+    cases = [
+        (lambda: formations.parse_situation("counter"), "unknown situation 'counter'"),
+        (lambda: formations.load_builtin("no-such-set"), "no built-in formation set 'no-such-set'"),
+        (lambda: random_formation.positions((float("nan"), 0.0)), "query point must be finite"),
+        (lambda: random_formation.positions((1.0, 2.0, 3.0)), r"two numbers \(x, y\), got 3"),
+        (lambda: random_formation.positions_many(np.zeros((2, 3))), r"shape \(k, 2\)"),
+    ]
+    for call, message in cases:
+        with pytest.raises(FormationInputError, match=message) as caught:
+            call()
+        assert isinstance(caught.value, FormationError) and isinstance(caught.value, ValueError)
+        again = pickle.loads(pickle.dumps(caught.value))
+        assert type(again) is type(caught.value) and str(again) == str(caught.value)
+    with pytest.raises(UnknownRoleError, match="has no role 99") as caught:
+        random_formation.role(99)
+    assert isinstance(caught.value, KeyError) and isinstance(caught.value, FormationError)
+    assert str(caught.value).endswith(")")  # the message itself, not KeyError's quoted repr of it
+    assert str(caught.value.within("formation 'attack'")).startswith("formation 'attack': ")

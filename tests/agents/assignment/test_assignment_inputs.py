@@ -13,6 +13,7 @@ from agents.assignment import (
     assign,
     assign_costs,
 )
+from agents.errors import AgentsError
 
 ROBOTS = np.array([[0.0, 0.0], [10.0, 0.0], [5.0, 5.0]])
 TARGETS = np.array([[9.0, 1.0], [1.0, 1.0], [5.0, 4.0]])
@@ -63,6 +64,8 @@ def test_bad_points_are_rejected_with_a_message(robots, targets, message):
     with pytest.raises(AssignmentError, match=message):
         assign(robots, targets)
     with pytest.raises(ValueError):
+        assign(robots, targets)
+    with pytest.raises(AgentsError):
         assign(robots, targets)
 
 

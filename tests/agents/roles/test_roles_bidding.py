@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from agents.roles import BiddingAssigner, BiddingParams, offensive_order
+from agents.roles import BiddingAssigner, BiddingParams, RoleError, offensive_order
 from tests.agents.roles.role_situations import HALF_LENGTH, HALF_WIDTH, context
 
 
@@ -205,5 +205,26 @@ def test_the_teams_ball_reach_replaces_the_straight_distance_in_the_ball_bid() -
     assigner.assign(players, targets, offensive_order(targets), None, reach)
     assert assigner.ball_player() == 1
     for bad, message in ((np.array([1.0, 2.0]), r"float64 \(3,\) array"), (np.array([1.0, np.nan, 2.0]), "NaN")):
-        with pytest.raises(ValueError, match=message):
+        with pytest.raises(RoleError, match=message):
             assigner.assign(players, targets, offensive_order(targets), None, replace(ctx, ball_reach=bad))
+
+
+def test_the_compiled_bidding_reads_each_parameter_by_its_name() -> None:
+    from agents.roles.bidding import BIDDING_DTYPE
+
+    params = BiddingParams(ball_cap=21.0, angle_weight=2.5, goal_side_weight=0.75, min_hold=7, switch_margin=1.25,
+                           cover_slack=9.5)
+    record = params.as_record()
+    assert record.dtype == BIDDING_DTYPE and record.shape == (1,)
+    assert {name: record[0][name].item() for name in BIDDING_DTYPE.names} == {
+        "ball_cap": 21.0, "angle_weight": 2.5, "goal_side_weight": 0.75, "min_hold": 7, "switch_margin": 1.25,
+        "cover_slack": 9.5}
+    # The goal-side weight, not another number, scales the defensive term (a player d metres
+    # upfield of a defensive role's target bids its distance plus d x the weight), and the cap,
+    # not another number, caps the ball bid of a player lined up behind the ball.
+    assigner = BiddingAssigner(params)
+    assigner.reset(2, np.random.default_rng(0))
+    costs = assigner.bids(np.array([[0.0, 0.0], [-50.0, 0.0]]), np.array([[-10.0, 0.0], [40.0, 0.0]]),
+                          context((20.0, 0.0)))
+    assert costs[0, 0] == pytest.approx(10.0 + 10.0 * 0.75) and costs[1, 0] == pytest.approx(40.0)
+    assert costs[0, 2] == pytest.approx(20.0) and costs[1, 2] == pytest.approx(21.0)

@@ -7,7 +7,7 @@ import re
 import numpy as np
 import pytest
 
-from agents.roles import ASSIGNERS, RoleContext, assigner_names, make_assigner, offensive_order
+from agents.roles import ASSIGNERS, RoleContext, RoleError, assigner_names, make_assigner, offensive_order
 from tests.agents.roles.role_situations import at_cycle, context, random_field_points, ready, run
 
 NAMES = ("static", "greedy", "greedy-offense", "mmdr", "mmd+msd2", "msd", "msd2", "random", "bidding")
@@ -80,18 +80,18 @@ def test_the_default_steer_sends_each_player_to_its_role_target() -> None:
 
 
 def test_unknown_names_are_explained_with_the_known_ones() -> None:
-    with pytest.raises(ValueError, match=r"unknown role assigner 'mmdx'; known: static, greedy, .*bidding"):
+    with pytest.raises(RoleError, match=r"unknown role assigner 'mmdx'; known: static, greedy, .*bidding"):
         make_assigner("mmdx")
 
 
 def test_parameters_are_checked_by_name_and_value() -> None:
-    with pytest.raises(ValueError, match="'static' does not take parameters min_hold"):
+    with pytest.raises(RoleError, match="'static' does not take parameters min_hold"):
         make_assigner("static", min_hold=3)
-    with pytest.raises(ValueError, match="unknown bidding parameter.*'hold'.*valid: .*min_hold"):
+    with pytest.raises(RoleError, match="unknown bidding parameter.*'hold'.*valid: .*min_hold"):
         make_assigner("bidding", hold=3)
-    with pytest.raises(ValueError, match="min_hold must be an integer >= 0"):
+    with pytest.raises(RoleError, match="min_hold must be an integer >= 0"):
         make_assigner("bidding", min_hold=-1)
-    with pytest.raises(ValueError, match="FieldParams.wall_reach must be > 0"):
+    with pytest.raises(RoleError, match="FieldParams.wall_reach must be > 0"):
         make_assigner("bidding", wall_reach=0.0)
     assigner = make_assigner("bidding", min_hold=4, anchor_weight=0.9)
     assert assigner.params.min_hold == 4 and assigner.params.field.anchor_weight == 0.9
@@ -100,16 +100,16 @@ def test_parameters_are_checked_by_name_and_value() -> None:
 @pytest.mark.parametrize("name", NAMES)
 def test_bad_calls_name_the_assigner_and_the_problem(name: str) -> None:
     players, targets = np.zeros((3, 2)), np.arange(6.0).reshape(3, 2)
-    with pytest.raises(ValueError, match=re.escape(f"role assigner '{name}'") + ".*reset"):
+    with pytest.raises(RoleError, match=re.escape(f"role assigner '{name}'") + ".*reset"):
         make_assigner(name).assign(players, targets, np.arange(3), None, context())
     assigner = ready(name, 3)
-    with pytest.raises(ValueError, match=r"reset for 3 roles.*players \(4, 2\)"):
+    with pytest.raises(RoleError, match=r"reset for 3 roles.*players \(4, 2\)"):
         assigner.assign(np.zeros((4, 2)), targets, np.arange(3), None, context())
-    with pytest.raises(ValueError, match=r"targets \(3, 3\)"):
+    with pytest.raises(RoleError, match=r"targets \(3, 3\)"):
         assigner.assign(players, np.zeros((3, 3)), np.arange(3), None, context())
-    with pytest.raises(ValueError, match="n_roles must be a positive integer"):
+    with pytest.raises(RoleError, match="n_roles must be a positive integer"):
         make_assigner(name).reset(0, np.random.default_rng(0))
-    with pytest.raises(ValueError, match="rng must be a numpy Generator"):
+    with pytest.raises(RoleError, match="rng must be a numpy Generator"):
         make_assigner(name).reset(3, 7)
 
 
@@ -117,14 +117,22 @@ def test_bad_calls_name_the_assigner_and_the_problem(name: str) -> None:
 def test_a_role_order_that_is_not_a_permutation_is_refused(name: str) -> None:
     assigner = ready(name, 3)
     for order in ([0, 0, 1], [0, 1, 3], [0, 1]):
-        with pytest.raises(ValueError, match=r"role_order must be a permutation of range\(3\)"):
+        with pytest.raises(RoleError, match=r"role_order must be a permutation of range\(3\)"):
             assigner.assign(np.zeros((3, 2)), np.arange(6.0).reshape(3, 2), np.array(order), None, context())
 
 
 def test_context_defaults_are_rcssserver_penalty_area() -> None:
+    from formations.field import STANDARD_FIELD
+    from soccer_sim.config import FieldConfig
+
     ctx = context()
     assert isinstance(ctx, RoleContext)
     assert ctx.penalty_area_length == 16.5 and ctx.penalty_area_half_width == pytest.approx(40.32 / 2)
+    # One source (the formations' field), the same numbers the simulator's default field plays with.
+    assert (ctx.penalty_area_length, ctx.penalty_area_half_width) == (
+        STANDARD_FIELD.penalty_area_depth, STANDARD_FIELD.penalty_area_width / 2.0)
+    assert (ctx.penalty_area_length, ctx.penalty_area_half_width) == (
+        FieldConfig().penalty_area_length, FieldConfig().penalty_area_width / 2.0)
     assert at_cycle(ctx, 9).cycle == 9
 
 
@@ -144,3 +152,35 @@ def test_an_assigner_that_ignores_the_role_order_says_so(name: str) -> None:
             answers.append(ready(name, 6, seed=1).assign(players, targets, order, None, ctx).tolist())
         differs |= any(a != answers[0] for a in answers)
     assert differs == make_assigner(name).uses_role_order
+
+
+def test_every_error_of_the_assigners_and_the_solvers_is_an_agents_error_and_a_value_error() -> None:
+    import importlib
+    import inspect
+    import pkgutil
+
+    import agents.assignment
+    import agents.roles
+    from agents.assignment import AssignmentError
+    from agents.errors import AgentsError
+
+    found = set()
+    for package in (agents.roles, agents.assignment):
+        for info in pkgutil.walk_packages(package.__path__, package.__name__ + "."):
+            for _, cls in inspect.getmembers(importlib.import_module(info.name), inspect.isclass):
+                if issubclass(cls, BaseException) and cls.__module__.startswith(package.__name__):
+                    found.add(cls)
+                    assert issubclass(cls, AgentsError) and issubclass(cls, ValueError), cls
+    assert {RoleError, AssignmentError} <= found
+
+
+def test_bad_input_to_an_assigner_is_a_role_error() -> None:
+    from agents.errors import AgentsError
+    from agents.roles.matching import MethodAssigner
+
+    with pytest.raises(RoleError, match="MethodAssigner: unknown method 'best'"):
+        MethodAssigner("best")
+    assigner = ready("msd", 2)
+    with pytest.raises(RoleError, match="role assigner 'msd': players and targets must be finite") as caught:
+        assigner.assign(np.array([[0.0, np.nan], [1.0, 1.0]]), np.zeros((2, 2)), None, None, context())
+    assert isinstance(caught.value, AgentsError) and isinstance(caught.value, ValueError)

@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from agents.roles import FieldParams
+from agents.roles import FieldParams, RoleError
 from agents.roles import potential_field as pf
 from tests.agents.roles.role_situations import HALF_LENGTH, HALF_WIDTH, OPP_GOAL, OWN_GOAL, random_field_points
 
@@ -132,10 +132,26 @@ def test_side_keeps_a_supporter_on_its_half_and_the_sides_follow_anchors_then_th
     assert pf.supporter_sides(anchors, offensive, np.array([0.0, 2.0]), 5.0).tolist() == [1, -1, 0, 0]
 
 
-def test_the_field_sums_the_terms_of_each_supporters_kind_and_situation() -> None:
+def _distinct_params() -> FieldParams:
+    """Every parameter a different value, so a kernel reading the wrong one cannot go unnoticed."""
+    from dataclasses import fields
+
+    return FieldParams(**{f.name: 0.7 + 0.31 * i for i, f in enumerate(fields(FieldParams))})
+
+
+def test_the_kernels_read_each_parameter_by_its_name() -> None:
+    from dataclasses import astuple, fields
+
+    for params in (FieldParams(), _distinct_params()):
+        record = params.as_record()
+        assert record.shape == (1,) and record.dtype.names == tuple(f.name for f in fields(FieldParams))
+        assert tuple(record[0].tolist()) == astuple(params)
+
+
+@pytest.mark.parametrize("params", [FieldParams(), _distinct_params()], ids=["defaults", "distinct"])
+def test_the_field_sums_the_terms_of_each_supporters_kind_and_situation(params: FieldParams) -> None:
     rng = np.random.default_rng(3)
-    params = FieldParams()
-    arr = params.as_array()
+    arr = params.as_record()
     points = sample_points(rng)
     offensive = np.array([True, False, True, False, True, False])
     for attacking in (True, False):
@@ -164,7 +180,7 @@ def test_the_field_sums_the_terms_of_each_supporters_kind_and_situation() -> Non
 
 
 def test_descend_steps_downhill_no_further_than_max_step_and_stays_in_the_field() -> None:
-    arr = FieldParams(lookahead=3.0, max_step=5.0, field_margin=1.0).as_array()
+    arr = FieldParams(lookahead=3.0, max_step=5.0, field_margin=1.0).as_record()
     points = np.array([[0.0, 0.0], [10.0, 10.0], [3.0, 3.0], [51.8, 0.0]])
     anchors = np.array([[30.0, 0.0], [10.5, 10.0], [3.0, 3.0], [60.0, 0.0]])
     pot, grad = pf.anchor(points, anchors, 1.0, 2.0)
@@ -182,8 +198,8 @@ def test_descend_steps_downhill_no_further_than_max_step_and_stays_in_the_field(
 
 
 def test_field_parameters_are_checked() -> None:
-    with pytest.raises(ValueError, match="FieldParams.anchor_weight must be a finite number >= 0"):
+    with pytest.raises(RoleError, match="FieldParams.anchor_weight must be a finite number >= 0"):
         FieldParams(anchor_weight=-1.0)
-    with pytest.raises(ValueError, match="FieldParams.corridor_width must be > 0"):
+    with pytest.raises(RoleError, match="FieldParams.corridor_width must be > 0"):
         FieldParams(corridor_width=0.0)
-    assert FieldParams().as_array().shape == (len(FieldParams.__dataclass_fields__),)
+    assert FieldParams().as_record().dtype.names == tuple(FieldParams.__dataclass_fields__)
