@@ -18,7 +18,7 @@ import argparse
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from experiments.commands.play import positive_int
+    from experiments.arguments import positive_int
 
     parser.add_argument("--home", default="mmd+msd2", help="home team of the match played (default: mmd+msd2)")
     parser.add_argument("--away", default="press-433", help="away team of the match played (default: press-433)")

@@ -60,7 +60,7 @@ class MatchSpec:
 
 def config_for(cycles: int | None) -> MatchConfig:
     """The MatchConfig of ``--cycles`` (the same rule as ``soccer-sim play``)."""
-    from experiments.commands.play import match_config
+    from experiments.configuration import match_config
 
     return match_config(cycles)
 

@@ -76,8 +76,8 @@ class Trial:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from experiments.commands.play import positive_int
-    from experiments.runner.options import add_run_arguments
+    from experiments.arguments import positive_int
+    from experiments.commands.run_options import add_run_arguments
 
     parser.description = doc_summary(__doc__)
     parser.add_argument("--trials", type=positive_int, default=60,
@@ -415,14 +415,14 @@ def _plot(trials: Sequence[Trial], params: dict, path: Path) -> Path:
 
 
 def run(args: argparse.Namespace) -> int:
-    from experiments.runner.options import run_command
+    from experiments.commands.run_options import run_command
 
     return run_command(args, KIND, _params, build_specs, report)
 
 
 def _params(args: argparse.Namespace) -> dict:
     """The study's parameters; a RunInputError naming the option that cannot be used."""
-    from experiments.runner.options import RunInputError
+    from experiments.commands.run_options import RunInputError
     from soccer_sim import TeamNotFoundError, resolve_team
     from soccer_sim.scenarios import MAX_PLAYERS
 

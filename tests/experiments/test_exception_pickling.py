@@ -30,7 +30,7 @@ EXAMPLES: dict[str, tuple] = {
     "experiments.results.export.ExportError": ("needs pyarrow",),
     "experiments.runner.worker.MatchTimeout": (2.5,),
     "experiments.runner.ray_backend.RayUnavailable": ("no ray",),
-    "experiments.runner.options.RunInputError": ("--teams: unknown team",),
+    "experiments.commands.run_options.RunInputError": ("--teams: unknown team",),
     "experiments.runner.run.RunStopped": ("run stopped: 5 of the 20 matches finished so far failed",),
     "experiments.benchmarks.grid_assignment.TotalsDiffer": ("lazy 41 != all pairs 40 on instance 3",),
     "experiments.benchmarks.startup._RunFailed": ("play exited with status 2: error: unknown team",),

@@ -9,8 +9,8 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from experiments.arguments import positive_float, positive_int, seed_value
 from experiments.commands.errors import fail
-from experiments.commands.play import positive_int
 
 if TYPE_CHECKING:  # the runner imports the simulator: only when a command runs
     from experiments.runner.run import RunSummary
@@ -19,28 +19,6 @@ if TYPE_CHECKING:  # the runner imports the simulator: only when a command runs
 
 class RunInputError(Exception):
     """Bad input to a command that runs matches; the message says what and how to fix it."""
-
-
-def positive_float(text: str) -> float:
-    """argparse type: a positive number of seconds."""
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"must be a positive number, got {text}") from None
-    if not value > 0 or value == float("inf"):
-        raise argparse.ArgumentTypeError(f"must be a positive number, got {text}")
-    return value
-
-
-def seed_value(text: str) -> int:
-    """argparse type: a non-negative integer seed."""
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"must be a non-negative integer, got {text}") from None
-    if value < 0:
-        raise argparse.ArgumentTypeError(f"must be a non-negative integer, got {text}")
-    return value
 
 
 def registered_teams_text() -> str:
