@@ -11,3 +11,8 @@ from __future__ import annotations
 class ExperimentError(Exception):
     """Something the experiment runner, results store, a study or a benchmark refuses or could
     not finish."""
+
+
+class StudyArgumentError(ExperimentError, ValueError):
+    """A value a study or benchmark cannot use (a size out of range, a list that does not
+    parse); the message names the parameter (the command line's option of the same name)."""

@@ -15,6 +15,7 @@ average before and after (other programs running slow every figure down).
 from __future__ import annotations
 
 import argparse
+from experiments.errors import ExperimentError
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -67,7 +68,7 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-class _RunFailed(Exception):
+class _RunFailed(ExperimentError):
     """A measured command exited with an error."""
 
 

@@ -11,13 +11,14 @@ from typing import TYPE_CHECKING
 
 from experiments.arguments import positive_float, positive_int, seed_value
 from experiments.commands.errors import fail
+from experiments.errors import ExperimentError
 
 if TYPE_CHECKING:  # the runner imports the simulator: only when a command runs
     from experiments.runner.run import RunSummary
     from experiments.runner.spec import MatchSpec
 
 
-class RunInputError(Exception):
+class RunInputError(ExperimentError):
     """Bad input to a command that runs matches; the message says what and how to fix it."""
 
 

@@ -29,6 +29,7 @@ import time
 from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 
+from experiments.errors import ExperimentError
 from experiments.results.record import FORFEIT_NONE, MatchRecord
 
 SCHEMA_VERSION = "1"
@@ -53,12 +54,12 @@ COLUMNS = ("home", "away", "seed", "config_hash", "code_version", "home_goals", 
            "wall_time", "home_stats", "away_stats", "error", "traceback", "forfeit")
 
 
-class ResultsError(Exception):
+class ResultsError(ExperimentError):
     """A results file cannot be used: unreadable, unwritable, not a results file, or made by a
     different configuration or command. The message names the file and says what to do."""
 
 
-class StorageError(Exception):
+class StorageError(ExperimentError):
     """Writing to a results file failed (disk full, I/O error, permission lost): every match
     stored before is kept. The message names the file and what was kept."""
 

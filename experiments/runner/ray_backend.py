@@ -40,6 +40,7 @@ from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from typing import TextIO
 
+from experiments.errors import ExperimentError
 from experiments.results.record import FORFEIT_NONE, MatchRecord
 from experiments.runner.preflight import PREFLIGHT_TIMEOUT, Expected, NodeCheck, check_node, failure_reason
 from experiments.runner.slots import FileSlot, new_token, take_slot
@@ -67,7 +68,7 @@ SHIP_EXCLUDES = ["__pycache__", "*.pyc", "*.nbi", "*.nbc"]
 BLAME_TIMEOUT = 30.0
 """Seconds the task that reads a dead worker's slot on its node may take; past that nobody is blamed."""
 
-class RayUnavailable(Exception):
+class RayUnavailable(ExperimentError):
     """Ray is not installed, the cluster cannot be reached or none of its nodes can play."""
 
 

@@ -15,6 +15,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from experiments.errors import ExperimentError
 from experiments.results.leases import LEASE_SECONDS, SharedWork
 from experiments.results.record import FORFEIT_NONE, MatchRecord
 from experiments.results.store import ResultsError, ResultStore, StorageError
@@ -44,7 +45,7 @@ def unblamed(record: MatchRecord) -> bool:
     return failed_with_no_team_at_fault(record)
 
 
-class RunStopped(Exception):
+class RunStopped(ExperimentError):
     """The failure policy stopped the run; the message says why, what is stored and how to resume."""
 
 

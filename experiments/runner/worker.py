@@ -18,6 +18,7 @@ import traceback as tb
 from collections.abc import Callable, MutableSequence
 from typing import Protocol
 
+from experiments.errors import ExperimentError
 from experiments.results.record import FORFEIT_NONE, MatchRecord
 from experiments.runner.spec import MatchSpec
 
@@ -35,8 +36,8 @@ class MatchFigures(Protocol):
     def figures(self) -> dict[str, float]: ...
 
 
-class MatchTimeout(Exception):
-    """A match overran its time budget (``--match-timeout``)."""
+class MatchTimeout(ExperimentError):
+    """A match overran its time budget (the run's ``match_timeout``)."""
 
     def __init__(self, seconds: float) -> None:
         super().__init__(f"match exceeded its time budget of {seconds:g} s")

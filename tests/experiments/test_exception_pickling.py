@@ -20,11 +20,12 @@ EXAMPLES: dict[str, tuple] = {
     "formations.errors.FormationError": ("a.json", "sample 3 is outside the field", "formation 'attack'"),
     "agents.assignment.errors.AssignmentError": ("NaN in robots",),
     "agents.skills.model.SkillInputError": ("horizon must be positive",),
-    "experiments.studies.incremental.StudyArgumentError": ("--lams: bad",),
-    "experiments.studies.distributed.StudyArgumentError": ("--sizes: bad",),
+    "experiments.errors.StudyArgumentError": ("lambdas: bad",),
+    "experiments.errors.ExperimentError": ("a run cannot start",),
+    "agents.errors.AgentsError": ("an assigner refuses its input",),
+    "soccer_sim.errors.SoccerSimError": ("the simulator refuses its input",),
     "soccer_sim.replay.recorder.ReplayError": ("replays need rerun-sdk: pip install rerun-sdk",),
     "soccer_sim.scenarios.scenario.ScenarioError": ("home.goalie", "index 4 is beyond the side's 3 players"),
-    "experiments.benchmarks.assignment.BenchmarkArgumentError": ("--sizes: bad",),
     "experiments.results.store.ResultsError": ("r.sqlite: not writable",),
     "experiments.results.store.StorageError": ("r.sqlite: cannot store a match (database or disk is full)",),
     "experiments.results.export.ExportError": ("needs pyarrow",),
@@ -68,3 +69,25 @@ def test_exception_survives_pickling(name: str) -> None:
     assert type(copy) is cls
     assert str(copy) == str(error)
     assert vars(copy) == vars(error)
+
+
+def test_every_experiments_error_derives_from_the_root_and_keeps_its_base() -> None:
+    from agents.assignment import AssignmentError
+    from experiments.errors import ExperimentError, StudyArgumentError
+
+    errors = {name: cls for name, cls in project_exceptions().items() if name.startswith("experiments.")}
+    assert len(errors) >= 11
+    assert not [name for name, cls in errors.items() if not issubclass(cls, ExperimentError)]
+    assert issubclass(StudyArgumentError, ValueError)
+    grid = importlib.import_module("experiments.benchmarks.grid_assignment")
+    assert issubclass(grid.TotalsDiffer, AssignmentError)
+
+
+def test_studies_and_benchmarks_share_one_argument_error() -> None:
+    from experiments.errors import StudyArgumentError
+
+    for module in ("experiments.studies.incremental", "experiments.studies.distributed",
+                   "experiments.benchmarks.assignment"):
+        found = {value for value in vars(importlib.import_module(module)).values()
+                 if isinstance(value, type) and issubclass(value, BaseException) and "Argument" in value.__name__}
+        assert found == {StudyArgumentError}, module
