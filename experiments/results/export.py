@@ -52,7 +52,7 @@ def parquet_library():
         import pyarrow.parquet as pq
     except ImportError:
         raise ExportError("Parquet export needs pyarrow: pip install 'soccer-sim[parquet]' (or pip install pyarrow); "
-                          "--csv needs nothing extra") from None
+                          "CSV export needs nothing extra") from None
     return pa, pq
 
 

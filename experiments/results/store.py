@@ -294,7 +294,7 @@ def _check_existing(path: Path, kind: str, config_hash: str, config: str) -> Non
         raise ResultsError(refusal)
 
 
-_UNUSABLE = "{path}: cannot be used as a results file ({why}); delete it or give another --out"
+_UNUSABLE = "{path}: cannot be used as a results file ({why}); delete it or use another results file"
 
 
 def _refusal(path: Path, meta: dict[str, str], tables: list[str], kind: str, config_hash: str, config: str,
@@ -306,14 +306,14 @@ def _refusal(path: Path, meta: dict[str, str], tables: list[str], kind: str, con
         return None                                           # an empty database: ours to fill
     if "kind" not in meta:
         what = contents() if contents is not None else f"an SQLite database with tables {', '.join(tables)}"
-        return f"{path}: not a soccer-sim results file ({what}); it is left untouched: give another --out"
-    fresh = f"to start fresh, delete {path} or give another --out"
+        return f"{path}: not a soccer-sim results file ({what}); it is left untouched: use another results file"
+    fresh = f"to start fresh, delete {path} or use another results file"
     if meta["kind"] != kind:
         return f"{path} holds the results of '{meta['kind']}', not '{kind}'; {fresh}"
     if meta.get("config_hash") not in (None, config_hash):
         stored, this = _difference(meta.get("config", ""), config)
         return (f"{path} holds results of a different match configuration (hash {meta['config_hash']}{stored}; "
-                f"this run: hash {config_hash}{this}; e.g. another --cycles); results of different "
+                f"this run: hash {config_hash}{this}; e.g. another number of cycles); results of different "
                 f"configurations are never mixed; {fresh}")
     return None
 
@@ -439,7 +439,7 @@ def _write_failure(path: Path, exc: sqlite3.DatabaseError, kept: str) -> Excepti
     """StorageError for a failed write (disk full, I/O error, read-only), else ResultsError."""
     if is_storage_failure(exc):
         return StorageError(f"{path}: cannot write ({exc}); {kept}")
-    return ResultsError(f"{path}: cannot be used as a results file ({exc}); delete it or give another --out")
+    return ResultsError(f"{path}: cannot be used as a results file ({exc}); delete it or use another results file")
 
 
 def is_storage_failure(exc: BaseException) -> bool:

@@ -293,7 +293,7 @@ class RayPool:
         self._expire_checks(force=True)
         if not any(node.state == "ready" for node in self._nodes.values()):
             raise RayUnavailable(f"no node of the Ray cluster can play this run ({len(self._nodes)} checked, "
-                                 "each excluded above); install the project on the nodes or ship it (--ship-code)")
+                                 "each excluded above); install the project on the nodes or let the run ship it with the job")
 
     def _expire_checks(self, force: bool = False) -> None:
         now = time.monotonic()

@@ -288,6 +288,25 @@ def test_seeds_a_results_file_cannot_store_are_refused(tmp_path, capsys) -> None
         check_seeds([MatchSpec("a", "b", MAX_SEED - 1), MatchSpec("a", "b", MAX_SEED + 1)])
 
 
+def test_the_runner_names_its_parameters_and_the_command_line_its_options(tmp_path, capsys) -> None:
+    from experiments.errors import ExperimentError, ParameterError
+    from experiments.runner import run_matches
+
+    out = tmp_path / "t.sqlite"
+    calls = {"seed": dict(specs=[MatchSpec("idle", "chaser", MAX_SEED + 1, 30)]),
+             "record_every": dict(specs=[MatchSpec("idle", "chaser", 0, 30)], record_dir=tmp_path / "r", record_every=0)}
+    for parameter, call in calls.items():
+        with pytest.raises(ParameterError) as caught:
+            run_matches(call.pop("specs"), out, "tournament", {}, cycles=30, progress=False, **call)
+        assert caught.value.parameter == parameter and str(caught.value).startswith(f"{parameter} ")
+        assert "--" not in str(caught.value) and isinstance(caught.value, (ValueError, ExperimentError))
+        assert not out.exists()
+    (tmp_path / "file").write_text("")
+    assert main(["tournament", "--teams", "idle,chaser", "--record-dir", str(tmp_path / "file" / "r"),
+                 "--out", str(out), *QUICK]) == 2
+    assert error_line(capsys).startswith(f"error: --record-dir {tmp_path / 'file' / 'r'}: cannot create it")
+
+
 # -- the tournament writes what its help says ----------------------------------------------
 def test_tournament_writes_the_markdown_tables_its_help_promises(played, capsys) -> None:
     with pytest.raises(SystemExit):
