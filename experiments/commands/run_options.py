@@ -189,16 +189,16 @@ def execute(args: argparse.Namespace, kind: str, specs: list[MatchSpec], params:
                             f"code ({exc.version}); --same-code refuses to mix them: give another --out, or leave "
                             "out --same-code") from None
     except ParameterError as exc:
-        raise RunInputError(f"{option_name(exc.parameter)} {exc.problem}") from None
+        option = OPTIONS.get(exc.parameter)
+        raise RunInputError(f"{option} {exc.problem}" if option else str(exc)) from None
     except (ResultsError, RayUnavailable, ValueError) as exc:
         raise RunInputError(str(exc)) from None
     print(summary.line())
     return summary
 
 
-def option_name(parameter: str) -> str:
-    """The command-line option of a library parameter: ``record_every`` -> ``--record-every``."""
-    return "--" + parameter.replace("_", "-")
+OPTIONS = {"seed": "--seed", "record_every": "--record-every", "record_dir": "--record-dir", "cycles": "--cycles"}
+"""The option of each run_matches parameter a ParameterError can name."""
 
 
 def _show_mixed_code_as_options() -> None:

@@ -275,9 +275,10 @@ class RayPool:
         instance first compiles the kernels here on every core (its workers share this cache)."""
         specs = list(specs)
         teams = tuple(sorted({name for spec in specs for name in spec.team_names}))
-        cycles = specs[0].cycles if specs else None
         config_hash, version, _ = self._args
-        self._expected = Expected.of_driver(version, config_hash, cycles, teams)
+        setting = (specs[0].cycles, specs[0].configuration, specs[0].scenario) if specs else (None, None, None)
+        cycles, configuration, scenario = setting     # one per run (see run_setting)
+        self._expected = Expected.of_driver(version, config_hash, cycles, teams, configuration, scenario)
         if self._local:
             from experiments.warmup import warm_kernels
 

@@ -146,7 +146,7 @@ def _play_match(spec: MatchSpec, record: MatchRecord, deciding: MutableSequence[
         from soccer_sim.replay import RerunRecorder
 
         recorders.append(RerunRecorder(spec.record))
-    result = run_match(home, away, seed=spec.seed, config=spec.config(), recorders=recorders)
+    result = run_match(home, away, seed=spec.seed, config=spec.config(), recorders=recorders, scenario=spec.scenario)
     disarm_timer(alarm)
     record.home_goals, record.away_goals = (int(g) for g in result.score)
     record.cycles = int(result.cycles)
