@@ -30,7 +30,7 @@ EXAMPLES: dict[str, tuple] = {
     "experiments.results.store.StorageError": ("r.sqlite: cannot store a match (database or disk is full)",),
     "experiments.results.export.ExportError": ("needs pyarrow",),
     "experiments.runner.worker.MatchTimeout": (2.5,),
-    "experiments.runner.ray_backend.RayUnavailable": ("no ray",),
+    "experiments.runner.ray_cluster.RayUnavailable": ("no ray",),
     "experiments.commands.run_options.RunInputError": ("--teams: unknown team",),
     "experiments.errors.ParameterError": ("record_every", "must be at least 1, got 0"),
     "experiments.runner.run.MixedCodeVersions": ("r.sqlite", "0.0.1+old", "0.2.0+abc"),

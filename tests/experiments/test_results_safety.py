@@ -16,6 +16,7 @@ from pathlib import Path
 
 import pytest
 
+import experiments.results.connections as connections
 import experiments.results.store as store_module
 from experiments.cli import main
 from experiments.results.record import MatchRecord
@@ -167,8 +168,8 @@ def test_a_log_left_by_kill_9_is_read_without_changing_anything(tmp_path, monkey
         return connect(database, *args, **kwargs)
 
     monkeypatch.setattr(store_module.sqlite3, "connect", no_index)
-    real_copy = getattr(store_module, "_private_copy", None)
-    monkeypatch.setattr(store_module, "_private_copy", lambda *a: copies.append(a) or real_copy(*a), raising=False)
+    real_copy = connections.private_copy
+    monkeypatch.setattr(connections, "private_copy", lambda *a: copies.append(a) or real_copy(*a))
     for directory, copied in ((crashed, 0), (locked, 1)):
         before = {name: value for name, value in files_in(directory).items() if name != "r.sqlite-shm"}
         with ResultStore.open(directory / "r.sqlite") as store:
