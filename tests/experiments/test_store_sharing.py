@@ -19,7 +19,7 @@ from experiments.results.record import MatchRecord
 from experiments.results.store import ResultsError, ResultStore
 from experiments.runner import paired_specs, run_matches
 from experiments.runner.spec import code_version, config_description, config_for, config_hash
-from tests.experiments.conftest import outcome
+from tests.experiments.helpers import outcome
 
 CYCLES = 20
 QUICK = ["--cycles", str(CYCLES), "--workers", "1", "--no-progress"]
