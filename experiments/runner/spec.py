@@ -13,6 +13,8 @@ import json
 from dataclasses import asdict, dataclass, field
 from typing import TYPE_CHECKING
 
+from experiments.errors import ParameterError
+
 if TYPE_CHECKING:  # annotations only: importing the simulator is left to what plays matches
     from soccer_sim import MatchConfig
     from soccer_sim.scenarios import Scenario
@@ -60,8 +62,8 @@ class MatchSpec:
             if self.cycles is None:
                 object.__setattr__(self, "cycles", self.configuration.max_cycles)
             elif self.cycles != self.configuration.max_cycles:
-                raise ValueError(f"cycles {self.cycles} differs from the configuration's max_cycles "
-                                 f"{self.configuration.max_cycles}")
+                raise ParameterError("cycles", f"{self.cycles} differs from the configuration's max_cycles "
+                                               f"{self.configuration.max_cycles}")
             if self.configuration == config_for(self.cycles):
                 object.__setattr__(self, "configuration", None)   # one form of each spec: equal specs compare equal
 

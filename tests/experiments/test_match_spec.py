@@ -63,8 +63,9 @@ def test_the_hash_of_a_configuration_alone_is_the_one_stored_results_files_hold(
 
 
 def test_a_configuration_that_contradicts_the_cycles_is_refused() -> None:
-    with pytest.raises(ValueError, match="max_cycles"):
+    with pytest.raises(ParameterError, match="max_cycles") as caught:
         MatchSpec("chaser", "idle", 3, 200, configuration=config_for(100))
+    assert caught.value.parameter == "cycles" and isinstance(caught.value, ValueError)
 
 
 def test_a_run_plays_one_setting_and_keys_its_matches_by_teams_and_seed(tmp_path) -> None:
