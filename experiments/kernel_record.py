@@ -43,7 +43,7 @@ def record_match(home: str, away: str, seed: int = 0, cycles: int | None = RECOR
     Kernels already called in this process before are not seen again; run it in a fresh one."""
     from numba.core.dispatcher import Dispatcher
 
-    from experiments.commands.play import match_config
+    from experiments.configuration import match_config
     from soccer_sim import run_match
 
     found: list[dict] = []

@@ -2,7 +2,7 @@
 
 def add_match_arguments(parser, matches: int) -> None:
     """The options every match benchmark takes: --home, --away, --matches, --cycles, --seed."""
-    from experiments.commands.play import positive_int
+    from experiments.arguments import positive_int
 
     parser.add_argument("--home", default="chaser", help="home team (default: chaser)")
     parser.add_argument("--away", default="chaser", help="away team (default: chaser)")

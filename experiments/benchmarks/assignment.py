@@ -22,6 +22,8 @@ from __future__ import annotations
 import argparse
 import time
 
+from experiments.errors import StudyArgumentError
+
 #: Rows of the runtime table: (label, method, algorithm).
 RUNTIME_ROWS: tuple[tuple[str, str, str | None], ...] = (
     ("mmd+msd2", "mmd+msd2", None),
@@ -84,8 +86,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--seed", type=int, default=2013, help="seed of the random instances (default: %(default)s)")
 
 
-class BenchmarkArgumentError(ValueError):
-    """A command-line value the benchmark cannot use; the message says which and why."""
+BenchmarkArgumentError = StudyArgumentError
+"""A value the benchmark cannot use: the one argument error of studies and benchmarks."""
 
 
 def _parse_sizes(text: str) -> list[int]:

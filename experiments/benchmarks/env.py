@@ -18,7 +18,7 @@ import numpy as np
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from experiments.commands.play import positive_int
+    from experiments.arguments import positive_int
 
     parser.add_argument("--cycles", type=positive_int, default=3000, help="cycles per run (default: %(default)s)")
     parser.add_argument("--repeats", type=positive_int, default=3, help="runs of each (default: %(default)s)")

@@ -17,7 +17,7 @@ import argparse
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from experiments.commands.play import positive_int
+    from experiments.arguments import positive_int
 
     parser.add_argument("--queries", type=positive_int, default=100_000, help="balls per vectorised call (default 100000)")
     parser.add_argument("--single", type=positive_int, default=20_000, help="single calls timed per case (default 20000)")

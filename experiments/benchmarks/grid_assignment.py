@@ -31,6 +31,7 @@ import numpy as np
 
 from agents.assignment import AssignmentError, assign_on_grid
 from agents.assignment.grid import random_instance
+from experiments.errors import ExperimentError, StudyArgumentError
 from experiments.results.files import make_output_directory
 
 #: Table 1 of the paper: (side, density %, robots) -> (pairs explored, baseline s, lazy s, speed-up).
@@ -49,7 +50,7 @@ PAPER_TABLE_1: dict[tuple[int, int, int], tuple[int, float, float, float]] = {
 }
 
 
-class TotalsDiffer(AssignmentError):
+class TotalsDiffer(AssignmentError, ExperimentError):
     """The lazy method and the all-pairs baseline reached different totals on one instance."""
 
 
@@ -107,7 +108,7 @@ def _numbers(text: str, kind: type, name: str) -> list:
     try:
         values = [kind(part) for part in text.split(",") if part.strip()]
     except ValueError:
-        raise ValueError(f"--{name} must be comma-separated {kind.__name__}s, got {text!r}") from None
+        raise StudyArgumentError(f"--{name} must be comma-separated {kind.__name__}s, got {text!r}") from None
     return values
 
 
@@ -119,13 +120,13 @@ def rows_of(args: argparse.Namespace) -> list[Row]:
     densities = _numbers(args.densities, float, "densities")
     cubes = _numbers(args.sizes_3d, int, "sizes-3d")
     if not sizes or not robots or not densities:
-        raise ValueError("--sizes, --robots and --densities need at least one value each")
+        raise StudyArgumentError("--sizes, --robots and --densities need at least one value each")
     if min(sizes + cubes, default=1) < 2 or min(robots) < 1:
-        raise ValueError("sizes must be at least 2 and robot counts at least 1")
+        raise StudyArgumentError("sizes must be at least 2 and robot counts at least 1")
     if not all(0.0 <= d < 1.0 for d in densities):
-        raise ValueError(f"--densities must lie in [0, 1), got {args.densities!r}")
+        raise StudyArgumentError(f"--densities must lie in [0, 1), got {args.densities!r}")
     if args.repeats < 1:
-        raise ValueError(f"--repeats must be at least 1, got {args.repeats}")
+        raise StudyArgumentError(f"--repeats must be at least 1, got {args.repeats}")
     rows = [Row((side, side), densities[0], count) for count in robots for side in sizes]
     rows += [Row((min(sizes),) * 2, density, robots[0]) for density in densities[1:]]
     rows += [Row((side,) * 3, densities[0], robots[0]) for side in cubes]

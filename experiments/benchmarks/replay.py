@@ -16,7 +16,7 @@ from pathlib import Path
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from experiments.commands.play import positive_int
+    from experiments.arguments import positive_int
 
     parser.add_argument("--home", default="mmdr", help="home team (default: %(default)s)")
     parser.add_argument("--away", default="mmd+msd2", help="away team (default: %(default)s)")
@@ -26,7 +26,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from experiments.commands.errors import fail
-    from experiments.commands.play import match_config
+    from experiments.configuration import match_config
     from experiments.reporting import Table
     from soccer_sim import ConfigError, TeamError, TeamNotFoundError, run_match
     from soccer_sim.replay import RerunRecorder

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import argparse
 
-from experiments.commands.play import positive_int
+from experiments.arguments import positive_int
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -15,10 +15,11 @@ average before and after (other programs running slow every figure down).
 from __future__ import annotations
 
 import argparse
+from experiments.errors import ExperimentError
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from experiments.commands.play import positive_int
+    from experiments.arguments import positive_int
 
     parser.add_argument("--home", default="mmd+msd2", help="home team of the match played (default: mmd+msd2)")
     parser.add_argument("--away", default="press-433", help="away team of the match played (default: press-433)")
@@ -67,7 +68,7 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-class _RunFailed(Exception):
+class _RunFailed(ExperimentError):
     """A measured command exited with an error."""
 
 

@@ -25,6 +25,11 @@ from __future__ import annotations
 
 import argparse
 
+from experiments.arguments import positive_float, positive_int
+from experiments.configuration import match_config
+
+__all__ = ["match_config", "positive_int", "register", "run"]
+
 
 def register(subparsers: argparse._SubParsersAction) -> None:
     parser = subparsers.add_parser(
@@ -43,34 +48,12 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                              "(default: the regular match)")
     parser.add_argument("--record", default=None, metavar="FILE.rrd",
                         help="also write the match as a rerun replay (watch it with `soccer-sim replay FILE.rrd`)")
-    from experiments.runner.options import positive_float
     from experiments.runner.run import DEFAULT_MATCH_TIMEOUT
 
     parser.add_argument("--match-timeout", type=positive_float, default=DEFAULT_MATCH_TIMEOUT, metavar="SECONDS",
                         help=f"stop the match with an error if it takes longer, e.g. a team that never returns "
                              f"from act() (default: {DEFAULT_MATCH_TIMEOUT:g}, as for tournaments)")
     parser.set_defaults(func=run)
-
-
-def positive_int(text: str) -> int:
-    """argparse type: a positive integer (shared by the commands and benchmarks that play matches)."""
-    value = int(text)
-    if value <= 0:
-        raise argparse.ArgumentTypeError(f"must be a positive integer, got {text}")
-    return value
-
-
-def match_config(cycles: int | None):
-    """The MatchConfig for ``--cycles``: regulation halves, stopped early at *cycles*, or two
-    halves of ceil(cycles / 2) when *cycles* is longer than a regulation match."""
-    from dataclasses import replace
-
-    from soccer_sim import MatchConfig, RuleConfig
-
-    rules = RuleConfig()
-    if cycles is not None and cycles > 2 * rules.half_cycles:
-        rules = replace(rules, half_cycles=(cycles + 1) // 2)
-    return MatchConfig(rules=rules, max_cycles=cycles)
 
 
 def run(args: argparse.Namespace) -> int:

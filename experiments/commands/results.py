@@ -14,7 +14,6 @@ input (with a one-line message), 1 when an output cannot be written (nothing par
 from __future__ import annotations
 
 import argparse
-import sys
 
 from experiments.commands import add_json_option, table_command
 from experiments.commands.errors import fail as _fail

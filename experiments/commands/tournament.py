@@ -20,7 +20,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from experiments.commands import add_json_option, doc_summary, table_command
-from experiments.commands.play import positive_int
+from experiments.arguments import positive_int
 
 KIND = "tournament"
 DEFAULT_GAMES = 20
@@ -36,7 +36,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 
 def _add_arguments(parser: argparse.ArgumentParser) -> None:
     """The options (built only when the command is chosen: listing the teams imports the simulator)."""
-    from experiments.runner.options import add_run_arguments, add_team_option
+    from experiments.commands.run_options import add_run_arguments, add_team_option
 
     add_team_option(parser, "--teams", DEFAULT_TEAMS, "the teams")
     parser.add_argument("--games", type=positive_int, default=DEFAULT_GAMES,
@@ -56,13 +56,13 @@ def build_specs(params: dict) -> list:
 
 
 def run(args: argparse.Namespace) -> int:
-    from experiments.runner.options import run_command
+    from experiments.commands.run_options import run_command
 
     return run_command(args, KIND, _params, build_specs, report)
 
 
 def _params(args: argparse.Namespace) -> dict:
-    from experiments.runner.options import team_list
+    from experiments.commands.run_options import team_list
 
     return {"teams": team_list(args.teams, "--teams", minimum=2), "games": args.games, "seed": args.seed,
             "cycles": args.cycles}

@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from pathlib import Path
 
+from experiments.errors import ExperimentError
 from experiments.results.files import atomic_output
 from experiments.results.record import MatchRecord
 
@@ -13,7 +14,7 @@ BASE_COLUMNS = ("home", "away", "seed", "config_hash", "code_version", "home_goa
                 "wall_time", "error", "forfeit", "traceback")
 
 
-class ExportError(Exception):
+class ExportError(ExperimentError):
     """An export cannot be made (a missing optional dependency)."""
 
 
@@ -51,7 +52,7 @@ def parquet_library():
         import pyarrow.parquet as pq
     except ImportError:
         raise ExportError("Parquet export needs pyarrow: pip install 'soccer-sim[parquet]' (or pip install pyarrow); "
-                          "--csv needs nothing extra") from None
+                          "CSV export needs nothing extra") from None
     return pa, pq
 
 

@@ -22,13 +22,12 @@ from __future__ import annotations
 import contextlib
 import json
 import os
-import shutil
 import sqlite3
-import tempfile
-import time
 from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 
+from experiments.errors import ExperimentError
+from experiments.results.connections import connect_read_only, connect_writable
 from experiments.results.record import FORFEIT_NONE, MatchRecord
 
 SCHEMA_VERSION = "1"
@@ -53,12 +52,12 @@ COLUMNS = ("home", "away", "seed", "config_hash", "code_version", "home_goals", 
            "wall_time", "home_stats", "away_stats", "error", "traceback", "forfeit")
 
 
-class ResultsError(Exception):
+class ResultsError(ExperimentError):
     """A results file cannot be used: unreadable, unwritable, not a results file, or made by a
     different configuration or command. The message names the file and says what to do."""
 
 
-class StorageError(Exception):
+class StorageError(ExperimentError):
     """Writing to a results file failed (disk full, I/O error, permission lost): every match
     stored before is kept. The message names the file and what was kept."""
 
@@ -88,7 +87,7 @@ class ResultStore:
         if not path.is_file():
             raise ResultsError(f"{path}: no such results file")
         try:
-            connection, cleanup = _connect_read_only(path)
+            connection, cleanup = connect_read_only(path)
         except sqlite3.OperationalError as exc:                  # e.g. no permission to read it
             raise ResultsError(f"{path}: cannot be read ({exc})") from None
         except (sqlite3.DatabaseError, UnicodeDecodeError) as exc:  # SQLite decodes damaged text too
@@ -126,7 +125,7 @@ class ResultStore:
         if path.exists() and path.stat().st_size > 0:
             _check_existing(path, kind, config_hash, config)
         try:
-            store = cls(path, _connect_writable(path), writable=True, config_hash=config_hash)
+            store = cls(path, connect_writable(path), writable=True, config_hash=config_hash)
         except sqlite3.DatabaseError as exc:
             raise _write_failure(path, exc, "no match was played") from None
         try:
@@ -276,7 +275,7 @@ def _check_existing(path: Path, kind: str, config_hash: str, config: str) -> Non
     """Refuse (ResultsError) to run into ``path`` unless it is an empty database or holds the
     results of the same command and configuration; read-only, so a refused file is left as it was."""
     try:
-        connection, cleanup = _connect_read_only(path)
+        connection, cleanup = connect_read_only(path)
     except sqlite3.DatabaseError as exc:
         raise ResultsError(_UNUSABLE.format(path=path, why=exc)) from None
     store = ResultStore(path, connection, cleanup=cleanup)
@@ -293,7 +292,7 @@ def _check_existing(path: Path, kind: str, config_hash: str, config: str) -> Non
         raise ResultsError(refusal)
 
 
-_UNUSABLE = "{path}: cannot be used as a results file ({why}); delete it or give another --out"
+_UNUSABLE = "{path}: cannot be used as a results file ({why}); delete it or use another results file"
 
 
 def _refusal(path: Path, meta: dict[str, str], tables: list[str], kind: str, config_hash: str, config: str,
@@ -305,14 +304,14 @@ def _refusal(path: Path, meta: dict[str, str], tables: list[str], kind: str, con
         return None                                           # an empty database: ours to fill
     if "kind" not in meta:
         what = contents() if contents is not None else f"an SQLite database with tables {', '.join(tables)}"
-        return f"{path}: not a soccer-sim results file ({what}); it is left untouched: give another --out"
-    fresh = f"to start fresh, delete {path} or give another --out"
+        return f"{path}: not a soccer-sim results file ({what}); it is left untouched: use another results file"
+    fresh = f"to start fresh, delete {path} or use another results file"
     if meta["kind"] != kind:
         return f"{path} holds the results of '{meta['kind']}', not '{kind}'; {fresh}"
     if meta.get("config_hash") not in (None, config_hash):
         stored, this = _difference(meta.get("config", ""), config)
         return (f"{path} holds results of a different match configuration (hash {meta['config_hash']}{stored}; "
-                f"this run: hash {config_hash}{this}; e.g. another --cycles); results of different "
+                f"this run: hash {config_hash}{this}; e.g. another number of cycles); results of different "
                 f"configurations are never mixed; {fresh}")
     return None
 
@@ -361,84 +360,11 @@ def _contents(path: Path, store: ResultStore) -> str:
     return f"an SQLite database with tables {', '.join(tables)}" if tables else "an empty SQLite database"
 
 
-BUSY_SECONDS = 30.0
-"""How long a writer waits for another process's write transaction on the same file."""
-
-
-def _connect_writable(path: Path) -> sqlite3.Connection:
-    db = sqlite3.connect(str(path), timeout=BUSY_SECONDS)
-    deadline = time.monotonic() + BUSY_SECONDS
-    try:
-        while True:
-            try:
-                db.execute("PRAGMA journal_mode = WAL")   # each commit is atomic and survives kill -9
-                break
-            except sqlite3.OperationalError as exc:
-                # Switching a new file to WAL while another process does the same can report
-                # "locked" at once, without SQLite's busy wait: wait here instead.
-                if "locked" not in str(exc) or time.monotonic() > deadline:
-                    raise
-                time.sleep(0.01)
-        db.execute("PRAGMA synchronous = NORMAL")
-    except sqlite3.DatabaseError:
-        db.close()
-        raise
-    return db
-
-
-def _connect_read_only(path: Path) -> tuple[sqlite3.Connection, Callable[[], None] | None]:
-    """A read-only connection to ``path`` that changes nothing on disk, and its clean-up.
-
-    Without a ``-wal`` (or ``-journal``) file the database file is complete, and ``immutable``
-    reads it as it is: SQLite creates no ``-wal``/``-shm`` files and takes no locks (which
-    read-only media could not hold). With one (a run in progress, or killed), plain
-    ``mode=ro`` reads the file and its log through the shared ``-shm`` index, as a reader next
-    to a writer must (``immutable`` would ignore the log's rows); where that index cannot be
-    created (read-only media), the files are read from a private copy instead."""
-    pending = [Path(f"{path}{suffix}") for suffix in ("-wal", "-journal") if Path(f"{path}{suffix}").exists()]
-    uri = path.resolve().as_uri() + ("?mode=ro" if pending else "?mode=ro&immutable=1")
-    db = None
-    try:
-        db = sqlite3.connect(uri, uri=True, timeout=30.0)
-        db.execute("SELECT COUNT(*) FROM sqlite_master").fetchone()      # the file is opened lazily
-    except sqlite3.DatabaseError as exc:
-        if db is not None:
-            db.close()
-        if pending and _cannot_open(exc):
-            return _private_copy(path, pending)
-        raise
-    return db, None
-
-
-def _cannot_open(exc: sqlite3.DatabaseError) -> bool:
-    """True when SQLite could not open (or would have to write) the files to read them."""
-    name = getattr(exc, "sqlite_errorname", "") or ""
-    text = str(exc).lower()
-    return name.startswith(("SQLITE_CANTOPEN", "SQLITE_READONLY")) or "unable to open" in text or "readonly" in text
-
-
-def _private_copy(path: Path, companions: list[Path]) -> tuple[sqlite3.Connection, Callable[[], None]]:
-    """A connection to a copy of ``path`` and its ``companions`` in a temporary directory (where
-    SQLite may merge the log), and the clean-up that removes the copy."""
-    directory = tempfile.mkdtemp(prefix="soccer-sim-results-")
-    try:
-        copy = Path(directory) / path.name
-        shutil.copyfile(path, copy)
-        for companion in companions:
-            shutil.copyfile(companion, Path(f"{copy}{companion.name[len(path.name):]}"))
-        db = sqlite3.connect(str(copy))
-        db.execute("SELECT COUNT(*) FROM sqlite_master").fetchone()
-    except BaseException:
-        shutil.rmtree(directory, ignore_errors=True)
-        raise
-    return db, lambda: shutil.rmtree(directory, ignore_errors=True)
-
-
 def _write_failure(path: Path, exc: sqlite3.DatabaseError, kept: str) -> Exception:
     """StorageError for a failed write (disk full, I/O error, read-only), else ResultsError."""
     if is_storage_failure(exc):
         return StorageError(f"{path}: cannot write ({exc}); {kept}")
-    return ResultsError(f"{path}: cannot be used as a results file ({exc}); delete it or give another --out")
+    return ResultsError(f"{path}: cannot be used as a results file ({exc}); delete it or use another results file")
 
 
 def is_storage_failure(exc: BaseException) -> bool:

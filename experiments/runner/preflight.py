@@ -13,6 +13,11 @@ from __future__ import annotations
 import re
 import time
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:  # annotations only
+    from soccer_sim import MatchConfig
+    from soccer_sim.scenarios import Scenario
 
 PLAY_LIBRARIES = ("numpy", "scipy", "numba", "pymunk", "lap")
 """Libraries whose version can change a match's result: a node must have the driver's."""
@@ -42,10 +47,20 @@ class Expected:
     cycles: int | None
     teams: tuple[str, ...]
     libraries: tuple[tuple[str, str | None], ...]
+    configuration: MatchConfig | None = None
+    """The run's whole configuration when its specs give one (else the one of ``cycles``)."""
+    scenario: Scenario | None = None
 
     @classmethod
-    def of_driver(cls, code_version: str, config_hash: str, cycles: int | None, teams: tuple[str, ...]) -> Expected:
-        return cls(code_version, config_hash, cycles, teams, library_versions())
+    def of_driver(cls, code_version: str, config_hash: str, cycles: int | None, teams: tuple[str, ...],
+                  configuration: MatchConfig | None = None, scenario: Scenario | None = None) -> Expected:
+        return cls(code_version, config_hash, cycles, teams, library_versions(), configuration, scenario)
+
+    def config(self) -> MatchConfig:
+        """The configuration this node computes for the run."""
+        from experiments.runner.spec import config_for
+
+        return self.configuration if self.configuration is not None else config_for(self.cycles)
 
 
 def library_versions() -> tuple[tuple[str, str | None], ...]:
@@ -66,10 +81,10 @@ def check_node(expected: Expected) -> NodeCheck:
     difference found (it is the returned ``problem``); an import that fails raises, and the
     driver turns the error into the reason (:func:`failure_reason`)."""
     from experiments.runner.fingerprint import code_version
-    from experiments.runner.spec import config_for, config_hash
+    from experiments.runner.spec import config_hash
 
     start = time.perf_counter()
-    version, digest = code_version(), config_hash(config_for(expected.cycles))
+    version, digest = code_version(), config_hash(expected.config(), expected.scenario)
 
     def result(problem: str | None) -> NodeCheck:
         return NodeCheck(version, digest, problem, time.perf_counter() - start)

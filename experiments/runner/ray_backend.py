@@ -32,19 +32,21 @@ hung deaf to the worker's timer forfeits).
 
 from __future__ import annotations
 
-import os
 import sys
 import time
 from collections import Counter, deque
 from collections.abc import Callable, Iterable, Iterator
-from dataclasses import dataclass
 from typing import TextIO
 
 from experiments.results.record import FORFEIT_NONE, MatchRecord
 from experiments.runner.preflight import PREFLIGHT_TIMEOUT, Expected, NodeCheck, check_node, failure_reason
-from experiments.runner.slots import FileSlot, new_token, take_slot
+from experiments.runner.ray_cluster import (ClusterNode, MatchTask, RayUnavailable, code_runtime_env, connect,
+                                            import_ray, node_gone, play_on_node, worker_died)
+from experiments.runner.slots import new_token, take_slot
 from experiments.runner.spec import MatchSpec
-from experiments.runner.worker import failed_record, play_spec
+from experiments.runner.worker import failed_record
+
+__all__ = ["RayPool", "RayUnavailable", "code_runtime_env"]
 
 RAY_GRACE = 30.0
 """Seconds a Ray task may overrun ``--match-timeout`` (worker start-up included) before it is cancelled."""
@@ -61,86 +63,8 @@ NODE_POLL = 2.0
 NODE_WAIT = 60.0
 """Seconds a run with matches left but no usable node waits for one to join before giving up."""
 
-SHIP_EXCLUDES = ["__pycache__", "*.pyc", "*.nbi", "*.nbc"]
-"""Left out of the shipped packages: caches that belong to this machine."""
-
 BLAME_TIMEOUT = 30.0
 """Seconds the task that reads a dead worker's slot on its node may take; past that nobody is blamed."""
-
-class RayUnavailable(Exception):
-    """Ray is not installed, the cluster cannot be reached or none of its nodes can play."""
-
-
-@dataclass
-class _Node:
-    """A node of the cluster as the run sees it."""
-
-    id: str
-    ip: str
-    slots: int
-    state: str = "checking"
-    """checking (pre-flight running), ready, or out."""
-    busy: int = 0
-    failures: int = 0
-    """Tasks failed in a row for reasons outside the match."""
-    submit: object = None
-    """The match task pinned to this node."""
-
-    @property
-    def name(self) -> str:
-        return f"node {self.id} ({self.ip})"
-
-
-@dataclass
-class _Task:
-    spec: MatchSpec
-    node: _Node
-    started: float
-    attempt: int
-    failed_on: frozenset[str] = frozenset()
-    """Nodes this match failed on before (tried last)."""
-    token: str = ""
-    """Names the task's slot file on its node (:mod:`experiments.runner.slots`)."""
-
-
-def play_on_node(token: str, spec: MatchSpec, config_hash: str, code_version: str, timeout: float | None,
-                 figures: Callable[[], object] | None = None) -> MatchRecord:
-    """The match task: :func:`play_spec` with its deciding slot in the file ``token`` names on
-    this node, removed when the match returns (left for the driver if the worker dies)."""
-    with FileSlot(token) as slot:
-        return play_spec(spec, config_hash, code_version, timeout, deciding=slot.values, figures=figures)
-
-
-def code_runtime_env(local: bool) -> dict:
-    """The job's runtime_env that makes Ray workers import the driver's packages: their parent
-    directories first on PYTHONPATH for a private local instance (the same files, so the same
-    numba cache), the package directories as ``py_modules`` for a cluster."""
-    from experiments.runner.fingerprint import package_dirs
-
-    dirs = package_dirs()
-    if local:
-        roots = list(dict.fromkeys(str(path.parent) for path in dirs.values()))
-        existing = [entry for entry in os.environ.get("PYTHONPATH", "").split(os.pathsep) if entry]
-        return {"env_vars": {"PYTHONPATH": os.pathsep.join(dict.fromkeys(roots + existing))}}
-    return {"py_modules": [str(path) for path in dirs.values()], "excludes": SHIP_EXCLUDES}
-
-
-def _node_gone(exc: BaseException) -> bool:
-    """Whether a task failed because its node died or no longer exists."""
-    from ray import exceptions
-
-    gone = tuple(getattr(exceptions, name) for name in ("NodeDiedError", "TaskUnschedulableError")
-                 if hasattr(exceptions, name))
-    return isinstance(exc, gone)
-
-
-def _worker_died(exc: BaseException) -> bool:
-    """Whether a task failed because the worker process running it ended (a crash, os._exit)."""
-    from ray import exceptions
-
-    return isinstance(exc, exceptions.WorkerCrashedError) or (
-        isinstance(exc, exceptions.RayTaskError) and isinstance(exc.cause, exceptions.WorkerCrashedError))
-
 
 class RayPool:
     """Plays specs as Ray tasks on the cluster at ``address`` (see the module docstring)."""
@@ -148,38 +72,15 @@ class RayPool:
     def __init__(self, workers: int | None, config_hash: str, version: str, timeout: float | None,
                  address: str | None = None, *, ship_code: bool = True, figures: Callable[[], object] | None = None,
                  stream: TextIO | None = None) -> None:
-        try:
-            import ray
-        except ImportError:
-            raise RayUnavailable("the Ray backend needs Ray: pip install 'soccer-sim[ray]' "
-                                 "(or pip install ray)") from None
+        ray = import_ray()
         self._ray = ray
         self._args = (config_hash, version, timeout)
         self._timeout = timeout
         self._stream = stream
         ship = ship_code
         self._figures = figures
-        target = address or os.environ.get("RAY_ADDRESS") or None
-        self._local = target is None
         self._started_here = not ray.is_initialized()
-        if self._started_here:
-            options: dict = dict(include_dashboard=False, log_to_driver=False, configure_logging=False)
-            if ship:
-                options["runtime_env"] = code_runtime_env(self._local)
-            try:
-                if target:
-                    ray.init(address=target, **options)  # an existing cluster: its own resources
-                else:
-                    ray.init(address="local", num_cpus=workers, **options)
-            except Exception as exc:  # noqa: BLE001 - Ray raises many kinds for an unreachable cluster
-                where = f" at {target}" if target else ""
-                raise RayUnavailable(f"cannot start or reach Ray{where}: {type(exc).__name__}: {exc}") from None
-            self._local = target is None
-            where = (f"joined the cluster at {ray.get_runtime_context().gcs_address}"
-                     f"{'' if address else ' (RAY_ADDRESS)'}") if target else "started a private local Ray instance"
-        else:
-            self._local = False
-            where = "using the Ray session already initialized in this process"
+        self._local, where = connect(ray, workers, address, ship)
         self._cap = workers if self._local else None
         nodes = self._alive()
         cpus = sum(self._slots(info) for info in nodes.values())
@@ -190,11 +91,11 @@ class RayPool:
         self._remote = ray.remote(num_cpus=1, max_retries=0)(play_on_node)
         self._check = ray.remote(num_cpus=1, max_retries=0)(check_node)
         self._take_slot = ray.remote(num_cpus=0, max_retries=0)(take_slot)
-        self._blames: dict[object, tuple[_Task, str, float, bool]] = {}
+        self._blames: dict[object, tuple[MatchTask, str, float, bool]] = {}
         """Slot reads in flight: the failed task, why it failed, when (the read started then),
         whether it was cancelled as overdue (else its worker died)."""
-        self._nodes: dict[str, _Node] = {}
-        self._checks: dict[object, tuple[_Node, float]] = {}
+        self._nodes: dict[str, ClusterNode] = {}
+        self._checks: dict[object, tuple[ClusterNode, float]] = {}
         self._expected: Expected | None = None
         self._played: Counter[str] = Counter()
         self._last_poll = 0.0
@@ -220,7 +121,7 @@ class RayPool:
         given_up: list[MatchRecord] = []
         for node_id, info in alive.items():
             if node_id not in self._nodes:
-                node = _Node(node_id, info.get("NodeManagerAddress", "?"), self._slots(info))
+                node = ClusterNode(node_id, info.get("NodeManagerAddress", "?"), self._slots(info))
                 pin = self._pin(node_id)
                 node.submit = self._remote.options(scheduling_strategy=pin).remote
                 self._nodes[node_id] = node
@@ -230,7 +131,7 @@ class RayPool:
                 given_up += self._take_out(node, "left the cluster")
         return given_up
 
-    def _checked(self, ref, node: _Node) -> None:
+    def _checked(self, ref, node: ClusterNode) -> None:
         """Accept or leave out ``node`` by its pre-flight's result."""
         try:
             check: NodeCheck = self._ray.get(ref)
@@ -244,7 +145,7 @@ class RayPool:
         else:
             self._take_out(node, problem)
 
-    def _take_out(self, node: _Node, reason: str) -> list[MatchRecord]:
+    def _take_out(self, node: ClusterNode, reason: str) -> list[MatchRecord]:
         """Leave ``node`` out of the run; its matches in flight go back to the queue (or are
         given up after :data:`MATCH_RETRIES`); returns the records of those given up."""
         node.state = "out"
@@ -258,7 +159,7 @@ class RayPool:
         node.busy = 0
         return given_up
 
-    def _requeue(self, task: _Task, message: str) -> list[MatchRecord]:
+    def _requeue(self, task: MatchTask, message: str) -> list[MatchRecord]:
         if task.attempt < MATCH_RETRIES:
             self._pending.appendleft((task.spec, task.attempt + 1, task.failed_on | {task.node.id}))
             return []
@@ -274,14 +175,15 @@ class RayPool:
         instance first compiles the kernels here on every core (its workers share this cache)."""
         specs = list(specs)
         teams = tuple(sorted({name for spec in specs for name in spec.team_names}))
-        cycles = specs[0].cycles if specs else None
         config_hash, version, _ = self._args
-        self._expected = Expected.of_driver(version, config_hash, cycles, teams)
+        setting = (specs[0].cycles, specs[0].configuration, specs[0].scenario) if specs else (None, None, None)
+        cycles, configuration, scenario = setting     # one per run (see run_setting)
+        self._expected = Expected.of_driver(version, config_hash, cycles, teams, configuration, scenario)
         if self._local:
             from experiments.warmup import warm_kernels
 
             warm_kernels(teams, processes=self.size)
-        self._in_flight: dict[object, _Task] = {}
+        self._in_flight: dict[object, MatchTask] = {}
         self._pending: deque[tuple[MatchSpec, int, frozenset[str]]] = deque()
         self._poll()
         deadline = time.monotonic() + PREFLIGHT_TIMEOUT
@@ -292,7 +194,8 @@ class RayPool:
         self._expire_checks(force=True)
         if not any(node.state == "ready" for node in self._nodes.values()):
             raise RayUnavailable(f"no node of the Ray cluster can play this run ({len(self._nodes)} checked, "
-                                 "each excluded above); install the project on the nodes or ship it (--ship-code)")
+                                 "each excluded above); install the project on the nodes or let the run ship it with "
+                                 "the job")
 
     def _expire_checks(self, force: bool = False) -> None:
         now = time.monotonic()
@@ -369,20 +272,20 @@ class RayPool:
                     continue
                 self._pending.popleft()
                 node.busy += 1
-                task = _Task(spec, node, time.monotonic(), attempt, failed_on, new_token())
+                task = MatchTask(spec, node, time.monotonic(), attempt, failed_on, new_token())
                 self._in_flight[node.submit(task.token, spec, *self._args, figures=self._figures)] = task
 
-    def _finished(self, ref, task: _Task, version: str) -> Iterator[MatchRecord]:
+    def _finished(self, ref, task: MatchTask, version: str) -> Iterator[MatchRecord]:
         node = task.node
         node.busy = max(node.busy - 1, 0)
         try:
             record: MatchRecord = self._ray.get(ref)
         except Exception as exc:  # noqa: BLE001 - a dead worker, a lost node, a module missing there
             reason = failure_reason(exc)
-            if _worker_died(exc) and not _node_gone(exc):  # whose code was it running? ask its node
+            if worker_died(exc) and not node_gone(exc):  # whose code was it running? ask its node
                 self._ask_slot(task, reason)
                 return
-            yield from self._node_failed(task, reason, _node_gone(exc))
+            yield from self._node_failed(task, reason, node_gone(exc))
             return
         if record.code_version != version:  # never store what other code played
             if node.state != "out":
@@ -400,7 +303,7 @@ class RayPool:
 
         return NodeAffinitySchedulingStrategy(node_id, soft=False)
 
-    def _node_failed(self, task: _Task, reason: str, gone: bool = False) -> Iterator[MatchRecord]:
+    def _node_failed(self, task: MatchTask, reason: str, gone: bool = False) -> Iterator[MatchRecord]:
         """``task`` failed with nobody to blame: one more failure in a row of its node (taken
         out at :data:`NODE_FAILURE_LIMIT`, or at once if ``gone``), the match played again."""
         node = task.node
@@ -411,13 +314,13 @@ class RayPool:
             yield from self._take_out(node, f"{node.failures} tasks failed in a row (last: {reason})")
         yield from self._requeue(task, f"RayTaskFailed on {node.name}: {reason}")
 
-    def _ask_slot(self, task: _Task, reason: str, overdue: bool = False) -> None:
+    def _ask_slot(self, task: MatchTask, reason: str, overdue: bool = False) -> None:
         """Read, on its node, the slot of ``task``, whose worker died (or, if ``overdue``, was
         cancelled): whose code was it running? The answer is handled by :meth:`_blamed`."""
         ref = self._take_slot.options(scheduling_strategy=self._pin(task.node.id)).remote(task.token)
         self._blames[ref] = (task, reason, time.monotonic(), overdue)
 
-    def _blamed(self, ref, task: _Task, reason: str, ended: float, overdue: bool,
+    def _blamed(self, ref, task: MatchTask, reason: str, ended: float, overdue: bool,
                 answered: bool = True) -> Iterator[MatchRecord]:
         """The slot of ``task`` has been read (``ref``; not if ``answered`` is False): the match
         is forfeited by the side whose code the worker was running. With no side (or no

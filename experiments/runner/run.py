@@ -11,15 +11,22 @@ import contextlib
 import os
 import sys
 import time
+import warnings
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
+from experiments.errors import ExperimentError, ParameterError
 from experiments.results.leases import LEASE_SECONDS, SharedWork
 from experiments.results.record import FORFEIT_NONE, MatchRecord
 from experiments.results.store import ResultsError, ResultStore, StorageError
 from experiments.runner.progress import RunProgress
 from experiments.runner.spec import MatchSpec, code_version, config_description, config_for, config_hash
+
+if TYPE_CHECKING:  # annotations only
+    from soccer_sim import MatchConfig
+    from soccer_sim.scenarios import Scenario
 
 DEFAULT_MATCH_TIMEOUT = 600.0
 """Seconds one match may take before it is stopped and forfeited (a full match between two
@@ -44,7 +51,32 @@ def unblamed(record: MatchRecord) -> bool:
     return failed_with_no_team_at_fault(record)
 
 
-class RunStopped(Exception):
+class MixedCodeVersions(ResultsError):
+    """A resume with ``same_code`` into a results file holding matches of another code version."""
+
+    def __init__(self, path: str, others: str, version: str) -> None:
+        super().__init__(f"{path} holds matches played by another code version ({others}), not by this code "
+                         f"({version}); same_code refuses to mix them: use another results file, or allow it")
+        self.path, self.others, self.version = path, others, version
+
+    def __reduce__(self):
+        return type(self), (self.path, self.others, self.version)
+
+
+class MixedCodeWarning(ExperimentError, UserWarning):
+    """A resume into a results file holding matches of another code version: its tables will
+    mix code versions (``same_code`` refuses this instead)."""
+
+    def __init__(self, path: str, others: str, version: str) -> None:
+        super().__init__(f"{path} holds matches played by another code version ({others}); this run plays the "
+                         f"rest with {version}, so its tables mix code versions (same_code refuses this)")
+        self.path, self.others, self.version = path, others, version
+
+    def __reduce__(self):
+        return type(self), (self.path, self.others, self.version)
+
+
+class RunStopped(ExperimentError):
     """The failure policy stopped the run; the message says why, what is stored and how to resume."""
 
 
@@ -148,9 +180,11 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
     before playing it, and at the end waits for the matches another run is still playing (up
     to ``wait`` seconds without progress; default: the match timeout plus a lease's life), so
     its records are complete unless ``RunSummary.unfinished`` says otherwise. A resume that
-    would mix code versions is warned about on stderr, or refused with ``same_code``.
+    would mix code versions is warned about (:class:`MixedCodeWarning`, shown on stderr by
+    Python's warnings), or refused with ``same_code``.
 
-    Raises ValueError for seeds a results file cannot store,
+    Raises ParameterError (a ValueError) for a parameter out of range (seeds a results file
+    cannot store, ``record_every``, ``record_dir``),
     :class:`~experiments.results.store.ResultsError` for an unusable file,
     :class:`~experiments.results.store.StorageError` when storing fails part-way (disk full) and
     :class:`~experiments.runner.ray_backend.RayUnavailable` when Ray cannot be used; every
@@ -160,14 +194,14 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
     if backend not in BACKENDS:
         raise ValueError(f"unknown backend {backend!r}; choose one of {', '.join(BACKENDS)}")
     specs = list(dict.fromkeys(specs))
+    config, scenario = run_setting(specs, cycles)
     check_seeds(specs)
     if record_dir is not None:
         specs = with_replays(specs, Path(record_dir), record_every)
-    config = config_for(cycles)
-    digest, version = config_hash(config), code_version()
+    digest, version = config_hash(config, scenario), code_version()
     start = time.monotonic()
     check_code_versions(path, kind, digest, version, specs, retry_errors, same_code)
-    with ResultStore.create(path, kind, digest, config_description(config), params) as store:
+    with ResultStore.create(path, kind, digest, config_description(config, scenario), params) as store:
         keys = [spec.key for spec in specs]
         # A failure no team is blamed for (a worker that died, a lost Ray node) is played again;
         # a forfeit is a result (the same team would fail the same way) unless retry_errors.
@@ -211,9 +245,9 @@ def _stop_message(tally: _Tally, policy: FailurePolicy, todo: int, path: object)
 
 def check_code_versions(path: str | os.PathLike, kind: str, digest: str, version: str,
                         specs: Sequence[MatchSpec], retry_errors: bool, same_code: bool) -> None:
-    """Before a resume into ``path`` plays anything: one warning line on stderr when the file
-    holds matches of another code version (its tables would mix versions), or ResultsError
-    with ``same_code``. Read-only, so a refused file is left as it was; a file the run cannot
+    """Before a resume into ``path`` plays anything: a :class:`MixedCodeWarning` when the file
+    holds matches of another code version (its tables would mix versions), or
+    :class:`MixedCodeVersions` (a ResultsError) with ``same_code``. Read-only, so a refused file is left as it was; a file the run cannot
     use is left for :meth:`ResultStore.create` to refuse."""
     path = Path(path)
     if not path.is_file() or path.stat().st_size == 0:
@@ -230,26 +264,38 @@ def check_code_versions(path: str | os.PathLike, kind: str, digest: str, version
     if all(spec.key in kept for spec in specs):
         return                                         # nothing to play: nothing is mixed
     if same_code:
-        raise ResultsError(f"{path} holds matches played by another code version ({others}), not by this code "
-                           f"({version}); --same-code refuses to mix them: give another --out, or leave out "
-                           "--same-code")
-    print(f"warning: {path} holds matches played by another code version ({others}); this run plays the rest "
-          f"with {version}, so its tables mix code versions (--same-code refuses this)", file=sys.stderr)
+        raise MixedCodeVersions(str(path), others, version)
+    warnings.warn(MixedCodeWarning(str(path), others, version), stacklevel=3)
 
 
 def _note(message: str) -> None:
     print(message, file=sys.stderr, flush=True)
 
 
+def run_setting(specs: Sequence[MatchSpec], cycles: int | None) -> tuple[MatchConfig, Scenario | None]:
+    """The one (configuration, scenario) every spec of a run plays (that of ``cycles`` for no
+    specs): a results file holds the matches of one setting, keyed by teams and seed, so specs
+    of different settings, or different specs with the same teams and seed, are a ParameterError."""
+    settings = {(spec.config(), spec.scenario) for spec in specs}
+    if len(settings) > 1:
+        raise ParameterError("specs", "must all play one configuration and scenario: a results file holds the "
+                                      "matches of one")
+    if len({spec.key for spec in specs}) < len(specs):
+        raise ParameterError("specs", "must differ in teams or seed: a results file keys its matches by them")
+    return settings.pop() if settings else (config_for(cycles), None)
+
+
 def check_seeds(specs: Sequence[MatchSpec]) -> None:
-    """ValueError unless every seed of ``specs`` fits a results file (0 to MAX_SEED), saying
-    which first seed (``--seed``) would: the specs' seeds run from the first one upwards."""
+    """ParameterError (a ValueError) for ``seed`` unless every seed of ``specs`` fits a results
+    file (0 to MAX_SEED), saying which first seed would: the specs' seeds run from the first
+    one upwards."""
     if not specs:
         return
     low, high = min(spec.seed for spec in specs), max(spec.seed for spec in specs)
     if low < 0 or high > MAX_SEED:
-        raise ValueError(f"--seed must be between 0 and {MAX_SEED - (high - low)} for this run (its seeds go "
-                         f"from --seed to --seed + {high - low}, and a results file stores seeds up to {MAX_SEED})")
+        raise ParameterError("seed", f"must be between 0 and {MAX_SEED - (high - low)} for this run (its seeds go "
+                             f"from the first seed to the first + {high - low}, and a results file stores seeds up "
+                             f"to {MAX_SEED})")
 
 
 def _store(store: ResultStore, record: MatchRecord, keys: list[tuple[str, str, int]]) -> None:
@@ -289,14 +335,15 @@ def replay_name(spec: MatchSpec) -> str:
 
 def with_replays(specs: list[MatchSpec], directory: Path, every: int) -> list[MatchSpec]:
     """``specs`` with every ``every``-th one (0, every, 2 every, ...) set to record a replay in
-    ``directory`` (created); ValueError for ``every`` < 1 or a directory that cannot be made."""
+    ``directory`` (created); ParameterError (a ValueError) for ``every`` < 1 or a directory
+    that cannot be made."""
     from dataclasses import replace
 
     if every < 1:
-        raise ValueError(f"--record-every must be at least 1, got {every}")
+        raise ParameterError("record_every", f"must be at least 1, got {every}")
     try:
         directory.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        raise ValueError(f"--record-dir {directory}: cannot create it ({exc.strerror})") from None
+        raise ParameterError("record_dir", f"{directory}: cannot create it ({exc.strerror})") from None
     return [replace(spec, record=str(directory / replay_name(spec))) if k % every == 0 else spec
             for k, spec in enumerate(specs)]

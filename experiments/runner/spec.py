@@ -1,8 +1,9 @@
 """What the runner plays: match specifications, the configuration they share and its hash.
 
-A match is a pure function of (home, away, seed, configuration), so a specification plus the
-configuration's hash is the key of a stored result: re-running a command plays only the keys
-its results file does not hold yet.
+A match is a pure function of (home, away, seed, configuration, scenario), so a
+specification's :attr:`MatchSpec.identity` covers all of them, and a results file, which holds
+the matches of one configuration and scenario (their :func:`config_hash`), keys each match by
+(home, away, seed): re-running a command plays only the keys its results file does not hold yet.
 """
 
 from __future__ import annotations
@@ -12,20 +13,26 @@ import json
 from dataclasses import asdict, dataclass, field
 from typing import TYPE_CHECKING
 
+from experiments.errors import ParameterError
+
 if TYPE_CHECKING:  # annotations only: importing the simulator is left to what plays matches
     from soccer_sim import MatchConfig
+    from soccer_sim.scenarios import Scenario
 
 
 @dataclass(frozen=True, order=True)
 class MatchSpec:
     """One match to play: team names (registered names, ``package.module:Attribute`` paths or
-    mixed-team names, see :mod:`experiments.mixed_team`), the seed and the cycle limit."""
+    mixed-team names, see :mod:`experiments.mixed_team`), the seed, the cycle limit, and
+    optionally a whole configuration and a scenario. Equal specs play the same match; see
+    :attr:`identity` for one digest of everything that changes play."""
 
     home: str
     away: str
     seed: int
     cycles: int | None = None
-    """``--cycles`` of the command (None: a regulation match); see :func:`config_for`."""
+    """The cycle limit (None: a regulation match); the configuration is :func:`config_for` it
+    unless ``configuration`` is given (then it is that configuration's ``max_cycles``)."""
     record: str | None = field(default=None, compare=False)
     """A path to write the match's rerun replay to (``--record-dir``), or None; not part of
     the match's identity."""
@@ -44,6 +51,33 @@ class MatchSpec:
     pre-flight loads them); None: ``home`` and ``away``. Follows from ``play_args``, so it is
     not part of the identity."""
 
+    configuration: MatchConfig | None = None
+    """The whole match configuration (physics, rules, stamina, field), or None for the one of
+    ``cycles`` (:func:`config_for`)."""
+    scenario: Scenario | None = None
+    """A scenario to play instead of the regular match from the kick-off, or None."""
+
+    def __post_init__(self) -> None:
+        if self.configuration is not None:
+            if self.cycles is None:
+                object.__setattr__(self, "cycles", self.configuration.max_cycles)
+            elif self.cycles != self.configuration.max_cycles:
+                raise ParameterError("cycles", f"{self.cycles} differs from the configuration's max_cycles "
+                                               f"{self.configuration.max_cycles}")
+            if self.configuration == config_for(self.cycles):
+                object.__setattr__(self, "configuration", None)   # one form of each spec: equal specs compare equal
+
+    @property
+    def identity(self) -> str:
+        """A short stable digest (16 hex digits of SHA-256) of everything that changes play: the
+        teams, the seed, the whole resolved configuration, the scenario's content (not only its
+        name), and a study's ``play`` function and arguments. Equal specs have equal identities;
+        the replay path and ``plays_teams`` are not part of it."""
+        described = {"home": self.home, "away": self.away, "seed": self.seed, "play": self.play,
+                     "play_args": [list(pair) for pair in self.play_args],
+                     "setting": json.loads(config_description(self.config(), self.scenario))}
+        return _digest(json.dumps(described, sort_keys=True, default=str))
+
     @property
     def team_names(self) -> tuple[str, ...]:
         """The team names this spec plays: ``plays_teams``, else (home, away)."""
@@ -55,24 +89,38 @@ class MatchSpec:
         return (self.home, self.away, self.seed)
 
     def config(self) -> MatchConfig:
-        return config_for(self.cycles)
+        """The configuration this spec plays with: ``configuration``, else that of ``cycles``."""
+        return self.configuration if self.configuration is not None else config_for(self.cycles)
 
 
 def config_for(cycles: int | None) -> MatchConfig:
-    """The MatchConfig of ``--cycles`` (the same rule as ``soccer-sim play``)."""
-    from experiments.commands.play import match_config
+    """The MatchConfig of a cycle limit (the same rule as ``soccer-sim play``, see
+    :func:`experiments.configuration.match_config`)."""
+    from experiments.configuration import match_config
 
     return match_config(cycles)
 
 
-def config_description(config: MatchConfig) -> str:
-    """Every parameter of ``config`` as canonical JSON (sorted keys)."""
-    return json.dumps(asdict(config), sort_keys=True, default=str)
+def config_description(config: MatchConfig, scenario: Scenario | None = None) -> str:
+    """Every parameter of ``config`` as canonical JSON (sorted keys), with the whole content of
+    ``scenario`` under the key ``scenario`` when one is played."""
+    described = asdict(config)
+    if scenario is not None:
+        from soccer_sim.scenarios import scenario_to_dict
+
+        described["scenario"] = scenario_to_dict(scenario)
+    return json.dumps(described, sort_keys=True, default=str)
 
 
-def config_hash(config: MatchConfig) -> str:
-    """A short stable hash of every parameter of ``config`` (16 hex digits of SHA-256)."""
-    return hashlib.sha256(config_description(config).encode()).hexdigest()[:16]
+def config_hash(config: MatchConfig, scenario: Scenario | None = None) -> str:
+    """A short stable hash (16 hex digits of SHA-256) of every parameter of ``config`` and the
+    content of ``scenario``: the configuration a results file holds matches of. Without a
+    scenario it is the hash of the configuration alone, as results files have always stored."""
+    return _digest(config_description(config, scenario))
+
+
+def _digest(text: str) -> str:
+    return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
 def paired_specs(team: str, opponent: str, games: int, seed: int, cycles: int | None) -> list[MatchSpec]:

@@ -18,6 +18,7 @@ import traceback as tb
 from collections.abc import Callable, MutableSequence
 from typing import Protocol
 
+from experiments.errors import ExperimentError
 from experiments.results.record import FORFEIT_NONE, MatchRecord
 from experiments.runner.spec import MatchSpec
 
@@ -35,8 +36,8 @@ class MatchFigures(Protocol):
     def figures(self) -> dict[str, float]: ...
 
 
-class MatchTimeout(Exception):
-    """A match overran its time budget (``--match-timeout``)."""
+class MatchTimeout(ExperimentError):
+    """A match overran its time budget (the run's ``match_timeout``)."""
 
     def __init__(self, seconds: float) -> None:
         super().__init__(f"match exceeded its time budget of {seconds:g} s")
@@ -145,7 +146,7 @@ def _play_match(spec: MatchSpec, record: MatchRecord, deciding: MutableSequence[
         from soccer_sim.replay import RerunRecorder
 
         recorders.append(RerunRecorder(spec.record))
-    result = run_match(home, away, seed=spec.seed, config=spec.config(), recorders=recorders)
+    result = run_match(home, away, seed=spec.seed, config=spec.config(), recorders=recorders, scenario=spec.scenario)
     disarm_timer(alarm)
     record.home_goals, record.away_goals = (int(g) for g in result.score)
     record.cycles = int(result.cycles)

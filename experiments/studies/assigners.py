@@ -35,7 +35,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from experiments.commands.play import positive_int
+from experiments.arguments import positive_int
 
 if TYPE_CHECKING:
     from experiments.reporting import Table
@@ -148,7 +148,7 @@ def team_figure(summaries: list[MatchSummary], team: str, figure: str) -> np.nda
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     from experiments.commands import doc_summary
-    from experiments.runner.options import add_run_arguments
+    from experiments.commands.run_options import add_run_arguments
 
     parser.description = doc_summary(__doc__)
     parser.add_argument("--part", choices=("all", *PARTS), default="all")
@@ -163,14 +163,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from experiments.runner.options import run_command
+    from experiments.commands.run_options import run_command
 
     return run_command(args, KIND, _params, build_specs, report, figures=StudyFigures)
 
 
 def _params(args: argparse.Namespace) -> dict:
     """The study's parameters, every team list checked (a RunInputError naming the option)."""
-    from experiments.runner.options import RunInputError, team_list
+    from experiments.commands.run_options import RunInputError, team_list
 
     parts = list(PARTS) if args.part == "all" else [args.part]
     league = team_list(args.league, "--league", 2 if "league" in parts else 0)

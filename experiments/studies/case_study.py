@@ -28,8 +28,8 @@ BEHAVIOUR = (("role switches / min", "role_switches_per_minute", 1.0),
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from experiments.commands.play import positive_int
-    from experiments.runner.options import add_run_arguments, add_team_option
+    from experiments.arguments import positive_int
+    from experiments.commands.run_options import add_run_arguments, add_team_option
 
     parser.description = doc_summary(__doc__)
     add_team_option(parser, "--teams", DEFAULT_TEAMS, "the assigner variants compared")
@@ -49,13 +49,13 @@ def build_specs(params: dict) -> list:
 
 
 def run(args: argparse.Namespace) -> int:
-    from experiments.runner.options import run_command
+    from experiments.commands.run_options import run_command
 
     return run_command(args, KIND, _params, build_specs, report)
 
 
 def _params(args: argparse.Namespace) -> dict:
-    from experiments.runner.options import RunInputError, team_list
+    from experiments.commands.run_options import RunInputError, team_list
 
     # Each list on its own first, so a bad --opponents is named as such before --baseline is
     # checked against --teams.

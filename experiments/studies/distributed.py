@@ -34,16 +34,13 @@ from pathlib import Path
 
 import numpy as np
 
+from experiments.errors import StudyArgumentError
 from experiments.results.files import make_output_directory
 
 #: Side of the squares of the worst-case construction, in units of r_comm (> 2: isolated targets).
 WORST_CASE_SPACING = 2.5
 #: The paper's empirical band for GRID ASSGMT in dense environments: T / sqrt(|E|) in [1.5, 2.5].
 PAPER_GRID_BAND = (1.5, 2.5)
-
-
-class StudyArgumentError(ValueError):
-    """A command-line value the study cannot use; the message names the option."""
 
 
 @dataclass(frozen=True)

@@ -39,8 +39,8 @@ class DropInGame:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from experiments.commands.play import positive_int
-    from experiments.runner.options import add_run_arguments, add_team_option
+    from experiments.arguments import positive_int
+    from experiments.commands.run_options import add_run_arguments, add_team_option
 
     parser.description = doc_summary(__doc__)
     add_team_option(parser, "--candidates", DEFAULT_CANDIDATES, "the players compared, the first against each other one")
@@ -85,13 +85,13 @@ def build_specs(params: dict) -> list:
 
 
 def run(args: argparse.Namespace) -> int:
-    from experiments.runner.options import run_command
+    from experiments.commands.run_options import run_command
 
     return run_command(args, KIND, _params, build_specs, report)
 
 
 def _params(args: argparse.Namespace) -> dict:
-    from experiments.runner.options import team_list
+    from experiments.commands.run_options import team_list
 
     return {"candidates": team_list(args.candidates, "--candidates", minimum=2),
             "pool": team_list(args.pool, "--pool"), "games": args.games, "seed": args.seed, "cycles": args.cycles}

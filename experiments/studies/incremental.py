@@ -30,11 +30,8 @@ from pathlib import Path
 import numpy as np
 
 from agents.assignment import AssignmentError, IncrementalAssignment
+from experiments.errors import StudyArgumentError
 from experiments.results.files import make_output_directory
-
-
-class StudyArgumentError(ValueError):
-    """A command-line value the study cannot use; the message names the option."""
 
 
 @dataclass(frozen=True)

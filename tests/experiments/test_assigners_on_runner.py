@@ -5,12 +5,14 @@ a match are the same whether the match is played in a worker or here."""
 
 from __future__ import annotations
 
+import json
+
 import pytest
 
 from experiments.cli import main
 from experiments.runner import MatchSpec, config_for, run_matches
 from experiments.studies.assigners import SET_PLAY_PREFIX, STALL_FIGURE, MatchSummary, StudyFigures
-from tests.experiments.conftest import SCRIPTED
+from tests.experiments.helpers import SCRIPTED, outcome
 
 STUDY = ["experiment", "assigners", "--cycles", "60", "--no-progress"]
 
@@ -32,25 +34,32 @@ def test_a_failing_and_a_hanging_team_forfeit_and_the_study_goes_on(tmp_path, ca
     assert (tmp_path / "a-tables" / "league.csv").is_file() and (tmp_path / "a-tables" / "assigners.md").is_file()
 
 
-def test_a_resumed_study_prints_the_same_tables_as_one_run_and_as_results_show(tmp_path, capsys) -> None:
+def test_a_resumed_study_gives_the_same_tables_as_one_run_and_as_results_show(tmp_path, capsys) -> None:
+    from experiments.results.store import ResultStore
+
     whole, resumed = tmp_path / "whole.sqlite", tmp_path / "resumed.sqlite"
-    teams = ["--league", "idle,static", "--assigners", "static"]
-    assert main([*STUDY, "--part", "chaser", *teams, "--league-games", "2", "--workers", "2", "--out", str(whole)]) == 0
-    reference = tables_only(capsys.readouterr().out)
-    assert any("every team against chaser" in line for line in reference)
-    # Half of the study first (as if stopped), then all of it on one worker: only the rest is played.
-    assert main([*STUDY, "--part", "chaser", "--league", "idle", "--assigners", "idle", "--league-games", "2",
-                 "--workers", "1", "--out", str(resumed)]) == 0
+    forward = SCRIPTED + "Forward"
+    chaser_part = [*STUDY, "--part", "chaser", "--league-games", "2", "--json"]
+    teams = ["--league", f"idle,{forward}", "--assigners", forward]
+    assert main([*chaser_part, *teams, "--workers", "2", "--out", str(whole)]) == 0
+    reference = json.loads(capsys.readouterr().out)["tables"]
+    (table,) = reference
+    assert table["title"] == "every team against chaser"
+    assert [row[:2] for row in table["rows"]] == [["idle", 2], [forward, 2]]
+    # Half of the study first (as if stopped), then all of it: only the rest is played.
+    assert main([*chaser_part, "--league", "idle", "--assigners", "idle", "--workers", "1", "--out", str(resumed)]) == 0
     capsys.readouterr()
-    assert main([*STUDY, "--part", "chaser", *teams, "--league-games", "2", "--workers", "1",
-                 "--out", str(resumed)]) == 0
-    out = capsys.readouterr().out
-    assert "4 matches in" in out and "(2 already stored): played 2" in out
-    assert tables_only(out) == reference
-    assert main(["results", "show", str(resumed)]) == 0
-    shown = capsys.readouterr().out.splitlines()
-    assert shown[0].startswith(f"{resumed}: assigners, 4 of 4 matches stored (0 failed)")
-    assert shown[1:] == reference
+    with ResultStore.open(resumed) as store:
+        first = {record.key: record for record in store.records()}
+    assert main([*chaser_part, *teams, "--workers", "1", "--out", str(resumed)]) == 0
+    assert json.loads(capsys.readouterr().out)["tables"] == reference
+    with ResultStore.open(resumed) as store, ResultStore.open(whole) as one_run:
+        records = store.records()
+        assert outcome(records) == outcome(one_run.records())
+    assert len(first) == 2 and len(records) == 4
+    assert all(record == first[record.key] for record in records if record.key in first)    # not played again
+    assert main(["results", "show", str(resumed), "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["tables"] == reference
 
 
 def test_the_studys_figures_are_the_same_in_a_worker_and_here(tmp_path) -> None:

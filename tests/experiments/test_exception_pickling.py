@@ -20,18 +20,24 @@ EXAMPLES: dict[str, tuple] = {
     "formations.errors.FormationError": ("a.json", "sample 3 is outside the field", "formation 'attack'"),
     "agents.assignment.errors.AssignmentError": ("NaN in robots",),
     "agents.skills.model.SkillInputError": ("horizon must be positive",),
-    "experiments.studies.incremental.StudyArgumentError": ("--lams: bad",),
-    "experiments.studies.distributed.StudyArgumentError": ("--sizes: bad",),
+    "experiments.errors.StudyArgumentError": ("lambdas: bad",),
+    "experiments.errors.ExperimentError": ("a run cannot start",),
+    "agents.errors.AgentsError": ("an assigner refuses its input",),
+    "agents.roles.errors.RoleError": ("unknown role assigner 'mmdx'",),
+    "formations.errors.FormationInputError": ("ball must be a point (2,) or points (k, 2)",),
+    "formations.errors.UnknownRoleError": ("no role numbered 12",),
+    "soccer_sim.errors.SoccerSimError": ("the simulator refuses its input",),
     "soccer_sim.replay.recorder.ReplayError": ("replays need rerun-sdk: pip install rerun-sdk",),
     "soccer_sim.scenarios.parts.ScenarioError": ("home.goalie", "index 4 is beyond the side's 3 players"),
-    "soccer_sim.errors.SoccerSimError": ("the simulator refused",),
-    "experiments.benchmarks.assignment.BenchmarkArgumentError": ("--sizes: bad",),
     "experiments.results.store.ResultsError": ("r.sqlite: not writable",),
     "experiments.results.store.StorageError": ("r.sqlite: cannot store a match (database or disk is full)",),
     "experiments.results.export.ExportError": ("needs pyarrow",),
     "experiments.runner.worker.MatchTimeout": (2.5,),
-    "experiments.runner.ray_backend.RayUnavailable": ("no ray",),
-    "experiments.runner.options.RunInputError": ("--teams: unknown team",),
+    "experiments.runner.ray_cluster.RayUnavailable": ("no ray",),
+    "experiments.commands.run_options.RunInputError": ("--teams: unknown team",),
+    "experiments.errors.ParameterError": ("record_every", "must be at least 1, got 0"),
+    "experiments.runner.run.MixedCodeVersions": ("r.sqlite", "0.0.1+old", "0.2.0+abc"),
+    "experiments.runner.run.MixedCodeWarning": ("r.sqlite", "0.0.1+old", "0.2.0+abc"),
     "experiments.runner.run.RunStopped": ("run stopped: 5 of the 20 matches finished so far failed",),
     "experiments.benchmarks.grid_assignment.TotalsDiffer": ("lazy 41 != all pairs 40 on instance 3",),
     "experiments.benchmarks.startup._RunFailed": ("play exited with status 2: error: unknown team",),
@@ -69,3 +75,25 @@ def test_exception_survives_pickling(name: str) -> None:
     assert type(copy) is cls
     assert str(copy) == str(error)
     assert vars(copy) == vars(error)
+
+
+def test_every_experiments_error_derives_from_the_root_and_keeps_its_base() -> None:
+    from agents.assignment import AssignmentError
+    from experiments.errors import ExperimentError, StudyArgumentError
+
+    errors = {name: cls for name, cls in project_exceptions().items() if name.startswith("experiments.")}
+    assert len(errors) >= 11
+    assert not [name for name, cls in errors.items() if not issubclass(cls, ExperimentError)]
+    assert issubclass(StudyArgumentError, ValueError)
+    grid = importlib.import_module("experiments.benchmarks.grid_assignment")
+    assert issubclass(grid.TotalsDiffer, AssignmentError)
+
+
+def test_studies_and_benchmarks_share_one_argument_error() -> None:
+    from experiments.errors import StudyArgumentError
+
+    for module in ("experiments.studies.incremental", "experiments.studies.distributed",
+                   "experiments.benchmarks.assignment"):
+        found = {value for value in vars(importlib.import_module(module)).values()
+                 if isinstance(value, type) and issubclass(value, BaseException) and "Argument" in value.__name__}
+        assert found == {StudyArgumentError}, module

@@ -7,7 +7,7 @@ import pytest
 
 from experiments.mixed_team import MixedTeam, member_names, mixed_name, mixed_team
 from soccer_sim import MatchConfig, SideInfo, TeamError, TeamView, run_match
-from tests.experiments.conftest import SCRIPTED
+from tests.experiments.helpers import SCRIPTED
 
 FORWARD, SIDEWAYS = SCRIPTED + "Forward", SCRIPTED + "Sideways"
 

@@ -13,7 +13,7 @@ from experiments.cli import main
 from experiments.results.store import ResultStore
 from experiments.studies import penalty_shot as ps
 from soccer_sim import TeamCommand
-from tests.experiments.conftest import SCRIPTED, outcome
+from tests.experiments.helpers import SCRIPTED, outcome
 
 
 def test_markers_are_fixed_alternate_halves_and_stay_off_the_lines_and_the_goal_area():

@@ -7,7 +7,7 @@ import pytest
 
 from experiments.cli import main
 from experiments.results.store import ResultStore
-from tests.experiments.conftest import outcome
+from tests.experiments.helpers import outcome
 
 pytest.importorskip("ray")
 

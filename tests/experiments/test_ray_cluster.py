@@ -24,7 +24,7 @@ from experiments.runner.fingerprint import DIGITS, PACKAGES, package_dirs, sourc
 from experiments.runner.preflight import failure_reason
 from experiments.runner.spec import MatchSpec, code_version, config_for, config_hash
 from experiments.runner.worker import play_spec
-from tests.experiments.conftest import outcome
+from tests.experiments.helpers import outcome
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -99,7 +99,7 @@ def test_the_preflight_refuses_other_libraries_and_configurations() -> None:
 
 
 def test_code_is_shipped_as_py_modules_to_a_cluster_and_on_pythonpath_to_a_local_instance() -> None:
-    from experiments.runner.ray_backend import code_runtime_env
+    from experiments.runner.ray_cluster import code_runtime_env
 
     cluster = code_runtime_env(local=False)
     assert sorted(cluster["py_modules"]) == sorted(str(ROOT / name) for name in PACKAGES)
@@ -130,21 +130,22 @@ def _pool_with_nodes(answers: dict, *node_ids: str):
     import io
     from collections import Counter, deque
 
-    from experiments.runner.ray_backend import RayPool, _Node
+    from experiments.runner.ray_backend import RayPool
+    from experiments.runner.ray_cluster import ClusterNode
 
     pool = object.__new__(RayPool)
     pool._ray, pool._args, pool._timeout, pool._stream = _Answers(answers), ("hash", "driver", None), None, io.StringIO()
     pool._in_flight, pool._pending, pool._played, pool._checks = {}, deque(), Counter(), {}
-    pool._nodes = {node_id: _Node(node_id, "10.0.0.1", 1, "ready") for node_id in node_ids}
+    pool._nodes = {node_id: ClusterNode(node_id, "10.0.0.1", 1, "ready") for node_id in node_ids}
     return pool
 
 
 def _finish(pool, ref, spec: MatchSpec, node_id: str, attempt: int = 0) -> list:
-    from experiments.runner.ray_backend import _Task
+    from experiments.runner.ray_cluster import MatchTask
 
     node = pool._nodes[node_id]
     node.busy += 1
-    return list(pool._finished(ref, _Task(spec, node, time.monotonic(), attempt), "driver"))
+    return list(pool._finished(ref, MatchTask(spec, node, time.monotonic(), attempt), "driver"))
 
 
 def test_a_row_played_by_other_code_is_not_stored_and_its_node_is_taken_out() -> None:

@@ -12,7 +12,7 @@ import pytest
 
 from experiments.results.record import FORFEIT_NONE
 from experiments.runner.slots import STALE_AFTER, FileSlot, slot_path, sweep_stale, take_slot
-from tests.experiments.conftest import SCRIPTED
+from tests.experiments.helpers import SCRIPTED
 
 # ---- the slot file (no Ray) ----------------------------------------------------------------------
 

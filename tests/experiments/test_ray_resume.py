@@ -19,7 +19,7 @@ from pathlib import Path
 import pytest
 
 from experiments.results.store import ResultsError, ResultStore
-from tests.experiments.conftest import outcome
+from tests.experiments.helpers import outcome
 
 pytest.importorskip("ray")
 

@@ -16,6 +16,7 @@ from pathlib import Path
 
 import pytest
 
+import experiments.results.connections as connections
 import experiments.results.store as store_module
 from experiments.cli import main
 from experiments.results.record import MatchRecord
@@ -167,8 +168,8 @@ def test_a_log_left_by_kill_9_is_read_without_changing_anything(tmp_path, monkey
         return connect(database, *args, **kwargs)
 
     monkeypatch.setattr(store_module.sqlite3, "connect", no_index)
-    real_copy = getattr(store_module, "_private_copy", None)
-    monkeypatch.setattr(store_module, "_private_copy", lambda *a: copies.append(a) or real_copy(*a), raising=False)
+    real_copy = connections.private_copy
+    monkeypatch.setattr(connections, "private_copy", lambda *a: copies.append(a) or real_copy(*a))
     for directory, copied in ((crashed, 0), (locked, 1)):
         before = {name: value for name, value in files_in(directory).items() if name != "r.sqlite-shm"}
         with ResultStore.open(directory / "r.sqlite") as store:
@@ -286,6 +287,25 @@ def test_seeds_a_results_file_cannot_store_are_refused(tmp_path, capsys) -> None
     check_seeds([MatchSpec("a", "b", MAX_SEED - 1), MatchSpec("b", "a", MAX_SEED)])       # the largest fit
     with pytest.raises(ValueError, match=f"between 0 and {MAX_SEED - 2} "):
         check_seeds([MatchSpec("a", "b", MAX_SEED - 1), MatchSpec("a", "b", MAX_SEED + 1)])
+
+
+def test_the_runner_names_its_parameters_and_the_command_line_its_options(tmp_path, capsys) -> None:
+    from experiments.errors import ExperimentError, ParameterError
+    from experiments.runner import run_matches
+
+    out = tmp_path / "t.sqlite"
+    calls = {"seed": dict(specs=[MatchSpec("idle", "chaser", MAX_SEED + 1, 30)]),
+             "record_every": dict(specs=[MatchSpec("idle", "chaser", 0, 30)], record_dir=tmp_path / "r", record_every=0)}
+    for parameter, call in calls.items():
+        with pytest.raises(ParameterError) as caught:
+            run_matches(call.pop("specs"), out, "tournament", {}, cycles=30, progress=False, **call)
+        assert caught.value.parameter == parameter and str(caught.value).startswith(f"{parameter} ")
+        assert "--" not in str(caught.value) and isinstance(caught.value, (ValueError, ExperimentError))
+        assert not out.exists()
+    (tmp_path / "file").write_text("")
+    assert main(["tournament", "--teams", "idle,chaser", "--record-dir", str(tmp_path / "file" / "r"),
+                 "--out", str(out), *QUICK]) == 2
+    assert error_line(capsys).startswith(f"error: --record-dir {tmp_path / 'file' / 'r'}: cannot create it")
 
 
 # -- the tournament writes what its help says ----------------------------------------------

@@ -17,7 +17,7 @@ from experiments.runner import MatchSpec, config_for, config_hash, run_matches
 from experiments.runner.run import FAILURE_MIN_MATCHES, FAILURE_SHARE, FailurePolicy, RunStopped
 from experiments.runner.spec import code_version
 from experiments.runner.worker import failed_record
-from tests.experiments.conftest import SCRIPTED
+from tests.experiments.helpers import SCRIPTED
 from tests.experiments.scripted_teams import CrashingFigures
 
 CYCLES = 20

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from experiments.runner import MatchSpec, run_matches
 from experiments.stats import league_table
-from tests.experiments.conftest import SCRIPTED
+from tests.experiments.helpers import SCRIPTED
 
 
 def test_failing_teams_are_recorded_and_the_run_completes(tmp_path, monkeypatch) -> None:

@@ -14,7 +14,7 @@ import pytest
 
 from experiments.results.store import ResultStore
 from experiments.runner import paired_specs, run_matches
-from tests.experiments.conftest import outcome
+from tests.experiments.helpers import outcome
 
 COMMAND = ["tournament", "--teams", "chaser,idle,tests.experiments.scripted_teams:Forward", "--games", "12",
            "--cycles", "400", "--workers", "2", "--no-progress"]

@@ -19,7 +19,7 @@ from experiments.results.record import MatchRecord
 from experiments.results.store import ResultsError, ResultStore
 from experiments.runner import paired_specs, run_matches
 from experiments.runner.spec import code_version, config_description, config_for, config_hash
-from tests.experiments.conftest import outcome
+from tests.experiments.helpers import outcome
 
 CYCLES = 20
 QUICK = ["--cycles", str(CYCLES), "--workers", "1", "--no-progress"]
@@ -262,3 +262,13 @@ def test_a_resume_mixing_code_versions_warns_and_same_code_refuses(tmp_path, cap
     assert _digest(path) == before
     assert main([*command, "--games", "6"]) == 0                  # mixed already: said again
     assert "another code version (0.0.1+old); this run plays" in capsys.readouterr().err
+
+    from experiments.runner.run import MixedCodeVersions, MixedCodeWarning
+
+    specs = paired_specs("idle", "chaser", 8, 0, CYCLES)               # the library: a warning, an error
+    with pytest.warns(MixedCodeWarning, match="same_code refuses this"):
+        run_matches(specs, path, "tournament", {}, cycles=CYCLES, workers=1, progress=False)
+    with pytest.raises(MixedCodeVersions) as refused:
+        run_matches(paired_specs("idle", "chaser", 10, 0, CYCLES), path, "tournament", {}, cycles=CYCLES, workers=1,
+                    progress=False, same_code=True)
+    assert "--" not in str(refused.value) and refused.value.others == "0.0.1+old"

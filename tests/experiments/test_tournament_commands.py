@@ -9,7 +9,7 @@ import sys
 import pytest
 
 from experiments.cli import main
-from tests.experiments.conftest import SCRIPTED
+from tests.experiments.helpers import SCRIPTED
 
 QUICK = ["--cycles", "200", "--workers", "2", "--no-progress"]
 
@@ -131,3 +131,10 @@ def test_drop_in_pairs_the_candidates_game_by_game(tmp_path, capsys) -> None:
     assert "8 matches in" in printed and "chaser minus idle" in printed
     with open(tmp_path / "d-tables" / "drop-in.csv") as handle:
         assert [row["games"] for row in csv.DictReader(handle)] == ["4", "4"]
+
+
+def test_an_unimportable_team_path_says_how_to_make_it_importable(tmp_path, capsys) -> None:
+    assert main(["tournament", "--teams", "chaser,nowhere_pkg.teams:Mine", "--out", str(tmp_path / "t.sqlite"),
+                 "--no-progress"]) == 2
+    err = capsys.readouterr().err
+    assert "cannot import module 'nowhere_pkg.teams'" in err and "PYTHONPATH" in err and "Traceback" not in err

@@ -6,41 +6,21 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+import warnings
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from experiments.arguments import positive_float, positive_int, seed_value
 from experiments.commands.errors import fail
-from experiments.commands.play import positive_int
+from experiments.errors import ExperimentError
 
 if TYPE_CHECKING:  # the runner imports the simulator: only when a command runs
     from experiments.runner.run import RunSummary
     from experiments.runner.spec import MatchSpec
 
 
-class RunInputError(Exception):
+class RunInputError(ExperimentError):
     """Bad input to a command that runs matches; the message says what and how to fix it."""
-
-
-def positive_float(text: str) -> float:
-    """argparse type: a positive number of seconds."""
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"must be a positive number, got {text}") from None
-    if not value > 0 or value == float("inf"):
-        raise argparse.ArgumentTypeError(f"must be a positive number, got {text}")
-    return value
-
-
-def seed_value(text: str) -> int:
-    """argparse type: a non-negative integer seed."""
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"must be a non-negative integer, got {text}") from None
-    if value < 0:
-        raise argparse.ArgumentTypeError(f"must be a non-negative integer, got {text}")
-    return value
 
 
 def registered_teams_text() -> str:
@@ -185,24 +165,59 @@ def tables_dir(args: argparse.Namespace) -> Path:
 
 def execute(args: argparse.Namespace, kind: str, specs: list[MatchSpec], params: dict[str, object],
             figures=None) -> RunSummary:
-    """Run ``specs`` into ``args.out``; errors about the file or the backend become RunInputError
-    (KeyboardInterrupt propagates: every finished match is stored)."""
+    """Run ``specs`` into ``args.out``; errors about the file, a parameter or the backend become
+    RunInputError worded with the command's options (KeyboardInterrupt propagates: every
+    finished match is stored)."""
+    from experiments.errors import ParameterError
     from experiments.results.store import ResultsError
     from experiments.runner.ray_backend import RayUnavailable
-    from experiments.runner.run import run_matches
+    from experiments.runner.run import MixedCodeVersions, run_matches
 
     if args.address and args.backend != "ray":
         raise RunInputError("--address needs --backend ray")
     try:
-        summary = run_matches(specs, args.out, kind, params, cycles=args.cycles, workers=args.workers,
-                              backend=args.backend, address=args.address, match_timeout=args.match_timeout,
-                              retry_errors=args.retry_errors, progress=not args.no_progress,
-                              record_dir=args.record_dir, record_every=args.record_every, figures=figures,
-                              ship_code=getattr(args, "ship_code", True), same_code=getattr(args, "same_code", False))
+        with warnings.catch_warnings():
+            _show_mixed_code_as_options()
+            summary = run_matches(specs, args.out, kind, params, cycles=args.cycles, workers=args.workers,
+                                  backend=args.backend, address=args.address, match_timeout=args.match_timeout,
+                                  retry_errors=args.retry_errors, progress=not args.no_progress,
+                                  record_dir=args.record_dir, record_every=args.record_every, figures=figures,
+                                  ship_code=getattr(args, "ship_code", True),
+                                  same_code=getattr(args, "same_code", False))
+    except MixedCodeVersions as exc:
+        raise RunInputError(f"{exc.path} holds matches played by another code version ({exc.others}), not by this "
+                            f"code ({exc.version}); --same-code refuses to mix them: give another --out, or leave "
+                            "out --same-code") from None
+    except ParameterError as exc:
+        option = OPTIONS.get(exc.parameter)
+        raise RunInputError(f"{option} {exc.problem}" if option else str(exc)) from None
     except (ResultsError, RayUnavailable, ValueError) as exc:
         raise RunInputError(str(exc)) from None
     print(summary.line())
     return summary
+
+
+OPTIONS = {"seed": "--seed", "record_every": "--record-every", "record_dir": "--record-dir", "cycles": "--cycles"}
+"""The option of each run_matches parameter a ParameterError can name."""
+
+
+def _show_mixed_code_as_options() -> None:
+    """Within ``warnings.catch_warnings()``: show every MixedCodeWarning at once as one
+    ``warning:`` line worded with the options; other warnings as Python shows them."""
+    from experiments.runner.run import MixedCodeWarning
+
+    shown = warnings.showwarning
+
+    def show(message, category, *rest) -> None:
+        if isinstance(message, MixedCodeWarning):
+            print(f"warning: {message.path} holds matches played by another code version ({message.others}); this "
+                  f"run plays the rest with {message.version}, so its tables mix code versions (--same-code refuses "
+                  "this)", file=sys.stderr)
+        else:
+            shown(message, category, *rest)
+
+    warnings.simplefilter("always", MixedCodeWarning)
+    warnings.showwarning = show
 
 
 def interrupted(out: str) -> int:
