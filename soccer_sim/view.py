@@ -40,6 +40,7 @@ class TeamFrame:
         self._state = state
         self._bodies = state.bodies
         self._stamina, self._effort, self._capacity = state.stamina, state.effort, state.capacity
+        self._score = state.score
         # Positions and velocities in two (P + 1, 2) blocks (players, then the ball), so that
         # every array of the view is C-contiguous (teams and compiled kernels take them as they are).
         self._pos = np.empty((total + 1, 2))
@@ -67,7 +68,7 @@ class TeamFrame:
                       self._capacity, view.stamina, view.effort, view.capacity)
         view.play_mode = state.play_mode
         view.mode_ours = state.mode_team == team
-        score = state.score.tolist()
+        score = self._score.tolist()
         view.score = (score[team], score[1 - team])
         view.cycle = state.cycle
         view.half = state.half
