@@ -52,7 +52,6 @@ from soccer_sim.kernels import (DASH_PARAMS, DECAY_PARAMS, REQUEST_CAP, dash_pla
                                 find_kickers, make_record)
 
 _EPS = 1e-12
-_REQUEST_CAP = REQUEST_CAP
 
 
 class CycleNoise:
@@ -128,10 +127,10 @@ class Kinematics:
         for row in kickers.tolist():
             kx, ky = float(kick[row, 0]), float(kick[row, 1])
             power = math.hypot(kx, ky)
-            if power > _REQUEST_CAP:  # huge (or overflowing) request: same direction, finite length
+            if power > REQUEST_CAP:  # huge (or overflowing) request: same direction, finite length
                 big = max(abs(kx), abs(ky))
-                kx = kx / big * _REQUEST_CAP
-                ky = ky / big * _REQUEST_CAP
+                kx = kx / big * REQUEST_CAP
+                ky = ky / big * REQUEST_CAP
                 power = math.hypot(kx, ky)
             if power > kick_max:
                 kx *= kick_max / power
