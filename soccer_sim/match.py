@@ -40,7 +40,7 @@ import numpy as np
 
 from soccer_sim.config import MatchConfig
 from soccer_sim.kinematics import CycleNoise, Kinematics
-from soccer_sim.physics import BodyBlock, Physics, SubstepPlanner
+from soccer_sim.physics import Physics, SubstepPlanner
 from soccer_sim.recorder import Recorder
 from soccer_sim.referee import Referee
 from soccer_sim.registry import resolve_team
@@ -129,22 +129,23 @@ class Match:
         n2 = sizes[0] + sizes[1]
         physics_seq, home_seq, away_seq, scenario_seq = np.random.SeedSequence(self.seed).spawn(4)
         self._team_seeds = (home_seq, away_seq)
-        self.block = BodyBlock(*sizes)
         self.end_cycle = setup.end_cycle
         """Cycles the match lasts at most."""
+        self.state = state = WorldState(sizes)
+        """The world; its arrays are created once, here, and only ever written in place."""
         if scenario.is_regular:
-            self.block.pos[:] = initial_positions(config)
+            state.pos[:] = initial_positions(config)
         else:
             rng = np.random.default_rng(scenario_seq) if scenario.randomised else None
             pos, vel, ball, ball_vel = scenario.start_state(config, rng)
-            self.block.pos[:], self.block.vel[:] = pos, vel
-            self.block.ball[:], self.block.ball_vel[:] = ball, ball_vel
-        self.state = WorldState(pos=self.block.pos, vel=self.block.vel, stamina=np.empty(n2),
-                                ball=self.block.ball, ball_vel=self.block.ball_vel, effort=np.empty(n2),
-                                recovery=np.empty(n2), capacity=np.empty(n2), sizes=sizes)
+            state.pos[:], state.vel[:] = pos, vel
+            state.ball[:], state.ball_vel[:] = ball, ball_vel
+        self._arrays = (state.pos, state.vel, state.ball, state.ball_vel, state.bodies, state.stamina, state.effort,
+                        state.recovery, state.capacity)
+        """The state's arrays, looked up once (the state never replaces them)."""
         self.events = EventLog()
         self.referee = Referee(setup, self.events)
-        self.physics = Physics(config, self.block)
+        self.physics = Physics(config, state)
         self.kinematics = Kinematics(config, n2)
         self._restore_players()
         self.noise = CycleNoise(np.random.default_rng(physics_seq), n2)
@@ -152,8 +153,8 @@ class Match:
         """Absolute commands of this cycle: per player row ``[dash_x, dash_y, kick_x, kick_y]``."""
         self._dash = self.commands[:, 0:2]
         self._kick = self.commands[:, 2:4]
-        self.frames = (TeamFrame(HOME, home_name, sizes[0], self.block, self.commands, sizes[1]),
-                       TeamFrame(AWAY, away_name, sizes[1], self.block, self.commands, sizes[0]))
+        self.frames = (TeamFrame(HOME, home_name, state, self.commands),
+                       TeamFrame(AWAY, away_name, state, self.commands))
         self._end = setup.end
         self._condition: str | None = None
         """The scenario's end condition that ended the match, if one did."""
@@ -209,7 +210,6 @@ class Match:
                 raise _team_failure(self.team_names[team], "reset", exc) from exc
         self.referee.start(self.state, self.setup.start_mode, self.setup.start_side)
         self._event_mark = len(self.events)
-        self._sync_state()
         for recorder in self.recorders:
             recorder.on_start(self)
 
@@ -229,7 +229,7 @@ class Match:
         state, referee, kin = self.state, self.referee, self.kinematics
         if state.play_mode == _TIME_OVER:
             raise RuntimeError(f"the match is over (time over after cycle {state.cycle}); no more cycles")
-        self._sync_state()
+        pos, vel, ball, ball_vel, bodies, stamina, effort, recovery, capacity = self._arrays
         self.noise.draw()
 
         # 1-2. Teams decide; kick-off placement.
@@ -238,16 +238,14 @@ class Match:
             for team in (HOME, AWAY):
                 if moves[team] is not None:
                     referee.apply_moves(state, team, moves[team])
-            self._sync_state()
 
         # 3-4. Kicks, then the referee judges kicks and catches.
         holder = state.ball_holder
-        count, _ = kin.kick_candidates(state.pos, state.ball, self._kick, referee.kick_mask(state), holder,
-                                             self._kicker_rows)
+        count, _ = kin.kick_candidates(pos, ball, self._kick, referee.kick_mask(state), holder, self._kicker_rows)
         if count:
             kickers = self._kicker_rows[:count].copy()
             dist = kin.ball_distance
-            kin.kick(kickers, state.pos, state.ball, state.ball_vel, self._kick, dist, holder, self.noise.kick)
+            kin.kick(kickers, pos, ball, ball_vel, self._kick, dist, holder, self.noise.kick)
             state.last_touch = int(kickers[np.argmin(dist[kickers])]) if count > 1 else int(kickers[0])
         else:
             kickers = _NO_KICKERS
@@ -255,23 +253,21 @@ class Match:
         referee.on_commands(state, kickers, self._catch)
 
         # 5. Dashes.
-        self._sync_state()
-        kin.dash(state.vel, state.stamina, state.effort, state.recovery, state.capacity, self._dash,
-                 self.noise.players)
+        kin.dash(vel, stamina, effort, recovery, capacity, self._dash, self.noise.players)
 
         # 6. Collision solving. A held ball does not collide; when the goalkeeper kicks it away
         # it passes through the goalkeeper's body like any kicked ball passes its kicker.
         holder = state.ball_holder
         physics = self.physics
         physics.set_ball_collides(holder == NO_PLAYER)
-        substeps = self._substeps.count(self.block.dynamic, holder == NO_PLAYER)
+        substeps = self._substeps.count(bodies, holder == NO_PLAYER)
         self.touchers = physics.step(substeps, kickers)
         if holder != NO_PLAYER:
-            state.ball[:] = state.pos[holder]
-            state.ball_vel[:] = 0.0
+            ball[:] = pos[holder]
+            ball_vel[:] = 0.0
 
         # 7-9. Decay, the referee, time, observers.
-        kin.decay(state.vel, state.ball_vel, self.noise.ball)
+        kin.decay(vel, ball_vel, self.noise.ball)
         half = state.half
         referee.after_step(state, self.touchers)
         if self._end.conditions:
@@ -312,26 +308,9 @@ class Match:
             self._event_mark = len(events)
 
     def _restore_players(self) -> None:
+        """Fresh players: at the start of the match and of the second half."""
         state = self.state
         self.kinematics.restore(state.stamina, state.effort, state.recovery, state.capacity)
-
-    def _sync_state(self) -> None:
-        """Re-attach the state's arrays to the body block if someone replaced them (the loop
-        and pymunk work on the block; replacing an array instead of writing into it would
-        otherwise be lost)."""
-        state, block = self.state, self.block
-        if state.pos is not block.pos:
-            block.pos[:] = state.pos
-            state.pos = block.pos
-        if state.vel is not block.vel:
-            block.vel[:] = state.vel
-            state.vel = block.vel
-        if state.ball is not block.ball:
-            block.ball[:] = state.ball
-            state.ball = block.ball
-        if state.ball_vel is not block.ball_vel:
-            block.ball_vel[:] = state.ball_vel
-            state.ball_vel = block.ball_vel
 
 
 def run_match(home: Team | str | type, away: Team | str | type, seed: int = 0,

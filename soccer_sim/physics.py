@@ -1,10 +1,12 @@
 """Collision solving with pymunk: the player discs, the ball and four static goal posts.
 
-The match keeps the world in numpy arrays (:class:`BodyBlock`); pymunk is used once per
-cycle as a collision solver. The block is laid out exactly like pymunk's bulk body data
+The world lives in the :class:`~soccer_sim.state.WorldState`'s arrays; pymunk is used once per
+cycle as a collision solver. The state's body table (:attr:`WorldState.body_table
+<soccer_sim.state.WorldState.body_table>`) is laid out exactly like pymunk's bulk body data
 (``pymunk.batch`` with POSITION | VELOCITY: ``x, y, vx, vy`` per body, in the order the
-bodies were added), so writing the whole world into pymunk and reading it back are one
-call each, with no per-body Python objects.
+bodies are added here: the players, the ball, then pymunk's static body, the posts' anchor),
+so writing the whole world into pymunk and reading it back are one call each, straight from
+and into the state's own table, with no per-body Python objects.
 
 Units: pymunk's time unit is one cycle, so velocities are m/cycle and one cycle is a total
 ``dt`` of 1, split into sub-steps when bodies that can meet close in fast (so that a
@@ -19,10 +21,12 @@ import math
 import numpy as np
 import pymunk
 import pymunk.batch as pbatch
-from numba import njit
 
 from soccer_sim.config import MatchConfig
 from soccer_sim.errors import SoccerSimError
+from soccer_sim.kernels import (BALL_CONTACT_PARAMS, MARGIN_PARAMS, SUBSTEP_PARAMS, keep_in_field_and_count_contacts,
+                                make_record, resolve_ball_contacts, substeps_needed)
+from soccer_sim.state import WorldState
 
 #: pymunk collision types of the bodies.
 HOME_PLAYER, AWAY_PLAYER, BALL, POST = 1, 2, 3, 4
@@ -37,7 +41,7 @@ _PLAYER_BIT, _BALL_BIT, _POST_BIT = 0b001, 0b010, 0b100
 _PLAYER_NOT_BALL = pymunk.ShapeFilter(categories=_PLAYER_BIT, mask=_PLAYER_BIT | _POST_BIT)
 _BALL_NOT_PLAYER = pymunk.ShapeFilter(categories=_BALL_BIT, mask=_POST_BIT)
 """With rcssserver body-ball contacts, pymunk never sees the ball meet a player: the match
-resolves those contacts itself (see :func:`_resolve_ball_contacts`)."""
+resolves those contacts itself (see :func:`soccer_sim.kernels.resolve_ball_contacts`)."""
 _CONTACT_PASSES = 3
 """Rounds of body-ball contact resolution per cycle (the first finds the earliest contact on
 the ball's path; later ones catch players that ran into the ball's corrected position)."""
@@ -76,31 +80,6 @@ class PymunkChangedError(SoccerSimError, RuntimeError):
         return type(self), (self.detail,)
 
 
-class BodyBlock:
-    """The world's bodies as one contiguous float array, shaped like pymunk's bulk data.
-
-    ``data`` has one row ``[x, y, vx, vy]`` per pymunk body: rows 0..P-1 the players
-    (home first; P = home + away players), row P the ball, then pymunk's static body (the goal
-    posts' anchor, always at rest at the origin). ``pos``/``vel``/``ball``/``ball_vel`` are
-    views into it, used as the :class:`~soccer_sim.state.WorldState` arrays.
-    ``BodyBlock(n)`` holds two sides of n players; ``BodyBlock(home, away)`` uneven sides.
-    """
-
-    def __init__(self, players_per_team: int, away: int | None = None) -> None:
-        away = players_per_team if away is None else away
-        self.sizes = (int(players_per_team), int(away))
-        """(home, away) players."""
-        n2 = players_per_team + away
-        self.n_players = n2
-        self.data = np.zeros((n2 + 2, 4), dtype=np.float64)
-        self.pos = self.data[:n2, 0:2]
-        self.vel = self.data[:n2, 2:4]
-        self.ball = self.data[n2, 0:2]
-        self.ball_vel = self.data[n2, 2:4]
-        self.dynamic = self.data[: n2 + 1]
-        """Players and ball (the rows a team-relative view mirrors)."""
-
-
 class SubstepPlanner:
     """How many equal sub-steps a cycle needs so that nothing can pass through anything.
 
@@ -125,22 +104,23 @@ class SubstepPlanner:
     def __init__(self, config: MatchConfig) -> None:
         phys, fld = config.physics, config.field
         post_contact = fld.goal_post_radius + phys.ball_radius
-        self._params = np.array([
-            phys.player_radius, phys.ball_radius, phys.max_substep_distance,
-            post_contact, min(phys.max_substep_distance, post_contact),
-            fld.half_length, fld.goal_width / 2 + fld.goal_post_radius,
-            1.0 if phys.body_ball_contact == "rigid" else 0.0,
-        ])
+        self._params = make_record(
+            SUBSTEP_PARAMS, player_radius=phys.player_radius, ball_radius=phys.ball_radius,
+            max_step=phys.max_substep_distance, post_contact=post_contact,
+            post_step=min(phys.max_substep_distance, post_contact), post_x=fld.half_length,
+            post_y=fld.goal_width / 2 + fld.goal_post_radius,
+            ball_meets_players=phys.body_ball_contact == "rigid")
 
     def count(self, bodies: np.ndarray, ball_free: bool) -> int:
-        """Sub-steps for the cycle about to be simulated. ``bodies``: block rows ``[x, y, vx,
-        vy]``, the players then the ball (:attr:`BodyBlock.dynamic`); ``ball_free``: False
-        while a goalkeeper holds the ball (it does not collide then)."""
-        return _substeps_needed(bodies, ball_free, self._params)
+        """Sub-steps for the cycle about to be simulated. ``bodies``: rows ``[x, y, vx, vy]``,
+        the players then the ball (:attr:`WorldState.bodies <soccer_sim.state.WorldState.bodies>`);
+        ``ball_free``: False while a goalkeeper holds the ball (it does not collide then)."""
+        return substeps_needed(bodies, ball_free, self._params)
 
 
 class Physics:
-    """A pymunk space mirroring a :class:`BodyBlock`; steps one cycle at a time.
+    """A pymunk space mirroring a :class:`~soccer_sim.state.WorldState`'s bodies; steps one
+    cycle at a time, reading the state's body table before and writing it back after.
 
     Collects the players whose body began touching the ball during a step (a pymunk
     collision callback: rare, so cheap), and counts contacts between teammates: a pair of
@@ -150,20 +130,24 @@ class Physics:
     scrum, teammates touch several times per cycle.)
     """
 
-    def __init__(self, config: MatchConfig, block: BodyBlock) -> None:
+    def __init__(self, config: MatchConfig, state: WorldState) -> None:
         phys, fld = config.physics, config.field
-        home, away = block.sizes
+        home, away = state.sizes
         n2 = home + away
-        self.block = block
+        self._table = state.body_table
+        """The state's (P + 2, 4) body table: the players, the ball, pymunk's static body."""
+        self._dynamic = state.bodies
+        """Its players and ball rows."""
         self._rigid_ball = phys.body_ball_contact == "rigid"
         self._ball_filter = _ALL_COLLISIONS if self._rigid_ball else _BALL_NOT_PLAYER
         player_filter = _ALL_COLLISIONS if self._rigid_ball else _PLAYER_NOT_BALL
-        self._before = np.zeros_like(block.dynamic)
+        self._before = np.zeros_like(self._dynamic)
         """The players and the ball as they were before this cycle's move (contact sweeps)."""
         self._ghost = np.zeros(n2, dtype=np.bool_)
         """This cycle's kickers: their bodies let the ball pass (a kick plays it around them)."""
         self._contact_rows = np.zeros(_CONTACT_PASSES, dtype=np.int64)
-        self._contact_params = np.array([phys.player_radius + phys.ball_radius, phys.collision_velocity_factor])
+        self._contact_params = make_record(BALL_CONTACT_PARAMS, contact=phys.player_radius + phys.ball_radius,
+                                           factor=phys.collision_velocity_factor)
         self.space = space = pymunk.Space()
         space.iterations = _SOLVER_ITERATIONS
         space.collision_slop = _COLLISION_SLOP
@@ -172,10 +156,10 @@ class Physics:
         """Contacts begun between two players of the same team, per team (home, away)."""
         self._in_contact = np.zeros((n2, n2), dtype=np.bool_)
         diameter = 2.0 * phys.player_radius
-        self._after_params = np.array([
-            home, n2, (diameter + CONTACT_BEGIN_GAP) ** 2, (diameter + CONTACT_END_GAP) ** 2,
-            fld.half_length + fld.margin, fld.half_width + fld.margin,
-        ])
+        self._after_params = make_record(
+            MARGIN_PARAMS, home=home, players=n2, begin2=(diameter + CONTACT_BEGIN_GAP) ** 2,
+            end2=(diameter + CONTACT_END_GAP) ** 2, x_max=fld.half_length + fld.margin,
+            y_max=fld.half_width + fld.margin)
         self._touchers: list[int] = []
         self._ball_collides = True
         self._player_shapes: list[pymunk.Circle] = []
@@ -214,16 +198,16 @@ class Physics:
             space.on_collision(BALL, HOME_PLAYER, begin=self._ball_begin)
             space.on_collision(BALL, AWAY_PLAYER, begin=self._ball_begin)
 
-        self._bulk = _BulkBodies(space, block.data)
+        self._bulk = _BulkBodies(space, self._table)
         self._check_layout(bodies)
 
     def _check_layout(self, bodies: list[pymunk.Body]) -> None:
-        """Make sure pymunk iterates the bodies in the order the block assumes."""
+        """Make sure pymunk iterates the bodies in the order the body table assumes."""
         buffer = pbatch.Buffer()
         pbatch.get_space_bodies(self.space, pbatch.BodyFields.BODY_ID, buffer)
         ids = np.frombuffer(buffer.int_buf(), dtype=np.uintp)
         expected = [b.id for b in bodies]
-        if ids.shape[0] != self.block.data.shape[0] or list(ids[: len(expected)]) != expected:
+        if ids.shape[0] != self._table.shape[0] or list(ids[: len(expected)]) != expected:
             raise PymunkChangedError("it iterates the bodies in an unexpected order")
 
     # --- collision callback (called by pymunk during step) ---------------------------------
@@ -243,8 +227,8 @@ class Physics:
 
         The players in ``kickers`` (rows that kicked this cycle) do not collide with the ball
         during this cycle: a kick plays the ball around the kicker's body, never into it.
-        Reads the block into pymunk first (so whatever the match or the referee wrote is
-        used) and writes the result back into the block; then keeps the players within the
+        Reads the state's bodies into pymunk first (so whatever the match or the referee wrote
+        is used) and writes the result back into them; then keeps the players within the
         field plus its margin and counts new teammate contacts.
         """
         if not self._rigid_ball:
@@ -258,7 +242,7 @@ class Physics:
         bulk.write()
         bulk.step(substeps)
         bulk.read()
-        _after_step(self.block.data, self._in_contact, self._after_params, self.teammate_contacts)
+        keep_in_field_and_count_contacts(self._table, self._in_contact, self._after_params, self.teammate_contacts)
         if ghosts:
             self.ball_shape.filter = _ALL_COLLISIONS
             for row in kickers.tolist():
@@ -271,8 +255,8 @@ class Physics:
 
     def _step_with_rcssserver_contacts(self, substeps: int, kickers: np.ndarray) -> np.ndarray:
         """:meth:`step` when pymunk moves the players (and the ball off the posts) but the
-        body-ball contacts follow rcssserver (:func:`_resolve_ball_contacts`)."""
-        dynamic = self.block.dynamic
+        body-ball contacts follow rcssserver (:func:`soccer_sim.kernels.resolve_ball_contacts`)."""
+        dynamic = self._dynamic
         np.copyto(self._before, dynamic)
         bulk = self._bulk
         bulk.write()
@@ -283,17 +267,18 @@ class Physics:
             ghost = self._ghost
             if kickers.size:
                 ghost[kickers] = True
-            count = _resolve_ball_contacts(self._before, dynamic, ghost, self._contact_params, self._contact_rows)
+            count = resolve_ball_contacts(self._before, dynamic, ghost, self._contact_params, self._contact_rows)
             if kickers.size:
                 ghost[kickers] = False
-        _after_step(self.block.data, self._in_contact, self._after_params, self.teammate_contacts)
+        keep_in_field_and_count_contacts(self._table, self._in_contact, self._after_params, self.teammate_contacts)
         if count == 0:
             return _NO_TOUCHERS
         return np.unique(self._contact_rows[:count]) if count > 1 else self._contact_rows[:1].copy()
 
 
 class _BulkBodies:
-    """Bulk transfer between a :class:`BodyBlock` and pymunk, and the bare C step.
+    """Bulk transfer between a body table (rows ``[x, y, vx, vy]`` in pymunk's body order) and
+    pymunk, and the bare C step.
 
     Does what ``pymunk.batch.set_space_bodies``/``get_space_bodies`` and ``Space.step`` do,
     with the C-side argument structures built once instead of on every call (together they
@@ -330,7 +315,7 @@ class _BulkBodies:
     def _check_against_pymunk_batch(self, space: pymunk.Space) -> None:
         """Write a test pattern (a distinct value in every field of every moving body) with the
         shortcut, read it back with ``pymunk.batch`` and with the shortcut, then restore the
-        block. Also sizes pymunk's read array once; later reads refill it in place."""
+        table. Also sizes pymunk's read array once; later reads refill it in place."""
         original = self._flat.copy()
         pattern = np.zeros_like(self._flat)
         moving = self._flat.size - 4  # the last row is the static body: it stays at rest
@@ -359,14 +344,14 @@ class _BulkBodies:
         return data
 
     def write(self) -> None:
-        """Block -> pymunk (positions and velocities of every body)."""
+        """Table -> pymunk (positions and velocities of every body)."""
         array = self._write_array
         array.num = 0
         self._each_body(self._space_ptr, self._write_fn, self._write_data)
         array.num = array.max
 
     def read(self) -> None:
-        """pymunk -> block."""
+        """pymunk -> table."""
         array = self._read_array
         address = array.arr
         array.num = 0
@@ -381,145 +366,3 @@ class _BulkBodies:
         for _ in range(substeps):
             step(pointer, dt)
 
-
-@njit(cache=True, nogil=True)
-def _after_step(data: np.ndarray, in_contact: np.ndarray, params: np.ndarray,
-                counts: np.ndarray) -> None:  # pragma: no cover - compiled
-    """Clamp the players (block rows 0..P-1) into the field plus margin, update the teammate
-    contact matrix and add the contacts that began to ``counts`` (per team). ``params``: home
-    players, all players P, squared centre distance below which a contact begins, squared
-    distance above which it ends, largest |x| and |y| of a player."""
-    home, n2 = int(params[0]), int(params[1])
-    begin2, end2, x_max, y_max = params[2], params[3], params[4], params[5]
-    for i in range(n2):
-        data[i, 0] = min(max(data[i, 0], -x_max), x_max)
-        data[i, 1] = min(max(data[i, 1], -y_max), y_max)
-    for team in range(2):
-        first = 0 if team == 0 else home
-        last = home if team == 0 else n2
-        for i in range(first, last):
-            xi, yi = data[i, 0], data[i, 1]
-            for j in range(i + 1, last):
-                dx, dy = data[j, 0] - xi, data[j, 1] - yi
-                d2 = dx * dx + dy * dy
-                if in_contact[i, j]:
-                    if d2 > end2:
-                        in_contact[i, j] = False
-                elif d2 < begin2:
-                    in_contact[i, j] = True
-                    counts[team] += 1
-
-
-@njit(cache=True, nogil=True)
-def _substeps_needed(bodies: np.ndarray, ball_free: bool, params: np.ndarray) -> int:  # pragma: no cover
-    """See :class:`SubstepPlanner`. ``params``: player radius, ball radius, max sub-step
-    distance, ball-post contact distance, largest ball step near a post, post |x|, post |y|."""
-    r_player, r_ball, step, post_contact, post_step, post_x, post_y = (
-        params[0], params[1], params[2], params[3], params[4], params[5], params[6])
-    ball_meets_players = params[7] > 0.0
-    n2 = bodies.shape[0] - 1
-    need = 1.0
-    pair_step = 2.0 * step
-    for i in range(n2):
-        xi, yi, ui, wi = bodies[i, 0], bodies[i, 1], bodies[i, 2], bodies[i, 3]
-        for j in range(i + 1, n2):
-            du, dw = ui - bodies[j, 2], wi - bodies[j, 3]
-            closing = math.sqrt(du * du + dw * dw)
-            if closing > pair_step * need:
-                dx, dy = xi - bodies[j, 0], yi - bodies[j, 1]
-                if math.sqrt(dx * dx + dy * dy) - 2.0 * r_player <= closing:
-                    need = closing / pair_step
-    if ball_free:
-        bx, by, bu, bw = bodies[n2, 0], bodies[n2, 1], bodies[n2, 2], bodies[n2, 3]
-        for j in range(n2 if ball_meets_players else 0):
-            du, dw = bu - bodies[j, 2], bw - bodies[j, 3]
-            closing = math.sqrt(du * du + dw * dw)
-            if closing > step * need:
-                dx, dy = bx - bodies[j, 0], by - bodies[j, 1]
-                if math.sqrt(dx * dx + dy * dy) - r_player - r_ball <= closing:
-                    need = closing / step
-        speed = math.sqrt(bu * bu + bw * bw)
-        if speed > post_step * need:
-            dx, dy = post_x - abs(bx), post_y - abs(by)
-            if math.sqrt(dx * dx + dy * dy) - post_contact <= speed:
-                need = speed / post_step
-    return int(math.ceil(need - 1e-9))
-
-
-@njit(cache=True, nogil=True)
-def _resolve_ball_contacts(before: np.ndarray, after: np.ndarray, ghost: np.ndarray, params: np.ndarray,
-                           rows_out: np.ndarray) -> int:  # pragma: no cover - compiled
-    """rcssserver's body-ball contact rule, applied to a cycle's motion; returns how many
-    contacts it resolved (their player rows in ``rows_out``).
-
-    ``before``/``after``: block rows ``[x, y, vx, vy]`` of the players then the ball, at the
-    start and the end of the cycle's move (``after`` is corrected in place). Each body is taken
-    to move in a straight line between the two, so the sweep is exact for any speed: the
-    earliest moment the ball's disc meets a player's disc (``params[0]``: the sum of the radii)
-    is found, and both are put back where they were at that moment, with their velocities
-    multiplied by ``params[1]`` (-0.1). A player already overlapping the ball at the start
-    pushes it out radially. Further rounds put back any player that ran into the ball's
-    corrected position later in the cycle (along the player's own path, the ball staying).
-    Rows with ``ghost`` set (this cycle's kickers) are passed through.
-    """
-    contact, factor = params[0], params[1]
-    contact2 = contact * contact
-    n2 = after.shape[0] - 1
-    count = 0
-    b0x, b0y = before[n2, 0], before[n2, 1]
-    dbx, dby = after[n2, 0] - b0x, after[n2, 1] - b0y
-    for round_ in range(rows_out.shape[0]):
-        best_t, best = 2.0, -1
-        for i in range(n2):
-            if ghost[i]:
-                continue
-            p0x, p0y = before[i, 0], before[i, 1]
-            rx, ry = b0x - p0x, b0y - p0y
-            drx, dry = dbx - (after[i, 0] - p0x), dby - (after[i, 1] - p0y)
-            c = rx * rx + ry * ry - contact2
-            if c <= 0.0:
-                t = 0.0
-            else:
-                a = drx * drx + dry * dry
-                b = rx * drx + ry * dry
-                if a == 0.0 or b >= 0.0:
-                    continue
-                disc = b * b - a * c
-                if disc < 0.0:
-                    continue
-                t = (-b - math.sqrt(disc)) / a
-                if t > 1.0:
-                    continue
-            if t < best_t:
-                best_t, best = t, i
-        if best < 0:
-            break
-        t = best_t
-        px = before[best, 0] + t * (after[best, 0] - before[best, 0])
-        py = before[best, 1] + t * (after[best, 1] - before[best, 1])
-        bx, by = b0x + t * dbx, b0y + t * dby
-        ox, oy = bx - px, by - py
-        gap = math.sqrt(ox * ox + oy * oy)
-        if gap < contact:  # overlapping from the start: push the ball out radially
-            if gap > 1e-12:
-                bx, by = px + ox * contact / gap, py + oy * contact / gap
-            else:
-                bx, by = px + contact, py
-        after[best, 0], after[best, 1] = px, py
-        after[best, 2] *= factor
-        after[best, 3] *= factor
-        after[n2, 0], after[n2, 1] = bx, by
-        if round_ == 0:
-            after[n2, 2] *= factor
-            after[n2, 3] *= factor
-        rows_out[count] = best
-        count += 1
-        ghost[best] = True  # resolved: not met again this cycle
-        # Later rounds: the ball stays at its corrected position for the whole sweep.
-        b0x, b0y, dbx, dby = bx, by, 0.0, 0.0
-        for k in range(n2):
-            before[k, 0] = before[k, 0] + t * (after[k, 0] - before[k, 0])
-            before[k, 1] = before[k, 1] + t * (after[k, 1] - before[k, 1])
-    for k in range(count):
-        ghost[rows_out[k]] = False
-    return count

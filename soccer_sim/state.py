@@ -14,8 +14,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from enum import IntEnum
+from operator import attrgetter
 
 import numpy as np
+from numpy.typing import ArrayLike
+
+from soccer_sim.errors import SoccerSimError
 
 HOME, AWAY = 0, 1
 """Team indices: home is listed first everywhere (score, statistics, player rows)."""
@@ -125,54 +129,133 @@ class EventLog:
         ]
 
 
-@dataclass
+class StateError(SoccerSimError, ValueError):
+    """A hand-built :class:`WorldState` given values it cannot hold."""
+
+
+def _owned(attribute: str, name: str, doc: str) -> property:
+    """A :class:`WorldState` array attribute: reads give the owned array; assigning anything
+    but the array itself (what ``state.ball += v`` does after adding in place) raises
+    AttributeError, so the array can never be replaced."""
+
+    def refuse(state: WorldState, value: object) -> None:
+        if value is not getattr(state, attribute):
+            raise AttributeError(f"WorldState.{name} cannot be replaced: write into it (state.{name}[...] = values)")
+
+    return property(attrgetter(attribute), refuse, doc=doc)
+
+
 class WorldState:
-    """The mutable state of a match, absolute frame. Arrays are updated in place by the loop."""
+    """The mutable state of a match, absolute frame.
 
-    pos: np.ndarray
-    """(2n, 2) player positions (m)."""
-    vel: np.ndarray
-    """(2n, 2) player velocities (m/cycle)."""
-    stamina: np.ndarray
-    """(2n,) player stamina."""
-    ball: np.ndarray
-    """(2,) ball position (m)."""
-    ball_vel: np.ndarray
-    """(2,) ball velocity (m/cycle)."""
-    score: np.ndarray = field(default_factory=lambda: np.zeros(2, dtype=np.int64))
-    """(home, away) goals."""
-    cycle: int = 0
-    half: int = 0
-    """0 for the first half, 1 for the second."""
-    home_attacks: int = 1
-    """+1 when home attacks towards +x (first half), -1 after the half-time swap."""
-    play_mode: PlayMode = PlayMode.KICK_OFF
-    mode_team: int = HOME
-    """Team the current set play belongs to (NO_TEAM in play on)."""
-    mode_start: int = 0
-    """Cycle at which the current play mode began."""
-    ball_holder: int = NO_PLAYER
-    """Player row (0..2n-1) of the goalkeeper holding the ball, or NO_PLAYER."""
-    last_touch: int = NO_PLAYER
-    """Player row that last kicked or touched the ball, or NO_PLAYER."""
-    effort: np.ndarray | None = None
-    """(2n,) effort of each player: the fraction of dash power that becomes acceleration
-    (see config.StaminaConfig); None in hand-built states that do not need it."""
-    recovery: np.ndarray | None = None
-    """(2n,) stamina recovery rate of each player (see config.StaminaConfig)."""
-    capacity: np.ndarray | None = None
-    """(2n,) stamina each player can still recover in this half (inf: unlimited)."""
-    sizes: tuple[int, int] | None = None
-    """(home, away) players: rows ``0..home-1`` are home's, the rest away's. None (a state built
-    by hand) means two even sides, half the rows each."""
+    The state owns its arrays: they are created once, with the state, and everything that
+    changes the world writes into them in place. They cannot be replaced (assigning
+    ``state.pos = other`` raises AttributeError; ``state.ball += v`` adds in place and is
+    fine), so every component can keep a reference to them for the whole match and never
+    sees a stale copy.
 
-    def __post_init__(self) -> None:
-        if self.sizes is None:
-            half = self.pos.shape[0] // 2
-            self.sizes = (half, half)
-        else:
-            self.sizes = (int(self.sizes[0]), int(self.sizes[1]))
+    All bodies live in one (P + 2, 4) float table, rows ``[x, y, vx, vy]``: the P players
+    (home first), the ball, and last the field's fixed frame (always at rest: the anchor of
+    the goal posts). ``pos``/``vel``/``ball``/``ball_vel`` and :attr:`bodies` are views into
+    it; :attr:`body_table` is all of it, so that a collision solver can exchange the whole
+    world in one transfer.
 
+    ``sizes``: (home, away) players. Built by hand (tests, tools), the keyword arguments give
+    the starting values, copied into the state's own arrays: ``pos``/``vel`` (P, 2),
+    ``ball``/``ball_vel`` (2,), ``stamina``/``effort``/``recovery``/``capacity`` (P,),
+    ``score`` (2,). Left out, positions and velocities start at zero, stamina at zero, effort
+    and recovery at 1 and capacity unlimited (fresh players; a match restores them from its
+    configuration before the kick-off). Without ``sizes``, ``pos`` must be given and the rows
+    split into two even sides.
+    """
+
+    def __init__(self, sizes: tuple[int, int] | None = None, *, pos: ArrayLike | None = None,
+                 vel: ArrayLike | None = None, ball: ArrayLike | None = None,
+                 ball_vel: ArrayLike | None = None, stamina: ArrayLike | None = None,
+                 effort: ArrayLike | None = None, recovery: ArrayLike | None = None,
+                 capacity: ArrayLike | None = None, score: ArrayLike | None = None, cycle: int = 0,
+                 half: int = 0, home_attacks: int = 1, play_mode: PlayMode = PlayMode.KICK_OFF,
+                 mode_team: int = HOME, mode_start: int = 0, ball_holder: int = NO_PLAYER,
+                 last_touch: int = NO_PLAYER) -> None:
+        if sizes is None:
+            if pos is None:
+                raise StateError("WorldState needs its sizes (home, away players) or the players' pos")
+            half_rows = np.shape(pos)[0] // 2
+            sizes = (half_rows, half_rows)
+        self.sizes: tuple[int, int] = (int(sizes[0]), int(sizes[1]))
+        """(home, away) players: rows ``0..home-1`` are home's, the rest away's."""
+        if min(self.sizes) < 0:
+            raise StateError(f"WorldState sizes must be non-negative, got {self.sizes}")
+        players = self.sizes[0] + self.sizes[1]
+        self._allocate(np.zeros((players + 2, 4), dtype=np.float64), np.zeros(players), np.ones(players),
+                       np.ones(players), np.full(players, np.inf), np.zeros(2, dtype=np.int64))
+        starts = {"pos": pos, "vel": vel, "ball": ball, "ball_vel": ball_vel, "stamina": stamina,
+                  "effort": effort, "recovery": recovery, "capacity": capacity, "score": score}
+        for name, value in starts.items():
+            if value is not None:
+                target = getattr(self, name)
+                value = np.asarray(value)
+                if value.shape != target.shape:
+                    raise StateError(f"WorldState.{name} must have shape {target.shape}, got {value.shape}")
+                target[...] = value
+        self.cycle = cycle
+        self.half = half
+        """0 for the first half, 1 for the second."""
+        self.home_attacks = home_attacks
+        """+1 when home attacks towards +x (first half), -1 after the half-time swap."""
+        self.play_mode = play_mode
+        self.mode_team = mode_team
+        """Team the current set play belongs to (NO_TEAM in play on)."""
+        self.mode_start = mode_start
+        """Cycle at which the current play mode began."""
+        self.ball_holder = ball_holder
+        """Player row (0..P-1) of the goalkeeper holding the ball, or NO_PLAYER."""
+        self.last_touch = last_touch
+        """Player row that last kicked or touched the ball, or NO_PLAYER."""
+
+    def _allocate(self, table: np.ndarray, stamina: np.ndarray, effort: np.ndarray, recovery: np.ndarray,
+                  capacity: np.ndarray, score: np.ndarray) -> None:
+        """Take ownership of the arrays and make the views into the body table."""
+        players = table.shape[0] - 2
+        self._table = table
+        self._bodies = table[: players + 1]
+        self._pos = table[:players, 0:2]
+        self._vel = table[:players, 2:4]
+        self._ball = table[players, 0:2]
+        self._ball_vel = table[players, 2:4]
+        self._stamina, self._effort, self._recovery, self._capacity = stamina, effort, recovery, capacity
+        self._score = score
+
+    # --- the owned arrays (write into them; they cannot be replaced) -----------------------
+    pos = _owned("_pos", "pos", "(P, 2) player positions (m).")
+    vel = _owned("_vel", "vel", "(P, 2) player velocities (m/cycle).")
+    ball = _owned("_ball", "ball", "(2,) ball position (m).")
+    ball_vel = _owned("_ball_vel", "ball_vel", "(2,) ball velocity (m/cycle).")
+    bodies = _owned("_bodies", "bodies", "(P + 1, 4) rows ``[x, y, vx, vy]``: the players, then the ball.")
+    body_table = _owned("_table", "body_table",
+                        "(P + 2, 4): :attr:`bodies` and the field's fixed frame (a last row always at rest).")
+    stamina = _owned("_stamina", "stamina", "(P,) player stamina.")
+    effort = _owned("_effort", "effort", "(P,) effort of each player: the fraction of dash power that becomes "
+                    "acceleration (see config.StaminaConfig).")
+    recovery = _owned("_recovery", "recovery", "(P,) stamina recovery rate of each player (see config.StaminaConfig).")
+    capacity = _owned("_capacity", "capacity",
+                      "(P,) stamina each player can still recover in this half (inf: unlimited).")
+    score = _owned("_score", "score", "(home, away) goals.")
+
+    # --- copies and pickling: the views are rebuilt on the copied table --------------------
+    def __getstate__(self) -> dict[str, object]:
+        views = {"_bodies", "_pos", "_vel", "_ball", "_ball_vel"}
+        return {key: value for key, value in self.__dict__.items() if key not in views}
+
+    def __setstate__(self, data: dict[str, object]) -> None:
+        self.__dict__.update(data)
+        self._allocate(self._table, self._stamina, self._effort, self._recovery, self._capacity, self._score)
+
+    def __repr__(self) -> str:
+        return (f"WorldState(sizes={self.sizes}, cycle={self.cycle}, half={self.half}, "
+                f"play_mode={self.play_mode!r}, score={self._score.tolist()})")
+
+    # --- derived facts ---------------------------------------------------------------------
     @property
     def players_per_team(self) -> int:
         """Players per side when both sides are the same size; a ValueError for uneven sides

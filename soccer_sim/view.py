@@ -13,33 +13,34 @@ cycle (one numpy call for all positions and velocities); teams must copy what th
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
-from soccer_sim.physics import BodyBlock
-from soccer_sim.state import NO_PLAYER, WorldState
+from soccer_sim.kernels import mirror_bodies, store_command
+from soccer_sim.state import NO_PLAYER, StateError, WorldState
 from soccer_sim.team import TeamCommand, TeamError, TeamView
 
 
 class TeamFrame:
     """One team's window on the world: builds its :class:`TeamView` and reads its commands.
 
-    ``commands`` is the match's (P, 4) absolute command buffer (``[dash_x, dash_y, kick_x,
-    kick_y]`` per player row, P players of both sides); this team writes its own rows.
-    ``players_per_team`` is this team's size; ``opponents`` the other side's (None: the same).
+    ``state`` is the match's world state: the frame reads its arrays (which the state owns and
+    never replaces) every cycle, and the sides' sizes from its ``sizes``. ``commands`` is the
+    match's (P, 4) absolute command buffer (``[dash_x, dash_y, kick_x, kick_y]`` per player
+    row, P players of both sides); this team writes its own rows.
     """
 
-    def __init__(self, team: int, name: str, players_per_team: int, block: BodyBlock,
-                 commands: np.ndarray, opponents: int | None = None) -> None:
-        n = players_per_team
-        m = n if opponents is None else opponents
-        home = n if team == 0 else m
-        total = n + m
+    def __init__(self, team: int, name: str, state: WorldState, commands: np.ndarray) -> None:
+        home, away = state.sizes
+        n = home if team == 0 else away
+        total = home + away
         self.team = team
         self.name = name
         self.n = n
         self._offset = 0 if team == 0 else home
         self.rows = slice(self._offset, self._offset + n)
-        self._block = block
+        self._state = state
+        self._bodies = state.bodies
+        self._stamina, self._effort, self._capacity = state.stamina, state.effort, state.capacity
+        self._score = state.score
         # Positions and velocities in two (P + 1, 2) blocks (players, then the ball), so that
         # every array of the view is C-contiguous (teams and compiled kernels take them as they are).
         self._pos = np.empty((total + 1, 2))
@@ -54,22 +55,20 @@ class TeamFrame:
         self._dash = self._commands[:, 0:2]
         self._kick = self._commands[:, 2:4]
         self._shape = (n, 2)
-        # Stand-ins for hand-built states without a stamina model: fresh players.
-        self._fresh_effort = np.ones(total)
-        self._fresh_capacity = np.full(total, np.inf)
 
     def update_view(self, state: WorldState, sign: int) -> TeamView:
         """Refresh and return the team's view of ``state`` (arrays overwritten in place).
-        ``sign``: the team's attack direction, ``state.attack_direction(team)``."""
+        ``state``: the state the frame was made for; ``sign``: the team's attack direction,
+        ``state.attack_direction(team)``."""
+        if state is not self._state:
+            raise StateError(f"the TeamFrame of {self.name!r} was made for another WorldState")
         view = self.view
         team = self.team
-        effort = state.effort if state.effort is not None else self._fresh_effort
-        capacity = state.capacity if state.capacity is not None else self._fresh_capacity
-        _mirror(self._block.dynamic, float(sign), self._pos, self._vel, self._offset, state.stamina, effort,
-                capacity, view.stamina, view.effort, view.capacity)
+        mirror_bodies(self._bodies, float(sign), self._pos, self._vel, self._offset, self._stamina, self._effort,
+                      self._capacity, view.stamina, view.effort, view.capacity)
         view.play_mode = state.play_mode
         view.mode_ours = state.mode_team == team
-        score = state.score.tolist()
+        score = self._score.tolist()
         view.score = (score[team], score[1 - team])
         view.cycle = state.cycle
         view.half = state.half
@@ -92,7 +91,7 @@ class TeamFrame:
             dash = self._as_array(dash, "dash")
         if type(kick) is not np.ndarray or kick.shape != self._shape or kick.dtype != np.float64:
             kick = self._as_array(kick, "kick")
-        bad = _store_command(dash, kick, float(sign), self._commands)
+        bad = store_command(dash, kick, float(sign), self._commands)
         if bad >= 0:
             field_name, values = ("dash", dash) if bad < self.n else ("kick", kick)
             self._check_finite(values, field_name)
@@ -133,41 +132,3 @@ class TeamFrame:
             raise TeamError(self.name, f"command.{field_name} is not finite: {values[bad[0]].tolist()}",
                             player=int(bad[0]))
 
-
-@njit(cache=True, nogil=True)
-def _store_command(dash: np.ndarray, kick: np.ndarray, sign: float,
-                   out: np.ndarray) -> int:  # pragma: no cover - compiled
-    """Write ``sign * dash`` and ``sign * kick`` into ``out`` ((n, 4) rows ``[dash, kick]``);
-    return -1 if every value is finite, else the first bad row (plus n if it is in ``kick``)."""
-    n = dash.shape[0]
-    bad = -1
-    for i in range(n):
-        for k in range(2):
-            d = dash[i, k]
-            c = kick[i, k]
-            out[i, k] = sign * d
-            out[i, 2 + k] = sign * c
-            if bad < 0:
-                if not np.isfinite(d):
-                    bad = i
-                elif not np.isfinite(c):
-                    bad = n + i
-    return bad
-
-
-@njit(cache=True, nogil=True)
-def _mirror(bodies: np.ndarray, sign: float, pos_out: np.ndarray, vel_out: np.ndarray, first: int,
-            stamina: np.ndarray, effort: np.ndarray, capacity: np.ndarray, stamina_out: np.ndarray,
-            effort_out: np.ndarray, capacity_out: np.ndarray) -> None:  # pragma: no cover - compiled
-    """Positions and velocities of ``bodies`` (rows ``[x, y, vx, vy]``) times ``sign`` into
-    ``pos_out``/``vel_out``, and this team's stamina, effort and capacity (rows ``first``
-    onwards) into the ``*_out`` arrays."""
-    for i in range(bodies.shape[0]):
-        pos_out[i, 0] = sign * bodies[i, 0]
-        pos_out[i, 1] = sign * bodies[i, 1]
-        vel_out[i, 0] = sign * bodies[i, 2]
-        vel_out[i, 1] = sign * bodies[i, 3]
-    for i in range(stamina_out.shape[0]):
-        stamina_out[i] = stamina[first + i]
-        effort_out[i] = effort[first + i]
-        capacity_out[i] = capacity[first + i]

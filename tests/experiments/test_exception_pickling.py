@@ -17,6 +17,7 @@ EXAMPLES: dict[str, tuple] = {
     "soccer_sim.registry.TeamNotFoundError": ("unknown team 'x'",),
     "soccer_sim.config.ConfigError": ("MatchConfig.max_cycles must be positive",),
     "soccer_sim.physics.PymunkChangedError": ("no Buffer",),
+    "soccer_sim.state.StateError": ("WorldState.vel must have shape (4, 2), got (3, 2)",),
     "formations.errors.FormationError": ("a.json", "sample 3 is outside the field", "formation 'attack'"),
     "agents.assignment.errors.AssignmentError": ("NaN in robots",),
     "agents.skills.model.SkillInputError": ("horizon must be positive",),

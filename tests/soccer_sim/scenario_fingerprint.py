@@ -13,6 +13,11 @@ this platform to put into ``scenario_fingerprints.json``::
 
     python -m tests.soccer_sim.scenario_fingerprint
 
+On a platform without a recording the tests do not pass silently: :func:`verdict` still plays
+each match twice and requires the two to be identical, compares them with the recordings of
+the same libraries on other processors (such recordings often carry over: see below), and
+skips with a warning that names this processor and the command above when none matches.
+
 (The goal-kick rule of rcssserver, ``proper_goal_kicks`` off, and the built-in teams' set plays
 that never stall changed play; the recordings since then are of that code.)
 Before that change the recordings on ``znver4`` and ``rocketlake`` processors were equal case
@@ -22,7 +27,11 @@ for case, so the trajectories did not depend on which of the two played them.
 from __future__ import annotations
 
 import hashlib
+import json
+from collections.abc import Callable
+from dataclasses import dataclass
 from importlib import metadata
+from pathlib import Path
 
 import numpy as np
 
@@ -73,12 +82,77 @@ class TrajectoryHash:
         return self._hash.hexdigest()
 
 
+RECORDINGS_PATH = Path(__file__).with_name("scenario_fingerprints.json")
+RECORD_COMMAND = "python -m tests.soccer_sim.scenario_fingerprint"
+"""Prints this platform's entry for :data:`RECORDINGS_PATH`."""
+
+
+def cpu_name() -> str:
+    """The processor numba compiles for: ``NUMBA_CPU_NAME`` when set (e.g. ``generic``), else the host's."""
+    import llvmlite.binding
+    import numba
+
+    return numba.config.CPU_NAME or llvmlite.binding.get_host_cpu_name()
+
+
+def library_versions() -> str:
+    return " ".join(f"{name}-{metadata.version(name)}" for name in ("numpy", "scipy", "numba", "pymunk", "lap"))
+
+
 def platform_key() -> str:
     """What the bits of a match depend on besides the code: the CPU and the numerical libraries."""
-    import llvmlite.binding
+    return f"{cpu_name()} {library_versions()}"
 
-    versions = " ".join(f"{name}-{metadata.version(name)}" for name in ("numpy", "scipy", "numba", "pymunk", "lap"))
-    return f"{llvmlite.binding.get_host_cpu_name()} {versions}"
+
+def load_recordings() -> dict[str, dict[str, dict[str, object]]]:
+    """Platform key -> case name -> recorded fingerprint."""
+    return json.loads(RECORDINGS_PATH.read_text())
+
+
+class UnrecordedPlatformWarning(UserWarning):
+    """The fingerprints of this platform were never recorded, so bit-identity went unchecked."""
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """How a played case compares with the recordings."""
+
+    checked: bool
+    """True when the case was compared with a recording (of this platform or, identical, of another)."""
+    message: str
+    """What was compared, or why nothing could be (naming the processor and the recording command)."""
+
+
+def verdict(name: str, play: Callable[[], dict[str, object]], recordings: dict[str, dict[str, dict[str, object]]],
+            platform: str | None = None) -> Verdict:
+    """Play case ``name`` with ``play`` and judge it against ``recordings``.
+
+    With a recording for ``platform`` (default: this one), the fingerprint must equal it (an
+    AssertionError otherwise). Without one, the case is played a second time and must come out
+    identical (determinism is checked everywhere), and it is compared with the recordings of
+    the same libraries on other processors: equal to one of them, it counts as checked;
+    different from all (processors may differ in the last bits), it is reported unchecked, with
+    the processor and :data:`RECORD_COMMAND` in the message.
+    """
+    platform = platform_key() if platform is None else platform
+    played = play()
+    if platform in recordings:
+        expected = recordings[platform][name]
+        assert played == expected, f"{name} differs from the recording of {platform!r}: {played} != {expected}"
+        return Verdict(True, f"{name} equals the recording of {platform!r}")
+    again = play()
+    assert again == played, f"{name} played twice gave two different matches: {played} != {again}"
+    cpu, _, versions = platform.partition(" ")
+    others = {key.partition(" ")[0]: cases[name] for key, cases in recordings.items()
+              if key.partition(" ")[2] == versions and name in cases}
+    same = sorted(other for other, expected in others.items() if expected == played)
+    if same:
+        return Verdict(True, f"{name} equals the recording of processor {same[0]!r} (same libraries; "
+                             f"none exists for {cpu!r})")
+    compared = f"differs from the recordings of {sorted(others)}" if others else "no recording of these libraries exists"
+    return Verdict(False, f"bit-identity of {name} unchecked on processor {cpu!r} ({versions}): {compared}; "
+                          f"only checked that two runs are identical. Record this platform with "
+                          f"`{RECORD_COMMAND}` and add its entry to {RECORDINGS_PATH.name}")
 
 
 def fingerprint(home: str, away: str, seed: int, max_cycles: int | None, **match_kwargs: object) -> dict[str, object]:

@@ -130,16 +130,23 @@ def test_a_match_is_played_once_and_a_team_object_plays_one_side() -> None:
         Match("idle", "idle", config={"max_cycles": 3})
 
 
-def test_referee_replacing_state_arrays_is_picked_up() -> None:
-    """The state arrays are the authority even if someone rebinds them instead of writing."""
+def test_the_state_owns_its_arrays_and_what_is_written_into_them_is_played() -> None:
+    """The state's arrays cannot be replaced (so nothing can fall out of step with the
+    physics); a position written into them in place is where the physics moves the player from."""
     match = Match("idle", "idle", config=MatchConfig(max_cycles=5))
     match.start()
-    moved = match.state.pos.copy()
-    moved[5] = (-20.0, 10.0)
-    match.state.pos = moved
+    state = match.state
+    arrays = {name: getattr(state, name) for name in
+              ("pos", "vel", "ball", "ball_vel", "stamina", "effort", "recovery", "capacity", "score", "bodies")}
+    for name in arrays:
+        with pytest.raises(AttributeError):
+            setattr(state, name, arrays[name].copy())
+    state.pos[5] = (-20.0, 10.0)
+    state.vel[5] = (0.5, 0.0)
     match.step()
-    assert match.state.pos is match.block.pos
-    assert np.allclose(match.state.pos[5], (-20.0, 10.0))
+    assert all(getattr(state, name) is array for name, array in arrays.items())
+    assert state.pos[5].tolist() == pytest.approx([-19.5, 10.0], abs=0.05)  # moved on from there
+    assert np.shares_memory(state.bodies, state.pos) and np.shares_memory(state.bodies, state.ball)
 
 
 def test_chaser_kicks_towards_the_opponents_goal_in_its_own_frame() -> None:

@@ -12,7 +12,8 @@ from tests.soccer_sim.core_helpers import quiet_config
 
 from soccer_sim.config import StaminaConfig
 from soccer_sim.kinematics import CycleNoise, Kinematics
-from soccer_sim.physics import BodyBlock, Physics, SubstepPlanner
+from soccer_sim.physics import Physics, SubstepPlanner
+from soccer_sim.state import WorldState
 
 N = 11
 CONFIG = quiet_config()
@@ -30,11 +31,12 @@ BALL_AWAY = (0.0, 25.0)
 """Where the ball waits when a test is about the players."""
 
 
-def world(config=CONFIG) -> tuple[BodyBlock, Physics]:
-    block = BodyBlock(config.players_per_team)
-    block.pos[:] = FAR
-    block.ball[:] = BALL_AWAY
-    return block, Physics(config, block)
+def world(config=CONFIG) -> tuple[WorldState, Physics]:
+    """Players far apart, the ball away from them, and a collision solver working on them."""
+    state = WorldState((config.players_per_team, config.players_per_team))
+    state.pos[:] = FAR
+    state.ball[:] = BALL_AWAY
+    return state, Physics(config, state)
 
 
 # --- dash ----------------------------------------------------------------------------------
@@ -42,7 +44,7 @@ class Players:
     """Per-player arrays of the dash and stamina model, fresh unless changed."""
 
     def __init__(self, config=CONFIG) -> None:
-        self.kin = Kinematics(config)
+        self.kin = Kinematics(config, 2 * config.players_per_team)
         n2 = 2 * config.players_per_team
         self.vel = np.zeros((n2, 2))
         self.stamina, self.effort, self.recovery, self.capacity = (np.empty(n2) for _ in range(4))
@@ -162,7 +164,7 @@ def test_once_the_capacity_is_spent_stamina_no_longer_recovers() -> None:
 # --- kicks ---------------------------------------------------------------------------------
 def kick_once(ball_offset, kick_vector, holder=-1):
     """Player 0 at the origin, the ball at ``ball_offset``; returns (kicked?, new ball velocity)."""
-    kin = Kinematics(CONFIG)
+    kin = Kinematics(CONFIG, 2 * N)
     pos = FAR.copy()
     pos[0] = (0.0, 0.0)
     ball = np.array(ball_offset, dtype=float)
@@ -207,7 +209,7 @@ def test_kick_power_and_ball_speed_are_clipped() -> None:
 
 def test_zero_kick_vector_is_no_kick_and_mask_forbids() -> None:
     assert kick_once((0.5, 0.0), (0.0, 0.0))[0] == 0
-    kin = Kinematics(CONFIG)
+    kin = Kinematics(CONFIG, 2 * N)
     pos = FAR.copy()
     pos[0] = (0.0, 0.0)
     kick = np.ones((2 * N, 2))
@@ -219,202 +221,202 @@ def test_zero_kick_vector_is_no_kick_and_mask_forbids() -> None:
 
 # --- ball decay and the collision solver -----------------------------------------------------
 def test_ball_decays_by_the_ball_decay_each_cycle() -> None:
-    block, physics = world()
-    kin = Kinematics(CONFIG)
-    block.ball_vel[:] = (2.0, 0.0)
-    x = block.ball[0]
+    state, physics = world()
+    kin = Kinematics(CONFIG, 2 * N)
+    state.ball_vel[:] = (2.0, 0.0)
+    x = state.ball[0]
     for cycle in range(10):
         physics.step(1)
-        kin.decay(block.vel, block.ball_vel, np.full(2, 0.5))
+        kin.decay(state.vel, state.ball_vel, np.full(2, 0.5))
         x += 2.0 * PHYS.ball_decay ** cycle
-        assert block.ball_vel[0] == pytest.approx(2.0 * PHYS.ball_decay ** (cycle + 1))
-        assert block.ball[0] == pytest.approx(x)
+        assert state.ball_vel[0] == pytest.approx(2.0 * PHYS.ball_decay ** (cycle + 1))
+        assert state.ball[0] == pytest.approx(x)
     # The players decay differently: 0.4 per cycle.
-    block.vel[0] = (1.0, 0.0)
-    kin.decay(block.vel, block.ball_vel, np.full(2, 0.5))
-    assert block.vel[0, 0] == pytest.approx(PHYS.player_decay)
+    state.vel[0] = (1.0, 0.0)
+    kin.decay(state.vel, state.ball_vel, np.full(2, 0.5))
+    assert state.vel[0, 0] == pytest.approx(PHYS.player_decay)
 
 
 RIGID = replace(CONFIG, physics=replace(PHYS, body_ball_contact="rigid"))
 
 
-def planned(block: BodyBlock, ball_free: bool = True, config=CONFIG) -> int:
-    return SubstepPlanner(config).count(block.dynamic, ball_free)
+def planned(state: WorldState, ball_free: bool = True, config=CONFIG) -> int:
+    return SubstepPlanner(config).count(state.bodies, ball_free)
 
 
 @pytest.mark.parametrize("player_speed", [0.0, 1.05])
 def test_full_speed_ball_does_not_pass_through_a_player(player_speed: float) -> None:
-    block, physics = world()
-    block.pos[0] = (0.0, 0.0)
-    block.vel[0] = (-player_speed, 0.0)  # running at the ball makes it worse
-    block.ball[:] = (-2.0, 0.0)
-    block.ball_vel[:] = (PHYS.ball_speed_max, 0.0)
-    assert planned(block) == 1  # the contact sweep is exact: no sub-steps needed for it
+    state, physics = world()
+    state.pos[0] = (0.0, 0.0)
+    state.vel[0] = (-player_speed, 0.0)  # running at the ball makes it worse
+    state.ball[:] = (-2.0, 0.0)
+    state.ball_vel[:] = (PHYS.ball_speed_max, 0.0)
+    assert planned(state) == 1  # the contact sweep is exact: no sub-steps needed for it
     touchers = physics.step(1)
     assert touchers.tolist() == [0]
     # rcssserver: both are put back where they met, and their velocities multiplied by -0.1.
     contact = PHYS.player_radius + PHYS.ball_radius
-    assert block.pos[0, 0] - block.ball[0] == pytest.approx(contact)
+    assert state.pos[0, 0] - state.ball[0] == pytest.approx(contact)
     t = (2.0 - contact) / (PHYS.ball_speed_max + player_speed)  # the moment they met
-    assert block.ball[0] == pytest.approx(-2.0 + PHYS.ball_speed_max * t)
-    assert block.ball_vel.tolist() == pytest.approx([-0.1 * PHYS.ball_speed_max, 0.0])
-    assert block.vel[0].tolist() == pytest.approx([0.1 * player_speed, 0.0])
+    assert state.ball[0] == pytest.approx(-2.0 + PHYS.ball_speed_max * t)
+    assert state.ball_vel.tolist() == pytest.approx([-0.1 * PHYS.ball_speed_max, 0.0])
+    assert state.vel[0].tolist() == pytest.approx([0.1 * player_speed, 0.0])
 
 
 @pytest.mark.parametrize("player_speed", [0.0, 1.05])
 def test_rigid_contacts_need_substeps_against_tunnelling(player_speed: float) -> None:
-    block, physics = world(RIGID)
-    block.pos[0] = (0.0, 0.0)
-    block.vel[0] = (-player_speed, 0.0)
-    block.ball[:] = (-1.2, 0.0)
-    block.ball_vel[:] = (PHYS.ball_speed_max, 0.0)
-    substeps = planned(block, config=RIGID)
+    state, physics = world(RIGID)
+    state.pos[0] = (0.0, 0.0)
+    state.vel[0] = (-player_speed, 0.0)
+    state.ball[:] = (-1.2, 0.0)
+    state.ball_vel[:] = (PHYS.ball_speed_max, 0.0)
+    substeps = planned(state, config=RIGID)
     assert substeps == math.ceil((PHYS.ball_speed_max + player_speed) / PHYS.max_substep_distance)
     touchers = physics.step(substeps)
-    assert block.ball[0] < block.pos[0, 0]  # still on the near side
-    assert block.ball_vel[0] < 0.0  # bounced back
+    assert state.ball[0] < state.pos[0, 0]  # still on the near side
+    assert state.ball_vel[0] < 0.0  # bounced back
     assert touchers.tolist() == [0]
 
 
 def test_without_substeps_a_rigid_ball_would_tunnel() -> None:
     """The control experiment: one step lets the ball jump through, so sub-steps matter."""
-    block, physics = world(RIGID)
-    block.pos[0] = (0.0, 0.0)
-    block.ball[:] = (-1.2, 0.0)
-    block.ball_vel[:] = (PHYS.ball_speed_max, 0.0)
+    state, physics = world(RIGID)
+    state.pos[0] = (0.0, 0.0)
+    state.ball[:] = (-1.2, 0.0)
+    state.ball_vel[:] = (PHYS.ball_speed_max, 0.0)
     physics.step(1)
-    assert block.ball[0] > 1.0
+    assert state.ball[0] > 1.0
 
 
 def test_a_running_body_stops_at_the_ball_instead_of_pushing_it() -> None:
-    block, physics = world()
-    block.pos[0], block.vel[0] = (-1.0, 0.0), (1.0, 0.0)
-    block.ball[:] = (0.0, 0.0)
+    state, physics = world()
+    state.pos[0], state.vel[0] = (-1.0, 0.0), (1.0, 0.0)
+    state.ball[:] = (0.0, 0.0)
     assert physics.step(1).tolist() == [0]
-    assert block.ball.tolist() == [0.0, 0.0] and block.ball_vel.tolist() == [0.0, 0.0]
-    assert block.pos[0, 0] == pytest.approx(-(PHYS.player_radius + PHYS.ball_radius))
-    assert block.vel[0, 0] == pytest.approx(-0.1)
+    assert state.ball.tolist() == [0.0, 0.0] and state.ball_vel.tolist() == [0.0, 0.0]
+    assert state.pos[0, 0] == pytest.approx(-(PHYS.player_radius + PHYS.ball_radius))
+    assert state.vel[0, 0] == pytest.approx(-0.1)
     # With rigid contacts the same run drives the ball ahead at the player's speed.
-    block, physics = world(RIGID)
-    block.pos[0], block.vel[0] = (-1.0, 0.0), (1.0, 0.0)
-    block.ball[:] = (0.0, 0.0)
-    physics.step(planned(block, config=RIGID))
-    assert block.ball_vel[0] > 0.9
+    state, physics = world(RIGID)
+    state.pos[0], state.vel[0] = (-1.0, 0.0), (1.0, 0.0)
+    state.ball[:] = (0.0, 0.0)
+    physics.step(planned(state, config=RIGID))
+    assert state.ball_vel[0] > 0.9
 
 
 def test_this_cycles_kicker_lets_the_ball_pass() -> None:
-    block, physics = world()
-    block.pos[0] = (0.0, 0.0)
-    block.ball[:] = (-0.5, 0.0)
-    block.ball_vel[:] = (2.0, 0.0)  # kicked through the kicker's own body
+    state, physics = world()
+    state.pos[0] = (0.0, 0.0)
+    state.ball[:] = (-0.5, 0.0)
+    state.ball_vel[:] = (2.0, 0.0)  # kicked through the kicker's own body
     assert physics.step(1, np.array([0])).size == 0
-    assert block.ball[0] == pytest.approx(1.5)
+    assert state.ball[0] == pytest.approx(1.5)
 
 
 @pytest.mark.parametrize("speed", [0.4, 0.7, 1.05])
 def test_players_running_head_on_do_not_pass_through_each_other(speed: float) -> None:
-    block, physics = world()
-    block.pos[0], block.vel[0] = (-0.8 * speed, 0.0), (speed, 0.0)
-    block.pos[N], block.vel[N] = (0.8 * speed, 0.0), (-speed, 0.0)
-    substeps = planned(block)
+    state, physics = world()
+    state.pos[0], state.vel[0] = (-0.8 * speed, 0.0), (speed, 0.0)
+    state.pos[N], state.vel[N] = (0.8 * speed, 0.0), (-speed, 0.0)
+    substeps = planned(state)
     assert substeps == math.ceil(2 * speed / (2 * PHYS.max_substep_distance) - 1e-9)
     physics.step(substeps)
-    assert block.pos[0, 0] < block.pos[N, 0]
+    assert state.pos[0, 0] < state.pos[N, 0]
     if speed > PHYS.max_substep_distance:  # the control: one step would let them swap sides
-        block2, physics2 = world()
-        block2.data[:] = 0.0
-        block2.pos[:] = FAR
-        block2.ball[:] = BALL_AWAY
-        block2.pos[0], block2.vel[0] = (-0.8 * speed, 0.0), (speed, 0.0)
-        block2.pos[N], block2.vel[N] = (0.8 * speed, 0.0), (-speed, 0.0)
+        state2, physics2 = world()
+        state2.body_table[:] = 0.0
+        state2.pos[:] = FAR
+        state2.ball[:] = BALL_AWAY
+        state2.pos[0], state2.vel[0] = (-0.8 * speed, 0.0), (speed, 0.0)
+        state2.pos[N], state2.vel[N] = (0.8 * speed, 0.0), (-speed, 0.0)
         physics2.step(1)
-        assert block2.pos[0, 0] > block2.pos[N, 0]
+        assert state2.pos[0, 0] > state2.pos[N, 0]
 
 
 def test_substeps_follow_closing_speeds_of_bodies_that_can_meet() -> None:
     step = PHYS.max_substep_distance
-    block, _ = world()
-    assert planned(block) == 1
+    state, _ = world()
+    assert planned(state) == 1
     # A lone sprinter, and two players running side by side, need no sub-steps.
-    block.vel[0] = (1.05, 0.0)
-    block.pos[1], block.vel[1] = block.pos[0] + (0.0, 0.7), (1.05, 0.0)
-    assert planned(block) == 1
+    state.vel[0] = (1.05, 0.0)
+    state.pos[1], state.vel[1] = state.pos[0] + (0.0, 0.7), (1.05, 0.0)
+    assert planned(state) == 1
     # Head-on towards a teammate within reach.
-    block.pos[2], block.vel[2] = block.pos[0] + (2.0, 0.0), (-1.05, 0.0)
-    assert planned(block) == math.ceil(2.1 / (2 * step))
+    state.pos[2], state.vel[2] = state.pos[0] + (2.0, 0.0), (-1.05, 0.0)
+    assert planned(state) == math.ceil(2.1 / (2 * step))
     # A fast ball near a player: with rigid contacts the closing speed counts...
-    block.ball[:] = block.pos[5] + (2.0, 0.0)
-    block.ball_vel[:] = (-3.0, 0.0)
-    assert planned(block, config=RIGID) == math.ceil(3.0 / step)
-    assert planned(block) == math.ceil(2.1 / (2 * step))  # (rcssserver contacts are swept exactly)
+    state.ball[:] = state.pos[5] + (2.0, 0.0)
+    state.ball_vel[:] = (-3.0, 0.0)
+    assert planned(state, config=RIGID) == math.ceil(3.0 / step)
+    assert planned(state) == math.ceil(2.1 / (2 * step))  # (rcssserver contacts are swept exactly)
     # ...not while a goalkeeper holds it...
-    assert planned(block, ball_free=False, config=RIGID) == math.ceil(2.1 / (2 * step))
+    assert planned(state, ball_free=False, config=RIGID) == math.ceil(2.1 / (2 * step))
     # ...and not in free flight.
-    block.ball[:] = (0.0, 20.0)
-    assert planned(block, config=RIGID) == math.ceil(2.1 / (2 * step))
+    state.ball[:] = (0.0, 20.0)
+    assert planned(state, config=RIGID) == math.ceil(2.1 / (2 * step))
     # Near a thin goal post the ball may move at most the ball-post contact distance.
-    block.vel[:] = 0.0
-    block.ball[:] = (CONFIG.field.half_length - 2.0, CONFIG.field.goal_width / 2)
-    block.ball_vel[:] = (3.0, 0.0)
+    state.vel[:] = 0.0
+    state.ball[:] = (CONFIG.field.half_length - 2.0, CONFIG.field.goal_width / 2)
+    state.ball_vel[:] = (3.0, 0.0)
     contact = CONFIG.field.goal_post_radius + PHYS.ball_radius
-    assert planned(block) == math.ceil(3.0 / contact)
+    assert planned(state) == math.ceil(3.0 / contact)
 
 
 @pytest.mark.parametrize("offset", [0.01, 0.05, 0.1])
 def test_ball_bounces_off_a_goal_post(offset: float) -> None:
-    block, physics = world()
+    state, physics = world()
     post_y = CONFIG.field.goal_width / 2 + CONFIG.field.goal_post_radius
-    block.ball[:] = (CONFIG.field.half_length - 3.0, post_y + offset)
-    block.ball_vel[:] = (2.9, 0.0)
+    state.ball[:] = (CONFIG.field.half_length - 3.0, post_y + offset)
+    state.ball_vel[:] = (2.9, 0.0)
     for _ in range(2):
-        physics.step(planned(block))
+        physics.step(planned(state))
     # Deflected (by more than 30 degrees, outwards) rather than passing through.
-    vx, vy = block.ball_vel.tolist()
+    vx, vy = state.ball_vel.tolist()
     assert math.atan2(vy, vx) > math.radians(30)
 
 
 def test_teammate_contacts_are_counted_once_per_contact_and_per_team() -> None:
-    block, physics = world()
-    block.pos[0] = (0.0, 0.0)
-    block.pos[1] = (1.0, 0.0)  # home teammates 1 m apart
-    block.pos[N] = (10.0, 0.0)
-    block.pos[N + 1] = (11.0, 0.0)  # an away pair...
-    block.pos[2] = (20.0, 0.0)
-    block.pos[N + 2] = (21.0, 0.0)  # ...and a home-away pair
+    state, physics = world()
+    state.pos[0] = (0.0, 0.0)
+    state.pos[1] = (1.0, 0.0)  # home teammates 1 m apart
+    state.pos[N] = (10.0, 0.0)
+    state.pos[N + 1] = (11.0, 0.0)  # an away pair...
+    state.pos[2] = (20.0, 0.0)
+    state.pos[N + 2] = (21.0, 0.0)  # ...and a home-away pair
     for a, b in ((0, 1), (N, N + 1), (2, N + 2)):
-        block.vel[a] = (0.3, 0.0)
-        block.vel[b] = (-0.3, 0.0)
+        state.vel[a] = (0.3, 0.0)
+        state.vel[b] = (-0.3, 0.0)
     physics.step(4)
     assert physics.teammate_contacts.tolist() == [1, 1]
     for _ in range(5):  # staying in contact is still one contact
-        block.vel[0], block.vel[1] = (0.1, 0.0), (-0.1, 0.0)
+        state.vel[0], state.vel[1] = (0.1, 0.0), (-0.1, 0.0)
         physics.step(1)
     assert physics.teammate_contacts.tolist() == [1, 1]
-    block.pos[1] = (3.0, 0.0)  # apart...
+    state.pos[1] = (3.0, 0.0)  # apart...
     physics.step(1)
-    block.pos[1] = (0.6, 0.0)  # ...and together again: a second contact
+    state.pos[1] = (0.6, 0.0)  # ...and together again: a second contact
     physics.step(1)
     assert physics.teammate_contacts.tolist() == [2, 1]
 
 
 def test_players_stay_within_the_field_and_its_margin() -> None:
-    block, physics = world()
-    block.pos[3] = (CONFIG.field.half_length + CONFIG.field.margin - 0.1, 0.0)
-    block.vel[3] = (1.0, 0.0)
-    block.pos[4] = (0.0, -CONFIG.field.half_width - CONFIG.field.margin + 0.1)
-    block.vel[4] = (0.0, -1.0)
+    state, physics = world()
+    state.pos[3] = (CONFIG.field.half_length + CONFIG.field.margin - 0.1, 0.0)
+    state.vel[3] = (1.0, 0.0)
+    state.pos[4] = (0.0, -CONFIG.field.half_width - CONFIG.field.margin + 0.1)
+    state.vel[4] = (0.0, -1.0)
     physics.step(4)
-    assert block.pos[3, 0] == pytest.approx(CONFIG.field.half_length + CONFIG.field.margin)
-    assert block.pos[4, 1] == pytest.approx(-CONFIG.field.half_width - CONFIG.field.margin)
+    assert state.pos[3, 0] == pytest.approx(CONFIG.field.half_length + CONFIG.field.margin)
+    assert state.pos[4, 1] == pytest.approx(-CONFIG.field.half_width - CONFIG.field.margin)
 
 
 def test_held_ball_does_not_collide() -> None:
-    block, physics = world()
-    block.pos[0] = (0.0, 0.0)
-    block.ball[:] = (0.0, 0.0)
+    state, physics = world()
+    state.pos[0] = (0.0, 0.0)
+    state.ball[:] = (0.0, 0.0)
     physics.set_ball_collides(False)
     assert physics.step(1).size == 0
-    assert block.ball.tolist() == [0.0, 0.0]
+    assert state.ball.tolist() == [0.0, 0.0]
     physics.set_ball_collides(True)
     assert physics.step(1).tolist() == [0]
 
@@ -431,26 +433,26 @@ def test_cycle_noise_is_uniform_and_drawn_in_one_fixed_block() -> None:
 
 
 def test_a_kick_plays_the_ball_around_the_kicker_but_not_through_others() -> None:
-    block, physics = world()
-    block.pos[0] = (0.0, 0.0)  # the kicker, ball just in front of it...
-    block.pos[1] = (-1.4, 0.0)  # ...and a teammate behind it
-    block.ball[:] = (0.5, 0.0)
-    block.ball_vel[:] = (-2.0, 0.0)  # kicked back through the kicker
-    touchers = physics.step(planned(block), kickers=np.array([0]))
+    state, physics = world()
+    state.pos[0] = (0.0, 0.0)  # the kicker, ball just in front of it...
+    state.pos[1] = (-1.4, 0.0)  # ...and a teammate behind it
+    state.ball[:] = (0.5, 0.0)
+    state.ball_vel[:] = (-2.0, 0.0)  # kicked back through the kicker
+    touchers = physics.step(planned(state), kickers=np.array([0]))
     assert touchers.tolist() == [1]  # the kicker let it through; the teammate stopped it
-    assert block.ball[0] > -1.4
+    assert state.ball[0] > -1.4
     # After the kick cycle the kicker collides with the ball again.
-    block.ball[:] = (0.5, 0.0)
-    block.ball_vel[:] = (-1.0, 0.0)
+    state.ball[:] = (0.5, 0.0)
+    state.ball_vel[:] = (-1.0, 0.0)
     assert physics.step(4).tolist() == [0]
 
 
 # --- the bulk body transfer's dependence on pymunk internals ----------------------------------
 def test_bulk_transfer_round_trips_every_field_of_every_body() -> None:
-    block, physics = world()
+    state, physics = world()
     rng = np.random.default_rng(5)
-    block.dynamic[:] = rng.uniform(-50.0, 50.0, block.dynamic.shape)  # players and ball
-    expected = block.dynamic.copy()
+    state.bodies[:] = rng.uniform(-50.0, 50.0, state.bodies.shape)  # players and ball
+    expected = state.bodies.copy()
     bodies = physics.space.bodies  # in the order they were added: the players, then the ball
     physics._bulk.write()
     got = np.array([[*b.position, *b.velocity] for b in bodies])
@@ -459,10 +461,10 @@ def test_bulk_transfer_round_trips_every_field_of_every_body() -> None:
         body.position = (body.position.x + 1.0, body.position.y)
         body.velocity = (body.velocity.x, body.velocity.y - 2.0)
     physics._bulk.read()
-    assert np.array_equal(block.dynamic[:, 0], expected[:, 0] + 1.0)
-    assert np.array_equal(block.dynamic[:, 3], expected[:, 3] - 2.0)
-    assert np.array_equal(block.dynamic[:, [1, 2]], expected[:, [1, 2]])
-    assert block.data[-1].tolist() == [0.0, 0.0, 0.0, 0.0]  # the static body stays at rest
+    assert np.array_equal(state.bodies[:, 0], expected[:, 0] + 1.0)
+    assert np.array_equal(state.bodies[:, 3], expected[:, 3] - 2.0)
+    assert np.array_equal(state.bodies[:, [1, 2]], expected[:, [1, 2]])
+    assert state.body_table[-1].tolist() == [0.0, 0.0, 0.0, 0.0]  # the static body stays at rest
 
 
 def test_a_changed_pymunk_fails_loudly_naming_the_supported_versions(monkeypatch) -> None:
@@ -491,7 +493,7 @@ def test_a_changed_pymunk_fails_loudly_naming_the_supported_versions(monkeypatch
 @pytest.mark.parametrize("cap_sum, expected", [(True, 2.7), (False, 3.0)])
 def test_the_kicks_of_one_cycle_are_summed_and_capped(cap_sum: bool, expected: float) -> None:
     config = replace(CONFIG, physics=replace(PHYS, cap_summed_kicks=cap_sum))
-    kin = Kinematics(config)
+    kin = Kinematics(config, 2 * config.players_per_team)
     touch = PHYS.player_radius + PHYS.ball_radius
     pos = FAR.copy()
     pos[0], pos[N] = (-touch, 0.0), (0.0, -touch)  # two players touching the ball, both kick it along +x
@@ -512,7 +514,7 @@ def test_opposite_kicks_cancel_but_leave_the_ball_noise_of_both() -> None:
     from the kicks' strengths, as rcssserver draws it per kick) still moves the ball, so two
     stubborn players cannot hold it still between them for ever."""
     config = replace(CONFIG, physics=replace(PHYS, kick_noise=0.05))
-    kin = Kinematics(config)
+    kin = Kinematics(config, 2 * config.players_per_team)
     touch = PHYS.player_radius + PHYS.ball_radius
     pos = FAR.copy()
     pos[0], pos[N] = (-touch, 0.0), (touch, 0.0)

@@ -42,7 +42,7 @@ def test_unknown_name_lists_the_available_ones() -> None:
     ("no_such_module_xyz:Team", "cannot import module 'no_such_module_xyz'"),
     ("soccer_sim.trivial_teams:NoSuchTeam", "has no attribute 'NoSuchTeam'"),
     ("soccer_sim.trivial_teams:", "must look like"),
-    ("soccer_sim.trivial_teams:math", "neither a Team nor a class"),
+    ("soccer_sim.trivial_teams:np", "neither a Team nor a class"),
     ("soccer_sim.trivial_teams:TeamCommand", "without arguments failed"),
 ])
 def test_bad_paths_say_what_is_wrong(path: str, fragment: str) -> None:

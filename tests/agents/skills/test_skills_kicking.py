@@ -19,7 +19,7 @@ PHYS = CONFIG.physics
 
 def apply_kick(player, ball, ball_vel, kick, holder=False) -> np.ndarray:
     """The ball's velocity after the simulator applies ``kick`` by row 0 (no noise)."""
-    kin = Kinematics(CONFIG)
+    kin = Kinematics(CONFIG, 2 * CONFIG.players_per_team)
     pos = np.full((2 * N, 2), 40.0)
     pos[0] = player
     requests = np.zeros((2 * N, 2))

@@ -18,7 +18,7 @@ ROWS = 2 * N
 def simulate(pos, vel, targets, cycles, speed_cap=None, effort=None, stamina_share=1.0):
     """Roll the team's players with the simulator's dash rule (no noise): each cycle the skill's
     command, Kinematics.dash, pos += vel, vel *= decay. Returns the positions and speeds."""
-    kin = Kinematics(CONFIG)
+    kin = Kinematics(CONFIG, 2 * CONFIG.players_per_team)
     n = len(pos)
     all_vel = np.zeros((ROWS, 2))
     all_vel[:n] = vel

@@ -1,0 +1,391 @@
+"""The compiled loops of the simulator core (numba), in one place.
+
+Each kernel runs once or twice per cycle over every player, where the same work written as a
+handful of numpy calls would cost several times more (numpy's per-call overhead dominates
+on arrays of 23 rows). Parameters fixed for a match travel as a named record: a one-element
+numpy structured array whose fields the kernel reads by name (``params[0].ball_decay``); see
+:func:`make_record`. Passing such a record costs the same as passing a plain float array.
+
+Users: :mod:`soccer_sim.kinematics` (dash and stamina, kick candidates, decay),
+:mod:`soccer_sim.physics` (sub-steps, rcssserver ball contacts, the field margin and
+teammate contacts), :mod:`soccer_sim.view` (mirrored views, command intake) and
+:mod:`soccer_sim.trivial_teams` (the chaser).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+REQUEST_CAP = 1e100
+"""Longest dash or kick request the rules work with: a longer one is shortened to this length in
+the same direction first. Any request above the physical limits is clipped to them anyway;
+shortening it first keeps its length (and the products of the angle rules) from overflowing to
+inf, which would turn a dash of 1e160 or a kick of 1.7e308 into none at all."""
+
+
+def _fields(*names: str, kind: type = np.float64) -> list[tuple[str, type]]:
+    return [(name, kind) for name in names]
+
+
+DASH_PARAMS = np.dtype(_fields(
+    "power_rate", "power_max", "side_rate", "back_rate", "heading_speed", "extra_stamina", "speed_max",
+    "noise", "stamina_max", "recovery_per_cycle", "recover_dec_thr", "recover_dec", "recover_min",
+    "effort_dec_thr", "effort_dec", "effort_min", "effort_inc_thr", "effort_inc", "effort_max"))
+"""The dash and stamina rules (:func:`dash_players`); the thresholds are absolute stamina values."""
+
+DECAY_PARAMS = np.dtype(_fields("player_decay", "ball_decay", "ball_noise", "ball_speed_max"))
+"""Velocity decay and ball noise (:func:`decay_velocities`)."""
+
+MARGIN_PARAMS = np.dtype(_fields("home", "players", kind=np.int64) + _fields(
+    "begin2", "end2", "x_max", "y_max"))
+"""Player rows of home and of both sides, the squared centre distances below which a teammate
+contact begins and above which it ends, the largest |x| and |y| of a player
+(:func:`keep_in_field_and_count_contacts`)."""
+
+SUBSTEP_PARAMS = np.dtype(_fields(
+    "player_radius", "ball_radius", "max_step", "post_contact", "post_step", "post_x", "post_y")
+    + _fields("ball_meets_players", kind=np.bool_))
+"""Radii, the largest relative move per sub-step, the ball-post contact distance and the largest
+ball step near a post, the post centre's |x| and |y|, and whether the collision solver meets
+ball and players (:func:`substeps_needed`)."""
+
+BALL_CONTACT_PARAMS = np.dtype(_fields("contact", "factor"))
+"""Player-ball contact distance and the velocity factor of a contact (:func:`resolve_ball_contacts`)."""
+
+
+def make_record(dtype: np.dtype, **values: float | bool) -> np.ndarray:
+    """A one-element record array of ``dtype`` with every field set by name (all are required)."""
+    names = set(dtype.names or ())
+    if set(values) != names:
+        missing, unknown = sorted(names - set(values)), sorted(set(values) - names)
+        raise TypeError(f"record fields missing {missing}, unknown {unknown}")
+    record = np.zeros(1, dtype=dtype)
+    for name, value in values.items():
+        record[name] = value
+    return record
+
+
+# --- kinematics ------------------------------------------------------------------------------
+@njit(cache=True, nogil=True)
+def dash_players(vel: np.ndarray, stamina: np.ndarray, effort: np.ndarray, recovery: np.ndarray,
+                 capacity: np.ndarray, dash: np.ndarray, noise: np.ndarray, params: np.ndarray,
+                 speed_out: np.ndarray) -> float:  # pragma: no cover - compiled
+    """The dash and stamina rules for every player row (see :mod:`soccer_sim.kinematics`);
+    returns the top speed. ``params``: a :data:`DASH_PARAMS` record."""
+    p = params[0]
+    power_rate, power_max, side_rate, back_rate, heading_speed = (
+        p.power_rate, p.power_max, p.side_rate, p.back_rate, p.heading_speed)
+    extra, speed_max, noise_frac, stamina_max, inc_max = (
+        p.extra_stamina, p.speed_max, p.noise, p.stamina_max, p.recovery_per_cycle)
+    rec_thr, rec_dec, rec_min = p.recover_dec_thr, p.recover_dec, p.recover_min
+    eff_dec_thr, eff_dec, eff_min = p.effort_dec_thr, p.effort_dec, p.effort_min
+    eff_inc_thr, eff_inc, eff_max = p.effort_inc_thr, p.effort_inc, p.effort_max
+    request_cap = REQUEST_CAP
+    fastest = 0.0
+    for i in range(vel.shape[0]):
+        ax, ay = dash[i, 0], dash[i, 1]
+        size = math.sqrt(ax * ax + ay * ay)
+        if size > request_cap:  # huge (or overflowing) request: same direction, finite length
+            big = max(abs(ax), abs(ay))
+            ax = ax / big * request_cap
+            ay = ay / big * request_cap
+            size = math.sqrt(ax * ax + ay * ay)
+        vx, vy = vel[i, 0], vel[i, 1]
+        if size > 0.0:
+            rate = 1.0
+            speed = math.sqrt(vx * vx + vy * vy)
+            if speed > 0.0:
+                cos = min(1.0, max(-1.0, (ax * vx + ay * vy) / (size * speed)))
+                angle = math.degrees(math.acos(cos))
+                if angle > 90.0:
+                    dir_rate = back_rate - (back_rate - side_rate) * (1.0 - (angle - 90.0) / 90.0)
+                else:
+                    dir_rate = side_rate + (1.0 - side_rate) * (1.0 - angle / 90.0)
+                weight = min(1.0, speed / heading_speed)
+                rate = 1.0 - weight * (1.0 - dir_rate)
+            per_power = power_rate * effort[i] * rate
+            power = size / per_power if per_power > 0.0 else 0.0
+            power = max(0.0, min(power, power_max, stamina[i] + extra))
+            stamina[i] = max(0.0, stamina[i] - power)
+            shrink = power * per_power / size
+            ax *= shrink
+            ay *= shrink
+        dash[i, 0] = ax
+        dash[i, 1] = ay
+        # The stamina model, in rcssserver's order: recovery and effort fall below their
+        # thresholds, effort rises above its own, then stamina recovers from the capacity.
+        st = stamina[i]
+        if st <= rec_thr and recovery[i] > rec_min:
+            recovery[i] = max(rec_min, recovery[i] - rec_dec)
+        if st <= eff_dec_thr and effort[i] > eff_min:
+            effort[i] = max(eff_min, effort[i] - eff_dec)
+        if st >= eff_inc_thr and effort[i] < eff_max:
+            effort[i] = min(eff_max, effort[i] + eff_inc)
+        gain = min(recovery[i] * inc_max, stamina_max - st, capacity[i])
+        if gain > 0.0:
+            capacity[i] -= gain
+            stamina[i] = st + gain
+        vx += ax
+        vy += ay
+        amount = math.sqrt(vx * vx + vy * vy) * noise_frac
+        vx += (2.0 * noise[i, 0] - 1.0) * amount
+        vy += (2.0 * noise[i, 1] - 1.0) * amount
+        speed = math.sqrt(vx * vx + vy * vy)
+        if speed > speed_max:
+            vx *= speed_max / speed
+            vy *= speed_max / speed
+            speed = speed_max
+        vel[i, 0] = vx
+        vel[i, 1] = vy
+        speed_out[i] = speed
+        if speed > fastest:
+            fastest = speed
+    return fastest
+
+
+@njit(cache=True, nogil=True)
+def find_kickers(pos: np.ndarray, ball: np.ndarray, kick: np.ndarray, mask: np.ndarray, holder: int,
+                 kickable: float, dist_out: np.ndarray, rows_out: np.ndarray) -> tuple[int, float]:  # pragma: no cover
+    """Rows allowed by ``mask`` with the ball within ``kickable`` (or holding it: ``holder``) and
+    a non-zero kick into ``rows_out``; every player's centre distance to the ball into
+    ``dist_out``; returns (count, nearest distance)."""
+    bx, by = ball[0], ball[1]
+    count = 0
+    nearest = np.inf
+    for i in range(pos.shape[0]):
+        dx, dy = bx - pos[i, 0], by - pos[i, 1]
+        d = math.sqrt(dx * dx + dy * dy)
+        dist_out[i] = d
+        if d < nearest:
+            nearest = d
+        if mask[i] and (d <= kickable or i == holder) and (kick[i, 0] != 0.0 or kick[i, 1] != 0.0):
+            rows_out[count] = i
+            count += 1
+    return count, nearest
+
+
+@njit(cache=True, nogil=True)
+def decay_velocities(vel: np.ndarray, ball_vel: np.ndarray, noise: np.ndarray,
+                     params: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Velocity decay of players and ball, ball noise and speed limit. ``params``: a
+    :data:`DECAY_PARAMS` record."""
+    p = params[0]
+    player_decay, ball_decay, ball_noise, ball_max = p.player_decay, p.ball_decay, p.ball_noise, p.ball_speed_max
+    for i in range(vel.shape[0]):
+        vel[i, 0] *= player_decay
+        vel[i, 1] *= player_decay
+    vx = ball_vel[0] * ball_decay
+    vy = ball_vel[1] * ball_decay
+    amount = math.sqrt(vx * vx + vy * vy) * ball_noise
+    vx += (2.0 * noise[0] - 1.0) * amount
+    vy += (2.0 * noise[1] - 1.0) * amount
+    speed = math.sqrt(vx * vx + vy * vy)
+    if speed > ball_max:
+        vx *= ball_max / speed
+        vy *= ball_max / speed
+    ball_vel[0] = vx
+    ball_vel[1] = vy
+
+
+# --- physics ---------------------------------------------------------------------------------
+@njit(cache=True, nogil=True)
+def keep_in_field_and_count_contacts(data: np.ndarray, in_contact: np.ndarray, params: np.ndarray,
+                                     counts: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Clamp the players (body rows 0..P-1) into the field plus margin, update the teammate
+    contact matrix and add the contacts that began to ``counts`` (per team). ``params``: a
+    :data:`MARGIN_PARAMS` record."""
+    p = params[0]
+    home, n2 = p.home, p.players
+    begin2, end2, x_max, y_max = p.begin2, p.end2, p.x_max, p.y_max
+    for i in range(n2):
+        data[i, 0] = min(max(data[i, 0], -x_max), x_max)
+        data[i, 1] = min(max(data[i, 1], -y_max), y_max)
+    for team in range(2):
+        first = 0 if team == 0 else home
+        last = home if team == 0 else n2
+        for i in range(first, last):
+            xi, yi = data[i, 0], data[i, 1]
+            for j in range(i + 1, last):
+                dx, dy = data[j, 0] - xi, data[j, 1] - yi
+                d2 = dx * dx + dy * dy
+                if in_contact[i, j]:
+                    if d2 > end2:
+                        in_contact[i, j] = False
+                elif d2 < begin2:
+                    in_contact[i, j] = True
+                    counts[team] += 1
+
+
+@njit(cache=True, nogil=True)
+def substeps_needed(bodies: np.ndarray, ball_free: bool, params: np.ndarray) -> int:  # pragma: no cover
+    """Sub-steps a cycle needs (see :class:`soccer_sim.physics.SubstepPlanner`). ``bodies``: rows
+    ``[x, y, vx, vy]`` of the players then the ball; ``params``: a :data:`SUBSTEP_PARAMS` record."""
+    p = params[0]
+    r_player, r_ball, step, post_contact, post_step, post_x, post_y = (
+        p.player_radius, p.ball_radius, p.max_step, p.post_contact, p.post_step, p.post_x, p.post_y)
+    ball_meets_players = p.ball_meets_players
+    n2 = bodies.shape[0] - 1
+    need = 1.0
+    pair_step = 2.0 * step
+    for i in range(n2):
+        xi, yi, ui, wi = bodies[i, 0], bodies[i, 1], bodies[i, 2], bodies[i, 3]
+        for j in range(i + 1, n2):
+            du, dw = ui - bodies[j, 2], wi - bodies[j, 3]
+            closing = math.sqrt(du * du + dw * dw)
+            if closing > pair_step * need:
+                dx, dy = xi - bodies[j, 0], yi - bodies[j, 1]
+                if math.sqrt(dx * dx + dy * dy) - 2.0 * r_player <= closing:
+                    need = closing / pair_step
+    if ball_free:
+        bx, by, bu, bw = bodies[n2, 0], bodies[n2, 1], bodies[n2, 2], bodies[n2, 3]
+        for j in range(n2 if ball_meets_players else 0):
+            du, dw = bu - bodies[j, 2], bw - bodies[j, 3]
+            closing = math.sqrt(du * du + dw * dw)
+            if closing > step * need:
+                dx, dy = bx - bodies[j, 0], by - bodies[j, 1]
+                if math.sqrt(dx * dx + dy * dy) - r_player - r_ball <= closing:
+                    need = closing / step
+        speed = math.sqrt(bu * bu + bw * bw)
+        if speed > post_step * need:
+            dx, dy = post_x - abs(bx), post_y - abs(by)
+            if math.sqrt(dx * dx + dy * dy) - post_contact <= speed:
+                need = speed / post_step
+    return int(math.ceil(need - 1e-9))
+
+
+@njit(cache=True, nogil=True)
+def resolve_ball_contacts(before: np.ndarray, after: np.ndarray, ghost: np.ndarray, params: np.ndarray,
+                          rows_out: np.ndarray) -> int:  # pragma: no cover - compiled
+    """rcssserver's body-ball contact rule, applied to a cycle's motion; returns how many
+    contacts it resolved (their player rows in ``rows_out``).
+
+    ``before``/``after``: rows ``[x, y, vx, vy]`` of the players then the ball, at the start
+    and the end of the cycle's move (``after`` is corrected in place). Each body is taken to
+    move in a straight line between the two, so the sweep is exact for any speed: the earliest
+    moment the ball's disc meets a player's disc (``contact``: the sum of the radii) is found,
+    and both are put back where they were at that moment, with their velocities multiplied by
+    ``factor`` (-0.1); ``params`` is a :data:`BALL_CONTACT_PARAMS` record. A player already
+    overlapping the ball at the start pushes it out radially. Further rounds put back any
+    player that ran into the ball's corrected position later in the cycle (along the player's
+    own path, the ball staying). Rows with ``ghost`` set (this cycle's kickers) are passed through.
+    """
+    p = params[0]
+    contact, factor = p.contact, p.factor
+    contact2 = contact * contact
+    n2 = after.shape[0] - 1
+    count = 0
+    b0x, b0y = before[n2, 0], before[n2, 1]
+    dbx, dby = after[n2, 0] - b0x, after[n2, 1] - b0y
+    for round_ in range(rows_out.shape[0]):
+        best_t, best = 2.0, -1
+        for i in range(n2):
+            if ghost[i]:
+                continue
+            p0x, p0y = before[i, 0], before[i, 1]
+            rx, ry = b0x - p0x, b0y - p0y
+            drx, dry = dbx - (after[i, 0] - p0x), dby - (after[i, 1] - p0y)
+            c = rx * rx + ry * ry - contact2
+            if c <= 0.0:
+                t = 0.0
+            else:
+                a = drx * drx + dry * dry
+                b = rx * drx + ry * dry
+                if a == 0.0 or b >= 0.0:
+                    continue
+                disc = b * b - a * c
+                if disc < 0.0:
+                    continue
+                t = (-b - math.sqrt(disc)) / a
+                if t > 1.0:
+                    continue
+            if t < best_t:
+                best_t, best = t, i
+        if best < 0:
+            break
+        t = best_t
+        px = before[best, 0] + t * (after[best, 0] - before[best, 0])
+        py = before[best, 1] + t * (after[best, 1] - before[best, 1])
+        bx, by = b0x + t * dbx, b0y + t * dby
+        ox, oy = bx - px, by - py
+        gap = math.sqrt(ox * ox + oy * oy)
+        if gap < contact:  # overlapping from the start: push the ball out radially
+            if gap > 1e-12:
+                bx, by = px + ox * contact / gap, py + oy * contact / gap
+            else:
+                bx, by = px + contact, py
+        after[best, 0], after[best, 1] = px, py
+        after[best, 2] *= factor
+        after[best, 3] *= factor
+        after[n2, 0], after[n2, 1] = bx, by
+        if round_ == 0:
+            after[n2, 2] *= factor
+            after[n2, 3] *= factor
+        rows_out[count] = best
+        count += 1
+        ghost[best] = True  # resolved: not met again this cycle
+        # Later rounds: the ball stays at its corrected position for the whole sweep.
+        b0x, b0y, dbx, dby = bx, by, 0.0, 0.0
+        for k in range(n2):
+            before[k, 0] = before[k, 0] + t * (after[k, 0] - before[k, 0])
+            before[k, 1] = before[k, 1] + t * (after[k, 1] - before[k, 1])
+    for k in range(count):
+        ghost[rows_out[k]] = False
+    return count
+
+
+# --- team views and commands -----------------------------------------------------------------
+@njit(cache=True, nogil=True)
+def store_command(dash: np.ndarray, kick: np.ndarray, sign: float,
+                  out: np.ndarray) -> int:  # pragma: no cover - compiled
+    """Write ``sign * dash`` and ``sign * kick`` into ``out`` ((n, 4) rows ``[dash, kick]``);
+    return -1 if every value is finite, else the first bad row (plus n if it is in ``kick``)."""
+    n = dash.shape[0]
+    bad = -1
+    for i in range(n):
+        for k in range(2):
+            d = dash[i, k]
+            c = kick[i, k]
+            out[i, k] = sign * d
+            out[i, 2 + k] = sign * c
+            if bad < 0:
+                if not np.isfinite(d):
+                    bad = i
+                elif not np.isfinite(c):
+                    bad = n + i
+    return bad
+
+
+@njit(cache=True, nogil=True)
+def mirror_bodies(bodies: np.ndarray, sign: float, pos_out: np.ndarray, vel_out: np.ndarray, first: int,
+                  stamina: np.ndarray, effort: np.ndarray, capacity: np.ndarray, stamina_out: np.ndarray,
+                  effort_out: np.ndarray, capacity_out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Positions and velocities of ``bodies`` (rows ``[x, y, vx, vy]``) times ``sign`` into
+    ``pos_out``/``vel_out``, and one team's stamina, effort and capacity (rows ``first``
+    onwards) into the ``*_out`` arrays."""
+    for i in range(bodies.shape[0]):
+        pos_out[i, 0] = sign * bodies[i, 0]
+        pos_out[i, 1] = sign * bodies[i, 1]
+        vel_out[i, 0] = sign * bodies[i, 2]
+        vel_out[i, 1] = sign * bodies[i, 3]
+    for i in range(stamina_out.shape[0]):
+        stamina_out[i] = stamina[first + i]
+        effort_out[i] = effort[first + i]
+        capacity_out[i] = capacity[first + i]
+
+
+@njit(cache=True, nogil=True)
+def chase_ball(own_pos: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, goal_x: float, kick_speed: float,
+               gain: float, dash: np.ndarray, kick: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Dash at the ball; kick so that the ball leaves at ``kick_speed`` towards (goal_x, 0)."""
+    bx, by = ball[0], ball[1]
+    dx, dy = goal_x - bx, -by
+    scale = kick_speed / max(math.sqrt(dx * dx + dy * dy), 1e-9)
+    kx, ky = dx * scale - ball_vel[0], dy * scale - ball_vel[1]
+    for i in range(own_pos.shape[0]):
+        dash[i, 0] = (bx - own_pos[i, 0]) * gain
+        dash[i, 1] = (by - own_pos[i, 1]) * gain
+        kick[i, 0] = kx
+        kick[i, 1] = ky
