@@ -6,7 +6,7 @@ import os
 
 import numpy as np
 
-from soccer_sim.config import FieldConfig
+from soccer_sim.config import FieldConfig, PhysicsConfig
 from soccer_sim.replay.field import GRASS_COLOUR, LINE_COLOUR, field_lines, goal_frames
 from soccer_sim.replay.reader import Replay
 from soccer_sim.replay.recorder import TEAM_COLOURS, TEAM_KEYS, ReplayError
@@ -21,10 +21,12 @@ def default_cycle(replay: Replay) -> int:
 
 
 def draw_replay(replay: Replay, path: str | os.PathLike, cycle: int | None = None,
-                field: FieldConfig | None = None, trail: int = 30) -> tuple[str, int]:
+                field: FieldConfig | None = None, trail: int = 30,
+                physics: PhysicsConfig | None = None) -> tuple[str, int]:
     """Draw the field at ``cycle``: both teams with shirt numbers, the ball and its last
     ``trail`` positions, each team's role targets and the lines from players to their role's
-    target. Returns (the file written, the cycle drawn); ReplayError for a cycle not recorded."""
+    target; the title gives the game minute by ``physics``' cycle length (default: the server's
+    0.1 s). Returns (the file written, the cycle drawn); ReplayError for a cycle not recorded."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -58,7 +60,7 @@ def draw_replay(replay: Replay, path: str | os.PathLike, cycle: int | None = Non
     ax.plot(past[:, 0], past[:, 1], color="white", alpha=0.6, lw=1.5, zorder=4)
     ax.scatter(*replay.ball[k], s=45, color="white", edgecolors="black", zorder=5)
     score = replay.score[k]
-    minute = cycle * 0.1 / 60.0
+    minute = cycle / (physics or PhysicsConfig()).cycles_per_minute
     ax.set_title(f"cycle {cycle} ({minute:.1f} min): {int(score[0])} - {int(score[1])}  "
                  f"(home red attacks +x in the first half; crosses: role targets)")
     hl, hw, m = field.length / 2, field.width / 2, field.margin
