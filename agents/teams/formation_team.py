@@ -44,7 +44,7 @@ from numba import njit
 import formations
 from agents import skills
 from agents.roles import RoleAssigner, RoleContext, make_assigner, offensive_order
-from agents.skills.passing import offside_line
+from agents.skills.ball_kernels import offside_line
 from formations.formation_set import Situation
 from soccer_sim.config import MatchConfig
 from soccer_sim.state import SET_PLAYS, PlayMode
@@ -129,9 +129,9 @@ class FormationTeam:
             raise ValueError(f"{type(self).__name__} plays at most {roles} players per side, "
                              f"{len(self._outfield_roles)} of them outfield (formation {self.style.system!r}), "
                              f"not {n} with {outfield_count} outfield")
-        self.model = skills.MotionModel(config, players=n, goalie=goalie,
-                                        opponents=getattr(side_info, "opponents", None),
-                                        opponent_goalie=getattr(side_info, "opponent_goalie_index", None))
+        self.skills = skills.SkillContext.for_match(config, side_info)
+        """The skills' per-match context (motion model, tables, the view's checked arrays)."""
+        self.model = self.skills.model
         self.config = config
         self.n = n
         self.goalie = goalie
@@ -232,8 +232,8 @@ class FormationTeam:
                 self._goal_kick_leaving = False
                 self._begin_set_play(view)
             self._mode_key, self._mode_since = key, view.cycle
-        model = self.model
-        race = skills.ball_race(model, view, self._eligible if self._our_pass_in_flight else None,
+        ctx, model = self.skills, self.model
+        race = skills.ball_race(ctx, view, self._eligible if self._our_pass_in_flight else None,
                                 their_first_only=True)
         situation, ball_ref = self._situation_and_ball(view, race)
         self._situation = situation
@@ -257,13 +257,15 @@ class FormationTeam:
             self._goalie_holds(view)
         else:
             self._set_play(view, urgent)
-        skills.paced_dashes(model, view, self.goals, urgent, command.dash)
+        ours = ctx.arrays(view).ours
+        caps = skills.speed_caps(ctx, view, urgent)
+        skills.dash_to_points(model, ours.pos, ours.vel, self.goals, ours.effort, caps, out=command.dash)
         if self._sprinter >= 0:
             # Our set-play taker runs flat out whatever its stamina: a set play not taken in
             # time is lost (the ball is dropped).
             r = slice(self._sprinter, self._sprinter + 1)
-            skills.dash_to_points(model, view.own_pos[r], view.own_vel[r], self.goals[r],
-                                  skills.view_effort(view, self.n)[r], out=command.dash[r])
+            skills.dash_to_points(model, ours.pos[r], ours.vel[r], self.goals[r], ours.effort[r],
+                                  out=command.dash[r])
         if self._dribble_dash is not None:  # the dribbler runs with the ball, not to a point
             command.dash[self._kicker_row] = self._dribble_dash
             self._dribble_dash = None
@@ -327,12 +329,11 @@ class FormationTeam:
             self._unfilled_role_cycles += unfilled
         self.role_of_player = role_of_player
         if self.goalie >= 0:
-            ball = view.ball
-            self.goals[self.goalie] = skills.guard_xy(self.model, float(ball[0]), float(ball[1]))
+            self.goals[self.goalie] = skills.guard_position(self.model, view.ball)
 
     # ------------------------------------------------------------------ play on
     def _play_on(self, view: TeamView, race: skills.BallRace, urgent: np.ndarray) -> None:
-        model, command, goals = self.model, self.command, self.goals
+        ctx, model, command, goals = self.skills, self.model, self.command, self.goals
         if self._goal_kick_leaving:
             if model.in_penalty_area(view.ball):
                 return  # our goal kick is on its way out: with proper goal kicks nobody may play it yet
@@ -355,16 +356,16 @@ class FormationTeam:
             self._our_pass_in_flight = False
         kicker = self._kicker(view, race, ball_player)
         goalie_near = self.goalie >= 0 and race.ours.cycles[self.goalie] <= 1
-        if kicker >= 0 and kicker == self.goalie and skills.should_catch(model, view, self.goalie,
-                                                         teammate_kicked_last=self._our_pass_in_flight):
+        if kicker >= 0 and kicker == self.goalie and skills.should_catch(
+                ctx, view, self.goalie, teammate_kicked_last=self._our_pass_in_flight):
             command.catch = True  # a held ball is safer than a kick
             kicker = -1
         self._kicker_row = kicker
         if kicker >= 0:
             if kicker == self.goalie:
-                command.kick[kicker] = skills.distribute(model, view, kicker).kick
+                command.kick[kicker] = skills.distribute(ctx, view, kicker).kick
             else:
-                decision = skills.decide_on_ball(model, view, kicker, self.style.decision,
+                decision = skills.decide_on_ball(ctx, view, kicker, self.style.decision,
                                                  pressure=race.theirs.first_cycle)
                 if contested and decision.action in (skills.OnBallAction.DRIBBLE, skills.OnBallAction.CLEAR):
                     # Against an opponent who kicks the ball too, a dribble or a clearance up the
@@ -376,7 +377,7 @@ class FormationTeam:
                     if decision.dash is not None:
                         self._dribble_dash = decision.dash
         elif goalie_near and not command.catch and skills.should_catch(
-                model, view, self.goalie, teammate_kicked_last=self._our_pass_in_flight):
+                ctx, view, self.goalie, teammate_kicked_last=self._our_pass_in_flight):
             command.catch = True
 
     def _wing_kick(self, view: TeamView, kicker: int) -> np.ndarray:
@@ -495,9 +496,9 @@ class FormationTeam:
         """``kicker`` takes our set play. A goal kick is cleared along a path nobody else can
         reach before the ball leaves our penalty area (the kicks of earlier attempts avoided);
         other set plays are played as in open play, or cleared when retaken."""
-        model = self.model
+        ctx = self.skills
         if view.play_mode == PlayMode.GOAL_KICK:
-            plan = skills.goal_kick_clearance(model, view, kicker, avoid=tuple(self._tried_kicks))
+            plan = skills.goal_kick_clearance(ctx, view, kicker, avoid=tuple(self._tried_kicks))
             kick, direction = plan.kick, plan.direction
             # With proper goal kicks our own players must keep off the ball until it is out of
             # the area (see _play_on).
@@ -505,9 +506,9 @@ class FormationTeam:
         else:
             kick = None
             if not self._tried_kicks:
-                kick = skills.decide_on_ball(model, view, kicker, self.style.decision).kick
+                kick = skills.decide_on_ball(ctx, view, kicker, self.style.decision).kick
             if kick is None or not kick.any():
-                kick = skills.best_clearance(model, view, kicker).kick
+                kick = skills.best_clearance(ctx, view, kicker).kick
             speed = float(np.hypot(*kick))
             direction = kick / speed if speed > 0.0 else np.array([1.0, 0.0])
         self.command.kick[kicker] = kick
@@ -519,7 +520,7 @@ class FormationTeam:
         if self.goalie < 0:
             return
         if view.ball_holder == self.goalie and view.cycle - self._mode_since >= self.style.set_play_wait:
-            self.command.kick[self.goalie] = skills.distribute(self.model, view, self.goalie).kick
+            self.command.kick[self.goalie] = skills.distribute(self.skills, view, self.goalie).kick
         self.goals[self.goalie] = view.own_pos[self.goalie]
 
     # ------------------------------------------------------------------ reporting

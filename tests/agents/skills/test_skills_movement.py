@@ -7,11 +7,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from agents.skills import MotionModel, dash_to_points, speed_caps
+from agents.skills import MotionModel, SkillContext, dash_to_points, speed_caps
 from soccer_sim.kinematics import Kinematics
 from tests.agents.skills.skill_views import CONFIG, N, make_view
 
-MODEL = MotionModel(CONFIG)
+MODEL = MotionModel.even_sides(CONFIG)
+CTX = SkillContext(MODEL)
 ROWS = 2 * N
 
 
@@ -86,7 +87,7 @@ def test_speed_caps_sprint_only_when_urgent_and_fresh() -> None:
     view = make_view(stamina=stamina)
     urgent = np.zeros(N, dtype=bool)
     urgent[[2, 3]] = True
-    caps = speed_caps(MODEL, view, urgent)
+    caps = speed_caps(CTX, view, urgent)
     assert caps[2] == pytest.approx(MODEL.top_speed)
     assert caps[3] == pytest.approx(MODEL.sustainable_speed(1.0))
     assert caps[0] == pytest.approx(MODEL.sustainable_speed(1.0))
@@ -100,6 +101,6 @@ def test_standing_on_the_target_costs_nothing() -> None:
 def test_players_near_the_ball_may_sprint() -> None:
     own = {4: (3.0, 4.0), 5: (30.0, 0.0)}
     view = make_view(own=own, ball=(0.0, 0.0))
-    caps = speed_caps(MODEL, view, near=10.0)
+    caps = speed_caps(CTX, view, near=10.0)
     assert caps[4] == pytest.approx(MODEL.top_speed)
     assert caps[5] == pytest.approx(MODEL.sustainable_speed(1.0))
