@@ -16,7 +16,7 @@ view's arrays checked once) and hands it to every skill that reads a view::
     race.we_win, race.lead
 
     caps = skills.speed_caps(ctx, view, urgent=chasers, near=15.0)  # sprint only when it matters
-    skills.dash_to_points(model, view.own_pos, view.own_vel, targets, view.effort, caps,
+    skills.dash_to_points(model, ctx.arrays(view).ours, targets, caps,
                           out=command.dash)                  # arrive and stop, all players
 
     decision = skills.decide_on_ball(ctx, view, player)      # shoot / pass / dribble / clear

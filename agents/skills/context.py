@@ -52,6 +52,13 @@ class Players:
         """Number of players."""
         return self.pos.shape[0]
 
+    def rows(self, start: int, stop: int) -> Players:
+        """Players ``start`` to ``stop - 1`` alone (views of these arrays, no copy)."""
+        part = object.__new__(Players)
+        part.pos, part.vel, part.effort = self.pos[start:stop], self.vel[start:stop], self.effort[start:stop]
+        part.radius, part.catch_radius = self.radius[start:stop], self.catch_radius[start:stop]
+        return part
+
     def with_radii(self, radius: np.ndarray, catch_radius: np.ndarray) -> Players:
         """The same players with other control radii ((n,) each), checked."""
         n = self.pos.shape[0]
@@ -64,13 +71,14 @@ class Players:
 
 class ViewArrays(NamedTuple):
     """A view's arrays checked for the skills: the ball (1, 2) and its velocity (1, 2) as
-    one-row trajectories, our players (the view's effort, our control radii) and the
-    opponents (effort 1, their control radii)."""
+    one-row trajectories, our players (the view's effort, our control radii), the opponents
+    (effort 1, their control radii) and our players' stamina (n,)."""
 
     ball: np.ndarray
     ball_vel: np.ndarray
     ours: Players
     theirs: Players
+    stamina: np.ndarray
 
 
 class InterceptConstants(NamedTuple):
@@ -159,22 +167,25 @@ class SkillContext:
         held = self._held
         if held is not None and (held[0] is view.ball and held[1] is view.ball_vel and held[2] is view.own_pos
                                  and held[3] is view.own_vel and held[4] is view.opp_pos
-                                 and held[5] is view.opp_vel and held[6] is getattr(view, "effort", None)):
+                                 and held[5] is view.opp_vel and held[6] is getattr(view, "effort", None)
+                                 and held[7] is view.stamina):
             return self._arrays  # type: ignore[return-value]
         return self._check(view)
 
     def _check(self, view: TeamView) -> ViewArrays:
         model = self.model
         effort = getattr(view, "effort", None)
-        current = (view.ball, view.ball_vel, view.own_pos, view.own_vel, view.opp_pos, view.opp_vel, effort)
+        current = (view.ball, view.ball_vel, view.own_pos, view.own_vel, view.opp_pos, view.opp_vel, effort,
+                   view.stamina)
         ball_row, ball_vel_row = float_array("ball", view.ball, (2,)), float_array("ball_vel", view.ball_vel, (2,))
         radius, catch = self.team_radii()
         ours = Players(model, view.own_pos, view.own_vel, view_effort(view, model.players_per_team), radius, catch)
         radius, catch = self.opponent_radii()
         theirs = Players(model, view.opp_pos, view.opp_vel, None, radius, catch)
-        arrays = ViewArrays(ball_row.reshape(1, 2), ball_vel_row.reshape(1, 2), ours, theirs)
+        stamina = float_array("stamina", view.stamina, (model.players_per_team,))
+        arrays = ViewArrays(ball_row.reshape(1, 2), ball_vel_row.reshape(1, 2), ours, theirs, stamina)
         checked = (ball_row, ball_vel_row, ours.pos, ours.vel, theirs.pos, theirs.vel,
-                   ours.effort if effort is not None else None)
+                   ours.effort if effort is not None else None, stamina)
         if all(a is b for a, b in zip(checked, current)):  # no copy was needed: keep them
             self._held, self._arrays = current, arrays
         return arrays

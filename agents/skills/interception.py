@@ -136,7 +136,7 @@ def ball_race(ctx: SkillContext, view: TeamView, eligible: np.ndarray | None = N
     point are the same; the other opponents' cycles are UNREACHABLE unless they tie), for a
     caller that needs no more and wants it cheaper.
     """
-    ball, ball_vel, ours, theirs = ctx.arrays(view)
+    ball, ball_vel, ours, theirs, _ = ctx.arrays(view)
     n, m = ours.pos.shape[0], theirs.pos.shape[0]
     if eligible is None:
         mask = _ALL_ELIGIBLE

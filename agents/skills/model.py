@@ -26,7 +26,7 @@ import numpy as np
 
 from agents.errors import AgentsError
 from soccer_sim.config import MatchConfig
-from soccer_sim.team import SideInfo
+from soccer_sim.team import SideInfo, TeamView
 
 
 class SkillInputError(AgentsError, ValueError):
@@ -207,7 +207,7 @@ def _geometric_sums(decay: float, k: np.ndarray) -> np.ndarray:
     return (1.0 - decay ** k) / (1.0 - decay)
 
 
-def view_effort(view: object, n: int) -> np.ndarray:
+def view_effort(view: TeamView, n: int) -> np.ndarray:
     """The view's per-player effort, or ones when it has none (older views, hand-built ones)."""
     effort = getattr(view, "effort", None)
     if effort is None:

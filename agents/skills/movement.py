@@ -21,28 +21,29 @@ from __future__ import annotations
 
 import numpy as np
 
-from agents.skills.context import SkillContext
+from agents.skills.context import Players, SkillContext
 from agents.skills.model import MotionModel, SkillInputError, float_array
 from agents.skills.player_kernels import caps_kernel, dash_kernel
 from soccer_sim.team import TeamView
 
 
-def dash_to_points(model: MotionModel, pos: np.ndarray, vel: np.ndarray, targets: np.ndarray,
-                   effort: np.ndarray | None = None, speed_cap: np.ndarray | float | None = None,
-                   tolerance: float = 0.05, out: np.ndarray | None = None) -> np.ndarray:
-    """(n, 2) dash accelerations (m/cycle²) that bring each player at ``pos``/``vel`` to its
-    ``targets`` row and stop it there (team frame, all (n, 2)).
+def dash_to_points(model: MotionModel, players: Players, targets: np.ndarray,
+                   speed_cap: np.ndarray | float | None = None, tolerance: float = 0.05,
+                   out: np.ndarray | None = None) -> np.ndarray:
+    """(n, 2) dash accelerations (m/cycle²) that bring each of the ``players`` (their
+    positions, velocities and effort, e.g. ``ctx.arrays(view).ours``) to its ``targets`` row
+    ((n, 2), team frame) and stop it there.
 
-    ``effort`` (n,) (None: 1) scales the largest acceleration; ``speed_cap`` (scalar or (n,),
+    Each player's effort scales its largest acceleration; ``speed_cap`` (scalar or (n,),
     m/cycle, e.g. :func:`speed_caps`; None: the top speed) limits the running speed. A player
     within ``tolerance`` (m) of its target and already at rest gets a zero dash (no stamina
     spent). ``out`` receives the result when given (e.g. ``TeamCommand.dash``).
     """
-    pos = float_array("pos", pos, (-1, 2))
+    if not isinstance(players, Players):
+        raise SkillInputError(f"players must be a Players record, got {type(players).__name__}")
+    pos, vel, effort = players.pos, players.vel, players.effort
     n = pos.shape[0]
-    vel = float_array("vel", vel, (n, 2))
     targets = float_array("targets", targets, (n, 2))
-    effort = np.ones(n) if effort is None else float_array("effort", effort, (n,))
     if type(speed_cap) is np.ndarray and speed_cap.shape == (n,) and speed_cap.dtype == np.float64:
         caps = speed_cap  # the kernel only reads it
     else:
@@ -77,11 +78,11 @@ def speed_caps(ctx: SkillContext, view: TeamView, urgent: np.ndarray | bool = Fa
             hurry = np.broadcast_to(hurry, (n,))
         except ValueError as exc:
             raise SkillInputError(f"urgent must be a bool or ({n},) bools, got shape {hurry.shape}") from exc
-    ours = ctx.arrays(view).ours
+    arrays = ctx.arrays(view)
     if near is not None:
-        gap = ours.pos - view.ball
+        gap = arrays.ours.pos - view.ball
         hurry = hurry | (np.einsum("ij,ij->i", gap, gap) <= near * near)
     caps = np.empty(n)
-    caps_kernel(hurry, float_array("stamina", view.stamina, (n,)), ours.effort, model.top_speed, model.jog_speed,
+    caps_kernel(hurry, arrays.stamina, arrays.ours.effort, model.top_speed, model.jog_speed,
                 model.stamina_low + stamina_reserve * model.stamina_max, caps)
     return caps

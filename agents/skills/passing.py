@@ -26,8 +26,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from agents.skills.ball_kernels import (LEAD_CAP, beyond_line, deciding_cycles, lane_arrivals, offside_line, pass_scores,
-                                        pass_targets)
+from agents.skills.ball_kernels import (LEAD_CAP, beyond_line, deciding_cycles, lane_arrivals, offside_line,
+                                        pass_scores, pass_targets)
 from agents.skills.context import SkillContext
 from agents.skills.interception import UNREACHABLE, intercept_many
 from agents.skills.kicking import kick_for_velocity

@@ -84,7 +84,8 @@ def fan_kernel(start: np.ndarray, base: float, offsets: np.ndarray, probes: np.n
 
 @njit(cache=True, nogil=True)
 def guard_kernel(dist: float, dx: float, dy: float, gx: float, near: float, far: float, depth_far: float,
-                 ball_gap: float, area_length: float, area_half_width: float) -> tuple[float, float]:  # pragma: no cover
+                 ball_gap: float, area_length: float,
+                 area_half_width: float) -> tuple[float, float]:  # pragma: no cover - compiled
     """The guard point on the segment from the goal centre (``gx``, 0) towards the ball (``dx``,
     ``dy`` from it, ``dist`` away): deeper the nearer the ball, inside the goal area, short of
     the ball."""

@@ -17,7 +17,7 @@ from collections.abc import Callable
 
 from dataclasses import replace
 
-from agents.skills import PassParams, ShotParams
+from agents.skills import PassParams
 from agents.teams.formation_team import FormationTeam
 from agents.teams.style import ATTACKING_DECISIONS, TeamStyle
 

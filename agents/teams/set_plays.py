@@ -53,7 +53,7 @@ class SetPlays:
         """Takers and kick directions of the current set play's attempts (a retake tries others)."""
         self.patience = max(style.set_play_wait, config.rules.set_play_timeout // 2)
         """Cycles of a set play after which whoever of ours can kick the ball takes it."""
-        self.kick_off_gap = config.physics.player_radius + config.physics.ball_radius + 0.1
+        self.kick_off_gap = model.touch_distance + 0.1
         """How far behind the ball our kick-off taker is placed (m)."""
         self.goal_centre_guard = np.array([-model.half_length + skills.GoalieParams().depth_far, 0.0])
         """Where our goalkeeper waits at our goal kicks: in front of the goal's centre, away

@@ -94,11 +94,13 @@ def test_intercept_many_checks_limits_and_players() -> None:
 
 def test_dash_and_kick_name_the_bad_argument() -> None:
     with pytest.raises(SkillInputError, match="targets"):
-        dash_to_points(MODEL, POS, POS, np.zeros((2, 2)))
+        dash_to_points(MODEL, Players(MODEL, POS, POS), np.zeros((2, 2)))
     with pytest.raises(SkillInputError, match="speed_cap"):
-        dash_to_points(MODEL, POS, POS, POS, speed_cap=np.ones(2))
+        dash_to_points(MODEL, Players(MODEL, POS, POS), POS, speed_cap=np.ones(2))
     with pytest.raises(SkillInputError, match="out"):
-        dash_to_points(MODEL, POS, POS, POS, out=np.zeros((3, 2), dtype=np.float32))
+        dash_to_points(MODEL, Players(MODEL, POS, POS), POS, out=np.zeros((3, 2), dtype=np.float32))
+    with pytest.raises(SkillInputError, match="players"):
+        dash_to_points(MODEL, POS, POS)
     with pytest.raises(SkillInputError, match="desired"):
         kick_for_velocity(MODEL, np.zeros(2), np.zeros(2), np.zeros(2), np.zeros(3))
     with pytest.raises(SkillInputError, match="ball_vel"):

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from agents.skills import MotionModel, SkillContext, ball_race, best_pass, best_shot, dash_to_points
+from agents.skills import MotionModel, Players, SkillContext, ball_race, best_pass, best_shot, dash_to_points
 from soccer_sim.state import EventKind
 from tests.agents.skills.skill_views import HL, N, ScriptedTeam, far_positions, play_on_match, quiet_config
 
@@ -27,8 +27,9 @@ def test_the_predicted_first_player_reaches_the_rolling_ball_on_time() -> None:
         first = race.ours.first
         targets[first] = race.ours.points[first]
         dash = np.zeros((N, 2))
-        dash[first] = dash_to_points(MODEL, view.own_pos[first:first + 1], view.own_vel[first:first + 1],
-                                     targets[first:first + 1], view.effort[first:first + 1])[0]
+        runner = Players(MODEL, view.own_pos[first:first + 1], view.own_vel[first:first + 1],
+                         view.effort[first:first + 1])
+        dash[first] = dash_to_points(MODEL, runner, targets[first:first + 1])[0]
         return dash, np.zeros((N, 2)), False
 
     home = ScriptedTeam(script)
@@ -81,9 +82,8 @@ def test_the_chosen_pass_reaches_the_receiver() -> None:
             kick[passer] = plans[0].kick
         else:
             race = ball_race(CTX, view)
-            dash[receiver:receiver + 1] = dash_to_points(MODEL, view.own_pos[receiver:receiver + 1],
-                                                         view.own_vel[receiver:receiver + 1],
-                                                         race.ours.points[receiver:receiver + 1])
+            runner = Players(MODEL, view.own_pos[receiver:receiver + 1], view.own_vel[receiver:receiver + 1])
+            dash[receiver:receiver + 1] = dash_to_points(MODEL, runner, race.ours.points[receiver:receiver + 1])
             if np.linalg.norm(view.ball - view.own_pos[receiver]) <= KICKABLE:
                 kick[receiver] = -view.ball_vel  # stop it
         return dash, kick, False

@@ -130,8 +130,8 @@ def test_ball_race_follows_a_view_overwritten_in_place() -> None:
     view.own_pos[5] = (3.0, 1.0)  # in place, as the match does
     view.ball_vel[:] = (0.5, 0.0)
     race = ball_race(ctx, view)
-    fresh = ball_race(SkillContext(MotionModel.even_sides(CONFIG)), make_view(own={5: (3.0, 1.0)}, opp={5: (12.0, 0.0)}, ball=(0.0, 0.0),
-                                                     ball_vel=(0.5, 0.0)))
+    fresh = ball_race(SkillContext(MotionModel.even_sides(CONFIG)),
+                      make_view(own={5: (3.0, 1.0)}, opp={5: (12.0, 0.0)}, ball=(0.0, 0.0), ball_vel=(0.5, 0.0)))
     assert race.we_win and race.ours.first == 5
     np.testing.assert_array_equal(race.ours.cycles, fresh.ours.cycles)
     np.testing.assert_array_equal(race.theirs.cycles, fresh.theirs.cycles)

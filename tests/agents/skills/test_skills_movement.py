@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from agents.skills import MotionModel, SkillContext, dash_to_points, speed_caps
+from agents.skills import MotionModel, Players, SkillContext, dash_to_points, speed_caps
 from soccer_sim.kinematics import Kinematics
 from tests.agents.skills.skill_views import CONFIG, N, make_view
 
@@ -31,7 +31,7 @@ def simulate(pos, vel, targets, cycles, speed_cap=None, effort=None, stamina_sha
     path, speeds = [pos.copy()], []
     for _ in range(cycles):
         dash = np.zeros((ROWS, 2))
-        dash[:n] = dash_to_points(MODEL, pos, all_vel[:n], targets, eff[:n], speed_cap)
+        dash[:n] = dash_to_points(MODEL, Players(MODEL, pos, all_vel[:n], eff[:n]), targets, speed_cap)
         kin.dash(all_vel, stamina, eff, recovery, capacity, dash, noise)
         speeds.append(np.hypot(all_vel[:n, 0], all_vel[:n, 1]))
         pos += all_vel[:n]
@@ -94,7 +94,7 @@ def test_speed_caps_sprint_only_when_urgent_and_fresh() -> None:
 
 
 def test_standing_on_the_target_costs_nothing() -> None:
-    out = dash_to_points(MODEL, np.array([[1.0, 1.0]]), np.zeros((1, 2)), np.array([[1.01, 1.0]]))
+    out = dash_to_points(MODEL, Players(MODEL, np.array([[1.0, 1.0]]), np.zeros((1, 2))), np.array([[1.01, 1.0]]))
     assert np.all(out == 0.0)
 
 

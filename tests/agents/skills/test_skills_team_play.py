@@ -40,8 +40,8 @@ class SkillsOnlyTeam:
         if may_play and first >= 0 and first != goalie:
             targets[first] = race.ours.points[first]
         urgent = np.arange(self.n) == first
-        skills.dash_to_points(model, view.own_pos, view.own_vel, targets, view.effort,
-                              skills.speed_caps(ctx, view, urgent), out=command.dash)
+        skills.dash_to_points(model, ctx.arrays(view).ours, targets, skills.speed_caps(ctx, view, urgent),
+                              out=command.dash)
         if view.ball_holder == goalie:
             command.kick[goalie] = skills.distribute(ctx, view).kick
             return command
