@@ -105,8 +105,7 @@ class HighLevelActions:
                     distance = float(np.hypot(*(view.own_pos[receiver] - view.ball)))
                     speed = min(distance * (1.0 - model.ball_decay) + PASS_ARRIVAL_SPEED, model.ball_speed_max)
                     command.kick[i] = self._kick_towards(view, i, view.own_pos[receiver], speed)
-        caps = skills.speed_caps(ctx, view, urgent)
-        skills.dash_to_points(model, ctx.arrays(view).ours, goals, caps, out=command.dash)
+        skills.paced_dashes(ctx, view, goals, urgent, command.dash)
         command.dash[actions == IDLE] = 0.0
         return command
 

@@ -15,9 +15,8 @@ view's arrays checked once) and hands it to every skill that reads a view::
     race.ours.first, race.ours.first_cycle, race.ours.points[race.ours.first]
     race.we_win, race.lead
 
-    caps = skills.speed_caps(ctx, view, urgent=chasers, near=15.0)  # sprint only when it matters
-    skills.dash_to_points(model, ctx.arrays(view).ours, targets, caps,
-                          out=command.dash)                  # arrive and stop, all players
+    skills.paced_dashes(ctx, view, targets, urgent=chasers,   # arrive and stop, all players,
+                        out=command.dash)                    # sprinting only when it matters
 
     decision = skills.decide_on_ball(ctx, view, player)      # shoot / pass / dribble / clear
     command.kick[player] = decision.kick
@@ -40,7 +39,8 @@ The API, by module:
 * :mod:`~agents.skills.interception`: :func:`intercept` (one team, one ball),
   :func:`intercept_many` (many ball trajectories), :func:`ball_race` (both teams),
   :data:`UNREACHABLE`.
-* :mod:`~agents.skills.movement`: :func:`dash_to_points`, :func:`speed_caps`.
+* :mod:`~agents.skills.movement`: :func:`dash_to_points`, :func:`speed_caps`,
+  :func:`paced_dashes` (both in one pass, for a team every cycle).
 * :mod:`~agents.skills.kicking`: :func:`kickable`, :func:`kick_effectiveness`,
   :func:`kick_for_velocity`.
 * :mod:`~agents.skills.lanes`: :func:`opponent_cycles`, :func:`teammate_cycles`,
@@ -83,7 +83,7 @@ from agents.skills.interception import UNREACHABLE, BallRace, Interception, ball
 from agents.skills.kicking import kick_effectiveness, kick_for_velocity, kickable
 from agents.skills.lanes import lane_open, opponent_cycles, teammate_cycles
 from agents.skills.model import MotionModel, SkillInputError, view_effort
-from agents.skills.movement import dash_to_points, speed_caps
+from agents.skills.movement import dash_to_points, paced_dashes, speed_caps
 from agents.skills.passing import PassParams, PassPlan, best_pass, offside_positions, pass_candidates
 from agents.skills.shooting import ShotParams, ShotPlan, aim_points, best_shot
 
@@ -94,5 +94,5 @@ __all__ = [
     "ball_race", "best_clearance", "best_pass", "best_shot", "dash_to_points", "decide_on_ball", "distribute",
     "dribble", "dribble_directions", "goal_kick_clearance", "guard_position", "intercept", "intercept_many",
     "kick_effectiveness", "kick_for_velocity", "kickable", "lane_open", "offside_positions", "opponent_cycles",
-    "pass_candidates", "should_catch", "speed_caps", "teammate_cycles", "view_effort",
+    "paced_dashes", "pass_candidates", "should_catch", "speed_caps", "teammate_cycles", "view_effort",
 ]

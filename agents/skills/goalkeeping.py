@@ -62,7 +62,9 @@ class GoalieParams:
 def guard_position(model: MotionModel, ball: np.ndarray,
                    params: GoalieParams = GoalieParams()) -> tuple[float, float]:
     """(x, y) the goalkeeper's guard point for a ball at ``ball`` ((2,), team frame)."""
-    bx, by = float_array("ball", ball, (2,)).tolist()
+    if not (type(ball) is np.ndarray and ball.shape == (2,) and ball.dtype.kind == "f"):
+        ball = float_array("ball", ball, (2,))
+    bx, by = float(ball[0]), float(ball[1])
     gx = -model.half_length
     dx = bx - gx
     # Python's hypot (correctly rounded) here, the rest compiled: the same point to the bit.

@@ -208,11 +208,11 @@ def _geometric_sums(decay: float, k: np.ndarray) -> np.ndarray:
 
 
 def view_effort(view: TeamView, n: int) -> np.ndarray:
-    """The view's per-player effort, or ones when it has none (older views, hand-built ones)."""
+    """The view's per-player effort (n,), checked, or ones when it has none (hand-built views)."""
     effort = getattr(view, "effort", None)
     if effort is None:
         return np.ones(n)
-    return np.asarray(effort, float)
+    return float_array("effort", effort, (n,))
 
 
 def check_player(player: int, n: int, what: str = "player") -> int:

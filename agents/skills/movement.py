@@ -15,16 +15,24 @@ modelled: they only slow the braking a little.
 speed or the speed its stamina recovery sustains for ever (:meth:`MotionModel.
 sustainable_speed`): top speed only for players marked urgent (near the action, chasing the
 ball) whose stamina is above the level where recovery and effort start to fall for good.
+
+:func:`dash_to_points` moves any players (a checked :class:`~agents.skills.context.Players`)
+at given caps; :func:`speed_caps` gives the view's players their caps; :func:`paced_dashes`
+does both for the view's players in one compiled pass, as a team does every cycle. The
+kernels are in :mod:`agents.skills.player_kernels`.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from agents.skills.context import Players, SkillContext
+from agents.skills.context import Players, SkillContext, ViewArrays
 from agents.skills.model import MotionModel, SkillInputError, float_array
-from agents.skills.player_kernels import caps_kernel, dash_kernel
+from agents.skills.player_kernels import caps_kernel, dash_kernel, paced_dash_kernel
 from soccer_sim.team import TeamView
+
+_F64 = np.dtype(np.float64)
+_BOOL = np.dtype(np.bool_)
 
 
 def dash_to_points(model: MotionModel, players: Players, targets: np.ndarray,
@@ -44,7 +52,7 @@ def dash_to_points(model: MotionModel, players: Players, targets: np.ndarray,
     pos, vel, effort = players.pos, players.vel, players.effort
     n = pos.shape[0]
     targets = float_array("targets", targets, (n, 2))
-    if type(speed_cap) is np.ndarray and speed_cap.shape == (n,) and speed_cap.dtype == np.float64:
+    if type(speed_cap) is np.ndarray and speed_cap.dtype is _F64 and speed_cap.shape == (n,):
         caps = speed_cap  # the kernel only reads it
     else:
         caps = np.empty(n)
@@ -52,10 +60,7 @@ def dash_to_points(model: MotionModel, players: Players, targets: np.ndarray,
             caps[:] = model.top_speed if speed_cap is None else speed_cap
         except ValueError as exc:
             raise SkillInputError(f"speed_cap must be a number or ({n},) numbers: {exc}") from exc
-    if out is None:
-        out = np.empty((n, 2))
-    elif not (isinstance(out, np.ndarray) and out.shape == (n, 2) and out.dtype == np.float64):
-        raise SkillInputError(f"out must be a float64 ({n}, 2) array")
+    out = _out(out, n)
     dash_kernel(pos, vel, targets, effort, caps, model.accel_max, model.speed_max, tolerance, out)
     return out
 
@@ -71,18 +76,53 @@ def speed_caps(ctx: SkillContext, view: TeamView, urgent: np.ndarray | bool = Fa
     its sustainable speed, which its recovery pays for, so stamina never drains.
     """
     model = ctx.model
+    arrays = ctx.arrays(view)
+    caps = np.empty(model.players_per_team)
+    caps_kernel(_hurry(model, arrays, view, urgent, near), arrays.stamina, arrays.ours.effort, model.top_speed,
+                model.jog_speed, model.stamina_low + stamina_reserve * model.stamina_max, caps)
+    return caps
+
+
+def paced_dashes(ctx: SkillContext, view: TeamView, targets: np.ndarray, urgent: np.ndarray | bool = False,
+                 out: np.ndarray | None = None, near: float | None = None, stamina_reserve: float = 0.05,
+                 tolerance: float = 0.05) -> np.ndarray:
+    """The view's players' dashes to their ``targets`` ((n, 2)) at the pace :func:`speed_caps`
+    gives them: ``dash_to_points(model, ctx.arrays(view).ours, targets, speed_caps(ctx, view,
+    urgent, near, stamina_reserve), tolerance, out)``, the same numbers in one compiled pass
+    (what a team calls every cycle)."""
+    model = ctx.model
+    arrays = ctx.arrays(view)
     n = model.players_per_team
-    hurry = urgent if isinstance(urgent, np.ndarray) and urgent.dtype == np.bool_ else np.asarray(urgent, bool)
+    targets = float_array("targets", targets, (n, 2))
+    out = _out(out, n)
+    paced_dash_kernel(arrays.ours.pos, arrays.ours.vel, targets, arrays.ours.effort, arrays.stamina,
+                      _hurry(model, arrays, view, urgent, near), model.top_speed, model.jog_speed,
+                      model.stamina_low + stamina_reserve * model.stamina_max, model.accel_max, model.speed_max,
+                      tolerance, out)
+    return out
+
+
+def _hurry(model: MotionModel, arrays: ViewArrays, view: TeamView, urgent: np.ndarray | bool,
+           near: float | None) -> np.ndarray:
+    """(n,) bool: the players who may sprint if their stamina allows (``urgent``, and with
+    ``near`` those within ``near`` metres of the ball)."""
+    n = model.players_per_team
+    hurry = urgent if type(urgent) is np.ndarray and urgent.dtype is _BOOL else np.asarray(urgent, bool)
     if hurry.shape != (n,):
         try:
             hurry = np.broadcast_to(hurry, (n,))
         except ValueError as exc:
             raise SkillInputError(f"urgent must be a bool or ({n},) bools, got shape {hurry.shape}") from exc
-    arrays = ctx.arrays(view)
     if near is not None:
         gap = arrays.ours.pos - view.ball
         hurry = hurry | (np.einsum("ij,ij->i", gap, gap) <= near * near)
-    caps = np.empty(n)
-    caps_kernel(hurry, arrays.stamina, arrays.ours.effort, model.top_speed, model.jog_speed,
-                model.stamina_low + stamina_reserve * model.stamina_max, caps)
-    return caps
+    return hurry
+
+
+def _out(out: np.ndarray | None, n: int) -> np.ndarray:
+    """``out`` checked as a float64 (n, 2) array, or a new one."""
+    if out is None:
+        return np.empty((n, 2))
+    if not (isinstance(out, np.ndarray) and out.dtype == _F64 and out.shape == (n, 2)):
+        raise SkillInputError(f"out must be a float64 ({n}, 2) array")
+    return out

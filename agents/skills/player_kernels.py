@@ -39,6 +39,16 @@ def dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, effort: n
 
 
 @njit(cache=True, nogil=True)
+def paced_dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, effort: np.ndarray, stamina: np.ndarray,
+                      urgent: np.ndarray, top_speed: float, jog_speed: float, fresh: float, accel_max: float,
+                      speed_max: float, tolerance: float, out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """:func:`caps_kernel`'s caps fed to :func:`dash_kernel`, in one pass."""
+    caps = np.empty(pos.shape[0])
+    caps_kernel(urgent, stamina, effort, top_speed, jog_speed, fresh, caps)
+    dash_kernel(pos, vel, targets, effort, caps, accel_max, speed_max, tolerance, out)
+
+
+@njit(cache=True, nogil=True)
 def caps_kernel(urgent: np.ndarray, stamina: np.ndarray, effort: np.ndarray, top_speed: float, jog_speed: float,
                 fresh: float, caps: np.ndarray) -> None:  # pragma: no cover - compiled
     """The running-speed rule of :func:`speed_caps`: the top speed for a player who is urgent

@@ -22,7 +22,7 @@ from agents.skills.context import SkillContext
 from agents.skills.interception import ball_race, intercept
 from agents.skills.kicking import kick_for_velocity
 from agents.skills.model import MotionModel
-from agents.skills.movement import dash_to_points, speed_caps
+from agents.skills.movement import dash_to_points, paced_dashes, speed_caps
 from agents.skills.passing import best_pass
 from agents.skills.shooting import best_shot
 from soccer_sim.config import MatchConfig
@@ -67,6 +67,7 @@ def skill_calls(ctx: SkillContext, view: TeamView, carrier: int,
         "dash_to_points (11 players)": lambda: dash_to_points(model, ctx.arrays(view).ours, targets,
                                                               out=out),
         "speed_caps (11 players)": lambda: speed_caps(ctx, view, urgent),
+        "paced_dashes (11 players)": lambda: paced_dashes(ctx, view, targets, urgent, out),
         "kick_for_velocity": lambda: kick_for_velocity(model, view.own_pos[carrier], view.ball, view.ball_vel, wanted),
         "best_pass": lambda: best_pass(ctx, view, carrier),
         "best_shot (out of range)": lambda: best_shot(ctx, view, carrier),

@@ -196,15 +196,14 @@ class FormationTeam:
             set_plays.goalie_holds(view, self.goals, command, self._mode_since)
         else:
             set_plays.set_play(view, self.goals, command, urgent, self._mode_since)
-        ours = ctx.arrays(view).ours
-        caps = skills.speed_caps(ctx, view, urgent)
-        skills.dash_to_points(model, ours, self.goals, caps, out=command.dash)
+        skills.paced_dashes(ctx, view, self.goals, urgent, command.dash)
         sprinter = set_plays.sprinter
         if sprinter >= 0:
             # Our set-play taker runs flat out whatever its stamina: a set play not taken in
             # time is lost (the ball is dropped).
             r = slice(sprinter, sprinter + 1)
-            skills.dash_to_points(model, ours.rows(sprinter, sprinter + 1), self.goals[r], out=command.dash[r])
+            skills.dash_to_points(model, ctx.arrays(view).ours.rows(sprinter, sprinter + 1), self.goals[r],
+                                  out=command.dash[r])
         if self._dribble_dash is not None:  # the dribbler runs with the ball, not to a point
             command.dash[self._kicker_row] = self._dribble_dash
             self._dribble_dash = None

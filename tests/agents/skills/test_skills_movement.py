@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from agents.skills import MotionModel, Players, SkillContext, dash_to_points, speed_caps
+from agents.skills import MotionModel, Players, SkillContext, SkillInputError, dash_to_points, paced_dashes, speed_caps
 from soccer_sim.kinematics import Kinematics
 from tests.agents.skills.skill_views import CONFIG, N, make_view
 
@@ -104,3 +104,21 @@ def test_players_near_the_ball_may_sprint() -> None:
     caps = speed_caps(CTX, view, near=10.0)
     assert caps[4] == pytest.approx(MODEL.top_speed)
     assert caps[5] == pytest.approx(MODEL.sustainable_speed(1.0))
+
+
+def test_paced_dashes_are_the_caps_and_the_dashes_in_one_pass() -> None:
+    rng = np.random.default_rng(5)
+    stamina = np.full(N, CONFIG.stamina.maximum)
+    stamina[[1, 6]] = 0.2 * CONFIG.stamina.maximum
+    view = make_view(own=rng.uniform(-40, 40, (N, 2)), own_vel=rng.uniform(-0.5, 0.5, (N, 2)),
+                     effort=rng.uniform(0.6, 1.0, N), stamina=stamina, ball=(5.0, 5.0))
+    targets = rng.uniform(-40, 40, (N, 2))
+    urgent = rng.uniform(size=N) < 0.5
+    for near in (None, 20.0):
+        caps = speed_caps(CTX, view, urgent, near=near)
+        two_steps = dash_to_points(MODEL, CTX.arrays(view).ours, targets, caps)
+        out = np.empty((N, 2))
+        assert paced_dashes(CTX, view, targets, urgent, out, near=near) is out
+        np.testing.assert_array_equal(out, two_steps)
+    with pytest.raises(SkillInputError, match="urgent"):
+        paced_dashes(CTX, view, targets, np.ones(3, dtype=bool))
