@@ -259,7 +259,7 @@ def pass_scores(targets: np.ndarray, received_at: np.ndarray, receive: np.ndarra
                 opp_pos: np.ndarray, ball: np.ndarray, reach: np.ndarray, coast: float, kickable: float,
                 half_length: float, min_lead: int, score: np.ndarray, points: np.ndarray, weight_forward: float,
                 weight_goal: float, weight_space: float, weight_lead: float) -> int:  # pragma: no cover - compiled
-    """Score the safe candidates (see the module docstring); unsafe ones score -inf. Returns
+    """Score the safe candidates (see :mod:`agents.skills.passing`); unsafe ones score -inf. Returns
     the best row, or -1 when none is safe."""
     best, best_score = -1, -np.inf
     for i in range(targets.shape[0]):

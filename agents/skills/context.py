@@ -111,7 +111,7 @@ class SkillContext:
         if not isinstance(model, MotionModel):
             raise SkillInputError(f"SkillContext needs a MotionModel, got {type(model).__name__}")
         self.model = model
-        self.intercept = InterceptConstants(
+        self.intercept_constants = InterceptConstants(
             x_max=model.half_length + model.ball_radius, y_max=model.half_width + model.ball_radius,
             top_speed=model.top_speed, area_x=model.half_length - model.penalty_area_length,
             area_y=model.penalty_area_half_width, accel_max=model.accel_max, speed_max=model.speed_max,

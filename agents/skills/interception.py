@@ -118,7 +118,7 @@ def intercept_many(ctx: SkillContext, ball: np.ndarray, ball_vel: np.ndarray, pl
     points = np.empty((count, n, 2))
     intercept_kernel(ball, ball_vel, players.pos, players.vel, players.effort, players.radius, players.catch_radius,
                      model.reach, model.ball_travel, model.player_coast, limits, chosen, cycles, points,
-                     *ctx.intercept, float(catch_side), int(reaction), bool(first_only))
+                     *ctx.intercept_constants, float(catch_side), int(reaction), bool(first_only))
     return cycles, points
 
 
@@ -150,7 +150,7 @@ def ball_race(ctx: SkillContext, view: TeamView, eligible: np.ndarray | None = N
     first, first_cycle, their_first, their_first_cycle = race_kernel(
         ball, ball_vel, ours.pos, ours.vel, ours.effort, ours.radius, ours.catch_radius, theirs.pos, theirs.vel,
         theirs.effort, theirs.radius, theirs.catch_radius, model.reach, model.ball_travel, model.player_coast, mask,
-        our_cycles, our_points, their_cycles, their_points, *ctx.intercept, their_first_only)
+        our_cycles, our_points, their_cycles, their_points, *ctx.intercept_constants, their_first_only)
     return BallRace(Interception(our_cycles[0], our_points[0], first, first_cycle),
                     Interception(their_cycles[0], their_points[0], their_first, their_first_cycle))
 
