@@ -148,6 +148,13 @@ def test_reported_statistics_and_drawing() -> None:
     assert drawing.formation_triangles.max() < len(drawing.formation_balls)
 
 
+def test_drawing_before_the_first_assignment_has_no_roles() -> None:
+    drawing = ready(FormationTeam("greedy")).drawing()
+    assert isinstance(drawing, Drawing)
+    assert drawing.role_of_player is None and drawing.assigned_targets is None
+    assert drawing.targets.shape == (11, 2) and drawing.outfield.tolist() == list(range(1, 11))
+
+
 def test_a_team_is_deterministic_for_a_seed() -> None:
     a = soccer_sim.run_match("random", "press-433", seed=4, config=MatchConfig(max_cycles=400))
     b = soccer_sim.run_match("random", "press-433", seed=4, config=MatchConfig(max_cycles=400))
