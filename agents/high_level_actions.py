@@ -27,7 +27,7 @@ import numpy as np
 import formations
 from agents import skills
 from formations import Situation
-from soccer_sim import MatchConfig, SideInfo, TeamCommand
+from soccer_sim import MatchConfig, SideInfo, TeamCommand, TeamView
 
 MOVES = 8
 GO_TO_TARGET, INTERCEPT, SHOOT, DRIBBLE, IDLE, PASS = 8, 9, 10, 11, 12, 13
@@ -51,10 +51,8 @@ class HighLevelActions:
     def reset(self, side_info: SideInfo, config: MatchConfig) -> None:
         n, goalie = side_info.players_per_team, side_info.goalie_index
         self.n, self.goalie = n, goalie
-        self.model = skills.MotionModel(config, players=n, goalie=goalie, opponents=side_info.opponents,
-                                        opponent_goalie=side_info.opponent_goalie_index)
-        self.decay = config.physics.ball_decay
-        self.ball_speed_max = config.physics.ball_speed_max
+        self.skills = skills.SkillContext.for_match(config, side_info)
+        self.model = self.skills.model
         kinds = [role.kind for role in self.formation_set.roles]
         keeper_role = kinds.index("goalkeeper")
         outfield_roles = [r for r in range(len(kinds)) if r != keeper_role]
@@ -65,9 +63,9 @@ class HighLevelActions:
             self.role_of[goalie] = keeper_role
         self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
 
-    def command_for(self, view, actions: np.ndarray) -> TeamCommand:
+    def command_for(self, view: TeamView, actions: np.ndarray) -> TeamCommand:
         """The team's command for the players' ``actions`` ((n,) ints, already checked)."""
-        model, command = self.model, self.command
+        ctx, model, command = self.skills, self.model, self.command
         command.kick[:] = 0.0
         command.catch = False
         goals = view.own_pos.copy()
@@ -86,18 +84,18 @@ class HighLevelActions:
                 goals[i] = targets[self.role_of[i]]
             elif action == INTERCEPT:
                 if race is None:
-                    race = skills.ball_race(model, view)
+                    race = skills.ball_race(ctx, view)
                 reachable = race.ours.cycles[i] < skills.UNREACHABLE
                 goals[i] = race.ours.points[i] if reachable else view.ball
                 urgent[i] = True
-                if i == self.goalie and skills.should_catch(model, view, i):
+                if i == self.goalie and skills.should_catch(ctx, view, i):
                     command.catch = True
             elif action == SHOOT and can_kick[i]:
-                shot = skills.best_shot(model, view, i)
+                shot = skills.best_shot(ctx, view, i)
                 command.kick[i] = shot.kick if shot is not None else self._kick_towards(
-                    view, i, np.array([model.half_length, 0.0]), self.ball_speed_max)
+                    view, i, np.array([model.half_length, 0.0]), model.ball_speed_max)
             elif action == DRIBBLE and can_kick[i]:
-                plan = skills.dribble(model, view, i)
+                plan = skills.dribble(ctx, view, i)
                 command.kick[i] = plan.kick
                 goals[i] = view.own_pos[i] + plan.dash * 10.0
                 urgent[i] = run[i] = True
@@ -105,14 +103,13 @@ class HighLevelActions:
                 receiver = action - PASS
                 if receiver != i:
                     distance = float(np.hypot(*(view.own_pos[receiver] - view.ball)))
-                    speed = min(distance * (1.0 - self.decay) + PASS_ARRIVAL_SPEED, self.ball_speed_max)
+                    speed = min(distance * (1.0 - model.ball_decay) + PASS_ARRIVAL_SPEED, model.ball_speed_max)
                     command.kick[i] = self._kick_towards(view, i, view.own_pos[receiver], speed)
-        caps = skills.speed_caps(model, view, urgent)
-        skills.dash_to_points(model, view.own_pos, view.own_vel, goals, view.effort, caps, out=command.dash)
+        skills.paced_dashes(ctx, view, goals, urgent, command.dash)
         command.dash[actions == IDLE] = 0.0
         return command
 
-    def _kick_towards(self, view, player: int, point: np.ndarray, speed: float) -> np.ndarray:
+    def _kick_towards(self, view: TeamView, player: int, point: np.ndarray, speed: float) -> np.ndarray:
         """The kick sending the ball towards ``point`` at ``speed`` m/cycle (as near as one kick can)."""
         direction = point - view.ball
         size = float(np.hypot(*direction))

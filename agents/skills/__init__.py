@@ -3,37 +3,44 @@ dribbling, clearing, goalkeeping and the on-ball decision.
 
 Everything works in the team-relative frame of :class:`soccer_sim.TeamView` (we attack +x,
 our goal line at ``x = -half_length``), in metres and cycles, and reads every physical number
-from the :class:`~soccer_sim.config.MatchConfig` through one :class:`MotionModel`, built once
-per match (e.g. in ``Team.reset``)::
+from the :class:`~soccer_sim.config.MatchConfig` through one :class:`MotionModel`. A team makes
+one :class:`SkillContext` per match in ``Team.reset`` (the model, tables made once, and the
+view's arrays checked once) and hands it to every skill that reads a view::
 
     from agents import skills
 
-    model = skills.MotionModel(config)                       # horizon=60 cycles by default
-    race = skills.ball_race(model, view, eligible=~offside)  # who gets to the ball, when, where
+    ctx = skills.SkillContext.for_match(config, side_info)  # horizon=60 cycles by default
+    model = ctx.model
+    race = skills.ball_race(ctx, view, eligible=~offside)    # who gets to the ball, when, where
     race.ours.first, race.ours.first_cycle, race.ours.points[race.ours.first]
     race.we_win, race.lead
 
-    caps = skills.speed_caps(model, view, urgent=chasers, near=15.0)  # sprint only when it matters
-    skills.dash_to_points(model, view.own_pos, view.own_vel, targets, view.effort, caps,
-                          out=command.dash)                  # arrive and stop, all players
+    skills.paced_dashes(ctx, view, targets, urgent=chasers,   # arrive and stop, all players,
+                        out=command.dash)                    # sprinting only when it matters
 
-    decision = skills.decide_on_ball(model, view, player)    # shoot / pass / dribble / clear
+    decision = skills.decide_on_ball(ctx, view, player)      # shoot / pass / dribble / clear
     command.kick[player] = decision.kick
     if decision.dash is not None:
         command.dash[player] = decision.dash
 
-    keeper = skills.guard_position(model, view.ball)         # goalkeeper's guard point
-    command.catch = skills.should_catch(model, view, teammate_kicked_last=back_pass)
-    skills.distribute(model, view).kick                      # holding: pass or clear
+    keeper = skills.guard_position(model, view.ball)         # goalkeeper's guard point (x, y)
+    command.catch = skills.should_catch(ctx, view, teammate_kicked_last=back_pass)
+    skills.distribute(ctx, view).kick                        # holding: pass or clear
+
+Skills that read a view take the :class:`SkillContext`; those on plain points and vectors
+(kicks, dashes, the guard point, aim points, offside positions) take the :class:`MotionModel`.
 
 The API, by module:
 
 * :mod:`~agents.skills.model`: :class:`MotionModel` (reach table, ball rollout, sustainable
   speed, field geometry), :class:`SkillInputError`.
+* :mod:`~agents.skills.context`: :class:`SkillContext`, :class:`Players` (one team's players,
+  checked), :class:`ViewArrays`.
 * :mod:`~agents.skills.interception`: :func:`intercept` (one team, one ball),
   :func:`intercept_many` (many ball trajectories), :func:`ball_race` (both teams),
   :data:`UNREACHABLE`.
-* :mod:`~agents.skills.movement`: :func:`dash_to_points`, :func:`speed_caps`.
+* :mod:`~agents.skills.movement`: :func:`dash_to_points`, :func:`speed_caps`,
+  :func:`paced_dashes` (both in one pass, for a team every cycle).
 * :mod:`~agents.skills.kicking`: :func:`kickable`, :func:`kick_effectiveness`,
   :func:`kick_for_velocity`.
 * :mod:`~agents.skills.lanes`: :func:`opponent_cycles`, :func:`teammate_cycles`,
@@ -51,6 +58,10 @@ The API, by module:
 * :mod:`~agents.skills.decision`: :func:`decide_on_ball`, :class:`DecisionParams`,
   :class:`BallDecision`, :class:`OnBallAction`.
 
+The compiled kernels live in three modules: :mod:`~agents.skills.interception_kernels`,
+:mod:`~agents.skills.ball_kernels` (kicks, lanes, passes) and
+:mod:`~agents.skills.player_kernels` (dashes, the dribbling fan, the guard point).
+
 Conventions: positions (n, 2) and velocities in the team frame; ``effort`` (n,) from the
 view (missing: 1); opponents are predicted at full effort, reacting one cycle after our kicks;
 a player's "control distance" is the kickable distance (the catch length for a goalkeeper in
@@ -64,9 +75,10 @@ Timings of every call for a team of 11: ``python -m agents.skills.timing``
 """
 
 from agents.skills.clearing import ClearParams, ClearPlan, best_clearance, goal_kick_clearance
+from agents.skills.context import Players, SkillContext, ViewArrays
 from agents.skills.decision import BallDecision, DecisionParams, OnBallAction, decide_on_ball
 from agents.skills.dribbling import DribbleParams, DribblePlan, dribble, dribble_directions
-from agents.skills.goalkeeping import Distribution, GoalieParams, distribute, guard_position, guard_xy, should_catch
+from agents.skills.goalkeeping import Distribution, GoalieParams, distribute, guard_position, should_catch
 from agents.skills.interception import UNREACHABLE, BallRace, Interception, ball_race, intercept, intercept_many
 from agents.skills.kicking import kick_effectiveness, kick_for_velocity, kickable
 from agents.skills.lanes import lane_open, opponent_cycles, teammate_cycles
@@ -78,9 +90,9 @@ from agents.skills.shooting import ShotParams, ShotPlan, aim_points, best_shot
 __all__ = [
     "UNREACHABLE", "BallDecision", "BallRace", "ClearParams", "ClearPlan", "DecisionParams", "Distribution",
     "DribbleParams", "DribblePlan", "GoalieParams", "Interception", "MotionModel", "OnBallAction", "PassParams",
-    "PassPlan", "ShotParams", "ShotPlan", "SkillInputError", "aim_points", "ball_race", "best_clearance",
-    "best_pass", "best_shot", "dash_to_points", "decide_on_ball", "distribute", "dribble", "dribble_directions",
-    "goal_kick_clearance", "guard_position", "guard_xy", "intercept", "intercept_many", "kick_effectiveness", "kick_for_velocity", "kickable",
-    "lane_open", "offside_positions", "opponent_cycles", "pass_candidates", "paced_dashes", "should_catch", "speed_caps",
-    "teammate_cycles", "view_effort",
+    "PassPlan", "Players", "ShotParams", "ShotPlan", "SkillContext", "SkillInputError", "ViewArrays", "aim_points",
+    "ball_race", "best_clearance", "best_pass", "best_shot", "dash_to_points", "decide_on_ball", "distribute",
+    "dribble", "dribble_directions", "goal_kick_clearance", "guard_position", "intercept", "intercept_many",
+    "kick_effectiveness", "kick_for_velocity", "kickable", "lane_open", "offside_positions", "opponent_cycles",
+    "paced_dashes", "pass_candidates", "should_catch", "speed_caps", "teammate_cycles", "view_effort",
 ]

@@ -17,10 +17,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from agents.skills.context import SkillContext
 from agents.skills.interception import UNREACHABLE
 from agents.skills.kicking import kick_for_velocity
 from agents.skills.lanes import opponent_cycles, teammate_cycles
-from agents.skills.model import MotionModel, check_params, check_player
+from agents.skills.model import check_params, check_player
+from soccer_sim.team import TeamView
 
 
 @dataclass(frozen=True)
@@ -57,14 +59,14 @@ class ClearPlan:
     score: float
 
 
-def best_clearance(model: MotionModel, view: object, kicker: int, params: ClearParams = ClearParams(),
+def best_clearance(ctx: SkillContext, view: TeamView, kicker: int, params: ClearParams = ClearParams(),
                    holder: bool = False) -> ClearPlan:
     """The best clearance kick for ``kicker`` (see the module docstring)."""
-    lanes = _Lanes(model, view, kicker, params, holder)
+    lanes = _Lanes(ctx, view, kicker, params, holder)
     return lanes.plan(int(np.argmax(lanes.score)))
 
 
-def goal_kick_clearance(model: MotionModel, view: object, kicker: int, params: ClearParams = ClearParams(),
+def goal_kick_clearance(ctx: SkillContext, view: TeamView, kicker: int, params: ClearParams = ClearParams(),
                         avoid: tuple[np.ndarray, ...] = (), avoid_deg: float = 20.0) -> ClearPlan:
     """The kick of a goal kick taken by ``kicker``: the best clearance (the module's score)
     among the directions whose ball leaves our penalty area before any other player of
@@ -72,7 +74,8 @@ def goal_kick_clearance(model: MotionModel, view: object, kicker: int, params: C
     retaken. Directions within ``avoid_deg`` of one of ``avoid`` (unit vectors of kicks that
     were retaken) rank after every other; when every direction is blocked the best blocked
     one is taken."""
-    lanes = _Lanes(model, view, kicker, params, False)
+    model = ctx.model
+    lanes = _Lanes(ctx, view, kicker, params, False)
     velocities = lanes.velocities
     points = lanes.ball + model.ball_travel[None, :, None] * velocities[:, None, :]  # (P, horizon + 1, 2)
     inside = model.in_penalty_area(points)
@@ -91,7 +94,8 @@ class _Lanes:
     """The fan of clearance directions of one kick: kicks, ball velocities, both teams'
     first interception cycles and the module's score per direction."""
 
-    def __init__(self, model: MotionModel, view: object, kicker: int, params: ClearParams, holder: bool) -> None:
+    def __init__(self, ctx: SkillContext, view: TeamView, kicker: int, params: ClearParams, holder: bool) -> None:
+        model = ctx.model
         kicker = check_player(kicker, model.players_per_team, "kicker")
         angles = np.radians(np.linspace(-params.spread_deg, params.spread_deg, params.fan)) if params.fan > 1 \
             else np.zeros(1)
@@ -99,8 +103,8 @@ class _Lanes:
         self.ball = ball = np.asarray(view.ball, float)
         self.kicks, self.velocities = kick_for_velocity(model, view.own_pos[kicker], ball, view.ball_vel,
                                                         self.dirs * model.ball_speed_max, holder)
-        self.theirs, _ = opponent_cycles(model, view, ball, self.velocities)
-        ours, _ = teammate_cycles(model, view, ball, self.velocities)
+        self.theirs, _ = opponent_cycles(ctx, view, ball, self.velocities)
+        ours, _ = teammate_cycles(ctx, view, ball, self.velocities)
         ours = ours.copy()
         ours[:, kicker] = UNREACHABLE
         self.our_first = ours.min(axis=1)

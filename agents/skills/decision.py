@@ -25,12 +25,14 @@ from enum import Enum
 
 import numpy as np
 
-from agents.skills.clearing import ClearParams, best_clearance
-from agents.skills.dribbling import DribbleParams, dribble
-from agents.skills.interception import intercept, opponent_radii
-from agents.skills.model import MotionModel, SkillInputError, check_params, check_player
-from agents.skills.passing import PassParams, best_pass
-from agents.skills.shooting import ShotParams, best_shot
+from agents.skills.clearing import ClearParams, ClearPlan, best_clearance
+from agents.skills.context import SkillContext
+from agents.skills.dribbling import DribbleParams, DribblePlan, dribble
+from agents.skills.interception import intercept
+from agents.skills.model import SkillInputError, check_params, check_player
+from agents.skills.passing import PassParams, PassPlan, best_pass
+from agents.skills.shooting import ShotParams, ShotPlan, best_shot
+from soccer_sim.team import TeamView
 
 
 class OnBallAction(str, Enum):
@@ -77,39 +79,39 @@ class BallDecision:
     action: OnBallAction
     kick: np.ndarray
     dash: np.ndarray | None
-    plan: object
+    plan: ShotPlan | PassPlan | DribblePlan | ClearPlan
     pressure: int
     """Cycles until the fastest opponent controls the ball."""
 
 
-def decide_on_ball(model: MotionModel, view: object, player: int,
+def decide_on_ball(ctx: SkillContext, view: TeamView, player: int,
                    params: DecisionParams = DecisionParams(), pressure: int | None = None) -> BallDecision:
     """Choose what ``player`` (who can kick the ball) does with it this cycle.
 
     ``pressure``: the cycles until the fastest opponent controls the ball, when the caller
-    already knows it (``ball_race(model, view).theirs.first_cycle`` of this very view); None:
+    already knows it (``ball_race(ctx, view).theirs.first_cycle`` of this very view); None:
     worked out here."""
+    model = ctx.model
     player = check_player(player, model.players_per_team)
     holder = view.ball_holder == player
     goalie = player == model.goalie_index
     if pressure is None:
-        radius, catch = opponent_radii(model)
-        pressure = intercept(model, view.ball, view.ball_vel, view.opp_pos, view.opp_vel, None, radius, catch,
-                             1.0).first_cycle
+        arrays = ctx.arrays(view)
+        pressure = intercept(ctx, arrays.ball, arrays.ball_vel, arrays.theirs, 1.0).first_cycle
     under_pressure = pressure <= params.pressure_cycles
 
-    shot = best_shot(model, view, player, params.shot, holder)
+    shot = best_shot(ctx, view, player, params.shot, holder)
     if shot is not None and shot.take:
         return BallDecision(OnBallAction.SHOOT, shot.kick, None, shot, pressure)
-    pass_plan = best_pass(model, view, player, params.passing, holder)
+    pass_plan = best_pass(ctx, view, player, params.passing, holder)
     if pass_plan is not None and pass_plan.score >= params.pass_good:
         return BallDecision(OnBallAction.PASS, pass_plan.kick, None, pass_plan, pressure)
-    dribble_plan = dribble(model, view, player, params.dribbling)
+    dribble_plan = dribble(ctx, view, player, params.dribbling)
     if not under_pressure and dribble_plan.clearance >= params.dribble_clearance and not goalie:
         return BallDecision(OnBallAction.DRIBBLE, dribble_plan.kick, dribble_plan.dash, dribble_plan, pressure)
     if pass_plan is not None:
         return BallDecision(OnBallAction.PASS, pass_plan.kick, None, pass_plan, pressure)
     if under_pressure or goalie or float(view.ball[0]) < params.clear_line * model.half_length:
-        clear = best_clearance(model, view, player, params.clearing, holder)
+        clear = best_clearance(ctx, view, player, params.clearing, holder)
         return BallDecision(OnBallAction.CLEAR, clear.kick, None, clear, pressure)
     return BallDecision(OnBallAction.DRIBBLE, dribble_plan.kick, dribble_plan.dash, dribble_plan, pressure)

@@ -22,10 +22,12 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
 
-from agents.skills.kicking import kick_for_velocity, kickable
-from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, float_array, view_effort
+from agents.skills.context import SkillContext
+from agents.skills.kicking import kick_for_velocity
+from agents.skills.model import SkillInputError, check_params, check_player, float_array
+from agents.skills.player_kernels import fan_kernel
+from soccer_sim.team import TeamView
 
 
 @dataclass(frozen=True)
@@ -77,44 +79,43 @@ class DribblePlan:
     score: float
 
 
-def dribble_directions(model: MotionModel, view: object, player: int,
+def dribble_directions(ctx: SkillContext, view: TeamView, player: int,
                        params: DribbleParams = DribbleParams()) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(directions (fan, 2), clearance (fan,), score (fan,)) for ``player`` dribbling from
     where it stands; excluded directions score -inf."""
-    p = float_array("own_pos", view.own_pos, (model.players_per_team, 2))[player]
+    model = ctx.model
+    player = check_player(player, model.players_per_team)
+    arrays = ctx.arrays(view)
+    p = arrays.ours.pos[player]
     goal_x = model.half_length
     base = math.atan2(-p[1], goal_x - p[0])
-    offsets, probes = _fan(model, params)
-    effort = float(view_effort(view, model.players_per_team)[player])
+    offsets, probes = ctx.table(("dribble fan", params.fan, params.spread_deg, params.probes),
+                                lambda: _fan(params))
+    effort = float(arrays.ours.effort[player])
     speed = max(params.speed_fraction * model.top_speed * effort, 1e-6)
     cycles = np.minimum(np.ceil(probes / speed).astype(np.int64), model.horizon)
     fan = len(offsets)
     dirs, clearance, score = np.empty((fan, 2)), np.empty(fan), np.empty(fan)
-    _fan_kernel(p, base, offsets, probes, cycles, view.opp_pos, view.opp_vel, model.reach, model.player_coast,
-                np.array([model.kickable_distance, params.clearance_cap, params.goal_weight,
-                          model.half_length - params.field_margin, model.half_width - params.field_margin]),
-                dirs, clearance, score)
+    fan_kernel(p, base, offsets, probes, cycles, arrays.theirs.pos, arrays.theirs.vel, model.reach,
+               model.player_coast, dirs, clearance, score, model.kickable_distance, params.clearance_cap,
+               params.goal_weight, model.half_length - params.field_margin, model.half_width - params.field_margin)
     return dirs, clearance, score
 
 
-def _fan(model: MotionModel, params: DribbleParams) -> tuple[np.ndarray, np.ndarray]:
-    """(angle offsets (rad), probe distances) of ``params``, made once per model and params."""
-    cache = model.__dict__.setdefault("_dribble_fans", {})
-    found = cache.get(params)
-    if found is None:
-        offsets = np.radians(np.linspace(-params.spread_deg, params.spread_deg, params.fan)) if params.fan > 1 \
-            else np.zeros(1)
-        found = cache[params] = (offsets, np.asarray(params.probes, dtype=np.float64))
-    return found
+def _fan(params: DribbleParams) -> tuple[np.ndarray, np.ndarray]:
+    """(angle offsets (rad), probe distances) of ``params``."""
+    offsets = np.radians(np.linspace(-params.spread_deg, params.spread_deg, params.fan)) if params.fan > 1 \
+        else np.zeros(1)
+    return offsets, np.asarray(params.probes, dtype=np.float64)
 
 
-def dribble(model: MotionModel, view: object, player: int, params: DribbleParams = DribbleParams(),
+def dribble(ctx: SkillContext, view: TeamView, player: int, params: DribbleParams = DribbleParams(),
             direction: np.ndarray | None = None) -> DribblePlan:
     """One cycle of dribbling for ``player``: the best direction of the fan (or ``direction``,
     a (2,) vector, when given), the dash and the kick that keeps the ball ``lead`` ahead."""
-    n = model.players_per_team
-    player = check_player(player, n)
-    dirs, clearance, score = dribble_directions(model, view, player, params)
+    model = ctx.model
+    player = check_player(player, model.players_per_team)
+    dirs, clearance, score = dribble_directions(ctx, view, player, params)
     px, py = view.own_pos[player].tolist()
     if direction is not None:
         wx, wy = float_array("direction", direction, (2,)).tolist()
@@ -127,7 +128,7 @@ def dribble(model: MotionModel, view: object, player: int, params: DribbleParams
             size = max(math.hypot(px, py), 1e-9)
             best = int(np.argmax(dirs @ np.array([-px / size, -py / size])))
         ux, uy = dirs[best].tolist()
-    effort = float(view_effort(view, n)[player])
+    effort = float(ctx.arrays(view).ours.effort[player])
     vx, vy = view.own_vel[player].tolist()
     pace = params.speed_fraction * model.top_speed * effort
     ax, ay = ux * pace - vx, uy * pace - vy
@@ -143,35 +144,3 @@ def dribble(model: MotionModel, view: object, player: int, params: DribbleParams
         kick, _ = kick_for_velocity(model, view.own_pos[player], view.ball, view.ball_vel, wanted)
     return DribblePlan(direction=np.array([ux, uy]), kick=kick, dash=np.array([ax, ay]),
                        clearance=float(clearance[best]), score=float(score[best]))
-
-
-@njit(cache=True, nogil=True)
-def _fan_kernel(start: np.ndarray, base: float, offsets: np.ndarray, probes: np.ndarray, cycles: np.ndarray,
-                opp_pos: np.ndarray, opp_vel: np.ndarray, reach: np.ndarray, coast: np.ndarray, params: np.ndarray,
-                dirs: np.ndarray, clearance: np.ndarray, score: np.ndarray) -> None:  # pragma: no cover - compiled
-    """Per direction (``base`` + offset): the unit vector, the clearance (the smallest margin
-    in metres between a probe point and the disc an opponent can cover by the time the
-    dribbler gets there; inf without opponents) and the score (-inf when the farthest probe
-    is outside the field less the margin). ``params``: kickable distance, clearance cap,
-    goal weight, largest |x| and |y| of a probe."""
-    kickable, cap, goal_weight, x_max, y_max = params[0], params[1], params[2], params[3], params[4]
-    far = probes[probes.shape[0] - 1]
-    for d in range(offsets.shape[0]):
-        ux, uy = math.cos(base + offsets[d]), math.sin(base + offsets[d])
-        dirs[d, 0], dirs[d, 1] = ux, uy
-        best = np.inf
-        for j in range(probes.shape[0]):
-            qx = start[0] + ux * probes[j]
-            qy = start[1] + uy * probes[j]
-            k = cycles[j]
-            for o in range(opp_pos.shape[0]):
-                cx = opp_pos[o, 0] + coast[k] * opp_vel[o, 0]
-                cy = opp_pos[o, 1] + coast[k] * opp_vel[o, 1]
-                margin = math.sqrt((qx - cx) ** 2 + (qy - cy) ** 2) - reach[k] - kickable
-                if margin < best:
-                    best = margin
-        clearance[d] = best
-        if abs(start[0] + ux * far) > x_max or abs(start[1] + uy * far) > y_max:
-            score[d] = -np.inf
-        else:
-            score[d] = min(best, cap) / cap + goal_weight * math.cos(offsets[d])

@@ -23,12 +23,14 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from numba import njit
 
-from agents.skills.clearing import ClearParams, best_clearance
+from agents.skills.clearing import ClearParams, ClearPlan, best_clearance
+from agents.skills.context import SkillContext
 from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, float_array
-from agents.skills.passing import PassParams, best_pass
+from agents.skills.passing import PassParams, PassPlan, best_pass
+from agents.skills.player_kernels import guard_kernel
 from soccer_sim.state import NO_PLAYER, PlayMode
+from soccer_sim.team import TeamView
 
 
 @dataclass(frozen=True)
@@ -57,46 +59,24 @@ class GoalieParams:
             raise SkillInputError(f"GoalieParams.near ({self.near}) must be smaller than far ({self.far})")
 
 
-def guard_position(model: MotionModel, ball: np.ndarray, params: GoalieParams = GoalieParams()) -> np.ndarray:
-    """(2,) the goalkeeper's guard point for a ball at ``ball`` (team frame)."""
-    bx, by = float_array("ball", ball, (2,)).tolist()
-    return np.array(guard_xy(model, bx, by, params))
-
-
-def guard_xy(model: MotionModel, bx: float, by: float, params: GoalieParams = GoalieParams()) -> tuple[float, float]:
-    """:func:`guard_position` for a ball at (``bx``, ``by``), two finite floats, as a tuple
-    (the per-cycle form: no array made)."""
+def guard_position(model: MotionModel, ball: np.ndarray,
+                   params: GoalieParams = GoalieParams()) -> tuple[float, float]:
+    """(x, y) the goalkeeper's guard point for a ball at ``ball`` ((2,), team frame)."""
+    if not (type(ball) is np.ndarray and ball.shape == (2,) and ball.dtype.kind == "f"):
+        ball = float_array("ball", ball, (2,))
+    bx, by = float(ball[0]), float(ball[1])
     gx = -model.half_length
     dx = bx - gx
     # Python's hypot (correctly rounded) here, the rest compiled: the same point to the bit.
-    return _guard_kernel(math.hypot(dx, by), dx, by, gx, params.near, params.far, params.depth_far,
-                         params.ball_gap, model.goal_area_length, model.goal_area_half_width)
+    return guard_kernel(math.hypot(dx, by), dx, by, gx, params.near, params.far, params.depth_far,
+                        params.ball_gap, model.goal_area_length, model.goal_area_half_width)
 
 
-@njit(cache=True, nogil=True)
-def _guard_kernel(dist: float, dx: float, dy: float, gx: float, near: float, far: float, depth_far: float,
-                  ball_gap: float, area_length: float, area_half_width: float) -> tuple[float, float]:  # pragma: no cover
-    """The guard point on the segment from the goal centre (``gx``, 0) towards the ball (``dx``,
-    ``dy`` from it, ``dist`` away): deeper the nearer the ball, inside the goal area, short of
-    the ball."""
-    if dist < 1e-9:
-        return gx, 0.0
-    ux, uy = dx / dist, dy / dist
-    if ux < 0.0:  # a ball behind our goal line (out of play): stay on the line, on its side
-        ux, uy = 0.0, (1.0 if uy >= 0.0 else -1.0)
-    share = min(max((far - dist) / max(far - near, 1e-9), 0.0), 1.0)
-    depth = depth_far + share * (area_length - depth_far)
-    if ux > 1e-9:
-        depth = min(depth, area_length / ux)
-    if abs(uy) > 1e-9:
-        depth = min(depth, area_half_width / abs(uy))
-    depth = max(0.0, min(depth, dist - ball_gap))
-    return gx + ux * depth, uy * depth
-
-
-def should_catch(model: MotionModel, view: object, goalie: int | None = None, teammate_kicked_last: bool = False,
+def should_catch(ctx: SkillContext, view: TeamView, goalie: int | None = None, teammate_kicked_last: bool = False,
                  params: GoalieParams = GoalieParams()) -> bool:
-    """Whether the goalkeeper should ask for a catch this cycle (see the module docstring)."""
+    """Whether the goalkeeper (``goalie``, None: ours) should ask for a catch this cycle (see
+    the module docstring)."""
+    model = ctx.model
     goalie = model.goalie_index if goalie is None else check_player(goalie, model.players_per_team, "goalie")
     if view.play_mode != PlayMode.PLAY_ON or view.ball_holder != NO_PLAYER or teammate_kicked_last:
         return False
@@ -114,18 +94,19 @@ class Distribution:
 
     kind: str
     kick: np.ndarray
-    plan: object
+    plan: PassPlan | ClearPlan
 
 
-def distribute(model: MotionModel, view: object, goalie: int | None = None,
+def distribute(ctx: SkillContext, view: TeamView, goalie: int | None = None,
                params: GoalieParams = GoalieParams()) -> Distribution:
     """The kick of a goalkeeper that has the ball (holding it, or merely able to kick it): a
     pass to an open team-mate when one scores at least ``pass_score``, else a clearance
     towards the wings."""
+    model = ctx.model
     goalie = model.goalie_index if goalie is None else check_player(goalie, model.players_per_team, "goalie")
     holding = view.ball_holder == goalie
-    plan = best_pass(model, view, goalie, params.passing, holder=holding)
+    plan = best_pass(ctx, view, goalie, params.passing, holder=holding)
     if plan is not None and plan.score >= params.pass_score:
         return Distribution("pass", plan.kick, plan)
-    clear = best_clearance(model, view, goalie, params.clearing, holder=holding)
+    clear = best_clearance(ctx, view, goalie, params.clearing, holder=holding)
     return Distribution("clear", clear.kick, clear)

@@ -8,21 +8,21 @@ A lane is a ball trajectory that starts at the ball with the velocity a kick giv
 each lane the opponents' earliest interception cycle (:mod:`agents.skills.interception`,
 the ball rolled forward with its decay) is compared with the cycle at which the ball
 reaches its destination, or with the cycle at which the intended team-mate controls it.
-Passing and shooting both build on these two calls.
+Passing and shooting both build on these two calls; which lanes a kick can use at all, and
+when the ball gets to their ends, is :func:`agents.skills.ball_kernels.lane_arrivals`.
 """
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
-from numba import njit
 
-from agents.skills.interception import UNREACHABLE, intercept_many, opponent_radii, team_radii
-from agents.skills.model import MotionModel, check_player, view_effort
+from agents.skills.context import SkillContext
+from agents.skills.interception import UNREACHABLE, intercept_many
+from agents.skills.model import check_player
+from soccer_sim.team import TeamView
 
 
-def opponent_cycles(model: MotionModel, view: object, ball: np.ndarray, velocities: np.ndarray,
+def opponent_cycles(ctx: SkillContext, view: TeamView, ball: np.ndarray, velocities: np.ndarray,
                     limit: np.ndarray | None = None, extra_radius: float = 0.0,
                     reaction: int = 1) -> tuple[np.ndarray, np.ndarray]:
     """Earliest cycle any opponent controls the ball on each lane, and who.
@@ -37,9 +37,9 @@ def opponent_cycles(model: MotionModel, view: object, ball: np.ndarray, velociti
     -1 when nobody).
     """
     velocities = np.ascontiguousarray(velocities, dtype=np.float64).reshape(-1, 2)
-    radius, catch = opponent_radii(model, extra_radius)
-    cycles, _ = intercept_many(model, np.asarray(ball, np.float64), velocities, view.opp_pos, view.opp_vel, None,
-                               radius, catch, 1.0, limit, reaction, first_only=True)
+    theirs = ctx.arrays(view).theirs.with_radii(*ctx.opponent_radii(extra_radius))
+    cycles, _ = intercept_many(ctx, np.asarray(ball, np.float64), velocities, theirs, 1.0, limit, reaction,
+                               first_only=True)
     if cycles.shape[1] == 0:
         return np.full(len(velocities), UNREACHABLE, dtype=np.int64), np.full(len(velocities), -1, dtype=np.int64)
     who = np.argmin(cycles, axis=1)
@@ -48,7 +48,7 @@ def opponent_cycles(model: MotionModel, view: object, ball: np.ndarray, velociti
     return first, who
 
 
-def teammate_cycles(model: MotionModel, view: object, ball: np.ndarray, velocities: np.ndarray,
+def teammate_cycles(ctx: SkillContext, view: TeamView, ball: np.ndarray, velocities: np.ndarray,
                     limit: np.ndarray | None = None,
                     receivers: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Each of our players' interception cycle and point on each lane: ((P, n) int, (P, n, 2)).
@@ -58,52 +58,17 @@ def teammate_cycles(model: MotionModel, view: object, ball: np.ndarray, velociti
     ball at cycle 0).
     """
     velocities = np.ascontiguousarray(velocities, dtype=np.float64).reshape(-1, 2)
-    n = model.players_per_team
-    radius, catch = team_radii(model, 0.0)
-    return intercept_many(model, np.asarray(ball, np.float64), velocities, view.own_pos, view.own_vel,
-                          view_effort(view, n), radius, catch, -1.0, limit, only=receivers)
+    return intercept_many(ctx, np.asarray(ball, np.float64), velocities, ctx.arrays(view).ours, -1.0, limit,
+                          only=receivers)
 
 
-def lane_open(model: MotionModel, view: object, ball: np.ndarray, velocity: np.ndarray, receiver: int,
+def lane_open(ctx: SkillContext, view: TeamView, ball: np.ndarray, velocity: np.ndarray, receiver: int,
               min_lead: int = 1, extra_radius: float = 0.0) -> bool:
     """True when our ``receiver`` controls the ball kicked to ``velocity`` (2,) at least
     ``min_lead`` cycles before any opponent can (and can control it at all)."""
-    receiver = check_player(receiver, model.players_per_team, "receiver")
+    receiver = check_player(receiver, ctx.model.players_per_team, "receiver")
     velocity = np.asarray(velocity, np.float64).reshape(1, 2)
-    ours, _ = teammate_cycles(model, view, ball, velocity, None, np.array([receiver]))
-    theirs, _ = opponent_cycles(model, view, ball, velocity, None, extra_radius)
+    ours, _ = teammate_cycles(ctx, view, ball, velocity, None, np.array([receiver]))
+    theirs, _ = opponent_cycles(ctx, view, ball, velocity, None, extra_radius)
     mine = int(ours[0, receiver])
     return mine < UNREACHABLE and int(theirs[0]) - mine >= min_lead
-
-
-@njit(cache=True, nogil=True)
-def lane_arrivals(targets: np.ndarray, wanted: np.ndarray, velocities: np.ndarray, ball: np.ndarray, decay: float,
-                  horizon: int, extra: int, arrival: np.ndarray, limit: np.ndarray) -> np.ndarray:  # pragma: no cover
-    """Which lanes work, and when the ball gets to the end of each (compiled).
-
-    Row i: a ball at ``ball`` meant to reach ``targets[i]`` with the velocity ``wanted[i]``
-    gets ``velocities[i]`` from the kick. Returns the rows whose kick keeps the intended line
-    (within 1 %) and brings the ball to the target within ``horizon`` cycles, and writes their
-    ``arrival`` cycle (rounded up) and search ``limit`` (arrival + ``extra``, at most the
-    horizon)."""
-    keep = np.empty(targets.shape[0], dtype=np.int64)
-    count = 0
-    for i in range(targets.shape[0]):
-        wx, wy = wanted[i, 0], wanted[i, 1]
-        norm = math.sqrt(wx * wx + wy * wy)
-        vx, vy = velocities[i, 0], velocities[i, 1]
-        speed = (vx * wx + vy * wy) / norm  # along the intended line
-        if speed <= 0.99 * math.sqrt(vx * vx + vy * vy):
-            continue
-        dist = math.sqrt((targets[i, 0] - ball[0]) ** 2 + (targets[i, 1] - ball[1]) ** 2)
-        left = 1.0 - dist * (1.0 - decay) / speed
-        if left <= 0.0:
-            continue
-        cycles = math.ceil(math.log(left) / math.log(decay) - 1e-9)
-        if cycles > horizon:
-            continue
-        arrival[i] = cycles
-        limit[i] = min(cycles + extra, horizon)
-        keep[count] = i
-        count += 1
-    return keep[:count]

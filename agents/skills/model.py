@@ -24,10 +24,12 @@ import math
 
 import numpy as np
 
+from agents.errors import AgentsError
 from soccer_sim.config import MatchConfig
+from soccer_sim.team import SideInfo, TeamView
 
 
-class SkillInputError(ValueError):
+class SkillInputError(AgentsError, ValueError):
     """A skill was called with an impossible argument (wrong shape, index out of range, ...);
     the message names the argument."""
 
@@ -36,28 +38,33 @@ class MotionModel:
     """Constants and tables of one match configuration, shared by every skill.
 
     ``horizon`` is the number of cycles the predictions look ahead (interception, passes,
-    shots); :attr:`reach` has ``horizon + 1`` entries. The sides' sizes and goalkeepers default
-    to the configuration's (``players_per_team``, ``rules.goalie_index``); a scenario's uneven
-    sides pass them from the team's ``SideInfo``: ``players`` and ``goalie`` (-1: none) for our
-    side, ``opponents`` and ``opponent_goalie`` for theirs.
+    shots); :attr:`reach` has ``horizon + 1`` entries. Both sides are given explicitly:
+    ``players`` and ``goalie`` (-1: none) for ours, ``opponents`` and ``opponent_goalie`` for
+    theirs. :meth:`for_side` takes them from a team's ``SideInfo`` (what ``Team.reset``
+    receives); :meth:`even_sides` gives both sides the configuration's size and goalkeeper.
+    Every physical and field number is read here, once, from the ``config``.
     """
 
-    def __init__(self, config: MatchConfig, horizon: int = 60, players: int | None = None,
-                 goalie: int | None = None, opponents: int | None = None,
-                 opponent_goalie: int | None = None) -> None:
-        if not isinstance(config, MatchConfig):
-            raise SkillInputError(f"MotionModel needs a MatchConfig, got {type(config).__name__}")
+    def __init__(self, config: MatchConfig, *, players: int, goalie: int, opponents: int, opponent_goalie: int,
+                 horizon: int = 60) -> None:
+        _check_config(config)
         if not (isinstance(horizon, (int, np.integer)) and not isinstance(horizon, bool) and horizon >= 1):
             raise SkillInputError(f"MotionModel.horizon must be a positive integer, got {horizon!r}")
+        for name, count in (("players", players), ("opponents", opponents)):
+            if isinstance(count, bool) or not isinstance(count, (int, np.integer)) or count < 0:
+                raise SkillInputError(f"MotionModel.{name} must be an integer of at least 0, got {count!r}")
+        for name, index, count in (("goalie", goalie, players), ("opponent_goalie", opponent_goalie, opponents)):
+            if isinstance(index, bool) or not isinstance(index, (int, np.integer)) or not -1 <= index < count:
+                raise SkillInputError(f"MotionModel.{name} must be -1 or a player index below {count}, got {index!r}")
         phys, field, rules = config.physics, config.field, config.rules
         self.config = config
         self.horizon = int(horizon)
-        self.players_per_team = config.players_per_team if players is None else int(players)
-        self.goalie_index = rules.goalie_index if goalie is None else int(goalie)
+        self.players_per_team = int(players)
+        self.goalie_index = int(goalie)
         """Our goalkeeper's index, -1 when we have none."""
-        self.opponents = self.players_per_team if opponents is None else int(opponents)
+        self.opponents = int(opponents)
         """Players of the opposing side."""
-        self.opponent_goalie_index = self.goalie_index if opponent_goalie is None else int(opponent_goalie)
+        self.opponent_goalie_index = int(opponent_goalie)
         """The opponents' goalkeeper's index among them, -1 when they have none."""
         self.accel_max = float(phys.player_accel_max)
         """Largest dash acceleration at full effort (m/cycle²)."""
@@ -103,6 +110,21 @@ class MotionModel:
         self.dash_power_rate = float(phys.dash_power_rate)
         self.jog_speed = float(self.sustainable_speed(1.0))
         """Sustainable speed of a fresh player (m/cycle); ``jog_speed * effort`` for others."""
+
+    @classmethod
+    def for_side(cls, config: MatchConfig, side: SideInfo, horizon: int = 60) -> MotionModel:
+        """The model of a team that plays as ``side`` (its ``SideInfo``) under ``config``."""
+        _check_config(config)
+        return cls(config, players=side.players_per_team, goalie=side.goalie_index, opponents=side.opponents,
+                   opponent_goalie=side.opponent_goalie_index, horizon=horizon)
+
+    @classmethod
+    def even_sides(cls, config: MatchConfig, horizon: int = 60) -> MotionModel:
+        """The model for two sides of the configuration's size (``players_per_team``), each
+        with its goalkeeper at ``rules.goalie_index``."""
+        _check_config(config)
+        n, goalie = config.players_per_team, config.rules.goalie_index
+        return cls(config, players=n, goalie=goalie, opponents=n, opponent_goalie=goalie, horizon=horizon)
 
     def _reach_table(self, horizon: int) -> np.ndarray:
         table = np.zeros(horizon + 1)
@@ -173,6 +195,11 @@ class MotionModel:
             (np.abs(points[..., 1]) <= self.penalty_area_half_width)
 
 
+def _check_config(config: object) -> None:
+    if not isinstance(config, MatchConfig):
+        raise SkillInputError(f"MotionModel needs a MatchConfig, got {type(config).__name__}")
+
+
 def _geometric_sums(decay: float, k: np.ndarray) -> np.ndarray:
     """(1 - decay^k) / (1 - decay), with the limit k for decay 1."""
     if decay >= 1.0:
@@ -180,12 +207,12 @@ def _geometric_sums(decay: float, k: np.ndarray) -> np.ndarray:
     return (1.0 - decay ** k) / (1.0 - decay)
 
 
-def view_effort(view: object, n: int) -> np.ndarray:
-    """The view's per-player effort, or ones when it has none (older views, hand-built ones)."""
+def view_effort(view: TeamView, n: int) -> np.ndarray:
+    """The view's per-player effort (n,), checked, or ones when it has none (hand-built views)."""
     effort = getattr(view, "effort", None)
     if effort is None:
         return np.ones(n)
-    return np.asarray(effort, float)
+    return float_array("effort", effort, (n,))
 
 
 def check_player(player: int, n: int, what: str = "player") -> int:

@@ -22,16 +22,19 @@ is penalised by the referee too, so the team should keep such players out of the
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
 
-from agents.skills.interception import UNREACHABLE, intercept_many_checked, opponent_radii, race_players
+from agents.skills.ball_kernels import (LEAD_CAP, beyond_line, deciding_cycles, lane_arrivals, offside_line,
+                                        pass_scores, pass_targets)
+from agents.skills.context import SkillContext
+from agents.skills.interception import UNREACHABLE, intercept_many
 from agents.skills.kicking import kick_for_velocity
-from agents.skills.lanes import lane_arrivals
-from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, float_array, view_effort
+from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, float_array
+from soccer_sim.team import TeamView
+
+__all__ = ["LEAD_CAP", "PassParams", "PassPlan", "best_pass", "offside_line", "offside_positions", "pass_candidates"]
 
 
 @dataclass(frozen=True)
@@ -103,7 +106,8 @@ class PassPlan:
     """Cycle at which the receiver controls the ball."""
     opponent_cycle: int
     """Earliest cycle an opponent controls it (UNREACHABLE: none before it leaves the field,
-    or none early enough to change the decision: see :func:`_deciding_cycles`)."""
+    or none early enough to change the decision: see
+    :func:`agents.skills.ball_kernels.deciding_cycles`)."""
     score: float
 
 
@@ -114,36 +118,13 @@ def offside_positions(model: MotionModel, own_pos: np.ndarray, opp_pos: np.ndarr
     if not model.offside or opp_pos.shape[0] < 2:
         return np.zeros(n, dtype=bool)
     own_pos, opp_pos = float_array("own_pos", own_pos, (n, 2)), float_array("opp_pos", opp_pos, (-1, 2))
-    return _beyond_line(own_pos, opp_pos, float(ball[0]))
+    return beyond_line(own_pos, opp_pos, float(ball[0]))
 
 
-@njit(cache=True, nogil=True)
-def offside_line(opp_pos: np.ndarray, ball_x: float) -> float:  # pragma: no cover - compiled
-    """The offside line's x (team frame): the second-last opponent's x (duplicates counted),
-    the ball's, or the halfway line, whichever is furthest forward."""
-    last = second = -math.inf
-    for i in range(opp_pos.shape[0]):
-        x = opp_pos[i, 0]
-        if x > last:
-            last, second = x, last
-        elif x > second:
-            second = x
-    return max(second, ball_x, 0.0)
-
-
-@njit(cache=True, nogil=True)
-def _beyond_line(own_pos: np.ndarray, opp_pos: np.ndarray, ball_x: float) -> np.ndarray:  # pragma: no cover
-    """Whether each of ``own_pos`` is beyond :func:`offside_line`."""
-    line = offside_line(opp_pos, ball_x)
-    out = np.empty(own_pos.shape[0], dtype=np.bool_)
-    for i in range(own_pos.shape[0]):
-        out[i] = own_pos[i, 0] > line
-    return out
-
-
-def pass_candidates(model: MotionModel, view: object, passer: int, params: PassParams = PassParams()) -> np.ndarray:
+def pass_candidates(ctx: SkillContext, view: TeamView, passer: int, params: PassParams = PassParams()) -> np.ndarray:
     """Indices of the team-mates the ``passer`` may pass to (not itself, not offside, the
     goalkeeper only when ``params.allow_goalie``)."""
+    model = ctx.model
     n = model.players_per_team
     passer = check_player(passer, n, "passer")
     ok = ~offside_positions(model, view.own_pos, view.opp_pos, view.ball)
@@ -153,13 +134,14 @@ def pass_candidates(model: MotionModel, view: object, passer: int, params: PassP
     return np.flatnonzero(ok)
 
 
-def best_pass(model: MotionModel, view: object, passer: int, params: PassParams = PassParams(),
+def best_pass(ctx: SkillContext, view: TeamView, passer: int, params: PassParams = PassParams(),
               holder: bool = False) -> PassPlan | None:
     """The best safe pass for ``passer`` (who must be able to kick the ball), or None.
 
     ``holder``: the passer is our goalkeeper holding the ball (kicks at full effectiveness).
     """
-    receivers = pass_candidates(model, view, passer, params)
+    model = ctx.model
+    receivers = pass_candidates(ctx, view, passer, params)
     if receivers.size == 0:
         return None
     ball = np.asarray(view.ball, np.float64)
@@ -167,7 +149,7 @@ def best_pass(model: MotionModel, view: object, passer: int, params: PassParams 
     targets, wanted = np.empty((size, 2)), np.empty((size, 2))
     owners = np.empty(size, dtype=np.int64)
     leads = np.asarray(params.leads, dtype=np.float64).reshape(-1, 2)
-    count = _pass_targets(view.own_pos, receivers, leads, np.asarray(params.arrival_speeds, dtype=np.float64), ball,
+    count = pass_targets(view.own_pos, receivers, leads, np.asarray(params.arrival_speeds, dtype=np.float64), ball,
                           model.half_length - params.field_margin, model.half_width - params.field_margin,
                           params.min_distance, params.max_distance, model.ball_decay, targets, owners, wanted)
     if count == 0:
@@ -181,25 +163,23 @@ def best_pass(model: MotionModel, view: object, passer: int, params: PassParams 
     if usable.size == 0:
         return None
     vel_u, own_u, lim_u = velocities[usable], owners[usable], limit[usable]
-    # The lanes' searches on the view's checked arrays (those of the ball race): the same
-    # calls as teammate_cycles and opponent_cycles make, without checking them again.
-    ball_row, _, ours_now, theirs_now = race_players(model, view)
-    ours, our_points = intercept_many_checked(model, ball_row, vel_u, ours_now, -1.0, lim_u, 0, False, own_u)
+    # The lanes' searches (as teammate_cycles and opponent_cycles make them): the receiver
+    # alone on each lane, then every opponent up to the cycle that can still decide.
+    arrays = ctx.arrays(view)
+    ours, our_points = intercept_many(ctx, arrays.ball, vel_u, arrays.ours, -1.0, lim_u, 0, False, own_u)
     rows = np.arange(usable.size)
     receive, received_at = ours[rows, own_u], our_points[rows, own_u]
-    radius, catch = opponent_radii(model, params.opponent_margin)
-    opponents = (theirs_now[0], theirs_now[1], theirs_now[2], radius, catch)
-    theirs = intercept_many_checked(model, ball_row, vel_u, opponents, 1.0,
-                                    _deciding_cycles(receive, arrival[usable], lim_u, params.min_lead), 1, True,
-                                    _NO_RECEIVER)[0].min(axis=1, initial=UNREACHABLE)
-    effort = view_effort(view, model.players_per_team)
+    opponents = arrays.theirs.with_radii(*ctx.opponent_radii(params.opponent_margin))
+    theirs = intercept_many(ctx, arrays.ball, vel_u, opponents, 1.0,
+                            deciding_cycles(receive, arrival[usable], lim_u, params.min_lead), 1,
+                            True)[0].min(axis=1, initial=UNREACHABLE)
+    effort = arrays.ours.effort
     score = np.empty(usable.size)
     points = np.empty((usable.size, 2))
-    best = _pass_scores(targets[usable], received_at, receive, theirs, arrival[usable], own_u, view.own_pos,
-                        view.own_vel, effort, view.opp_pos, ball, model.reach, float(model.player_coast[-1]),
-                        model.kickable_distance, model.half_length, params.min_lead,
-                        np.array([params.weight_forward, params.weight_goal, params.weight_space, params.weight_lead]),
-                        score, points)
+    best = pass_scores(targets[usable], received_at, receive, theirs, arrival[usable], own_u, view.own_pos,
+                       view.own_vel, effort, view.opp_pos, ball, model.reach, float(model.player_coast[-1]),
+                       model.kickable_distance, model.half_length, params.min_lead, score, points,
+                       params.weight_forward, params.weight_goal, params.weight_space, params.weight_lead)
     if best < 0:
         return None
     j = int(usable[best])
@@ -208,91 +188,5 @@ def best_pass(model: MotionModel, view: object, passer: int, params: PassParams 
                     receive_cycle=int(receive[best]), opponent_cycle=int(theirs[best]), score=float(score[best]))
 
 
-_NO_RECEIVER = np.zeros(0, dtype=np.int64)  # every opponent is searched on every lane
-
-LEAD_CAP = 10
-"""Cycles of lead over the opponents beyond which a pass scores no better (the score's lead
-term is ``min(lead, LEAD_CAP) / LEAD_CAP``)."""
 
 
-@njit(cache=True, nogil=True)
-def _deciding_cycles(receive: np.ndarray, arrival: np.ndarray, limit: np.ndarray,
-                     min_lead: int) -> np.ndarray:  # pragma: no cover - compiled
-    """Per lane, the last cycle at which an opponent's interception can still change the
-    pass's safety or score: ``receive + max(LEAD_CAP, min_lead)`` or ``arrival + min_lead``,
-    whichever is later, within ``limit``; 0 for a lane the receiver never reaches (it is not
-    scored). Opponents later than that count as UNREACHABLE, which decides the same, so the
-    search stops there (the opponents' search is most of a pass decision's cost)."""
-    out = np.empty(receive.shape[0], dtype=np.int64)
-    for i in range(receive.shape[0]):
-        if receive[i] >= UNREACHABLE:
-            out[i] = 0
-        else:
-            out[i] = min(limit[i], max(receive[i] + max(LEAD_CAP, min_lead), arrival[i] + min_lead))
-    return out
-
-
-@njit(cache=True, nogil=True)
-def _pass_targets(own_pos: np.ndarray, receivers: np.ndarray, leads: np.ndarray, speeds: np.ndarray, ball: np.ndarray,
-                  x_max: float, y_max: float, min_distance: float, max_distance: float, decay: float,
-                  targets: np.ndarray, owners: np.ndarray, wanted: np.ndarray) -> int:  # pragma: no cover
-    """Candidate targets (receiver + lead, kept within |x| <= x_max, |y| <= y_max), each with
-    each arrival speed, at a usable distance; the ball velocity each needs. Returns the count."""
-    count = 0
-    for r in range(receivers.shape[0]):
-        who = receivers[r]
-        for j in range(leads.shape[0]):
-            tx = min(max(own_pos[who, 0] + leads[j, 0], -x_max), x_max)
-            ty = min(max(own_pos[who, 1] + leads[j, 1], -y_max), y_max)
-            dx, dy = tx - ball[0], ty - ball[1]
-            dist = math.sqrt(dx * dx + dy * dy)
-            if dist < min_distance or dist > max_distance:
-                continue
-            for k in range(speeds.shape[0]):
-                speed = dist * (1.0 - decay) + speeds[k]
-                targets[count, 0] = tx
-                targets[count, 1] = ty
-                owners[count] = who
-                wanted[count, 0] = dx / dist * speed
-                wanted[count, 1] = dy / dist * speed
-                count += 1
-    return count
-
-
-@njit(cache=True, nogil=True)
-def _pass_scores(targets: np.ndarray, received_at: np.ndarray, receive: np.ndarray, theirs: np.ndarray,
-                 arrival: np.ndarray, owners: np.ndarray, own_pos: np.ndarray, own_vel: np.ndarray, effort: np.ndarray,
-                 opp_pos: np.ndarray, ball: np.ndarray, reach: np.ndarray, coast: float, kickable: float,
-                 half_length: float, min_lead: int, weights: np.ndarray, score: np.ndarray,
-                 points: np.ndarray) -> int:  # pragma: no cover - compiled
-    """Score the safe candidates (see the module docstring); unsafe ones score -inf. Returns
-    the best row, or -1 when none is safe."""
-    best, best_score = -1, -np.inf
-    for i in range(targets.shape[0]):
-        score[i] = -np.inf
-        if receive[i] >= UNREACHABLE or theirs[i] - receive[i] < min_lead:
-            continue
-        who = owners[i]
-        # Run onto it: the receiver takes the ball at the target when it can be there by the
-        # ball's arrival and no opponent gets to the ball before; else where it meets it first.
-        sx = own_pos[who, 0] + coast * own_vel[who, 0]
-        sy = own_pos[who, 1] + coast * own_vel[who, 1]
-        need = max(math.sqrt((targets[i, 0] - sx) ** 2 + (targets[i, 1] - sy) ** 2) - kickable, 0.0) / effort[who]
-        run = np.searchsorted(reach, need)
-        if run <= arrival[i] and theirs[i] >= arrival[i] + min_lead:
-            px, py = targets[i, 0], targets[i, 1]
-        else:
-            px, py = received_at[i, 0], received_at[i, 1]
-        points[i, 0] = px
-        points[i, 1] = py
-        space = 10.0
-        for o in range(opp_pos.shape[0]):
-            space = min(space, math.sqrt((px - opp_pos[o, 0]) ** 2 + (py - opp_pos[o, 1]) ** 2))
-        lead = min(theirs[i] - receive[i], LEAD_CAP) / LEAD_CAP
-        closeness = 1.0 - math.sqrt((px - half_length) ** 2 + py * py) / (2.0 * half_length)
-        forward = min(max((px - ball[0]) / 20.0, -1.0), 1.5)
-        value = weights[0] * forward + weights[1] * closeness + weights[2] * space / 10.0 + weights[3] * lead
-        score[i] = value
-        if value > best_score:
-            best, best_score = i, value
-    return best

@@ -27,10 +27,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from agents.skills.ball_kernels import lane_arrivals
+from agents.skills.context import SkillContext
 from agents.skills.interception import UNREACHABLE
 from agents.skills.kicking import kick_for_velocity
-from agents.skills.lanes import lane_arrivals, opponent_cycles
+from agents.skills.lanes import opponent_cycles
 from agents.skills.model import MotionModel, check_params, check_player
+from soccer_sim.team import TeamView
 
 
 @dataclass(frozen=True)
@@ -85,26 +88,17 @@ def aim_points(model: MotionModel, params: ShotParams = ShotParams()) -> np.ndar
     return np.column_stack([np.full(ys.shape, model.half_length), ys])
 
 
-def _aims(model: MotionModel, params: ShotParams) -> np.ndarray:
-    """:func:`aim_points`, made once per model and parameters."""
-    cache = model.__dict__.setdefault("_shot_aims", {})
-    key = (params.aims, params.post_margin)
-    aims = cache.get(key)
-    if aims is None:
-        aims = cache[key] = aim_points(model, params)
-    return aims
-
-
-def best_shot(model: MotionModel, view: object, shooter: int, params: ShotParams = ShotParams(),
+def best_shot(ctx: SkillContext, view: TeamView, shooter: int, params: ShotParams = ShotParams(),
               holder: bool = False) -> ShotPlan | None:
     """The best shot for ``shooter`` (who must be able to kick), or None when out of range or
     when no aim can reach the goal line. ``holder``: a goalkeeper holding the ball."""
+    model = ctx.model
     shooter = check_player(shooter, model.players_per_team, "shooter")
     ball = np.asarray(view.ball, float)
     goal = model.goal_centre(ours=False)
     if float(np.hypot(*(goal - ball))) > params.max_range or ball[0] >= model.half_length:
         return None
-    aims = _aims(model, params)
+    aims = ctx.table(("shot aims", params.aims, params.post_margin), lambda: aim_points(model, params))
     delta = aims - ball
     dist = np.hypot(delta[:, 0], delta[:, 1])
     wanted = delta * (model.ball_speed_max / dist)[:, None]
@@ -116,7 +110,7 @@ def best_shot(model: MotionModel, view: object, shooter: int, params: ShotParams
         return None
     aims, dist, kicks, velocities, cross_cycle = aims[usable], dist[usable], kicks[usable], velocities[usable], \
         cross_cycle[usable]
-    theirs, _ = opponent_cycles(model, view, ball, velocities, cross_cycle, params.opponent_margin)
+    theirs, _ = opponent_cycles(ctx, view, ball, velocities, cross_cycle, params.opponent_margin)
     lead = np.where(theirs >= UNREACHABLE, model.horizon, theirs - cross_cycle).astype(float)
     unblocked = 1.0 / (1.0 + np.exp(-(lead - params.lead_half) / params.lead_scale))
     spread = np.maximum(model.kick_noise * dist, 1e-6)

@@ -18,10 +18,11 @@ import numpy as np
 from agents.skills.decision import decide_on_ball
 from agents.skills.dribbling import dribble
 from agents.skills.goalkeeping import distribute, guard_position, should_catch
+from agents.skills.context import SkillContext
 from agents.skills.interception import ball_race, intercept
 from agents.skills.kicking import kick_for_velocity
 from agents.skills.model import MotionModel
-from agents.skills.movement import dash_to_points, speed_caps
+from agents.skills.movement import dash_to_points, paced_dashes, speed_caps
 from agents.skills.passing import best_pass
 from agents.skills.shooting import best_shot
 from soccer_sim.config import MatchConfig
@@ -48,10 +49,11 @@ def random_view(config: MatchConfig, rng: np.random.Generator, carrier: int = 9,
                     effort=np.full(n, 1.0))
 
 
-def skill_calls(model: MotionModel, view: TeamView, carrier: int,
+def skill_calls(ctx: SkillContext, view: TeamView, carrier: int,
                 attack: TeamView) -> dict[str, Callable[[], object]]:
     """The calls timed, by name (each for a whole team of players where the skill allows);
     ``attack`` is a view with the carrier 18 m from the opponents' goal (shots in range)."""
+    model = ctx.model
     n = model.players_per_team
     targets = view.own_pos + 5.0
     urgent = np.zeros(n, dtype=bool)
@@ -59,36 +61,37 @@ def skill_calls(model: MotionModel, view: TeamView, carrier: int,
     out = np.empty((n, 2))
     wanted = np.array([2.0, 0.5])
     return {
-        "intercept (11 players, 60 cycles)": lambda: intercept(model, view.ball, view.ball_vel, view.own_pos,
-                                                               view.own_vel, view.effort),
-        "ball_race (both teams)": lambda: ball_race(model, view),
-        "dash_to_points (11 players)": lambda: dash_to_points(model, view.own_pos, view.own_vel, targets,
-                                                              view.effort, None, out=out),
-        "speed_caps (11 players)": lambda: speed_caps(model, view, urgent),
+        "intercept (11 players, 60 cycles)": lambda: intercept(ctx, view.ball, view.ball_vel,
+                                                               ctx.arrays(view).ours),
+        "ball_race (both teams)": lambda: ball_race(ctx, view),
+        "dash_to_points (11 players)": lambda: dash_to_points(model, ctx.arrays(view).ours, targets,
+                                                              out=out),
+        "speed_caps (11 players)": lambda: speed_caps(ctx, view, urgent),
+        "paced_dashes (11 players)": lambda: paced_dashes(ctx, view, targets, urgent, out),
         "kick_for_velocity": lambda: kick_for_velocity(model, view.own_pos[carrier], view.ball, view.ball_vel, wanted),
-        "best_pass": lambda: best_pass(model, view, carrier),
-        "best_shot (out of range)": lambda: best_shot(model, view, carrier),
-        "best_shot (in range)": lambda: best_shot(model, attack, carrier),
-        "dribble": lambda: dribble(model, view, carrier),
+        "best_pass": lambda: best_pass(ctx, view, carrier),
+        "best_shot (out of range)": lambda: best_shot(ctx, view, carrier),
+        "best_shot (in range)": lambda: best_shot(ctx, attack, carrier),
+        "dribble": lambda: dribble(ctx, view, carrier),
         "guard_position": lambda: guard_position(model, view.ball),
-        "should_catch": lambda: should_catch(model, view),
-        "distribute (goalkeeper)": lambda: distribute(model, view),
-        "decide_on_ball (midfield)": lambda: decide_on_ball(model, view, carrier),
-        "decide_on_ball (18 m from goal)": lambda: decide_on_ball(model, attack, carrier),
+        "should_catch": lambda: should_catch(ctx, view),
+        "distribute (goalkeeper)": lambda: distribute(ctx, view),
+        "decide_on_ball (midfield)": lambda: decide_on_ball(ctx, view, carrier),
+        "decide_on_ball (18 m from goal)": lambda: decide_on_ball(ctx, attack, carrier),
     }
 
 
 def time_skills(views: int = 20, repeat: int = 5, number: int = 200, seed: int = 0) -> dict[str, float]:
     """Median microseconds per call of every skill over ``views`` random views."""
     config = MatchConfig()
-    model = MotionModel(config)
+    ctx = SkillContext(MotionModel.even_sides(config))
     rng = np.random.default_rng(seed)
     results: dict[str, list[float]] = {}
     for _ in range(views):
         carrier = 9
         view = random_view(config, rng, carrier)
         attack = random_view(config, rng, carrier, (config.field.half_length - 18.6, float(rng.uniform(-8, 8))))
-        for name, call in skill_calls(model, view, carrier, attack).items():
+        for name, call in skill_calls(ctx, view, carrier, attack).items():
             call()
             best = min(timeit.repeat(call, number=number, repeat=repeat)) / number
             results.setdefault(name, []).append(best * 1e6)

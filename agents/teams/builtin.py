@@ -17,8 +17,9 @@ from collections.abc import Callable
 
 from dataclasses import replace
 
-from agents.skills import PassParams, ShotParams
-from agents.teams.formation_team import ATTACKING_DECISIONS, FormationTeam, TeamStyle
+from agents.skills import PassParams
+from agents.teams.formation_team import FormationTeam
+from agents.teams.style import ATTACKING_DECISIONS, TeamStyle
 
 ASSIGNER_VARIANTS: tuple[str, ...] = (
     "mmdr", "mmd+msd2", "static", "greedy", "greedy-offense", "bidding", "msd", "msd2", "random",

@@ -17,7 +17,7 @@ Every cycle (team frame: we attack +x, our goal at x = -half_length):
    player) runs to the interception point; a style may send a second presser when defending.
    A player who can kick decides with :func:`agents.skills.decide_on_ball` (shoot, pass,
    dribble or clear). At our set plays the player nearest the ball takes it after the others
-   had ``set_play_wait`` cycles to take their places (see :meth:`FormationTeam._take_set_play`:
+   had ``set_play_wait`` cycles to take their places (see :mod:`agents.teams.set_plays`:
    taken in time, retaken set plays by another player and another kick); the goalkeeper
    distributes a held ball.
 5. **Everybody else** runs to their targets (attackers kept onside), sprinting only when it
@@ -29,74 +29,36 @@ any, keeps the goalkeeper role, and the outfield players take as many of the for
 outfield roles, those whose targets lie nearest them when play starts (a minimal-total-distance
 matching on the first cycle), for the whole match; a side of no players does nothing.
 
-The team reports per-match figures through :meth:`FormationTeam.statistics` and what it would
-like drawn through :meth:`FormationTeam.drawing`.
+The team reports per-match figures through :meth:`FormationTeam.statistics`
+(:mod:`agents.teams.reporting`) and what it would like drawn through
+:meth:`FormationTeam.drawing` (a :class:`soccer_sim.team_hooks.Drawing`). Its style is a
+:class:`~agents.teams.style.TeamStyle`; its compiled kernels are in
+:mod:`agents.teams.role_kernels`.
 """
 
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass, field
-
 import numpy as np
-from numba import njit
 
 import formations
 from agents import skills
 from agents.roles import RoleAssigner, RoleContext, make_assigner, offensive_order
-from agents.skills.passing import offside_line
+from agents.teams.reporting import RoleFigures
+from agents.teams.role_kernels import pull_onside, settle_roles, shape_targets
+from agents.teams.set_plays import SetPlays
+from agents.teams.style import ATTACKING_DECISIONS, TeamStyle
 from formations.formation_set import Situation
 from soccer_sim.config import MatchConfig
 from soccer_sim.state import SET_PLAYS, PlayMode
 from soccer_sim.team import SideInfo, TeamCommand, TeamView
+from soccer_sim.team_hooks import Drawing
+
+__all__ = ["ATTACKING_DECISIONS", "FormationTeam", "TeamStyle"]
 
 _PLAY_ON = PlayMode.PLAY_ON
 _KICK_OFF = PlayMode.KICK_OFF
 _AFTER_GOAL = PlayMode.AFTER_GOAL
 _GOALIE_HOLDS = PlayMode.GOALIE_HOLDS
-_RETAKE_WINDOW = 50
-"""A set play of ours given again at the same spot within this many cycles of our kick is
-that set play retaken."""
-_CYCLES_PER_MINUTE = 600
-"""Cycles of 100 ms in a minute of game time."""
-
-
-ATTACKING_DECISIONS = skills.DecisionParams(
-    shot=skills.ShotParams(threshold=0.2),
-    dribbling=skills.DribbleParams(goal_weight=2.0, speed_fraction=0.85),
-)
-"""The built-in team's on-ball choices: shoot when a shot has a fair chance (the skill's own
-threshold waits for a near-certain one, which against a goalkeeper almost never comes) and
-dribble towards the goal rather than along the wings."""
-
-
-@dataclass(frozen=True)
-class TeamStyle:
-    """How a team plays, apart from its role assigner."""
-
-    system: str = "4-3-3"
-    """Built-in formation set (``formations.builtin_names()``)."""
-    depth: float = 0.0
-    """Metres the outfield block is shifted towards the opponents' goal in open play (negative:
-    a deeper block)."""
-    attack_push: float = 14.0
-    """Extra metres the outfield block moves up when we attack (win the race for the ball)."""
-    box_narrowing: float = 0.5
-    """When we attack with the ball in the final third, the forwards' targets move this share
-    of the way towards the middle of the field (so that there are players in the box)."""
-    pressers: int = 1
-    """Players sent at the ball when the opponents win the race (1: just the fastest)."""
-    decision: skills.DecisionParams = field(default_factory=lambda: ATTACKING_DECISIONS)
-    """Thresholds of the on-ball decision (shoot, pass, dribble, clear)."""
-    offside_margin: float = 1.0
-    """Attackers without the ball stay this far behind the offside line (m)."""
-    set_play_wait: int = 15
-    """Cycles our set-play taker waits before kicking, so the others can take their places."""
-    stationary: bool = False
-    """Outfield players hold their kick-off spots and only kick a ball that comes to them (the
-    baseline against which positioning is measured)."""
-    unfilled_distance: float = 10.0
-    """A role counts as unfilled while the player assigned to it is farther than this (m)."""
 
 
 class FormationTeam:
@@ -129,9 +91,9 @@ class FormationTeam:
             raise ValueError(f"{type(self).__name__} plays at most {roles} players per side, "
                              f"{len(self._outfield_roles)} of them outfield (formation {self.style.system!r}), "
                              f"not {n} with {outfield_count} outfield")
-        self.model = skills.MotionModel(config, players=n, goalie=goalie,
-                                        opponents=getattr(side_info, "opponents", None),
-                                        opponent_goalie=getattr(side_info, "opponent_goalie_index", None))
+        self.skills = skills.SkillContext.for_match(config, side_info)
+        """The skills' per-match context (motion model, tables, the view's checked arrays)."""
+        self.model = model = self.skills.model
         self.config = config
         self.n = n
         self.goalie = goalie
@@ -151,49 +113,26 @@ class FormationTeam:
         self.targets = np.zeros((roles, 2))
         self.role_of_player: np.ndarray | None = None
         self.kick_off_spots = self._kick_off_spots()
-        self._half_length = config.field.half_length
-        self._half_width = config.field.half_width
-        self._own_goal = np.array([-self._half_length, 0.0])
-        self._opp_goal = np.array([self._half_length, 0.0])
+        self._half_length = model.half_length
         self._context = RoleContext(
-            ball=np.zeros(2), own_goal=self._own_goal, opp_goal=self._opp_goal, opponents=np.zeros((n, 2)),
-            field_half_length=self._half_length, field_half_width=self._half_width, cycle=0, attacking=False,
-            penalty_area_length=config.field.penalty_area_length,
-            penalty_area_half_width=config.field.penalty_area_width / 2.0,
+            ball=np.zeros(2), own_goal=model.goal_centre(ours=True), opp_goal=model.goal_centre(ours=False),
+            opponents=np.zeros((n, 2)), field_half_length=model.half_length, field_half_width=model.half_width,
+            cycle=0, attacking=False, penalty_area_length=model.penalty_area_length,
+            penalty_area_half_width=model.penalty_area_half_width,
         )
         """What the assigner sees besides positions; one object per match, refreshed every cycle."""
-        self._kickable = config.physics.kickable_distance
+        self._kickable = model.kickable_distance
         self._mode_key: tuple[int, bool] = (-1, False)
         self._mode_since = 0
         self._our_pass_in_flight = False
         self._situation = Situation.NORMAL
         self._dribble_dash: np.ndarray | None = None
         self._kicker_row = -1
-        self._goal_kick_leaving = False
-        self._set_play_taker = -1
-        """Our taker of the current set play (-1: not chosen yet)."""
-        self._sprinter = -1
-        """The player who runs flat out this cycle whatever its stamina (our set-play taker)."""
-        self._taken: tuple[int, float, float, int] | None = None
-        """(mode, ball x, ball y, cycle) of the last set play we kicked."""
-        self._tried_takers: list[int] = []
-        self._tried_kicks: list[np.ndarray] = []
-        """Takers and kick directions of the current set play's attempts (a retake tries others)."""
-        self._patience = max(self.style.set_play_wait, config.rules.set_play_timeout // 2)
-        """Cycles of a set play after which whoever of ours can kick the ball takes it."""
-        self._kick_off_gap = config.physics.player_radius + config.physics.ball_radius + 0.1
-        """How far behind the ball our kick-off taker is placed (m)."""
-        self._goal_centre_guard = np.array([-self._half_length + skills.GoalieParams().depth_far, 0.0])
-        """Where our goalkeeper waits at our goal kicks: in front of the goal's centre, away
-        from the spot on the goal area's corner and from every kick out of it."""
         self._eligible = np.ones(n, dtype=bool)
-        # Per-match figures.
-        self._cycles = 0
-        self._switches = 0
-        self._assigned_cycles = 0
-        self._distance_sum = 0.0
-        self._makespan_sum = 0.0
-        self._unfilled_role_cycles = 0
+        self.set_plays = SetPlays(self.skills, config, self.style, self.outfield)
+        """Our set plays: takers, retakes, kick-off placement, the goalkeeper's held ball."""
+        self.figures = RoleFigures(config, len(self.outfield))
+        """The per-match figures :meth:`statistics` reports."""
 
     def _kick_off_spots(self) -> np.ndarray:
         """(n, 2) where each role stands at our kick-off (team frame)."""
@@ -224,16 +163,16 @@ class FormationTeam:
         command.move = None
         mode = view.play_mode
         key = (int(mode), bool(view.mode_ours))
+        set_plays = self.set_plays
         # Our set-play kick of the last cycle leaves a set play only when the referee restarted
         # it at once (a touch in the kick's cycle): that is a new set play too.
-        restarted = mode != _PLAY_ON and self._taken is not None and self._taken[3] == view.cycle - 1
+        restarted = mode != _PLAY_ON and set_plays.kicked_last_cycle(view)
         if key != self._mode_key or restarted:
             if mode != _PLAY_ON:
-                self._goal_kick_leaving = False
-                self._begin_set_play(view)
+                set_plays.begin(view)
             self._mode_key, self._mode_since = key, view.cycle
-        model = self.model
-        race = skills.ball_race(model, view, self._eligible if self._our_pass_in_flight else None,
+        ctx, model = self.skills, self.model
+        race = skills.ball_race(ctx, view, self._eligible if self._our_pass_in_flight else None,
                                 their_first_only=True)
         situation, ball_ref = self._situation_and_ball(view, race)
         self._situation = situation
@@ -244,30 +183,31 @@ class FormationTeam:
         shifted = mode == _PLAY_ON and shift != 0.0
         narrowed = situation == Situation.ATTACK and ball_ref[0] > self._half_length / 3.0 and style.box_narrowing
         if shifted or narrowed:
-            _shape_targets(targets, self._match_roles, shift, shifted, self._half_length - 2.0,
-                           self._forward_roles, 1.0 - style.box_narrowing, bool(narrowed))
+            shape_targets(targets, self._match_roles, shift, shifted, self._half_length - 2.0,
+                          self._forward_roles, 1.0 - style.box_narrowing, bool(narrowed))
         self._assign_roles(view, targets, ball_ref)
         urgent = np.zeros(self.n, dtype=bool)
-        self._sprinter = -1
+        set_plays.sprinter = -1
         if mode == _PLAY_ON:
             self._play_on(view, race, urgent)
         elif mode in (_KICK_OFF, _AFTER_GOAL):
-            self._kick_off(view, urgent)
+            set_plays.kick_off(view, self.goals, command, urgent, self._mode_since)
         elif mode == _GOALIE_HOLDS:
-            self._goalie_holds(view)
+            set_plays.goalie_holds(view, self.goals, command, self._mode_since)
         else:
-            self._set_play(view, urgent)
-        skills.paced_dashes(model, view, self.goals, urgent, command.dash)
-        if self._sprinter >= 0:
+            set_plays.set_play(view, self.goals, command, urgent, self._mode_since)
+        skills.paced_dashes(ctx, view, self.goals, urgent, command.dash)
+        sprinter = set_plays.sprinter
+        if sprinter >= 0:
             # Our set-play taker runs flat out whatever its stamina: a set play not taken in
             # time is lost (the ball is dropped).
-            r = slice(self._sprinter, self._sprinter + 1)
-            skills.dash_to_points(model, view.own_pos[r], view.own_vel[r], self.goals[r],
-                                  skills.view_effort(view, self.n)[r], out=command.dash[r])
+            r = slice(sprinter, sprinter + 1)
+            skills.dash_to_points(model, ctx.arrays(view).ours.rows(sprinter, sprinter + 1), self.goals[r],
+                                  out=command.dash[r])
         if self._dribble_dash is not None:  # the dribbler runs with the ball, not to a point
             command.dash[self._kicker_row] = self._dribble_dash
             self._dribble_dash = None
-        if _any_nonzero(command.kick):
+        if np.count_nonzero(command.kick):
             # Team-mates in an offside position when we play the ball must keep off it.
             self._our_pass_in_flight = True
             self._eligible = ~skills.offside_positions(model, view.own_pos, view.opp_pos, view.ball)
@@ -316,27 +256,22 @@ class FormationTeam:
             goals = assigner.steer(players, role_targets, role_of_player, context) if self._steers else None
         previous = self.role_of_player if self.role_of_player is not None else role_of_player
         measured = view.play_mode == _PLAY_ON
-        switches, mean, largest, unfilled = _settle_roles(self.goals, self.outfield, role_targets, role_of_player,
-                                                          goals, players, previous, self.style.unfilled_distance,
-                                                          measured)
-        self._switches += switches
-        if measured:
-            self._cycles += 1
-            self._distance_sum += mean
-            self._makespan_sum += largest
-            self._unfilled_role_cycles += unfilled
+        switches, mean, largest, unfilled = settle_roles(self.goals, self.outfield, role_targets, role_of_player,
+                                                         goals, players, previous, self.style.unfilled_distance,
+                                                         measured)
+        self.figures.add(switches, measured, mean, largest, unfilled)
         self.role_of_player = role_of_player
         if self.goalie >= 0:
-            ball = view.ball
-            self.goals[self.goalie] = skills.guard_xy(self.model, float(ball[0]), float(ball[1]))
+            self.goals[self.goalie] = skills.guard_position(self.model, view.ball)
 
     # ------------------------------------------------------------------ play on
     def _play_on(self, view: TeamView, race: skills.BallRace, urgent: np.ndarray) -> None:
-        model, command, goals = self.model, self.command, self.goals
-        if self._goal_kick_leaving:
+        ctx, model, command, goals = self.skills, self.model, self.command, self.goals
+        set_plays = self.set_plays
+        if set_plays.goal_kick_leaving:
             if model.in_penalty_area(view.ball):
                 return  # our goal kick is on its way out: with proper goal kicks nobody may play it yet
-            self._goal_kick_leaving = False
+            set_plays.goal_kick_leaving = False
         ball_player = self._ball_player(view, race)
         if not self.style.stationary:
             self._keep_onside(view, ball_player)
@@ -355,16 +290,16 @@ class FormationTeam:
             self._our_pass_in_flight = False
         kicker = self._kicker(view, race, ball_player)
         goalie_near = self.goalie >= 0 and race.ours.cycles[self.goalie] <= 1
-        if kicker >= 0 and kicker == self.goalie and skills.should_catch(model, view, self.goalie,
-                                                         teammate_kicked_last=self._our_pass_in_flight):
+        if kicker >= 0 and kicker == self.goalie and skills.should_catch(
+                ctx, view, self.goalie, teammate_kicked_last=self._our_pass_in_flight):
             command.catch = True  # a held ball is safer than a kick
             kicker = -1
         self._kicker_row = kicker
         if kicker >= 0:
             if kicker == self.goalie:
-                command.kick[kicker] = skills.distribute(model, view, kicker).kick
+                command.kick[kicker] = skills.distribute(ctx, view, kicker).kick
             else:
-                decision = skills.decide_on_ball(model, view, kicker, self.style.decision,
+                decision = skills.decide_on_ball(ctx, view, kicker, self.style.decision,
                                                  pressure=race.theirs.first_cycle)
                 if contested and decision.action in (skills.OnBallAction.DRIBBLE, skills.OnBallAction.CLEAR):
                     # Against an opponent who kicks the ball too, a dribble or a clearance up the
@@ -376,7 +311,7 @@ class FormationTeam:
                     if decision.dash is not None:
                         self._dribble_dash = decision.dash
         elif goalie_near and not command.catch and skills.should_catch(
-                model, view, self.goalie, teammate_kicked_last=self._our_pass_in_flight):
+                ctx, view, self.goalie, teammate_kicked_last=self._our_pass_in_flight):
             command.catch = True
 
     def _wing_kick(self, view: TeamView, kicker: int) -> np.ndarray:
@@ -425,102 +360,7 @@ class FormationTeam:
     def _keep_onside(self, view: TeamView, ball_player: int) -> None:
         """Outfield goals beyond the offside line (the second-last opponent or the ball, in
         their half) are pulled back behind it by ``offside_margin``."""
-        _pull_onside(self.goals, self.outfield, view.opp_pos, float(view.ball[0]), self.style.offside_margin)
-
-    # ------------------------------------------------------------------ set plays
-    def _begin_set_play(self, view: TeamView) -> None:
-        """A new play mode other than play on: forget the taker; at a set play of ours that is
-        the one we just kicked given again (a retake), remember who took it and how, so that
-        another player takes it another way."""
-        self._set_play_taker = -1
-        taken = self._taken
-        retake = (view.mode_ours and taken is not None and taken[0] == int(view.play_mode)
-                  and view.cycle - taken[3] <= _RETAKE_WINDOW
-                  and taken[1] == float(view.ball[0]) and taken[2] == float(view.ball[1]))
-        if not retake:
-            self._tried_takers.clear()
-            self._tried_kicks.clear()
-
-    def _taker(self, view: TeamView) -> int:
-        """The outfield player nearest the ball that has not tried this set play yet (a lone
-        goalkeeper takes it)."""
-        candidates = self.outfield if len(self.outfield) else np.arange(self.n)
-        fresh = np.setdiff1d(candidates, self._tried_takers)
-        if fresh.size:
-            candidates = fresh
-        gaps = np.hypot(*(view.own_pos[candidates] - view.ball).T)
-        return int(candidates[int(np.argmin(gaps))])
-
-    def _kick_off(self, view: TeamView, urgent: np.ndarray) -> None:
-        """Before a kick-off (and in the pause after a goal) place everybody on the set-play
-        formation; at our kick-off the taker is placed just behind the ball and plays it once
-        the wait is over."""
-        taker = self._take_set_play(view, urgent) if view.play_mode == _KICK_OFF and view.mode_ours else -1
-        move = self.goals.copy()
-        if taker >= 0:
-            move[taker] = (view.ball[0] - self._kick_off_gap, view.ball[1])
-        self.command.move = move
-
-    def _set_play(self, view: TeamView, urgent: np.ndarray) -> None:
-        if not view.mode_ours:
-            return
-        if view.play_mode == PlayMode.GOAL_KICK and self.goalie >= 0:
-            self.goals[self.goalie] = self._goal_centre_guard
-        self._take_set_play(view, urgent)
-
-    def _take_set_play(self, view: TeamView, urgent: np.ndarray) -> int:
-        """Our set play: the taker (chosen once per set play) runs to the ball and, the wait
-        over, kicks it; if it is not there after ``_patience`` cycles, whoever of ours can kick
-        the ball takes it, so a set play is always taken well within the referee's timeout.
-        Returns the taker."""
-        taker = self._set_play_taker
-        if taker < 0:
-            taker = self._set_play_taker = self._taker(view)
-        self.goals[taker] = view.ball
-        urgent[taker] = True
-        self._sprinter = taker
-        waited = view.cycle - self._mode_since
-        if waited < self.style.set_play_wait:
-            return taker
-        gaps = np.hypot(*(view.own_pos - view.ball).T)
-        kicker = taker
-        if gaps[taker] > self._kickable:
-            kicker = int(np.argmin(gaps))
-            if waited < self._patience or gaps[kicker] > self._kickable:
-                return taker
-        self._kick_set_play(view, kicker)
-        return taker
-
-    def _kick_set_play(self, view: TeamView, kicker: int) -> None:
-        """``kicker`` takes our set play. A goal kick is cleared along a path nobody else can
-        reach before the ball leaves our penalty area (the kicks of earlier attempts avoided);
-        other set plays are played as in open play, or cleared when retaken."""
-        model = self.model
-        if view.play_mode == PlayMode.GOAL_KICK:
-            plan = skills.goal_kick_clearance(model, view, kicker, avoid=tuple(self._tried_kicks))
-            kick, direction = plan.kick, plan.direction
-            # With proper goal kicks our own players must keep off the ball until it is out of
-            # the area (see _play_on).
-            self._goal_kick_leaving = self.config.rules.proper_goal_kicks
-        else:
-            kick = None
-            if not self._tried_kicks:
-                kick = skills.decide_on_ball(model, view, kicker, self.style.decision).kick
-            if kick is None or not kick.any():
-                kick = skills.best_clearance(model, view, kicker).kick
-            speed = float(np.hypot(*kick))
-            direction = kick / speed if speed > 0.0 else np.array([1.0, 0.0])
-        self.command.kick[kicker] = kick
-        self._taken = (int(view.play_mode), float(view.ball[0]), float(view.ball[1]), view.cycle)
-        self._tried_takers.append(kicker)
-        self._tried_kicks.append(direction)
-
-    def _goalie_holds(self, view: TeamView) -> None:
-        if self.goalie < 0:
-            return
-        if view.ball_holder == self.goalie and view.cycle - self._mode_since >= self.style.set_play_wait:
-            self.command.kick[self.goalie] = skills.distribute(self.model, view, self.goalie).kick
-        self.goals[self.goalie] = view.own_pos[self.goalie]
+        pull_onside(self.goals, self.outfield, view.opp_pos, float(view.ball[0]), self.style.offside_margin)
 
     # ------------------------------------------------------------------ reporting
     def statistics(self) -> dict[str, float]:
@@ -528,86 +368,20 @@ class FormationTeam:
         and the largest distance from the outfield players to their role targets (averaged over
         cycles: the largest is the assignment's makespan), and the share of role-cycles a role
         was unfilled (its player farther than ``unfilled_distance``)."""
-        cycles = max(self._cycles, 1)
-        roles = max(len(self.outfield), 1)
-        return {
-            "role_switches_per_minute": self._switches / max(self._cycles / _CYCLES_PER_MINUTE, 1e-9)
-            if self._cycles else 0.0,
-            "target_distance_mean": self._distance_sum / cycles,
-            "target_distance_max": self._makespan_sum / cycles,
-            "role_unfilled_share": self._unfilled_role_cycles / (cycles * roles),
-        }
+        return self.figures.statistics()
 
-    def drawing(self) -> dict[str, object]:
-        """What a replay may draw (team frame): ``targets`` (n, 2) each role's target, ``goals``
-        (n, 2) where each player is going, ``role_of_player`` (outfield player -> outfield role),
-        ``outfield`` (the outfield players' indices), ``assigned_targets`` (one row per outfield
-        player: its role's target; None before the first assignment), and the current
-        formation's sample balls and triangles (``formation_balls`` (m, 2),
-        ``formation_triangles`` (t, 3))."""
+    def drawing(self) -> Drawing:
+        """What a replay may draw (team frame): each role's target, where each player is
+        going, the outfield players and their roles and role targets (None before the first
+        assignment), and the current formation's sample balls and triangles."""
         formation = self.formation_set.formation(self._situation)
         role_of_player = self.role_of_player
         assigned = None if role_of_player is None else self.targets[self._out_roles][role_of_player]
-        return {
-            "targets": self.targets.copy(), "goals": self.goals.copy(), "outfield": self.outfield.copy(),
-            "role_of_player": None if role_of_player is None else role_of_player.copy(),
-            "assigned_targets": assigned,
-            "formation_balls": formation.balls, "formation_triangles": formation.triangles,
-        }
-
-
-@njit(cache=True, nogil=True)
-def _settle_roles(goals: np.ndarray, rows: np.ndarray, targets: np.ndarray, role_of_player: np.ndarray,
-                  steered: np.ndarray | None, players: np.ndarray, previous: np.ndarray, unfilled: float,
-                  measured: bool) -> tuple[int, float, float, int]:  # pragma: no cover - compiled
-    """Write the outfield players' goals (row ``rows[i]`` of ``goals``: ``steered[i]``, or its
-    role's target when ``steered`` is None) and return the cycle's figures: role switches
-    since ``previous``, and when ``measured`` the mean and the largest distance from a player
-    to its role's target and the roles whose player is farther than ``unfilled`` (zeros when
-    not measured)."""
-    k = players.shape[0]
-    switches, total, largest, far = 0, 0.0, 0.0, 0
-    for i in range(k):
-        t = role_of_player[i]
-        if steered is None:
-            goals[rows[i], 0] = targets[t, 0]
-            goals[rows[i], 1] = targets[t, 1]
-        else:
-            goals[rows[i], 0] = steered[i, 0]
-            goals[rows[i], 1] = steered[i, 1]
-        if t != previous[i]:
-            switches += 1
-        if measured:
-            d = math.hypot(players[i, 0] - targets[t, 0], players[i, 1] - targets[t, 1])
-            total += d
-            if d > largest:
-                largest = d
-            if d > unfilled:
-                far += 1
-    return switches, total / max(k, 1), largest, far
-
-
-@njit(cache=True, nogil=True)
-def _shape_targets(targets: np.ndarray, rows: np.ndarray, shift: float, shifted: bool, x_limit: float,
-                   forwards: np.ndarray, narrowing: float, narrowed: bool) -> None:  # pragma: no cover - compiled
-    """The style's changes to the formation's targets (team frame, in place): ``rows`` moved
-    ``shift`` metres up the field and kept within ``|x| <= x_limit`` when ``shifted``; the
-    ``forwards``' y scaled by ``narrowing`` when ``narrowed``."""
-    if shifted:
-        for r in rows:
-            targets[r, 0] = min(max(targets[r, 0] + shift, -x_limit), x_limit)
-    if narrowed:
-        for r in forwards:
-            targets[r, 1] *= narrowing
-
-
-@njit(cache=True, nogil=True)
-def _any_nonzero(values: np.ndarray) -> bool:  # pragma: no cover - compiled
-    """Whether any entry of ``values`` is non-zero (``values.any()`` without its overhead)."""
-    for x in values.ravel():
-        if x != 0.0:
-            return True
-    return False
+        return Drawing(
+            targets=self.targets.copy(), goals=self.goals.copy(), outfield=self.outfield.copy(),
+            role_of_player=None if role_of_player is None else role_of_player.copy(),
+            assigned_targets=assigned, formation_balls=formation.balls, formation_triangles=formation.triangles,
+        )
 
 
 def _as_slice(indices: np.ndarray) -> slice | np.ndarray:
@@ -615,14 +389,3 @@ def _as_slice(indices: np.ndarray) -> slice | np.ndarray:
     if indices.size and np.array_equal(indices, np.arange(indices[0], indices[0] + indices.size)):
         return slice(int(indices[0]), int(indices[0]) + indices.size)
     return indices
-
-
-@njit(cache=True, nogil=True)
-def _pull_onside(goals: np.ndarray, rows: np.ndarray, opp_pos: np.ndarray, ball_x: float,
-                 margin: float) -> None:  # pragma: no cover - compiled
-    """Goals of ``rows`` beyond the offside line (the second-last opponent or the ball, never
-    in our half) are pulled back to ``margin`` behind it (but not into our half)."""
-    limit = offside_line(opp_pos, ball_x) - margin
-    for r in rows:
-        if goals[r, 0] > limit:
-            goals[r, 0] = max(limit, 0.0)

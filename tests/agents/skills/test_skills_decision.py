@@ -4,16 +4,17 @@ from __future__ import annotations
 
 import numpy as np
 
-from agents.skills import MotionModel, OnBallAction, decide_on_ball
+from agents.skills import MotionModel, SkillContext, OnBallAction, decide_on_ball
 from tests.agents.skills.skill_views import CONFIG, HL, make_view
 
-MODEL = MotionModel(CONFIG)
+MODEL = MotionModel.even_sides(CONFIG)
+CTX = SkillContext(MODEL)
 P = 9
 
 
 def test_open_goal_in_range_is_shot() -> None:
     view = make_view(own={P: (HL - 11.0, 0.0)}, opp={0: (HL - 6.0, 14.0)}, ball=(HL - 10.5, 0.0))
-    decision = decide_on_ball(MODEL, view, P)
+    decision = decide_on_ball(CTX, view, P)
     assert decision.action == OnBallAction.SHOOT
     assert decision.kick[0] > 0.0 and decision.dash is None
 
@@ -21,7 +22,7 @@ def test_open_goal_in_range_is_shot() -> None:
 def test_pressed_in_midfield_with_a_free_team_mate_passes() -> None:
     view = make_view(own={P: (0.0, 0.0), 10: (15.0, 5.0)}, opp={0: (HL - 1.0, 0.0), 3: (1.8, 0.8)},
                      ball=(0.6, 0.0))
-    decision = decide_on_ball(MODEL, view, P)
+    decision = decide_on_ball(CTX, view, P)
     assert decision.pressure <= 3
     assert decision.action == OnBallAction.PASS and decision.plan.receiver == 10
 
@@ -30,7 +31,7 @@ def test_alone_in_space_dribbles_forward() -> None:
     own = {i: (-45.0, -30.0 + 6.0 * i) for i in range(11)}  # team-mates all far behind
     own[P] = (0.0, 0.0)
     view = make_view(own=own, opp={0: (HL - 1.0, 0.0)}, ball=(0.6, 0.0))
-    decision = decide_on_ball(MODEL, view, P)
+    decision = decide_on_ball(CTX, view, P)
     assert decision.action == OnBallAction.DRIBBLE
     assert decision.dash is not None and decision.plan.direction[0] > 0.9
 
@@ -43,7 +44,7 @@ def test_pressed_in_our_third_without_a_pass_clears() -> None:
             own[i] = (-30.0 + 4.0 * i, -25.0 + 5.0 * i)
             opp[i if i > 2 else i + 8] = (own[i][0] + 0.6, own[i][1] + 0.4)  # everyone marked
     view = make_view(own=own, opp=opp, ball=(-39.5, 0.0))
-    decision = decide_on_ball(MODEL, view, P)
+    decision = decide_on_ball(CTX, view, P)
     assert decision.action == OnBallAction.CLEAR
     assert decision.kick[0] > 0.0
     speed = np.linalg.norm(decision.plan.ball_vel)
@@ -54,6 +55,6 @@ def test_goalkeeper_on_the_ball_never_dribbles() -> None:
     own = {i: (-45.0, -30.0 + 6.0 * i) for i in range(11)}
     own[0] = (-HL + 5.0, 0.0)
     view = make_view(own=own, opp={0: (HL - 1.0, 0.0)}, ball=(-HL + 5.6, 0.0))
-    decision = decide_on_ball(MODEL, view, 0)
+    decision = decide_on_ball(CTX, view, 0)
     assert decision.action in (OnBallAction.PASS, OnBallAction.CLEAR)
     assert decision.kick[0] > 0.0

@@ -5,40 +5,41 @@ from __future__ import annotations
 
 import numpy as np
 
-from agents.skills import MotionModel, dribble, dribble_directions
+from agents.skills import MotionModel, SkillContext, dribble, dribble_directions
 from tests.agents.skills.skill_views import N, ScriptedTeam, far_positions, make_view, play_on_match, quiet_config
 
 CONFIG = quiet_config(max_cycles=400)
-MODEL = MotionModel(CONFIG)
+MODEL = MotionModel.even_sides(CONFIG)
+CTX = SkillContext(MODEL)
 DRIBBLER = 9
 
 
 def test_free_dribbler_heads_for_goal() -> None:
     view = make_view(own={DRIBBLER: (0.0, 0.0)}, ball=(0.7, 0.0))
-    plan = dribble(MODEL, view, DRIBBLER)
+    plan = dribble(CTX, view, DRIBBLER)
     assert plan.direction[0] > 0.99
     assert plan.clearance > 5.0
 
 
 def test_opponent_ahead_turns_the_dribble_aside() -> None:
     view = make_view(own={DRIBBLER: (0.0, 0.0)}, opp={4: (6.0, 0.0)}, ball=(0.7, 0.0))
-    plan = dribble(MODEL, view, DRIBBLER)
+    plan = dribble(CTX, view, DRIBBLER)
     assert abs(plan.direction[1]) > 0.5  # away from the straight line through the opponent
-    dirs, clearance, _ = dribble_directions(MODEL, view, DRIBBLER)
+    dirs, clearance, _ = dribble_directions(CTX, view, DRIBBLER)
     straight = int(np.argmax(dirs[:, 0]))
     assert clearance[straight] < 0.0 < plan.clearance
 
 
 def test_directions_leaving_the_field_are_excluded() -> None:
     view = make_view(own={DRIBBLER: (20.0, CONFIG.field.half_width - 1.5)}, ball=(20.5, CONFIG.field.half_width - 1.5))
-    plan = dribble(MODEL, view, DRIBBLER)
+    plan = dribble(CTX, view, DRIBBLER)
     assert plan.direction[1] <= 0.3
 
 
 def test_dribble_keeps_the_ball_in_reach_in_the_simulator() -> None:
     def script(view):
         dash, kick = np.zeros((N, 2)), np.zeros((N, 2))
-        plan = dribble(MODEL, view, DRIBBLER)
+        plan = dribble(CTX, view, DRIBBLER)
         dash[DRIBBLER], kick[DRIBBLER] = plan.dash, plan.kick
         return dash, kick, False
 

@@ -13,7 +13,9 @@ from agents.skills import (
     GoalieParams,
     MotionModel,
     PassParams,
+    Players,
     ShotParams,
+    SkillContext,
     SkillInputError,
     dash_to_points,
     dribble,
@@ -23,18 +25,32 @@ from agents.skills import (
     intercept_many,
     kick_for_velocity,
 )
+from agents.errors import AgentsError
 from agents.skills.passing import best_pass
 from tests.agents.skills.skill_views import CONFIG, make_view
 
-MODEL = MotionModel(CONFIG)
+MODEL = MotionModel.even_sides(CONFIG)
+CTX = SkillContext(MODEL)
 POS = np.zeros((3, 2))
 
 
-def test_model_needs_a_config_and_a_horizon() -> None:
+def test_skill_errors_sit_under_the_agents_root_and_stay_value_errors() -> None:
+    assert issubclass(SkillInputError, AgentsError) and issubclass(SkillInputError, ValueError)
+
+
+def test_model_needs_a_config_a_horizon_and_both_sides() -> None:
     with pytest.raises(SkillInputError, match="MatchConfig"):
-        MotionModel({"field": 1})
+        MotionModel.even_sides({"field": 1})
     with pytest.raises(SkillInputError, match="horizon"):
-        MotionModel(CONFIG, horizon=0)
+        MotionModel.even_sides(CONFIG, horizon=0)
+    with pytest.raises(SkillInputError, match="opponents"):
+        MotionModel(CONFIG, players=11, goalie=0, opponents=-1, opponent_goalie=-1)
+    with pytest.raises(SkillInputError, match="opponent_goalie"):
+        MotionModel(CONFIG, players=11, goalie=0, opponents=5, opponent_goalie=5)
+    with pytest.raises(TypeError):
+        MotionModel(CONFIG)  # the sides are never guessed
+    with pytest.raises(SkillInputError, match="MotionModel"):
+        SkillContext(CONFIG)
 
 
 @pytest.mark.parametrize("kwargs, name", [
@@ -42,35 +58,49 @@ def test_model_needs_a_config_and_a_horizon() -> None:
     ({"vel": np.zeros((2, 2))}, "vel"),
     ({"effort": np.ones(4)}, "effort"),
     ({"radius": np.ones(2)}, "radius"),
-    ({"ball": np.zeros(3)}, "ball"),
-    ({"ball_vel": "fast"}, "ball_vel"),
 ])
-def test_intercept_names_the_bad_argument(kwargs, name) -> None:
-    args = {"ball": np.zeros(2), "ball_vel": np.zeros(2), "pos": POS, "vel": np.zeros((3, 2))}
+def test_players_name_the_bad_argument(kwargs, name) -> None:
+    args = {"pos": POS, "vel": np.zeros((3, 2))}
     args.update(kwargs)
     with pytest.raises(SkillInputError, match=name):
-        intercept(MODEL, **args)
+        Players(MODEL, **args)
+
+
+@pytest.mark.parametrize("kwargs, name", [
+    ({"ball": np.zeros(3)}, "ball"),
+    ({"ball_vel": "fast"}, "ball_vel"),
+    ({"ball_vel": np.zeros((2, 2))}, "ball_vel"),
+    ({"players": (POS, POS)}, "players"),
+])
+def test_intercept_names_the_bad_argument(kwargs, name) -> None:
+    args = {"ball": np.zeros(2), "ball_vel": np.zeros(2), "players": Players(MODEL, POS, np.zeros((3, 2)))}
+    args.update(kwargs)
+    with pytest.raises(SkillInputError, match=name):
+        intercept(CTX, **args)
 
 
 def test_intercept_many_checks_limits_and_players() -> None:
     balls = np.zeros((2, 2))
+    players = Players(MODEL, POS, POS)
     with pytest.raises(SkillInputError, match="limit"):
-        intercept_many(MODEL, balls, balls, POS, POS, limit=np.ones(3, dtype=int))
+        intercept_many(CTX, balls, balls, players, limit=np.ones(3, dtype=int))
     with pytest.raises(SkillInputError, match="only"):
-        intercept_many(MODEL, balls, balls, POS, POS, only=np.array([0, 5]))
+        intercept_many(CTX, balls, balls, players, only=np.array([0, 5]))
     with pytest.raises(SkillInputError, match="match ball_vel"):
-        intercept_many(MODEL, balls, np.zeros((3, 2)), POS, POS)
+        intercept_many(CTX, balls, np.zeros((3, 2)), players)
     with pytest.raises(SkillInputError, match="reaction"):
-        intercept_many(MODEL, balls, balls, POS, POS, reaction=-1)
+        intercept_many(CTX, balls, balls, players, reaction=-1)
 
 
 def test_dash_and_kick_name_the_bad_argument() -> None:
     with pytest.raises(SkillInputError, match="targets"):
-        dash_to_points(MODEL, POS, POS, np.zeros((2, 2)))
+        dash_to_points(MODEL, Players(MODEL, POS, POS), np.zeros((2, 2)))
     with pytest.raises(SkillInputError, match="speed_cap"):
-        dash_to_points(MODEL, POS, POS, POS, speed_cap=np.ones(2))
+        dash_to_points(MODEL, Players(MODEL, POS, POS), POS, speed_cap=np.ones(2))
     with pytest.raises(SkillInputError, match="out"):
-        dash_to_points(MODEL, POS, POS, POS, out=np.zeros((3, 2), dtype=np.float32))
+        dash_to_points(MODEL, Players(MODEL, POS, POS), POS, out=np.zeros((3, 2), dtype=np.float32))
+    with pytest.raises(SkillInputError, match="players"):
+        dash_to_points(MODEL, POS, POS)
     with pytest.raises(SkillInputError, match="desired"):
         kick_for_velocity(MODEL, np.zeros(2), np.zeros(2), np.zeros(2), np.zeros(3))
     with pytest.raises(SkillInputError, match="ball_vel"):
@@ -82,11 +112,11 @@ def test_dash_and_kick_name_the_bad_argument() -> None:
 def test_player_indices_are_checked() -> None:
     view = make_view()
     with pytest.raises(SkillInputError, match="passer index 11"):
-        best_pass(MODEL, view, 11)
+        best_pass(CTX, view, 11)
     with pytest.raises(SkillInputError, match="player must be an integer"):
-        dribble(MODEL, view, 2.0)
+        dribble(CTX, view, 2.0)
     with pytest.raises(SkillInputError, match="shooter index -1"):
-        best_shot(MODEL, view, -1)
+        best_shot(CTX, view, -1)
 
 
 @pytest.mark.parametrize("make, message", [

@@ -6,11 +6,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from agents.skills import MotionModel, distribute, guard_position, should_catch
+from agents.skills import MotionModel, SkillContext, distribute, guard_position, should_catch
 from soccer_sim.state import PlayMode
 from tests.agents.skills.skill_views import CONFIG, HL, make_view
 
-MODEL = MotionModel(CONFIG)
+MODEL = MotionModel.even_sides(CONFIG)
+CTX = SkillContext(MODEL)
 FIELD = CONFIG.field
 GOAL = np.array([-HL, 0.0])
 
@@ -45,13 +46,13 @@ def keeper_view(keeper, ball, **kw):
 
 def test_catch_requested_only_when_the_referee_would_grant_it() -> None:
     keeper = (-HL + 3.0, 0.0)
-    assert should_catch(MODEL, keeper_view(keeper, (-HL + 3.8, 0.5)))
-    assert not should_catch(MODEL, keeper_view(keeper, (-HL + 4.3, 0.5)))  # 1.39 m: beyond the catch length
-    assert not should_catch(MODEL, keeper_view(keeper, (-HL + 3.8, 0.5)), teammate_kicked_last=True)
-    assert not should_catch(MODEL, keeper_view(keeper, (-HL + 3.8, 0.5), play_mode=PlayMode.GOAL_KICK))
-    assert not should_catch(MODEL, keeper_view(keeper, (-HL + 3.8, 0.5), ball_holder=0))
+    assert should_catch(CTX, keeper_view(keeper, (-HL + 3.8, 0.5)))
+    assert not should_catch(CTX, keeper_view(keeper, (-HL + 4.3, 0.5)))  # 1.39 m: beyond the catch length
+    assert not should_catch(CTX, keeper_view(keeper, (-HL + 3.8, 0.5)), teammate_kicked_last=True)
+    assert not should_catch(CTX, keeper_view(keeper, (-HL + 3.8, 0.5), play_mode=PlayMode.GOAL_KICK))
+    assert not should_catch(CTX, keeper_view(keeper, (-HL + 3.8, 0.5), ball_holder=0))
     edge = -HL + FIELD.penalty_area_length
-    assert not should_catch(MODEL, keeper_view((edge - 0.3, 0.0), (edge + 0.5, 0.0)))  # ball outside the area
+    assert not should_catch(CTX, keeper_view((edge - 0.3, 0.0), (edge + 0.5, 0.0)))  # ball outside the area
 
 
 def test_holding_goalkeeper_plays_the_ball_away_from_goal() -> None:
@@ -59,7 +60,7 @@ def test_holding_goalkeeper_plays_the_ball_away_from_goal() -> None:
     # Opponents crowd the middle; a team-mate waits free on the left wing.
     opp = {i: (-30.0 + 2.0 * i, -3.0 + 0.6 * i) for i in range(1, 11)}
     view = keeper_view(keeper, keeper, ball_holder=0, play_mode=PlayMode.GOALIE_HOLDS, opp=opp)
-    result = distribute(MODEL, view)
+    result = distribute(CTX, view)
     assert result.kind in ("pass", "clear")
     assert result.kick[0] > 0.0 and np.linalg.norm(result.kick) <= CONFIG.physics.kick_speed_max + 1e-9
     if result.kind == "clear":
@@ -76,7 +77,7 @@ def test_with_every_team_mate_marked_the_goalkeeper_clears_to_a_wing() -> None:
         opp[i] = (own[i][0] + 0.7, own[i][1] + 0.3)  # a marker beside every team-mate
     opp[0] = (HL - 1.0, 0.0)
     view = make_view(own=own, opp=opp, ball=keeper, ball_holder=0, play_mode=PlayMode.GOALIE_HOLDS)
-    result = distribute(MODEL, view)
+    result = distribute(CTX, view)
     assert result.kind == "clear"
     assert result.plan.direction[0] > 0.0 and abs(result.plan.direction[1]) > 0.3
     # A holder kicks at full strength: the ball leaves at the speed limit.

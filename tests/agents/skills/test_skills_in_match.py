@@ -6,12 +6,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from agents.skills import MotionModel, ball_race, best_pass, best_shot, dash_to_points
+from agents.skills import MotionModel, Players, SkillContext, ball_race, best_pass, best_shot, dash_to_points
 from soccer_sim.state import EventKind
 from tests.agents.skills.skill_views import HL, N, ScriptedTeam, far_positions, play_on_match, quiet_config
 
 CONFIG = quiet_config(max_cycles=400)
-MODEL = MotionModel(CONFIG)
+MODEL = MotionModel.even_sides(CONFIG)
+CTX = SkillContext(MODEL)
 KICKABLE = CONFIG.physics.kickable_distance
 
 
@@ -19,15 +20,16 @@ def test_the_predicted_first_player_reaches_the_rolling_ball_on_time() -> None:
     predictions: list[tuple[int, int, np.ndarray]] = []
 
     def script(view):
-        race = ball_race(MODEL, view)
+        race = ball_race(CTX, view)
         if not predictions:
             predictions.append((race.ours.first, race.ours.first_cycle, race.ours.points[race.ours.first].copy()))
         targets = view.own_pos.copy()  # everyone else stays put
         first = race.ours.first
         targets[first] = race.ours.points[first]
         dash = np.zeros((N, 2))
-        dash[first] = dash_to_points(MODEL, view.own_pos[first:first + 1], view.own_vel[first:first + 1],
-                                     targets[first:first + 1], view.effort[first:first + 1])[0]
+        runner = Players(MODEL, view.own_pos[first:first + 1], view.own_vel[first:first + 1],
+                         view.effort[first:first + 1])
+        dash[first] = dash_to_points(MODEL, runner, targets[first:first + 1])[0]
         return dash, np.zeros((N, 2)), False
 
     home = ScriptedTeam(script)
@@ -54,7 +56,7 @@ def test_the_chosen_shot_scores() -> None:
     def script(view):
         kick = np.zeros((N, 2))
         if np.linalg.norm(view.ball - view.own_pos[shooter]) <= KICKABLE:
-            kick[shooter] = best_shot(MODEL, view, shooter).kick
+            kick[shooter] = best_shot(CTX, view, shooter).kick
         return np.zeros((N, 2)), kick, False
 
     own = far_positions(-1.0)
@@ -76,13 +78,12 @@ def test_the_chosen_pass_reaches_the_receiver() -> None:
     def script(view):
         kick, dash = np.zeros((N, 2)), np.zeros((N, 2))
         if not plans:
-            plans.append(best_pass(MODEL, view, passer))
+            plans.append(best_pass(CTX, view, passer))
             kick[passer] = plans[0].kick
         else:
-            race = ball_race(MODEL, view)
-            dash[receiver:receiver + 1] = dash_to_points(MODEL, view.own_pos[receiver:receiver + 1],
-                                                         view.own_vel[receiver:receiver + 1],
-                                                         race.ours.points[receiver:receiver + 1])
+            race = ball_race(CTX, view)
+            runner = Players(MODEL, view.own_pos[receiver:receiver + 1], view.own_vel[receiver:receiver + 1])
+            dash[receiver:receiver + 1] = dash_to_points(MODEL, runner, race.ours.points[receiver:receiver + 1])
             if np.linalg.norm(view.ball - view.own_pos[receiver]) <= KICKABLE:
                 kick[receiver] = -view.ball_vel  # stop it
         return dash, kick, False

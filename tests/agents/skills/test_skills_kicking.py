@@ -8,12 +8,13 @@ import math
 import numpy as np
 import pytest
 
-from agents.skills import MotionModel, kick_effectiveness, kick_for_velocity, kickable
+from agents.skills import MotionModel, SkillContext, kick_effectiveness, kick_for_velocity, kickable
 from soccer_sim.kinematics import Kinematics
 from tests.agents.skills.skill_views import N, quiet_config
 
 CONFIG = quiet_config()
-MODEL = MotionModel(CONFIG)
+MODEL = MotionModel.even_sides(CONFIG)
+CTX = SkillContext(MODEL)
 PHYS = CONFIG.physics
 
 

@@ -7,12 +7,13 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from agents.skills import MotionModel
+from agents.skills import MotionModel, SkillContext
 from soccer_sim import MatchConfig
 from soccer_sim.config import FieldConfig, PhysicsConfig
 from tests.agents.skills.skill_views import CONFIG, HL, ball_at
 
-MODEL = MotionModel(CONFIG)
+MODEL = MotionModel.even_sides(CONFIG)
+CTX = SkillContext(MODEL)
 
 
 def test_ball_path_and_travel_follow_the_decay() -> None:
@@ -34,7 +35,7 @@ def test_ball_speed_and_cycles_are_inverse() -> None:
 def test_every_number_comes_from_the_config() -> None:
     physics = replace(PhysicsConfig(), dash_power_rate=0.004, player_decay=0.5, ball_decay=0.9)
     field = replace(FieldConfig(), length=90.0, goal_width=10.0)
-    model = MotionModel(replace(MatchConfig(), physics=physics, field=field))
+    model = MotionModel.even_sides(replace(MatchConfig(), physics=physics, field=field))
     assert model.accel_max == pytest.approx(0.4)
     assert model.top_speed == pytest.approx(0.8)
     assert model.reach[1:3] == pytest.approx([0.4, 0.4 + 0.6])

@@ -7,11 +7,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from agents.skills import MotionModel, dash_to_points, speed_caps
+from agents.skills import MotionModel, Players, SkillContext, SkillInputError, dash_to_points, paced_dashes, speed_caps
 from soccer_sim.kinematics import Kinematics
 from tests.agents.skills.skill_views import CONFIG, N, make_view
 
-MODEL = MotionModel(CONFIG)
+MODEL = MotionModel.even_sides(CONFIG)
+CTX = SkillContext(MODEL)
 ROWS = 2 * N
 
 
@@ -30,7 +31,7 @@ def simulate(pos, vel, targets, cycles, speed_cap=None, effort=None, stamina_sha
     path, speeds = [pos.copy()], []
     for _ in range(cycles):
         dash = np.zeros((ROWS, 2))
-        dash[:n] = dash_to_points(MODEL, pos, all_vel[:n], targets, eff[:n], speed_cap)
+        dash[:n] = dash_to_points(MODEL, Players(MODEL, pos, all_vel[:n], eff[:n]), targets, speed_cap)
         kin.dash(all_vel, stamina, eff, recovery, capacity, dash, noise)
         speeds.append(np.hypot(all_vel[:n, 0], all_vel[:n, 1]))
         pos += all_vel[:n]
@@ -86,20 +87,38 @@ def test_speed_caps_sprint_only_when_urgent_and_fresh() -> None:
     view = make_view(stamina=stamina)
     urgent = np.zeros(N, dtype=bool)
     urgent[[2, 3]] = True
-    caps = speed_caps(MODEL, view, urgent)
+    caps = speed_caps(CTX, view, urgent)
     assert caps[2] == pytest.approx(MODEL.top_speed)
     assert caps[3] == pytest.approx(MODEL.sustainable_speed(1.0))
     assert caps[0] == pytest.approx(MODEL.sustainable_speed(1.0))
 
 
 def test_standing_on_the_target_costs_nothing() -> None:
-    out = dash_to_points(MODEL, np.array([[1.0, 1.0]]), np.zeros((1, 2)), np.array([[1.01, 1.0]]))
+    out = dash_to_points(MODEL, Players(MODEL, np.array([[1.0, 1.0]]), np.zeros((1, 2))), np.array([[1.01, 1.0]]))
     assert np.all(out == 0.0)
 
 
 def test_players_near_the_ball_may_sprint() -> None:
     own = {4: (3.0, 4.0), 5: (30.0, 0.0)}
     view = make_view(own=own, ball=(0.0, 0.0))
-    caps = speed_caps(MODEL, view, near=10.0)
+    caps = speed_caps(CTX, view, near=10.0)
     assert caps[4] == pytest.approx(MODEL.top_speed)
     assert caps[5] == pytest.approx(MODEL.sustainable_speed(1.0))
+
+
+def test_paced_dashes_are_the_caps_and_the_dashes_in_one_pass() -> None:
+    rng = np.random.default_rng(5)
+    stamina = np.full(N, CONFIG.stamina.maximum)
+    stamina[[1, 6]] = 0.2 * CONFIG.stamina.maximum
+    view = make_view(own=rng.uniform(-40, 40, (N, 2)), own_vel=rng.uniform(-0.5, 0.5, (N, 2)),
+                     effort=rng.uniform(0.6, 1.0, N), stamina=stamina, ball=(5.0, 5.0))
+    targets = rng.uniform(-40, 40, (N, 2))
+    urgent = rng.uniform(size=N) < 0.5
+    for near in (None, 20.0):
+        caps = speed_caps(CTX, view, urgent, near=near)
+        two_steps = dash_to_points(MODEL, CTX.arrays(view).ours, targets, caps)
+        out = np.empty((N, 2))
+        assert paced_dashes(CTX, view, targets, urgent, out, near=near) is out
+        np.testing.assert_array_equal(out, two_steps)
+    with pytest.raises(SkillInputError, match="urgent"):
+        paced_dashes(CTX, view, targets, np.ones(3, dtype=bool))

@@ -6,11 +6,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from agents.skills import MotionModel, best_pass, lane_open, offside_positions, pass_candidates
+from agents.skills import MotionModel, SkillContext, best_pass, lane_open, offside_positions, pass_candidates
 from agents.skills.passing import PassParams
 from tests.agents.skills.skill_views import CONFIG, N, ball_at, make_view
 
-MODEL = MotionModel(CONFIG)
+MODEL = MotionModel.even_sides(CONFIG)
+CTX = SkillContext(MODEL)
 PASSER, RECEIVER = 9, 10
 
 
@@ -43,8 +44,8 @@ def direct_velocity(target, ball=(0.6, 0.0), arrival=0.8) -> np.ndarray:
 
 def test_open_lane_is_accepted_and_the_pass_chosen() -> None:
     view = make_view(own=own_rows(), opp=opp_rows(), ball=(0.6, 0.0))
-    assert lane_open(MODEL, view, view.ball, direct_velocity((15.0, 0.0)), RECEIVER)
-    plan = best_pass(MODEL, view, PASSER, PassParams(arrival_speeds=(0.8,)))
+    assert lane_open(CTX, view, view.ball, direct_velocity((15.0, 0.0)), RECEIVER)
+    plan = best_pass(CTX, view, PASSER, PassParams(arrival_speeds=(0.8,)))
     assert plan is not None and plan.receiver == RECEIVER
     # The ball, rolled with the model, reaches the target at the planned cycle, at about the
     # planned arrival speed (0.8 m/cycle), and the receiver is there well before any opponent.
@@ -60,14 +61,14 @@ def test_open_lane_is_accepted_and_the_pass_chosen() -> None:
 
 def test_lane_blocked_by_an_opponent_is_rejected() -> None:
     view = make_view(own=own_rows(), opp=opp_rows({5: (7.5, 0.3)}), ball=(0.6, 0.0))
-    assert not lane_open(MODEL, view, view.ball, direct_velocity((15.0, 0.0)), RECEIVER)
-    plan = best_pass(MODEL, view, PASSER)
+    assert not lane_open(CTX, view, view.ball, direct_velocity((15.0, 0.0)), RECEIVER)
+    plan = best_pass(CTX, view, PASSER)
     assert plan is None or plan.receiver != RECEIVER
 
 
 def test_lead_pass_goes_in_front_of_a_free_receiver() -> None:
     view = make_view(own=own_rows(), opp=opp_rows(), ball=(0.6, 0.0))
-    plan = best_pass(MODEL, view, PASSER)
+    plan = best_pass(CTX, view, PASSER)
     assert plan.receiver == RECEIVER and plan.target[0] > 15.0  # ahead of the receiver's feet
     assert plan.receive_point[0] > 15.0
     assert plan.receive_cycle <= plan.arrival_cycle + PassParams().extra_cycles
@@ -75,7 +76,7 @@ def test_lead_pass_goes_in_front_of_a_free_receiver() -> None:
 
 def test_a_marker_in_front_of_the_receiver_blocks_the_lead_pass() -> None:
     view = make_view(own=own_rows(), opp=opp_rows({5: (19.0, 0.0)}), ball=(0.6, 0.0))
-    plan = best_pass(MODEL, view, PASSER)
+    plan = best_pass(CTX, view, PASSER)
     assert plan is not None and plan.receiver == RECEIVER
     assert np.linalg.norm(plan.receive_point - (19.0, 0.0)) > 3.0
     assert plan.opponent_cycle - plan.receive_cycle >= PassParams().min_lead
@@ -88,9 +89,9 @@ def test_offside_receivers_are_not_candidates() -> None:
     view = make_view(own=own_rows({RECEIVER: (30.0, 0.0)}), opp=opp, ball=(0.6, 0.0))
     offside = offside_positions(MODEL, view.own_pos, view.opp_pos, view.ball)
     assert offside[RECEIVER] and offside.sum() == 1
-    assert RECEIVER not in pass_candidates(MODEL, view, PASSER).tolist()
-    assert PASSER not in pass_candidates(MODEL, view, PASSER).tolist()
-    assert 0 not in pass_candidates(MODEL, view, PASSER).tolist()  # the goalkeeper, by default
+    assert RECEIVER not in pass_candidates(CTX, view, PASSER).tolist()
+    assert PASSER not in pass_candidates(CTX, view, PASSER).tolist()
+    assert 0 not in pass_candidates(CTX, view, PASSER).tolist()  # the goalkeeper, by default
 
 
 def test_no_pass_when_every_team_mate_is_marked() -> None:
@@ -102,4 +103,4 @@ def test_no_pass_when_every_team_mate_is_marked() -> None:
             opp[i] = (x + 0.8, y)  # a marker beside every team-mate
     opp[PASSER] = (40.0, 30.0)
     view = make_view(own=own, opp=opp, ball=(0.6, 0.0))
-    assert best_pass(MODEL, view, PASSER) is None
+    assert best_pass(CTX, view, PASSER) is None

@@ -23,34 +23,35 @@ class SkillsOnlyTeam:
 
     def reset(self, side_info, config, rng) -> None:
         self.n, self.goalie = side_info.players_per_team, side_info.goalie_index
-        self.model = skills.MotionModel(config)
+        self.skills = skills.SkillContext.for_match(config, side_info)
+        self.model = self.skills.model
         self.command = TeamCommand(dash=np.zeros((self.n, 2)), kick=np.zeros((self.n, 2)))
         self.actions: dict[str, int] = {}
 
     def act(self, view) -> TeamCommand:
-        model, command, goalie = self.model, self.command, self.goalie
+        ctx, model, command, goalie = self.skills, self.model, self.command, self.goalie
         command.kick[:] = 0.0
         command.catch = False
         targets = self.SLOTS + (0.5 * view.ball[0], 0.2 * view.ball[1])
         targets[goalie] = skills.guard_position(model, view.ball)
-        race = skills.ball_race(model, view)
+        race = skills.ball_race(ctx, view)
         first = race.ours.first
         may_play = view.play_mode == PlayMode.PLAY_ON or view.mode_ours
         if may_play and first >= 0 and first != goalie:
             targets[first] = race.ours.points[first]
         urgent = np.arange(self.n) == first
-        skills.dash_to_points(model, view.own_pos, view.own_vel, targets, view.effort,
-                              skills.speed_caps(model, view, urgent), out=command.dash)
+        skills.dash_to_points(model, ctx.arrays(view).ours, targets, skills.speed_caps(ctx, view, urgent),
+                              out=command.dash)
         if view.ball_holder == goalie:
-            command.kick[goalie] = skills.distribute(model, view).kick
+            command.kick[goalie] = skills.distribute(ctx, view).kick
             return command
         kickers = np.flatnonzero(skills.kickable(model, view.own_pos, view.ball))
         if may_play and kickers.size:
             player = int(kickers[0])
-            if player == goalie and skills.should_catch(model, view):
+            if player == goalie and skills.should_catch(ctx, view):
                 command.catch = True
             else:
-                decision = skills.decide_on_ball(model, view, player)
+                decision = skills.decide_on_ball(ctx, view, player)
                 self.actions[decision.action.value] = self.actions.get(decision.action.value, 0) + 1
                 command.kick[player] = decision.kick
                 if decision.dash is not None:

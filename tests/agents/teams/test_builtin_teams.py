@@ -11,6 +11,7 @@ from agents.teams import FormationTeam, TeamStyle, builtin
 from soccer_sim import MatchConfig, PlayMode, SideInfo
 from soccer_sim.registry import available_teams, resolve_team
 from soccer_sim.team import TeamView
+from soccer_sim.team_hooks import Drawable, Drawing, ReportsStatistics
 
 CONFIG = MatchConfig()
 NAMES = [*builtin.ASSIGNER_VARIANTS, "statues", "counter-442", "press-433", "possession"]
@@ -138,9 +139,20 @@ def test_reported_statistics_and_drawing() -> None:
     assert reported["target_distance_max"] >= reported["target_distance_mean"] > 0.0
     assert 0.0 <= reported["role_unfilled_share"] <= 1.0
     drawing = team.drawing()
-    assert drawing["targets"].shape == (11, 2) and drawing["goals"].shape == (11, 2)
-    assert sorted(drawing["role_of_player"].tolist()) == list(range(10))
-    assert drawing["formation_triangles"].shape[1] == 3
+    assert isinstance(team, Drawable) and isinstance(team, ReportsStatistics) and isinstance(drawing, Drawing)
+    assert drawing.targets.shape == (11, 2) and drawing.goals.shape == (11, 2)
+    assert sorted(drawing.role_of_player.tolist()) == list(range(10))
+    np.testing.assert_array_equal(drawing.outfield, np.arange(1, 11))
+    np.testing.assert_array_equal(drawing.assigned_targets, drawing.targets[1:][drawing.role_of_player])
+    assert drawing.formation_triangles.shape[1] == 3
+    assert drawing.formation_triangles.max() < len(drawing.formation_balls)
+
+
+def test_drawing_before_the_first_assignment_has_no_roles() -> None:
+    drawing = ready(FormationTeam("greedy")).drawing()
+    assert isinstance(drawing, Drawing)
+    assert drawing.role_of_player is None and drawing.assigned_targets is None
+    assert drawing.targets.shape == (11, 2) and drawing.outfield.tolist() == list(range(1, 11))
 
 
 def test_a_team_is_deterministic_for_a_seed() -> None:

@@ -93,7 +93,8 @@ def test_our_goalkeeper_leaves_the_goal_kick_spot_for_the_goal_centre() -> None:
 
 
 def test_a_goal_kick_goes_where_nobody_can_play_it_inside_the_area() -> None:
-    model = skills.MotionModel(CONFIG, players=11, goalie=0)
+    model = skills.MotionModel(CONFIG, players=11, goalie=0, opponents=11, opponent_goalie=0)
+    ctx = skills.SkillContext(model)
     own = goal_kick_line_up()
     # Team-mates and opponents (just outside the area) in front of the spot and on the way to the wing.
     own[5] = SPOT + (6.0, 0.0)
@@ -101,7 +102,7 @@ def test_a_goal_kick_goes_where_nobody_can_play_it_inside_the_area() -> None:
     opp = their_half()
     opp[1] = (-HL + CONFIG.field.penalty_area_length + 0.5, 14.0)
     v = view(own, opp, SPOT, PlayMode.GOAL_KICK)
-    plan = skills.goal_kick_clearance(model, v, 3)
+    plan = skills.goal_kick_clearance(ctx, v, 3)
     path = model.ball_path(SPOT, plan.ball_vel, 30)
     inside = model.in_penalty_area(path)
     assert not inside.all()
@@ -111,7 +112,7 @@ def test_a_goal_kick_goes_where_nobody_can_play_it_inside_the_area() -> None:
         gaps = np.hypot(*(others - path[k]).T)
         assert gaps.min() > KICKABLE + model.reach[k], k
     # The plain clearance, which likes a team-mate getting there first, plays it to one of them.
-    plain = skills.best_clearance(model, v, 3)
+    plain = skills.best_clearance(ctx, v, 3)
     assert plain.teammate_cycle < plain.opponent_cycle
 
 

@@ -1,0 +1,292 @@
+"""The compiled kernels of the ball skills: kicks (:mod:`agents.skills.kicking`), ball lanes
+(:mod:`agents.skills.lanes`), the offside line and the pass search
+(:mod:`agents.skills.passing`). Constants come as named scalar arguments."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from agents.skills.interception_kernels import UNREACHABLE
+
+LEAD_CAP = 10
+"""Cycles of lead over the opponents beyond which a pass scores no better (the score's lead
+term is ``min(lead, LEAD_CAP) / LEAD_CAP``)."""
+
+
+@njit(cache=True, nogil=True)
+def distance_effect(rnorm: float, distance_penalty: float, kickable_margin: float,
+                    touch: float) -> float:  # pragma: no cover - compiled
+    """Effectiveness left after the distance penalty, for a ball ``rnorm`` from the kicker's centre."""
+    return 1.0 - distance_penalty * min(1.0, max(0.0, rnorm - touch) / kickable_margin)
+
+
+@njit(cache=True, nogil=True)
+def effect(rx: float, ry: float, rnorm: float, base: float, angle_penalty: float, kx: float, ky: float,
+           holder: bool) -> float:  # pragma: no cover - compiled
+    """Effectiveness of a kick (``kx``, ``ky``): ``base`` (after the distance penalty) less the
+    angle penalty for the angle between the kick and the ball's direction (``rx``, ``ry``)
+    from the kicker; 1 for a goalkeeper holding the ball."""
+    if holder:
+        return 1.0
+    knorm = math.sqrt(kx * kx + ky * ky)
+    if knorm <= 1e-12 or rnorm <= 1e-12:
+        return base
+    cos = max(-1.0, min(1.0, (rx * kx + ry * ky) / (rnorm * knorm)))
+    return base - angle_penalty * math.acos(cos) / math.pi
+
+
+@njit(cache=True, nogil=True)
+def effect_kernel(player: np.ndarray, ball: np.ndarray, kicks: np.ndarray, out: np.ndarray, distance_penalty: float,
+                  angle_penalty: float, kickable_margin: float, touch: float) -> None:  # pragma: no cover - compiled
+    """The effectiveness of each of ``kicks`` by a player at ``player`` on the ball at ``ball``."""
+    rx, ry = ball[0] - player[0], ball[1] - player[1]
+    rnorm = math.sqrt(rx * rx + ry * ry)
+    base = distance_effect(rnorm, distance_penalty, kickable_margin, touch)
+    for j in range(kicks.shape[0]):
+        out[j] = effect(rx, ry, rnorm, base, angle_penalty, kicks[j, 0], kicks[j, 1], False)
+
+
+@njit(cache=True, nogil=True)
+def largest_speed(ux: float, uy: float, vx: float, vy: float, low: float, high: float, kick_max: float, rx: float,
+                  ry: float, rnorm: float, base: float, angle_penalty: float,
+                  holder: bool) -> float:  # pragma: no cover - compiled
+    """The largest speed s in [low, high] along the unit vector u such that the change
+    ``s u - v`` fits in one kick (``low`` does, ``high`` does not).
+
+    For a fixed effectiveness e the boundary solves ``|s u - v| = kick_max e``, a quadratic
+    in s; e depends on the change's direction only, which moves little with s, so a few
+    rounds of "solve, re-evaluate e" land on the boundary. The result is checked and, if it
+    is not feasible, bisection between ``low`` and it settles the matter.
+    """
+    along = ux * vx + uy * vy
+    rest = vx * vx + vy * vy - along * along
+    s = high
+    for _ in range(5):
+        cx, cy = s * ux - vx, s * uy - vy
+        reach = kick_max * effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder)
+        disc = reach * reach - rest
+        if disc < 0.0:
+            break
+        step = min(max(along + math.sqrt(disc), low), high)
+        done = abs(step - s) < 1e-9
+        s = step
+        if done:
+            break
+    for nudge in (0.0, 1e-8):  # the boundary is met to rounding: step just inside it
+        t = max(s - nudge, low)
+        cx, cy = t * ux - vx, t * uy - vy
+        if math.sqrt(cx * cx + cy * cy) <= kick_max * effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder):
+            return t
+    high = s
+    for _ in range(18):  # to within 2^-18 of the range (~1e-5 m/cycle)
+        mid = 0.5 * (low + high)
+        cx, cy = mid * ux - vx, mid * uy - vy
+        if math.sqrt(cx * cx + cy * cy) <= kick_max * effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder):
+            low = mid
+        else:
+            high = mid
+    return low
+
+
+@njit(cache=True, nogil=True)
+def kick_kernel(player: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, desired: np.ndarray, kick_out: np.ndarray,
+                result_out: np.ndarray, kick_max: float, ball_max: float, distance_penalty: float, angle_penalty: float,
+                kickable_margin: float, touch: float, holder: bool) -> None:  # pragma: no cover - compiled
+    """The kick request (``kick_out``) that gives the ball each ``desired`` velocity, or the
+    nearest one kick reaches, and the velocity it gets (``result_out``); see
+    :mod:`agents.skills.kicking`. ``holder``: a goalkeeper holding the ball (full
+    effectiveness)."""
+    rx, ry = ball[0] - player[0], ball[1] - player[1]
+    rnorm = math.sqrt(rx * rx + ry * ry)
+    base = distance_effect(rnorm, distance_penalty, kickable_margin, touch)
+    vx, vy = ball_vel[0], ball_vel[1]
+    for j in range(desired.shape[0]):
+        dx, dy = desired[j, 0], desired[j, 1]
+        speed = math.sqrt(dx * dx + dy * dy)
+        if speed > ball_max:
+            dx *= ball_max / speed
+            dy *= ball_max / speed
+            speed = ball_max
+        # Feasible when the change fits within kick_max times the effectiveness of its direction.
+        cx, cy = dx - vx, dy - vy
+        size = math.sqrt(cx * cx + cy * cy)
+        eff = effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder)
+        if size <= kick_max * eff + 1e-12:
+            lam = 1.0
+        else:
+            ux, uy = (dx / speed, dy / speed) if speed > 1e-12 else (0.0, 0.0)
+            closest = max(0.0, vx * ux + vy * uy)  # speed along the ray nearest the current velocity
+            cx, cy = closest * ux - vx, closest * uy - vy
+            size = math.sqrt(cx * cx + cy * cy)
+            eff = effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder)
+            if size > kick_max * eff or speed <= 1e-12:
+                # Nothing along the desired direction is reachable: full power towards it.
+                if size <= 1e-12:
+                    kick_out[j, 0] = 0.0
+                    kick_out[j, 1] = 0.0
+                    result_out[j, 0] = vx
+                    result_out[j, 1] = vy
+                    continue
+                eff = max(eff, 1e-9)
+                kick_out[j, 0] = cx / size * kick_max
+                kick_out[j, 1] = cy / size * kick_max
+                nx, ny = vx + cx / size * kick_max * eff, vy + cy / size * kick_max * eff
+                nspeed = math.sqrt(nx * nx + ny * ny)
+                if nspeed > ball_max:
+                    nx *= ball_max / nspeed
+                    ny *= ball_max / nspeed
+                result_out[j, 0] = nx
+                result_out[j, 1] = ny
+                continue
+            lam = largest_speed(ux, uy, vx, vy, closest, speed, kick_max, rx, ry, rnorm, base, angle_penalty,
+                                 holder) / speed
+        tx, ty = lam * dx, lam * dy
+        cx, cy = tx - vx, ty - vy
+        eff = max(effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder), 1e-9)
+        kick_out[j, 0] = cx / eff
+        kick_out[j, 1] = cy / eff
+        result_out[j, 0] = tx
+        result_out[j, 1] = ty
+
+
+@njit(cache=True, nogil=True)
+def lane_arrivals(targets: np.ndarray, wanted: np.ndarray, velocities: np.ndarray, ball: np.ndarray, decay: float,
+                  horizon: int, extra: int, arrival: np.ndarray, limit: np.ndarray) -> np.ndarray:  # pragma: no cover
+    """Which lanes work, and when the ball gets to the end of each (compiled).
+
+    Row i: a ball at ``ball`` meant to reach ``targets[i]`` with the velocity ``wanted[i]``
+    gets ``velocities[i]`` from the kick. Returns the rows whose kick keeps the intended line
+    (within 1 %) and brings the ball to the target within ``horizon`` cycles, and writes their
+    ``arrival`` cycle (rounded up) and search ``limit`` (arrival + ``extra``, at most the
+    horizon)."""
+    keep = np.empty(targets.shape[0], dtype=np.int64)
+    count = 0
+    for i in range(targets.shape[0]):
+        wx, wy = wanted[i, 0], wanted[i, 1]
+        norm = math.sqrt(wx * wx + wy * wy)
+        vx, vy = velocities[i, 0], velocities[i, 1]
+        speed = (vx * wx + vy * wy) / norm  # along the intended line
+        if speed <= 0.99 * math.sqrt(vx * vx + vy * vy):
+            continue
+        dist = math.sqrt((targets[i, 0] - ball[0]) ** 2 + (targets[i, 1] - ball[1]) ** 2)
+        left = 1.0 - dist * (1.0 - decay) / speed
+        if left <= 0.0:
+            continue
+        cycles = math.ceil(math.log(left) / math.log(decay) - 1e-9)
+        if cycles > horizon:
+            continue
+        arrival[i] = cycles
+        limit[i] = min(cycles + extra, horizon)
+        keep[count] = i
+        count += 1
+    return keep[:count]
+
+
+@njit(cache=True, nogil=True)
+def offside_line(opp_pos: np.ndarray, ball_x: float) -> float:  # pragma: no cover - compiled
+    """The offside line's x (team frame): the second-last opponent's x (duplicates counted),
+    the ball's, or the halfway line, whichever is furthest forward."""
+    last = second = -math.inf
+    for i in range(opp_pos.shape[0]):
+        x = opp_pos[i, 0]
+        if x > last:
+            last, second = x, last
+        elif x > second:
+            second = x
+    return max(second, ball_x, 0.0)
+
+
+@njit(cache=True, nogil=True)
+def beyond_line(own_pos: np.ndarray, opp_pos: np.ndarray, ball_x: float) -> np.ndarray:  # pragma: no cover
+    """Whether each of ``own_pos`` is beyond :func:`offside_line`."""
+    line = offside_line(opp_pos, ball_x)
+    out = np.empty(own_pos.shape[0], dtype=np.bool_)
+    for i in range(own_pos.shape[0]):
+        out[i] = own_pos[i, 0] > line
+    return out
+
+
+@njit(cache=True, nogil=True)
+def deciding_cycles(receive: np.ndarray, arrival: np.ndarray, limit: np.ndarray,
+                    min_lead: int) -> np.ndarray:  # pragma: no cover - compiled
+    """Per lane, the last cycle at which an opponent's interception can still change the
+    pass's safety or score: ``receive + max(LEAD_CAP, min_lead)`` or ``arrival + min_lead``,
+    whichever is later, within ``limit``; 0 for a lane the receiver never reaches (it is not
+    scored). Opponents later than that count as UNREACHABLE, which decides the same, so the
+    search stops there (the opponents' search is most of a pass decision's cost)."""
+    out = np.empty(receive.shape[0], dtype=np.int64)
+    for i in range(receive.shape[0]):
+        if receive[i] >= UNREACHABLE:
+            out[i] = 0
+        else:
+            out[i] = min(limit[i], max(receive[i] + max(LEAD_CAP, min_lead), arrival[i] + min_lead))
+    return out
+
+
+@njit(cache=True, nogil=True)
+def pass_targets(own_pos: np.ndarray, receivers: np.ndarray, leads: np.ndarray, speeds: np.ndarray, ball: np.ndarray,
+                 x_max: float, y_max: float, min_distance: float, max_distance: float, decay: float,
+                 targets: np.ndarray, owners: np.ndarray, wanted: np.ndarray) -> int:  # pragma: no cover
+    """Candidate targets (receiver + lead, kept within |x| <= x_max, |y| <= y_max), each with
+    each arrival speed, at a usable distance; the ball velocity each needs. Returns the count."""
+    count = 0
+    for r in range(receivers.shape[0]):
+        who = receivers[r]
+        for j in range(leads.shape[0]):
+            tx = min(max(own_pos[who, 0] + leads[j, 0], -x_max), x_max)
+            ty = min(max(own_pos[who, 1] + leads[j, 1], -y_max), y_max)
+            dx, dy = tx - ball[0], ty - ball[1]
+            dist = math.sqrt(dx * dx + dy * dy)
+            if dist < min_distance or dist > max_distance:
+                continue
+            for k in range(speeds.shape[0]):
+                speed = dist * (1.0 - decay) + speeds[k]
+                targets[count, 0] = tx
+                targets[count, 1] = ty
+                owners[count] = who
+                wanted[count, 0] = dx / dist * speed
+                wanted[count, 1] = dy / dist * speed
+                count += 1
+    return count
+
+
+@njit(cache=True, nogil=True)
+def pass_scores(targets: np.ndarray, received_at: np.ndarray, receive: np.ndarray, theirs: np.ndarray,
+                arrival: np.ndarray, owners: np.ndarray, own_pos: np.ndarray, own_vel: np.ndarray, effort: np.ndarray,
+                opp_pos: np.ndarray, ball: np.ndarray, reach: np.ndarray, coast: float, kickable: float,
+                half_length: float, min_lead: int, score: np.ndarray, points: np.ndarray, weight_forward: float,
+                weight_goal: float, weight_space: float, weight_lead: float) -> int:  # pragma: no cover - compiled
+    """Score the safe candidates (see :mod:`agents.skills.passing`); unsafe ones score -inf. Returns
+    the best row, or -1 when none is safe."""
+    best, best_score = -1, -np.inf
+    for i in range(targets.shape[0]):
+        score[i] = -np.inf
+        if receive[i] >= UNREACHABLE or theirs[i] - receive[i] < min_lead:
+            continue
+        who = owners[i]
+        # Run onto it: the receiver takes the ball at the target when it can be there by the
+        # ball's arrival and no opponent gets to the ball before; else where it meets it first.
+        sx = own_pos[who, 0] + coast * own_vel[who, 0]
+        sy = own_pos[who, 1] + coast * own_vel[who, 1]
+        need = max(math.sqrt((targets[i, 0] - sx) ** 2 + (targets[i, 1] - sy) ** 2) - kickable, 0.0) / effort[who]
+        run = np.searchsorted(reach, need)
+        if run <= arrival[i] and theirs[i] >= arrival[i] + min_lead:
+            px, py = targets[i, 0], targets[i, 1]
+        else:
+            px, py = received_at[i, 0], received_at[i, 1]
+        points[i, 0] = px
+        points[i, 1] = py
+        space = 10.0
+        for o in range(opp_pos.shape[0]):
+            space = min(space, math.sqrt((px - opp_pos[o, 0]) ** 2 + (py - opp_pos[o, 1]) ** 2))
+        lead = min(theirs[i] - receive[i], LEAD_CAP) / LEAD_CAP
+        closeness = 1.0 - math.sqrt((px - half_length) ** 2 + py * py) / (2.0 * half_length)
+        forward = min(max((px - ball[0]) / 20.0, -1.0), 1.5)
+        value = weight_forward * forward + weight_goal * closeness + weight_space * space / 10.0 + weight_lead * lead
+        score[i] = value
+        if value > best_score:
+            best, best_score = i, value
+    return best

@@ -1,0 +1,184 @@
+"""The compiled interception search (see :mod:`agents.skills.interception` for the model).
+
+The search's constants come as named scalars: the match's (:class:`~agents.skills.context.
+InterceptConstants`: ``x_max``, ``y_max``, ``top_speed``, ``area_x``, ``area_y``,
+``accel_max``, ``speed_max``, ``decay``, ``body``) and the call's (``catch_side``: the side
+whose penalty area the catch radius counts in, -1 ours, +1 theirs; ``delay``: the cycles before
+the players start to dash; ``first_only``: stop a trajectory at its first interception).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+UNREACHABLE = 1_000_000
+"""Interception cycle of a player who cannot get to the ball before it leaves the field or the
+cycle limit (larger than any real cycle, so ``argmin`` over cycles works unchanged)."""
+
+NO_LIMITS = np.full(0, -1, dtype=np.int64)
+"""Empty cycle limits: the search goes to the horizon."""
+EVERYONE = np.zeros(0, dtype=np.int64)
+"""Empty ``only``: every player is searched on every trajectory."""
+
+
+@njit(cache=True, nogil=True)
+def intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, vel: np.ndarray, effort: np.ndarray,
+                     radius: np.ndarray, catch_radius: np.ndarray, reach: np.ndarray, ball_travel: np.ndarray,
+                     coast: np.ndarray, limits: np.ndarray, only: np.ndarray, cycles_out: np.ndarray,
+                     points_out: np.ndarray, x_max: float, y_max: float, top_speed: float, area_x: float,
+                     area_y: float, accel_max: float, speed_max: float, decay: float, body: float, catch_side: float,
+                     delay: int, first_only: bool) -> None:  # pragma: no cover - compiled
+    """Each player's earliest interception cycle and point on each trajectory p (ball row
+    ``ball[0 or p]``, velocity ``ball_vel[p]``) into ``cycles_out`` (P, n) and ``points_out``
+    (P, n, 2). ``limits[p] < 0`` (or ``limits`` empty): search to the horizon.
+    ``only[p] >= 0``: search that player alone on trajectory p (the others get UNREACHABLE).
+    With ``first_only`` a trajectory stops at its first interception and the later players
+    get UNREACHABLE."""
+    horizon = reach.shape[0] - 1
+    n = pos.shape[0]
+    run = np.empty(n)  # furthest straight-line run so far, per player
+    speed = np.empty(n)
+    for p in range(ball_vel.shape[0]):
+        b = 0 if ball.shape[0] == 1 else p
+        bx0, by0, vx, vy = ball[b, 0], ball[b, 1], ball_vel[p, 0], ball_vel[p, 1]
+        bound = limits[p] if limits.shape[0] > 0 else -1
+        last = horizon if bound < 0 else min(bound, horizon)
+        alone = only[p] if only.shape[0] > 0 else -1
+        # Players who cannot get near the ball's whole path within `last` cycles are skipped
+        # (-2) when the search ends at `last` anyway (first-only, or a limit within the horizon).
+        prune = first_only or (0 <= bound <= horizon)
+        wx, wy = ball_travel[last] * vx, ball_travel[last] * vy
+        whole = wx * wx + wy * wy
+        remaining = 0
+        for i in range(n):
+            run[i] = 0.0
+            speed[i] = math.sqrt(vel[i, 0] ** 2 + vel[i, 1] ** 2)
+            if alone < 0 or i == alone:
+                cycles_out[p, i] = -1
+                remaining += 1
+                if prune:
+                    qx, qy = pos[i, 0] - bx0, pos[i, 1] - by0
+                    t = min(max((qx * wx + qy * wy) / whole, 0.0), 1.0) if whole > 0.0 else 0.0
+                    gap = math.sqrt((qx - t * wx) ** 2 + (qy - t * wy) ** 2)
+                    grow = reach[last - delay] * effort[i] if last > delay else 0.0
+                    if gap > coast[last] * speed[i] + grow + max(radius[i], catch_radius[i]):
+                        cycles_out[p, i] = -2
+                        remaining -= 1
+            else:
+                cycles_out[p, i] = UNREACHABLE
+                points_out[p, i, 0] = bx0
+                points_out[p, i, 1] = by0
+        lo, hi = (0, n) if alone < 0 else (alone, alone + 1)
+        found = False
+        left_field = False
+        bx, by = bx0, by0
+        k_end = 0
+        for k in range(last + 1):
+            tx = bx0 + ball_travel[k] * vx
+            ty = by0 + ball_travel[k] * vy
+            if abs(tx) > x_max or abs(ty) > y_max:
+                left_field = True
+                break
+            px, py = bx, by  # where the ball was a cycle ago
+            bx, by = tx, ty
+            k_end = k
+            in_area = catch_side * tx >= area_x and abs(ty) <= area_y
+            sx, sy = tx - px, ty - py
+            seg = sx * sx + sy * sy
+            seg_len = math.sqrt(seg)
+            for i in range(lo, hi):
+                if cycles_out[p, i] != -1:
+                    continue
+                if k > 0:
+                    boost = accel_max * effort[i] if k > delay else 0.0
+                    speed[i] = min(speed[i] + boost, speed_max)
+                    run[i] += speed[i]
+                    speed[i] *= decay
+                cx = pos[i, 0] + coast[k] * vel[i, 0]
+                cy = pos[i, 1] + coast[k] * vel[i, 1]
+                r = radius[i]
+                if in_area and catch_radius[i] > r:
+                    r = catch_radius[i]
+                dx, dy = tx - cx, ty - cy
+                ex, ey = tx - pos[i, 0], ty - pos[i, 1]
+                grow = reach[k - delay] * effort[i] if k > delay else 0.0
+                hit = dx * dx + dy * dy <= (grow + r) ** 2 and ex * ex + ey * ey <= (run[i] + r) ** 2
+                qx, qy = tx, ty
+                if not hit and seg > 0.0 and dx * dx + dy * dy <= (grow + body + seg_len) ** 2:
+                    # The ball may run into the body somewhere along this cycle's path.
+                    t = min(max(((cx - px) * sx + (cy - py) * sy) / seg, 0.0), 1.0)
+                    qx, qy = px + t * sx, py + t * sy
+                    hit = (qx - cx) ** 2 + (qy - cy) ** 2 <= (grow + body) ** 2 and \
+                        (qx - pos[i, 0]) ** 2 + (qy - pos[i, 1]) ** 2 <= (run[i] + body) ** 2
+                if hit:
+                    cycles_out[p, i] = k
+                    points_out[p, i, 0] = qx
+                    points_out[p, i, 1] = qy
+                    remaining -= 1
+                    found = True
+            if remaining == 0 or (found and first_only):
+                break
+        if found and first_only:
+            for i in range(n):
+                if cycles_out[p, i] < 0:
+                    cycles_out[p, i] = UNREACHABLE
+                    points_out[p, i, 0] = bx
+                    points_out[p, i, 1] = by
+            continue
+        beyond = not left_field and k_end == horizon and (bound < 0 or bound > horizon)
+        for i in range(n):
+            if cycles_out[p, i] >= 0:
+                continue
+            points_out[p, i, 0] = bx
+            points_out[p, i, 1] = by
+            if beyond:
+                cx = pos[i, 0] + coast[horizon] * vel[i, 0]
+                cy = pos[i, 1] + coast[horizon] * vel[i, 1]
+                gap = math.sqrt((bx - cx) ** 2 + (by - cy) ** 2) - radius[i] - reach[horizon - delay] * effort[i]
+                pace = max(top_speed * effort[i], 1e-9)
+                cycles_out[p, i] = horizon + max(1, int(math.ceil(gap / pace)))
+            else:
+                cycles_out[p, i] = UNREACHABLE
+
+
+@njit(cache=True, nogil=True)
+def race_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, vel: np.ndarray, effort: np.ndarray,
+                radius: np.ndarray, catch_radius: np.ndarray, opp_pos: np.ndarray, opp_vel: np.ndarray,
+                opp_effort: np.ndarray, opp_radius: np.ndarray, opp_catch_radius: np.ndarray, reach: np.ndarray,
+                ball_travel: np.ndarray, coast: np.ndarray, eligible: np.ndarray, our_cycles: np.ndarray,
+                our_points: np.ndarray, their_cycles: np.ndarray, their_points: np.ndarray, x_max: float,
+                y_max: float, top_speed: float, area_x: float, area_y: float, accel_max: float, speed_max: float,
+                decay: float, body: float, their_first_only: bool) -> tuple[int, int, int, int]:  # pragma: no cover
+    """Both teams' :func:`intercept_kernel` of one ball in one call (ours catching in our
+    penalty area, theirs in theirs, nobody delayed); our players not ``eligible`` (when it is
+    not empty) made UNREACHABLE. Returns (our first player, its cycle, their first player,
+    its cycle), -1 and UNREACHABLE when nobody gets there."""
+    intercept_kernel(ball, ball_vel, pos, vel, effort, radius, catch_radius, reach, ball_travel, coast, NO_LIMITS,
+                     EVERYONE, our_cycles, our_points, x_max, y_max, top_speed, area_x, area_y, accel_max, speed_max,
+                     decay, body, -1.0, 0, False)
+    if eligible.shape[0] > 0:
+        for i in range(our_cycles.shape[1]):
+            if not eligible[i]:
+                our_cycles[0, i] = UNREACHABLE
+    intercept_kernel(ball, ball_vel, opp_pos, opp_vel, opp_effort, opp_radius, opp_catch_radius, reach, ball_travel,
+                     coast, NO_LIMITS, EVERYONE, their_cycles, their_points, x_max, y_max, top_speed, area_x, area_y,
+                     accel_max, speed_max, decay, body, 1.0, 0, their_first_only)
+    first, first_cycle = first_of(our_cycles[0])
+    their_first, their_first_cycle = first_of(their_cycles[0])
+    return first, first_cycle, their_first, their_first_cycle
+
+
+@njit(cache=True, nogil=True)
+def first_of(cycles: np.ndarray) -> tuple[int, int]:  # pragma: no cover - compiled
+    """The player with the smallest cycle (the lowest index among equals) and that cycle;
+    (-1, its cycle or UNREACHABLE) when nobody gets there."""
+    first, first_cycle = -1, UNREACHABLE
+    for i in range(cycles.shape[0]):
+        if first < 0 or cycles[i] < first_cycle:
+            first, first_cycle = i, cycles[i]
+    if first_cycle >= UNREACHABLE:
+        first = -1
+    return first, first_cycle

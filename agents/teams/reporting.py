@@ -1,0 +1,48 @@
+"""The built-in team's per-match figures of its role assignment (what
+:meth:`FormationTeam.statistics <agents.teams.formation_team.FormationTeam.statistics>`
+reports)."""
+
+from __future__ import annotations
+
+from soccer_sim.config import MatchConfig
+
+
+class RoleFigures:
+    """Role switches and the outfield players' distances to their role targets, summed over
+    the cycles of play on (see :meth:`statistics`)."""
+
+    def __init__(self, config: MatchConfig, roles: int) -> None:
+        self.cycles_per_minute = 60.0 / config.physics.cycle_seconds
+        """Cycles in a minute of game time."""
+        self.roles = roles
+        """Outfield roles filled (the players assigned)."""
+        self.cycles = 0
+        self.switches = 0
+        self.distance_sum = 0.0
+        self.makespan_sum = 0.0
+        self.unfilled_role_cycles = 0
+
+    def add(self, switches: int, measured: bool, mean: float, largest: float, unfilled: int) -> None:
+        """One cycle's figures: role switches (counted in every play mode) and, for a
+        ``measured`` cycle of play on, the mean and the largest distance from a player to its
+        role's target and the number of roles left unfilled."""
+        self.switches += switches
+        if measured:
+            self.cycles += 1
+            self.distance_sum += mean
+            self.makespan_sum += largest
+            self.unfilled_role_cycles += unfilled
+
+    def statistics(self) -> dict[str, float]:
+        """Role switches per minute of play, the mean and the largest distance from the
+        outfield players to their role targets (averaged over cycles: the largest is the
+        assignment's makespan), and the share of role-cycles a role was unfilled."""
+        cycles = max(self.cycles, 1)
+        roles = max(self.roles, 1)
+        return {
+            "role_switches_per_minute": self.switches / max(self.cycles / self.cycles_per_minute, 1e-9)
+            if self.cycles else 0.0,
+            "target_distance_mean": self.distance_sum / cycles,
+            "target_distance_max": self.makespan_sum / cycles,
+            "role_unfilled_share": self.unfilled_role_cycles / (cycles * roles),
+        }

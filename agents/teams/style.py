@@ -1,0 +1,44 @@
+"""How a built-in team plays, apart from its role assigner: :class:`TeamStyle`."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from agents import skills
+
+ATTACKING_DECISIONS = skills.DecisionParams(
+    shot=skills.ShotParams(threshold=0.2),
+    dribbling=skills.DribbleParams(goal_weight=2.0, speed_fraction=0.85),
+)
+"""The built-in team's on-ball choices: shoot when a shot has a fair chance (the skill's own
+threshold waits for a near-certain one, which against a goalkeeper almost never comes) and
+dribble towards the goal rather than along the wings."""
+
+
+@dataclass(frozen=True)
+class TeamStyle:
+    """How a team plays, apart from its role assigner."""
+
+    system: str = "4-3-3"
+    """Built-in formation set (``formations.builtin_names()``)."""
+    depth: float = 0.0
+    """Metres the outfield block is shifted towards the opponents' goal in open play (negative:
+    a deeper block)."""
+    attack_push: float = 14.0
+    """Extra metres the outfield block moves up when we attack (win the race for the ball)."""
+    box_narrowing: float = 0.5
+    """When we attack with the ball in the final third, the forwards' targets move this share
+    of the way towards the middle of the field (so that there are players in the box)."""
+    pressers: int = 1
+    """Players sent at the ball when the opponents win the race (1: just the fastest)."""
+    decision: skills.DecisionParams = field(default_factory=lambda: ATTACKING_DECISIONS)
+    """Thresholds of the on-ball decision (shoot, pass, dribble, clear)."""
+    offside_margin: float = 1.0
+    """Attackers without the ball stay this far behind the offside line (m)."""
+    set_play_wait: int = 15
+    """Cycles our set-play taker waits before kicking, so the others can take their places."""
+    stationary: bool = False
+    """Outfield players hold their kick-off spots and only kick a ball that comes to them (the
+    baseline against which positioning is measured)."""
+    unfilled_distance: float = 10.0
+    """A role counts as unfilled while the player assigned to it is farther than this (m)."""
