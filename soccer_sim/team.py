@@ -56,19 +56,10 @@ class SideInfo:
     goalie_index: int
     """Index of the team's goalkeeper within the team (the only player whose catch counts);
     -1 (``NO_PLAYER``) when the team has no goalkeeper (a scenario may leave it out)."""
-    opponents: int | None = None
-    """Players of the opposing team (the rows of ``opp_pos``). A match always gives it
-    (:meth:`soccer_sim.setup.MatchSetup.side_info`), so a team reads an int; only a SideInfo
-    built by hand for two even sides may leave it out, and then it is filled with ours."""
-    opponent_goalie_index: int | None = None
-    """Index of the opponents' goalkeeper among them, -1 if they have none. A match always
-    gives it; left out of a SideInfo built by hand, it is filled with ours."""
-
-    def __post_init__(self) -> None:
-        if self.opponents is None:
-            object.__setattr__(self, "opponents", self.players_per_team)
-        if self.opponent_goalie_index is None:
-            object.__setattr__(self, "opponent_goalie_index", self.goalie_index)
+    opponents: int
+    """Players of the opposing team (0 to 11; the rows of ``opp_pos``)."""
+    opponent_goalie_index: int
+    """Index of the opponents' goalkeeper among them, -1 (``NO_PLAYER``) if they have none."""
 
 
 @dataclass(eq=False)

@@ -21,7 +21,7 @@ def view(n: int = 11) -> TeamView:
 def test_each_player_takes_its_own_teams_row() -> None:
     members = [FORWARD if i % 3 == 0 else SIDEWAYS for i in range(11)]    # goalkeeper (0) is Forward
     team = MixedTeam(members)
-    team.reset(SideInfo(0, "m", "o", 11, 0), MatchConfig(), np.random.default_rng(0))
+    team.reset(SideInfo(0, "m", "o", 11, 0, 11, 0), MatchConfig(), np.random.default_rng(0))
     command = team.act(view())
     forward = np.array([m == FORWARD for m in members])
     assert np.allclose(command.dash[forward], (0.01, 0.0)) and np.allclose(command.dash[~forward], (0.0, 0.02))
@@ -29,7 +29,7 @@ def test_each_player_takes_its_own_teams_row() -> None:
     assert command.catch is True                     # the goalkeeper's team asks to catch
     assert all(t.seen == [(11, 2)] for t in team.teams)  # every member team saw the full team view
     team = MixedTeam([SIDEWAYS] + [FORWARD] * 10)
-    team.reset(SideInfo(0, "m", "o", 11, 0), MatchConfig(), np.random.default_rng(0))
+    team.reset(SideInfo(0, "m", "o", 11, 0, 11, 0), MatchConfig(), np.random.default_rng(0))
     assert team.act(view()).catch is False
 
 
@@ -41,7 +41,7 @@ def test_names_round_trip_and_bad_members() -> None:
         mixed_name(["a|b"])
     team = MixedTeam(["chaser"] * 3)
     with pytest.raises(TeamError, match="3 member players but the match plays 11"):
-        team.reset(SideInfo(0, "m", "o", 11, 0), MatchConfig(), np.random.default_rng(0))
+        team.reset(SideInfo(0, "m", "o", 11, 0, 11, 0), MatchConfig(), np.random.default_rng(0))
 
 
 class _PlayerDistances:

@@ -154,7 +154,7 @@ def test_chaser_kicks_towards_the_opponents_goal_in_its_own_frame() -> None:
     from soccer_sim.team import SideInfo, TeamView
 
     team = ChaserTeam()
-    team.reset(SideInfo(AWAY, "c", "x", 2, 0), Config(players_per_team=2), np.random.default_rng(0))
+    team.reset(SideInfo(AWAY, "c", "x", 2, 0, 2, 0), Config(players_per_team=2), np.random.default_rng(0))
     view = TeamView(own_pos=np.array([[-1.0, 0.0], [-10.0, 5.0]]), own_vel=np.zeros((2, 2)),
                     opp_pos=np.zeros((2, 2)), opp_vel=np.zeros((2, 2)), ball=np.array([0.0, 0.0]),
                     ball_vel=np.zeros(2), stamina=np.ones(2))

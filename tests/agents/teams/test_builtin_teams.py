@@ -25,7 +25,7 @@ def view(own_pos, opp_pos, ball, ball_vel=(0.0, 0.0), mode=PlayMode.PLAY_ON, our
 
 
 def ready(team: FormationTeam, seed: int = 0) -> FormationTeam:
-    team.reset(SideInfo(0, "us", "them", 11, 0), CONFIG, np.random.default_rng(seed))
+    team.reset(SideInfo(0, "us", "them", 11, 0, 11, 0), CONFIG, np.random.default_rng(seed))
     return team
 
 
@@ -61,10 +61,10 @@ def test_unknown_assigner_and_wrong_team_size_are_clear_errors() -> None:
     with pytest.raises(ValueError, match="nonsense"):
         FormationTeam("nonsense")
     with pytest.raises(ValueError, match="at most 11 players"):
-        FormationTeam().reset(SideInfo(0, "us", "them", 12, 0), MatchConfig(players_per_team=12),
+        FormationTeam().reset(SideInfo(0, "us", "them", 12, 0, 12, 0), MatchConfig(players_per_team=12),
                               np.random.default_rng(0))
     with pytest.raises(ValueError, match="not 11 with 11 outfield"):  # no goalkeeper: ten outfield roles
-        FormationTeam().reset(SideInfo(0, "us", "them", 11, -1), MatchConfig(), np.random.default_rng(0))
+        FormationTeam().reset(SideInfo(0, "us", "them", 11, -1, 11, 0), MatchConfig(), np.random.default_rng(0))
 
 
 def test_the_fastest_player_runs_to_the_interception_point_and_others_hold_formation() -> None:

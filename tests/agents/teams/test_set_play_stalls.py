@@ -33,7 +33,7 @@ def view(own_pos, opp_pos, ball, mode, ours=True, cycle=100) -> TeamView:
 
 def ready(name: str) -> FormationTeam:
     team, _ = resolve_team(name)
-    team.reset(SideInfo(0, "us", "them", 11, 0), CONFIG, np.random.default_rng(0))
+    team.reset(SideInfo(0, "us", "them", 11, 0, 11, 0), CONFIG, np.random.default_rng(0))
     return team
 
 
