@@ -275,3 +275,31 @@ def test_type_checking_imports_are_left_out(tmp_path):
     })
     assert {(e.source, e.target) for e in import_edges(modules)} == {("pkg.a", "pkg.b"), ("pkg.b", "pkg.c")}
     assert cycles(modules, import_edges(modules)) == []
+
+
+def bare_helper_imports(tests_root: Path) -> list[str]:
+    """Imports of a test helper module (a non-test module under ``tests/``) by its bare name,
+    which works only through pytest's own path handling; each as ``file:line: module``."""
+    helpers = {path.stem for path in tests_root.rglob("*.py")
+               if not path.name.startswith("test_") and path.name != "conftest.py"}
+    found = []
+    for path in sorted(tests_root.rglob("*.py")):
+        for node, _ in _imports(ast.parse(path.read_text(), str(path))):
+            names = [alias.name for alias in node.names] if isinstance(node, ast.Import) else (
+                [node.module] if node.module and not node.level else [])
+            found += [f"{path.relative_to(tests_root.parent)}:{node.lineno}: {name}"
+                      for name in names if name.split(".")[0] in helpers]
+    return found
+
+
+def test_tests_import_their_helpers_one_way():
+    """Helpers are imported by their full name (``tests.soccer_sim.core_helpers``), never bare."""
+    assert bare_helper_imports(ROOT / "tests") == []
+
+
+def test_a_bare_helper_import_is_found(tmp_path):
+    (tmp_path / "tests" / "pkg").mkdir(parents=True)
+    (tmp_path / "tests" / "pkg" / "shared.py").write_text("X = 1\n")
+    (tmp_path / "tests" / "pkg" / "test_a.py").write_text(
+        "from tests.pkg.shared import X\n\ndef f():\n    from shared import X\n")
+    assert bare_helper_imports(tmp_path / "tests") == ["tests/pkg/test_a.py:4: shared"]

@@ -9,7 +9,7 @@ from typing import Any, Callable
 import numpy as np
 import pytest
 
-from formation_samples import eleven_roles, scattered_balls
+from tests.formations.formation_samples import eleven_roles, scattered_balls
 from formations import Formation
 
 

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 import formations
-from agent2d_samples import (
+from tests.formations.agent2d_samples import (
     LINEUP,
     LINEUP_KINDS,
     ROLES,

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import formations
-from agent2d_samples import (
+from tests.formations.agent2d_samples import (
     ROLES,
     STATIC_POSITIONS,
     dt_v1_text,

@@ -9,7 +9,7 @@ import pytest
 
 from formations.files import formation_from_dict
 from experiments.commands import formation as formation_command
-from formation_samples import eleven_roles
+from tests.formations.formation_samples import eleven_roles
 from formations import Formation, FormationError, Role
 
 

@@ -11,7 +11,7 @@ import pytest
 import formations
 from experiments.benchmarks import formation as formation_bench
 from experiments.commands import formation as formation_command
-from formation_samples import small_document
+from tests.formations.formation_samples import small_document
 from test_formation_errors import BAD_DOCUMENTS, HELIOS_BAD
 from test_formation_files import helios_document
 

@@ -11,7 +11,7 @@ from scipy.spatial import QhullError
 
 import formations
 from formations import Formation, FormationError, FormationSet, Role
-from formation_samples import eleven_roles, small_document
+from tests.formations.formation_samples import eleven_roles, small_document
 
 Mutation = Callable[[dict[str, Any]], Any]
 

@@ -12,7 +12,7 @@ import formations
 from formations import FormationError, FormationSet, Situation
 from formations.files import dumps
 
-from formation_samples import small_document
+from tests.formations.formation_samples import small_document
 
 
 def test_formation_round_trip_is_exact(tmp_path, random_formation):

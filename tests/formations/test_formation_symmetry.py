@@ -8,7 +8,7 @@ import pytest
 import formations
 from formations import Formation, FormationError, Situation
 from formations.symmetry import asymmetries, mirror_complete, mirror_permutation, mirror_positions, query_asymmetry
-from formation_samples import eleven_roles, scattered_balls
+from tests.formations.formation_samples import eleven_roles, scattered_balls
 
 
 def half_formation() -> Formation:

@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from agents.assignment import MMDR_ALGORITHMS, assign, assign_costs
-from assignment_oracle import (
+from tests.agents.assignment.assignment_oracle import (
     assert_valid,
     distance_matrix,
     greedy_reference,

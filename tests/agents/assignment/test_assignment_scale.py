@@ -7,7 +7,7 @@ import pytest
 
 from agents.assignment import assign, assign_costs
 from agents.assignment.api import SPARSE_MIN_PAIRS
-from assignment_oracle import (
+from tests.agents.assignment.assignment_oracle import (
     assert_valid,
     chosen_costs,
     distance_matrix,

@@ -12,7 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from agents.assignment import assign
-from assignment_oracle import has_collision, paths_meet, position_at
+from tests.agents.assignment.assignment_oracle import has_collision, paths_meet, position_at
 
 SETTINGS = settings(max_examples=300, deadline=None, derandomize=True)
 
