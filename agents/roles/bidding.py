@@ -56,12 +56,12 @@ import math
 from dataclasses import dataclass, field, fields, replace
 
 import numpy as np
-from numba import njit
 
 from agents.roles.base import RoleAssigner, RoleContext
 from agents.roles.errors import RoleError
 from agents.roles.field_params import FieldParams
-from agents.roles.potential_field import descend, supporter_field
+from agents.roles.field_terms import descend, supporter_field
+from agents.roles.kernels import bid_costs, bidding_round
 
 
 @dataclass(frozen=True)
@@ -156,13 +156,13 @@ class BiddingAssigner(RoleAssigner):
     def bids(self, players: np.ndarray, targets: np.ndarray, context: RoleContext) -> np.ndarray:
         """(k, k + 1) costs, lower is better: column r < k formation role r, column k the ball role."""
         k = self.check_inputs(players, targets)
-        return _bid_costs(players, targets, context.ball, context.opp_goal, self._reach(context, k), self._bidding)
+        return bid_costs(players, targets, context.ball, context.opp_goal, self._reach(context, k), self._bidding)
 
     def assign(self, players: np.ndarray, targets: np.ndarray, role_order: np.ndarray,
                previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
         k = self.check_inputs(players, targets)
         self.check_order(role_order, k)
-        role_of_player, ball_player, covered = _bidding_round(
+        role_of_player, ball_player, covered = bidding_round(
             players, targets, role_order, context.ball, context.opp_goal, self._reach(context, k), self._bidding,
             self.holder, self.since, self.last_role, context.cycle)
         self._ball_player, self.covered = int(ball_player), int(covered)
@@ -202,103 +202,3 @@ class BiddingAssigner(RoleAssigner):
 
 
 _NO_REACH = np.empty(0)
-
-
-@njit(cache=True, nogil=True)
-def _bid_costs(players: np.ndarray, targets: np.ndarray, ball: np.ndarray, goal: np.ndarray, reach: np.ndarray,
-               params: np.ndarray) -> np.ndarray:  # pragma: no cover - compiled
-    """The bid costs of the module docstring; ``reach`` (k,) the ball reach of every player, or
-    empty for the straight distance; ``params`` is :meth:`BiddingParams.as_record` (the bid
-    weights are read from it). Returns (k, k + 1): formation roles, then the ball role."""
-    k = players.shape[0]
-    p = params[0]
-    cap, angle_weight, goal_side = p.ball_cap, p.angle_weight, p.goal_side_weight
-    costs = np.empty((k, k + 1))
-    gx, gy = goal[0] - ball[0], goal[1] - ball[1]
-    goal_dist = math.hypot(gx, gy)
-    for i in range(k):
-        px, py = players[i, 0], players[i, 1]
-        for r in range(k):
-            c = math.hypot(px - targets[r, 0], py - targets[r, 1])
-            if targets[r, 0] < ball[0] and px > targets[r, 0]:
-                c += goal_side * (px - targets[r, 0])
-            costs[i, r] = c
-        bx, by = ball[0] - px, ball[1] - py
-        d = math.hypot(bx, by)
-        theta = 0.0
-        if d > 1e-9 and goal_dist > 1e-9:
-            theta = math.acos(min(max((bx * gx + by * gy) / (d * goal_dist), -1.0), 1.0))
-        costs[i, k] = min(d if reach.shape[0] == 0 else reach[i], cap) + angle_weight * theta
-    return costs
-
-
-@njit(cache=True, nogil=True)
-def _auction(costs: np.ndarray, priority: np.ndarray, taken: np.ndarray, holder: np.ndarray, since: np.ndarray,
-             cycle: int, min_hold: int, margin: float, winners: np.ndarray) -> None:  # pragma: no cover - compiled
-    """Auction the roles (columns of ``costs``) in ``priority`` order, each to the best bidder
-    not ``taken`` (ties: lower row), with the module docstring's hysteresis. Marks the winners
-    taken, writes them into ``winners[role]`` and updates ``holder`` and ``since``."""
-    k = costs.shape[0]
-    for role in priority:
-        best, best_cost = -1, math.inf
-        for i in range(k):
-            if not taken[i] and (best < 0 or costs[i, role] < best_cost):
-                best, best_cost = i, costs[i, role]
-        incumbent = holder[role]
-        if 0 <= incumbent < k and not taken[incumbent] and incumbent != best:
-            if cycle - since[role] < min_hold or costs[incumbent, role] - margin <= best_cost:
-                best = incumbent
-        if best != incumbent:
-            holder[role] = best
-            since[role] = cycle
-        winners[role] = best
-        taken[best] = True
-
-
-@njit(cache=True, nogil=True)
-def _covered_role(targets: np.ndarray, order: np.ndarray, ball: np.ndarray, kept: int,
-                  slack: float) -> int:  # pragma: no cover - compiled
-    """The formation role the ball player covers: ``kept`` (its role so far, -1: none) if that
-    role's target is at most ``slack`` metres farther from the ball than the nearest target,
-    else the role whose target is nearest the ball (ties: the more offensive)."""
-    nearest, gap = -1, math.inf
-    for r in order:
-        d = math.hypot(targets[r, 0] - ball[0], targets[r, 1] - ball[1])
-        if nearest < 0 or d < gap:
-            nearest, gap = r, d
-    if kept >= 0 and math.hypot(targets[kept, 0] - ball[0], targets[kept, 1] - ball[1]) <= gap + slack:
-        return kept
-    return nearest
-
-
-@njit(cache=True, nogil=True)
-def _bidding_round(players: np.ndarray, targets: np.ndarray, order: np.ndarray, ball: np.ndarray,
-                   goal: np.ndarray, reach: np.ndarray, params: np.ndarray, holder: np.ndarray, since: np.ndarray,
-                   last_role: np.ndarray, cycle: int) -> tuple[np.ndarray, int, int]:  # pragma: no cover - compiled
-    """One cycle of bidding with ``params`` (:meth:`BiddingParams.as_record`): (role_of_player,
-    the ball player, the covered formation role); updates the hysteresis memory (``holder``,
-    ``since``) and ``last_role`` (each player's role)."""
-    k = players.shape[0]
-    p = params[0]
-    min_hold, margin, slack = p.min_hold, p.switch_margin, p.cover_slack
-    costs = _bid_costs(players, targets, ball, goal, reach, params)
-    taken = np.zeros(k, dtype=np.bool_)
-    winners = np.full(k + 1, -1, dtype=np.int64)
-    _auction(costs, np.array([k]), taken, holder, since, cycle, min_hold, margin, winners)
-    ball_player = winners[k]
-    covered = _covered_role(targets, order, ball, last_role[ball_player], slack)
-    priority = np.empty(k - 1, dtype=np.int64)
-    n = 0
-    for r in order:
-        if r != covered:
-            priority[n] = r
-            n += 1
-    _auction(costs, priority, taken, holder, since, cycle, min_hold, margin, winners)
-    for r in range(k):
-        if r != covered:
-            last_role[winners[r]] = r
-    last_role[ball_player] = covered
-    if holder[covered] != ball_player:
-        holder[covered] = ball_player
-        since[covered] = cycle
-    return last_role.copy(), ball_player, covered

@@ -13,14 +13,12 @@
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
-from numba import njit
 
 from agents.assignment.api import dense_target_of
 from agents.roles.base import RoleAssigner, RoleContext
 from agents.roles.errors import RoleError
+from agents.roles.kernels import all_finite, greedy_in_order
 
 
 class StaticAssigner(RoleAssigner):
@@ -51,7 +49,7 @@ class MethodAssigner(RoleAssigner):
         self.check_inputs(players, targets)
         players = np.ascontiguousarray(players, dtype=np.float64)
         targets = np.ascontiguousarray(targets, dtype=np.float64)
-        if not _all_finite(players, targets):
+        if not all_finite(players, targets):
             raise RoleError(f"role assigner {self.name!r}: players and targets must be finite")
         return dense_target_of(players, targets, self.method)
 
@@ -65,7 +63,7 @@ class GreedyOffenseAssigner(RoleAssigner):
                previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
         k = self.check_inputs(players, targets)
         self.check_order(role_order, k)
-        return _greedy_in_order(players, targets, role_order)
+        return greedy_in_order(players, targets, role_order)
 
 
 class RandomAssigner(RoleAssigner):
@@ -78,34 +76,3 @@ class RandomAssigner(RoleAssigner):
                previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
         k = self.check_inputs(players, targets)
         return self.rng.permutation(k)
-
-
-@njit(cache=True, nogil=True)
-def _greedy_in_order(players: np.ndarray, targets: np.ndarray,
-                     order: np.ndarray) -> np.ndarray:  # pragma: no cover - compiled
-    """For each role in ``order``, the nearest player not yet taken (ties: lower row)."""
-    k = players.shape[0]
-    role_of_player = np.full(k, -1, dtype=np.int64)
-    for r in order:
-        best, best_d = -1, math.inf
-        tx, ty = targets[r, 0], targets[r, 1]
-        for i in range(k):
-            if role_of_player[i] < 0:
-                d = (players[i, 0] - tx) ** 2 + (players[i, 1] - ty) ** 2
-                if d < best_d or best < 0:  # the first free player stands in for NaN distances
-                    best, best_d = i, d
-        role_of_player[best] = r
-    return role_of_player
-
-
-# Compiled because it runs every cycle: 0.3 us a call against 1.7 us for np.isfinite(...).all() twice.
-@njit(cache=True, nogil=True)
-def _all_finite(a: np.ndarray, b: np.ndarray) -> bool:  # pragma: no cover - compiled
-    """Whether every entry of the two (k, 2) arrays is finite (one call, no temporaries)."""
-    for x in a.ravel():
-        if not math.isfinite(x):
-            return False
-    for x in b.ravel():
-        if not math.isfinite(x):
-            return False
-    return True
