@@ -76,14 +76,13 @@ class FoulJudge(Judge):
         """``row``'s tackle pushed the ball; ``foul``: it was a foul tackle; ``dashed``: (P,)
         which players asked to dash this cycle."""
         charge, yellow, red = self._check(state, row, foul, dashed)
-        if red:
+        if charge or yellow or red:
+            at = (float(state.pos[row, 0]), float(state.pos[row, 1]))  # before the free kick clears the tackler away
             self._call_foul(state, row)
-            self._red_card(state, row)
-        elif yellow:
-            self._call_foul(state, row)
-            self._yellow_card(state, row)
-        elif charge:
-            self._call_foul(state, row)
+            if red:
+                self._red_card(state, row, at)
+            elif yellow:
+                self._yellow_card(state, row, at)
 
     def _check(self, state: WorldState, row: int, foul: bool, dashed: np.ndarray) -> tuple[bool, bool, bool]:
         """rcssserver's ``checkFoul``: (foul seen, yellow card, red card)."""
@@ -151,25 +150,25 @@ class FoulJudge(Judge):
             state.ball_holder = NO_PLAYER
         modes.restart(state, PlayMode.FREE_KICK, fouled, x, y)
 
-    def _yellow_card(self, state: WorldState, row: int) -> None:
+    def _yellow_card(self, state: WorldState, row: int, at: tuple[float, float]) -> None:
+        """YELLOW_CARD event at ``at``; a second one is a red card."""
         if state.cards[row] >= 1:
-            self._red_card(state, row)
+            self._red_card(state, row, at)
             return
         state.cards[row] = 1
-        self._card_event(state, row, EventKind.YELLOW_CARD, 1)
+        self._card_event(row, EventKind.YELLOW_CARD, 1, state.cycle, at)
 
-    def _red_card(self, state: WorldState, row: int) -> None:
-        """RED_CARD event; the player is sent off and parked."""
+    def _red_card(self, state: WorldState, row: int, at: tuple[float, float]) -> None:
+        """RED_CARD event at ``at``; the player is sent off and parked."""
         state.cards[row] = 2
-        self._card_event(state, row, EventKind.RED_CARD, 2)
+        self._card_event(row, EventKind.RED_CARD, 2, state.cycle, at)
         state.present[row] = False
         state.frozen[row] = 0
         if state.ball_holder == row:
             state.ball_holder = NO_PLAYER
         park_absent(state, self.modes.n, self.modes.config.field)
 
-    def _card_event(self, state: WorldState, row: int, kind: EventKind, cards: int) -> None:
+    def _card_event(self, row: int, kind: EventKind, cards: int, cycle: int, at: tuple[float, float]) -> None:
         n = self.modes.n
         team = HOME if row < n else AWAY
-        self.modes.events.add(state.cycle, kind, team, row - team * n, float(state.pos[row, 0]),
-                              float(state.pos[row, 1]), cards)
+        self.modes.events.add(cycle, kind, team, row - team * n, at[0], at[1], cards)
