@@ -14,7 +14,7 @@ from soccer_sim.match import Match
 from soccer_sim.scenarios import BallStart, Scenario, Side
 from soccer_sim.state import WorldState
 from soccer_sim.tackles import Tackles, failure_probability
-from soccer_sim.team import TeamError
+from soccer_sim.team import TeamError, TeamView
 from tests.soccer_sim.core_helpers import quiet_config
 
 ALL = np.ones(2, dtype=bool)
@@ -215,3 +215,23 @@ def test_tackles_switched_off_are_ignored():
     match.step()
     assert match.events.of_kind(EventKind.TACKLE) == []
     assert match.state.ball_vel.tolist() == [0.0, 0.0] and match.state.vel[0, 1] > 0.0
+
+
+def test_the_view_shows_presence_and_freezes_read_only():
+    match = Match(Tackler(at=0), Still(), seed=2, config=quiet_config(), scenario=one_against_one(0.5))
+    match.start()
+    match.step()
+    view = match.frames[HOME].update_view(match.state, 1)
+    assert view.frozen.tolist() == [9] and view.present.tolist() == [True] and view.opp_present.tolist() == [True]
+    for flags in (view.frozen, view.present, view.opp_present):
+        with pytest.raises(ValueError, match="read-only"):
+            flags[0] = 0
+    match.state.present[1] = False
+    assert match.frames[HOME].update_view(match.state, 1).opp_present.tolist() == [False]
+
+
+def test_a_view_built_by_hand_has_everybody_present_and_nobody_frozen():
+    view = TeamView(own_pos=np.zeros((3, 2)), own_vel=np.zeros((3, 2)), opp_pos=np.zeros((2, 2)),
+                    opp_vel=np.zeros((2, 2)), ball=np.zeros(2), ball_vel=np.zeros(2), stamina=np.ones(3))
+    assert view.present.tolist() == [True] * 3 and view.opp_present.tolist() == [True] * 2
+    assert view.frozen.tolist() == [0, 0, 0]
