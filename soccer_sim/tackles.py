@@ -23,8 +23,8 @@ its ``Player::tackle`` computes it, with the parameters of :class:`~soccer_sim.c
   ball) it does nothing, as rcssserver's tackles do nothing in its stopped play modes.
 * **Freeze.** A tackling player neither dashes nor kicks in the cycle of its tackle and cannot
   act (dash, kick, tackle, catch) for ``tackle_cycles`` cycles in all, whether it reached the
-  ball or not; a successful foul tackle does not freeze the tackler. Players fouled by a foul
-  tackle are frozen for ``foul_cycles`` (:mod:`soccer_sim.rules.fouls`).
+  ball or not; a foul tackle that pushes the ball does not freeze the tackler. Players fouled
+  by a foul tackle are frozen for ``foul_cycles`` (:mod:`soccer_sim.rules.fouls`).
 * **Sent off.** A player sent off (:mod:`soccer_sim.rules.fouls`) is parked off the pitch
   (:func:`~soccer_sim.rules.fouls.parking_spot`) at the end of every cycle, still, and its
   commands are ignored; ``WorldState.present`` flags it.
@@ -127,8 +127,9 @@ class Tackles:
             outcome.rows.append(row)
             outcome.reached.append(reached)
             outcome.fouls.append(intentional)
-            state.frozen[row] = 0 if (reached and intentional) else cfg.tackle_cycles
-            if reached and mask[row]:
+            pushes = reached and bool(mask[row])
+            state.frozen[row] = 0 if (pushes and intentional) else cfg.tackle_cycles
+            if pushes:
                 outcome.pushers.append(row)
                 self._pushes.append(push)
         self.busy = True

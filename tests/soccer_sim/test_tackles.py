@@ -298,3 +298,13 @@ def test_the_success_share_matches_the_real_server():
     ours = sum(tackle_once((1.8, 0.0), rng=rng)[0].reached[0] for _ in range(trials))
     # the two shares differ by less than three binomial errors of their difference
     assert abs(ours - won) / trials < 3 * math.sqrt(2 * expected * (1 - expected) / trials)
+
+
+@pytest.mark.parametrize("opponent, foul_kept, frozen", [((1.0, 0.0), True, 0), ((30.0, 0.0), False, 10)])
+def test_a_foul_tackle_needs_an_opponent_on_the_ball_and_then_does_not_freeze(opponent, foul_kept, frozen):
+    state = WorldState((1, 1), pos=[(0.0, 0.0), opponent], ball=(0.5, 0.0))
+    tackles = Tackles(MatchConfig(), state, (-1, -1), np.random.default_rng(1))
+    outcome = tackles.resolve(state, np.array([0.0, np.nan]), np.array([True, False]), True, np.zeros((2, 4)),
+                              np.zeros(2, dtype=bool), ALL)
+    assert outcome.reached == [True] and outcome.fouls == [foul_kept]
+    assert state.frozen[0] == frozen
