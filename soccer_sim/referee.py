@@ -15,9 +15,10 @@ holds its ``Referee`` subclasses. In order: :class:`~soccer_sim.rules.restarts.B
 ``RuleConfig.offside``), :class:`~soccer_sim.rules.goal_kick.GoalKickJudge` (with
 ``goal_kick_leaves_area``), :class:`~soccer_sim.rules.restarts.TouchJudge` (last touch),
 :class:`~soccer_sim.analysis.plays.PlayAnalysis` (PASS and SHOT events),
-:class:`~soccer_sim.rules.goalkeeper.GoalkeeperJudge` (catch, hold, back pass) and
-:class:`~soccer_sim.rules.stuck_ball.BallStuckJudge` (unless ``stuck_ball_cycles`` is None).
-:meth:`Referee.add_judge` appends another.
+:class:`~soccer_sim.rules.goalkeeper.GoalkeeperJudge` (catch, hold, back pass),
+:class:`~soccer_sim.rules.stuck_ball.BallStuckJudge` (unless ``stuck_ball_cycles`` is None)
+and :class:`~soccer_sim.rules.fouls.FoulJudge` (fouls and cards after tackles, with
+``TackleConfig.enabled``). :meth:`Referee.add_judge` appends another.
 
 Cycle bookkeeping: ``state.mode_start`` is the first cycle in which the teams act under the
 current play mode. A mode set while judging cycle ``c`` starts at ``c + 1``; the opening
@@ -39,8 +40,10 @@ toucher (of the other team on an own goal, then ``detail`` = 1). ``OUT``: team/p
 toucher, detail 0 for a touchline, 1 for a goal line. ``TOUCH``: a body touch, recorded once
 per continuous contact. ``SET_PLAY``: team = mode team (NO_TEAM in play on), player = the
 kicker when a kick started play on, detail = the PlayMode value. ``DROP_BALL``: detail = the
-set play that timed out. ``OFFSIDE``: the offender and its position. ``PASS`` and ``SHOT``:
-see :mod:`soccer_sim.analysis.plays`. Other event positions are the ball's, absolute frame.
+set play that timed out. ``OFFSIDE``: the offender and its position. ``TACKLE``, ``FOUL``,
+``YELLOW_CARD``, ``RED_CARD``: see :mod:`soccer_sim.tackles` and :mod:`soccer_sim.rules.fouls`.
+``PASS`` and ``SHOT``: see :mod:`soccer_sim.analysis.plays`. Other event positions are the
+ball's, absolute frame.
 """
 
 from __future__ import annotations
