@@ -223,13 +223,9 @@ class WorldState:
         """Player row (0..P-1) of the goalkeeper holding the ball, or NO_PLAYER."""
         self.last_touch = last_touch
         """Player row that last kicked or touched the ball, or NO_PLAYER."""
-        self.frozen = np.zeros(players, dtype=np.int64)
-        """(P,) cycles during which each player cannot act after a tackle or being fouled: its
-        commands are ignored while the count is above zero (it falls by one every cycle)."""
-        self.cards = np.zeros(players, dtype=np.int64)
-        """(P,) yellow cards of each player (2 once sent off, as rcssserver counts a red card)."""
-        self.present = np.ones(players, dtype=bool)
-        """(P,) False for a player sent off: parked off the pitch, its commands ignored."""
+        self._frozen = np.zeros(players, dtype=np.int64)
+        self._cards = np.zeros(players, dtype=np.int64)
+        self._present = np.ones(players, dtype=bool)
 
     def _allocate(self, table: np.ndarray, stamina: np.ndarray, effort: np.ndarray, recovery: np.ndarray,
                   capacity: np.ndarray, score: np.ndarray) -> None:
@@ -259,6 +255,12 @@ class WorldState:
     capacity = _owned("_capacity", "capacity",
                       "(P,) stamina each player can still recover in this half (inf: unlimited).")
     score = _owned("_score", "score", "(home, away) goals.")
+    frozen = _owned("_frozen", "frozen", "(P,) cycles during which each player cannot act after a tackle or being "
+                    "fouled: its commands are ignored while the count is above zero (it falls by one every cycle).")
+    cards = _owned("_cards", "cards", "(P,) yellow cards of each player (2 once sent off, as rcssserver counts a red "
+                   "card).")
+    present = _owned("_present", "present", "(P,) False for a player sent off: parked off the pitch, its commands "
+                     "ignored.")
 
     # --- copies and pickling: the views are rebuilt on the copied table --------------------
     def __getstate__(self) -> dict[str, object]:

@@ -308,3 +308,11 @@ def test_a_foul_tackle_needs_an_opponent_on_the_ball_and_then_does_not_freeze(op
                               np.zeros(2, dtype=bool), ALL)
     assert outcome.reached == [True] and outcome.fouls == [foul_kept]
     assert state.frozen[0] == frozen
+
+
+def test_the_states_tackle_arrays_cannot_be_replaced():
+    state = WorldState((2, 1))
+    assert state.present.tolist() == [True] * 3 and state.frozen.tolist() == [0] * 3 and state.cards.tolist() == [0] * 3
+    for name in ("present", "frozen", "cards"):
+        with pytest.raises(AttributeError, match=f"WorldState.{name} cannot be replaced"):
+            setattr(state, name, getattr(state, name).copy())
