@@ -27,7 +27,7 @@ def _towards(vector: np.ndarray, gain: float = 12.0) -> np.ndarray:
 
 def scripted_policy(observation: np.ndarray) -> np.ndarray:
     """One player's action from its own observation."""
-    n = (len(observation) - 26) // 8
+    n = (len(observation) - 26) // 10  # 12 + 14 values, and 4 + 1 per player of two sides of n
     me, ball = observation[0:2], observation[6:8]
     mates = observation[12:12 + 4 * n].reshape(n, 4)[:, :2]
     index = int(np.argmin(np.hypot(*(mates - me).T)))

@@ -8,7 +8,8 @@ deterministic match loop, the Team interface and the team registry. Play a match
     result.score  # (home goals, away goals)
 """
 
-from soccer_sim.config import ConfigError, FieldConfig, MatchConfig, PhysicsConfig, RuleConfig, StaminaConfig
+from soccer_sim.config import (ConfigError, FieldConfig, MatchConfig, PhysicsConfig, RuleConfig, StaminaConfig,
+                               TackleConfig)
 from soccer_sim.errors import SoccerSimError
 from soccer_sim.match import Match, MatchResult, run_match
 from soccer_sim.recorder import Recorder
@@ -22,7 +23,7 @@ from soccer_sim.team import SideInfo, Team, TeamCommand, TeamError, TeamView
 __all__ = [
     "AWAY", "HOME", "ConfigError", "EventKind", "EventLog", "FieldConfig", "Match", "MatchConfig",
     "MatchResult", "MatchSetup", "PhysicsConfig", "PlayMode", "Recorder", "RuleConfig", "Scenario",
-    "ScenarioError", "SideInfo", "SoccerSimError", "StaminaConfig", "Team", "TeamCommand", "TeamError",
+    "ScenarioError", "SideInfo", "SoccerSimError", "StaminaConfig", "TackleConfig", "Team", "TeamCommand", "TeamError",
     "TeamNotFoundError", "TeamStatistics", "TeamView", "WorldState", "available_teams", "resolve_team",
     "run_match",
 ]

@@ -365,6 +365,77 @@ class RuleConfig:
 
 
 @dataclass(frozen=True)
+class TackleConfig:
+    """Tackles, fouls and cards, as rcssserver 19 models them (its parameter names in each
+    docstring; :mod:`soccer_sim.tackles` and :mod:`soccer_sim.rules.fouls` apply them).
+
+    A tackle fails with probability ``(x / tackle_dist)^e + (|y| / tackle_width)^e`` where
+    (x, y) is the ball's centre relative to the tackler's centre in the frame of its body
+    (x ahead; :func:`soccer_sim.body.facing`) and ``e`` is ``tackle_exponent`` (``foul_exponent``
+    for a foul tackle while an opponent can kick the ball); a ball behind (x <= 0) is reached
+    only up to ``tackle_back_dist``.
+    """
+
+    enabled: bool = True
+    """Whether tackle commands are obeyed (False: ignored, as if never given)."""
+    tackle_dist: float = 2.0
+    """How far ahead of the body a tackle reaches (m; rcssserver ``tackle_dist``)."""
+    tackle_back_dist: float = 0.0
+    """How far behind the body a tackle reaches (m; rcssserver ``tackle_back_dist``; 0: never)."""
+    tackle_width: float = 1.25
+    """How far to either side of the body a tackle reaches (m; rcssserver ``tackle_width``)."""
+    tackle_exponent: float = 6.0
+    """Exponent of the failure probability (rcssserver ``tackle_exponent``)."""
+    tackle_cycles: int = 10
+    """A tackler (successful or not, unless a successful foul tackle) cannot dash, kick or tackle
+    in the cycle of its tackle and the ``tackle_cycles - 1`` cycles after it (rcssserver
+    ``tackle_cycles``)."""
+    tackle_power_rate: float = 0.027
+    """Ball acceleration (m/cycle²) per unit of tackle power (rcssserver ``tackle_power_rate``)."""
+    max_tackle_power: float = 100.0
+    """Tackle power when pushing the ball straight ahead of the body (rcssserver ``max_tackle_power``)."""
+    max_back_tackle_power: float = 0.0
+    """Tackle power when pushing the ball straight back; in between the power falls linearly
+    with the angle (rcssserver ``max_back_tackle_power``)."""
+    tackle_rand_factor: float = 2.0
+    """Tackle noise as a multiple of ``kick_rand`` (rcssserver ``tackle_rand_factor``)."""
+    kick_rand: float = 0.1
+    """The default player type's kick noise amount, as the tackle noise scales it (rcssserver
+    ``kick_rand``): a random push of up to ``kick_rand * tackle_rand_factor * (pos_rate +
+    speed_rate)`` m/cycle in a uniform direction, the rates within [0.5, 1] growing with the
+    success probability and the ball's speed."""
+    foul_exponent: float = 10.0
+    """Exponent of the failure probability of a foul tackle (rcssserver ``foul_exponent``)."""
+    foul_detect_probability: float = 0.5
+    """Chance the referee sees a foul (rcssserver ``foul_detect_probability``)."""
+    foul_cycles: int = 5
+    """A player fouled by a foul tackle cannot act for this many cycles (rcssserver ``foul_cycles``)."""
+    red_card_probability: float = 0.0
+    """Chance that a carded foul is a straight red card (rcssserver ``red_card_probability``;
+    a second yellow card is always a red one)."""
+
+    def validate(self) -> None:
+        if not isinstance(self.enabled, bool):
+            raise ConfigError(f"TackleConfig.enabled must be a bool, got {self.enabled!r}")
+        _require_positive(self, "tackle_dist", "tackle_width", "tackle_exponent", "foul_exponent")
+        for name in ("tackle_back_dist", "tackle_power_rate", "max_tackle_power", "max_back_tackle_power",
+                     "tackle_rand_factor", "kick_rand"):
+            value = getattr(self, name)
+            if not (_is_real(value) and math.isfinite(value) and value >= 0):
+                raise ConfigError(f"TackleConfig.{name} must be a finite number >= 0, got {value!r}")
+        _require_fraction(self, "foul_detect_probability", "red_card_probability")
+        for name in ("tackle_cycles", "foul_cycles"):
+            value = getattr(self, name)
+            if not (_is_integer(value) and value >= 0):
+                raise ConfigError(f"TackleConfig.{name} must be a non-negative integer, got {value!r}")
+
+    @property
+    def tackle_reach(self) -> float:
+        """No tackle succeeds with the ball's centre further than this from the tackler's (m)."""
+        return math.hypot(max(self.tackle_dist, self.tackle_back_dist), self.tackle_width)
+
+
+@dataclass(frozen=True)
 class MatchConfig:
     """Everything that, with the two teams and the seed, determines a match."""
 
@@ -372,6 +443,8 @@ class MatchConfig:
     physics: PhysicsConfig = default_of(default_factory=PhysicsConfig)
     stamina: StaminaConfig = default_of(default_factory=StaminaConfig)
     rules: RuleConfig = default_of(default_factory=RuleConfig)
+    tackles: TackleConfig = default_of(default_factory=TackleConfig)
+    """Tackles, fouls and cards (rcssserver's)."""
     players_per_team: int = 11
     max_cycles: int | None = None
     """Stop after this many cycles (None: two full halves)."""
@@ -381,7 +454,7 @@ class MatchConfig:
 
     def validate(self) -> None:
         for name, kind in (("field", FieldConfig), ("physics", PhysicsConfig), ("stamina", StaminaConfig),
-                           ("rules", RuleConfig)):
+                           ("rules", RuleConfig), ("tackles", TackleConfig)):
             part = getattr(self, name)
             if not isinstance(part, kind):
                 raise ConfigError(f"MatchConfig.{name} must be a {kind.__name__}, got {type(part).__name__}")

@@ -7,8 +7,10 @@ One cycle (100 ms of game time by default):
    into the absolute frame (:mod:`soccer_sim.view`);
 2. before a kick-off and in the pause after a goal, teams may place their players
    (``TeamCommand.move``);
-3. kicks by players allowed by the referee with the ball within reach (or held);
-4. the referee judges the kicks and the goalkeepers' catch requests;
+3. tackles (:mod:`soccer_sim.tackles`; players frozen after a tackle or sent off do nothing),
+   then kicks by players allowed by the referee with the ball within reach (or held), then
+   the successful tackles' pushes;
+4. the referee judges the kicks, the tackles (fouls, cards) and the goalkeepers' catch requests;
 5. dashes, the stamina model and movement noise (:mod:`soccer_sim.kinematics`; players are
    restored at the start of each half);
 6. the collision solver moves everything for one cycle, in as many sub-steps as needed so
@@ -20,7 +22,8 @@ One cycle (100 ms of game time by default):
 
 A match is a pure function of (teams, config, scenario, seed): all randomness comes from
 generators spawned from ``numpy.random.SeedSequence(seed)`` (the physics noise first, then one
-per team, home first, then the scenario's start-state draws), and nothing else is random.
+per team, home first, then the scenario's start-state draws, then the tackles' and the foul
+decisions' draws, made only when somebody tackles), and nothing else is random.
 
 A :class:`~soccer_sim.scenarios.Scenario` sets the sides' sizes (player rows ``0..h-1`` home,
 ``h..h+a-1`` away), the start state, the opening play mode, the rules it switches and the end
@@ -48,6 +51,7 @@ from soccer_sim.scenarios.scenario import Scenario, line_up
 from soccer_sim.setup import MatchSetup, resolve_scenario
 from soccer_sim.state import AWAY, HOME, NO_PLAYER, NO_TEAM, EventLog, PlayMode, WorldState
 from soccer_sim.statistics import StatisticsRecorder, TeamStatistics
+from soccer_sim.tackles import TackleOutcome, Tackles
 from soccer_sim.team import Team, TeamError
 from soccer_sim.view import TeamFrame
 
@@ -127,7 +131,7 @@ class Match:
         self.goalies = setup.goalies
         """Each side's goalkeeper index within the side (-1: none)."""
         n2 = sizes[0] + sizes[1]
-        physics_seq, home_seq, away_seq, scenario_seq = np.random.SeedSequence(self.seed).spawn(4)
+        physics_seq, home_seq, away_seq, scenario_seq, tackle_seq = np.random.SeedSequence(self.seed).spawn(5)
         self._team_seeds = (home_seq, away_seq)
         self.end_cycle = setup.end_cycle
         """Cycles the match lasts at most."""
@@ -144,7 +148,9 @@ class Match:
                         state.recovery, state.capacity)
         """The state's arrays, looked up once (the state never replaces them)."""
         self.events = EventLog()
-        self.referee = Referee(setup, self.events)
+        tackle_rng = np.random.default_rng(tackle_seq)
+        self.referee = Referee(setup, self.events, tackle_rng)
+        self.tackles = Tackles(config, state, setup.goalie_rows, tackle_rng)
         self.physics = Physics(config, state)
         self.kinematics = Kinematics(config, n2)
         self._restore_players()
@@ -239,7 +245,14 @@ class Match:
                 if moves[team] is not None:
                     referee.apply_moves(state, team, moves[team])
 
-        # 3-4. Kicks, then the referee judges kicks and catches.
+        # 3-4. Tackles (frozen and sent-off players idle), kicks, then the referee judges
+        # kicks, tackles and catches.
+        home_frame, away_frame = self.frames
+        tackling = home_frame.tackling or away_frame.tackling
+        if tackling or self.tackles.busy:
+            tackled = self._resolve_tackles(tackling)
+        else:
+            tackled = None
         holder = state.ball_holder
         count, _ = kin.kick_candidates(pos, ball, self._kick, referee.kick_mask(state), holder, self._kicker_rows)
         if count:
@@ -250,7 +263,13 @@ class Match:
         else:
             kickers = _NO_KICKERS
         self.kickers = kickers
-        referee.on_commands(state, kickers, self._catch)
+        if tackled is not None:
+            self.tackles.push(state, tackled, count > 0)
+            referee.on_commands(state, kickers, self._catch, tackled)
+            if tackled.pushers:  # the tacklers' bodies let the pushed ball go, as a kicker's do
+                kickers = np.union1d(kickers, tackled.pushers).astype(np.int64)
+        else:
+            referee.on_commands(state, kickers, self._catch)
 
         # 5. Dashes.
         kin.dash(vel, stamina, effort, recovery, capacity, self._dash, self.noise.players)
@@ -274,6 +293,8 @@ class Match:
             self._check_end()
         if state.half != half:
             self._restore_players()  # players come back fresh for the second half
+        if self.tackles.busy:
+            self.tackles.end_cycle(state)
         state.cycle += 1
         for recorder in self.recorders:
             recorder.on_cycle(self)
@@ -293,6 +314,15 @@ class Match:
             self._catch[team], moves[team] = frame.read_command(command, sign)
             sign = -sign
         return moves
+
+    def _resolve_tackles(self, tackling: bool) -> TackleOutcome | None:
+        """The tackle phase (:meth:`Tackles.resolve`) with both teams' tackle commands."""
+        home_frame, away_frame = self.frames
+        tackle = np.concatenate([home_frame.tackle if home_frame.tackling else np.full(home_frame.n, np.nan),
+                                 away_frame.tackle if away_frame.tackling else np.full(away_frame.n, np.nan)])
+        foul = np.concatenate([home_frame.foul, away_frame.foul])
+        return self.tackles.resolve(self.state, tackle, foul, tackling, self.commands, self._catch,
+                                    self.referee.kick_mask(self.state))
 
     def _check_end(self) -> None:
         """Judge the scenario's end conditions on this cycle's events

@@ -15,9 +15,10 @@ holds its ``Referee`` subclasses. In order: :class:`~soccer_sim.rules.restarts.B
 ``RuleConfig.offside``), :class:`~soccer_sim.rules.goal_kick.GoalKickJudge` (with
 ``goal_kick_leaves_area``), :class:`~soccer_sim.rules.restarts.TouchJudge` (last touch),
 :class:`~soccer_sim.analysis.plays.PlayAnalysis` (PASS and SHOT events),
-:class:`~soccer_sim.rules.goalkeeper.GoalkeeperJudge` (catch, hold, back pass) and
-:class:`~soccer_sim.rules.stuck_ball.BallStuckJudge` (unless ``stuck_ball_cycles`` is None).
-:meth:`Referee.add_judge` appends another.
+:class:`~soccer_sim.rules.goalkeeper.GoalkeeperJudge` (catch, hold, back pass),
+:class:`~soccer_sim.rules.stuck_ball.BallStuckJudge` (unless ``stuck_ball_cycles`` is None)
+and :class:`~soccer_sim.rules.fouls.FoulJudge` (fouls and cards after tackles, with
+``TackleConfig.enabled``). :meth:`Referee.add_judge` appends another.
 
 Cycle bookkeeping: ``state.mode_start`` is the first cycle in which the teams act under the
 current play mode. A mode set while judging cycle ``c`` starts at ``c + 1``; the opening
@@ -39,11 +40,15 @@ toucher (of the other team on an own goal, then ``detail`` = 1). ``OUT``: team/p
 toucher, detail 0 for a touchline, 1 for a goal line. ``TOUCH``: a body touch, recorded once
 per continuous contact. ``SET_PLAY``: team = mode team (NO_TEAM in play on), player = the
 kicker when a kick started play on, detail = the PlayMode value. ``DROP_BALL``: detail = the
-set play that timed out. ``OFFSIDE``: the offender and its position. ``PASS`` and ``SHOT``:
-see :mod:`soccer_sim.analysis.plays`. Other event positions are the ball's, absolute frame.
+set play that timed out. ``OFFSIDE``: the offender and its position. ``TACKLE``, ``FOUL``,
+``YELLOW_CARD``, ``RED_CARD``: see :mod:`soccer_sim.tackles` and :mod:`soccer_sim.rules.fouls`.
+``PASS`` and ``SHOT``: see :mod:`soccer_sim.analysis.plays`. Other event positions are the
+ball's, absolute frame.
 """
 
 from __future__ import annotations
+
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -51,6 +56,7 @@ from soccer_sim.analysis.plays import PlayAnalysis
 from soccer_sim.rules import (
     BallOutJudge,
     BallStuckJudge,
+    FoulJudge,
     GoalKickJudge,
     GoalkeeperJudge,
     Hooks,
@@ -61,6 +67,9 @@ from soccer_sim.rules import (
 )
 from soccer_sim.setup import MatchSetup
 from soccer_sim.state import AWAY, HOME, EventKind, EventLog, PlayMode, WorldState
+
+if TYPE_CHECKING:
+    from soccer_sim.tackles import TackleOutcome
 
 _PLAY_ON = PlayMode.PLAY_ON
 _GOALIE_HOLDS = PlayMode.GOALIE_HOLDS
@@ -74,9 +83,11 @@ class Referee:
     rules in the order they hear every hook.
     """
 
-    def __init__(self, setup: MatchSetup, events: EventLog) -> None:
+    def __init__(self, setup: MatchSetup, events: EventLog, rng: np.random.Generator | None = None) -> None:
         """``setup``: the match's sides, goalkeepers, rules on/off and end
-        (:meth:`MatchSetup.resolve`; ``MatchSetup.resolve(config)`` for the regular match)."""
+        (:meth:`MatchSetup.resolve`; ``MatchSetup.resolve(config)`` for the regular match).
+        ``rng``: the generator of the foul decisions (the match's tackle generator; a fixed
+        seed, 0, when none is given)."""
         if not isinstance(setup, MatchSetup):
             raise TypeError(f"setup must be a MatchSetup (MatchSetup.resolve(config, scenario)), "
                             f"got {type(setup).__name__}")
@@ -99,6 +110,8 @@ class Referee:
         judges += [TouchJudge(modes), self.plays, self.goalkeeper]
         if r.stuck_ball_cycles is not None:
             judges.append(BallStuckJudge(modes))
+        if config.tackles.enabled:
+            judges.append(FoulJudge(modes, np.random.default_rng(0) if rng is None else rng))
         self.hooks.set(judges)
         self.kick_mask = modes.kick_mask
         """(2n,) bool: which players may kick now (:meth:`PlayModes.kick_mask`; a cached read-only
@@ -137,33 +150,52 @@ class Referee:
         if state.play_mode != _TIME_OVER:
             self.modes.time_over(state)
 
-    def on_commands(self, state: WorldState, kickers: np.ndarray, catch_requests: np.ndarray) -> None:
-        """Judge this cycle's kicks (already applied to ``state.ball_vel``) and catch requests.
+    def on_commands(self, state: WorldState, kickers: np.ndarray, catch_requests: np.ndarray,
+                    tackles: TackleOutcome | None = None) -> None:
+        """Judge this cycle's kicks and tackles (already applied to ``state.ball_vel``) and
+        catch requests.
 
         ``kickers``: int array of the player rows whose kick was applied. ``catch_requests``:
-        (2,) bool, whether the home / away goalkeeper asked to catch. Every kick is recorded
-        (KICK); the judges hear ``kick_taken`` until one stops play; otherwise a kick from a
-        set play or a held ball starts play on.
+        (2,) bool, whether the home / away goalkeeper asked to catch. ``tackles``: this
+        cycle's tackles, if any (:class:`~soccer_sim.tackles.TackleOutcome`). Every kick is
+        recorded (KICK) and every tackle (TACKLE); the judges hear ``kick_taken`` for the
+        kickers and the tacklers that pushed the ball until one stops play; otherwise a kick
+        from a set play or a held ball starts play on; then the pushing tacklers are judged
+        for fouls (``tackle_taken``).
         """
-        has_kick = len(kickers) > 0
-        if not has_kick and not (catch_requests[0] or catch_requests[1]):
+        pushers = () if tackles is None else tackles.pushers
+        has_kick = len(kickers) > 0 or len(pushers) > 0
+        if tackles is None and not has_kick and not (catch_requests[0] or catch_requests[1]):
             return
         if state.play_mode == _TIME_OVER:
             return
+        n = self._n
+        if tackles is not None:
+            bx, by = state.ball.tolist()
+            for row, reached, foul in zip(tackles.rows, tackles.reached, tackles.fouls):
+                team = HOME if row < n else AWAY
+                self.events.add(state.cycle, EventKind.TACKLE, team, row - team * n, bx, by,
+                                int(reached) + 2 * int(foul))
         if has_kick:
             rows = sorted(int(row) for row in kickers)
             mode = state.play_mode
             bx, by = state.ball.tolist()
-            n = self._n
             for row in rows:
                 team = HOME if row < n else AWAY
                 self.events.add(state.cycle, EventKind.KICK, team, row - team * n, bx, by, 0)
+            if pushers:
+                rows = sorted(set(rows) | set(pushers))
             for call in self.hooks.kick_judges:
                 if call(state, rows, mode, bx, by):
                     break
             else:
                 if mode != _PLAY_ON:
                     self.modes.set_play_taken(state, rows[0])
+                if pushers:
+                    assert tackles is not None and tackles.dashed is not None
+                    for row, foul in zip(tackles.rows, tackles.fouls):
+                        if row in pushers and state.play_mode == _PLAY_ON:
+                            self.hooks.tackle_taken(state, row, foul, tackles.dashed)
         for team in (HOME, AWAY):
             if catch_requests[team]:
                 self.goalkeeper.catch_requested(state, team, kickers)

@@ -76,6 +76,17 @@ class EventKind(IntEnum):
     BACK_PASS = 12
     """A goalkeeper tried to catch a ball kicked to it by a team-mate; the opponents get an
     indirect free kick (the following SET_PLAY event)."""
+    TACKLE = 13
+    """A player tackled; ``detail`` 1 when it reached the ball (the ball was pushed), 0 when it
+    missed, plus 2 when it was a foul tackle (``TeamCommand.foul``)."""
+    FOUL = 14
+    """The referee called a foul on ``player`` of ``team`` (the tackler); the fouled team's
+    free kick follows (the next SET_PLAY event)."""
+    YELLOW_CARD = 15
+    """A yellow card for ``player`` of ``team``; ``detail`` is its number of yellow cards."""
+    RED_CARD = 16
+    """A red card for ``player`` of ``team`` (a second yellow one, or a straight red one): it is
+    sent off for the rest of the match."""
 
 
 @dataclass
@@ -212,6 +223,9 @@ class WorldState:
         """Player row (0..P-1) of the goalkeeper holding the ball, or NO_PLAYER."""
         self.last_touch = last_touch
         """Player row that last kicked or touched the ball, or NO_PLAYER."""
+        self._frozen = np.zeros(players, dtype=np.int64)
+        self._cards = np.zeros(players, dtype=np.int64)
+        self._present = np.ones(players, dtype=bool)
 
     def _allocate(self, table: np.ndarray, stamina: np.ndarray, effort: np.ndarray, recovery: np.ndarray,
                   capacity: np.ndarray, score: np.ndarray) -> None:
@@ -241,6 +255,12 @@ class WorldState:
     capacity = _owned("_capacity", "capacity",
                       "(P,) stamina each player can still recover in this half (inf: unlimited).")
     score = _owned("_score", "score", "(home, away) goals.")
+    frozen = _owned("_frozen", "frozen", "(P,) cycles during which each player cannot act after a tackle or being "
+                    "fouled: its commands are ignored while the count is above zero (it falls by one every cycle).")
+    cards = _owned("_cards", "cards", "(P,) yellow cards of each player (2 once sent off, as rcssserver counts a red "
+                   "card).")
+    present = _owned("_present", "present", "(P,) False for a player sent off: parked off the pitch, its commands "
+                     "ignored.")
 
     # --- copies and pickling: the views are rebuilt on the copied table --------------------
     def __getstate__(self) -> dict[str, object]:

@@ -101,6 +101,16 @@ class TeamView:
     capacity: np.ndarray | None = None
     """(n,) stamina each player can still recover in this half (inf: unlimited; the default
     of a view built by hand)."""
+    present: np.ndarray | None = None
+    """(n,) bool: False for a player sent off (red card). It stays in every array (its row
+    keeps its place), parked off the pitch, and its commands are ignored. A view built by
+    hand without it has everybody present."""
+    opp_present: np.ndarray | None = None
+    """(m,) bool: the same for the opponents."""
+    frozen: np.ndarray | None = None
+    """(n,) int: cycles during which each player still cannot act (after a tackle,
+    ``TackleConfig.tackle_cycles``, or after being fouled, ``foul_cycles``); its commands are
+    ignored while above zero. Zeros in a view built by hand."""
 
     def __post_init__(self) -> None:
         n = len(self.stamina)
@@ -108,6 +118,12 @@ class TeamView:
             self.effort = np.ones(n)
         if self.capacity is None:
             self.capacity = np.full(n, np.inf)
+        if self.present is None:
+            self.present = np.ones(n, dtype=bool)
+        if self.opp_present is None:
+            self.opp_present = np.ones(len(self.opp_pos), dtype=bool)
+        if self.frozen is None:
+            self.frozen = np.zeros(n, dtype=np.int64)
 
 
 @dataclass(slots=True)
@@ -131,6 +147,19 @@ class TeamCommand:
     move: np.ndarray | None = None
     """(n, 2) placement targets, honoured only before a kick-off and in the pause after a goal
     (play modes KICK_OFF and AFTER_GOAL; the referee clamps them into the team's own half)."""
+    tackle: np.ndarray | None = None
+    """(n,) tackle directions in degrees, own frame (0: towards +x, the opponents' goal; 90:
+    towards +y), NaN for players that do not tackle; None: nobody tackles. rcssserver's
+    ``(tackle DIR)``: a tackle reaches ``TackleConfig.tackle_dist`` ahead of the player's body
+    (:func:`soccer_sim.body.facing`; at rest a player faces the ball) and succeeds with a
+    probability that falls with the ball's distance and offset; a successful one pushes the
+    ball in this direction, hardest straight ahead of the body. A tackling player neither
+    dashes nor kicks this cycle and cannot act for ``tackle_cycles`` cycles in all."""
+    foul: np.ndarray | None = None
+    """(n,) bool: the tackle of that player is a foul tackle (rcssserver's ``(tackle DIR on)``):
+    while an opponent can kick the ball it succeeds more easily (``foul_exponent``), does not
+    freeze the tackler, stops the opponents that can kick the ball for ``foul_cycles``, and is
+    carded when the referee sees it. None: no foul tackles."""
 
 
 @runtime_checkable

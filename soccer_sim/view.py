@@ -19,6 +19,13 @@ from soccer_sim.state import NO_PLAYER, StateError, WorldState
 from soccer_sim.team import TeamCommand, TeamError, TeamView
 
 
+def _read_only(view: np.ndarray) -> np.ndarray:
+    """A read-only window on ``view`` (the state keeps writing into the array behind it)."""
+    window = view.view()
+    window.flags.writeable = False
+    return window
+
+
 class TeamFrame:
     """One team's window on the world: builds its :class:`TeamView` and reads its commands.
 
@@ -49,8 +56,16 @@ class TeamFrame:
         self.view = TeamView(
             own_pos=self._pos[own], own_vel=self._vel[own], opp_pos=self._pos[opp], opp_vel=self._vel[opp],
             ball=self._pos[total], ball_vel=self._vel[total], stamina=np.empty(n), effort=np.empty(n),
-            capacity=np.empty(n),
+            capacity=np.empty(n), present=_read_only(state.present[own]), opp_present=_read_only(state.present[opp]),
+            frozen=_read_only(state.frozen[own]),
         )
+        self.tackling = False
+        """Whether the last command read asked any player to tackle (then :attr:`tackle` and
+        :attr:`foul` hold it)."""
+        self.tackle = np.full(n, np.nan)
+        """(n,) the last command's tackle directions, absolute frame, radians (NaN: none)."""
+        self.foul = np.zeros(n, dtype=bool)
+        """(n,) the last command's foul flags."""
         self._commands = commands[self.rows]
         self._dash = self._commands[:, 0:2]
         self._kick = self._commands[:, 2:4]
@@ -102,7 +117,39 @@ class TeamFrame:
         catch = command.catch
         if type(catch) is not bool:
             catch = self._as_flag(catch, "catch")
+        if command.tackle is not None:
+            self.tackling = self._read_tackle(command.tackle, command.foul, sign)
+        elif self.tackling:
+            self.tackling = False
         return catch, move
+
+    def _read_tackle(self, tackle: object, foul: object, sign: int) -> bool:
+        """Validate the tackle directions (degrees, own frame, NaN for none) and foul flags
+        into :attr:`tackle` (radians, absolute frame) and :attr:`foul`; whether anybody tackles."""
+        n = self.n
+        if isinstance(tackle, np.ndarray) and tackle.dtype.kind not in "fiu":
+            raise TeamError(self.name, f"command.tackle must be numeric, got dtype {tackle.dtype}")
+        try:
+            degrees = np.asarray(tackle, dtype=np.float64)
+        except (TypeError, ValueError) as exc:
+            raise TeamError(self.name, f"command.tackle is not a numeric array ({exc})") from exc
+        if degrees.shape != (n,):
+            raise TeamError(self.name, f"command.tackle must have shape {(n,)}, got {degrees.shape}")
+        bad = np.flatnonzero(np.isinf(degrees))
+        if bad.size:
+            raise TeamError(self.name, f"command.tackle is infinite: {degrees[bad[0]]}", player=int(bad[0]))
+        if foul is None:
+            self.foul[:] = False
+        else:
+            flags = np.asarray(foul)
+            if flags.shape != (n,) or flags.dtype.kind not in "bi":
+                raise TeamError(self.name, f"command.foul must be a bool array of shape {(n,)}, "
+                                           f"got {flags.dtype} of shape {flags.shape}")
+            self.foul[:] = flags != 0
+        np.radians(degrees, out=self.tackle)
+        if sign < 0:
+            self.tackle += np.pi
+        return bool(np.isfinite(self.tackle).any())
 
     def _as_flag(self, value: object, field_name: str) -> bool:
         """``value`` as a bool if it is one (Python or numpy) or the integer 0 or 1, else a TeamError."""

@@ -9,7 +9,9 @@ from soccer_sim.state import EventKind, PlayMode
 _EVENT_NAMES = {EventKind.KICK: "kick", EventKind.PASS: "pass", EventKind.SHOT: "shot", EventKind.GOAL: "GOAL",
                 EventKind.CATCH: "catch", EventKind.OUT: "ball out", EventKind.SET_PLAY: "set play",
                 EventKind.OFFSIDE: "offside", EventKind.DROP_BALL: "dropped ball", EventKind.HALF_TIME: "half time",
-                EventKind.TIME_OVER: "time over", EventKind.TOUCH: "touch", EventKind.BACK_PASS: "back-pass"}
+                EventKind.TIME_OVER: "time over", EventKind.TOUCH: "touch", EventKind.BACK_PASS: "back-pass",
+                EventKind.TACKLE: "tackle", EventKind.FOUL: "foul", EventKind.YELLOW_CARD: "yellow card",
+                EventKind.RED_CARD: "red card"}
 
 
 def describe_event(names: tuple[str, str], kind: int, team: int, player: int, x: float, y: float,

@@ -26,7 +26,11 @@ next                       1       1 when the current set play is ours
 next                       2       goals for, goals against
 next                       1       match time: cycle / total cycles
 next                       1       half: 0 first, 1 second
+next                       n       every team-mate by shirt number: 1 on the pitch, 0 sent off
+next                       m       every opponent by shirt number: 1 on the pitch, 0 sent off
 =========================  ======  ==========================================================
+
+A player sent off keeps its rows (parked off the pitch) and its actions are ignored.
 
 Action of one player (float32, 5 values in [-1, 1]; values outside are clipped): ``0:2`` the
 dash, scaled to the largest acceleration (``dash_power_max * dash_power_rate`` m/cycle²);
@@ -53,7 +57,7 @@ _TAIL = MODES + 1 + 2 + 1 + 1
 
 def observation_size(n: int, m: int) -> int:
     """Values in one player's observation, for ``n`` team-mates (self included) and ``m`` opponents."""
-    return 12 + 4 * n + 4 * m + _TAIL
+    return 12 + 4 * n + 4 * m + _TAIL + n + m
 
 
 @dataclass(frozen=True)
@@ -116,6 +120,8 @@ class ObservationBuilder:
         tail[:, MODES + 2] = view.score[1]
         tail[:, MODES + 3] = view.cycle / s.total_cycles
         tail[:, MODES + 4] = view.half
+        tail[:, _TAIL:_TAIL + self.n] = view.present
+        tail[:, _TAIL + self.n:] = view.opp_present
         return out.copy()
 
 

@@ -22,22 +22,26 @@ ball_placed        (``award*`` helpers)  a restart put the ball on its spot
 ball_dropped       (``awardDropBall``)   a stuck ball was dropped where it lies (play goes on)
 goal_scored        (``TouchRef`` goal)   a goal, before its GOAL event
 half_time          (``TimeRef``)         the ends are changed
+tackle_taken       ``tackleTaken``       a tackle pushed the ball (after the kick judges)
 ================== ===================== =====================================================
 
 ``kick_taken``, ``ball_touched`` and ``analyse`` return True when the judge stopped play (a
-restart, or the ball out of the field): the judges after it do not see that event. Fouls and
-tackles (rcssserver's ``FoulRef``, ``tackleTaken``, ``failedTackleTaken``) would come as new
-hooks and a new judge.
+restart, or the ball out of the field): the judges after it do not see that event. A tackle
+that pushes the ball is a kick to the ``kick_taken`` judges (rcssserver's judges treat
+``tackleTaken`` as ``kickTaken``), and then ``tackle_taken`` lets the foul judge
+(:mod:`soccer_sim.rules.fouls`) decide on fouls and cards.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
+import numpy as np
+
 from soccer_sim.state import PlayMode, WorldState
 
 HOOKS = ("kick_taken", "ball_touched", "ball_caught", "analyse", "play_mode_change", "ball_placed",
-         "ball_dropped", "goal_scored", "half_time")
+         "ball_dropped", "goal_scored", "half_time", "tackle_taken")
 """The hook names, in the order of the table above."""
 
 
@@ -82,6 +86,10 @@ class Judge:
 
     def half_time(self, state: WorldState) -> None:
         """Half time: the teams have changed ends."""
+
+    def tackle_taken(self, state: WorldState, row: int, foul: bool, dashed: np.ndarray) -> None:
+        """``row``'s tackle pushed the ball (``foul``: a foul tackle); ``dashed``: (P,) bool,
+        which players asked to dash this cycle (``tackleTaken``)."""
 
 
 def overrides(judge: Judge, hook: str) -> bool:
@@ -149,3 +157,7 @@ class Hooks:
     def half_time(self, state: WorldState) -> None:
         for call in self._calls["half_time"]:
             call(state)
+
+    def tackle_taken(self, state: WorldState, row: int, foul: bool, dashed: np.ndarray) -> None:
+        for call in self._calls["tackle_taken"]:
+            call(state, row, foul, dashed)

@@ -30,14 +30,16 @@ _OFFSIDE_MODES = frozenset({PlayMode.PLAY_ON, PlayMode.FREE_KICK, PlayMode.KICK_
 
 
 def mark_offside_positions(pos: np.ndarray, n: int | tuple[int, int], team: int, direction: int, ball_x: float,
-                           kickers: Sequence[int] | np.ndarray, out: np.ndarray) -> float | None:
+                           kickers: Sequence[int] | np.ndarray, out: np.ndarray,
+                           present: np.ndarray | None = None) -> float | None:
     """Write into ``out`` ((P,) bool) which players of ``team`` are in an offside position.
 
     ``pos`` is the (P, 2) absolute player positions (home rows first), ``n`` the players per
     side (an int for two even sides, or (home, away)), ``direction`` the kicking team's attack
     direction (+1 towards +x), ``ball_x`` the ball's x when kicked and ``kickers`` the rows
-    that kicked (never marked). With fewer than two opponents there is no second-last
-    opponent; the opponents' goal line takes its place, so nobody is offside.
+    that kicked (never marked). ``present`` ((P,) bool, optional): players sent off count
+    neither as opponents nor as marked players. With fewer than two opponents there is no
+    second-last opponent; the opponents' goal line takes its place, so nobody is offside.
     Returns the offside line's x (absolute frame) if any player was marked, else None.
     """
     home, away = (n, n) if isinstance(n, (int, np.integer)) else n
@@ -45,9 +47,12 @@ def mark_offside_positions(pos: np.ndarray, n: int | tuple[int, int], team: int,
     own = slice(0, home) if team == 0 else slice(home, total)
     opp = slice(home, total) if team == 0 else slice(0, home)
     m = away if team == 0 else home
+    opp_x = pos[opp, 0]
+    if present is not None:
+        opp_x = opp_x[present[opp]]
+        m = len(opp_x)
     if m >= 2:
         # Second-last opponent: the second-largest depth among the opponents.
-        opp_x = pos[opp, 0]
         second_last = (float(np.partition(opp_x, m - 2)[m - 2]) if direction > 0
                        else -float(np.partition(opp_x, 1)[1]))
     else:
@@ -58,6 +63,8 @@ def mark_offside_positions(pos: np.ndarray, n: int | tuple[int, int], team: int,
     marks = out[own]
     np.greater(pos[own, 0] * direction, line, out=marks)
     out[kickers] = False
+    if present is not None:
+        out &= present
     return direction * line if np.count_nonzero(marks) > 0 else None
 
 
@@ -125,8 +132,9 @@ class OffsideJudge(Judge):
         n = self.modes.n
         team = HOME if rows[0] < n else AWAY
         if (rows[-1] < n) == (team == HOME) and mode in _OFFSIDE_MODES:
-            line = mark_offside_positions(
-                state.pos, self.modes.sizes, team, state.attack_direction(team), ball_x, rows, self._marks)
+            present = None if state.present.all() else state.present
+            line = mark_offside_positions(state.pos, self.modes.sizes, team, state.attack_direction(team), ball_x,
+                                          rows, self._marks, present)
             self._pending = line is not None
             if line is not None:
                 self._rows = np.flatnonzero(self._marks)

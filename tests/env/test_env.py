@@ -74,6 +74,13 @@ def test_observations_follow_the_documented_layout() -> None:
     tail = 12 + 8 * n
     assert left[tail + 1] == 1 and left[tail + 9] == 1  # kick-off, and it is ours
     assert right[tail + 9] == 0
+    presence = tail + 14  # after the 9 play modes, ours, two scores, time and half
+    assert left.shape == (presence + 2 * n,) and (left[presence:] == 1).all()
+    state.present[[3, 11 + 4]] = False  # a left player and a right player sent off
+    observations, *_ = environment.step({agent: np.zeros(5, dtype=np.float32) for agent in environment.agents})
+    left, right = observations["left_9"], observations["right_9"]
+    assert np.flatnonzero(left[presence:] == 0).tolist() == [3, n + 4]  # team-mates, then opponents
+    assert np.flatnonzero(right[presence:] == 0).tolist() == [4, n + 3]
 
 
 def test_spaces_are_the_same_objects_every_call() -> None:

@@ -3,13 +3,14 @@
 import pytest
 
 from soccer_sim.analysis import PlayAnalysis
+from soccer_sim.config import MatchConfig, TackleConfig
 from soccer_sim.referee import Referee
 from soccer_sim.setup import MatchSetup
 from soccer_sim.rules import HOOKS, Hooks, Judge, PlayModes
 from soccer_sim.state import AWAY, HOME, EventKind, EventLog, PlayMode
 from tests.soccer_sim.referee_world import N, catch, config_with, kick, kinds, make_world, step
 
-DEFAULT_ORDER = ["ball_out", "offside", "goal_kick", "touch", "plays", "goalkeeper", "stuck_ball"]
+DEFAULT_ORDER = ["ball_out", "offside", "goal_kick", "touch", "plays", "goalkeeper", "stuck_ball", "fouls"]
 
 
 class Recorder(Judge):
@@ -69,6 +70,11 @@ def test_default_judges_in_order():
 def test_a_rule_switched_off_has_no_judge(rules, missing):
     ref, _, _ = make_world(config=config_with(**rules))
     assert names(ref) == [name for name in DEFAULT_ORDER if name != missing]
+
+
+def test_tackles_switched_off_have_no_foul_judge():
+    ref, _, _ = make_world(config=MatchConfig(tackles=TackleConfig(enabled=False)))
+    assert names(ref) == [name for name in DEFAULT_ORDER if name != "fouls"]
 
 
 def test_offside_switched_off_lets_a_player_in_an_offside_position_play():
@@ -161,7 +167,7 @@ def test_hooks_call_only_the_judges_that_override_them():
     hooks = Hooks([only, rec])
     assert [c.__self__ for c in hooks.analyse_judges] == [only, rec]
     assert [c.__self__ for c in hooks.kick_judges] == [rec]
-    assert len(HOOKS) == 9 and all(hasattr(Judge, h) for h in HOOKS)
+    assert len(HOOKS) == 10 and all(hasattr(Judge, h) for h in HOOKS)
 
 
 def test_play_analysis_is_the_one_pass_and_shot_definition():
