@@ -4,7 +4,8 @@
 * possession share: the share of the cycles in which the team's players touched the ball
   last, among the cycles in which anybody had (:mod:`soccer_sim.analysis.possession`, the
   definition replays use too);
-* tackles, tackles won, fouls, yellow and red cards, free kicks awarded: from the event log;
+* tackles, tackles won, fouls, yellow and red cards: from the event log (set plays, free kicks
+  included, are counted by the match report);
 * teammate contacts: new body contacts between two players of the team (the collision solver
   counts them; the role-assignment literature expects good assignment to avoid them);
 * distance run: the sum over cycles of every player's displacement (m). Jumps longer than
@@ -23,7 +24,7 @@ import numpy as np
 
 from soccer_sim.analysis.possession import Possession
 from soccer_sim.kernels import add_distances
-from soccer_sim.state import AWAY, HOME, EventKind, PlayMode
+from soccer_sim.state import AWAY, HOME, EventKind
 from soccer_sim.team import TeamError
 from soccer_sim.team_hooks import ReportsStatistics
 
@@ -56,9 +57,6 @@ class TeamStatistics:
     """Tackles that reached the ball."""
     fouls: int = 0
     """Fouls called on the team's players (FOUL events)."""
-    free_kicks: int = 0
-    """Free kicks awarded to the team (after a foul, an offside, a back pass or a goalkeeper
-    holding too long)."""
     yellow_cards: int = 0
     red_cards: int = 0
     reported: dict[str, float] = field(default_factory=dict)
@@ -70,7 +68,7 @@ class TeamStatistics:
             "goals": self.goals, "shots": self.shots, "kicks": self.kicks, "passes": self.passes,
             "possession": self.possession, "teammate_contacts": self.teammate_contacts,
             "distance_run": self.distance_run, "tackles": self.tackles, "tackles_won": self.tackles_won,
-            "fouls": self.fouls, "free_kicks": self.free_kicks, "yellow_cards": self.yellow_cards,
+            "fouls": self.fouls, "yellow_cards": self.yellow_cards,
             "red_cards": self.red_cards,
         }
         values.update(self.reported)
@@ -101,7 +99,6 @@ class StatisticsRecorder:
         events = match.events.as_arrays()
         kinds, teams, details = events["kind"], events["team"], events["detail"]
         tackles = kinds == EventKind.TACKLE
-        free_kicks = (kinds == EventKind.SET_PLAY) & (details == PlayMode.FREE_KICK)
         n = self._n
         stats = []
         for team in (HOME, AWAY):
@@ -118,7 +115,6 @@ class StatisticsRecorder:
                 tackles=int(np.count_nonzero(mine & tackles)),
                 tackles_won=int(np.count_nonzero(mine & tackles & (details % 2 == 1))),
                 fouls=int(np.count_nonzero(mine & (kinds == EventKind.FOUL))),
-                free_kicks=int(np.count_nonzero(mine & free_kicks)),
                 yellow_cards=int(np.count_nonzero(mine & (kinds == EventKind.YELLOW_CARD))),
                 red_cards=int(np.count_nonzero(mine & (kinds == EventKind.RED_CARD))),
                 reported=reported,
