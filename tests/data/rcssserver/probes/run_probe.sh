@@ -19,7 +19,7 @@ esac
 exec unshare -n bash -c '
   set -euo pipefail
   ip link set lo up
-  mkdir -p "$0/probe-home"
+  mkdir -p "$0/probe-home"; cd "$0/probe-home"   # the server may write ./~/.rcssserver
   HOME="$0/probe-home" LD_LIBRARY_PATH="$0/install/lib" "$0/install/bin/rcssserver" \
     server::port=$1 server::coach_port=$(($1 + 1)) server::olcoach_port=$(($1 + 2)) \
     server::synch_mode=true server::coach=true server::game_logging=false server::text_logging=false \
