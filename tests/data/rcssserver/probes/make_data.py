@@ -22,9 +22,15 @@ PARAMS = {
 }
 
 
+OPTIONS = ("server::synch_mode=true server::coach=true server::game_logging=false "
+           "server::text_logging=false, and per mode: clean/referee server::player_rand=0 server::ball_rand=0 "
+           "server::kick_rand=0; kicknoise server::player_rand=0 server::ball_rand=0; referee also "
+           "server::coach_w_referee=true (see run_probe.sh)")
+
+
 def meta(modes: list[str], what: str) -> dict:
     return {"server": SERVER, "recorded": datetime.date.today().isoformat(), "what": what,
-            "server_parameters": {m: PARAMS[m] for m in modes},
+            "server_options": OPTIONS, "server_parameters": {m: PARAMS[m] for m in modes},
             "script": "tests/data/rcssserver/probes/record.py " + "|".join(modes) + " (trimmed by make_data.py)",
             "frame": "x, y in metres, the tackler/kicker/runner at the origin or as given, facing +x "
                      "(body 0) unless given; 'state 0' is after the setup cycle"}
