@@ -117,6 +117,18 @@ def direction(degrees: float, length: float = FULL) -> tuple[float, float]:
     return length * math.cos(math.radians(degrees)), length * math.sin(math.radians(degrees))
 
 
+@pytest.mark.parametrize("name", ["dash", "kick", "contact", "noise", "tackle"])
+def test_reference_files_say_where_they_come_from(name: str) -> None:
+    """Each trace names the server version, its options and parameters, the recording date and
+    the script that made it (tests/data/rcssserver/probes/README.md: how to re-record)."""
+    meta = trace(name)["meta"]
+    assert meta["server"].startswith("rcssserver 19.")
+    assert meta["server_options"] and meta["server_parameters"] and meta["what"]
+    assert len(meta["recorded"]) == 10 and meta["recorded"][4] == "-"
+    script = meta["script"].split()[0]
+    assert (DATA.parents[2] / script).is_file(), script
+
+
 # ---------------------------------------------------------------------------- dashes and stamina
 
 
