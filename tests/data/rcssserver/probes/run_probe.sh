@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Records one probe MODE into RAW_OUT.json: starts rcssserver (synchronous, trainer mode, no logs) in a
-# private network namespace (only loopback exists there, so it listens on 127.0.0.1 alone), runs
+# private network namespace (unshare -rn: no root needed; only loopback exists there, so it listens on 127.0.0.1 alone), runs
 # record.py against it, then stops that server by its PID.
 # usage: run_probe.sh MODE RAW_OUT.json        (RCSS_HOME: where build.sh installed the server)
 set -euo pipefail
@@ -16,7 +16,7 @@ case $mode in
   referee)   extra="$noise_off server::coach_w_referee=true" ;;
   *) echo "unknown mode: $mode" >&2; exit 2 ;;
 esac
-exec unshare -n bash -c '
+exec unshare -rn bash -c '
   set -euo pipefail
   ip link set lo up
   mkdir -p "$0/probe-home"; cd "$0/probe-home"   # the server may write ./~/.rcssserver
