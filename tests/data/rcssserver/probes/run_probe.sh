@@ -25,7 +25,7 @@ exec unshare -rn bash -c '
     server::synch_mode=true server::coach=true server::game_logging=false server::text_logging=false \
     '"$extra"' >"$0/probe-home/server-$2.log" 2>&1 &
   pid=$!
-  trap "kill $pid" EXIT
+  trap "kill $pid; wait $pid || true" EXIT
   sleep 1.5
   python3 "$3/record.py" "$2" "$4" "$1" $(($1 + 1))
 ' "$RCSS_HOME" "$PORT" "$mode" "$here" "$out"
