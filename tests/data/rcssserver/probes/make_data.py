@@ -1,0 +1,198 @@
+"""Trim the raw traces of record.py into the small test data files in tests/data/rcssserver/.
+
+usage: python3 make_data.py RAW_DIR OUT_DIR     (RAW_DIR holds clean.json, kicknoise.json,
+noisy.json and referee.json from run_probe.sh). Numbers only: metres, metres per cycle, degrees.
+"""
+from __future__ import annotations
+
+import collections
+import datetime
+import json
+import math
+import sys
+
+SERVER = "rcssserver 19.0.0 (synch_mode, trainer mode, default server.conf and player.conf)"
+NOISE_OFF = {"player_rand": 0.0, "ball_rand": 0.0, "kick_rand": 0.0}
+PARAMS = {
+    "clean": NOISE_OFF,
+    "kicknoise": {"player_rand": 0.0, "ball_rand": 0.0, "kick_rand": 0.1},
+    "noisy": {"player_rand": 0.1, "ball_rand": 0.05, "kick_rand": 0.1},
+    "referee": {**NOISE_OFF, "coach_w_referee": True, "foul_detect_probability": 0.5, "foul_exponent": 10.0,
+                "red_card_probability": 0.0},
+}
+
+
+OPTIONS = ("server::synch_mode=true server::coach=true server::game_logging=false "
+           "server::text_logging=false, and per mode: clean/referee server::player_rand=0 server::ball_rand=0 "
+           "server::kick_rand=0; kicknoise server::player_rand=0 server::ball_rand=0; referee also "
+           "server::coach_w_referee=true (see run_probe.sh)")
+
+
+def meta(modes: list[str], what: str) -> dict:
+    return {"server": SERVER, "recorded": datetime.date.today().isoformat(), "what": what,
+            "server_options": OPTIONS, "server_parameters": {m: PARAMS[m] for m in modes},
+            "script": "tests/data/rcssserver/probes/record.py " + "|".join(modes) + " (trimmed by make_data.py)",
+            "frame": "x, y in metres, the tackler/kicker/runner at the origin or as given, facing +x "
+                     "(body 0) unless given; 'state 0' is after the setup cycle"}
+
+
+def r(v: float, n: int = 4) -> float:
+    return round(float(v), n)
+
+
+def disp(a: list[float], b: list[float]) -> list[float]:
+    return [r(b[0] - a[0]), r(b[1] - a[1])]
+
+
+def dash(c: dict) -> dict:
+    run = c["dash_forward"]
+    speed, heading, stamina = [], [], []
+    for s0, s1 in zip(run, run[1:]):
+        d = disp(s0["p"]["A1"], s1["p"]["A1"])
+        lapped = abs(d[0]) > 2.0   # the trainer moved the runner back to x = -45
+        speed.append(None if lapped else r(math.hypot(*d)))
+        heading.append(None if lapped else r(math.degrees(math.atan2(d[1], d[0])), 2))
+        stamina.append(r(s1["stamina"]["A1"][0], 2))
+    side = {}
+    for d in (90, -90, 180, 45):
+        ph = c[f"dash_dir{d}"]
+        side[str(d)] = [disp(a["p"]["A1"], b["p"]["A1"]) for a, b in zip(ph, ph[1:])]
+    return {"meta": meta(["clean"], "dash 100 every cycle from rest at body 0: per-cycle displacement "
+                                    "(speed, m/cycle; None where the trainer moved the runner back), its "
+                                    "heading (deg) and the stamina sense_body reports after the cycle; "
+                                    "side/back dashes: (dash 100 DIR) from rest, body fixed at 0, "
+                                    "per-cycle displacement [dx, dy]"),
+            "forward": {"speed": speed, "heading_deg": heading, "stamina": stamina,
+                        "stamina_max": 8000.0, "extra_stamina": 50.0},
+            "dash_dir": side}
+
+
+def kicks(c: dict) -> dict:
+    out = {}
+    for name, ph in c.items():
+        if name.startswith(("kick_", "two_kicks_")):
+            b0, b1, p = ph[0]["ball"], ph[1]["ball"], ph[0]["p"]
+            kicker = p.get("A1", next(iter(p.values())))
+            out[name] = {"ball_rel": [r(b0[0] - kicker[0]), r(b0[1] - kicker[1])],
+                         "first_cycle": disp(b0, b1)}
+    roll = c["kick_near_at0"]
+    return {"meta": meta(["clean"], "(kick 100 DIR) of a ball at rest: kick_<dist>_at<A>[_dirD] is a ball "
+                                    "at distance near (0.3851, touching) / mid (0.735) / far (1.084) at angle A "
+                                    "from the body, kicked at D deg to the body (0 if absent); first_cycle is "
+                                    "the ball's displacement in the kick's cycle (= its speed after the "
+                                    "kick). two_kicks_*: two players kick the ball at (0, 0) in one cycle "
+                                    "(same: both towards +x; orth: +x and +y; opposed: +x and -x). "
+                                    "roll_x: ball x after each cycle of kick_near_at0, from x0"),
+            "kicks": out,
+            "roll": {"x0": r(roll[0]["ball"][0]), "x": [r(s["ball"][0]) for s in roll[1:]]}}
+
+
+def contact(c: dict) -> dict:
+    def trace(ph, with_y=False, who="A1"):
+        """x (and y) of the player and the ball per state; without y, both stay on y = 0 (checked)."""
+        out = {"player_x": [r(s["p"][who][0], 3) for s in ph], "ball_x": [r(s["ball"][0], 3) for s in ph]}
+        if with_y:
+            out.update(player_y=[r(s["p"][who][1], 3) for s in ph], ball_y=[r(s["ball"][1], 3) for s in ph])
+        else:
+            assert all(abs(s["p"][who][1]) < 1e-9 and abs(s["ball"][1]) < 1e-9 for s in ph)
+        return out
+    at_player = {}
+    for sp in (2.7, 1.5, 0.8):
+        at_player[str(sp)] = [{"ball_x0": r(c[f"ball{sp}_at_player_{j}"][0]["ball"][0]),
+                               "ball_vx0": r(c[f"ball{sp}_at_player_{j}"][0]["ball"][2]),
+                               "end_ball": [r(v) for v in c[f"ball{sp}_at_player_{j}"][-1]["ball"]],
+                               "end_player": [r(v) for v in c[f"ball{sp}_at_player_{j}"][-1]["p"]["A1"][:4]]}
+                              for j in range(20)]
+    return {"meta": meta(["clean"], "body-ball contact, states 0..n (positions after each cycle): "
+                                    "sprint: dash 100 at body 0 from x0 towards a still ball at (0, 0), 20 "
+                                    "start phases; walk: dash 30; past: dash 100 along y = 0 with the ball "
+                                    "at (0, off); x only (y stays 0) except for past; at_player: a ball launched "
+                                    "along +x at a player standing at (0, 0) (body 180), state 0 = ball_x0 / "
+                                    "ball_vx0, 20 cycles on: "
+                                    "end_ball = [x, y, vx, vy], end_player = [x, y, vx, vy]"),
+            "sprint": [trace(c[f"sprint_into_ball_{j}"]) for j in range(20)],
+            "walk": [trace(c[f"walk_into_ball_{j}"]) for j in range(5)],
+            "past": {str(off): trace(c[f"sprint_past_ball_{off}"], with_y=True) for off in (0.15, 0.3)},
+            "ball_at_player": at_player}
+
+
+def noise(kn: dict, noisy: dict) -> dict:
+    kick = {lab: [disp(kn[f"kick_{lab}_{j}"][0]["ball"], kn[f"kick_{lab}_{j}"][1]["ball"]) for j in range(150)]
+            for lab in ("near", "far")}
+    sprint = [[r(noisy[f"sprint12_{j}"][-1]["p"]["A1"][0] - noisy[f"sprint12_{j}"][0]["p"]["A1"][0]),
+               r(noisy[f"sprint12_{j}"][-1]["p"]["A1"][1] - noisy[f"sprint12_{j}"][0]["p"]["A1"][1])]
+              for j in range(60)]
+    at_player = {str(sp): [{"ball_x0": r(noisy[f"ball{sp}_at_player_{j}"][0]["ball"][0]),
+                            "ball_vx0": r(noisy[f"ball{sp}_at_player_{j}"][0]["ball"][2]),
+                            "end_ball": [r(v) for v in noisy[f"ball{sp}_at_player_{j}"][-1]["ball"]]}
+                           for j in range(20)] for sp in (2.7, 1.5, 0.8)}
+    return {"meta": meta(["kicknoise", "noisy"],
+                         "kick: (kick 100 0) of a ball at rest in front (near 0.3851 / far 1.084), only kick_rand "
+                         "on, ball displacement [dx, dy] in the kick's cycle, 150 trials each; sprint12: "
+                         "displacement [dx, dy] after 12 cycles of dash 100 from rest at body 0, default noise, "
+                         "60 trials; ball_at_player: as in contact.json with default noise, 20 trials each, "
+                         "20 cycles"),
+            "kick": kick, "sprint12": sprint, "ball_at_player": at_player}
+
+
+def tackles(c: dict, ref: dict) -> dict:
+    speed = {}
+    for name, ph in c.items():
+        if name.startswith("tackle_speed_"):
+            _, _, x, y, d = name.split("_")
+            speed[name] = {"ball_rel": [float(x), float(y)], "dir": float(d[3:]),
+                           "first_cycle": disp(ph[0]["ball"], ph[1]["ball"])}
+    grid = collections.defaultdict(lambda: [0, 0])
+    for name, ph in c.items():
+        if name.startswith("tackle_grid_"):
+            _, _, x, y, _ = name.split("_")
+            cell = grid[(float(x), float(y))]
+            cell[0] += math.hypot(*ph[1]["ball"][2:]) > 1e-6   # the ball moved: the tackle succeeded
+            cell[1] += 1
+    fouls = {}
+    for lab in ("standing", "dashing"):
+        counts = collections.Counter()
+        for name, ph in ref.items():
+            if name.startswith(f"foul_{lab}_"):
+                heard = [h for s in ph[1:] for h in s["heard"]]
+                if "foul_charge_l" in heard:
+                    counts["foul_called"] += 1
+                elif ph[1]["ball"][0] > 1.0:
+                    counts["tackled_no_call"] += 1
+                else:
+                    counts["tackle_failed"] += 1
+                counts["yellow_card"] += any(h.startswith("yellow_card") for h in heard)
+                counts["red_card"] += any(h.startswith("red_card") for h in heard)
+                counts["trials"] += 1
+        fouls[lab] = dict(counts)
+    follow = [ph for name, ph in ref.items() if name.startswith("foul_followup")][-1]
+    sequence = [[s["t"], h] for s in follow for h in s["heard"]]
+    called = next(i for i, s in enumerate(follow) if "foul_charge_l" in s["heard"])
+    return {"meta": meta(["clean", "referee"],
+                         "tackle_speed: (tackle DIR off) with the ball at rest at ball_rel from the tackler (body "
+                         "0), ball displacement in the tackle's cycle. grid: [x, y, successes, trials] of (tackle 0 "
+                         "off) with the ball at rest at (x, y) from the tackler. fouls: (tackle 0 on) by a left "
+                         "player at (-1, 0) on a right player at (0, 0) (body 0) holding the ball at (0.5, 0); "
+                         "'standing': the ball holder does nothing, 'dashing': it dashes in the tackle's cycle. "
+                         "followup: referee messages [time, message] after a called foul"),
+            "tackle_speed": speed,
+            "grid": [[x, y, s, n] for (x, y), (s, n) in grid.items()],
+            "fouls": fouls,
+            "followup": {"messages": sequence, "ball_after_call": [r(v) for v in follow[called]["ball"]],
+                         "tackler_at": [-1.0, 0.0]}}
+
+
+def main() -> None:
+    raw, out = sys.argv[1], sys.argv[2]
+    load = lambda m: json.load(open(f"{raw}/{m}.json"))
+    c, kn, noisy, ref = load("clean"), load("kicknoise"), load("noisy"), load("referee")
+    files = {"dash.json": dash(c), "kick.json": kicks(c), "contact.json": contact(c),
+             "noise.json": noise(kn, noisy), "tackle.json": tackles(c, ref)}
+    for name, data in files.items():
+        with open(f"{out}/{name}", "w") as f:
+            json.dump(data, f, separators=(",", ":"))
+            f.write("\n")
+
+
+if __name__ == "__main__":
+    main()
