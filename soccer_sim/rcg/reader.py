@@ -83,7 +83,8 @@ def _float(text: str | None) -> float | None:
     return None if text is None else float(text)
 
 
-def _show(line: str) -> Show:
+def parse_show(line: str) -> Show:
+    """One ``(show ...)`` line; ValueError if it is not one."""
     head = _SHOW.match(line)
     ball = _BALL.search(line)
     if head is None or ball is None or not line.endswith(")"):
@@ -128,7 +129,7 @@ def _read_line(log: GameLog, line: str) -> None:
     if not line or line.startswith(_SKIPPED):
         return
     if line.startswith("(show "):
-        log.shows.append(_show(line))
+        log.shows.append(parse_show(line))
     elif line.startswith("(playmode "):
         m = _PLAY_MODE.match(line)
         if m is None:

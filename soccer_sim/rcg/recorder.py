@@ -106,7 +106,7 @@ class RcgRecorder:
         write(player_param_line() + "\n")
         for line in player_type_lines(match.config):
             write(line + "\n")
-        self._write_cycle(match, np.zeros(rows, dtype=np.int64), ())
+        self._write_cycle(match, self._base, ())
 
     def on_cycle(self, match: Match) -> None:
         events = match.events
@@ -124,6 +124,8 @@ class RcgRecorder:
                 calls.append(f"{call}_{side(events.team[i])}")
             elif kind == EventKind.DROP_BALL:
                 calls.append("drop_ball")
+            elif kind == EventKind.HALF_TIME:      # rcssserver: before_kick_off, then the kick-off
+                calls.append("before_kick_off")
             elif kind == EventKind.SET_PLAY and events.detail[i] == PlayMode.FREE_KICK and not calls:
                 self._free_kick = "indirect_free_kick"
         self._mark = end
@@ -173,9 +175,9 @@ class RcgRecorder:
         s = float(state.home_attacks)
         turn = np.array([s, -s])                      # soccer-sim frame -> rcssserver's
         ball = state.ball
-        pos = np.round(state.pos * turn, 4).tolist()
-        vel = np.round(state.vel * turn, 4).tolist()
-        b = np.round(np.concatenate((ball * turn, state.ball_vel * turn)), 4).tolist()
+        pos = (np.round(state.pos * turn, 4) + 0.0).tolist()           # + 0.0: no "-0"
+        vel = (np.round(state.vel * turn, 4) + 0.0).tolist()
+        b = (np.round(np.concatenate((ball * turn, state.ball_vel * turn)), 4) + 0.0).tolist()
         stamina, effort, recovery = state.stamina.tolist(), state.effort.tolist(), state.recovery.tolist()
         capacity = [-1.0 if math.isinf(c) else c for c in state.capacity.tolist()]
         raw_pos, raw_vel = state.pos, state.vel
@@ -185,7 +187,7 @@ class RcgRecorder:
         for r, label in enumerate(self._labels):
             fx, fy = facing(float(raw_vel[r, 0]), float(raw_vel[r, 1]), bx - float(raw_pos[r, 0]),
                             by - float(raw_pos[r, 1]), inertia)
-            body = round(math.degrees(math.atan2(-s * fy, s * fx)), 3)
+            body = round(math.degrees(math.atan2(-s * fy, s * fx)), 3) + 0.0
             x, y = pos[r]
             vx, vy = vel[r]
             counts = " ".join(map(str, self._counts[r].tolist()))
