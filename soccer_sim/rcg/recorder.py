@@ -39,12 +39,13 @@ from typing import IO, TYPE_CHECKING
 
 import numpy as np
 
-from soccer_sim.body import DEFAULT_INERTIA_MOMENT, facing
+from soccer_sim.body import DEFAULT_INERTIA_MOMENT
 from soccer_sim.errors import SoccerSimError
 from soccer_sim.rcg.mapping import (
     BALL_COLLIDE, CATCH, FOCUS_POINT, GOALIE, KICK, STAND, VIEW, play_mode_name, side,
 )
-from soccer_sim.rcg.params import number, player_param_line, player_type_lines, server_param_line
+from soccer_sim.rcg.bodies import facings
+from soccer_sim.rcg.params import player_param_line, player_type_lines, server_param_line
 from soccer_sim.state import EventKind, PlayMode
 
 if TYPE_CHECKING:
@@ -95,6 +96,10 @@ class RcgRecorder:
             if goalie >= 0:
                 self._base[state.first_row(team) + goalie] |= GOALIE
         self._counts = np.zeros((rows, COUNTERS), dtype=np.int64)
+        self._count_texts = [self._count_text(r) for r in range(rows)]
+        self._facing = np.zeros((rows, 2))
+        self._table = np.empty((rows, 11), dtype=object)
+        self._format = self._show_format()
         self._names = tuple(team_name(name) for name in match.team_names)
         self._mark = len(match.events)
         self._mode = ""
@@ -119,6 +124,7 @@ class RcgRecorder:
                 row = match.state.first_row(events.team[i]) + events.player[i]
                 flags[row] |= CATCH
                 self._counts[row, _CATCH_COUNT] += 1
+                self._count_texts[row] = self._count_text(row)
             elif kind in _CAUSES:                 # a call shown as a play mode of its own
                 call, self._free_kick = _CAUSES[kind]
                 calls.append(f"{call}_{side(events.team[i])}")
@@ -133,6 +139,8 @@ class RcgRecorder:
         if len(kickers):
             flags[kickers] |= KICK
             self._counts[kickers, _KICK_COUNT] += 1
+            for row in kickers.tolist():
+                self._count_texts[row] = self._count_text(row)
         touchers = match.touchers
         if len(touchers):
             flags[touchers] |= BALL_COLLIDE
@@ -169,35 +177,35 @@ class RcgRecorder:
             self._score = score
         write(self._show(match, flags))
 
+    def _count_text(self, row: int) -> str:
+        """The ``(c ...)`` part of a player's entry, closing the entry."""
+        return "(c " + " ".join(map(str, self._counts[row].tolist())) + "))"
+
+    def _show_format(self) -> str:
+        """The %-format of a show line after its cycle and ball: per player its label, then
+        the state word, x, y, vx, vy, body, stamina, effort, recovery, capacity, counts."""
+        entry = f" %s%s %g %g %g %g %g 0 {VIEW} {FOCUS_POINT} (s %g %g %g %g) %s"
+        return "".join(entry.replace("%s%s", label.replace("%", "%%") + "%s", 1) for label in self._labels) + ")\n"
+
     def _show(self, match: Match, flags: np.ndarray) -> str:
-        """The ``(show ...)`` line of the current state."""
+        """The ``(show ...)`` line of the current state (numbers as rcssserver prints them:
+        positions to 0.0001, directions to 0.001 degrees, six significant digits)."""
         state = match.state
         s = float(state.home_attacks)
         turn = np.array([s, -s])                      # soccer-sim frame -> rcssserver's
         ball = state.ball
-        pos = (np.round(state.pos * turn, 4) + 0.0).tolist()           # + 0.0: no "-0"
-        vel = (np.round(state.vel * turn, 4) + 0.0).tolist()
+        facings(state.pos, state.vel, ball, self.inertia_moment, self._facing)
+        turned = self._facing * turn
+        table = self._table
+        table[:, 0] = [hex(flag) if flag else "0" for flag in flags.tolist()]
+        table[:, 1:3] = np.round(state.pos * turn, 4) + 0.0           # + 0.0: no "-0"
+        table[:, 3:5] = np.round(state.vel * turn, 4) + 0.0
+        table[:, 5] = np.round(np.degrees(np.arctan2(turned[:, 1], turned[:, 0])), 3) + 0.0
+        table[:, 6] = state.stamina
+        table[:, 7] = state.effort
+        table[:, 8] = state.recovery
+        table[:, 9] = np.where(np.isinf(state.capacity), -1.0, state.capacity)  # rcssserver: negative = unlimited
+        table[:, 10] = self._count_texts
         b = (np.round(np.concatenate((ball * turn, state.ball_vel * turn)), 4) + 0.0).tolist()
-        stamina, effort, recovery = state.stamina.tolist(), state.effort.tolist(), state.recovery.tolist()
-        capacity = [-1.0 if math.isinf(c) else c for c in state.capacity.tolist()]
-        raw_pos, raw_vel = state.pos, state.vel
-        bx, by = float(ball[0]), float(ball[1])
-        parts = [f"(show {state.cycle} ((b) {b[0]:g} {b[1]:g} {b[2]:g} {b[3]:g})"]
-        inertia = self.inertia_moment
-        for r, label in enumerate(self._labels):
-            fx, fy = facing(float(raw_vel[r, 0]), float(raw_vel[r, 1]), bx - float(raw_pos[r, 0]),
-                            by - float(raw_pos[r, 1]), inertia)
-            body = round(math.degrees(math.atan2(-s * fy, s * fx)), 3) + 0.0
-            x, y = pos[r]
-            vx, vy = vel[r]
-            counts = " ".join(map(str, self._counts[r].tolist()))
-            parts.append(f" {label}{_state(int(flags[r]))} {x:g} {y:g} {vx:g} {vy:g} {body:g} 0 {VIEW} {FOCUS_POINT} "
-                         f"(s {number(stamina[r])} {number(effort[r])} {number(recovery[r])} {number(capacity[r])}) "
-                         f"(c {counts}))")
-        parts.append(")\n")
-        return "".join(parts)
-
-
-def _state(flags: int) -> str:
-    """A state word as rcssserver prints it: hex with 0x, or 0."""
-    return hex(flags) if flags else "0"
+        head = f"(show {state.cycle} ((b) {b[0]:g} {b[1]:g} {b[2]:g} {b[3]:g})"
+        return head + self._format % tuple(table.ravel().tolist())
