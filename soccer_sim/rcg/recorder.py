@@ -105,6 +105,7 @@ class RcgRecorder:
         self._mode = ""
         self._free_kick = "indirect_free_kick"
         self._score = (-1, -1)
+        self._team_cycle = -1
         write = self._file.write
         write(HEADER + "\n")
         write(server_param_line(match.config) + "\n")
@@ -150,8 +151,8 @@ class RcgRecorder:
         if self._file is None:
             return
         state = match.state
-        self._file.write(f"(team {state.cycle} {self._names[0]} {self._names[1]} "
-                         f"{int(state.score[0])} {int(state.score[1])})\n")
+        if self._team_cycle != state.cycle:           # the final score, as rcssserver ends its logs
+            self._write_team(state.cycle, (int(state.score[0]), int(state.score[1])))
         self.close()
 
     def close(self) -> None:
@@ -173,9 +174,12 @@ class RcgRecorder:
             self._mode = mode
         score = (int(state.score[0]), int(state.score[1]))
         if score != self._score:
-            write(f"(team {cycle} {self._names[0]} {self._names[1]} {score[0]} {score[1]})\n")
-            self._score = score
+            self._write_team(cycle, score)
         write(self._show(match, flags))
+
+    def _write_team(self, cycle: int, score: tuple[int, int]) -> None:
+        self._file.write(f"(team {cycle} {self._names[0]} {self._names[1]} {score[0]} {score[1]})\n")
+        self._score, self._team_cycle = score, cycle
 
     def _count_text(self, row: int) -> str:
         """The ``(c ...)`` part of a player's entry, closing the entry."""

@@ -166,3 +166,14 @@ def test_reader_refuses_what_is_not_a_game_log(tmp_path) -> None:
     with pytest.raises(RcgError, match="cannot read"):
         read_rcg(tmp_path / "missing.rcg")
     assert isinstance(RcgError("x"), ValueError)
+
+
+def test_a_scenario_with_fewer_players_and_no_keeper(tmp_path) -> None:
+    from soccer_sim.scenarios import get_scenario
+
+    path = tmp_path / "s.rcg"
+    result = run_match("chaser", "idle", seed=0, scenario=get_scenario("empty-goal"), recorders=[RcgRecorder(path)])
+    log = read_rcg(path)
+    assert [(p.side, p.unum, p.state & 0x8) for p in log.shows[0].players] == [("l", 1, 0)]   # 1 v 0, no keeper
+    assert log.teams[-1] == (result.cycles, "chaser", "idle", *result.score) and result.score == (1, 0)
+    assert len(log.teams) == len(set(log.teams))           # the final score is written once
