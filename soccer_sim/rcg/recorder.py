@@ -32,7 +32,6 @@ replaces the target once the match is over.
 
 from __future__ import annotations
 
-import math
 import os
 import re
 from typing import IO, TYPE_CHECKING
