@@ -1,16 +1,18 @@
 """``soccer-sim play [HOME] [AWAY] --seed N [--cycles N] [--json] [--scenario NAME|FILE]
-[--record FILE.rrd] [--match-timeout SECONDS]``: play one match and print its report: half-time
+[--record FILE.rrd] [--rcg FILE.rcg] [--match-timeout SECONDS]``: play one match and print its report: half-time
 and final score, the goals (cycle, team, scorer's shirt number), set plays of each kind, offside
 calls and both teams' statistics; ``--json`` prints the same as one JSON object. ``--record`` also
 writes the match as a rerun replay (see :mod:`soccer_sim.replay`; watch it with
-``soccer-sim replay FILE.rrd``).
+``soccer-sim replay FILE.rrd``); ``--rcg`` writes it as an rcssserver game log, which RoboCup's
+tools (rcssmonitor, soccerwindow2, log analysers) replay (see :mod:`soccer_sim.rcg`).
 
 ``--cycles`` up to a regulation match (2 x 3000 cycles) stops the match early; a longer count
 lengthens both halves to half of it each (half time stays in the middle).
 
 Stdout carries only the report; every error is one line on stderr. Exit status: 0 for a match
 played (also when the reader of stdout went away, ``play --json | head -1``), 2 for bad input
-(an unknown or unimportable team, a bad scenario file, an unwritable replay), 1 for a match that
+(an unknown or unimportable team, a bad scenario file, an unwritable replay or game log,
+checked before the match), 1 for a match that
 failed (a team raised, returned a malformed command or called ``sys.exit`` in its code, or the
 match overran ``--match-timeout``), 130 after Ctrl-C ("interrupted").
 
@@ -48,6 +50,9 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                              "(default: the regular match)")
     parser.add_argument("--record", default=None, metavar="FILE.rrd",
                         help="also write the match as a rerun replay (watch it with `soccer-sim replay FILE.rrd`)")
+    parser.add_argument("--rcg", default=None, metavar="FILE.rcg",
+                        help="also write the match as an rcssserver game log (replay it with rcssmonitor or "
+                             "soccerwindow2)")
     from experiments.runner.run import DEFAULT_MATCH_TIMEOUT
 
     parser.add_argument("--match-timeout", type=positive_float, default=DEFAULT_MATCH_TIMEOUT, metavar="SECONDS",
@@ -64,17 +69,20 @@ def run(args: argparse.Namespace) -> int:
     from rich.markup import escape
 
     from experiments.match_report import match_report
-    from experiments.recording import replay_recording
+    from experiments.recording import rcg_recording, replay_recording
     from experiments.runner.worker import MatchTimeout, arm_timer, disarm_timer
     from experiments.warmup import warm_kernels
     from soccer_sim import ConfigError, TeamError, TeamNotFoundError, run_match
+    from soccer_sim.rcg import RcgError
     from soccer_sim.replay import ReplayError
 
     timeout = getattr(args, "match_timeout", None)
     try:
         config = match_config(args.cycles)
         scenario = _scenario(getattr(args, "scenario", None))
-        with replay_recording(getattr(args, "record", None), "--record") as recorders:
+        with replay_recording(getattr(args, "record", None), "--record") as replays, \
+                rcg_recording(getattr(args, "rcg", None), "--rcg") as logs:
+            recorders = [*replays, *logs]
             warm_kernels((args.home, args.away))  # a cold cache is filled here, not on the match's clock
             start = time.perf_counter()
             alarm = arm_timer(timeout)  # the tournament's timer: MatchTimeout where the match hangs
@@ -95,7 +103,7 @@ def run(args: argparse.Namespace) -> int:
             return _fail(f"match stopped: it exceeded its time budget of {exc.__cause__.seconds:g} s "
                          f"(--match-timeout) while team {exc.team_name!r} was in {method}()", 1)
         return _fail(str(exc), 1)
-    except (TeamNotFoundError, ConfigError, ValueError, ReplayError) as exc:  # bad input
+    except (TeamNotFoundError, ConfigError, ValueError, ReplayError, RcgError) as exc:  # bad input
         return _fail(str(exc), 2)
     report = match_report(result)
     try:
@@ -110,9 +118,11 @@ def run(args: argparse.Namespace) -> int:
             if scenario is not None:
                 console.print(f"scenario {escape(result.scenario)}: ended by {result.end_reason} after "
                               f"{result.cycles} cycles")
-            if recorders:
+            if replays:
                 console.print(f"replay written to {escape(args.record)} (watch it: soccer-sim replay "
                               f"{escape(args.record)})")
+            if logs:
+                console.print(f"rcssserver game log written to {escape(args.rcg)}")
         sys.stdout.flush()
     except BrokenPipeError:  # the reader went away (``soccer-sim play --json | head``): not an error
         import os

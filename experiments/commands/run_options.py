@@ -32,7 +32,7 @@ def registered_teams_text() -> str:
 
 def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None:
     """--games, --seed, --cycles, --workers, --backend, --address, --out, --tables,
-    --match-timeout, --retry-errors, --record-dir, --record-every, --no-progress, --same-code."""
+    --match-timeout, --retry-errors, --record-dir, --rcg-dir, --record-every, --no-progress, --same-code."""
     from experiments.runner.run import BACKENDS, DEFAULT_MATCH_TIMEOUT
 
     parser.add_argument("--seed", type=seed_value, default=0, help="first seed; a pairing plays seeds seed, seed+1, ... (default: 0)")
@@ -60,8 +60,11 @@ def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None
     parser.add_argument("--record-dir", default=None, metavar="DIR",
                         help="write rerun replays of a sample of the matches played into DIR "
                              "(watch one with `soccer-sim replay FILE.rrd`)")
+    parser.add_argument("--rcg-dir", default=None, metavar="DIR",
+                        help="write rcssserver game logs (.rcg) of a sample of the matches played into DIR "
+                             "(replay one with rcssmonitor or soccerwindow2)")
     parser.add_argument("--record-every", type=positive_int, default=10, metavar="K",
-                        help="with --record-dir: record every K-th match of the run (default: 10)")
+                        help="with --record-dir or --rcg-dir: record every K-th match of the run (default: 10)")
     parser.add_argument("--no-progress", action="store_true", help="no progress bar or progress lines")
     parser.add_argument("--same-code", action="store_true",
                         help="refuse to resume into a --out holding matches of another code version (default: warn)")
@@ -181,7 +184,8 @@ def execute(args: argparse.Namespace, kind: str, specs: list[MatchSpec], params:
             summary = run_matches(specs, args.out, kind, params, cycles=args.cycles, workers=args.workers,
                                   backend=args.backend, address=args.address, match_timeout=args.match_timeout,
                                   retry_errors=args.retry_errors, progress=not args.no_progress,
-                                  record_dir=args.record_dir, record_every=args.record_every, figures=figures,
+                                  record_dir=args.record_dir, record_every=args.record_every,
+                                  rcg_dir=getattr(args, "rcg_dir", None), figures=figures,
                                   ship_code=getattr(args, "ship_code", True),
                                   same_code=getattr(args, "same_code", False))
     except MixedCodeVersions as exc:
@@ -197,7 +201,8 @@ def execute(args: argparse.Namespace, kind: str, specs: list[MatchSpec], params:
     return summary
 
 
-OPTIONS = {"seed": "--seed", "record_every": "--record-every", "record_dir": "--record-dir", "cycles": "--cycles"}
+OPTIONS = {"seed": "--seed", "record_every": "--record-every", "record_dir": "--record-dir", "rcg_dir": "--rcg-dir",
+           "cycles": "--cycles"}
 """The option of each run_matches parameter a ParameterError can name."""
 
 

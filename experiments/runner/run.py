@@ -158,14 +158,15 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
                 cycles: int | None = None, workers: int | None = None, backend: str = "local",
                 address: str | None = None, match_timeout: float | None = DEFAULT_MATCH_TIMEOUT,
                 retry_errors: bool = False, progress: bool = True, record_dir: str | os.PathLike | None = None,
-                record_every: int = 1, policy: FailurePolicy = FailurePolicy(),
+                record_every: int = 1, rcg_dir: str | os.PathLike | None = None, policy: FailurePolicy = FailurePolicy(),
                 figures: Callable[[], object] | None = None, ship_code: bool = True, same_code: bool = False,
                 wait: float | None = None) -> RunSummary:
     """Play every spec (all with ``cycles``) that ``path`` does not hold, store each as it
     finishes, and return the summary with the records of all ``specs``.
 
     ``record_dir``: write a rerun replay of every ``record_every``-th spec (in the order given,
-    the first included) played in this run into that directory, named after its teams and seed.
+    the first included) played in this run into that directory, named after its teams and seed;
+    ``rcg_dir``: likewise an rcssserver game log (``.rcg``) of the same specs.
     ``figures``: a picklable factory of a :class:`~experiments.runner.worker.MatchFigures`
     recorder whose figures of the whole match go into both teams' statistics.
     ``ship_code``: with the Ray backend, send the driver's packages with the job (``--ship-code``;
@@ -184,7 +185,7 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
     Python's warnings), or refused with ``same_code``.
 
     Raises ParameterError (a ValueError) for a parameter out of range (seeds a results file
-    cannot store, ``record_every``, ``record_dir``),
+    cannot store, ``record_every``, ``record_dir``, ``rcg_dir``),
     :class:`~experiments.results.store.ResultsError` for an unusable file,
     :class:`~experiments.results.store.StorageError` when storing fails part-way (disk full) and
     :class:`~experiments.runner.ray_backend.RayUnavailable` when Ray cannot be used; every
@@ -196,8 +197,9 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
     specs = list(dict.fromkeys(specs))
     config, scenario = run_setting(specs, cycles)
     check_seeds(specs)
-    if record_dir is not None:
-        specs = with_replays(specs, Path(record_dir), record_every)
+    if record_dir is not None or rcg_dir is not None:
+        specs = with_replays(specs, None if record_dir is None else Path(record_dir), record_every,
+                             None if rcg_dir is None else Path(rcg_dir))
     digest, version = config_hash(config, scenario), code_version()
     start = time.monotonic()
     check_code_versions(path, kind, digest, version, specs, retry_errors, same_code)
@@ -333,17 +335,26 @@ def replay_name(spec: MatchSpec) -> str:
     return f"{safe}.rrd"
 
 
-def with_replays(specs: list[MatchSpec], directory: Path, every: int) -> list[MatchSpec]:
+def with_replays(specs: list[MatchSpec], directory: Path | None, every: int,
+                 rcg_directory: Path | None = None) -> list[MatchSpec]:
     """``specs`` with every ``every``-th one (0, every, 2 every, ...) set to record a replay in
-    ``directory`` (created); ParameterError (a ValueError) for ``every`` < 1 or a directory
-    that cannot be made."""
+    ``directory`` and a game log in ``rcg_directory`` (each created; None: not recorded);
+    ParameterError (a ValueError) for ``every`` < 1 or a directory that cannot be made."""
     from dataclasses import replace
 
     if every < 1:
         raise ParameterError("record_every", f"must be at least 1, got {every}")
-    try:
-        directory.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise ParameterError("record_dir", f"{directory}: cannot create it ({exc.strerror})") from None
-    return [replace(spec, record=str(directory / replay_name(spec))) if k % every == 0 else spec
-            for k, spec in enumerate(specs)]
+    for parameter, where in (("record_dir", directory), ("rcg_dir", rcg_directory)):
+        if where is None:
+            continue
+        try:
+            where.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise ParameterError(parameter, f"{where}: cannot create it ({exc.strerror})") from None
+
+    def recorded(spec: MatchSpec) -> MatchSpec:
+        name = replay_name(spec)
+        return replace(spec, record=None if directory is None else str(directory / name),
+                       rcg=None if rcg_directory is None else str(rcg_directory / Path(name).with_suffix(".rcg")))
+
+    return [recorded(spec) if k % every == 0 else spec for k, spec in enumerate(specs)]

@@ -36,6 +36,9 @@ class MatchSpec:
     record: str | None = field(default=None, compare=False)
     """A path to write the match's rerun replay to (``--record-dir``), or None; not part of
     the match's identity."""
+    rcg: str | None = field(default=None, compare=False)
+    """A path to write the match's rcssserver game log to (``--rcg-dir``), or None; not part of
+    the match's identity."""
     play: str | None = None
     """A ``package.module:function`` path that plays this spec instead of one match (a study's
     own unit of work, e.g. a chain of scenario trials), or None for a match between ``home`` and
@@ -72,7 +75,7 @@ class MatchSpec:
         """A short stable digest (16 hex digits of SHA-256) of everything that changes play: the
         teams, the seed, the whole resolved configuration, the scenario's content (not only its
         name), and a study's ``play`` function and arguments. Equal specs have equal identities;
-        the replay path and ``plays_teams`` are not part of it."""
+        the replay and game-log paths and ``plays_teams`` are not part of it."""
         described = {"home": self.home, "away": self.away, "seed": self.seed, "play": self.play,
                      "play_args": [list(pair) for pair in self.play_args],
                      "setting": json.loads(config_description(self.config(), self.scenario))}

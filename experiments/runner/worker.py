@@ -146,7 +146,11 @@ def _play_match(spec: MatchSpec, record: MatchRecord, deciding: MutableSequence[
         from soccer_sim.replay import RerunRecorder
 
         recorders.append(RerunRecorder(spec.record))
-    result = run_match(home, away, seed=spec.seed, config=spec.config(), recorders=recorders, scenario=spec.scenario)
+    from experiments.recording import rcg_recording
+
+    with rcg_recording(spec.rcg, "--rcg-dir") as logs:  # written whole or not at all
+        result = run_match(home, away, seed=spec.seed, config=spec.config(), recorders=[*recorders, *logs],
+                           scenario=spec.scenario)
     disarm_timer(alarm)
     record.home_goals, record.away_goals = (int(g) for g in result.score)
     record.cycles = int(result.cycles)

@@ -262,6 +262,8 @@ def _params(args: argparse.Namespace) -> dict:
         raise RunInputError("--cycles does not apply to penalty-shot: a trial lasts at most --limit cycles")
     if args.record_dir is not None:
         raise RunInputError("--record-dir does not apply to penalty-shot (a chain is many short trials)")
+    if getattr(args, "rcg_dir", None) is not None:
+        raise RunInputError("--rcg-dir does not apply to penalty-shot (a chain is many short trials)")
     return {"trials": args.trials, "robots": args.robots, "team": args.team, "keeper": args.keeper,
             "limit": args.limit, "seed": args.seed, "cycles": None}
 

@@ -46,7 +46,7 @@ JUNK = ["", "0", "-1", "1", "2", "x", "nan", "inf", "-", "--", ",", "a,b", "é",
         "idle", "chaser", "nobody", "no_such_pkg.mod:Team", "experiments.cli:COMMAND_MODULES", "4-3-3", "kick-off"]
 """Values and positionals mixed with the real flags."""
 
-OUTPUT_FLAGS = {"--out", "--png", "--csv", "--parquet", "--tables", "--record", "--record-dir"}
+OUTPUT_FLAGS = {"--out", "--png", "--csv", "--parquet", "--tables", "--record", "--record-dir", "--rcg", "--rcg-dir"}
 """Options whose value a command writes (a file named there may change)."""
 
 

@@ -29,6 +29,7 @@ EXAMPLES: dict[str, tuple] = {
     "formations.errors.UnknownRoleError": ("no role numbered 12",),
     "soccer_sim.errors.SoccerSimError": ("the simulator refuses its input",),
     "soccer_sim.replay.recorder.ReplayError": ("replays need rerun-sdk: pip install rerun-sdk",),
+    "soccer_sim.rcg.recorder.RcgError": ("m.rcg, line 3: unknown line",),
     "soccer_sim.scenarios.parts.ScenarioError": ("home.goalie", "index 4 is beyond the side's 3 players"),
     "experiments.results.store.ResultsError": ("r.sqlite: not writable",),
     "experiments.results.store.StorageError": ("r.sqlite: cannot store a match (database or disk is full)",),
