@@ -1,66 +1,93 @@
-"""Tackles and fouls against traces of the real rcssserver 19 (tests/data/rcssserver/tackle.json).
+"""Tackles and fouls against traces of the real rcssserver 19 (tests/data/rcssserver/tackle.json;
+what every figure means: its ``meta``; how it was recorded: tests/data/rcssserver/probes/).
 
-The interface these tests expect from the simulator (one place each, below, so a rename is a
-one-line change here):
+The simulator's side, as :mod:`soccer_sim.tackles` and :mod:`soccer_sim.rules.fouls` implement it:
 
-* ``soccer_sim.tackles.success_probability(forward, lateral, foul=False, config=None) -> float``:
-  the probability that a tackle succeeds with the ball's centre at ``forward`` metres ahead of
-  the tackler's centre (along where its body faces) and ``lateral`` metres to the side;
-  ``foul`` for a foul tackle on an opponent who can kick the ball (rcssserver's
-  ``foul_exponent`` instead of ``tackle_exponent``); ``config`` None means the defaults.
-  rcssserver: 1 - (|forward| / tackle_dist)^e - (|lateral| / tackle_width)^e, and 0 for a
-  ball behind the tackler (tackle_back_dist 0) or where that is negative.
-* ``TeamCommand.tackle``: an (n, 2) array per player: the tackle's direction (radians, in the
-  team's frame, like the dash and kick vectors) and the foul flag (1.0 as ``(tackle DIR on)``,
-  0.0 as ``off``); a NaN direction means no tackle (see :func:`tackle_rows`).
-* Events ``EventKind.TACKLE`` (a successful tackle, by the tackler), ``EventKind.FOUL`` (a foul
-  called, on the tackler's team) and ``EventKind.YELLOW_CARD``; a called foul gives the other
-  team a ``PlayMode.FREE_KICK`` at the tackler's position.
+* ``TeamCommand.tackle``: (n,) tackle directions in degrees in the team's frame, NaN for no
+  tackle; ``TeamCommand.foul``: (n,) bool, ``(tackle DIR on)``.
+* :func:`soccer_sim.tackles.failure_probability`: rcssserver's failure probability for the ball
+  at (x, y) in the tackler's body frame; a match draws each tackle's success from it.
+* Events ``EventKind.TACKLE`` (every tackle; ``detail`` bit 1: it reached the ball),
+  ``EventKind.FOUL`` (a foul called on the tackler), ``YELLOW_CARD`` and ``RED_CARD``; a called
+  foul gives the other team a ``PlayMode.FREE_KICK`` where the tackler stood.
 
-A still tackler faces the ball (soccer_sim.body), so the server's figures for a ball straight
-ahead of the body (lateral 0) are the ones a match can reproduce directly; the whole grid
-(ball beside the body) is compared through ``success_probability``.
+Where the body faces is :mod:`soccer_sim.body`'s model: a still tackler faces the ball. So the
+server's figures for a ball straight ahead of its body are reproduced by still tacklers; a ball
+beside the body by a moving tackler whose motion, turned towards the ball as far as it can turn,
+faces the server's body direction (+x); the whole grid of places is compared through
+``failure_probability`` with the defaults of ``TackleConfig``.
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
-from tests.soccer_sim.test_rcssserver_reference import (AWAY_PROBE, FULL, HOME_PROBE, N_TEAM, PROBE, Pitch,
+from tests.soccer_sim.test_rcssserver_reference import (FULL, HOME_PROBE, N_TEAM, PROBE, Pitch, Probe,
                                                         binomial_share_agrees, config, trace)
 
-from soccer_sim import PlayMode
+from soccer_sim import Match, PlayMode, TeamCommand
+from soccer_sim.body import DEFAULT_INERTIA_MOMENT
+from soccer_sim.config import MatchConfig, TackleConfig
 from soccer_sim.state import AWAY, EventKind
+from soccer_sim.tackles import failure_probability
+
+TACKLES = TackleConfig()
+"""rcssserver 19's tackle parameters (the defaults), as the traces were recorded with."""
+VICTIMS = 4
+"""The server's probe rotated its fouled ball holders over four players (B1..B4)."""
 
 
 def success_probability(forward: float, lateral: float, foul: bool = False) -> float:
-    """The simulator's tackle success probability (interface in the module docstring)."""
-    from soccer_sim.tackles import success_probability as implementation
-
-    return float(implementation(forward, lateral, foul=foul))
-
-
-def tackle_rows(directions: dict[int, float], foul: bool = False) -> np.ndarray:
-    """``TeamCommand.tackle`` for one team: tackles by the given players (index -> direction in
-    radians, team frame), no tackle for the others."""
-    rows = np.full((N_TEAM, 2), np.nan)
-    rows[:, 1] = 0.0
-    for index, angle in directions.items():
-        rows[index] = (angle, 1.0 if foul else 0.0)
-    return rows
+    """The simulator's probability that a tackle succeeds with the ball's centre ``forward``
+    metres ahead of the tackler's body and ``lateral`` to the side (``foul``: a foul tackle on
+    an opponent who can kick the ball, with ``foul_exponent``)."""
+    exponent = TACKLES.foul_exponent if foul else TACKLES.tackle_exponent
+    failure = failure_probability(forward, lateral, TACKLES.tackle_dist, TACKLES.tackle_back_dist,
+                                  TACKLES.tackle_width, exponent)
+    return max(0.0, 1.0 - failure)
 
 
-def event_kind(name: str) -> EventKind:
-    kind = getattr(EventKind, name, None)
-    assert kind is not None, f"soccer_sim.state.EventKind has no {name}"
-    return kind
+def noiseless() -> MatchConfig:
+    """No noise at all, the tackle's included (the clean and referee traces: kick_rand 0)."""
+    base = config()
+    return replace(base, tackles=replace(base.tackles, kick_rand=0.0))
 
 
-def events_of(pitch: Pitch, name: str) -> int:
-    kind = int(event_kind(name))
-    return sum(1 for k in pitch.match.events.kind if k == kind)
+class TackleProbe(Probe):
+    """A probe team that also tackles: ``tackle`` (degrees, own frame, NaN: none) and ``foul``."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.tackle = np.full(N_TEAM, np.nan)
+        self.foul = np.zeros(N_TEAM, dtype=bool)
+
+    def act(self, view) -> TeamCommand:
+        command = super().act(view)
+        command.foul = self.foul.copy()
+        return command
+
+    def idle(self) -> None:
+        super().idle()
+        self.foul[:] = False
+
+
+class TacklePitch(Pitch):
+    """:class:`Pitch` with two :class:`TackleProbe` teams."""
+
+    def __init__(self, cfg: MatchConfig, seed: int = 0) -> None:
+        self.home, self.away = TackleProbe(), TackleProbe()
+        self.match = Match(self.home, self.away, seed=seed, config=cfg)
+        self.match.start()
+        self.state = self.match.state
+        self.park()
+
+
+def count(pitch: Pitch, kind: EventKind, since: int = 0) -> int:
+    """Events of ``kind`` from event number ``since`` on."""
+    return sum(1 for k in pitch.match.events.kind[since:] if k == int(kind))
 
 
 # ------------------------------------------------------------------------------ success by place
@@ -70,12 +97,17 @@ def grid() -> list[tuple[float, float, int, int]]:
     return [tuple(cell) for cell in trace("tackle")["grid"]]
 
 
+def server_cell(x: float, y: float) -> tuple[int, int]:
+    """(successes, trials) of the server at (x, y)."""
+    return next((s, n) for gx, gy, s, n in grid() if (gx, gy) == (x, y))
+
+
 @pytest.mark.parametrize("x,y,successes,trials", grid())
 def test_success_probability_agrees_with_the_server_grid(x: float, y: float, successes: int, trials: int) -> None:
-    """Tackles with the ball at (x, y) from the tackler (x ahead of its body), 60 server
-    trials per place: the server's successes lie within 3 binomial standard deviations (plus
-    one trial) of the implementation's probability; where the server never succeeded (behind,
-    beyond tackle_dist, wider than tackle_width) the probability is 0."""
+    """Tackles with the ball at (x, y) from the tackler (x ahead of its body), 60 server trials
+    per place (200 at 1.8 m ahead): the server's successes lie within 3 binomial standard
+    deviations (plus one trial) of the simulator's probability; where the server never
+    succeeded (behind, beyond tackle_dist, wider than tackle_width) the probability is 0."""
     p = success_probability(x, y)
     assert 0.0 <= p <= 1.0
     if successes == 0:
@@ -85,7 +117,7 @@ def test_success_probability_agrees_with_the_server_grid(x: float, y: float, suc
 
 
 def test_success_probability_over_the_whole_grid() -> None:
-    """All places together (1140 server trials): observed and expected successes agree within
+    """All places together (1160 server trials): observed and expected successes agree within
     3 standard deviations of their sum, so a probability off by a few percent everywhere fails."""
     cells = grid()
     expected = sum(n * success_probability(x, y) for x, y, _, n in cells)
@@ -96,113 +128,180 @@ def test_success_probability_over_the_whole_grid() -> None:
 
 def tackle_trials(distance: float, trials: int, seed: int) -> int:
     """Still tacklers (home players 1..10 in turn: a tackler is frozen for tackle_cycles) tackle
-    towards the ball lying ``distance`` straight ahead of them; returns the successes (the ball
-    moved)."""
-    pitch = Pitch(config(), seed=seed)
-    pitch.home.tackle = tackle_rows({})
+    towards the ball lying ``distance`` straight ahead of them, noise off; returns the successes
+    (the ball moved), checked against the TACKLE events' ``reached`` flags."""
+    pitch = TacklePitch(noiseless(), seed=seed)
     successes = 0
     for trial in range(trials):
         tackler = 1 + trial % (N_TEAM - 1)
         pitch.park()
         pitch.place(tackler, 0.0, 0.0)
         pitch.ball(distance, 0.0)
-        pitch.home.tackle = tackle_rows({tackler: 0.0})
+        pitch.home.tackle[tackler] = 0.0
+        since = len(pitch.match.events.kind)
         pitch.step()
-        successes += bool(np.hypot(*pitch.state.ball_vel) > 1e-9)
+        moved = bool(np.hypot(*pitch.state.ball_vel) > 1e-9)
+        tackles = [d for k, d in zip(pitch.match.events.kind[since:], pitch.match.events.detail[since:])
+                   if k == int(EventKind.TACKLE)]
+        assert tackles == [int(moved)]
+        successes += moved
         pitch.step()
     return successes
 
 
-@pytest.mark.parametrize("distance", [1.5, 1.75, 1.9])
+@pytest.mark.parametrize("distance", [1.5, 1.75, 1.8, 1.9])
 def test_tackle_reach_in_a_match_agrees_with_the_server(distance: float) -> None:
     """A tackle reaches 2.0 m in front (a kick 1.085 m): the success share of 200 tackles in a
-    match is within 2.5 standard errors of the server's 60 trials at that distance."""
-    server = next(cell for cell in grid() if cell[0] == distance and cell[1] == 0.0)
+    match is within 2.5 standard errors of the server's trials at that distance."""
+    successes, trials = server_cell(distance, 0.0)
     ours = tackle_trials(distance, 200, seed=11)
-    assert binomial_share_agrees(ours, 200, server[2], server[3]), (ours, server)
+    assert binomial_share_agrees(ours, 200, successes, trials), (ours, successes, trials)
 
 
 # ----------------------------------------------------------------------------------- ball speed
 
 
-@pytest.mark.parametrize("name", ["tackle_speed_0.5_0.0_dir0", "tackle_speed_0.5_0.0_dir45",
-                                  "tackle_speed_1.0_0.0_dir-45", "tackle_speed_0.5_0.0_dir90",
-                                  "tackle_speed_0.5_0.0_dir180"])
+def tackle_speed_cases() -> list[str]:
+    return sorted(trace("tackle")["tackle_speed"])
+
+
+@pytest.mark.parametrize("name", tackle_speed_cases())
 def test_tackle_ball_speed_within_1_percent(name: str) -> None:
-    """A successful tackle of a still ball straight ahead, at DIR to the body: 2.7 m/cycle at 0°,
-    less to the side (max_back_tackle_power 0: nothing backwards). Noise off."""
+    """A successful tackle of a still ball at ``ball_rel`` from a tackler whose body faces +x,
+    at DIR to the body, noise off: 2.7 m/cycle straight ahead, less to the side and for a ball
+    beside the body, nothing backwards (max_back_tackle_power 0). The ball's displacement in
+    the tackle's cycle within 1 % of the tackle's full 2.7 m/cycle. A ball straight ahead: a
+    still tackler (it faces the ball). A ball beside the body: the tackler moves at 1 m/cycle,
+    turned away from the ball by the largest turn it can make at that speed, so that its body,
+    turned towards the ball, faces +x."""
     data = trace("tackle")["tackle_speed"][name]
-    forward = data["ball_rel"][0]
-    pitch = Pitch(config())
-    pitch.place(HOME_PROBE, 0.0, 0.0)
-    pitch.ball(forward, 0.0)
-    pitch.home.tackle = tackle_rows({PROBE: math.radians(data["dir"])})
+    forward, lateral = data["ball_rel"]
+    pitch = TacklePitch(noiseless())
+    vx = vy = 0.0
+    if lateral:
+        speed = 1.0
+        turn = math.copysign(math.pi / (1.0 + DEFAULT_INERTIA_MOMENT * speed), lateral)
+        vx, vy = speed * math.cos(-turn), speed * math.sin(-turn)
+    pitch.place(HOME_PROBE, 0.0, 0.0, vx, vy)
+    pitch.ball(forward, lateral)
+    pitch.home.tackle[PROBE] = data["dir"]
     pitch.step()
-    np.testing.assert_allclose(pitch.state.ball - (forward, 0.0), data["first_cycle"], atol=0.027)
+    np.testing.assert_allclose(pitch.state.ball - (forward, lateral), data["first_cycle"], atol=0.027)
+
+
+def test_the_tackler_is_frozen_for_tackle_cycles_as_by_the_server() -> None:
+    """(tackle 0), then a full dash every cycle: the server's tackler, whether it won the ball
+    (0.5 m ahead) or missed it (3 m), stays put for tackle_cycles (10) cycles and then runs; ours
+    is at the same x after each of the 13 cycles (to the server's 4 printed decimals)."""
+    freeze = trace("tackle")["freeze"]
+    for case, ball_x in (("won", 0.5), ("missed", 3.0)):
+        pitch = TacklePitch(noiseless())
+        pitch.place(HOME_PROBE, 0.0, 0.0)
+        pitch.ball(ball_x, 0.0)
+        pitch.home.tackle[PROBE] = 0.0
+        xs = []
+        for _ in freeze[case]:
+            pitch.step()
+            xs.append(float(pitch.state.pos[HOME_PROBE, 0]))
+            pitch.home.dash[PROBE] = (FULL, 0.0)
+        np.testing.assert_allclose(xs, freeze[case], atol=5e-5, err_msg=case)
+        assert (np.hypot(*pitch.state.ball - (ball_x, 0.0)) > 1.0) == (case == "won")
 
 
 # ---------------------------------------------------------------------------------------- fouls
 
 
 def foul_trials(trials: int, victim_dashes: bool, seed: int) -> dict[str, int]:
-    """Foul tackles (foul flag on) by home players 1..10 in turn at (-1, 0) on the away probe
-    at (0, 0) holding the ball at (0.5, 0), the referee on; the away probe dashes towards +x in
-    the tackle's cycle if ``victim_dashes``. Counts of fouls called, successful tackles and
-    yellow cards."""
-    pitch = Pitch(config(), seed=seed)
-    counts = {"foul_called": 0, "tackled": 0, "yellow_card": 0, "free_kick_at_tackler": 0}
-    for trial in range(trials):
-        tackler = 1 + trial % (N_TEAM - 1)
+    """Foul tackles (foul flag on) as the server's probe made them: home players 1..10 in turn
+    (those still on the pitch) at (-1, 0) tackle towards +x the ball (0.5, 0) held by an away
+    player at (0, 0) (away players 1..4 in turn), which dashes towards +x in the tackle's cycle
+    if ``victim_dashes``; two idle cycles follow (the server's probe: a setup cycle and one more).
+    Counts of trials with a foul called, a successful tackle, a yellow card, a red card, a free
+    kick to the away team at the tackler's place, and a foul called on a tackler already called
+    once ("called_again"); "sent_off": home players off the pitch at the end."""
+    pitch = TacklePitch(noiseless(), seed=seed)
+    counts = dict.fromkeys(("foul_called", "tackled", "yellow_card", "red_card", "free_kick_at_tackler",
+                            "called_again"), 0)
+    called_before: set[int] = set()
+    n = 0
+    for _ in range(trials):
+        on_pitch = [p for p in range(1, N_TEAM) if pitch.state.present[p]]
+        tackler, victim = on_pitch[n % len(on_pitch)], 1 + n % VICTIMS
+        n += 1
+        while pitch.state.frozen[tackler] or pitch.state.frozen[N_TEAM + victim]:
+            pitch.step()  # the last tacklers left after red cards: wait out a missed tackle's freeze
         pitch.park()
         pitch.place(tackler, -1.0, 0.0)
-        pitch.place(AWAY_PROBE, 0.0, 0.0)
+        pitch.place(N_TEAM + victim, 0.0, 0.0)
         pitch.ball(0.5, 0.0)
-        pitch.home.tackle = tackle_rows({tackler: 0.0}, foul=True)
+        pitch.home.tackle[tackler] = 0.0
+        pitch.home.foul[tackler] = True
         if victim_dashes:
-            pitch.away.dash[PROBE] = (-FULL, 0.0)  # the away frame is turned by 180°: towards +x
-        before = {name: events_of(pitch, name) for name in ("FOUL", "TACKLE", "YELLOW_CARD")}
+            pitch.away.dash[victim] = (-FULL, 0.0)  # the away frame is turned by 180°: towards +x
+        since = len(pitch.match.events.kind)
         pitch.step()
-        called = events_of(pitch, "FOUL") > before["FOUL"]
+        events = pitch.match.events
+        tackle = [d for k, d in zip(events.kind[since:], events.detail[since:]) if k == int(EventKind.TACKLE)]
+        assert len(tackle) == 1 and tackle[0] & 2  # a foul tackle: the victim could kick the ball
+        called = count(pitch, EventKind.FOUL, since) > 0
         counts["foul_called"] += called
-        counts["tackled"] += events_of(pitch, "TACKLE") > before["TACKLE"]
-        counts["yellow_card"] += events_of(pitch, "YELLOW_CARD") > before["YELLOW_CARD"]
+        counts["tackled"] += bool(tackle[0] & 1)
+        counts["yellow_card"] += count(pitch, EventKind.YELLOW_CARD, since) > 0
+        counts["red_card"] += count(pitch, EventKind.RED_CARD, since) > 0
         if called:
-            for _ in range(40):  # rcssserver pauses (foul_charge) before the free kick
-                if pitch.state.play_mode == PlayMode.FREE_KICK:
-                    break
-                pitch.step()
+            counts["called_again"] += tackler in called_before
+            called_before.add(tackler)
             counts["free_kick_at_tackler"] += bool(
                 pitch.state.play_mode == PlayMode.FREE_KICK and pitch.state.mode_team == AWAY
-                and np.hypot(*(pitch.state.ball - (-1.0, 0.0))) < 0.1)
+                and np.hypot(*(pitch.state.ball - (-1.0, 0.0))) < 1e-9)
+        pitch.step()
+        pitch.step()
+    counts["sent_off"] = int((~pitch.state.present[:N_TEAM]).sum())
     return counts
 
 
 def test_foul_tackles_are_called_as_often_as_by_the_server() -> None:
-    """100 server trials: the foul tackle fails 7 times (foul_exponent 10 at 1.5 m), succeeds
-    unseen 55 times and is called 38 times (foul_detect_probability 0.5 of successful foul
-    tackles). Ours over 200 trials: called and failed shares within 2.5 standard errors."""
+    """100 server trials of foul tackles on a ball holder standing still: some fail
+    (foul_exponent 10 at 1.5 m: the server's failures within 3 binomial standard deviations plus
+    one trial of the simulator's probability), the others are called with
+    foul_detect_probability 0.5. Ours over 200 trials: called and failed shares within 2.5
+    standard errors of the server's."""
     server = trace("tackle")["fouls"]["standing"]
+    p = success_probability(1.5, 0.0, foul=True)  # foul_exponent: 1 - 0.75^10
+    n = server["trials"]
+    assert abs(n - server["tackle_failed"] - n * p) <= 3.0 * math.sqrt(n * p * (1.0 - p)) + 1.0, (p, server)
     ours = foul_trials(200, victim_dashes=False, seed=13)
     assert binomial_share_agrees(ours["foul_called"], 200, server["foul_called"], server["trials"]), (ours, server)
-    failed = 200 - ours["foul_called"] - ours["tackled"]
+    failed = 200 - ours["tackled"]
     assert binomial_share_agrees(failed, 200, server["tackle_failed"], server["trials"]), (ours, server)
+    assert ours["foul_called"] <= ours["tackled"]  # only a tackle that reached the ball is judged
 
 
 def test_a_called_foul_gives_the_other_team_a_free_kick_at_the_tacklers_place_and_no_card() -> None:
     """The server: foul_charge_l, then free_kick_r with the ball where the tackler stood; a ball
     holder that did not dash earns the tackler no card."""
+    server = trace("tackle")
+    assert [m for _, m in server["followup"]["messages"]][-2:] == ["foul_charge_l", "free_kick_r"]
+    assert server["followup"]["ball_after_call"][:2] == server["followup"]["tackler_at"]
+    assert server["fouls"]["standing"]["yellow_card"] == server["fouls"]["standing"]["red_card"] == 0
     ours = foul_trials(40, victim_dashes=False, seed=17)
     assert ours["foul_called"] > 0
     assert ours["free_kick_at_tackler"] == ours["foul_called"]
-    assert ours["yellow_card"] == 0
-    assert trace("tackle")["fouls"]["standing"]["yellow_card"] == 0
+    assert ours["yellow_card"] == ours["red_card"] == 0
 
 
-def test_a_called_foul_on_a_dashing_ball_holder_brings_a_yellow_card() -> None:
-    """The server: every foul called on a ball holder that dashed in the tackle's cycle came with
-    a yellow card (8 of 8). Ours: 10 trials (each tackler once, so no second yellow)."""
+def test_a_called_foul_on_a_dashing_ball_holder_brings_a_card_the_second_one_red() -> None:
+    """The server (20 trials, its 11 tacklers in turn, red_card_probability 0): every foul
+    called on a ball holder that dashed in the tackle's cycle came with a yellow card, and a
+    tackler's second one was also a red card (so fewer red cards than calls). Ours, 30 trials
+    with 10 tacklers in turn (so that some are called twice): calls as often as the server's
+    within 2.5 standard errors, every call carded, a red card exactly for the tacklers called a
+    second time (shown as the red card alone; the server announces both), who leave play."""
     server = trace("tackle")["fouls"]["dashing"]
-    assert server["yellow_card"] == server["foul_called"] > 0
-    ours = foul_trials(N_TEAM - 1, victim_dashes=True, seed=19)
-    assert ours["foul_called"] > 0
-    assert ours["yellow_card"] == ours["foul_called"]
+    assert server["yellow_card"] == server["foul_called"] > server["red_card"]
+    ours = foul_trials(30, victim_dashes=True, seed=19)
+    assert binomial_share_agrees(ours["foul_called"], 30, server["foul_called"], server["trials"]), (ours, server)
+    assert ours["called_again"] > 0
+    assert ours["red_card"] == ours["called_again"] == ours["sent_off"]
+    assert ours["yellow_card"] + ours["red_card"] == ours["foul_called"]
+    assert ours["free_kick_at_tackler"] == ours["foul_called"]

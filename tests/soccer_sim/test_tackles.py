@@ -1,11 +1,11 @@
-"""Tackles as rcssserver makes them: reach and success probability, the push, the freeze."""
+"""Tackles as rcssserver makes them: reach and success probability, the push, the freeze.
+
+The comparisons with the real server's traces are in test_rcssserver_reference_tackles.py."""
 
 from __future__ import annotations
 
-import json
 import math
 from dataclasses import replace
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -239,65 +239,6 @@ def test_a_view_built_by_hand_has_everybody_present_and_nobody_frozen():
                     opp_vel=np.zeros((2, 2)), ball=np.zeros(2), ball_vel=np.zeros(2), stamina=np.ones(3))
     assert view.present.tolist() == [True] * 3 and view.opp_present.tolist() == [True] * 2
     assert view.frozen.tolist() == [0, 0, 0]
-
-
-# ------------------------------------------------------------------ against the real server
-REAL = json.loads((Path(__file__).parents[1] / "data" / "rcssserver" / "tackles" / "tackles.json").read_text())
-
-
-class OneCommand:
-    """Player 0 tackles towards ``direction`` (degrees, own frame) in cycle 0 and then dashes at
-    full power along +x every cycle (as the probe's player did)."""
-
-    def __init__(self, direction: float) -> None:
-        self.direction = direction
-
-    def reset(self, side_info, config, rng) -> None:
-        self.dash = config.physics.player_accel_max
-
-    def act(self, view) -> TeamCommand:
-        if view.cycle == 0:
-            return TeamCommand(dash=np.zeros((1, 2)), kick=np.zeros((1, 2)), tackle=np.array([self.direction]))
-        return TeamCommand(dash=np.array([[self.dash, 0.0]]), kick=np.zeros((1, 2)))
-
-
-def real_setup(ball_x: float, direction: float, cycles: int = 13) -> Match:
-    config = replace(quiet_config(), tackles=TackleConfig(kick_rand=0.0))  # the probe's kick_rand=0
-    match = Match(OneCommand(direction), Still(), seed=1, config=config, scenario=one_against_one(ball_x, cycles))
-    match.start()
-    return match
-
-
-@pytest.mark.parametrize("direction", sorted(REAL["push"]["by_direction"], key=float))
-def test_the_push_matches_the_real_server(direction):
-    """Ball 0.5 m ahead of a player at rest: its velocity after the tackle's cycle, within 1 %."""
-    match = real_setup(0.5, float(direction))
-    match.step()
-    real = REAL["push"]["by_direction"][direction]
-    np.testing.assert_allclose(match.state.ball_vel, real, rtol=0.01, atol=0.003)
-
-
-@pytest.mark.parametrize("case, ball_x", [("won", 0.5), ("missed", 3.0)])
-def test_the_freeze_matches_the_real_server(case, ball_x):
-    """After (tackle 0) the player dashes every cycle; it moves from the same cycle on, to the
-    same positions."""
-    match = real_setup(ball_x, 0.0)
-    xs = []
-    for _ in range(13):
-        match.step()
-        xs.append(float(match.state.pos[0, 0]))
-    np.testing.assert_allclose(xs, REAL["freeze"][case], atol=1e-9)
-
-
-def test_the_success_share_matches_the_real_server():
-    """Tackles at 1.8 m: the server's share and ours (the formula) within the binomial error."""
-    won, trials = REAL["success"]["won"], REAL["success"]["trials"]
-    expected = 1.0 - 0.9 ** 6
-    assert abs(won / trials - expected) < 3 * math.sqrt(expected * (1 - expected) / trials)
-    rng = np.random.default_rng(11)
-    ours = sum(tackle_once((1.8, 0.0), rng=rng)[0].reached[0] for _ in range(trials))
-    # the two shares differ by less than three binomial errors of their difference
-    assert abs(ours - won) / trials < 3 * math.sqrt(2 * expected * (1 - expected) / trials)
 
 
 @pytest.mark.parametrize("opponent, foul_kept, frozen", [((1.0, 0.0), True, 0), ((30.0, 0.0), False, 10)])

@@ -1,7 +1,8 @@
 """Trim the raw traces of record.py into the small test data files in tests/data/rcssserver/.
 
-usage: python3 make_data.py RAW_DIR OUT_DIR     (RAW_DIR holds clean.json, kicknoise.json,
-noisy.json and referee.json from run_probe.sh). Numbers only: metres, metres per cycle, degrees.
+usage: python3 make_data.py RAW_DIR OUT_DIR [FILE ...]   (RAW_DIR holds clean.json, kicknoise.json,
+noisy.json and referee.json from run_probe.sh; with FILEs, e.g. tackle.json, only those are written
+and only the modes they read are needed). Numbers only: metres, metres per cycle, degrees.
 """
 from __future__ import annotations
 
@@ -149,6 +150,8 @@ def tackles(c: dict, ref: dict) -> dict:
             cell = grid[(float(x), float(y))]
             cell[0] += math.hypot(*ph[1]["ball"][2:]) > 1e-6   # the ball moved: the tackle succeeded
             cell[1] += 1
+    freeze = {label: [r(s["p"]["A1"][0]) for s in c[f"tackle_freeze_{bx}"][1:]]
+              for label, bx in (("won", 0.5), ("missed", 3.0))}
     fouls = {}
     for lab in ("standing", "dashing"):
         counts = collections.Counter()
@@ -171,26 +174,37 @@ def tackles(c: dict, ref: dict) -> dict:
     return {"meta": meta(["clean", "referee"],
                          "tackle_speed: (tackle DIR off) with the ball at rest at ball_rel from the tackler (body "
                          "0), ball displacement in the tackle's cycle. grid: [x, y, successes, trials] of (tackle 0 "
-                         "off) with the ball at rest at (x, y) from the tackler. fouls: (tackle 0 on) by a left "
-                         "player at (-1, 0) on a right player at (0, 0) (body 0) holding the ball at (0.5, 0); "
+                         "off) with the ball at rest at (x, y) from the tackler. freeze: (tackle 0 off) in the "
+                         "first cycle, then (dash 100 0) every cycle, the tackler's x after each of the 13 cycles, "
+                         "the ball 0.5 m ahead (won) or 3.0 m (missed). fouls: (tackle 0 on) by a left player at "
+                         "(-1, 0) on a right player at (0, 0) (body 0) holding the ball at (0.5, 0); "
                          "'standing': the ball holder does nothing, 'dashing': it dashes in the tackle's cycle. "
                          "followup: referee messages [time, message] after a called foul"),
             "tackle_speed": speed,
             "grid": [[x, y, s, n] for (x, y), (s, n) in grid.items()],
+            "freeze": freeze,
             "fouls": fouls,
             "followup": {"messages": sequence, "ball_after_call": [r(v) for v in follow[called]["ball"]],
                          "tackler_at": [-1.0, 0.0]}}
 
 
+FILES = {"dash.json": (dash, ("clean",)), "kick.json": (kicks, ("clean",)), "contact.json": (contact, ("clean",)),
+         "noise.json": (noise, ("kicknoise", "noisy")), "tackle.json": (tackles, ("clean", "referee"))}
+"""Each data file: the function that trims it and the raw modes it reads."""
+
+
 def main() -> None:
     raw, out = sys.argv[1], sys.argv[2]
-    load = lambda m: json.load(open(f"{raw}/{m}.json"))
-    c, kn, noisy, ref = load("clean"), load("kicknoise"), load("noisy"), load("referee")
-    files = {"dash.json": dash(c), "kick.json": kicks(c), "contact.json": contact(c),
-             "noise.json": noise(kn, noisy), "tackle.json": tackles(c, ref)}
-    for name, data in files.items():
+    names = sys.argv[3:] or list(FILES)   # only these data files (their modes' raw traces suffice)
+    loaded: dict[str, dict] = {}
+    for name in names:
+        make, modes = FILES[name]
+        for m in modes:
+            if m not in loaded:
+                with open(f"{raw}/{m}.json") as f:
+                    loaded[m] = json.load(f)
         with open(f"{out}/{name}", "w") as f:
-            json.dump(data, f, separators=(",", ":"))
+            json.dump(make(*(loaded[m] for m in modes)), f, separators=(",", ":"))
             f.write("\n")
 
 

@@ -2,7 +2,8 @@
 
 usage: python3 record.py MODE RAW_OUT.json [PLAYER_PORT TRAINER_PORT]
 MODE is one of (start the server first, options in README.md):
-  clean      noise off: dashes, kicks, ball roll, two kicks, body-ball contact, tackles
+  clean      noise off: dashes, kicks, ball roll, two kicks, body-ball contact, tackles (push, freeze,
+             success by place)
   kicknoise  only kick_rand on: kick speed and direction spread
   noisy      default noise: player drift, ball launched at a standing player, kicks
   referee    noise off, referee on in trainer mode: foul tackles, fouls called, cards
@@ -242,16 +243,21 @@ def clean(rig: Rig, log: dict) -> None:
             phase(rig, log, f"ball{speed}_at_player_{j}", ("A1",),
                   [move("A1", 0, 0, 180), ball(-3.0 * speed - speed * j / 20.0, 0, speed, 0)], lambda k, s: {}, 20)
     # tackle ball speed (success is certain close in front): ball at (x, y) from the tackler, direction d
-    for bx, by, d in ((0.5, 0.0, 0), (0.5, 0.0, 90), (0.5, 0.0, 180), (0.5, 0.5, 0), (1.0, 0.0, -45), (0.5, 0.0, 45)):
+    for bx, by, d in ((0.5, 0.0, 0), (0.5, 0.0, 90), (0.5, 0.0, 180), (0.5, 0.5, 0), (1.0, 0.0, -45), (0.5, 0.0, 45),
+                      (0.5, 0.0, -90)):
         phase(rig, log, f"tackle_speed_{bx}_{by}_dir{d}", ("A1",), [move("A1", 0, 0), ball(bx, by)],
               lambda k, s, d=d: {"A1": f"(tackle {d} off)"} if k == 0 else {}, 12)  # > tackle_cycles
-    # tackle success grid, tacklers in turn (a tackler cannot act for tackle_cycles afterwards)
-    grid = [(x, 0.0) for x in (0.5, 1.0, 1.5, 1.75, 1.9, 2.05)] + \
-           [(0.5, y) for y in (0.6, 1.0, 1.15, 1.3)] + [(1.5, 0.8), (1.7, 1.0), (1.0, 1.1)] + \
-           [(-0.5, 0.0), (-0.4, 0.3), (0.0, 0.8)]
+    # the freeze: (tackle 0) in the first cycle, then (dash 100 0) every cycle; ball won (0.5 m) or missed (3 m)
+    for bx in (0.5, 3.0):
+        phase(rig, log, f"tackle_freeze_{bx}", ("A1",), [move("A1", 0, 0), ball(bx, 0)],
+              lambda k, s: {"A1": "(tackle 0 off)" if k == 0 else "(dash 100 0)"}, 13)
+    # tackle success grid [(x, y, trials)], tacklers in turn (a tackler cannot act for tackle_cycles afterwards)
+    grid = [(x, 0.0, 60) for x in (0.5, 1.0, 1.5, 1.75, 1.9, 2.05)] + \
+           [(0.5, y, 60) for y in (0.6, 1.0, 1.15, 1.3)] + [(1.5, 0.8, 60), (1.7, 1.0, 60), (1.0, 1.1, 60)] + \
+           [(-0.5, 0.0, 60), (-0.4, 0.3, 60), (0.0, 0.8, 60), (1.8, 0.0, 200)]
     n = 0
-    for gx, gy in grid:
-        for j in range(60):
+    for gx, gy, trials in grid:
+        for j in range(trials):
             t = TACKLERS[n % len(TACKLERS)]
             n += 1
             phase(rig, log, f"tackle_grid_{gx}_{gy}_{j}", (t,), [move(t, 0, 0), ball(gx, gy)],
