@@ -19,6 +19,8 @@ import math
 import numpy as np
 from numba import njit
 
+from soccer_sim.body import ball_angle_to_body
+
 REQUEST_CAP = 1e100
 """Longest dash or kick request the rules work with: a longer one is shortened to this length in
 the same direction first. Any request above the physical limits is clipped to them anyway;
@@ -36,6 +38,12 @@ DASH_PARAMS = np.dtype(_fields(
     "effort_dec_thr", "effort_dec", "effort_min", "effort_inc_thr", "effort_inc", "effort_max"))
 """The dash and stamina rules and the movement noise (:func:`dash_players`); the thresholds are
 absolute stamina values."""
+
+KICK_PARAMS = np.dtype(_fields(
+    "kick_max", "ball_speed_max", "touch_distance", "kickable_margin", "angle_penalty", "distance_penalty",
+    "inertia_moment", "kick_rand", "speed_rate_scale") + _fields("cap_sum", kind=np.bool_))
+"""The kick rule (:func:`apply_kicks`): ``speed_rate_scale`` is ``0.5 / (ball_speed_max *
+ball_decay)``, ``cap_sum`` whether the cycle's kicks are capped together."""
 
 DECAY_PARAMS = np.dtype(_fields("player_decay", "ball_decay"))
 """Velocity decay (:func:`decay_velocities`)."""
@@ -190,6 +198,70 @@ def find_kickers(pos: np.ndarray, ball: np.ndarray, kick: np.ndarray, mask: np.n
             rows_out[count] = i
             count += 1
     return count, nearest
+
+
+@njit(cache=True, nogil=True)
+def apply_kicks(kickers: np.ndarray, pos: np.ndarray, vel: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray,
+                kick: np.ndarray, dist: np.ndarray, holder: int, noise: np.ndarray,
+                params: np.ndarray) -> None:  # pragma: no cover - compiled
+    """rcssserver's kick rule for the player rows ``kickers`` (see
+    :meth:`soccer_sim.kinematics.Kinematics.kick`); changes ``ball_vel`` in place. ``noise``:
+    (P, 2) draws in [0, 1) (length, direction) of each player's kick noise; ``params``: a
+    :data:`KICK_PARAMS` record."""
+    p = params[0]
+    kick_max, margin, touch = p.kick_max, p.kickable_margin, p.touch_distance
+    request_cap = REQUEST_CAP
+    ax = ay = 0.0
+    bx, by = ball[0], ball[1]
+    speed_rate = 0.5 + p.speed_rate_scale * math.sqrt(ball_vel[0] * ball_vel[0] + ball_vel[1] * ball_vel[1])
+    for k in range(kickers.shape[0]):
+        row = kickers[k]
+        kx, ky = kick[row, 0], kick[row, 1]
+        power = math.sqrt(kx * kx + ky * ky)
+        if power > request_cap:  # huge (or overflowing) request: same direction, finite length
+            big = max(abs(kx), abs(ky))
+            kx = kx / big * request_cap
+            ky = ky / big * request_cap
+            power = math.sqrt(kx * kx + ky * ky)
+        if power > kick_max:
+            kx *= kick_max / power
+            ky *= kick_max / power
+            power = kick_max
+        angle_rate = 0.0  # dir_diff / 180°
+        distance_rate = 0.0  # dist_ball / kickable_margin
+        if row != holder:
+            distance_rate = (dist[row] - touch) / margin
+            angle_rate = ball_angle_to_body(vel[row, 0], vel[row, 1], bx - pos[row, 0], by - pos[row, 1],
+                                            p.inertia_moment) / math.pi
+        effect = 1.0 - p.angle_penalty * angle_rate - p.distance_penalty * distance_rate
+        kx *= effect
+        ky *= effect
+        # rcssserver's kick noise: largest length kick_rand * power / max_power * (pos_rate +
+        # speed_rate), each rate within [0.5, 1].
+        pos_rate = 0.5 + 0.25 * (angle_rate + distance_rate)
+        reach = p.kick_rand * (power / kick_max) * (pos_rate + speed_rate) * noise[row, 0]
+        turn = (2.0 * noise[row, 1] - 1.0) * math.pi
+        kx += reach * math.cos(turn)
+        ky += reach * math.sin(turn)
+        if not p.cap_sum:
+            change = math.sqrt(kx * kx + ky * ky)
+            if change > kick_max:
+                kx *= kick_max / change
+                ky *= kick_max / change
+        ax += kx
+        ay += ky
+    change = math.sqrt(ax * ax + ay * ay)
+    if change > kick_max and p.cap_sum:
+        ax *= kick_max / change
+        ay *= kick_max / change
+    vx = ball_vel[0] + ax
+    vy = ball_vel[1] + ay
+    speed = math.sqrt(vx * vx + vy * vy)
+    if speed > p.ball_speed_max:
+        vx *= p.ball_speed_max / speed
+        vy *= p.ball_speed_max / speed
+    ball_vel[0] = vx
+    ball_vel[1] = vy
 
 
 @njit(cache=True, nogil=True)

@@ -45,19 +45,15 @@ random stream does not depend on what happened (see :class:`CycleNoise`).
 
 The per-player rules are compiled loops (numba, in :mod:`soccer_sim.kernels`): written as
 small numpy calls the dash alone cost about 15 microseconds per cycle, a third of a cycle's
-budget; compiled, each rule costs about one microsecond (mostly the call itself). The kick,
-applied by a few players at most, is plain scalar Python.
+budget; compiled, each rule costs about one microsecond (mostly the call itself).
 """
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
-from soccer_sim.body import ball_angle_to_body
 from soccer_sim.config import MatchConfig
-from soccer_sim.kernels import (DASH_PARAMS, DECAY_PARAMS, REQUEST_CAP, dash_players, decay_velocities,
+from soccer_sim.kernels import (DASH_PARAMS, DECAY_PARAMS, KICK_PARAMS, apply_kicks, dash_players, decay_velocities,
                                 find_kickers, make_record)
 
 
@@ -105,7 +101,12 @@ class Kinematics:
             effort_max=stam.effort_max)
         self._stamina_config = stam
         self._decay_params = make_record(DECAY_PARAMS, player_decay=phys.player_decay, ball_decay=phys.ball_decay)
-        self._speed_rate_scale = 0.5 / (phys.ball_speed_max * phys.ball_decay)
+        self._kick_params = make_record(
+            KICK_PARAMS, kick_max=phys.kick_speed_max, ball_speed_max=phys.ball_speed_max,
+            touch_distance=self._touch_distance, kickable_margin=phys.kickable_margin,
+            angle_penalty=phys.kick_angle_penalty, distance_penalty=phys.kick_distance_penalty,
+            inertia_moment=phys.inertia_moment, kick_rand=phys.kick_rand,
+            speed_rate_scale=0.5 / (phys.ball_speed_max * phys.ball_decay), cap_sum=phys.cap_summed_kicks)
         self.ball_distance = np.empty(n2)
         """Centre distance of every player to the ball (m), from the last :meth:`kick_candidates`."""
         self.player_speed = np.empty(n2)
@@ -131,59 +132,7 @@ class Kinematics:
         draws (:attr:`CycleNoise.kick`). A holding goalkeeper (row ``holder``) holds the ball
         touching the front of its body, so it kicks without distance or angle penalty.
         """
-        phys = self.phys
-        kick_max = phys.kick_speed_max
-        margin = phys.kickable_margin
-        inertia = phys.inertia_moment
-        ax = ay = 0.0
-        bx, by = float(ball[0]), float(ball[1])
-        speed_rate = 0.5 + self._speed_rate_scale * math.hypot(float(ball_vel[0]), float(ball_vel[1]))
-        for row in kickers.tolist():
-            kx, ky = float(kick[row, 0]), float(kick[row, 1])
-            power = math.hypot(kx, ky)
-            if power > REQUEST_CAP:  # huge (or overflowing) request: same direction, finite length
-                big = max(abs(kx), abs(ky))
-                kx = kx / big * REQUEST_CAP
-                ky = ky / big * REQUEST_CAP
-                power = math.hypot(kx, ky)
-            if power > kick_max:
-                kx *= kick_max / power
-                ky *= kick_max / power
-                power = kick_max
-            angle_rate = distance_rate = 0.0  # dir_diff / 180° and dist_ball / kickable_margin
-            if row != holder:
-                distance_rate = (float(dist[row]) - self._touch_distance) / margin
-                angle_rate = ball_angle_to_body(float(vel[row, 0]), float(vel[row, 1]), bx - float(pos[row, 0]),
-                                                by - float(pos[row, 1]), inertia) / math.pi
-            effect = 1.0 - phys.kick_angle_penalty * angle_rate - phys.kick_distance_penalty * distance_rate
-            kx *= effect
-            ky *= effect
-            # rcssserver's kick noise: largest length kick_rand * power / max_power * (pos_rate
-            # + speed_rate), each rate within [0.5, 1].
-            pos_rate = 0.5 + 0.25 * (angle_rate + distance_rate)
-            reach = phys.kick_rand * (power / kick_max) * (pos_rate + speed_rate) * float(noise[row, 0])
-            turn = (2.0 * float(noise[row, 1]) - 1.0) * math.pi
-            kx += reach * math.cos(turn)
-            ky += reach * math.sin(turn)
-            if not phys.cap_summed_kicks:
-                change = math.hypot(kx, ky)
-                if change > kick_max:
-                    kx *= kick_max / change
-                    ky *= kick_max / change
-            ax += kx
-            ay += ky
-        change = math.hypot(ax, ay)
-        if change > kick_max and phys.cap_summed_kicks:
-            ax *= kick_max / change
-            ay *= kick_max / change
-        vx = float(ball_vel[0]) + ax
-        vy = float(ball_vel[1]) + ay
-        speed = math.hypot(vx, vy)
-        if speed > phys.ball_speed_max:
-            vx *= phys.ball_speed_max / speed
-            vy *= phys.ball_speed_max / speed
-        ball_vel[0] = vx
-        ball_vel[1] = vy
+        apply_kicks(kickers, pos, vel, ball, ball_vel, kick, dist, holder, noise, self._kick_params)
 
     # --- dashes and stamina ----------------------------------------------------------------
     def dash(self, vel: np.ndarray, ball_vel: np.ndarray, stamina: np.ndarray, effort: np.ndarray,

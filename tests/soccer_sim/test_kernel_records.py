@@ -9,7 +9,7 @@ import pytest
 from soccer_sim import kernels
 from soccer_sim.kernels import OVERLAP_PARAMS, make_record
 
-RECORDS = [kernels.DASH_PARAMS, kernels.DECAY_PARAMS, kernels.MARGIN_PARAMS, kernels.SUBSTEP_PARAMS,
+RECORDS = [kernels.DASH_PARAMS, kernels.DECAY_PARAMS, kernels.KICK_PARAMS, kernels.MARGIN_PARAMS, kernels.SUBSTEP_PARAMS,
            kernels.BALL_CONTACT_PARAMS, kernels.OVERLAP_PARAMS]
 
 
