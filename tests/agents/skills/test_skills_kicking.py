@@ -27,8 +27,8 @@ def apply_kick(player, ball, ball_vel, kick, holder=False) -> np.ndarray:
     requests[0] = kick
     dist = np.hypot(*(pos - np.asarray(ball)).T)
     vel = np.array(ball_vel, float)
-    kin.kick(np.array([0]), pos, np.asarray(ball, float), vel, requests, dist, 0 if holder else -1,
-             np.full(2, 0.5))
+    kin.kick(np.array([0]), pos, np.zeros((2 * N, 2)), np.asarray(ball, float), vel, requests, dist,
+             0 if holder else -1, np.zeros((2 * N, 2)))
     return vel
 
 
