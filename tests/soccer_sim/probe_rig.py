@@ -131,6 +131,32 @@ def first_step_of_a_kick(ball_offset: tuple[float, float], direction: tuple[floa
     return rig.state.ball - before
 
 
+def kick_once(ball_offset: tuple[float, float], kick_vector: tuple[float, float], holder: int = -1,
+              player_vel: tuple[float, float] = (0.0, 0.0), config: MatchConfig | None = None,
+              noise: np.ndarray | None = None) -> tuple[int, np.ndarray]:
+    """The kick rule alone: player 0 at the origin moving at ``player_vel``, the ball at rest at
+    ``ball_offset``, player 0 requests ``kick_vector`` (the configuration without noise unless
+    given; kick noise draws ``noise``, none by default); returns (kickers found, the ball's new
+    velocity)."""
+    config = probe_config(noise=False) if config is None else config
+    kin = Kinematics(config, ROWS)
+    vel = np.zeros((ROWS, 2))
+    vel[0] = player_vel
+    pos = FAR.copy()
+    pos[0] = (0.0, 0.0)
+    ball = np.array(ball_offset, dtype=float)
+    ball_vel = np.zeros(2)
+    kick = np.zeros((ROWS, 2))
+    kick[0] = kick_vector
+    rows = np.zeros(ROWS, dtype=np.int64)
+    count, nearest = kin.kick_candidates(pos, ball, kick, np.ones(ROWS, dtype=bool), holder, rows)
+    assert math.isclose(nearest, math.hypot(*ball_offset))
+    if count:
+        kin.kick(rows[:count], pos, vel, ball, ball_vel, kick, kin.ball_distance, holder,
+                 np.zeros((ROWS, 2)) if noise is None else noise)
+    return count, ball_vel
+
+
 def direction_degrees(vector: np.ndarray) -> float:
     """Direction of a 2-vector in degrees."""
     return math.degrees(math.atan2(vector[1], vector[0]))

@@ -9,9 +9,11 @@ import math
 
 import numpy as np
 import pytest
-from tests.soccer_sim.probe_rig import first_step_of_a_kick
-from tests.soccer_sim.test_physics_limits import PHYS, kick_once
+from tests.soccer_sim.probe_rig import first_step_of_a_kick, kick_once
 
+from soccer_sim.config import PhysicsConfig
+
+PHYS = PhysicsConfig()
 TOUCH = PHYS.player_radius + PHYS.ball_radius
 
 

@@ -10,8 +10,8 @@ import math
 
 import numpy as np
 import pytest
-from tests.soccer_sim.probe_rig import ROWS, Rig, dash_power, direction_degrees, first_step_of_a_kick, probe_config
-from tests.soccer_sim.test_physics_limits import kick_once
+from tests.soccer_sim.probe_rig import (ROWS, Rig, dash_power, direction_degrees, first_step_of_a_kick, kick_once,
+                                        probe_config)
 
 from soccer_sim.config import PhysicsConfig
 from soccer_sim.kinematics import Kinematics

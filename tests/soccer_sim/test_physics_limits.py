@@ -9,6 +9,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 from tests.soccer_sim.core_helpers import quiet_config
+from tests.soccer_sim.probe_rig import kick_once
 
 from soccer_sim.config import StaminaConfig
 from soccer_sim.kinematics import CycleNoise, Kinematics
@@ -179,27 +180,6 @@ def test_once_the_capacity_is_spent_stamina_no_longer_recovers() -> None:
 
 
 # --- kicks ---------------------------------------------------------------------------------
-def kick_once(ball_offset, kick_vector, holder=-1, player_vel=(0.0, 0.0), config=CONFIG, noise=None):
-    """Player 0 at the origin moving at ``player_vel``, the ball at rest at ``ball_offset``;
-    returns (kicked?, new ball velocity)."""
-    kin = Kinematics(config, 2 * N)
-    vel = np.zeros((2 * N, 2))
-    vel[0] = player_vel
-    pos = FAR.copy()
-    pos[0] = (0.0, 0.0)
-    ball = np.array(ball_offset, dtype=float)
-    ball_vel = np.zeros(2)
-    kick = np.zeros((2 * N, 2))
-    kick[0] = kick_vector
-    rows = np.zeros(2 * N, dtype=np.int64)
-    count, nearest = kin.kick_candidates(pos, ball, kick, np.ones(2 * N, dtype=bool), holder, rows)
-    assert nearest == pytest.approx(math.hypot(*ball_offset))
-    if count:
-        kin.kick(rows[:count], pos, vel, ball, ball_vel, kick, kin.ball_distance, holder,
-                 no_kick_noise() if noise is None else noise)
-    return count, ball_vel
-
-
 def test_kickable_distance_is_the_touch_distance_plus_the_margin() -> None:
     reach = PHYS.player_radius + PHYS.ball_radius + PHYS.kickable_margin
     assert reach == pytest.approx(1.085)
