@@ -9,9 +9,11 @@ so writing the whole world into pymunk and reading it back are one call each, st
 and into the state's own table, with no per-body Python objects.
 
 Units: pymunk's time unit is one cycle, so velocities are m/cycle and one cycle is a total
-``dt`` of 1, split into sub-steps when bodies that can meet close in fast (so that a
-full-speed ball cannot jump over a player between two collision checks; see
-:class:`SubstepPlanner`).
+``dt`` of 1, split into sub-steps when bodies that can meet close in fast (so that players,
+and with rigid body-ball contacts the ball, cannot jump over each other between two collision
+checks; see :class:`SubstepPlanner`). Body-ball contacts follow
+:attr:`PhysicsConfig.body_ball_contact <soccer_sim.config.PhysicsConfig.body_ball_contact>`:
+by default rcssserver's separation of the overlaps left at the end of the cycle.
 """
 
 from __future__ import annotations
