@@ -20,7 +20,7 @@ from dataclasses import field as default_of
 from soccer_sim.errors import SoccerSimError
 
 
-BODY_BALL_CONTACTS = ("rcssserver", "rigid")
+BODY_BALL_CONTACTS = ("rcssserver", "swept", "rigid")
 """The values of :attr:`PhysicsConfig.body_ball_contact`."""
 
 
@@ -141,16 +141,31 @@ class PhysicsConfig:
     kickable_margin: float = 0.7
     """The ball is kickable when its surface is within this distance of the player's surface (m)."""
     kick_distance_penalty: float = 0.25
-    """Kick effectiveness lost when the ball is at the far edge of the kickable margin."""
+    """Kick power lost when the ball lies at the far edge of the kickable margin (rcssserver's
+    kick rule, ``player.cpp``: ``0.25 * dist_ball / kickable_margin``, where ``dist_ball`` is the
+    gap between the ball's and the player's surfaces)."""
     kick_angle_penalty: float = 0.25
-    """Kick effectiveness lost when kicking the ball straight back through the player (180°)."""
-    player_noise: float = 0.05
-    """Uniform movement noise per axis, as a fraction of the player's speed."""
-    ball_noise: float = 0.05
-    """Uniform ball-movement noise per axis, as a fraction of the ball's speed."""
-    kick_noise: float = 0.05
-    """Uniform kick noise per axis, as a fraction of the kicks' strength (the sum of the
-    cycle's kicks' velocity changes, at most ``kick_speed_max``)."""
+    """Kick power lost when the ball lies straight behind the player's body (rcssserver's kick
+    rule: ``0.25 * dir_diff / 180°``, ``dir_diff`` the angle between the body direction and the
+    direction to the ball; the body direction is :mod:`soccer_sim.body`'s). It does not depend
+    on the direction the ball is sent."""
+    inertia_moment: float = 5.0
+    """How much speed limits a player's turn (rcssserver ``inertia_moment`` of the default
+    player type): the largest turn is ``180° / (1 + inertia_moment * speed)``. Used by the
+    body-direction model (:mod:`soccer_sim.body`) that the kick rule asks where a body faces."""
+    player_rand: float = 0.1
+    """Movement noise of the players (rcssserver ``player_rand``): after its dash, a player's
+    velocity gets a random vector of length uniform in ``[0, player_rand * speed]`` and
+    direction uniform in ``[-180°, 180°)`` (rcssserver's ``MPObject::noise``)."""
+    ball_rand: float = 0.05
+    """Movement noise of the ball (rcssserver ``ball_rand``), drawn like ``player_rand`` from
+    the ball's speed after this cycle's kicks."""
+    kick_rand: float = 0.1
+    """Kick noise (rcssserver ``kick_rand`` of the default player type): each kick adds a
+    random vector of length uniform in ``[0, kick_rand * power / max_power * (pos_rate +
+    speed_rate)]`` (``pos_rate = 0.5 + 0.25 * (dir_diff / 180° + dist_ball / kickable_margin)``,
+    ``speed_rate = 0.5 + 0.5 * ball_speed / (ball_speed_max * ball_decay)``) and uniform
+    direction: it grows with the ball's distance, its angle to the body and its speed."""
     player_mass: float = 70.0
     """Mass of a player's body (kg); only the ratio to ``ball_mass`` matters in collisions."""
     ball_mass: float = 0.43
@@ -162,15 +177,26 @@ class PhysicsConfig:
     """Bounciness of the ball; goal posts are perfectly elastic, so the ball keeps this fraction
     of its normal speed off a post and ``ball_restitution * player_restitution`` off a player."""
     body_ball_contact: str = "rcssserver"
-    """How a player's body and the ball meet. ``"rcssserver"``: when they would overlap, both
-    are put back where they first touched along this cycle's paths and both velocities are
-    multiplied by ``collision_velocity_factor``, so a body can stop or deflect the ball but
-    never propel it. ``"rigid"``: the collision solver treats them as rigid discs with the
-    restitutions above, so a running player pushes the ball ahead at its own speed (the
-    simulator's behaviour before 0.2)."""
+    """How a player's body and the ball meet.
+
+    * ``"rcssserver"`` (rcssserver's ``Stadium::collisions``): after everything has moved, a
+      player and the ball that overlap are moved apart along the line between their centres,
+      each by half the overlap, repeated (at most 10 rounds) while any overlap remains; a ball
+      overlapping several players goes to the mean of its separated positions; then the
+      velocity of every body that met another is multiplied by ``collision_velocity_factor``
+      once. Only overlaps at the end of the cycle count, so a fast ball can pass through a
+      player and a slow player pushes the ball. Outside play on the ball stays and the player
+      is moved off it.
+    * ``"swept"`` (not rcssserver's): the paths of the cycle are swept and both bodies are put
+      back where they first touched, velocities times ``collision_velocity_factor``; no ball
+      passes through a player, and a body never propels the ball. This cycle's kickers let the
+      ball pass.
+    * ``"rigid"``: the collision solver treats them as rigid discs with the restitutions
+      above, so a running player pushes the ball ahead at its own speed (the simulator's
+      behaviour before 0.2)."""
     collision_velocity_factor: float = -0.1
     """Factor on the ball's and the player's velocities after a body-ball contact
-    (rcssserver: -0.1); within [-1, 0]."""
+    (rcssserver: -0.1, hard-coded in ``MPObject::updateCollisionVel``); within [-1, 0]."""
     max_substep_distance: float = 0.3
     """Physics sub-steps are added until no body moves further than this in one sub-step (m),
     so that a full-speed ball cannot pass through a player. Motion is measured relative to the
@@ -181,11 +207,11 @@ class PhysicsConfig:
         _require_positive(
             self, "cycle_seconds", "player_radius", "ball_radius", "player_speed_max", "dash_power_max",
             "dash_power_rate", "dash_heading_speed", "ball_speed_max", "kick_speed_max", "kickable_margin",
-            "max_substep_distance", "player_mass", "ball_mass",
+            "max_substep_distance", "player_mass", "ball_mass", "inertia_moment",
         )
         _require_fraction(
             self, "player_decay", "ball_decay", "kick_distance_penalty", "kick_angle_penalty",
-            "player_noise", "ball_noise", "kick_noise", "player_restitution", "ball_restitution",
+            "player_rand", "ball_rand", "kick_rand", "player_restitution", "ball_restitution",
             "side_dash_rate", "back_dash_rate",
         )
         if not isinstance(self.cap_summed_kicks, bool):
@@ -214,6 +240,17 @@ class PhysicsConfig:
     def kickable_distance(self) -> float:
         """Centre-to-centre distance within which a player can kick the ball (m)."""
         return self.player_radius + self.ball_radius + self.kickable_margin
+
+    @property
+    def kick_noise(self) -> float:
+        """Derived, not a parameter: the kick noise as one figure for planners that model it
+        as a uniform spread of the ball's direction (radians). It is the half-width of the
+        uniform spread with the same standard deviation as the direction of a full-power kick
+        of a ball at rest touching the body, ``kick_rand`` and ``ball_rand`` together (a
+        random vector of length uniform in ``[0, a]`` has a standard deviation of ``a / √6``
+        across): about 0.044 at the defaults (rcssserver measured: 1.41° standard deviation)."""
+        across = math.sqrt((self.kick_rand ** 2 + (self.ball_rand * self.kick_speed_max) ** 2) / 6.0)
+        return math.sqrt(3.0) * across / self.kick_speed_max
 
 
 @dataclass(frozen=True)

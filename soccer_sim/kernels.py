@@ -6,9 +6,9 @@ on arrays of 23 rows). Parameters fixed for a match travel as a named record: a 
 numpy structured array whose fields the kernel reads by name (``params[0].ball_decay``); see
 :func:`make_record`. Passing such a record costs the same as passing a plain float array.
 
-Users: :mod:`soccer_sim.kinematics` (dash and stamina, kick candidates, decay),
-:mod:`soccer_sim.physics` (sub-steps, rcssserver ball contacts, the field margin and
-teammate contacts), :mod:`soccer_sim.view` (mirrored views, command intake),
+Users: :mod:`soccer_sim.kinematics` (dash and stamina, movement noise, kick candidates,
+decay), :mod:`soccer_sim.physics` (sub-steps, rcssserver's and swept ball contacts, the field
+margin and teammate contacts), :mod:`soccer_sim.view` (mirrored views, command intake),
 :mod:`soccer_sim.trivial_teams` (the chaser) and :mod:`soccer_sim.statistics` (distance run).
 """
 
@@ -18,6 +18,8 @@ import math
 
 import numpy as np
 from numba import njit
+
+from soccer_sim.body import ball_angle_to_body
 
 REQUEST_CAP = 1e100
 """Longest dash or kick request the rules work with: a longer one is shortened to this length in
@@ -32,12 +34,19 @@ def _fields(*names: str, kind: type = np.float64) -> list[tuple[str, type]]:
 
 DASH_PARAMS = np.dtype(_fields(
     "power_rate", "power_max", "side_rate", "back_rate", "heading_speed", "extra_stamina", "speed_max",
-    "noise", "stamina_max", "recovery_per_cycle", "recover_dec_thr", "recover_dec", "recover_min",
+    "player_rand", "ball_rand", "stamina_max", "recovery_per_cycle", "recover_dec_thr", "recover_dec", "recover_min",
     "effort_dec_thr", "effort_dec", "effort_min", "effort_inc_thr", "effort_inc", "effort_max"))
-"""The dash and stamina rules (:func:`dash_players`); the thresholds are absolute stamina values."""
+"""The dash and stamina rules and the movement noise (:func:`dash_players`); the thresholds are
+absolute stamina values."""
 
-DECAY_PARAMS = np.dtype(_fields("player_decay", "ball_decay", "ball_noise", "ball_speed_max"))
-"""Velocity decay and ball noise (:func:`decay_velocities`)."""
+KICK_PARAMS = np.dtype(_fields(
+    "kick_max", "ball_speed_max", "touch_distance", "kickable_margin", "angle_penalty", "distance_penalty",
+    "inertia_moment", "kick_rand", "speed_rate_scale") + _fields("cap_sum", kind=np.bool_))
+"""The kick rule (:func:`apply_kicks`): ``speed_rate_scale`` is ``0.5 / (ball_speed_max *
+ball_decay)``, ``cap_sum`` whether the cycle's kicks are capped together."""
+
+DECAY_PARAMS = np.dtype(_fields("player_decay", "ball_decay"))
+"""Velocity decay (:func:`decay_velocities`)."""
 
 MARGIN_PARAMS = np.dtype(_fields("home", "players", kind=np.int64) + _fields(
     "begin2", "end2", "x_max", "y_max"))
@@ -55,6 +64,14 @@ ball and players (:func:`substeps_needed`)."""
 BALL_CONTACT_PARAMS = np.dtype(_fields("contact", "factor"))
 """Player-ball contact distance and the velocity factor of a contact (:func:`resolve_ball_contacts`)."""
 
+OVERLAP_PARAMS = np.dtype(_fields("contact", "factor") + _fields("rounds", kind=np.int64))
+"""Player-ball contact distance, the velocity factor of a contact and the most rounds of
+separation per cycle (:func:`separate_ball_overlaps`)."""
+
+SEPARATION_EPS = 1e-10
+"""What rcssserver adds to each half of a separation (its ``EPS``), so that separated bodies
+no longer count as overlapping."""
+
 
 def make_record(dtype: np.dtype, **values: float | bool) -> np.ndarray:
     """A one-element record array of ``dtype`` with every field set by name (all are required)."""
@@ -70,16 +87,32 @@ def make_record(dtype: np.dtype, **values: float | bool) -> np.ndarray:
 
 # --- kinematics ------------------------------------------------------------------------------
 @njit(cache=True, nogil=True)
-def dash_players(vel: np.ndarray, stamina: np.ndarray, effort: np.ndarray, recovery: np.ndarray,
-                 capacity: np.ndarray, dash: np.ndarray, noise: np.ndarray, params: np.ndarray,
-                 speed_out: np.ndarray) -> float:  # pragma: no cover - compiled
-    """The dash and stamina rules for every player row (see :mod:`soccer_sim.kinematics`);
-    returns the top speed. ``params``: a :data:`DASH_PARAMS` record."""
+def _perturb(vx: float, vy: float, rand: float, length_draw: float,
+             angle_draw: float) -> tuple[float, float]:  # pragma: no cover - compiled
+    """rcssserver's movement noise (``MPObject::noise``): a vector of length uniform in
+    ``[0, rand * speed]`` and direction uniform in ``[-pi, pi)``, from two draws in [0, 1)."""
+    length = math.sqrt(vx * vx + vy * vy) * rand * length_draw
+    if length == 0.0:
+        return vx, vy
+    angle = (2.0 * angle_draw - 1.0) * math.pi
+    return vx + length * math.cos(angle), vy + length * math.sin(angle)
+
+
+@njit(cache=True, nogil=True)
+def dash_players(vel: np.ndarray, ball_vel: np.ndarray, stamina: np.ndarray, effort: np.ndarray,
+                 recovery: np.ndarray, capacity: np.ndarray, dash: np.ndarray, noise: np.ndarray,
+                 params: np.ndarray, speed_out: np.ndarray) -> float:  # pragma: no cover - compiled
+    """The dash and stamina rules for every player row (see :mod:`soccer_sim.kinematics`), then
+    the movement noise of every body; returns the top player speed. ``noise``: (P + 1, 2) draws
+    in [0, 1), the players' rows then the ball's; ``params``: a :data:`DASH_PARAMS` record.
+
+    As in rcssserver's ``MPObject::_inc``, a body's velocity is first clipped to its largest
+    speed, then perturbed (so noise may carry it slightly beyond), then moved."""
     p = params[0]
     power_rate, power_max, side_rate, back_rate, heading_speed = (
         p.power_rate, p.power_max, p.side_rate, p.back_rate, p.heading_speed)
-    extra, speed_max, noise_frac, stamina_max, inc_max = (
-        p.extra_stamina, p.speed_max, p.noise, p.stamina_max, p.recovery_per_cycle)
+    extra, speed_max, player_rand, stamina_max, inc_max = (
+        p.extra_stamina, p.speed_max, p.player_rand, p.stamina_max, p.recovery_per_cycle)
     rec_thr, rec_dec, rec_min = p.recover_dec_thr, p.recover_dec, p.recover_min
     eff_dec_thr, eff_dec, eff_min = p.effort_dec_thr, p.effort_dec, p.effort_min
     eff_inc_thr, eff_inc, eff_max = p.effort_inc_thr, p.effort_inc, p.effort_max
@@ -130,19 +163,19 @@ def dash_players(vel: np.ndarray, stamina: np.ndarray, effort: np.ndarray, recov
             stamina[i] = st + gain
         vx += ax
         vy += ay
-        amount = math.sqrt(vx * vx + vy * vy) * noise_frac
-        vx += (2.0 * noise[i, 0] - 1.0) * amount
-        vy += (2.0 * noise[i, 1] - 1.0) * amount
         speed = math.sqrt(vx * vx + vy * vy)
         if speed > speed_max:
             vx *= speed_max / speed
             vy *= speed_max / speed
-            speed = speed_max
+        vx, vy = _perturb(vx, vy, player_rand, noise[i, 0], noise[i, 1])
+        speed = math.sqrt(vx * vx + vy * vy)
         vel[i, 0] = vx
         vel[i, 1] = vy
         speed_out[i] = speed
         if speed > fastest:
             fastest = speed
+    ball = vel.shape[0]
+    ball_vel[0], ball_vel[1] = _perturb(ball_vel[0], ball_vel[1], p.ball_rand, noise[ball, 0], noise[ball, 1])
     return fastest
 
 
@@ -168,26 +201,79 @@ def find_kickers(pos: np.ndarray, ball: np.ndarray, kick: np.ndarray, mask: np.n
 
 
 @njit(cache=True, nogil=True)
-def decay_velocities(vel: np.ndarray, ball_vel: np.ndarray, noise: np.ndarray,
-                     params: np.ndarray) -> None:  # pragma: no cover - compiled
-    """Velocity decay of players and ball, ball noise and speed limit. ``params``: a
-    :data:`DECAY_PARAMS` record."""
+def apply_kicks(kickers: np.ndarray, pos: np.ndarray, vel: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray,
+                kick: np.ndarray, dist: np.ndarray, holder: int, noise: np.ndarray,
+                params: np.ndarray) -> None:  # pragma: no cover - compiled
+    """rcssserver's kick rule for the player rows ``kickers`` (see
+    :meth:`soccer_sim.kinematics.Kinematics.kick`); changes ``ball_vel`` in place. ``noise``:
+    (P, 2) draws in [0, 1) (length, direction) of each player's kick noise; ``params``: a
+    :data:`KICK_PARAMS` record."""
     p = params[0]
-    player_decay, ball_decay, ball_noise, ball_max = p.player_decay, p.ball_decay, p.ball_noise, p.ball_speed_max
+    kick_max, margin, touch = p.kick_max, p.kickable_margin, p.touch_distance
+    request_cap = REQUEST_CAP
+    ax = ay = 0.0
+    bx, by = ball[0], ball[1]
+    speed_rate = 0.5 + p.speed_rate_scale * math.sqrt(ball_vel[0] * ball_vel[0] + ball_vel[1] * ball_vel[1])
+    for k in range(kickers.shape[0]):
+        row = kickers[k]
+        kx, ky = kick[row, 0], kick[row, 1]
+        power = math.sqrt(kx * kx + ky * ky)
+        if power > request_cap:  # huge (or overflowing) request: same direction, finite length
+            big = max(abs(kx), abs(ky))
+            kx = kx / big * request_cap
+            ky = ky / big * request_cap
+            power = math.sqrt(kx * kx + ky * ky)
+        if power > kick_max:
+            kx *= kick_max / power
+            ky *= kick_max / power
+            power = kick_max
+        angle_rate = 0.0  # dir_diff / 180°
+        distance_rate = 0.0  # dist_ball / kickable_margin
+        if row != holder:
+            distance_rate = (dist[row] - touch) / margin
+            angle_rate = ball_angle_to_body(vel[row, 0], vel[row, 1], bx - pos[row, 0], by - pos[row, 1],
+                                            p.inertia_moment) / math.pi
+        effect = 1.0 - p.angle_penalty * angle_rate - p.distance_penalty * distance_rate
+        kx *= effect
+        ky *= effect
+        # rcssserver's kick noise: largest length kick_rand * power / max_power * (pos_rate +
+        # speed_rate), each rate within [0.5, 1].
+        pos_rate = 0.5 + 0.25 * (angle_rate + distance_rate)
+        reach = p.kick_rand * (power / kick_max) * (pos_rate + speed_rate) * noise[row, 0]
+        turn = (2.0 * noise[row, 1] - 1.0) * math.pi
+        kx += reach * math.cos(turn)
+        ky += reach * math.sin(turn)
+        if not p.cap_sum:
+            change = math.sqrt(kx * kx + ky * ky)
+            if change > kick_max:
+                kx *= kick_max / change
+                ky *= kick_max / change
+        ax += kx
+        ay += ky
+    change = math.sqrt(ax * ax + ay * ay)
+    if change > kick_max and p.cap_sum:
+        ax *= kick_max / change
+        ay *= kick_max / change
+    vx = ball_vel[0] + ax
+    vy = ball_vel[1] + ay
+    speed = math.sqrt(vx * vx + vy * vy)
+    if speed > p.ball_speed_max:
+        vx *= p.ball_speed_max / speed
+        vy *= p.ball_speed_max / speed
+    ball_vel[0] = vx
+    ball_vel[1] = vy
+
+
+@njit(cache=True, nogil=True)
+def decay_velocities(vel: np.ndarray, ball_vel: np.ndarray, params: np.ndarray) -> None:  # pragma: no cover
+    """Velocity decay of players and ball after the move. ``params``: a :data:`DECAY_PARAMS` record."""
+    p = params[0]
+    player_decay, ball_decay = p.player_decay, p.ball_decay
     for i in range(vel.shape[0]):
         vel[i, 0] *= player_decay
         vel[i, 1] *= player_decay
-    vx = ball_vel[0] * ball_decay
-    vy = ball_vel[1] * ball_decay
-    amount = math.sqrt(vx * vx + vy * vy) * ball_noise
-    vx += (2.0 * noise[0] - 1.0) * amount
-    vy += (2.0 * noise[1] - 1.0) * amount
-    speed = math.sqrt(vx * vx + vy * vy)
-    if speed > ball_max:
-        vx *= ball_max / speed
-        vy *= ball_max / speed
-    ball_vel[0] = vx
-    ball_vel[1] = vy
+    ball_vel[0] *= ball_decay
+    ball_vel[1] *= ball_decay
 
 
 # --- physics ---------------------------------------------------------------------------------
@@ -259,8 +345,9 @@ def substeps_needed(bodies: np.ndarray, ball_free: bool, params: np.ndarray) -> 
 @njit(cache=True, nogil=True)
 def resolve_ball_contacts(before: np.ndarray, after: np.ndarray, ghost: np.ndarray, params: np.ndarray,
                           rows_out: np.ndarray) -> int:  # pragma: no cover - compiled
-    """rcssserver's body-ball contact rule, applied to a cycle's motion; returns how many
-    contacts it resolved (their player rows in ``rows_out``).
+    """Swept body-ball contacts (``body_ball_contact = "swept"``, not rcssserver's rule: see
+    :func:`separate_ball_overlaps` for that); returns how many contacts it resolved (their
+    player rows in ``rows_out``).
 
     ``before``/``after``: rows ``[x, y, vx, vy]`` of the players then the ball, at the start
     and the end of the cycle's move (``after`` is corrected in place). Each body is taken to
@@ -333,6 +420,85 @@ def resolve_ball_contacts(before: np.ndarray, after: np.ndarray, ghost: np.ndarr
             before[k, 1] = before[k, 1] + t * (after[k, 1] - before[k, 1])
     for k in range(count):
         ghost[rows_out[k]] = False
+    return count
+
+
+@njit(cache=True, nogil=True)
+def separate_ball_overlaps(bodies: np.ndarray, play_on: bool, collided: np.ndarray, params: np.ndarray,
+                           rows_out: np.ndarray) -> int:  # pragma: no cover - compiled
+    """rcssserver's end-of-cycle body-ball overlap resolution (``Stadium::collisions`` with
+    ``calcCollisionPos``); returns how many players touched the ball (their rows, in order of
+    first contact, in ``rows_out``).
+
+    ``bodies``: rows ``[x, y, vx, vy]`` of the players then the ball, after the cycle's move
+    (corrected in place); ``collided``: a (P,) bool scratch array, all False on entry and on
+    return; ``params``: an :data:`OVERLAP_PARAMS` record. Each round, every player whose
+    centre is closer to the ball's than ``contact`` is separated from it: in play on both are
+    moved apart from their midpoint along the line of centres to ``contact / 2`` each (plus
+    :data:`SEPARATION_EPS`); otherwise the ball stays and the player is moved off it. A ball
+    that met several players goes to the mean of its separated positions. Rounds repeat while
+    an overlap remains (at most ``rounds``); then the velocities of the ball and of every
+    player that touched it are multiplied by ``factor`` once. Two bodies on the same centre
+    are separated along +x (rcssserver draws a random direction; a measure-zero case).
+    """
+    p = params[0]
+    contact, factor = p.contact, p.factor
+    contact2 = contact * contact
+    half = contact / 2.0 + SEPARATION_EPS
+    n2 = bodies.shape[0] - 1
+    count = 0
+    for _ in range(p.rounds):
+        bx, by = bodies[n2, 0], bodies[n2, 1]
+        sum_x = sum_y = 0.0
+        met = 0
+        for i in range(n2):
+            px, py = bodies[i, 0], bodies[i, 1]
+            dx, dy = px - bx, py - by
+            if dx * dx + dy * dy >= contact2:
+                continue
+            if not collided[i]:
+                collided[i] = True
+                rows_out[count] = i
+                count += 1
+            if play_on:
+                mx, my = (px + bx) / 2.0, (py + by) / 2.0
+                ux, uy = px - mx, py - my
+                r = math.sqrt(ux * ux + uy * uy)
+                if r < SEPARATION_EPS:
+                    ux, uy, r = 1.0, 0.0, 1.0
+                scale = half / r
+                ux *= scale
+                uy *= scale
+                # rcssserver widens the separation by 0.01 % steps while rounding keeps the
+                # two just inside the contact distance.
+                steps = 0
+                while 4.0 * (ux * ux + uy * uy) < contact2 and steps < 10:
+                    ux *= 1.0001
+                    uy *= 1.0001
+                    steps += 1
+                bodies[i, 0], bodies[i, 1] = mx + ux, my + uy
+                sum_x += mx - ux
+                sum_y += my - uy
+            else:
+                r = math.sqrt(dx * dx + dy * dy)
+                if r < SEPARATION_EPS:
+                    dx, dy, r = 1.0, 0.0, 1.0
+                scale = (contact + SEPARATION_EPS) / r
+                bodies[i, 0], bodies[i, 1] = bx + dx * scale, by + dy * scale
+                sum_x += bx
+                sum_y += by
+            met += 1
+        if met == 0:
+            break
+        bodies[n2, 0], bodies[n2, 1] = sum_x / met, sum_y / met
+    if count:
+        bodies[n2, 2] *= factor
+        bodies[n2, 3] *= factor
+        for k in range(count):
+            i = rows_out[k]
+            bodies[i, 2] *= factor
+            bodies[i, 3] *= factor
+            collided[i] = False
     return count
 
 

@@ -9,65 +9,70 @@ the RoboCup 2D soccer simulator (rcssserver):
   the match finds the dash power that gives it,
   ``power = |a| / (dash_power_rate * effort * dir_rate)``, clipped to ``dash_power_max`` and to
   the player's stamina plus ``extra_stamina``, pays that power in stamina, and applies
-  ``power * dash_power_rate * effort * dir_rate`` in the requested direction. ``dir_rate`` is
+  ``power * dash_power_rate * effort * dir_rate`` in the requested direction (any direction:
+  rcssserver 19 rounds dash directions to ``dash_angle_step``, 1°). ``dir_rate`` is
   rcssserver's rule for a dash at angle θ to the body: ``1`` straight ahead falling linearly
   to ``side_dash_rate`` at 90° and changing linearly to ``back_dash_rate`` at 180°. A point
   robot has no body direction, so θ is measured from its direction of motion, weighted by
   ``min(1, speed / dash_heading_speed)`` (a robot at rest dashes equally well every way;
-  reversing at speed costs like rcssserver's back dash). The velocity then gets uniform noise
-  proportional to its speed and is clipped to ``player_speed_max``.
+  reversing at speed costs like rcssserver's back dash). The velocity is clipped to
+  ``player_speed_max``, then gets rcssserver's movement noise (``player_rand``).
 * **Stamina** (after the dashes, every player): recovery rate and effort fall below their
   thresholds and effort recovers above its own; stamina recovers by ``recovery *
   recovery_per_cycle`` paid from the half's capacity (see config.StaminaConfig). A player
   who sprints until its stamina is spent keeps dashing with ``recover_min *
-  recovery_per_cycle + extra_stamina`` power per cycle at ``effort_min``: about 0.44 m/cycle.
-* **Kick** (a request longer than ``1e100`` is first shortened like a dash's): a player whose
-  centre is within ``kickable_distance`` of the ball's centre may
-  change the ball's velocity by at most ``kick_speed_max`` times an effectiveness that loses
-  ``kick_distance_penalty`` at the far edge of the kickable margin and ``kick_angle_penalty``
-  when kicking straight back through itself. The kicks of one cycle add up and the sum is
-  capped at ``kick_speed_max`` (``cap_summed_kicks``); kick noise is proportional to the sum of
-  the kicks' own strengths (at most ``kick_speed_max``), so kicks that cancel each other still
-  move the ball a little; the ball's speed is clipped to ``ball_speed_max``.
-* **Decay**: after the move, velocities are multiplied by the players' and the ball's
-  decay; the ball gets noise proportional to its speed.
+  recovery_per_cycle + extra_stamina`` power per cycle at ``effort_min``: 0.435 m/cycle
+  (rcssserver 17/18's figure; see docs/simulator.md for rcssserver 19's 0.468).
+* **Kick** (rcssserver's ``Player::kick``; a request longer than ``1e100`` is first
+  shortened like a dash's): a player whose centre is within ``kickable_distance`` of the
+  ball's centre may change the ball's velocity by its request clipped to ``kick_speed_max``
+  (a kick of power ``|request| / kick_speed_max * 100``) times
+  ``1 - kick_angle_penalty * dir_diff / 180° - kick_distance_penalty * dist_ball /
+  kickable_margin``: ``dir_diff`` is the angle between where the player's body faces
+  (:mod:`soccer_sim.body`, from its velocity before the dash) and the direction to the ball,
+  ``dist_ball`` the gap between the two surfaces. The penalty is for where the ball lies,
+  not for where it is sent. Each kick adds rcssserver's kick noise (``kick_rand``, growing
+  with ``dir_diff``, ``dist_ball``, the ball's speed and the kick's power); the kicks of one
+  cycle add up, the sum is capped at ``kick_speed_max`` (``cap_summed_kicks``; rcssserver's
+  ``ball_accel_max``) and the ball's speed at ``ball_speed_max``.
+* **Movement noise** (every cycle, before the move): every player's and the ball's velocity
+  gets a random vector of length uniform in ``[0, rand * speed]`` and uniform direction
+  (``player_rand``, ``ball_rand``; rcssserver's ``MPObject::noise``).
+* **Decay**: after the move, velocities are multiplied by the players' and the ball's decay.
 
-Noise is uniform in ``[-1, 1)`` per axis, drawn by the caller in one block per cycle so the
+Random numbers are uniform in ``[0, 1)``, drawn by the caller in one block per cycle so the
 random stream does not depend on what happened (see :class:`CycleNoise`).
 
 The per-player rules are compiled loops (numba, in :mod:`soccer_sim.kernels`): written as
 small numpy calls the dash alone cost about 15 microseconds per cycle, a third of a cycle's
-budget; compiled, each rule costs about one microsecond (mostly the call itself). The kick,
-applied by a few players at most, is plain scalar Python.
+budget; compiled, each rule costs about one microsecond (mostly the call itself).
 """
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from soccer_sim.config import MatchConfig
-from soccer_sim.kernels import (DASH_PARAMS, DECAY_PARAMS, REQUEST_CAP, dash_players, decay_velocities,
+from soccer_sim.kernels import (DASH_PARAMS, DECAY_PARAMS, KICK_PARAMS, apply_kicks, dash_players, decay_velocities,
                                 find_kickers, make_record)
-
-_EPS = 1e-12
 
 
 class CycleNoise:
     """All random numbers of one cycle, drawn in a single call from the physics generator.
 
-    ``players`` (2n, 2) movement noise, ``kick`` (2,), ``ball`` (2,): uniform in [0, 1),
-    mapped to [-1, 1) where they are used. Drawing a fixed amount every cycle keeps the
-    stream aligned whatever happens.
+    Uniform in [0, 1); each body's pair is (length draw, direction draw) of rcssserver's polar
+    noise. ``motion`` (P + 1, 2): the players' movement noise then the ball's (``players``
+    and ``ball`` are its parts); ``kick`` (P, 2): each player's kick noise, used when it
+    kicks. Drawing a fixed amount every cycle keeps the stream aligned whatever happens.
     """
 
     def __init__(self, rng: np.random.Generator, n_players: int) -> None:
         self._rng = rng
-        self.values = np.empty((n_players + 2, 2), dtype=np.float64)
+        self.values = np.empty((2 * n_players + 1, 2), dtype=np.float64)
+        self.motion = self.values[:n_players + 1]
         self.players = self.values[:n_players]
-        self.kick = self.values[n_players]
-        self.ball = self.values[n_players + 1]
+        self.ball = self.values[n_players]
+        self.kick = self.values[n_players + 1:]
 
     def draw(self) -> None:
         self._rng.random(out=self.values)
@@ -86,7 +91,8 @@ class Kinematics:
         self._dash_params = make_record(
             DASH_PARAMS, power_rate=phys.dash_power_rate, power_max=phys.dash_power_max,
             side_rate=phys.side_dash_rate, back_rate=phys.back_dash_rate, heading_speed=phys.dash_heading_speed,
-            extra_stamina=stam.extra_stamina, speed_max=phys.player_speed_max, noise=phys.player_noise,
+            extra_stamina=stam.extra_stamina, speed_max=phys.player_speed_max, player_rand=phys.player_rand,
+            ball_rand=phys.ball_rand,
             stamina_max=stam.maximum, recovery_per_cycle=stam.recovery_per_cycle,
             recover_dec_thr=stam.recover_dec_thr * stam.maximum, recover_dec=stam.recover_dec,
             recover_min=stam.recover_min, effort_dec_thr=stam.effort_dec_thr * stam.maximum,
@@ -94,8 +100,13 @@ class Kinematics:
             effort_inc_thr=stam.effort_inc_thr * stam.maximum, effort_inc=stam.effort_inc,
             effort_max=stam.effort_max)
         self._stamina_config = stam
-        self._decay_params = make_record(DECAY_PARAMS, player_decay=phys.player_decay, ball_decay=phys.ball_decay,
-                                         ball_noise=phys.ball_noise, ball_speed_max=phys.ball_speed_max)
+        self._decay_params = make_record(DECAY_PARAMS, player_decay=phys.player_decay, ball_decay=phys.ball_decay)
+        self._kick_params = make_record(
+            KICK_PARAMS, kick_max=phys.kick_speed_max, ball_speed_max=phys.ball_speed_max,
+            touch_distance=self._touch_distance, kickable_margin=phys.kickable_margin,
+            angle_penalty=phys.kick_angle_penalty, distance_penalty=phys.kick_distance_penalty,
+            inertia_moment=phys.inertia_moment, kick_rand=phys.kick_rand,
+            speed_rate_scale=0.5 / (phys.ball_speed_max * phys.ball_decay), cap_sum=phys.cap_summed_kicks)
         self.ball_distance = np.empty(n2)
         """Centre distance of every player to the ball (m), from the last :meth:`kick_candidates`."""
         self.player_speed = np.empty(n2)
@@ -112,68 +123,26 @@ class Kinematics:
         """
         return find_kickers(pos, ball, kick, mask, holder, self.kickable_distance, self.ball_distance, rows_out)
 
-    def kick(self, kickers: np.ndarray, pos: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray,
+    def kick(self, kickers: np.ndarray, pos: np.ndarray, vel: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray,
              kick: np.ndarray, dist: np.ndarray, holder: int, noise: np.ndarray) -> None:
         """Apply the kicks of the player rows ``kickers`` to ``ball_vel`` (in place).
 
-        ``dist`` holds the centre distances (:attr:`ball_distance`); a holding goalkeeper
-        (row ``holder``) kicks without distance or angle penalty.
+        ``vel``: the players' velocities (where each body faces, :mod:`soccer_sim.body`);
+        ``dist``: the centre distances (:attr:`ball_distance`); ``noise``: (P, 2) kick noise
+        draws (:attr:`CycleNoise.kick`). A holding goalkeeper (row ``holder``) holds the ball
+        touching the front of its body, so it kicks without distance or angle penalty.
         """
-        phys = self.phys
-        kick_max = phys.kick_speed_max
-        margin = phys.kickable_margin
-        dvx = dvy = strength = 0.0
-        bx, by = float(ball[0]), float(ball[1])
-        for row in kickers.tolist():
-            kx, ky = float(kick[row, 0]), float(kick[row, 1])
-            power = math.hypot(kx, ky)
-            if power > REQUEST_CAP:  # huge (or overflowing) request: same direction, finite length
-                big = max(abs(kx), abs(ky))
-                kx = kx / big * REQUEST_CAP
-                ky = ky / big * REQUEST_CAP
-                power = math.hypot(kx, ky)
-            if power > kick_max:
-                kx *= kick_max / power
-                ky *= kick_max / power
-                power = kick_max
-            effect = 1.0
-            if row != holder:
-                gap = max(0.0, float(dist[row]) - self._touch_distance)
-                effect -= phys.kick_distance_penalty * min(1.0, gap / margin)
-                rx, ry = bx - float(pos[row, 0]), by - float(pos[row, 1])
-                rnorm = math.hypot(rx, ry)
-                if rnorm > _EPS and power > _EPS:
-                    cos = (rx * kx + ry * ky) / (rnorm * power)
-                    angle = math.acos(max(-1.0, min(1.0, cos)))
-                    effect -= phys.kick_angle_penalty * angle / math.pi
-            dvx += kx * effect
-            dvy += ky * effect
-            strength += power * effect
-        change = math.hypot(dvx, dvy)
-        if change > kick_max and phys.cap_summed_kicks:
-            dvx *= kick_max / change
-            dvy *= kick_max / change
-        # Noise grows with every kick's own strength (as rcssserver draws it per kick), so two
-        # opposite kicks that cancel out still leave the ball wandering; never more than the
-        # capped change could carry.
-        change = min(strength, kick_max) * phys.kick_noise
-        vx = float(ball_vel[0]) + dvx + (2.0 * float(noise[0]) - 1.0) * change
-        vy = float(ball_vel[1]) + dvy + (2.0 * float(noise[1]) - 1.0) * change
-        speed = math.hypot(vx, vy)
-        if speed > phys.ball_speed_max:
-            vx *= phys.ball_speed_max / speed
-            vy *= phys.ball_speed_max / speed
-        ball_vel[0] = vx
-        ball_vel[1] = vy
+        apply_kicks(kickers, pos, vel, ball, ball_vel, kick, dist, holder, noise, self._kick_params)
 
     # --- dashes and stamina ----------------------------------------------------------------
-    def dash(self, vel: np.ndarray, stamina: np.ndarray, effort: np.ndarray, recovery: np.ndarray,
-             capacity: np.ndarray, dash: np.ndarray, noise: np.ndarray) -> float:
+    def dash(self, vel: np.ndarray, ball_vel: np.ndarray, stamina: np.ndarray, effort: np.ndarray,
+             recovery: np.ndarray, capacity: np.ndarray, dash: np.ndarray, noise: np.ndarray) -> float:
         """Apply dash requests ``dash`` (2n, 2; overwritten with the accelerations applied) to
-        ``vel``, pay them from ``stamina``, then update every player's stamina model
-        (``stamina``, ``effort``, ``recovery``, ``capacity``, all (2n,), in place); return the
-        largest resulting player speed (m/cycle)."""
-        return dash_players(vel, stamina, effort, recovery, capacity, dash, noise, self._dash_params,
+        ``vel``, pay them from ``stamina``, update every player's stamina model (``stamina``,
+        ``effort``, ``recovery``, ``capacity``, all (2n,), in place), then add the movement
+        noise of the players and of the ball (``ball_vel``; ``noise``: :attr:`CycleNoise.motion`);
+        return the largest resulting player speed (m/cycle)."""
+        return dash_players(vel, ball_vel, stamina, effort, recovery, capacity, dash, noise, self._dash_params,
                             self.player_speed)
 
     def restore(self, stamina: np.ndarray, effort: np.ndarray, recovery: np.ndarray,
@@ -187,7 +156,6 @@ class Kinematics:
         capacity[:] = stam.capacity_or_inf
 
     # --- decay ------------------------------------------------------------------------------
-    def decay(self, vel: np.ndarray, ball_vel: np.ndarray, noise: np.ndarray) -> None:
-        """Velocity decay after the move (in place); ball noise proportional to the ball's speed."""
-        decay_velocities(vel, ball_vel, noise, self._decay_params)
-
+    def decay(self, vel: np.ndarray, ball_vel: np.ndarray) -> None:
+        """Velocity decay after the move (in place)."""
+        decay_velocities(vel, ball_vel, self._decay_params)

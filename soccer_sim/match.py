@@ -11,12 +11,13 @@ One cycle (100 ms of game time by default):
    then kicks by players allowed by the referee with the ball within reach (or held), then
    the successful tackles' pushes;
 4. the referee judges the kicks, the tackles (fouls, cards) and the goalkeepers' catch requests;
-5. dashes, the stamina model and movement noise (:mod:`soccer_sim.kinematics`; players are
-   restored at the start of each half);
+5. dashes, the stamina model and the movement noise of players and ball
+   (:mod:`soccer_sim.kinematics`; players are restored at the start of each half);
 6. the collision solver moves everything for one cycle, in as many sub-steps as needed so
-   that nothing can pass through anything (:class:`~soccer_sim.physics.SubstepPlanner`);
-   players are kept within the field plus its margin;
-7. velocity decay and ball noise;
+   that no player passes through another (:class:`~soccer_sim.physics.SubstepPlanner`), and
+   body-ball contacts are resolved (``PhysicsConfig.body_ball_contact``); players are kept
+   within the field plus its margin;
+7. velocity decay;
 8. the referee judges goals, outs, restarts, offside and time;
 9. the cycle counter advances and recorders observe.
 
@@ -258,7 +259,7 @@ class Match:
         if count:
             kickers = self._kicker_rows[:count].copy()
             dist = kin.ball_distance
-            kin.kick(kickers, pos, ball, ball_vel, self._kick, dist, holder, self.noise.kick)
+            kin.kick(kickers, pos, vel, ball, ball_vel, self._kick, dist, holder, self.noise.kick)
             state.last_touch = int(kickers[np.argmin(dist[kickers])]) if count > 1 else int(kickers[0])
         else:
             kickers = _NO_KICKERS
@@ -272,7 +273,7 @@ class Match:
             referee.on_commands(state, kickers, self._catch)
 
         # 5. Dashes.
-        kin.dash(vel, stamina, effort, recovery, capacity, self._dash, self.noise.players)
+        kin.dash(vel, ball_vel, stamina, effort, recovery, capacity, self._dash, self.noise.motion)
 
         # 6. Collision solving. A held ball does not collide; when the goalkeeper kicks it away
         # it passes through the goalkeeper's body like any kicked ball passes its kicker.
@@ -286,7 +287,7 @@ class Match:
             ball_vel[:] = 0.0
 
         # 7-9. Decay, the referee, time, observers.
-        kin.decay(vel, ball_vel, self.noise.ball)
+        kin.decay(vel, ball_vel)
         half = state.half
         referee.after_step(state, self.touchers)
         if self._end.conditions:

@@ -9,9 +9,11 @@ so writing the whole world into pymunk and reading it back are one call each, st
 and into the state's own table, with no per-body Python objects.
 
 Units: pymunk's time unit is one cycle, so velocities are m/cycle and one cycle is a total
-``dt`` of 1, split into sub-steps when bodies that can meet close in fast (so that a
-full-speed ball cannot jump over a player between two collision checks; see
-:class:`SubstepPlanner`).
+``dt`` of 1, split into sub-steps when bodies that can meet close in fast (so that players,
+and with rigid body-ball contacts the ball, cannot jump over each other between two collision
+checks; see :class:`SubstepPlanner`). Body-ball contacts follow
+:attr:`PhysicsConfig.body_ball_contact <soccer_sim.config.PhysicsConfig.body_ball_contact>`:
+by default rcssserver's separation of the overlaps left at the end of the cycle.
 """
 
 from __future__ import annotations
@@ -24,9 +26,10 @@ import pymunk.batch as pbatch
 
 from soccer_sim.config import MatchConfig
 from soccer_sim.errors import SoccerSimError
-from soccer_sim.kernels import (BALL_CONTACT_PARAMS, MARGIN_PARAMS, SUBSTEP_PARAMS, keep_in_field_and_count_contacts,
-                                make_record, resolve_ball_contacts, substeps_needed)
-from soccer_sim.state import WorldState
+from soccer_sim.kernels import (BALL_CONTACT_PARAMS, MARGIN_PARAMS, OVERLAP_PARAMS, SUBSTEP_PARAMS,
+                                keep_in_field_and_count_contacts, make_record, resolve_ball_contacts,
+                                separate_ball_overlaps, substeps_needed)
+from soccer_sim.state import PlayMode, WorldState
 
 #: pymunk collision types of the bodies.
 HOME_PLAYER, AWAY_PLAYER, BALL, POST = 1, 2, 3, 4
@@ -40,11 +43,15 @@ _KICK_GROUP = pymunk.ShapeFilter(group=1)
 _PLAYER_BIT, _BALL_BIT, _POST_BIT = 0b001, 0b010, 0b100
 _PLAYER_NOT_BALL = pymunk.ShapeFilter(categories=_PLAYER_BIT, mask=_PLAYER_BIT | _POST_BIT)
 _BALL_NOT_PLAYER = pymunk.ShapeFilter(categories=_BALL_BIT, mask=_POST_BIT)
-"""With rcssserver body-ball contacts, pymunk never sees the ball meet a player: the match
-resolves those contacts itself (see :func:`soccer_sim.kernels.resolve_ball_contacts`)."""
+"""With rcssserver's or swept body-ball contacts, pymunk never sees the ball meet a player: the
+physics resolves those contacts itself after the move (see
+:func:`soccer_sim.kernels.separate_ball_overlaps` and :func:`soccer_sim.kernels.resolve_ball_contacts`)."""
 _CONTACT_PASSES = 3
-"""Rounds of body-ball contact resolution per cycle (the first finds the earliest contact on
-the ball's path; later ones catch players that ran into the ball's corrected position)."""
+"""Rounds of swept body-ball contact resolution per cycle (the first finds the earliest contact
+on the ball's path; later ones catch players that ran into the ball's corrected position)."""
+_SEPARATION_ROUNDS = 10
+"""Rounds of rcssserver's overlap resolution per cycle at most (its ``max_loop``)."""
+_PLAY_ON = int(PlayMode.PLAY_ON)
 _SOLVER_ITERATIONS = 3
 """Constraint-solver iterations per sub-step: frictionless circles converge fast, and the
 sub-steps repeat the solve anyway."""
@@ -90,9 +97,9 @@ class SubstepPlanner:
     * two players: at most twice the distance (each may move it, head-on: then they close by
       at most the sum of their radii when it is 0.3 m, so their centres cannot cross);
     * the ball and a player, when the collision solver handles them (``body_ball_contact =
-      "rigid"``): at most the distance itself (below their contact distance); with
-      rcssserver contacts the match sweeps the ball's path against every player's exactly,
-      whatever their speeds, so these pairs need no sub-steps;
+      "rigid"``): at most the distance itself (below their contact distance); rcssserver's
+      contacts look only at the end of the cycle, and swept ones sweep the ball's path
+      against every player's exactly, whatever their speeds, so these pairs need no sub-steps;
     * the ball and a goal post: at most the ball-post contact distance (a post is thin).
 
     Pairs that cannot meet impose nothing, so a fast ball in free flight or a sprinter in
@@ -122,8 +129,8 @@ class Physics:
     """A pymunk space mirroring a :class:`~soccer_sim.state.WorldState`'s bodies; steps one
     cycle at a time, reading the state's body table before and writing it back after.
 
-    Collects the players whose body began touching the ball during a step (a pymunk
-    collision callback: rare, so cheap), and counts contacts between teammates: a pair of
+    Collects the players whose body touched the ball during a step (with rigid contacts, a
+    pymunk collision callback: rare, so cheap), and counts contacts between teammates: a pair of
     players of one team comes into contact when the gap between their bodies at the end of
     a cycle is below ``CONTACT_BEGIN_GAP`` and was not in contact before. (Counting them in
     a collision callback instead cost more than the rest of the cycle's physics: in a
@@ -138,6 +145,8 @@ class Physics:
         """The state's (P + 2, 4) body table: the players, the ball, pymunk's static body."""
         self._dynamic = state.bodies
         """Its players and ball rows."""
+        self._state = state
+        self._contact_model = phys.body_ball_contact
         self._rigid_ball = phys.body_ball_contact == "rigid"
         self._ball_filter = _ALL_COLLISIONS if self._rigid_ball else _BALL_NOT_PLAYER
         player_filter = _ALL_COLLISIONS if self._rigid_ball else _PLAYER_NOT_BALL
@@ -145,7 +154,12 @@ class Physics:
         """The players and the ball as they were before this cycle's move (contact sweeps)."""
         self._ghost = np.zeros(n2, dtype=np.bool_)
         """This cycle's kickers: their bodies let the ball pass (a kick plays it around them)."""
-        self._contact_rows = np.zeros(_CONTACT_PASSES, dtype=np.int64)
+        self._swept_rows = np.zeros(_CONTACT_PASSES, dtype=np.int64)
+        self._contact_rows = np.zeros(n2, dtype=np.int64)
+        self._collided = np.zeros(n2, dtype=np.bool_)
+        """Scratch flags of rcssserver's overlap resolution (all False between cycles)."""
+        self._overlap_params = make_record(OVERLAP_PARAMS, contact=phys.player_radius + phys.ball_radius,
+                                           factor=phys.collision_velocity_factor, rounds=_SEPARATION_ROUNDS)
         self._contact_params = make_record(BALL_CONTACT_PARAMS, contact=phys.player_radius + phys.ball_radius,
                                            factor=phys.collision_velocity_factor)
         self.space = space = pymunk.Space()
@@ -225,14 +239,18 @@ class Physics:
         """Advance one cycle in ``substeps`` equal sub-steps; return the rows of the players whose
         body began touching the ball (in order of first contact, no repeats).
 
-        The players in ``kickers`` (rows that kicked this cycle) do not collide with the ball
-        during this cycle: a kick plays the ball around the kicker's body, never into it.
+        With swept or rigid contacts, the players in ``kickers`` (rows that kicked this cycle)
+        do not collide with the ball during this cycle: a kick plays the ball around the
+        kicker's body. rcssserver's contacts ignore ``kickers``: a ball that ends the cycle
+        overlapping its kicker meets it like any other body.
         Reads the state's bodies into pymunk first (so whatever the match or the referee wrote
         is used) and writes the result back into them; then keeps the players within the
         field plus its margin and counts new teammate contacts.
         """
+        if self._contact_model == "rcssserver":
+            return self._step_with_overlap_separation(substeps)
         if not self._rigid_ball:
-            return self._step_with_rcssserver_contacts(substeps, kickers)
+            return self._step_with_swept_contacts(substeps, kickers)
         ghosts = kickers.size and self._ball_collides
         if ghosts:
             self.ball_shape.filter = _KICK_GROUP
@@ -253,9 +271,26 @@ class Physics:
         self._touchers.clear()
         return rows
 
-    def _step_with_rcssserver_contacts(self, substeps: int, kickers: np.ndarray) -> np.ndarray:
-        """:meth:`step` when pymunk moves the players (and the ball off the posts) but the
-        body-ball contacts follow rcssserver (:func:`soccer_sim.kernels.resolve_ball_contacts`)."""
+    def _step_with_overlap_separation(self, substeps: int) -> np.ndarray:
+        """:meth:`step` when pymunk moves the players (and the ball off the posts) and the
+        body-ball overlaps left at the end are separated as rcssserver does
+        (:func:`soccer_sim.kernels.separate_ball_overlaps`; outside play on the ball stays)."""
+        bulk = self._bulk
+        bulk.write()
+        bulk.step(substeps)
+        bulk.read()
+        count = 0
+        if self._ball_collides:
+            count = separate_ball_overlaps(self._dynamic, self._state.play_mode == _PLAY_ON, self._collided,
+                                           self._overlap_params, self._contact_rows)
+        keep_in_field_and_count_contacts(self._table, self._in_contact, self._after_params, self.teammate_contacts)
+        if count == 0:
+            return _NO_TOUCHERS
+        return self._contact_rows[:count].copy()
+
+    def _step_with_swept_contacts(self, substeps: int, kickers: np.ndarray) -> np.ndarray:
+        """:meth:`step` when pymunk moves the players (and the ball off the posts) and the
+        body-ball contacts are swept (:func:`soccer_sim.kernels.resolve_ball_contacts`)."""
         dynamic = self._dynamic
         np.copyto(self._before, dynamic)
         bulk = self._bulk
@@ -267,13 +302,13 @@ class Physics:
             ghost = self._ghost
             if kickers.size:
                 ghost[kickers] = True
-            count = resolve_ball_contacts(self._before, dynamic, ghost, self._contact_params, self._contact_rows)
+            count = resolve_ball_contacts(self._before, dynamic, ghost, self._contact_params, self._swept_rows)
             if kickers.size:
                 ghost[kickers] = False
         keep_in_field_and_count_contacts(self._table, self._in_contact, self._after_params, self.teammate_contacts)
         if count == 0:
             return _NO_TOUCHERS
-        return np.unique(self._contact_rows[:count]) if count > 1 else self._contact_rows[:1].copy()
+        return np.unique(self._swept_rows[:count]) if count > 1 else self._swept_rows[:1].copy()
 
 
 class _BulkBodies:

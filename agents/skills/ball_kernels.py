@@ -26,16 +26,14 @@ def distance_effect(rnorm: float, distance_penalty: float, kickable_margin: floa
 @njit(cache=True, nogil=True)
 def effect(rx: float, ry: float, rnorm: float, base: float, angle_penalty: float, kx: float, ky: float,
            holder: bool) -> float:  # pragma: no cover - compiled
-    """Effectiveness of a kick (``kx``, ``ky``): ``base`` (after the distance penalty) less the
-    angle penalty for the angle between the kick and the ball's direction (``rx``, ``ry``)
-    from the kicker; 1 for a goalkeeper holding the ball."""
+    """Effectiveness of a kick (``kx``, ``ky``): ``base`` (after the distance penalty); 1 for a
+    goalkeeper holding the ball. The simulator's kick rule (rcssserver's) penalises where the
+    ball lies relative to the kicker's body, not the kick's direction, and the planner takes the
+    kicker to face the ball (:mod:`soccer_sim.body`: so it does at rest and at low speeds), so
+    the angle penalty (``angle_penalty``, the ball's direction ``rx``, ``ry``) does not apply."""
     if holder:
         return 1.0
-    knorm = math.sqrt(kx * kx + ky * ky)
-    if knorm <= 1e-12 or rnorm <= 1e-12:
-        return base
-    cos = max(-1.0, min(1.0, (rx * kx + ry * ky) / (rnorm * knorm)))
-    return base - angle_penalty * math.acos(cos) / math.pi
+    return base
 
 
 @njit(cache=True, nogil=True)

@@ -4,11 +4,12 @@ The rule mirrored is :meth:`soccer_sim.kinematics.Kinematics.kick` (rcssserver's
 request ``r`` is clipped to ``kick_speed_max`` and multiplied by an effectiveness
 
     ``1 - kick_distance_penalty * min(1, gap / kickable_margin)
-         - kick_angle_penalty * angle / pi``
+         - kick_angle_penalty * dir_diff / pi``
 
-where ``gap`` is the distance between the ball's and the player's surfaces and ``angle`` is
-the angle between the kick and the direction from the player to the ball (kicking the ball
-straight back through oneself costs the most). A goalkeeper holding the ball kicks at full
+where ``gap`` is the distance between the ball's and the player's surfaces and ``dir_diff``
+the angle between where the kicker's body faces and the ball. The planner takes the kicker
+to face the ball (the simulator's body model does so at rest and at low speeds), so only the
+distance counts, whatever the kick's direction. A goalkeeper holding the ball kicks at full
 effectiveness. The ball's speed is then clipped to ``ball_speed_max``.
 
 :func:`kick_for_velocity` inverts the rule: the change needed is ``desired - ball_vel``; the

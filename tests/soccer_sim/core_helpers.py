@@ -13,7 +13,7 @@ from soccer_sim.config import PhysicsConfig
 
 def quiet_config(**match_fields) -> MatchConfig:
     """The default config without any noise, so physics results are exact."""
-    physics = replace(PhysicsConfig(), player_noise=0.0, ball_noise=0.0, kick_noise=0.0)
+    physics = replace(PhysicsConfig(), player_rand=0.0, ball_rand=0.0, kick_rand=0.0)
     return replace(MatchConfig(), physics=physics, **match_fields)
 
 

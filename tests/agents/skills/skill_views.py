@@ -20,7 +20,7 @@ HW = CONFIG.field.half_width
 
 def quiet_config(**match_fields) -> MatchConfig:
     """The default config without noise, so the simulator follows the skills' model exactly."""
-    physics = replace(PhysicsConfig(), player_noise=0.0, ball_noise=0.0, kick_noise=0.0)
+    physics = replace(PhysicsConfig(), player_rand=0.0, ball_rand=0.0, kick_rand=0.0)
     return replace(MatchConfig(), physics=physics, **match_fields)
 
 

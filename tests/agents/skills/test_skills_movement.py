@@ -27,12 +27,13 @@ def simulate(pos, vel, targets, cycles, speed_cap=None, effort=None, stamina_sha
     stamina = np.full(ROWS, CONFIG.stamina.maximum * stamina_share)
     eff = np.ones(ROWS) if effort is None else np.concatenate([effort, np.ones(ROWS - n)])
     recovery, capacity = np.ones(ROWS), np.full(ROWS, np.inf)
-    noise = np.full((ROWS, 2), 0.5)  # maps to zero noise
+    noise = np.zeros((ROWS + 1, 2))  # noise lengths of zero: no noise
+    ball_vel = np.zeros(2)
     path, speeds = [pos.copy()], []
     for _ in range(cycles):
         dash = np.zeros((ROWS, 2))
         dash[:n] = dash_to_points(MODEL, Players(MODEL, pos, all_vel[:n], eff[:n]), targets, speed_cap)
-        kin.dash(all_vel, stamina, eff, recovery, capacity, dash, noise)
+        kin.dash(all_vel, ball_vel, stamina, eff, recovery, capacity, dash, noise)
         speeds.append(np.hypot(all_vel[:n, 0], all_vel[:n, 1]))
         pos += all_vel[:n]
         all_vel *= CONFIG.physics.player_decay
