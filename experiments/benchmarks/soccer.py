@@ -1,7 +1,8 @@
 """``soccer-sim bench soccer``: what the play between two teams looks like, in numbers.
 
 Plays ``--matches`` matches on consecutive seeds (sides as given) and prints the mean per
-match, with its standard error, of: total goals, shots, kicks, passes, offside calls,
+match, with its standard error, of: total goals, shots, shots that ended on a body
+(:mod:`soccer_sim.analysis.shots`), kicks, passes, tackles, fouls, free kicks, offside calls,
 teammate contacts, and the mean number of players (of both teams) within 2 m of the ball
 per play-on cycle (a measure of scrums: well-spaced teams keep it near 1-2). These are the
 figures by which the simulator's fidelity and the built-in teams are judged; speed is
@@ -60,20 +61,27 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def measure(home: str, away: str, matches: int, seed: int = 0, cycles: int | None = None) -> dict[str, np.ndarray]:
     """Play the matches and return one array per figure (one value per match)."""
+    from experiments.match_report import match_report
     from soccer_sim import MatchConfig, run_match
+    from soccer_sim.analysis.shots import shot_endings
     from soccer_sim.state import EventKind
 
     config = MatchConfig(max_cycles=cycles)
     rows: dict[str, list[float]] = {name: [] for name in (
-        "goals", "shots", "kicks", "passes", "offside calls", "teammate contacts", "players within 2 m of the ball")}
+        "goals", "shots", "shots ending on a body", "kicks", "passes", "tackles", "fouls", "free kicks",
+        "offside calls", "teammate contacts", "players within 2 m of the ball")}
     for i in range(matches):
         near = NearBallRecorder()
         result = run_match(home, away, seed=seed + i, config=config, recorders=[near])
         home_stats, away_stats = result.statistics
         rows["goals"].append(sum(result.score))
         rows["shots"].append(home_stats.shots + away_stats.shots)
+        rows["shots ending on a body"].append(sum(ending == "body" for _, ending in shot_endings(result.events)))
         rows["kicks"].append(home_stats.kicks + away_stats.kicks)
         rows["passes"].append(home_stats.passes + away_stats.passes)
+        rows["tackles"].append(home_stats.tackles + away_stats.tackles)
+        rows["fouls"].append(home_stats.fouls + away_stats.fouls)
+        rows["free kicks"].append(sum(side["free_kick"] for side in match_report(result).set_plays))
         rows["offside calls"].append(len(result.events.of_kind(EventKind.OFFSIDE)))
         rows["teammate contacts"].append(home_stats.teammate_contacts + away_stats.teammate_contacts)
         rows["players within 2 m of the ball"].append(near.mean)

@@ -51,10 +51,24 @@ def test_play_finds_a_team_module_in_the_working_directory(tmp_path, monkeypatch
 def test_bench_soccer_reports_the_figures_of_the_play(capsys) -> None:
     assert main(["bench", "soccer", "--matches", "2", "--cycles", "300"]) == 0
     out = capsys.readouterr().out
-    for figure in ("goals", "shots", "passes", "offside calls", "teammate contacts", "players within 2 m"):
+    for figure in ("goals", "shots", "shots ending on a body", "passes", "tackles", "fouls", "free kicks",
+                   "offside calls", "teammate contacts", "players within 2 m"):
         assert figure in out
     assert main(["bench", "soccer", "--home", "no-such-team", "--matches", "1", "--cycles", "10"]) == 2
     assert "unknown team" in capsys.readouterr().err
+
+
+def test_bench_soccer_counts_what_the_match_records() -> None:
+    from experiments.benchmarks.soccer import measure
+    from soccer_sim import MatchConfig, run_match
+    from soccer_sim.analysis.shots import shot_endings
+
+    figures = measure("mmdr", "press-433", 1, seed=2, cycles=1500)
+    result = run_match("mmdr", "press-433", seed=2, config=MatchConfig(max_cycles=1500))
+    home, away = result.statistics
+    assert figures["shots"][0] == home.shots + away.shots
+    assert figures["shots ending on a body"][0] == sum(end == "body" for _, end in shot_endings(result.events))
+    assert figures["tackles"][0] == home.tackles + away.tackles
 
 
 def test_near_ball_recorder_counts_players_within_two_metres() -> None:
