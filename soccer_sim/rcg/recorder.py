@@ -108,8 +108,7 @@ class RcgRecorder:
             self._file = open(self.path, "w", encoding="utf-8", newline="\n")
         except OSError as exc:
             raise RcgError(f"{self.path}: cannot write the game log ({exc.strerror})") from None
-        if self.started is None:
-            self.started = time.time()
+        self._started = time.time() if self.started is None else self.started
         rows = state.pos.shape[0]
         home = state.sizes[0]
         self._labels = ["((%s %d) 0 " % self._slot(r, home) for r in range(rows)]
@@ -193,7 +192,7 @@ class RcgRecorder:
             return
         state = match.state
         score = (int(state.score[0]), int(state.score[1]))
-        stamp = time.strftime("%Y%m%d%H%M", time.localtime(self.started))
+        stamp = time.strftime("%Y%m%d%H%M", time.localtime(self._started))
         result = "-vs-".join(f"{name}_{goals}" for name, goals in zip(self._names, score))
         self._file.write(f'(msg {state.cycle} {MSG_BOARD} "(result {stamp} {result})")\n')
         if self._team_cycle != state.cycle:           # the final score, as rcssserver ends its logs
