@@ -97,4 +97,5 @@ def test_the_game_logs_kernel_is_warmed_with_the_simulators_own(tmp_path) -> Non
               ("soccer_sim.rcg.bodies", "facings")]
     assert len(engine) == 1                          # warmed for every match, whichever teams play
     run_match("idle", "idle", config=MatchConfig(max_cycles=3), recorders=[RcgRecorder(tmp_path / "m.rcg")])
-    assert engine[0].signature in [repr(tuple(signature)) for signature in facings.signatures]  # the types it is called with
+    # the argument types the recorder calls it with
+    assert engine[0].signature in [repr(tuple(signature)) for signature in facings.signatures]

@@ -6,6 +6,7 @@ flags, and the sides list 11 players with the missing ones disabled."""
 
 from __future__ import annotations
 
+import time
 from dataclasses import replace
 
 import numpy as np
@@ -164,7 +165,6 @@ def test_cards_and_the_player_sent_off(logged) -> None:
 def test_the_log_ends_with_the_result_message(logged) -> None:
     path, result, log = logged
     lines = path.read_text().splitlines()
-    import time
     stamp = time.strftime("%Y%m%d%H%M", time.localtime(STARTED))
     home, away = result.score
     assert lines[-2] == f'(msg {result.cycles} 1 "(result {stamp} Tackler_{home}-vs-Carrier_{away})")'
