@@ -6,7 +6,9 @@ time it meets a new tuple of argument types; the kernels it calls are compiled w
 the kernels a match needs are exactly the (kernel, argument types) pairs first called from
 Python during the match. :func:`record_match` plays one match and returns them, with the
 seconds each first call took (compile time when the cache was cold), by watching numba's
-dispatcher entry for calls from Python.
+dispatcher entry for calls from Python. The match is written as a game log (``.rcg``, into a
+temporary file) too, so the log's kernel is among the simulator's own and ``play --rcg``
+finds it compiled.
 
 Regenerate the manifest after changing a kernel's arguments (a test compares it with a fresh
 recording)::
@@ -45,6 +47,7 @@ def record_match(home: str, away: str, seed: int = 0, cycles: int | None = RECOR
 
     from experiments.configuration import match_config
     from soccer_sim import run_match
+    from soccer_sim.rcg import RcgRecorder
 
     found: list[dict] = []
     original = Dispatcher._compile_for_args
@@ -62,7 +65,9 @@ def record_match(home: str, away: str, seed: int = 0, cycles: int | None = RECOR
 
     Dispatcher._compile_for_args = watched
     try:
-        run_match(home, away, seed=seed, config=match_config(cycles))
+        with tempfile.TemporaryDirectory(prefix="soccer-sim-record-") as folder:
+            run_match(home, away, seed=seed, config=match_config(cycles),
+                      recorders=[RcgRecorder(Path(folder) / "match.rcg")])
     finally:
         Dispatcher._compile_for_args = original
     return found

@@ -12,8 +12,12 @@ field is turned by 180 degrees so that home still attacks +x, as the tools expec
 left team. Velocities and directions turn the same way.
 
 **Play modes.** See :func:`play_mode_name`; the referee's calls that rcssserver shows as a
-play mode of their own before the restart (offside, back pass, drop ball) come from the
-match's events (:class:`soccer_sim.rcg.recorder.RcgRecorder`).
+play mode of their own before the restart (offside, back pass, foul charge, drop ball) come
+from the match's events (:class:`soccer_sim.rcg.recorder.RcgRecorder`).
+
+**Players off the field.** rcssserver lists all 11 players of each side in every show line;
+one that is not on the field (never connected, or sent off) is shown where the server parks
+it (:func:`parking_spot`).
 """
 
 from __future__ import annotations
@@ -31,8 +35,29 @@ KICK = 0x2
 GOALIE = 0x8
 CATCH = 0x10
 """The goalkeeper caught the ball in this cycle."""
+DISCARD = 0x100
+"""Set with the red card when a player is sent off (rcssserver's ``Player::discard``)."""
 BALL_COLLIDE = 0x400
 """The ball bounced off the player's body in this cycle."""
+TACKLE = 0x1000
+"""The player tackled and its success draw came out; with TACKLE_FAULT: in reach, but the
+draw failed. Up for the ``tackle_cycles`` cycles the tackler is frozen (one cycle for a foul
+tackle that pushed the ball, which does not freeze it)."""
+TACKLE_FAULT = 0x2000
+"""The tackle failed (alone: the ball was out of reach)."""
+FOUL_CHARGED = 0x20000
+"""The player is frozen by an opponent's foul tackle (``foul_cycles`` cycles)."""
+YELLOW_CARD = 0x40000
+"""The player has a yellow card."""
+RED_CARD = 0x80000
+"""The player was sent off (shown with DISCARD and without STAND)."""
+
+MAX_PLAYER = 11
+"""Players per side that a show line lists (rcssserver's ``MAX_PLAYER``)."""
+PARKING_SPACING = 3.0
+"""Metres between the spots where rcssserver parks a side's absent players."""
+PARKING_OFFSET = 3.0
+"""How far beyond the touch line (rcssserver's y < 0 side) absent players are parked."""
 
 VIEW = "(v h 120)"
 """A connected player's default view (high quality, normal width) as rcssserver 19 logs it;
@@ -52,6 +77,14 @@ _SET_PLAY_NAMES = {
 def side(team: int) -> str:
     """The side letter of a team (home ``l``, away ``r``)."""
     return SIDES[0] if team == HOME else SIDES[1]
+
+
+def parking_spot(side_letter: str, unum: int, half_width: float) -> tuple[float, float]:
+    """Where rcssserver shows an absent player (``Player::disable``), in its frame:
+    3 m per shirt number from the halfway line on the side's own half, 3 m beyond the
+    touch line at y < 0."""
+    sign = -1.0 if side_letter == SIDES[0] else 1.0
+    return sign * PARKING_SPACING * unum, -(half_width + PARKING_OFFSET)
 
 
 def play_mode_name(mode: PlayMode, team: int, free_kick: str = "indirect_free_kick") -> str:

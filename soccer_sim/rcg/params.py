@@ -77,7 +77,10 @@ SERVER_PARAMETERS: dict[str, Callable[[MatchConfig], float]] = {
     "ball_stuck_area": lambda c: c.rules.stuck_ball_radius,
     "proper_goal_kicks": lambda c: c.rules.proper_goal_kicks,
     "max_goal_kicks": lambda c: c.rules.max_goal_kicks,
-}
+} | {name: (lambda c, name=name: getattr(c.tackles, name)) for name in (
+    "tackle_dist", "tackle_back_dist", "tackle_width", "tackle_exponent", "tackle_cycles", "tackle_power_rate",
+    "max_tackle_power", "max_back_tackle_power", "tackle_rand_factor", "foul_exponent", "foul_detect_probability",
+    "foul_cycles", "red_card_probability")}
 """rcssserver ``server_param`` name -> its value in a soccer-sim configuration (same units:
 metres, cycles, rcssserver's power units; ``half_time`` in seconds as the server has it)."""
 
@@ -85,7 +88,8 @@ PLAYER_TYPE_PARAMETERS: dict[str, Callable[[MatchConfig], float]] = {
     name: SERVER_PARAMETERS[name] for name in
     ("player_speed_max", "stamina_inc_max", "player_decay", "dash_power_rate", "player_size",
      "kickable_margin", "extra_stamina", "kick_power_rate")
-} | {"effort_max": lambda c: c.stamina.effort_max, "effort_min": lambda c: c.stamina.effort_min}
+} | {"effort_max": lambda c: c.stamina.effort_max, "effort_min": lambda c: c.stamina.effort_min,
+     "foul_detect_probability": SERVER_PARAMETERS["foul_detect_probability"]}
 """``player_type`` name -> its value for the default type in a soccer-sim configuration."""
 
 

@@ -3,8 +3,8 @@ ball and players of every ``(show ...)`` line, the play modes and the team/score
 
 soccer-sim's own check of the files :class:`~soccer_sim.rcg.RcgRecorder` writes (and a way
 to read the logs of real rcssserver matches). Strict: a line it does not understand is an
-:class:`~soccer_sim.rcg.recorder.RcgError` naming the file and the line number. ``(msg ...)``
-and ``(team_graphic ...)`` lines, which carry nothing it reads, are skipped.
+:class:`~soccer_sim.rcg.recorder.RcgError` naming the file and the line number.
+``(team_graphic ...)`` lines, which carry nothing it reads, are skipped.
 """
 
 from __future__ import annotations
@@ -25,7 +25,8 @@ _SHOW = re.compile(r"\(show (\d+) ")
 _PLAY_MODE = re.compile(r"\(playmode (\d+) ([a-z_]+)\)$")
 _TEAM = re.compile(r"\(team (\d+) (\S+) (\S+) (\d+) (\d+)(?: \d+ \d+ \d+ \d+)?\)$")
 _PARAMS = re.compile(r"\(([a-z_0-9]+) ((?:\"[^\"]*\")|[^()]*)\)")
-_SKIPPED = ("(msg ", "(team_graphic ")
+_MSG = re.compile(r'\(msg (\d+) (\d+) "(.*)"\)$')
+_SKIPPED = ("(team_graphic ",)
 
 
 @dataclass(frozen=True)
@@ -47,6 +48,12 @@ class PlayerFrame:
     recovery: float
     capacity: float | None
     counts: tuple[int, ...]
+
+    @property
+    def present(self) -> bool:
+        """Whether the player is on the field (rcssserver's STAND flag; a player that never
+        connected or was sent off is shown without it)."""
+        return bool(self.state & 0x1)
 
 
 @dataclass(frozen=True)
@@ -77,6 +84,8 @@ class GameLog:
     """(cycle, mode name) of every ``(playmode ...)`` line."""
     teams: list[tuple[int, str, str, int, int]] = field(default_factory=list)
     """(cycle, left name, right name, left score, right score) of every ``(team ...)`` line."""
+    messages: list[tuple[int, int, str]] = field(default_factory=list)
+    """(cycle, board, text) of every ``(msg ...)`` line (rcssserver ends a log with its result)."""
 
 
 def _float(text: str | None) -> float | None:
@@ -135,6 +144,11 @@ def _read_line(log: GameLog, line: str) -> None:
         if m is None:
             raise ValueError("bad playmode line")
         log.play_modes.append((int(m.group(1)), m.group(2)))
+    elif line.startswith("(msg "):
+        m = _MSG.match(line)
+        if m is None:
+            raise ValueError("bad msg line")
+        log.messages.append((int(m.group(1)), int(m.group(2)), m.group(3)))
     elif line.startswith("(team "):
         m = _TEAM.match(line)
         if m is None:

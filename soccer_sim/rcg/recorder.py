@@ -18,12 +18,21 @@ What is written how (:mod:`soccer_sim.rcg.mapping` has the frame and the play mo
   largest turn at that speed); ``NECK`` 0 (the head looks where the body faces);
 - ``TYPE`` 0 (every player is of the default type); ``STATE``: on the field (0x1), goalie
   (0x8), kicked in this cycle (0x2), caught the ball (0x10), the ball bounced off its body
-  (0x400);
+  (0x400), and the tackle, foul-charge and card flags (:mod:`soccer_sim.rcg.marks`);
+- every side lists 11 players, as rcssserver's show lines do: a shirt number the scenario
+  does not field is a disabled player (state 0) and a player sent off shows the server's
+  DISCARD and RED_CARD flags (0x80100); both stand where the server parks absent players
+  (:func:`soccer_sim.rcg.mapping.parking_spot`), still, facing 0;
 - stamina, effort, recovery and capacity from the match state (the same units as the
   server's; an unlimited capacity is written -1 as the server's ``stamina_capacity``);
 - ``COUNTS`` (kick, dash, turn, catch, move, turn_neck, change_view, say, tackle, pointto,
-  attentionto, change_focus): the kicks and catches so far; soccer-sim has no commands for
-  the others, so they stay 0.
+  attentionto, change_focus): the kicks, catches and tackles so far; soccer-sim has no
+  commands for the others, so they stay 0;
+- a foul is rcssserver's ``foul_charge_X`` of the fouling side, followed at once by the
+  fouled side's ``free_kick_Y`` (``indirect_free_kick_Y`` when the ball lies in the fouling
+  side's penalty area, as the server decides), where the server waits 30 cycles between them;
+- at the end the server's result message, ``(msg CYCLE 1 "(result STAMP LEFT_SL-vs-RIGHT_SR)")``
+  (``STAMP``: the match's start as local ``%Y%m%d%H%M``), then the final ``(team ...)`` line.
 
 The recorder writes to ``path`` as the match goes (buffered); it does not make the file
 atomic: :func:`experiments.recording.rcg_recording` writes into a temporary file that
@@ -34,6 +43,7 @@ from __future__ import annotations
 
 import os
 import re
+import time
 from typing import IO, TYPE_CHECKING
 
 import numpy as np
@@ -41,10 +51,14 @@ import numpy as np
 from soccer_sim.body import DEFAULT_INERTIA_MOMENT
 from soccer_sim.errors import SoccerSimError
 from soccer_sim.rcg.mapping import (
-    BALL_COLLIDE, CATCH, FOCUS_POINT, GOALIE, KICK, STAND, VIEW, play_mode_name, side,
+    BALL_COLLIDE, CATCH, DISCARD, FOCUS_POINT, GOALIE, KICK, MAX_PLAYER, RED_CARD, SIDES, STAND, VIEW,
+    parking_spot, play_mode_name, side,
 )
 from soccer_sim.rcg.bodies import facings
-from soccer_sim.rcg.params import player_param_line, player_type_lines, server_param_line
+from soccer_sim.rcg.marks import TACKLE_COUNT, Marks
+from soccer_sim.rcg.params import (
+    SERVER_PARAMETERS, number, player_param_line, player_type_lines, server_param_line,
+)
 from soccer_sim.state import EventKind, PlayMode
 
 if TYPE_CHECKING:
@@ -55,6 +69,10 @@ HEADER = "ULG6"
 COUNTERS = 12
 """Numbers in a player's ``(c ...)`` counts (rcssserver 19)."""
 _KICK_COUNT, _CATCH_COUNT = 0, 3
+MSG_BOARD = 1
+"""The board number of rcssserver's ``(msg ...)`` lines that carry the result."""
+DISABLED_VIEW = "(v h 90)"
+"""The view a player that never connected shows (rcssserver's default ``visible_angle``)."""
 _CAUSES = {int(EventKind.OFFSIDE): ("offside", "free_kick"), int(EventKind.BACK_PASS): ("back_pass", "indirect_free_kick")}
 
 
@@ -72,11 +90,15 @@ def team_name(name: str) -> str:
 class RcgRecorder:
     """Write the match into the game log ``path`` (see the module docstring).
 
-    ``inertia_moment``: the players' ``inertia_moment`` for the body-direction model."""
+    ``inertia_moment``: the players' ``inertia_moment`` for the body-direction model.
+    ``started``: the match's start (seconds since the epoch) for the result message; the
+    time :meth:`on_start` is called when None."""
 
-    def __init__(self, path: str | os.PathLike, *, inertia_moment: float = DEFAULT_INERTIA_MOMENT) -> None:
+    def __init__(self, path: str | os.PathLike, *, inertia_moment: float = DEFAULT_INERTIA_MOMENT,
+                 started: float | None = None) -> None:
         self.path = os.fspath(path)
         self.inertia_moment = float(inertia_moment)
+        self.started = started
         self._file: IO[str] | None = None
 
     # ------------------------------------------------------------------ match loop
@@ -86,10 +108,13 @@ class RcgRecorder:
             self._file = open(self.path, "w", encoding="utf-8", newline="\n")
         except OSError as exc:
             raise RcgError(f"{self.path}: cannot write the game log ({exc.strerror})") from None
+        self._started = time.time() if self.started is None else self.started
         rows = state.pos.shape[0]
         home = state.sizes[0]
-        self._labels = [f"(({side(0)} {r + 1}) 0 " if r < home else f"(({side(1)} {r - home + 1}) 0 "
-                        for r in range(rows)]
+        self._labels = ["((%s %d) 0 " % self._slot(r, home) for r in range(rows)]
+        self._half_width = match.config.field.half_width
+        self._parked = np.array([parking_spot(*self._slot(r, home), self._half_width) for r in range(rows)])
+        self._marks = Marks(rows, match.config.tackles)
         self._base = np.full(rows, STAND, dtype=np.int64)
         for team, goalie in enumerate(match.goalies):
             if goalie >= 0:
@@ -98,7 +123,7 @@ class RcgRecorder:
         self._count_texts = [self._count_text(r) for r in range(rows)]
         self._facing = np.zeros((rows, 2))
         self._table = np.empty((rows, 11), dtype=object)
-        self._format = self._show_format()
+        self._format = self._show_format(match)
         self._names = tuple(team_name(name) for name in match.team_names)
         self._mark = len(match.events)
         self._mode = ""
@@ -112,15 +137,29 @@ class RcgRecorder:
         for line in player_type_lines(match.config):
             write(line + "\n")
         self._write_cycle(match, self._base, ())
+        self._marks.remember(state)
 
     def on_cycle(self, match: Match) -> None:
         events = match.events
         end = len(events)
         flags = self._base.copy()
         calls: list[str] = []
+        tackles: list[tuple[int, int]] = []
+        state = match.state
         for i in range(self._mark, end):
             kind = events.kind[i]
-            if kind == EventKind.CATCH:
+            if kind == EventKind.TACKLE:
+                row = state.first_row(events.team[i]) + events.player[i]
+                tackles.append((row, int(events.detail[i])))
+                self._counts[row, TACKLE_COUNT] += 1
+                self._count_texts[row] = self._count_text(row)
+            elif kind == EventKind.FOUL:             # foul_charge_X, then the fouled side's free kick
+                calls.append(f"foul_charge_{side(events.team[i])}")
+                self._free_kick = "indirect_free_kick" if self._in_own_penalty_area(match, events.team[i]) \
+                    else "free_kick"
+            elif kind == EventKind.YELLOW_CARD:
+                self._marks.cards = True
+            elif kind == EventKind.CATCH:
                 row = match.state.first_row(events.team[i]) + events.player[i]
                 flags[row] |= CATCH
                 self._counts[row, _CATCH_COUNT] += 1
@@ -144,14 +183,20 @@ class RcgRecorder:
         touchers = match.touchers
         if len(touchers):
             flags[touchers] |= BALL_COLLIDE
+        self._marks.mark(state, flags, tackles)
         self._write_cycle(match, flags, calls)
+        self._marks.remember(state)
 
     def on_end(self, match: Match) -> None:
         if self._file is None:
             return
         state = match.state
+        score = (int(state.score[0]), int(state.score[1]))
+        stamp = time.strftime("%Y%m%d%H%M", time.localtime(self._started))
+        result = "-vs-".join(f"{name}_{goals}" for name, goals in zip(self._names, score))
+        self._file.write(f'(msg {state.cycle} {MSG_BOARD} "(result {stamp} {result})")\n')
         if self._team_cycle != state.cycle:           # the final score, as rcssserver ends its logs
-            self._write_team(state.cycle, (int(state.score[0]), int(state.score[1])))
+            self._write_team(state.cycle, score)
         self.close()
 
     def close(self) -> None:
@@ -184,11 +229,42 @@ class RcgRecorder:
         """The ``(c ...)`` part of a player's entry, closing the entry."""
         return "(c " + " ".join(map(str, self._counts[row].tolist())) + "))"
 
-    def _show_format(self) -> str:
-        """The %-format of a show line after its cycle and ball: per player its label, then
-        the state word, x, y, vx, vy, body, stamina, effort, recovery, capacity, counts."""
+    @staticmethod
+    def _slot(row: int, home: int) -> tuple[str, int]:
+        """(side letter, shirt number) of a player row."""
+        return (SIDES[0], row + 1) if row < home else (SIDES[1], row - home + 1)
+
+    def _in_own_penalty_area(self, match: Match, team: int) -> bool:
+        """Whether the ball lies (partly) in ``team``'s own penalty area (rcssserver's
+        ``Referee::inPenaltyArea``, which widens the area by the ball's size)."""
+        state, f = match.state, match.config.field
+        ball_size = match.config.physics.ball_radius
+        x = -state.attack_direction(team) * float(state.ball[0])
+        return (x >= f.half_length - f.penalty_area_length - ball_size and x <= f.half_length + ball_size
+                and abs(float(state.ball[1])) <= f.penalty_area_width / 2.0 + ball_size)
+
+    def _show_format(self, match: Match) -> str:
+        """The %-format of a show line after its cycle and ball: per player row its label,
+        then the state word, x, y, vx, vy, body, stamina, effort, recovery, capacity, counts;
+        the disabled players of shirt numbers the scenario does not field as fixed text."""
         entry = f" %s%s %g %g %g %g %g 0 {VIEW} {FOCUS_POINT} (s %g %g %g %g) %s"
-        return "".join(entry.replace("%s%s", label.replace("%", "%%") + "%s", 1) for label in self._labels) + ")\n"
+        config = match.config
+        stamina = " ".join(number(SERVER_PARAMETERS[name](config))
+                           for name in ("stamina_max", "effort_init")) + " 1 " \
+            + number(SERVER_PARAMETERS["stamina_capacity"](config))
+        counts = "(c " + " ".join(["0"] * COUNTERS) + "))"
+        parts = []
+        rows = iter(self._labels)
+        for team, size in enumerate(match.state.sizes):
+            letter = side(team)
+            for unum in range(1, max(MAX_PLAYER, size) + 1):
+                if unum <= size:
+                    parts.append(entry.replace("%s%s", next(rows).replace("%", "%%") + "%s", 1))
+                else:
+                    x, y = parking_spot(letter, unum, self._half_width)
+                    parts.append(f" (({letter} {unum}) 0 0 {number(x)} {number(y)} 0 0 0 0 {DISABLED_VIEW} "
+                                 f"{FOCUS_POINT} (s {stamina}) {counts}")
+        return "".join(parts) + ")\n"
 
     def _show(self, match: Match, flags: np.ndarray) -> str:
         """The ``(show ...)`` line of the current state (numbers as rcssserver prints them:
@@ -209,6 +285,12 @@ class RcgRecorder:
         table[:, 8] = state.recovery
         table[:, 9] = np.where(np.isinf(state.capacity), -1.0, state.capacity)  # rcssserver: negative = unlimited
         table[:, 10] = self._count_texts
+        present = state.present
+        if not present.all():                         # sent off: rcssserver's disabled player
+            for row in np.flatnonzero(~present).tolist():
+                table[row, 0] = hex(DISCARD | RED_CARD) if state.cards[row] >= 2 else "0"
+                table[row, 1:3] = self._parked[row]
+                table[row, 3:6] = 0
         b = (np.round(np.concatenate((ball * turn, state.ball_vel * turn)), 4) + 0.0).tolist()
         head = f"(show {state.cycle} ((b) {b[0]:g} {b[1]:g} {b[2]:g} {b[3]:g})"
         return head + self._format % tuple(table.ravel().tolist())

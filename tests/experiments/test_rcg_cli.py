@@ -86,3 +86,16 @@ def test_the_runner_logs_every_kth_match(tmp_path, capsys) -> None:
     err = capsys.readouterr().err
     assert "--rcg-dir" in err and "a.sqlite" in err and len(err.splitlines()) == 1
     assert not (tmp_path / "b.sqlite").exists()                # refused before the first match
+
+
+def test_the_game_logs_kernel_is_warmed_with_the_simulators_own(tmp_path) -> None:
+    from experiments.warmup import kernels_for
+    from soccer_sim.rcg import RcgRecorder
+    from soccer_sim.rcg.bodies import facings
+
+    engine = [k for k in kernels_for(["examples.my_team:MyTeam"]) if (k.module, k.function) ==
+              ("soccer_sim.rcg.bodies", "facings")]
+    assert len(engine) == 1                          # warmed for every match, whichever teams play
+    run_match("idle", "idle", config=MatchConfig(max_cycles=3), recorders=[RcgRecorder(tmp_path / "m.rcg")])
+    # the argument types the recorder calls it with
+    assert engine[0].signature in [repr(tuple(signature)) for signature in facings.signatures]

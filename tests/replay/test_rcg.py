@@ -174,6 +174,16 @@ def test_a_scenario_with_fewer_players_and_no_keeper(tmp_path) -> None:
     path = tmp_path / "s.rcg"
     result = run_match("chaser", "idle", seed=0, scenario=get_scenario("empty-goal"), recorders=[RcgRecorder(path)])
     log = read_rcg(path)
-    assert [(p.side, p.unum, p.state & 0x8) for p in log.shows[0].players] == [("l", 1, 0)]   # 1 v 0, no keeper
+    for show in (log.shows[0], log.shows[-1]):
+        # rcssserver lists 11 players a side: the one fielded (no keeper), the others disabled
+        assert [(p.side, p.unum) for p in show.players] == [(side, k) for side in SIDES for k in range(1, 12)]
+        assert [p.present for p in show.players] == [True] + [False] * 21
+        assert show.player("l", 1).state == 0x1
+        for p in show.players[1:]:                        # state 0, parked as the server parks them
+            assert (p.state, p.x, p.y, p.vx, p.vy, p.body) == (0, 3.0 * p.unum * (1 if p.side == "r" else -1), -37.0,
+                                                                0.0, 0.0, 0.0)
+            assert (p.stamina, p.effort, p.recovery, p.capacity, p.counts) == (8000, 1, 1, 130600, (0,) * 12)
+    line = next(line for line in path.read_text().splitlines() if line.startswith("(show 0 "))
+    assert " ((l 2) 0 0 -6 -37 0 0 0 0 (v h 90) (fp 0 0) (s 8000 1 1 130600) (c 0 0 0 0 0 0 0 0 0 0 0 0)) " in line
     assert log.teams[-1] == (result.cycles, "chaser", "idle", *result.score) and result.score == (1, 0)
     assert len(log.teams) == len(set(log.teams))           # the final score is written once

@@ -92,3 +92,56 @@ def test_mode_names() -> None:
     assert play_mode_name(PlayMode.FREE_KICK, HOME, "free_kick") == "free_kick_l"
     with pytest.raises(ValueError):
         play_mode_name(99, HOME)
+
+
+def test_fouls_become_foul_charges_then_the_free_kick_the_server_gives(tmp_path) -> None:
+    d = Driver(tmp_path / "fouls.rcg")
+    state = d.match.state
+    d.mode(PlayMode.PLAY_ON); d.cycle()                                     # 1
+    state.ball[:] = (10.0, 5.0)                                             # away's free kick in midfield
+    d.event(EventKind.FOUL, HOME, 5); d.mode(PlayMode.FREE_KICK, AWAY); d.cycle()     # 2
+    d.mode(PlayMode.PLAY_ON); d.cycle()                                     # 3
+    state.ball[:] = (-52.5 + 16.5, 20.16)                                   # on the corner of home's penalty area
+    d.event(EventKind.FOUL, HOME, 5); d.mode(PlayMode.FREE_KICK, AWAY); d.cycle()     # 4
+    d.mode(PlayMode.PLAY_ON); d.cycle()                                     # 5
+    state.ball[:] = (52.5 - 16.5 - 0.2, 0.0)                                # just outside away's penalty area
+    d.event(EventKind.FOUL, AWAY, 2); d.mode(PlayMode.FREE_KICK, HOME); d.cycle()     # 6
+    d.mode(PlayMode.FREE_KICK, HOME); d.cycle()                             # 7: a keeper's free kick again
+    d.recorder.on_end(d.match)
+    assert read_rcg(tmp_path / "fouls.rcg").play_modes == [
+        (0, "kick_off_l"), (1, "play_on"), (2, "foul_charge_l"), (2, "free_kick_r"), (3, "play_on"),
+        (4, "foul_charge_l"), (4, "indirect_free_kick_r"), (5, "play_on"),
+        (6, "foul_charge_r"), (6, "free_kick_l"), (7, "indirect_free_kick_l")]
+
+
+def test_tackle_flags_and_counter(tmp_path) -> None:
+    d = Driver(tmp_path / "tackles.rcg")
+    state = d.match.state
+    n = state.sizes[0]
+    d.mode(PlayMode.PLAY_ON)
+    state.pos[3], state.vel[3], state.ball[:] = (0.0, 0.0), (0.0, 0.0), (1.0, 0.0)   # home #4, ball in reach
+    state.pos[n + 6] = (3.0, 0.0)                                            # away #7, the ball 2 m away
+    state.vel[n + 6] = 0.0
+    d.cycle()                                                               # 1: the state the tackles see
+    d.event(EventKind.TACKLE, HOME, 3, detail=0)                            # in reach, the draw failed
+    d.event(EventKind.TACKLE, AWAY, 6, detail=0)                            # out of reach (x = 2 m)
+    state.frozen[3] = state.frozen[n + 6] = 9                               # after the cycle's count-down
+    d.cycle()                                                               # 2
+    for cycle in range(3, 14):
+        state.frozen[3] = state.frozen[n + 6] = max(0, 11 - cycle)
+        state.frozen[n + 1] = max(0, 9 - cycle) if cycle >= 5 else 0        # away #2 fouled in cycle 5
+        if cycle == 11:
+            d.event(EventKind.TACKLE, AWAY, 1, detail=3)                    # a foul tackle that pushed: not frozen
+            d.event(EventKind.YELLOW_CARD, AWAY, 1, detail=1)
+            state.cards[n + 1] = 1
+        d.cycle()
+    d.recorder.on_end(d.match)
+    shows = read_rcg(tmp_path / "tackles.rcg").shows
+    home4 = [show.player("l", 4).state for show in shows]
+    away7 = [show.player("r", 7).state for show in shows]
+    away2 = [show.player("r", 2).state for show in shows]
+    assert home4 == [0x1, 0x1] + [0x3001] * 10 + [0x1, 0x1]                 # up for tackle_cycles shows
+    assert away7 == [0x1, 0x1] + [0x2001] * 10 + [0x1, 0x1]
+    assert away2 == [0x1] * 5 + [0x20001] * 5 + [0x1, 0x41001, 0x40001, 0x40001]  # foul_cycles; a push: one show
+    assert shows[-1].player("l", 4).counts[8] == 1 and shows[-1].player("r", 2).counts[8] == 1
+    assert shows[-1].player("r", 7).counts == (0,) * 8 + (1,) + (0,) * 3
