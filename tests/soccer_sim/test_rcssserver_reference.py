@@ -46,9 +46,10 @@ def trace(name: str) -> dict:
     return json.loads((DATA / f"{name}.json").read_text())
 
 
-def config(player_noise: float = 0.0, ball_noise: float = 0.0, kick_noise: float = 0.0) -> MatchConfig:
-    """Defaults with the given noise (none by default) and no half time within a test."""
-    physics = replace(PhysicsConfig(), player_noise=player_noise, ball_noise=ball_noise, kick_noise=kick_noise)
+def config(player_rand: float = 0.0, ball_rand: float = 0.0, kick_rand: float = 0.0) -> MatchConfig:
+    """Defaults with the given noise (rcssserver's ``player_rand``, ``ball_rand``, ``kick_rand``;
+    none by default) and no half time within a test."""
+    physics = replace(PhysicsConfig(), player_rand=player_rand, ball_rand=ball_rand, kick_rand=kick_rand)
     return replace(MatchConfig(), physics=physics, rules=replace(RuleConfig(), half_cycles=50_000),
                    max_cycles=100_000)
 
@@ -430,8 +431,8 @@ def test_ball_launched_at_a_standing_player_with_noise_shares(speed: str) -> Non
     16/9/0, stop 1/6/7, blocked 0/0/0, back 3/5/13 at 2.7/1.5/0.8)."""
     trials = trace("noise")["ball_at_player"][speed]
     server = count_outcomes(trial["end_ball"] for trial in trials)
-    ours = launch_at_player(trials, config(player_noise=PhysicsConfig().player_noise,
-                                           ball_noise=PhysicsConfig().ball_noise), seed=7, repeat=3)
+    ours = launch_at_player(trials, config(player_rand=PhysicsConfig().player_rand,
+                                           ball_rand=PhysicsConfig().ball_rand), seed=7, repeat=3)
     n = sum(ours.values())
     for key in server:
         assert binomial_share_agrees(ours[key], n, server[key], len(trials)), (key, ours, server)
@@ -443,7 +444,7 @@ def test_ball_launched_at_a_standing_player_with_noise_shares(speed: str) -> Non
 def kick_spread(distance: float, trials: int) -> tuple[float, float]:
     """Standard deviations of a full kick's speed (m/cycle) and direction (deg), kick noise
     only, ball at rest ``distance`` in front of a still kicker."""
-    pitch = Pitch(config(kick_noise=PhysicsConfig().kick_noise), seed=3)
+    pitch = Pitch(config(kick_rand=PhysicsConfig().kick_rand), seed=3)
     kicks = np.array([kick_once((distance, 0.0), 0.0, pitch=pitch) for _ in range(trials)])
     return float(np.hypot(*kicks.T).std(ddof=1)), float(np.degrees(np.arctan2(kicks[:, 1], kicks[:, 0])).std(ddof=1))
 
@@ -468,7 +469,7 @@ def test_player_noise_sideways_drift_after_a_12_cycle_sprint_within_20_percent()
     """player_rand: the sideways spread after 12 full dashes from rest, 60 server trials (sd
     sampling error 9 %) against 200 of ours (5 %); tolerance 20 %."""
     server = float(np.array(trace("noise")["sprint12"])[:, 1].std(ddof=1))
-    pitch = Pitch(config(player_noise=PhysicsConfig().player_noise), seed=5)
+    pitch = Pitch(config(player_rand=PhysicsConfig().player_rand), seed=5)
     drift = []
     for _ in range(200):
         pitch.park()

@@ -51,9 +51,9 @@ def success_probability(forward: float, lateral: float, foul: bool = False) -> f
 
 
 def noiseless() -> MatchConfig:
-    """No noise at all, the tackle's included (the clean and referee traces: kick_rand 0)."""
-    base = config()
-    return replace(base, tackles=replace(base.tackles, kick_rand=0.0))
+    """No noise at all, the tackle's included: it scales ``PhysicsConfig.kick_rand``, which is 0
+    here as in the clean and referee traces (``server::kick_rand=0``)."""
+    return config()
 
 
 class TackleProbe(Probe):
