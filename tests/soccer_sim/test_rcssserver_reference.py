@@ -168,16 +168,49 @@ def long_run() -> tuple[np.ndarray, np.ndarray]:
     return sustained_dash(len(trace("dash")["forward"]["speed"]))
 
 
+def stamina_capped_dashes(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """From the server's trace: which of the first ``n`` full dashes stamina capped, and the
+    stamina each dash consumed (``min(100, stamina before the dash + extra_stamina)``; a dash
+    of power 100 consumes 100, 50 per leg)."""
+    data = trace("dash")["forward"]
+    before = np.r_[data["stamina_max"], data["stamina"][:n - 1]]
+    consumed = np.minimum(100.0, before + data["extra_stamina"])
+    return consumed < 100.0, consumed
+
+
+def leg_split_gain(consumed: np.ndarray) -> np.ndarray:
+    """How much more power rcssserver 19 gives a stamina-capped full dash than an even split:
+    its ``Player::applyDashEffect`` rescales the left leg's share to ``consumed / 2`` and then
+    the right leg's with the left's already rescaled share, ``consumed * 50 / (consumed / 2 +
+    50)``; the legs' mean power over ``consumed`` (1 when nothing is capped; 1.080 for a spent
+    player, 72.5 consumed)."""
+    right = 100.0 * consumed / (consumed / 2.0 + 50.0)
+    return (consumed + right) / (2.0 * consumed)
+
+
 def test_sustained_dash_speed_every_cycle_within_1_percent(long_run) -> None:
-    """The effort fall-off: full speed until stamina runs low, then slower and slower."""
+    """The effort fall-off: full speed until stamina runs low, then slower and slower. Every
+    dash that stamina does not cap (the server's first capped dash: 144) runs at the server's
+    speed within 1 %. A capped dash deliberately follows rcssserver 17/18's even use of the
+    power left, not rcssserver 19's unequal legs (docs/simulator.md, "The exhausted runner":
+    up to 8 % faster and veering, a slip in ``Player::applyDashEffect``): there each server
+    speed is, within 1 %, the server's previous speed decayed plus our cycle's acceleration
+    times v19's leg-split gain, so the whole difference is that documented one."""
     ours, _ = long_run
     server = server_speeds(len(ours))
-    both = ~np.isnan(server) & ~np.isnan(ours)
-    assert both.sum() > 0.9 * len(ours)
-    bad = np.flatnonzero(np.abs(ours[both] - server[both]) > 0.01 * server[both])
+    capped, consumed = stamina_capped_dashes(len(ours))
+    assert np.flatnonzero(capped)[0] + 1 == 144
+    free = ~np.isnan(server) & ~np.isnan(ours) & ~capped
+    assert free.sum() > 0.25 * len(ours)
+    bad = np.flatnonzero(np.abs(ours[free] - server[free]) > 0.01 * server[free])
     assert bad.size == 0, (f"{bad.size} cycles differ by more than 1 %; first at cycle "
-                           f"{np.flatnonzero(both)[bad[0]] + 1}: ours {ours[both][bad[0]]:.4f}, "
-                           f"server {server[both][bad[0]]:.4f}")
+                           f"{np.flatnonzero(free)[bad[0]] + 1}: ours {ours[free][bad[0]]:.4f}, "
+                           f"server {server[free][bad[0]]:.4f}")
+    decay = PhysicsConfig().player_decay
+    predicted = decay * server[:-1] + (ours[1:] - decay * ours[:-1]) * leg_split_gain(consumed[1:])
+    both = ~np.isnan(predicted) & ~np.isnan(server[1:]) & capped[1:]
+    assert both.sum() > 0.5 * len(ours)
+    np.testing.assert_allclose(predicted[both], server[1:][both], rtol=0.01)
 
 
 def test_speed_starts_falling_at_the_same_dash(long_run) -> None:
@@ -199,11 +232,20 @@ def test_stamina_every_cycle_within_half_a_percent_of_the_maximum(long_run) -> N
     np.testing.assert_allclose(ours, server, atol=0.005 * data["stamina_max"])
 
 
-def test_exhausted_runner_speed_within_1_percent(long_run) -> None:
-    """The last 100 cycles of the run: stamina spent, effort at its minimum (server: 0.468)."""
+def test_exhausted_runner_keeps_the_17_18_figure_and_differs_from_19_by_its_leg_split(long_run) -> None:
+    """The last 100 cycles of the run: stamina spent, effort at its minimum. Ours runs at
+    rcssserver 17/18's 0.435 m/cycle on purpose; rcssserver 19 runs at 0.468 because its
+    ``Player::applyDashEffect`` splits the capped dash unevenly between the legs (72.5 and
+    84.1 power instead of 72.5 each; the body also veers about 4° a cycle), a slip rather than
+    a designed rule (docs/simulator.md, "The exhausted runner"). Within 1 %: ours 0.435, the
+    server's figure in the trace 0.468, and the server's equal to ours times the leg-split gain."""
     ours, _ = long_run
     server = server_speeds(len(ours))
-    assert np.nanmean(ours[-100:]) == pytest.approx(np.nanmean(server[-100:]), rel=0.01)
+    _, consumed = stamina_capped_dashes(len(ours))
+    assert np.nanmean(ours[-100:]) == pytest.approx(0.435, rel=0.01)
+    assert np.nanmean(server[-100:]) == pytest.approx(0.468, rel=0.01)
+    gain = leg_split_gain(consumed[-100:]).mean()
+    assert np.nanmean(server[-100:]) == pytest.approx(np.nanmean(ours[-100:]) * gain, rel=0.01)
 
 
 @pytest.mark.parametrize("dash_dir", ["90", "-90", "180", "45"])
