@@ -479,15 +479,17 @@ def launch_at_player(trials: list[dict], cfg: MatchConfig, seed: int = 0, repeat
     return count_outcomes(ends)
 
 
-SLOW_BALL_OPEN = pytest.mark.xfail(strict=True, reason=(
-    "open: at 0.8 m/cycle the server sends the ball past the standing player's centre in 3 more "
-    "of 20 phases (those whose contact cycle ends with the ball just short of the centre, after "
-    "which ball and player meet again); soccer-sim's end-of-cycle separation reproduces, trial "
-    "for trial, a transcription of rcssserver's Stadium::collisions / calcCollisionPos / "
-    "updateCollisionVel and every other phase here, so the cause is not in those rules"))
+NEAR_CENTRE_OPEN = (
+    "open: in the phases whose contact cycle ends with the ball just short of the standing "
+    "player's centre (after which ball and player meet again) the server leaves the ball past "
+    "the centre more often than soccer-sim. soccer-sim reproduces, trial for trial, a "
+    "transcription of rcssserver's Stadium::collisions / calcCollisionPos / updateCollisionVel "
+    "and every phase away from the centre, so the cause is not in those rules; at 2.7 and 1.5 "
+    "m/cycle it stays within one trial, at 0.8 (20 phases: stop 7, back 13; server 10 / 10) not")
 
 
-@pytest.mark.parametrize("speed", ["2.7", "1.5", pytest.param("0.8", marks=SLOW_BALL_OPEN)])
+@pytest.mark.parametrize("speed", ["2.7", "1.5", pytest.param("0.8", marks=pytest.mark.xfail(
+    strict=True, reason=NEAR_CENTRE_OPEN))])
 def test_ball_launched_at_a_standing_player_noise_off(speed: str) -> None:
     """20 start phases, noise off: through / stop / blocked / back counts as the server's within
     one trial each (server: 15/3/0/2 at 2.7, 7/7/0/6 at 1.5, 0/10/0/10 at 0.8)."""
@@ -495,6 +497,18 @@ def test_ball_launched_at_a_standing_player_noise_off(speed: str) -> None:
     server = count_outcomes(trial["end_ball"] for trial in trials)
     ours = launch_at_player(trials, config())
     assert all(abs(ours[k] - server[k]) <= 1 for k in server), (ours, server)
+
+
+def test_a_slow_ball_launched_at_a_standing_player_never_passes_through_noise_off() -> None:
+    """0.8 m/cycle, 20 start phases, noise off: as on the server, no ball passes through or is
+    blocked in front; every one stops at the player or bounces back (how many of each: see
+    the open difference in the test above)."""
+    trials = trace("contact")["ball_at_player"]["0.8"]
+    server = count_outcomes(trial["end_ball"] for trial in trials)
+    ours = launch_at_player(trials, config())
+    assert ours["through"] == server["through"] == 0 and ours["blocked"] == server["blocked"] == 0
+    assert ours["stop"] + ours["back"] == server["stop"] + server["back"] == len(trials)
+    assert ours["back"] >= server["back"] and ours["stop"] >= 1
 
 
 def binomial_share_agrees(ours: int, n_ours: int, theirs: int, n_theirs: int, sigmas: float = 2.5) -> bool:
@@ -508,9 +522,10 @@ def binomial_share_agrees(ours: int, n_ours: int, theirs: int, n_theirs: int, si
 
 @pytest.mark.parametrize("speed", ["2.7", "1.5", "0.8"])
 def test_ball_launched_at_a_standing_player_with_noise_shares(speed: str) -> None:
-    """Default noise, 20 server trials: ours (3 x 20 trials) pass through / stop / bounce back
-    in shares within 2.5 standard errors of the server's (binomial, per outcome; server: through
-    16/9/0, stop 1/6/7, blocked 0/0/0, back 3/5/13 at 2.7/1.5/0.8)."""
+    """Default noise, 40 server trials (every start phase twice): ours (3 x 40 trials) pass
+    through / stop / bounce back in shares within 2.5 standard errors of the server's
+    (binomial, per outcome; server: through 32/16/0, stop 2/8/17, blocked 0/0/0, back 6/16/23 at
+    2.7/1.5/0.8)."""
     trials = trace("noise")["ball_at_player"][speed]
     server = count_outcomes(trial["end_ball"] for trial in trials)
     ours = launch_at_player(trials, config(player_rand=PhysicsConfig().player_rand,
@@ -539,8 +554,8 @@ def server_kick_spread(label: str) -> tuple[float, float]:
 @pytest.mark.parametrize("label,distance", [("near", NEAR), ("far", FAR)])
 def test_kick_noise_spread_within_25_percent(label: str, distance: float) -> None:
     """kick_rand grows with the ball's distance (and angle, speed): speed sd and direction sd
-    of a full kick, 150 server trials against 300 of ours. The sampling error of an sd over N
-    trials is about 1/sqrt(2N) (6 % and 4 %); 25 % allows for both, with margin."""
+    of a full kick, 200 server trials against 300 of ours. The sampling error of an sd over N
+    trials is about 1/sqrt(2N) (5 % and 4 %); 25 % allows for both, with margin."""
     server_speed, server_dir = server_kick_spread(label)
     ours_speed, ours_dir = kick_spread(distance, 300)
     assert ours_speed == pytest.approx(server_speed, rel=0.25)
@@ -548,8 +563,9 @@ def test_kick_noise_spread_within_25_percent(label: str, distance: float) -> Non
 
 
 def test_player_noise_sideways_drift_after_a_12_cycle_sprint_within_20_percent() -> None:
-    """player_rand: the sideways spread after 12 full dashes from rest, 60 server trials (sd
-    sampling error 9 %) against 200 of ours (5 %); tolerance 20 %."""
+    """player_rand: the sideways spread after 12 full dashes from rest, 200 server trials (sd
+    sampling error about 5 %, more for a spread this far from normal) against 200 of ours;
+    tolerance 20 %. No side is preferred (mean drift within 5 cm of 0)."""
     server = float(np.array(trace("noise")["sprint12"])[:, 1].std(ddof=1))
     pitch = Pitch(config(player_rand=PhysicsConfig().player_rand), seed=5)
     drift = []
@@ -561,3 +577,4 @@ def test_player_noise_sideways_drift_after_a_12_cycle_sprint_within_20_percent()
             pitch.step()
         drift.append(pitch.state.pos[HOME_PROBE, 1])
     assert float(np.std(drift, ddof=1)) == pytest.approx(server, rel=0.20)
+    assert abs(float(np.mean(drift))) < 0.05
