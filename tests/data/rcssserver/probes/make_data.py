@@ -99,7 +99,8 @@ def contact(c: dict) -> dict:
         return out
     at_player = {}
     for sp in (2.7, 1.5, 0.8):
-        at_player[str(sp)] = [{"ball_x0": r(c[f"ball{sp}_at_player_{j}"][0]["ball"][0]),
+        at_player[str(sp)] = [{"player0": [r(v) for v in c[f"ball{sp}_at_player_{j}"][0]["p"]["A1"][:2]],
+                               "ball_x0": r(c[f"ball{sp}_at_player_{j}"][0]["ball"][0]),
                                "ball_vx0": r(c[f"ball{sp}_at_player_{j}"][0]["ball"][2]),
                                "end_ball": [r(v) for v in c[f"ball{sp}_at_player_{j}"][-1]["ball"]],
                                "end_player": [r(v) for v in c[f"ball{sp}_at_player_{j}"][-1]["p"]["A1"][:4]]}
@@ -108,8 +109,10 @@ def contact(c: dict) -> dict:
                                     "sprint: dash 100 at body 0 from x0 towards a still ball at (0, 0), 20 "
                                     "start phases; walk: dash 30; past: dash 100 along y = 0 with the ball "
                                     "at (0, off); x only (y stays 0) except for past; at_player: a ball launched "
-                                    "along +x at a player standing at (0, 0) (body 180), state 0 = ball_x0 / "
-                                    "ball_vx0, 20 cycles on: "
+                                    "along +x at a player standing at (0, 0) (body 180), state 0 = player0 [x, y] (the "
+                                    "trainer's move puts the player at (0, 0), but where the previous phase left the "
+                                    "ball may push it off before this ball is placed) / ball_x0 / ball_vx0, 20 "
+                                    "cycles on: "
                                     "end_ball = [x, y, vx, vy], end_player = [x, y, vx, vy]"),
             "sprint": [trace(c[f"sprint_into_ball_{j}"]) for j in range(20)],
             "walk": [trace(c[f"walk_into_ball_{j}"]) for j in range(5)],
@@ -124,7 +127,8 @@ def noise(kn: dict, noisy: dict) -> dict:
                 for lab in ("near", "far")}
     sprint = [disp(noisy[f"sprint12_{j}"][0]["p"]["A1"], noisy[f"sprint12_{j}"][-1]["p"]["A1"])
               for j in range(sum(name.startswith("sprint12_") for name in noisy))]
-    at_player = {str(sp): [{"ball_x0": r(noisy[f"ball{sp}_at_player_{j}"][0]["ball"][0]),
+    at_player = {str(sp): [{"player0": [r(v) for v in noisy[f"ball{sp}_at_player_{j}"][0]["p"]["A1"][:2]],
+                            "ball_x0": r(noisy[f"ball{sp}_at_player_{j}"][0]["ball"][0]),
                             "ball_vx0": r(noisy[f"ball{sp}_at_player_{j}"][0]["ball"][2]),
                             "end_ball": [r(v) for v in noisy[f"ball{sp}_at_player_{j}"][-1]["ball"]]}
                            for j in range(40)] for sp in (2.7, 1.5, 0.8)}
