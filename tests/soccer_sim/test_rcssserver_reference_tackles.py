@@ -21,12 +21,11 @@ faces the server's body direction (+x); the whole grid of places is compared thr
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 
 import numpy as np
 import pytest
-from tests.soccer_sim.test_rcssserver_reference import (FULL, HOME_PROBE, N_TEAM, PROBE, Pitch, Probe,
-                                                        binomial_share_agrees, config, trace)
+from tests.soccer_sim.probe_rig import (FULL, HOME_PROBE, N_TEAM, PROBE, Pitch, Probe, binomial_share_agrees,
+                                        config, trace)
 
 from soccer_sim import Match, PlayMode, TeamCommand
 from soccer_sim.body import DEFAULT_INERTIA_MOMENT
