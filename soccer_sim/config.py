@@ -435,12 +435,11 @@ class TackleConfig:
     """Tackle power when pushing the ball straight back; in between the power falls linearly
     with the angle (rcssserver ``max_back_tackle_power``)."""
     tackle_rand_factor: float = 2.0
-    """Tackle noise as a multiple of ``kick_rand`` (rcssserver ``tackle_rand_factor``)."""
-    kick_rand: float = 0.1
-    """The default player type's kick noise amount, as the tackle noise scales it (rcssserver
-    ``kick_rand``): a random push of up to ``kick_rand * tackle_rand_factor * (pos_rate +
-    speed_rate)`` m/cycle in a uniform direction, the rates within [0.5, 1] growing with the
-    success probability and the ball's speed."""
+    """Tackle noise as a multiple of the tackler's kick noise :attr:`PhysicsConfig.kick_rand`
+    (rcssserver ``tackle_rand_factor``; rcssserver scales the player type's ``kick_rand``): a
+    random push of up to ``kick_rand * tackle_rand_factor * (pos_rate + speed_rate)`` m/cycle
+    in a uniform direction, the rates within [0.5, 1] growing with the success probability and
+    the ball's speed."""
     foul_exponent: float = 10.0
     """Exponent of the failure probability of a foul tackle (rcssserver ``foul_exponent``)."""
     foul_detect_probability: float = 0.5
@@ -456,7 +455,7 @@ class TackleConfig:
             raise ConfigError(f"TackleConfig.enabled must be a bool, got {self.enabled!r}")
         _require_positive(self, "tackle_dist", "tackle_width", "tackle_exponent", "foul_exponent")
         for name in ("tackle_back_dist", "tackle_power_rate", "max_tackle_power", "max_back_tackle_power",
-                     "tackle_rand_factor", "kick_rand"):
+                     "tackle_rand_factor"):
             value = getattr(self, name)
             if not (_is_real(value) and math.isfinite(value) and value >= 0):
                 raise ConfigError(f"TackleConfig.{name} must be a finite number >= 0, got {value!r}")

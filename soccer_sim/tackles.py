@@ -15,7 +15,8 @@ its ``Player::tackle`` computes it, with the parameters of :class:`~soccer_sim.c
   * tackle_power_rate * (1 - 0.5 * |b| / 180°)`` m/cycle towards ``d``, where ``a`` is ``d``
   relative to the body and ``b`` the ball's direction relative to the body, plus a noise of
   up to ``kick_rand * tackle_rand_factor * (pos_rate + speed_rate)`` in a uniform direction
-  (``pos_rate = 0.5 + 0.5 * success probability``, ``speed_rate = 0.5 + 0.5 * ball speed /
+  (``kick_rand`` is the kick noise :attr:`~soccer_sim.config.PhysicsConfig.kick_rand`, as
+  rcssserver scales the player type's ``kick_rand``; ``pos_rate = 0.5 + 0.5 * success probability``, ``speed_rate = 0.5 + 0.5 * ball speed /
   (ball_speed_max * ball_decay)``). The push is capped at ``kick_speed_max`` (rcssserver's
   ``ball_accel_max``) and added to the ball's velocity after the cycle's kicks, the result
   capped at ``ball_speed_max``. A tackle succeeds only where its player may kick (the
@@ -192,7 +193,7 @@ class Tackles:
         pos_rate = 0.5 + 0.5 * (1.0 - prob)
         speed_rate = 0.5 + 0.5 * math.hypot(state.ball_vel[0], state.ball_vel[1]) / (
             physics.ball_speed_max * physics.ball_decay)
-        noise = self.rng.uniform(0.0, cfg.kick_rand * cfg.tackle_rand_factor * (pos_rate + speed_rate))
+        noise = self.rng.uniform(0.0, physics.kick_rand * cfg.tackle_rand_factor * (pos_rate + speed_rate))
         noise_dir = self.rng.uniform(-math.pi, math.pi)
         return True, (accel * math.cos(direction) + noise * math.cos(noise_dir),
                       accel * math.sin(direction) + noise * math.sin(noise_dir))

@@ -1,6 +1,8 @@
-"""The situations rcssserver 19 was probed in, replayed on soccer-sim's motion rules.
+"""The situations rcssserver 19 was probed in, replayed on soccer-sim.
 
-A :class:`Rig` runs the motion rules of one cycle in the match's order (kicks, dashes with the
+Two rigs: :class:`Pitch` is a whole match in play on whose probe players do exactly what the
+test sets (the reference tests against the server's traces, ``tests/data/rcssserver/``, read
+by :func:`trace`); :class:`Rig` runs the motion rules of one cycle in the match's order (kicks, dashes with the
 movement noise, the move with the body-ball contacts, decay) on a world with player 0 and the
 ball placed by the test and everyone else parked far away, in play on, without the referee:
 the same as the probes' trainer set-ups. The real server's figures these situations are
@@ -9,15 +11,19 @@ compared with are in ``docs/simulator.md`` (the "rcssserver rule -> ours -> para
 
 from __future__ import annotations
 
+import json
 import math
 from dataclasses import replace
+from functools import cache
+from pathlib import Path
 
 import numpy as np
 
-from soccer_sim.config import MatchConfig, PhysicsConfig
+from soccer_sim import Match, PlayMode, TeamCommand
+from soccer_sim.config import MatchConfig, PhysicsConfig, RuleConfig
 from soccer_sim.kinematics import CycleNoise, Kinematics
 from soccer_sim.physics import Physics
-from soccer_sim.state import PlayMode, WorldState
+from soccer_sim.state import WorldState
 
 N = 11
 ROWS = 2 * N
@@ -160,3 +166,100 @@ def kick_once(ball_offset: tuple[float, float], kick_vector: tuple[float, float]
 def direction_degrees(vector: np.ndarray) -> float:
     """Direction of a 2-vector in degrees."""
     return math.degrees(math.atan2(vector[1], vector[0]))
+
+
+# ------------------------------------------------------------- the match-level rig (Pitch)
+
+DATA = Path(__file__).resolve().parents[1] / "data" / "rcssserver"
+PROBE = 9
+"""Index of the probe player in its team (not the goalkeeper)."""
+N_TEAM = N
+FULL = 10.0
+"""A request far beyond any limit (m/cycle² for a dash, m/cycle for a kick): "full power"."""
+
+
+@cache
+def trace(name: str) -> dict:
+    """One reference file (read once)."""
+    return json.loads((DATA / f"{name}.json").read_text())
+
+
+def config(player_rand: float = 0.0, ball_rand: float = 0.0, kick_rand: float = 0.0) -> MatchConfig:
+    """Defaults with the given noise (rcssserver's ``player_rand``, ``ball_rand``, ``kick_rand``;
+    none by default), no half time within a test, and no stuck ball dropped: the probes run one
+    after the other on one match, where the server's trainer placed every probe afresh."""
+    physics = replace(PhysicsConfig(), player_rand=player_rand, ball_rand=ball_rand, kick_rand=kick_rand)
+    rules = replace(RuleConfig(), half_cycles=50_000, stuck_ball_cycles=None)
+    return replace(MatchConfig(), physics=physics, rules=rules, max_cycles=100_000)
+
+
+class Probe:
+    """A team whose players do exactly what the test sets before each step (own frame)."""
+
+    def __init__(self) -> None:
+        self.dash = np.zeros((N_TEAM, 2))
+        self.kick = np.zeros((N_TEAM, 2))
+        self.tackle: np.ndarray | None = None
+
+    def reset(self, side_info, config, rng) -> None:
+        pass
+
+    def act(self, view) -> TeamCommand:
+        if self.tackle is None:
+            return TeamCommand(dash=self.dash.copy(), kick=self.kick.copy())
+        return TeamCommand(dash=self.dash.copy(), kick=self.kick.copy(), tackle=self.tackle.copy())
+
+    def idle(self) -> None:
+        self.dash[:] = 0.0
+        self.kick[:] = 0.0
+        if self.tackle is not None:
+            self.tackle[:] = np.nan
+
+
+class Pitch:
+    """A match in play-on with every player parked along y = -30 and the probes placed by the
+    test; ``home``/``away`` are the Probe teams (the away team's frame is turned by 180°)."""
+
+    def __init__(self, cfg: MatchConfig | None = None, seed: int = 0) -> None:
+        self.home, self.away = Probe(), Probe()
+        self.match = Match(self.home, self.away, seed=seed, config=cfg or config())
+        self.match.start()
+        self.state = self.match.state
+        self.park()
+
+    def park(self) -> None:
+        """Set up a probe phase as the server's trainer did: everyone parked and still, the
+        ball away, play on, and every player fresh (the trainer's ``(recover)``)."""
+        state = self.state
+        self.match.kinematics.restore(state.stamina, state.effort, state.recovery, state.capacity)
+        state.play_mode, state.mode_team = PlayMode.PLAY_ON, -1
+        state.pos[:, 0] = np.linspace(-48.0, 48.0, len(state.pos))
+        state.pos[:, 1] = -30.0
+        state.vel[:] = 0.0
+        state.ball[:] = (0.0, 25.0)
+        state.ball_vel[:] = 0.0
+
+    def place(self, index: int, x: float, y: float, vx: float = 0.0, vy: float = 0.0) -> None:
+        self.state.pos[index] = (x, y)
+        self.state.vel[index] = (vx, vy)
+
+    def ball(self, x: float, y: float, vx: float = 0.0, vy: float = 0.0) -> None:
+        self.state.ball[:] = (x, y)
+        self.state.ball_vel[:] = (vx, vy)
+
+    def step(self) -> None:
+        self.match.step()
+        self.home.idle()
+        self.away.idle()
+
+
+HOME_PROBE, AWAY_PROBE = PROBE, N_TEAM + PROBE
+
+
+def binomial_share_agrees(ours: int, n_ours: int, theirs: int, n_theirs: int, sigmas: float = 2.5) -> bool:
+    """Two observed shares agree within ``sigmas`` standard errors of their difference (with a
+    continuity allowance of half a trial on each side)."""
+    pooled = (ours + theirs) / (n_ours + n_theirs)
+    se = math.sqrt(max(pooled * (1 - pooled), 0.25 / (n_ours + n_theirs)) * (1 / n_ours + 1 / n_theirs))
+    slack = 0.5 / n_ours + 0.5 / n_theirs
+    return abs(ours / n_ours - theirs / n_theirs) <= sigmas * se + slack

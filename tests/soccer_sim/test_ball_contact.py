@@ -1,11 +1,14 @@
 """Body-ball contact as rcssserver resolves it (``body_ball_contact = "rcssserver"``): overlaps
 left at the end of the cycle are separated and both velocities multiplied by -0.1, so fast
-balls pass through a body and slow players push the ball. The probe situations are compared
-with rcssserver 19's figures (noise off, 20 trials each)."""
+balls pass through a body and slow players push the ball. The rules themselves, with chosen
+situations; the real server's traces of the probe situations are compared in
+``test_rcssserver_reference.py``."""
 
 from __future__ import annotations
 
+import json
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -15,47 +18,28 @@ from tests.soccer_sim.probe_rig import (Rig, ball_launched_at_a_standing_player,
 from soccer_sim.config import BODY_BALL_CONTACTS, ConfigError, PhysicsConfig
 from soccer_sim.state import PlayMode
 
+DATA = Path(__file__).resolve().parents[1] / "data" / "rcssserver"
 CONTACT = 0.3 + 0.085
 """Player-ball contact distance of the default bodies (m)."""
 
 
-def binomial_tolerance(real: int, trials: int = 20) -> float:
-    """Two standard deviations of a count out of ``trials`` with the real server's share (at
-    least one trial): how far our count may differ from the real one."""
-    share = real / trials
-    return max(1.0, 2.0 * math.sqrt(trials * share * (1.0 - share)))
-
-
-@pytest.mark.parametrize("speed, real", [
-    (2.7, {"through": 12, "stop": 4, "back": 4}),
-    (1.5, {"through": 3, "stop": 11, "back": 6}),
-    (0.8, {"through": 0, "stop": 0, "back": 20}),
-])
-def test_fast_balls_pass_through_a_standing_player_and_slow_ones_bounce(speed: float, real: dict) -> None:
-    ours = ball_launched_at_a_standing_player(speed)
-    for outcome, count in real.items():
-        assert abs(ours[outcome] - count) <= binomial_tolerance(count), (outcome, ours, real)
-
-
 def test_swept_contacts_stop_every_ball_unlike_rcssserver() -> None:
-    """The control: the swept contact (not rcssserver's) never lets a ball through."""
+    """The control: the swept contact (not rcssserver's) never lets a ball through, where
+    rcssserver's lets most balls at 2.7 m/cycle through (test_rcssserver_reference.py compares
+    the default contact with the server's traces)."""
     assert ball_launched_at_a_standing_player(2.7, contact="swept") == {"through": 0, "stop": 0, "back": 20}
+    assert ball_launched_at_a_standing_player(2.7)["through"] >= 10
 
 
-def test_a_sprinter_runs_through_a_still_ball_shifting_it_a_little() -> None:
-    results = run_at_a_still_ball(100, 15, start=-5.0, step=0.05)
-    assert all(passed for _, passed in results)  # rcssserver: 20/20
-    shifts = [x for x, _ in results]
-    assert -0.2 <= min(shifts) and max(shifts) <= 0.1  # rcssserver: -0.17 .. +0.08 m
-    assert min(shifts) < -0.1  # some start phases really do knock it back
-
-
-def test_a_walker_pushes_the_ball_ahead() -> None:
+def test_a_walker_pushes_the_ball_ahead_where_the_swept_contact_stops_it() -> None:
+    """rcssserver's walker (dash 30) pushes the ball about 2.6 m in 40 cycles (compared phase by
+    phase in test_rcssserver_reference.py); the swept contact stops the walker instead."""
+    server = [walk["ball_x"][-1] for walk in json.loads((DATA / "contact.json").read_text())["walk"]]
     results = run_at_a_still_ball(30, 40, start=-3.0, step=0.015)
     assert not any(passed for _, passed in results)
-    assert all(abs(x - 2.6) < 0.15 for x, _ in results)  # rcssserver: 2.6 m in 40 cycles
+    assert all(abs(x - float(np.mean(server))) < 0.15 for x, _ in results)  # rcssserver: 2.60 .. 2.69 m
     swept = run_at_a_still_ball(30, 40, start=-3.0, step=0.015, contact="swept")
-    assert all(abs(x) < 0.01 for x, _ in swept)  # the swept contact stops the walker instead
+    assert all(abs(x) < 0.01 for x, _ in swept)
 
 
 def test_a_path_passing_0_3_m_from_the_ball_leaves_it_untouched() -> None:

@@ -1,11 +1,14 @@
 """Kick power as rcssserver computes it: ``1 - 0.25 * dir_diff / 180° - 0.25 * dist_ball /
 kickable_margin`` of the request, where ``dir_diff`` is where the ball lies relative to the
 body (the body-direction model of :mod:`soccer_sim.body`) and ``dist_ball`` the gap between
-the surfaces; not where the ball is sent. Figures: rcssserver 19, kick 100 of a ball at rest."""
+the surfaces; not where the ball is sent. Figures: rcssserver 19, kick 100 of a ball at rest
+(``tests/data/rcssserver/kick.json``)."""
 
 from __future__ import annotations
 
+import json
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -14,23 +17,30 @@ from tests.soccer_sim.probe_rig import first_step_of_a_kick, kick_once
 from soccer_sim.config import PhysicsConfig
 
 PHYS = PhysicsConfig()
+KICKS = json.loads((Path(__file__).resolve().parents[1] / "data" / "rcssserver" / "kick.json").read_text())["kicks"]
 TOUCH = PHYS.player_radius + PHYS.ball_radius
 
 
-@pytest.mark.parametrize("offset, real", [
-    ((0.3851, 0.0), 2.6999),   # touching
-    ((0.735, 0.0), 2.3625),    # mid margin
-    ((1.084, 0.0), 2.0260),    # farthest kickable
+def server_kick_speed(name: str) -> float:
+    """The real server's first-cycle ball speed of the kick probe ``name`` (kick.json)."""
+    return float(np.hypot(*KICKS[name]["first_cycle"]))
+
+
+@pytest.mark.parametrize("offset, probe", [
+    ((0.3851, 0.0), "kick_near_at0"),   # touching: 2.6999
+    ((0.735, 0.0), "kick_mid_at0"),     # mid margin: 2.3625
+    ((1.084, 0.0), "kick_far_at0"),     # farthest kickable: 2.0260
 ])
-def test_kick_power_falls_with_the_balls_distance_as_measured(offset, real) -> None:
-    assert np.hypot(*first_step_of_a_kick(offset)) == pytest.approx(real, abs=1e-3)
+def test_kick_power_falls_with_the_balls_distance_as_measured(offset, probe) -> None:
+    assert np.hypot(*first_step_of_a_kick(offset)) == pytest.approx(server_kick_speed(probe), abs=1e-3)
 
 
-@pytest.mark.parametrize("direction", [(0.0, 1.0), (-1.0, 0.0), (math.sqrt(0.5), math.sqrt(0.5))])
-def test_the_direction_the_ball_is_sent_costs_nothing(direction) -> None:
-    """rcssserver: a ball in front kicked at 90° or 180° to the body leaves at 2.6999."""
+@pytest.mark.parametrize("direction, sent", [((0.0, 1.0), 90), ((-1.0, 0.0), 180),
+                                             ((math.sqrt(0.5), math.sqrt(0.5)), 45)])
+def test_the_direction_the_ball_is_sent_costs_nothing(direction, sent) -> None:
+    """rcssserver: a ball in front kicked at 45°, 90° or 180° to the body leaves at 2.6999."""
     step = first_step_of_a_kick((0.3851, 0.0), direction)
-    assert np.hypot(*step) == pytest.approx(2.6999, abs=1e-3)
+    assert np.hypot(*step) == pytest.approx(server_kick_speed(f"kick_near_at0_dir{sent}"), abs=1e-3)
     assert step / np.hypot(*step) == pytest.approx(direction)
 
 

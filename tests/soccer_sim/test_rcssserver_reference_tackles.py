@@ -21,12 +21,11 @@ faces the server's body direction (+x); the whole grid of places is compared thr
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 
 import numpy as np
 import pytest
-from tests.soccer_sim.test_rcssserver_reference import (FULL, HOME_PROBE, N_TEAM, PROBE, Pitch, Probe,
-                                                        binomial_share_agrees, config, trace)
+from tests.soccer_sim.probe_rig import (FULL, HOME_PROBE, N_TEAM, PROBE, Pitch, Probe, binomial_share_agrees,
+                                        config, trace)
 
 from soccer_sim import Match, PlayMode, TeamCommand
 from soccer_sim.body import DEFAULT_INERTIA_MOMENT
@@ -51,9 +50,9 @@ def success_probability(forward: float, lateral: float, foul: bool = False) -> f
 
 
 def noiseless() -> MatchConfig:
-    """No noise at all, the tackle's included (the clean and referee traces: kick_rand 0)."""
-    base = config()
-    return replace(base, tackles=replace(base.tackles, kick_rand=0.0))
+    """No noise at all, the tackle's included: it scales ``PhysicsConfig.kick_rand``, which is 0
+    here as in the clean and referee traces (``server::kick_rand=0``)."""
+    return config()
 
 
 class TackleProbe(Probe):

@@ -69,7 +69,8 @@ def test_a_ball_out_of_reach_is_never_won():
 
 
 def noiseless() -> MatchConfig:
-    return replace(MatchConfig(), tackles=TackleConfig(kick_rand=0.0))
+    """Without kick noise, which the tackle noise scales (``PhysicsConfig.kick_rand``)."""
+    return replace(MatchConfig(), physics=replace(MatchConfig().physics, kick_rand=0.0))
 
 
 @pytest.mark.parametrize("direction, speed", [
@@ -210,6 +211,8 @@ def test_tackle_config_is_checked():
         MatchConfig(tackles=TackleConfig(foul_detect_probability=1.5))
     with pytest.raises(ConfigError, match="TackleConfig.tackle_cycles"):
         TackleConfig(tackle_cycles=-1).validate()
+    with pytest.raises(TypeError, match="kick_rand"):  # one kick_rand, PhysicsConfig's
+        TackleConfig(kick_rand=0.0)
 
 
 def test_tackles_switched_off_are_ignored():

@@ -99,7 +99,8 @@ def contact(c: dict) -> dict:
         return out
     at_player = {}
     for sp in (2.7, 1.5, 0.8):
-        at_player[str(sp)] = [{"ball_x0": r(c[f"ball{sp}_at_player_{j}"][0]["ball"][0]),
+        at_player[str(sp)] = [{"player0": [r(v) for v in c[f"ball{sp}_at_player_{j}"][0]["p"]["A1"][:2]],
+                               "ball_x0": r(c[f"ball{sp}_at_player_{j}"][0]["ball"][0]),
                                "ball_vx0": r(c[f"ball{sp}_at_player_{j}"][0]["ball"][2]),
                                "end_ball": [r(v) for v in c[f"ball{sp}_at_player_{j}"][-1]["ball"]],
                                "end_player": [r(v) for v in c[f"ball{sp}_at_player_{j}"][-1]["p"]["A1"][:4]]}
@@ -108,8 +109,10 @@ def contact(c: dict) -> dict:
                                     "sprint: dash 100 at body 0 from x0 towards a still ball at (0, 0), 20 "
                                     "start phases; walk: dash 30; past: dash 100 along y = 0 with the ball "
                                     "at (0, off); x only (y stays 0) except for past; at_player: a ball launched "
-                                    "along +x at a player standing at (0, 0) (body 180), state 0 = ball_x0 / "
-                                    "ball_vx0, 20 cycles on: "
+                                    "along +x at a player standing at (0, 0) (body 180), state 0 = player0 [x, y] (the "
+                                    "trainer's move puts the player at (0, 0), but where the previous phase left the "
+                                    "ball may push it off before this ball is placed) / ball_x0 / ball_vx0, 20 "
+                                    "cycles on: "
                                     "end_ball = [x, y, vx, vy], end_player = [x, y, vx, vy]"),
             "sprint": [trace(c[f"sprint_into_ball_{j}"]) for j in range(20)],
             "walk": [trace(c[f"walk_into_ball_{j}"]) for j in range(5)],
@@ -118,22 +121,37 @@ def contact(c: dict) -> dict:
 
 
 def noise(kn: dict, noisy: dict) -> dict:
-    kick = {lab: [disp(kn[f"kick_{lab}_{j}"][0]["ball"], kn[f"kick_{lab}_{j}"][1]["ball"]) for j in range(150)]
-            for lab in ("near", "far")}
-    sprint = [[r(noisy[f"sprint12_{j}"][-1]["p"]["A1"][0] - noisy[f"sprint12_{j}"][0]["p"]["A1"][0]),
-               r(noisy[f"sprint12_{j}"][-1]["p"]["A1"][1] - noisy[f"sprint12_{j}"][0]["p"]["A1"][1])]
-              for j in range(60)]
-    at_player = {str(sp): [{"ball_x0": r(noisy[f"ball{sp}_at_player_{j}"][0]["ball"][0]),
+    def kick(raw: dict) -> dict:
+        n = sum(name.startswith("kick_near_") for name in raw)
+        return {lab: [disp(raw[f"kick_{lab}_{j}"][0]["ball"], raw[f"kick_{lab}_{j}"][1]["ball"]) for j in range(n)]
+                for lab in ("near", "far")}
+    sprint = [disp(noisy[f"sprint12_{j}"][0]["p"]["A1"], noisy[f"sprint12_{j}"][-1]["p"]["A1"])
+              for j in range(sum(name.startswith("sprint12_") for name in noisy))]
+    at_player = {str(sp): [{"player0": [r(v) for v in noisy[f"ball{sp}_at_player_{j}"][0]["p"]["A1"][:2]],
+                            "ball_x0": r(noisy[f"ball{sp}_at_player_{j}"][0]["ball"][0]),
                             "ball_vx0": r(noisy[f"ball{sp}_at_player_{j}"][0]["ball"][2]),
                             "end_ball": [r(v) for v in noisy[f"ball{sp}_at_player_{j}"][-1]["ball"]]}
-                           for j in range(20)] for sp in (2.7, 1.5, 0.8)}
+                           for j in range(40)] for sp in (2.7, 1.5, 0.8)}
+
+    def ends(prefix: str) -> list[list[float]]:
+        """[ball x, player x] at the end of each start phase."""
+        return [[r(noisy[f"{prefix}_{j}"][-1]["ball"][0]), r(noisy[f"{prefix}_{j}"][-1]["p"]["A1"][0])]
+                for j in range(20)]
+    past = [any(abs(s["ball"][0]) > 1e-6 or abs(s["ball"][1] - 0.3) > 1e-6 for s in noisy[f"sprint_past_ball_0.3_{j}"])
+            for j in range(20)]
     return {"meta": meta(["kicknoise", "noisy"],
                          "kick: (kick 100 0) of a ball at rest in front (near 0.3851 / far 1.084), only kick_rand "
-                         "on, ball displacement [dx, dy] in the kick's cycle, 150 trials each; sprint12: "
-                         "displacement [dx, dy] after 12 cycles of dash 100 from rest at body 0, default noise, "
-                         "60 trials; ball_at_player: as in contact.json with default noise, 20 trials each, "
-                         "20 cycles"),
-            "kick": kick, "sprint12": sprint, "ball_at_player": at_player}
+                         "on (kicknoise), ball displacement [dx, dy] in the kick's cycle, 200 trials each; "
+                         "kick_default_noise: the same with the default noise (kick_rand and ball_rand); "
+                         "sprint12: displacement [dx, dy] after 12 cycles of dash 100 from rest at body 0, default "
+                         "noise, 200 trials; ball_at_player: as in contact.json with default noise, every start "
+                         "phase twice (40 trials per speed), 20 cycles; contact: the contact probes with default "
+                         "noise, 20 start phases each: sprint (dash 100 from x = -5 - 0.05 j, 15 cycles) and walk "
+                         "(dash 30 from -3 - 0.015 j, 40 cycles) into a still ball at (0, 0), [ball x, player x] "
+                         "at the end; past_0.3_moved: dash 100 from -5 - 0.05 j for 25 cycles past a ball at "
+                         "(0, 0.3), whether the ball moved"),
+            "kick": kick(kn), "kick_default_noise": kick(noisy), "sprint12": sprint, "ball_at_player": at_player,
+            "contact": {"sprint": ends("sprint_into_ball"), "walk": ends("walk_into_ball"), "past_0.3_moved": past}}
 
 
 def tackles(c: dict, ref: dict) -> dict:

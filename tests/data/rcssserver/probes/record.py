@@ -5,7 +5,8 @@ MODE is one of (start the server first, options in README.md):
   clean      noise off: dashes, kicks, ball roll, two kicks, body-ball contact, tackles (push, freeze,
              success by place)
   kicknoise  only kick_rand on: kick speed and direction spread
-  noisy      default noise: player drift, ball launched at a standing player, kicks
+  noisy      default noise: player drift, kicks, ball launched at a standing player, sprinter and
+             walker into a still ball, a path 0.3 m from the ball
   referee    noise off, referee on in trainer mode: foul tackles, fouls called, cards
 Every phase: one setup cycle (the trainer places players and ball, `(recover)`, play_on), then
 `cycles` cycles in which a policy sends player commands; the trainer's see_global (exact
@@ -264,21 +265,35 @@ def clean(rig: Rig, log: dict) -> None:
                   lambda k, s, t=t: {t: "(tackle 0 off)"}, 1)
 
 
-def kicknoise(rig: Rig, log: dict) -> None:
-    for j in range(150):
+def kick_trials(rig: Rig, log: dict, trials: int) -> None:
+    """(kick 100 0) of a ball at rest touching (near) and farthest (far) in front, `trials` each."""
+    for j in range(trials):
         for label, r in (("near", NEAR), ("far", FAR)):
             phase(rig, log, f"kick_{label}_{j}", ("A1",), [move("A1", -30, 0), ball(-30 + r, 0)],
                   lambda k, s: {"A1": "(kick 100 0)"} if k == 0 else {}, 1)
 
 
+def kicknoise(rig: Rig, log: dict) -> None:
+    kick_trials(rig, log, 200)
+
+
 def noisy(rig: Rig, log: dict) -> None:
-    for j in range(60):
+    for j in range(200):
         phase(rig, log, f"sprint12_{j}", ("A1",), [move("A1", -30, 0), ball(0, 30)],
               lambda k, s: {"A1": "(dash 100 0)"}, 12)
+    kick_trials(rig, log, 200)   # kick_rand and ball_rand together
     for speed in (2.7, 1.5, 0.8):
-        for j in range(20):
+        for j in range(40):   # every start phase twice
             phase(rig, log, f"ball{speed}_at_player_{j}", ("A1",),
-                  [move("A1", 0, 0, 180), ball(-3.0 * speed - speed * j / 20.0, 0, speed, 0)], lambda k, s: {}, 20)
+                  [move("A1", 0, 0, 180), ball(-3.0 * speed - speed * (j % 20) / 20.0, 0, speed, 0)],
+                  lambda k, s: {}, 20)
+    for j in range(20):   # the contact probes with noise, 20 start phases each
+        phase(rig, log, f"sprint_into_ball_{j}", ("A1",), [move("A1", -5.0 - 0.05 * j, 0), ball(0, 0)],
+              lambda k, s: {"A1": "(dash 100 0)"}, 15)
+        phase(rig, log, f"walk_into_ball_{j}", ("A1",), [move("A1", -3.0 - 0.015 * j, 0), ball(0, 0)],
+              lambda k, s: {"A1": "(dash 30 0)"}, 40)
+        phase(rig, log, f"sprint_past_ball_0.3_{j}", ("A1",), [move("A1", -5.0 - 0.05 * j, 0), ball(0, 0.3)],
+              lambda k, s: {"A1": "(dash 100 0)"}, 25)
 
 
 def referee(rig: Rig, log: dict) -> None:
