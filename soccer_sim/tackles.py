@@ -42,7 +42,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from soccer_sim.body import DEFAULT_INERTIA_MOMENT, facing
+from soccer_sim.body import facing
 from soccer_sim.config import MatchConfig
 from soccer_sim.rules.fouls import park_absent
 from soccer_sim.state import NO_PLAYER, WorldState
@@ -84,6 +84,7 @@ class Tackles:
                  rng: np.random.Generator) -> None:
         self.config = config.tackles
         self._physics = config.physics
+        self._inertia = config.physics.inertia_moment
         self._kickable = config.physics.kickable_distance
         self._goalie_rows = tuple(goalie_rows)
         self._home = state.sizes[0]
@@ -177,7 +178,7 @@ class Tackles:
         cfg = self.config
         px, py = float(state.pos[row, 0]), float(state.pos[row, 1])
         dx, dy = float(state.ball[0]) - px, float(state.ball[1]) - py
-        fx, fy = facing(float(state.vel[row, 0]), float(state.vel[row, 1]), dx, dy, DEFAULT_INERTIA_MOMENT)
+        fx, fy = facing(float(state.vel[row, 0]), float(state.vel[row, 1]), dx, dy, self._inertia)
         x, y = dx * fx + dy * fy, dy * fx - dx * fy  # the ball in the body frame
         exponent = cfg.foul_exponent if intentional else cfg.tackle_exponent
         prob = failure_probability(x, y, cfg.tackle_dist, cfg.tackle_back_dist, cfg.tackle_width, exponent)

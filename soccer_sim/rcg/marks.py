@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from soccer_sim.body import DEFAULT_INERTIA_MOMENT, facing
+from soccer_sim.body import facing
 from soccer_sim.config import TackleConfig
 from soccer_sim.rcg.mapping import FOUL_CHARGED, TACKLE, TACKLE_FAULT, YELLOW_CARD
 from soccer_sim.state import WorldState
@@ -39,8 +39,9 @@ class Marks:
     """Per-player tackle, foul-charge and card flags of one match's log. Idle (one check per
     cycle) until the first tackle."""
 
-    def __init__(self, rows: int, config: TackleConfig) -> None:
+    def __init__(self, rows: int, config: TackleConfig, inertia_moment: float) -> None:
         self.config = config
+        self._inertia = inertia_moment
         self._tackle_left = np.zeros(rows, dtype=np.int64)   # shows the tackle flags still stay up
         self._tackle_bits = np.zeros(rows, dtype=np.int64)
         self._charged_left = np.zeros(rows, dtype=np.int64)
@@ -67,7 +68,7 @@ class Marks:
         px, py = self._pos[row]
         dx, dy = self._ball[0] - px, self._ball[1] - py
         fx, fy = facing(float(self._vel[row, 0]), float(self._vel[row, 1]), float(dx), float(dy),
-                        DEFAULT_INERTIA_MOMENT)
+                        self._inertia)
         x, y = dx * fx + dy * fy, dy * fx - dx * fy    # the ball in the tackler's body frame
         exponent = cfg.foul_exponent if detail & _FOUL else cfg.tackle_exponent
         prob = failure_probability(float(x), float(y), cfg.tackle_dist, cfg.tackle_back_dist, cfg.tackle_width,

@@ -48,7 +48,6 @@ from typing import IO, TYPE_CHECKING
 
 import numpy as np
 
-from soccer_sim.body import DEFAULT_INERTIA_MOMENT
 from soccer_sim.errors import SoccerSimError
 from soccer_sim.rcg.mapping import (
     BALL_COLLIDE, CATCH, DISCARD, FOCUS_POINT, GOALIE, KICK, MAX_PLAYER, RED_CARD, SIDES, STAND, VIEW,
@@ -90,14 +89,14 @@ def team_name(name: str) -> str:
 class RcgRecorder:
     """Write the match into the game log ``path`` (see the module docstring).
 
-    ``inertia_moment``: the players' ``inertia_moment`` for the body-direction model.
-    ``started``: the match's start (seconds since the epoch) for the result message; the
+    Bodies face as the body-direction model says (:mod:`soccer_sim.body`, with the match's
+    ``PhysicsConfig.inertia_moment``). ``started``: the match's start (seconds since the epoch) for the result message; the
     time :meth:`on_start` is called when None."""
 
-    def __init__(self, path: str | os.PathLike, *, inertia_moment: float = DEFAULT_INERTIA_MOMENT,
-                 started: float | None = None) -> None:
+    def __init__(self, path: str | os.PathLike, *, started: float | None = None) -> None:
         self.path = os.fspath(path)
-        self.inertia_moment = float(inertia_moment)
+        self.inertia_moment = 0.0
+        """The players' ``inertia_moment`` (set from the match's configuration at the start)."""
         self.started = started
         self._file: IO[str] | None = None
 
@@ -114,7 +113,8 @@ class RcgRecorder:
         self._labels = ["((%s %d) 0 " % self._slot(r, home) for r in range(rows)]
         self._half_width = match.config.field.half_width
         self._parked = np.array([parking_spot(*self._slot(r, home), self._half_width) for r in range(rows)])
-        self._marks = Marks(rows, match.config.tackles)
+        self.inertia_moment = match.config.physics.inertia_moment
+        self._marks = Marks(rows, match.config.tackles, self.inertia_moment)
         self._base = np.full(rows, STAND, dtype=np.int64)
         for team, goalie in enumerate(match.goalies):
             if goalie >= 0:

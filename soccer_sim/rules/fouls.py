@@ -31,7 +31,7 @@ import math
 
 import numpy as np
 
-from soccer_sim.body import DEFAULT_INERTIA_MOMENT, facing
+from soccer_sim.body import facing
 from soccer_sim.config import FieldConfig
 from soccer_sim.rules.judge import Judge
 from soccer_sim.rules.play_modes import PlayModes
@@ -70,6 +70,7 @@ class FoulJudge(Judge):
         config = modes.config
         self.config = config.tackles
         self._kickable = config.physics.kickable_distance
+        self._inertia = config.physics.inertia_moment
         self._sizes = 2.0 * config.physics.player_radius
 
     def tackle_taken(self, state: WorldState, row: int, foul: bool, dashed: np.ndarray) -> None:
@@ -115,7 +116,7 @@ class FoulJudge(Judge):
             if ahead < 0.0 or abs(side) > self._sizes:
                 continue
             fx, fy = facing(float(state.vel[p, 0]), float(state.vel[p, 1]), bx - px, by - py,
-                            DEFAULT_INERTIA_MOMENT)
+                            self._inertia)
             if fx * ca + fy * sa < 0.0:  # the opponent's body more than 90° off the tackle's line
                 continue
             if foul:
