@@ -11,10 +11,14 @@ an opponent who cannot get there before the ball crosses it cannot stop the shot
 Each aim gets a probability-like score, the product of
 
 * **unblocked**: a logistic function of the lead (cycles by which the ball beats the
-  fastest opponent to the line), 0.5 at a lead of ``lead_half`` cycles;
-* **on target**: the share of the aim's error window (kick noise makes the direction
-  wander by about ``kick_noise`` radians, so ``± kick_noise * distance`` across the goal) that
-  lies between the posts.
+  fastest opponent to the line), 0.5 at a lead of ``lead_half`` cycles, averaged over the
+  aim's error window (below; the factor is interpolated between neighbouring aims), so an
+  aim next to one the goalkeeper reaches counts as riskier than one further from it;
+* **on target**: the share of the aim's error window that lies between the posts. The kick
+  noise and the ball noise of the flight (:meth:`MotionModel.kick_spread`, rcssserver's
+  formulas: they grow with the ball's distance from the kicker, its speed and the length of
+  the flight) spread the ball across the goal line; the window is the uniform spread with
+  the same standard deviation, ``± sqrt(3)`` of it.
 
 The best aim is the one with the highest score; :func:`best_shot` returns None when the ball
 is beyond ``max_range`` of the goal centre or cannot reach the goal line, and
@@ -34,6 +38,10 @@ from agents.skills.kicking import kick_for_velocity
 from agents.skills.lanes import opponent_cycles
 from agents.skills.model import MotionModel, check_params, check_player
 from soccer_sim.team import TeamView
+
+
+_WINDOW = np.linspace(-1.0, 1.0, 9)
+"""Where across an aim's error window (in units of its half-width) the unblocked factor is sampled."""
 
 
 @dataclass(frozen=True)
@@ -113,8 +121,13 @@ def best_shot(ctx: SkillContext, view: TeamView, shooter: int, params: ShotParam
     theirs, _ = opponent_cycles(ctx, view, ball, velocities, cross_cycle, params.opponent_margin)
     lead = np.where(theirs >= UNREACHABLE, model.horizon, theirs - cross_cycle).astype(float)
     unblocked = 1.0 / (1.0 + np.exp(-(lead - params.lead_half) / params.lead_scale))
-    spread = np.maximum(model.kick_noise * dist, 1e-6)
+    gap = 0.0 if holder else float(np.hypot(*(ball - view.own_pos[shooter]))) - model.touch_distance
+    spread = np.maximum(np.sqrt(3.0) * model.kick_spread(
+        gap, float(np.hypot(*view.ball_vel)), np.minimum(np.hypot(kicks[:, 0], kicks[:, 1]), model.kick_speed_max),
+        np.hypot(velocities[:, 0], velocities[:, 1]), cross_cycle), 1e-6)
     post = model.goal_half_width - model.ball_radius
+    window = np.clip(aims[:, 1, None] + spread[:, None] * _WINDOW, -post, post)
+    unblocked = np.interp(window, aims[:, 1], unblocked).mean(axis=1)
     covered = np.clip(np.minimum(aims[:, 1] + spread, post) - np.maximum(aims[:, 1] - spread, -post), 0.0, None)
     on_target = np.minimum(covered / (2.0 * spread), 1.0)
     score = unblocked * on_target
