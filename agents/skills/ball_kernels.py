@@ -10,6 +10,7 @@ import numpy as np
 from numba import njit
 
 from agents.skills.interception_kernels import UNREACHABLE
+from soccer_sim.body import ball_angle_to_body
 
 LEAD_CAP = 10
 """Cycles of lead over the opponents beyond which a pass scores no better (the score's lead
@@ -24,25 +25,39 @@ def distance_effect(rnorm: float, distance_penalty: float, kickable_margin: floa
 
 
 @njit(cache=True, nogil=True)
+def body_effect(rx: float, ry: float, rnorm: float, pvx: float, pvy: float, distance_penalty: float,
+                angle_penalty: float, kickable_margin: float, touch: float,
+                inertia_moment: float) -> float:  # pragma: no cover - compiled
+    """Effectiveness of any kick by a player moving at (``pvx``, ``pvy``) on the ball lying at
+    (``rx``, ``ry``) from it (``rnorm`` away): the simulator's kick rule (rcssserver's), the
+    distance penalty and the angle penalty for where the ball lies relative to the body, whose
+    direction is :mod:`soccer_sim.body`'s (a player at rest or slow faces the ball)."""
+    angle = ball_angle_to_body(pvx, pvy, rx, ry, inertia_moment)
+    return distance_effect(rnorm, distance_penalty, kickable_margin, touch) - angle_penalty * angle / math.pi
+
+
+@njit(cache=True, nogil=True)
 def effect(rx: float, ry: float, rnorm: float, base: float, angle_penalty: float, kx: float, ky: float,
            holder: bool) -> float:  # pragma: no cover - compiled
-    """Effectiveness of a kick (``kx``, ``ky``): ``base`` (after the distance penalty); 1 for a
+    """Effectiveness of a kick (``kx``, ``ky``): ``base`` (:func:`body_effect`); 1 for a
     goalkeeper holding the ball. The simulator's kick rule (rcssserver's) penalises where the
-    ball lies relative to the kicker's body, not the kick's direction, and the planner takes the
-    kicker to face the ball (:mod:`soccer_sim.body`: so it does at rest and at low speeds), so
-    the angle penalty (``angle_penalty``, the ball's direction ``rx``, ``ry``) does not apply."""
+    ball lies relative to the kicker's body, not the kick's direction, so the kick's direction
+    (and ``rx``, ``ry``, ``angle_penalty``) does not change it."""
     if holder:
         return 1.0
     return base
 
 
 @njit(cache=True, nogil=True)
-def effect_kernel(player: np.ndarray, ball: np.ndarray, kicks: np.ndarray, out: np.ndarray, distance_penalty: float,
-                  angle_penalty: float, kickable_margin: float, touch: float) -> None:  # pragma: no cover - compiled
-    """The effectiveness of each of ``kicks`` by a player at ``player`` on the ball at ``ball``."""
+def effect_kernel(player: np.ndarray, player_vel: np.ndarray, ball: np.ndarray, kicks: np.ndarray, out: np.ndarray,
+                  distance_penalty: float, angle_penalty: float, kickable_margin: float, touch: float,
+                  inertia_moment: float) -> None:  # pragma: no cover - compiled
+    """The effectiveness of each of ``kicks`` by a player at ``player`` moving at
+    ``player_vel`` on the ball at ``ball``."""
     rx, ry = ball[0] - player[0], ball[1] - player[1]
     rnorm = math.sqrt(rx * rx + ry * ry)
-    base = distance_effect(rnorm, distance_penalty, kickable_margin, touch)
+    base = body_effect(rx, ry, rnorm, player_vel[0], player_vel[1], distance_penalty, angle_penalty,
+                       kickable_margin, touch, inertia_moment)
     for j in range(kicks.shape[0]):
         out[j] = effect(rx, ry, rnorm, base, angle_penalty, kicks[j, 0], kicks[j, 1], False)
 
@@ -90,16 +105,18 @@ def largest_speed(ux: float, uy: float, vx: float, vy: float, low: float, high: 
 
 
 @njit(cache=True, nogil=True)
-def kick_kernel(player: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, desired: np.ndarray, kick_out: np.ndarray,
-                result_out: np.ndarray, kick_max: float, ball_max: float, distance_penalty: float, angle_penalty: float,
-                kickable_margin: float, touch: float, holder: bool) -> None:  # pragma: no cover - compiled
+def kick_kernel(player: np.ndarray, player_vel: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray,
+                desired: np.ndarray, kick_out: np.ndarray, result_out: np.ndarray, kick_max: float, ball_max: float,
+                distance_penalty: float, angle_penalty: float, kickable_margin: float, touch: float,
+                inertia_moment: float, holder: bool) -> None:  # pragma: no cover - compiled
     """The kick request (``kick_out``) that gives the ball each ``desired`` velocity, or the
     nearest one kick reaches, and the velocity it gets (``result_out``); see
-    :mod:`agents.skills.kicking`. ``holder``: a goalkeeper holding the ball (full
-    effectiveness)."""
+    :mod:`agents.skills.kicking`. ``player_vel``: the kicker's velocity (its body direction,
+    :func:`body_effect`); ``holder``: a goalkeeper holding the ball (full effectiveness)."""
     rx, ry = ball[0] - player[0], ball[1] - player[1]
     rnorm = math.sqrt(rx * rx + ry * ry)
-    base = distance_effect(rnorm, distance_penalty, kickable_margin, touch)
+    base = body_effect(rx, ry, rnorm, player_vel[0], player_vel[1], distance_penalty, angle_penalty,
+                       kickable_margin, touch, inertia_moment)
     vx, vy = ball_vel[0], ball_vel[1]
     for j in range(desired.shape[0]):
         dx, dy = desired[j, 0], desired[j, 1]

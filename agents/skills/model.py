@@ -85,6 +85,9 @@ class MotionModel:
         self.kickable_margin = float(phys.kickable_margin)
         self.kick_distance_penalty = float(phys.kick_distance_penalty)
         self.kick_angle_penalty = float(phys.kick_angle_penalty)
+        self.inertia_moment = float(phys.inertia_moment)
+        """rcssserver ``inertia_moment``: how speed limits a turn, so where a kicker's body faces
+        (:mod:`soccer_sim.body`)."""
         self.kick_rand = float(phys.kick_rand)
         """rcssserver ``kick_rand``: scale of the kick noise (m/cycle at full power, see :meth:`kick_spread`)."""
         self.ball_rand = float(phys.ball_rand)
@@ -160,7 +163,8 @@ class MotionModel:
 
     # --- ball ------------------------------------------------------------------------------
     def kick_spread(self, gap: np.ndarray | float, ball_speed: np.ndarray | float, power: np.ndarray | float,
-                    launch_speed: np.ndarray | float, cycles: np.ndarray | int) -> np.ndarray:
+                    launch_speed: np.ndarray | float, cycles: np.ndarray | int,
+                    angle: np.ndarray | float = 0.0) -> np.ndarray:
         """Standard deviation (m) across its line of where a kicked ball is ``cycles`` cycles
         after the kick, from the kick noise and the ball noise of those cycles (the simulator's
         rcssserver formulas).
@@ -168,8 +172,10 @@ class MotionModel:
         ``gap``: distance between the ball's and the kicker's surfaces (m; 0 for a goalkeeper
         holding the ball); ``ball_speed``: the ball's speed before the kick; ``power``: length
         of the kick request (clipped to ``kick_speed_max``); ``launch_speed``: the ball's speed
-        after it (m/cycle). As in :mod:`agents.skills.kicking` the kicker faces the ball, so
-        ``pos_rate = 0.5 + 0.25 * gap / kickable_margin``; ``speed_rate = 0.5 + 0.5 *
+        after it (m/cycle); ``angle``: rcssserver's ``dir_diff`` (radians) between where the
+        kicker's body faces and the ball (0 for a kicker facing it; see
+        :mod:`agents.skills.kicking`). ``pos_rate = 0.5 + 0.25 * (angle / pi + gap /
+        kickable_margin)``; ``speed_rate = 0.5 + 0.5 *
         ball_speed / (ball_speed_max * ball_decay)``. A random vector of length uniform in
         ``[0, a]`` and uniform direction has the standard deviation ``a / sqrt(6)`` across;
         the kick's moves the ball by ``travel(k)`` times that, each cycle's ball noise by the
@@ -177,7 +183,8 @@ class MotionModel:
         distance_rate = np.clip(np.asarray(gap, float) / self.kickable_margin, 0.0, 1.0)
         speed_rate = 0.5 + 0.5 * np.asarray(ball_speed, float) / (self.ball_speed_max * self.ball_decay)
         power_rate = np.minimum(np.asarray(power, float) / self.kick_speed_max, 1.0)
-        kick_reach = self.kick_rand * power_rate * (0.5 + 0.25 * distance_rate + speed_rate)
+        pos_rate = 0.5 + 0.25 * (np.asarray(angle, float) / math.pi + distance_rate)
+        kick_reach = self.kick_rand * power_rate * (pos_rate + speed_rate)
         k = np.clip(np.asarray(cycles, dtype=np.int64), 0, self.horizon)
         ball_reach = self.ball_rand * np.asarray(launch_speed, float)
         return np.sqrt(((kick_reach * self.ball_travel[k]) ** 2 + (ball_reach * self.ball_noise_gain[k]) ** 2) / 6.0)

@@ -37,6 +37,7 @@ from agents.skills.interception import UNREACHABLE
 from agents.skills.kicking import kick_for_velocity
 from agents.skills.lanes import opponent_cycles
 from agents.skills.model import MotionModel, check_params, check_player
+from soccer_sim.body import ball_angle_to_body
 from soccer_sim.team import TeamView
 
 
@@ -110,7 +111,8 @@ def best_shot(ctx: SkillContext, view: TeamView, shooter: int, params: ShotParam
     delta = aims - ball
     dist = np.hypot(delta[:, 0], delta[:, 1])
     wanted = delta * (model.ball_speed_max / dist)[:, None]
-    kicks, velocities = kick_for_velocity(model, view.own_pos[shooter], ball, view.ball_vel, wanted, holder)
+    kicks, velocities = kick_for_velocity(model, view.own_pos[shooter], ball, view.ball_vel, wanted, holder,
+                                          view.own_vel[shooter])
     count = len(aims)
     cross_cycle, limit = np.empty(count, dtype=np.int64), np.empty(count, dtype=np.int64)
     usable = lane_arrivals(aims, wanted, velocities, ball, model.ball_decay, model.horizon, 0, cross_cycle, limit)
@@ -121,10 +123,13 @@ def best_shot(ctx: SkillContext, view: TeamView, shooter: int, params: ShotParam
     theirs, _ = opponent_cycles(ctx, view, ball, velocities, cross_cycle, params.opponent_margin)
     lead = np.where(theirs >= UNREACHABLE, model.horizon, theirs - cross_cycle).astype(float)
     unblocked = 1.0 / (1.0 + np.exp(-(lead - params.lead_half) / params.lead_scale))
-    gap = 0.0 if holder else float(np.hypot(*(ball - view.own_pos[shooter]))) - model.touch_distance
+    to_ball = ball - view.own_pos[shooter]
+    gap = 0.0 if holder else float(np.hypot(*to_ball)) - model.touch_distance
+    angle = 0.0 if holder else ball_angle_to_body(float(view.own_vel[shooter, 0]), float(view.own_vel[shooter, 1]),
+                                                  float(to_ball[0]), float(to_ball[1]), model.inertia_moment)
     spread = np.maximum(np.sqrt(3.0) * model.kick_spread(
         gap, float(np.hypot(*view.ball_vel)), np.minimum(np.hypot(kicks[:, 0], kicks[:, 1]), model.kick_speed_max),
-        np.hypot(velocities[:, 0], velocities[:, 1]), cross_cycle), 1e-6)
+        np.hypot(velocities[:, 0], velocities[:, 1]), cross_cycle, angle), 1e-6)
     post = model.goal_half_width - model.ball_radius
     window = np.clip(aims[:, 1, None] + spread[:, None] * _WINDOW, -post, post)
     unblocked = np.interp(window, aims[:, 1], unblocked).mean(axis=1)

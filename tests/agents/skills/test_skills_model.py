@@ -75,7 +75,9 @@ def test_kick_spread_matches_the_simulators_noise(gap, cycles) -> None:
     launch = float(np.mean(speeds))
     predicted = float(model.kick_spread(gap, 0.0, config.physics.kick_speed_max, launch, cycles))
     assert np.std(across) == pytest.approx(predicted, rel=0.12)
-    # Without noise there is no spread; a faster ball before the kick spreads more.
+    # Without noise there is no spread; a faster ball before the kick, or one lying off the
+    # direction the body faces, spreads more.
     quiet = MotionModel.even_sides(probe_config(noise=False))
     assert float(quiet.kick_spread(gap, 0.0, 2.7, launch, cycles)) == 0.0
     assert model.kick_spread(gap, 2.0, 2.7, launch, cycles) > predicted
+    assert model.kick_spread(gap, 0.0, 2.7, launch, cycles, np.pi / 2) > predicted
