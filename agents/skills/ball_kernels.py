@@ -1,6 +1,8 @@
 """The compiled kernels of the ball skills: kicks (:mod:`agents.skills.kicking`), ball lanes
 (:mod:`agents.skills.lanes`), the offside line and the pass search
-(:mod:`agents.skills.passing`). Constants come as named scalar arguments."""
+(:mod:`agents.skills.passing`), the spread of a kicked ball under the kick and ball noise
+(:meth:`agents.skills.model.MotionModel.kick_spread`) and the shot scores
+(:mod:`agents.skills.shooting`). Constants come as named scalar arguments."""
 
 from __future__ import annotations
 
@@ -301,6 +303,75 @@ def pass_scores(targets: np.ndarray, received_at: np.ndarray, receive: np.ndarra
         closeness = 1.0 - math.sqrt((px - half_length) ** 2 + py * py) / (2.0 * half_length)
         forward = min(max((px - ball[0]) / 20.0, -1.0), 1.5)
         value = weight_forward * forward + weight_goal * closeness + weight_space * space / 10.0 + weight_lead * lead
+        score[i] = value
+        if value > best_score:
+            best, best_score = i, value
+    return best
+
+
+@njit(cache=True, nogil=True)
+def kick_spread_at(distance_rate: float, angle_rate: float, speed_rate: float, power_rate: float,
+                   launch_speed: float, travel: float, gain: float, kick_rand: float,
+                   ball_rand: float) -> float:  # pragma: no cover - compiled
+    """Standard deviation (m) across its line of a kicked ball ``travel`` (the ball-travel
+    factor of the cycles since the kick) after the kick; see
+    :meth:`agents.skills.model.MotionModel.kick_spread` for the rates and ``gain``. A random
+    vector of length uniform in ``[0, a]`` and uniform direction has the standard deviation
+    ``a / sqrt(6)`` across any line."""
+    kick_reach = kick_rand * power_rate * (0.5 + 0.25 * (angle_rate + distance_rate) + speed_rate)
+    ball_reach = ball_rand * launch_speed
+    return math.sqrt(((kick_reach * travel) ** 2 + (ball_reach * gain) ** 2) / 6.0)
+
+
+@njit(cache=True, nogil=True)
+def kick_spreads(distance_rate: np.ndarray, angle_rate: np.ndarray, speed_rate: np.ndarray, power_rate: np.ndarray,
+                 launch_speed: np.ndarray, cycles: np.ndarray, travel: np.ndarray, gain: np.ndarray, kick_rand: float,
+                 ball_rand: float, out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """:func:`kick_spread_at` for each row of the (equal-length) arrays; ``cycles`` index the
+    ``travel`` and ``gain`` tables."""
+    for i in range(out.shape[0]):
+        k = cycles[i]
+        out[i] = kick_spread_at(distance_rate[i], angle_rate[i], speed_rate[i], power_rate[i], launch_speed[i],
+                                travel[k], gain[k], kick_rand, ball_rand)
+
+
+@njit(cache=True, nogil=True)
+def shot_scores(aim_y: np.ndarray, lead: np.ndarray, kicks: np.ndarray, velocities: np.ndarray, cross: np.ndarray,
+                distance_rate: float, angle_rate: float, speed_rate: float, kick_max: float, travel: np.ndarray,
+                gain: np.ndarray, kick_rand: float, ball_rand: float, post: float, lead_half: float,
+                lead_scale: float, window: np.ndarray, score: np.ndarray) -> int:  # pragma: no cover - compiled
+    """The shooting score of each aim (see :mod:`agents.skills.shooting`) into ``score``;
+    returns the best aim's row. ``aim_y``: the aims across the goal line, ascending; ``lead``:
+    cycles by which each aim's ball beats the opponents to the line; ``window``: where across
+    an error window (in units of its half-width) the unblocked factor is sampled. The error
+    window is ``± sqrt(3)`` standard deviations of :func:`kick_spread_at`; the unblocked factor
+    between two aims is interpolated linearly, and held beyond the outermost ones."""
+    count = aim_y.shape[0]
+    unblocked = np.empty(count)
+    for i in range(count):
+        unblocked[i] = 1.0 / (1.0 + math.exp(-(lead[i] - lead_half) / lead_scale))
+    best, best_score = 0, -1.0
+    for i in range(count):
+        power = min(math.sqrt(kicks[i, 0] ** 2 + kicks[i, 1] ** 2), kick_max) / kick_max
+        launch = math.sqrt(velocities[i, 0] ** 2 + velocities[i, 1] ** 2)
+        k = cross[i]
+        half = max(math.sqrt(3.0) * kick_spread_at(distance_rate, angle_rate, speed_rate, power, launch, travel[k],
+                                                   gain[k], kick_rand, ball_rand), 1e-6)
+        total = 0.0
+        for w in range(window.shape[0]):
+            y = min(max(aim_y[i] + half * window[w], -post), post)
+            j = 0
+            while j < count - 1 and aim_y[j + 1] < y:
+                j += 1
+            if count == 1 or y <= aim_y[0]:
+                total += unblocked[0]
+            elif y >= aim_y[count - 1]:
+                total += unblocked[count - 1]
+            else:
+                t = (y - aim_y[j]) / (aim_y[j + 1] - aim_y[j])
+                total += unblocked[j] + t * (unblocked[j + 1] - unblocked[j])
+        covered = max(min(aim_y[i] + half, post) - max(aim_y[i] - half, -post), 0.0)
+        value = total / window.shape[0] * min(covered / (2.0 * half), 1.0)
         score[i] = value
         if value > best_score:
             best, best_score = i, value

@@ -30,6 +30,7 @@ import math
 import numpy as np
 
 from agents.errors import AgentsError
+from agents.skills.ball_kernels import kick_spreads
 from soccer_sim.config import MatchConfig
 from soccer_sim.team import SideInfo, TeamView
 
@@ -162,6 +163,16 @@ class MotionModel:
         return table
 
     # --- ball ------------------------------------------------------------------------------
+    def noise_rates(self, gap: np.ndarray | float, angle: np.ndarray | float,
+                    ball_speed: np.ndarray | float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The rates of rcssserver's kick noise for a ball ``gap`` from the kicker's surface at
+        ``angle`` (``dir_diff``, radians) to its body, moving at ``ball_speed``: the distance
+        rate ``gap / kickable_margin`` (within [0, 1]), the angle rate ``angle / pi`` and the
+        speed rate ``0.5 + 0.5 * ball_speed / (ball_speed_max * ball_decay)`` (see
+        :meth:`kick_spread`)."""
+        return (np.clip(np.asarray(gap, float) / self.kickable_margin, 0.0, 1.0), np.asarray(angle, float) / math.pi,
+                0.5 + 0.5 * np.asarray(ball_speed, float) / (self.ball_speed_max * self.ball_decay))
+
     def kick_spread(self, gap: np.ndarray | float, ball_speed: np.ndarray | float, power: np.ndarray | float,
                     launch_speed: np.ndarray | float, cycles: np.ndarray | int,
                     angle: np.ndarray | float = 0.0) -> np.ndarray:
@@ -180,14 +191,14 @@ class MotionModel:
         ``[0, a]`` and uniform direction has the standard deviation ``a / sqrt(6)`` across;
         the kick's moves the ball by ``travel(k)`` times that, each cycle's ball noise by the
         travel of the cycles left (:attr:`ball_noise_gain`)."""
-        distance_rate = np.clip(np.asarray(gap, float) / self.kickable_margin, 0.0, 1.0)
-        speed_rate = 0.5 + 0.5 * np.asarray(ball_speed, float) / (self.ball_speed_max * self.ball_decay)
-        power_rate = np.minimum(np.asarray(power, float) / self.kick_speed_max, 1.0)
-        pos_rate = 0.5 + 0.25 * (np.asarray(angle, float) / math.pi + distance_rate)
-        kick_reach = self.kick_rand * power_rate * (pos_rate + speed_rate)
-        k = np.clip(np.asarray(cycles, dtype=np.int64), 0, self.horizon)
-        ball_reach = self.ball_rand * np.asarray(launch_speed, float)
-        return np.sqrt(((kick_reach * self.ball_travel[k]) ** 2 + (ball_reach * self.ball_noise_gain[k]) ** 2) / 6.0)
+        rows = np.broadcast_arrays(
+            *self.noise_rates(gap, angle, ball_speed), np.minimum(np.asarray(power, float) / self.kick_speed_max, 1.0),
+            np.asarray(launch_speed, float), np.clip(np.asarray(cycles, dtype=np.int64), 0, self.horizon))
+        shape = rows[0].shape
+        flat = [np.ascontiguousarray(row.ravel()) for row in rows]
+        out = np.empty(flat[0].shape[0])
+        kick_spreads(*flat, self.ball_travel, self.ball_noise_gain, self.kick_rand, self.ball_rand, out)
+        return out.reshape(shape)
 
     def ball_path(self, ball: np.ndarray, ball_vel: np.ndarray, cycles: int | None = None) -> np.ndarray:
         """(cycles + 1, 2) predicted ball positions after 0..cycles cycles (no obstacles, no

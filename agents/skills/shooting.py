@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from agents.skills.ball_kernels import lane_arrivals
+from agents.skills.ball_kernels import lane_arrivals, shot_scores
 from agents.skills.context import SkillContext
 from agents.skills.interception import UNREACHABLE
 from agents.skills.kicking import kick_for_velocity
@@ -109,8 +109,7 @@ def best_shot(ctx: SkillContext, view: TeamView, shooter: int, params: ShotParam
         return None
     aims = ctx.table(("shot aims", params.aims, params.post_margin), lambda: aim_points(model, params))
     delta = aims - ball
-    dist = np.hypot(delta[:, 0], delta[:, 1])
-    wanted = delta * (model.ball_speed_max / dist)[:, None]
+    wanted = delta * (model.ball_speed_max / np.hypot(delta[:, 0], delta[:, 1]))[:, None]
     kicks, velocities = kick_for_velocity(model, view.own_pos[shooter], ball, view.ball_vel, wanted, holder,
                                           view.own_vel[shooter])
     count = len(aims)
@@ -118,25 +117,23 @@ def best_shot(ctx: SkillContext, view: TeamView, shooter: int, params: ShotParam
     usable = lane_arrivals(aims, wanted, velocities, ball, model.ball_decay, model.horizon, 0, cross_cycle, limit)
     if usable.size == 0:
         return None
-    aims, dist, kicks, velocities, cross_cycle = aims[usable], dist[usable], kicks[usable], velocities[usable], \
-        cross_cycle[usable]
+    aims, kicks, velocities, cross_cycle = aims[usable], kicks[usable], velocities[usable], cross_cycle[usable]
     theirs, _ = opponent_cycles(ctx, view, ball, velocities, cross_cycle, params.opponent_margin)
     lead = np.where(theirs >= UNREACHABLE, model.horizon, theirs - cross_cycle).astype(float)
-    unblocked = 1.0 / (1.0 + np.exp(-(lead - params.lead_half) / params.lead_scale))
     to_ball = ball - view.own_pos[shooter]
-    gap = 0.0 if holder else float(np.hypot(*to_ball)) - model.touch_distance
-    angle = 0.0 if holder else ball_angle_to_body(float(view.own_vel[shooter, 0]), float(view.own_vel[shooter, 1]),
-                                                  float(to_ball[0]), float(to_ball[1]), model.inertia_moment)
-    spread = np.maximum(np.sqrt(3.0) * model.kick_spread(
-        gap, float(np.hypot(*view.ball_vel)), np.minimum(np.hypot(kicks[:, 0], kicks[:, 1]), model.kick_speed_max),
-        np.hypot(velocities[:, 0], velocities[:, 1]), cross_cycle, angle), 1e-6)
-    post = model.goal_half_width - model.ball_radius
-    window = np.clip(aims[:, 1, None] + spread[:, None] * _WINDOW, -post, post)
-    unblocked = np.interp(window, aims[:, 1], unblocked).mean(axis=1)
-    covered = np.clip(np.minimum(aims[:, 1] + spread, post) - np.maximum(aims[:, 1] - spread, -post), 0.0, None)
-    on_target = np.minimum(covered / (2.0 * spread), 1.0)
-    score = unblocked * on_target
-    best = int(np.argmax(score))
+    if holder:
+        gap = angle = 0.0
+    else:
+        gap = float(np.hypot(to_ball[0], to_ball[1])) - model.touch_distance
+        angle = ball_angle_to_body(float(view.own_vel[shooter, 0]), float(view.own_vel[shooter, 1]),
+                                   float(to_ball[0]), float(to_ball[1]), model.inertia_moment)
+    distance_rate, angle_rate, speed_rate = model.noise_rates(gap, angle, float(np.hypot(*view.ball_vel)))
+    score = np.empty(len(aims))
+    best = shot_scores(np.ascontiguousarray(aims[:, 1]), lead, kicks, velocities, cross_cycle, float(distance_rate),
+                       float(angle_rate), float(speed_rate), model.kick_speed_max, model.ball_travel,
+                       model.ball_noise_gain, model.kick_rand, model.ball_rand,
+                       model.goal_half_width - model.ball_radius, params.lead_half, params.lead_scale, _WINDOW,
+                       score)
     return ShotPlan(aim=aims[best].copy(), kick=kicks[best].copy(), ball_vel=velocities[best].copy(),
                     cross_cycle=int(cross_cycle[best]), opponent_cycle=int(theirs[best]),
                     score=float(score[best]), take=bool(score[best] >= params.threshold))
