@@ -1,6 +1,8 @@
 """The compiled kernels of the ball skills: kicks (:mod:`agents.skills.kicking`), ball lanes
 (:mod:`agents.skills.lanes`), the offside line and the pass search
-(:mod:`agents.skills.passing`). Constants come as named scalar arguments."""
+(:mod:`agents.skills.passing`), the spread of a kicked ball under the kick and ball noise
+(:meth:`agents.skills.model.MotionModel.kick_spread`) and the shot scores
+(:mod:`agents.skills.shooting`). Constants come as named scalar arguments."""
 
 from __future__ import annotations
 
@@ -10,6 +12,7 @@ import numpy as np
 from numba import njit
 
 from agents.skills.interception_kernels import UNREACHABLE
+from soccer_sim.body import ball_angle_to_body
 
 LEAD_CAP = 10
 """Cycles of lead over the opponents beyond which a pass scores no better (the score's lead
@@ -24,25 +27,39 @@ def distance_effect(rnorm: float, distance_penalty: float, kickable_margin: floa
 
 
 @njit(cache=True, nogil=True)
+def body_effect(rx: float, ry: float, rnorm: float, pvx: float, pvy: float, distance_penalty: float,
+                angle_penalty: float, kickable_margin: float, touch: float,
+                inertia_moment: float) -> float:  # pragma: no cover - compiled
+    """Effectiveness of any kick by a player moving at (``pvx``, ``pvy``) on the ball lying at
+    (``rx``, ``ry``) from it (``rnorm`` away): the simulator's kick rule (rcssserver's), the
+    distance penalty and the angle penalty for where the ball lies relative to the body, whose
+    direction is :mod:`soccer_sim.body`'s (a player at rest or slow faces the ball)."""
+    angle = ball_angle_to_body(pvx, pvy, rx, ry, inertia_moment)
+    return distance_effect(rnorm, distance_penalty, kickable_margin, touch) - angle_penalty * angle / math.pi
+
+
+@njit(cache=True, nogil=True)
 def effect(rx: float, ry: float, rnorm: float, base: float, angle_penalty: float, kx: float, ky: float,
            holder: bool) -> float:  # pragma: no cover - compiled
-    """Effectiveness of a kick (``kx``, ``ky``): ``base`` (after the distance penalty); 1 for a
+    """Effectiveness of a kick (``kx``, ``ky``): ``base`` (:func:`body_effect`); 1 for a
     goalkeeper holding the ball. The simulator's kick rule (rcssserver's) penalises where the
-    ball lies relative to the kicker's body, not the kick's direction, and the planner takes the
-    kicker to face the ball (:mod:`soccer_sim.body`: so it does at rest and at low speeds), so
-    the angle penalty (``angle_penalty``, the ball's direction ``rx``, ``ry``) does not apply."""
+    ball lies relative to the kicker's body, not the kick's direction, so the kick's direction
+    (and ``rx``, ``ry``, ``angle_penalty``) does not change it."""
     if holder:
         return 1.0
     return base
 
 
 @njit(cache=True, nogil=True)
-def effect_kernel(player: np.ndarray, ball: np.ndarray, kicks: np.ndarray, out: np.ndarray, distance_penalty: float,
-                  angle_penalty: float, kickable_margin: float, touch: float) -> None:  # pragma: no cover - compiled
-    """The effectiveness of each of ``kicks`` by a player at ``player`` on the ball at ``ball``."""
+def effect_kernel(player: np.ndarray, player_vel: np.ndarray, ball: np.ndarray, kicks: np.ndarray, out: np.ndarray,
+                  distance_penalty: float, angle_penalty: float, kickable_margin: float, touch: float,
+                  inertia_moment: float) -> None:  # pragma: no cover - compiled
+    """The effectiveness of each of ``kicks`` by a player at ``player`` moving at
+    ``player_vel`` on the ball at ``ball``."""
     rx, ry = ball[0] - player[0], ball[1] - player[1]
     rnorm = math.sqrt(rx * rx + ry * ry)
-    base = distance_effect(rnorm, distance_penalty, kickable_margin, touch)
+    base = body_effect(rx, ry, rnorm, player_vel[0], player_vel[1], distance_penalty, angle_penalty,
+                       kickable_margin, touch, inertia_moment)
     for j in range(kicks.shape[0]):
         out[j] = effect(rx, ry, rnorm, base, angle_penalty, kicks[j, 0], kicks[j, 1], False)
 
@@ -90,16 +107,18 @@ def largest_speed(ux: float, uy: float, vx: float, vy: float, low: float, high: 
 
 
 @njit(cache=True, nogil=True)
-def kick_kernel(player: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, desired: np.ndarray, kick_out: np.ndarray,
-                result_out: np.ndarray, kick_max: float, ball_max: float, distance_penalty: float, angle_penalty: float,
-                kickable_margin: float, touch: float, holder: bool) -> None:  # pragma: no cover - compiled
+def kick_kernel(player: np.ndarray, player_vel: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray,
+                desired: np.ndarray, kick_out: np.ndarray, result_out: np.ndarray, kick_max: float, ball_max: float,
+                distance_penalty: float, angle_penalty: float, kickable_margin: float, touch: float,
+                inertia_moment: float, holder: bool) -> None:  # pragma: no cover - compiled
     """The kick request (``kick_out``) that gives the ball each ``desired`` velocity, or the
     nearest one kick reaches, and the velocity it gets (``result_out``); see
-    :mod:`agents.skills.kicking`. ``holder``: a goalkeeper holding the ball (full
-    effectiveness)."""
+    :mod:`agents.skills.kicking`. ``player_vel``: the kicker's velocity (its body direction,
+    :func:`body_effect`); ``holder``: a goalkeeper holding the ball (full effectiveness)."""
     rx, ry = ball[0] - player[0], ball[1] - player[1]
     rnorm = math.sqrt(rx * rx + ry * ry)
-    base = distance_effect(rnorm, distance_penalty, kickable_margin, touch)
+    base = body_effect(rx, ry, rnorm, player_vel[0], player_vel[1], distance_penalty, angle_penalty,
+                       kickable_margin, touch, inertia_moment)
     vx, vy = ball_vel[0], ball_vel[1]
     for j in range(desired.shape[0]):
         dx, dy = desired[j, 0], desired[j, 1]
@@ -284,6 +303,75 @@ def pass_scores(targets: np.ndarray, received_at: np.ndarray, receive: np.ndarra
         closeness = 1.0 - math.sqrt((px - half_length) ** 2 + py * py) / (2.0 * half_length)
         forward = min(max((px - ball[0]) / 20.0, -1.0), 1.5)
         value = weight_forward * forward + weight_goal * closeness + weight_space * space / 10.0 + weight_lead * lead
+        score[i] = value
+        if value > best_score:
+            best, best_score = i, value
+    return best
+
+
+@njit(cache=True, nogil=True)
+def kick_spread_at(distance_rate: float, angle_rate: float, speed_rate: float, power_rate: float,
+                   launch_speed: float, travel: float, gain: float, kick_rand: float,
+                   ball_rand: float) -> float:  # pragma: no cover - compiled
+    """Standard deviation (m) across its line of a kicked ball ``travel`` (the ball-travel
+    factor of the cycles since the kick) after the kick; see
+    :meth:`agents.skills.model.MotionModel.kick_spread` for the rates and ``gain``. A random
+    vector of length uniform in ``[0, a]`` and uniform direction has the standard deviation
+    ``a / sqrt(6)`` across any line."""
+    kick_reach = kick_rand * power_rate * (0.5 + 0.25 * (angle_rate + distance_rate) + speed_rate)
+    ball_reach = ball_rand * launch_speed
+    return math.sqrt(((kick_reach * travel) ** 2 + (ball_reach * gain) ** 2) / 6.0)
+
+
+@njit(cache=True, nogil=True)
+def kick_spreads(distance_rate: np.ndarray, angle_rate: np.ndarray, speed_rate: np.ndarray, power_rate: np.ndarray,
+                 launch_speed: np.ndarray, cycles: np.ndarray, travel: np.ndarray, gain: np.ndarray, kick_rand: float,
+                 ball_rand: float, out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """:func:`kick_spread_at` for each row of the (equal-length) arrays; ``cycles`` index the
+    ``travel`` and ``gain`` tables."""
+    for i in range(out.shape[0]):
+        k = cycles[i]
+        out[i] = kick_spread_at(distance_rate[i], angle_rate[i], speed_rate[i], power_rate[i], launch_speed[i],
+                                travel[k], gain[k], kick_rand, ball_rand)
+
+
+@njit(cache=True, nogil=True)
+def shot_scores(aim_y: np.ndarray, lead: np.ndarray, kicks: np.ndarray, velocities: np.ndarray, cross: np.ndarray,
+                distance_rate: float, angle_rate: float, speed_rate: float, kick_max: float, travel: np.ndarray,
+                gain: np.ndarray, kick_rand: float, ball_rand: float, post: float, lead_half: float,
+                lead_scale: float, window: np.ndarray, score: np.ndarray) -> int:  # pragma: no cover - compiled
+    """The shooting score of each aim (see :mod:`agents.skills.shooting`) into ``score``;
+    returns the best aim's row. ``aim_y``: the aims across the goal line, ascending; ``lead``:
+    cycles by which each aim's ball beats the opponents to the line; ``window``: where across
+    an error window (in units of its half-width) the unblocked factor is sampled. The error
+    window is ``± sqrt(3)`` standard deviations of :func:`kick_spread_at`; the unblocked factor
+    between two aims is interpolated linearly, and held beyond the outermost ones."""
+    count = aim_y.shape[0]
+    unblocked = np.empty(count)
+    for i in range(count):
+        unblocked[i] = 1.0 / (1.0 + math.exp(-(lead[i] - lead_half) / lead_scale))
+    best, best_score = 0, -1.0
+    for i in range(count):
+        power = min(math.sqrt(kicks[i, 0] ** 2 + kicks[i, 1] ** 2), kick_max) / kick_max
+        launch = math.sqrt(velocities[i, 0] ** 2 + velocities[i, 1] ** 2)
+        k = cross[i]
+        half = max(math.sqrt(3.0) * kick_spread_at(distance_rate, angle_rate, speed_rate, power, launch, travel[k],
+                                                   gain[k], kick_rand, ball_rand), 1e-6)
+        total = 0.0
+        for w in range(window.shape[0]):
+            y = min(max(aim_y[i] + half * window[w], -post), post)
+            j = 0
+            while j < count - 1 and aim_y[j + 1] < y:
+                j += 1
+            if count == 1 or y <= aim_y[0]:
+                total += unblocked[0]
+            elif y >= aim_y[count - 1]:
+                total += unblocked[count - 1]
+            else:
+                t = (y - aim_y[j]) / (aim_y[j + 1] - aim_y[j])
+                total += unblocked[j] + t * (unblocked[j + 1] - unblocked[j])
+        covered = max(min(aim_y[i] + half, post) - max(aim_y[i] - half, -post), 0.0)
+        value = total / window.shape[0] * min(covered / (2.0 * half), 1.0)
         score[i] = value
         if value > best_score:
             best, best_score = i, value

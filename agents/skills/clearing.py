@@ -102,7 +102,8 @@ class _Lanes:
         self.dirs = np.column_stack([np.cos(angles), np.sin(angles)])
         self.ball = ball = np.asarray(view.ball, float)
         self.kicks, self.velocities = kick_for_velocity(model, view.own_pos[kicker], ball, view.ball_vel,
-                                                        self.dirs * model.ball_speed_max, holder)
+                                                        self.dirs * model.ball_speed_max, holder,
+                                                        view.own_vel[kicker])
         self.theirs, _ = opponent_cycles(ctx, view, ball, self.velocities)
         ours, _ = teammate_cycles(ctx, view, ball, self.velocities)
         ours = ours.copy()

@@ -141,6 +141,7 @@ def dribble(ctx: SkillContext, view: TeamView, player: int, params: DribbleParam
     if (bx - px) ** 2 + (by - py) ** 2 <= model.kickable_distance ** 2:
         lead = params.lead if params.lead is not None else 0.5 * (model.touch_distance + model.kickable_distance)
         wanted = np.array([px + vx + ax + ux * lead - bx, py + vy + ay + uy * lead - by])
-        kick, _ = kick_for_velocity(model, view.own_pos[player], view.ball, view.ball_vel, wanted)
+        kick, _ = kick_for_velocity(model, view.own_pos[player], view.ball, view.ball_vel, wanted,
+                                    player_vel=view.own_vel[player])
     return DribblePlan(direction=np.array([ux, uy]), kick=kick, dash=np.array([ax, ay]),
                        clearance=float(clearance[best]), score=float(score[best]))

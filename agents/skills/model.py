@@ -13,6 +13,11 @@ simulator's parameters. The rules mirrored here are those of :mod:`soccer_sim.ki
   direction of motion (side/back dash rates) is left out of the predictions.
 * **Ball**, per cycle: ``pos += vel``, ``vel *= ball_decay``; after ``k`` cycles it has
   travelled ``vel * (1 - decay^k) / (1 - decay)``.
+* **Noise** (rcssserver's, as the simulator draws it): a kick adds a random vector of length
+  uniform in ``[0, kick_rand * power / kick_speed_max * (pos_rate + speed_rate)]``, and every
+  cycle the ball's velocity gets one of length uniform in ``[0, ball_rand * speed]``, both in
+  a uniform direction. :meth:`MotionModel.kick_spread` turns them into the spread of where a
+  kicked ball is after ``k`` cycles.
 
 Frames: the team-relative frame of :class:`soccer_sim.TeamView` (we attack +x, our goal line
 at ``x = -half_length``). Units: metres, cycles, m/cycle, m/cycle².
@@ -25,6 +30,7 @@ import math
 import numpy as np
 
 from agents.errors import AgentsError
+from agents.skills.ball_kernels import kick_spreads
 from soccer_sim.config import MatchConfig
 from soccer_sim.team import SideInfo, TeamView
 
@@ -80,7 +86,16 @@ class MotionModel:
         self.kickable_margin = float(phys.kickable_margin)
         self.kick_distance_penalty = float(phys.kick_distance_penalty)
         self.kick_angle_penalty = float(phys.kick_angle_penalty)
+        self.inertia_moment = float(phys.inertia_moment)
+        """rcssserver ``inertia_moment``: how speed limits a turn, so where a kicker's body faces
+        (:mod:`soccer_sim.body`)."""
+        self.kick_rand = float(phys.kick_rand)
+        """rcssserver ``kick_rand``: scale of the kick noise (m/cycle at full power, see :meth:`kick_spread`)."""
+        self.ball_rand = float(phys.ball_rand)
+        """rcssserver ``ball_rand``: the ball's movement noise per cycle, as a fraction of its speed."""
         self.kick_noise = float(phys.kick_noise)
+        """The configuration's one-figure kick noise (radians; ``PhysicsConfig.kick_noise``), for
+        callers that want no more; the skills use :meth:`kick_spread`."""
         self.half_length = float(field.half_length)
         self.half_width = float(field.half_width)
         self.goal_half_width = float(field.goal_width / 2.0)
@@ -102,6 +117,10 @@ class MotionModel:
         """(horizon + 1,) factor of the ball's velocity travelled in k cycles: (1 - d^k) / (1 - d)."""
         self.player_coast = _geometric_sums(self.player_decay, k)
         """(horizon + 1,) the same factor for a player's velocity (coasting without dashes)."""
+        self.ball_noise_gain = self._ball_noise_table(self.horizon)
+        """(horizon + 1,) ``sqrt(sum_j (d^j travel(k - j))^2)`` over ``j < k``: how the ball noise
+        of the ``k`` cycles after a kick adds up in the ball's position (per unit of noise at the
+        launch speed)."""
         stam = config.stamina
         self.stamina_max = float(stam.maximum)
         self.stamina_low = float(max(stam.recover_dec_thr, stam.effort_dec_thr) * stam.maximum)
@@ -136,7 +155,51 @@ class MotionModel:
             table[k] = dist
         return table
 
+    def _ball_noise_table(self, horizon: int) -> np.ndarray:
+        table = np.zeros(horizon + 1)
+        for k in range(1, horizon + 1):
+            j = np.arange(k)
+            table[k] = math.sqrt(float(np.sum((self.ball_decay ** j * self.ball_travel[k - j]) ** 2)))
+        return table
+
     # --- ball ------------------------------------------------------------------------------
+    def noise_rates(self, gap: np.ndarray | float, angle: np.ndarray | float,
+                    ball_speed: np.ndarray | float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The rates of rcssserver's kick noise for a ball ``gap`` from the kicker's surface at
+        ``angle`` (``dir_diff``, radians) to its body, moving at ``ball_speed``: the distance
+        rate ``gap / kickable_margin`` (within [0, 1]), the angle rate ``angle / pi`` and the
+        speed rate ``0.5 + 0.5 * ball_speed / (ball_speed_max * ball_decay)`` (see
+        :meth:`kick_spread`)."""
+        return (np.clip(np.asarray(gap, float) / self.kickable_margin, 0.0, 1.0), np.asarray(angle, float) / math.pi,
+                0.5 + 0.5 * np.asarray(ball_speed, float) / (self.ball_speed_max * self.ball_decay))
+
+    def kick_spread(self, gap: np.ndarray | float, ball_speed: np.ndarray | float, power: np.ndarray | float,
+                    launch_speed: np.ndarray | float, cycles: np.ndarray | int,
+                    angle: np.ndarray | float = 0.0) -> np.ndarray:
+        """Standard deviation (m) across its line of where a kicked ball is ``cycles`` cycles
+        after the kick, from the kick noise and the ball noise of those cycles (the simulator's
+        rcssserver formulas).
+
+        ``gap``: distance between the ball's and the kicker's surfaces (m; 0 for a goalkeeper
+        holding the ball); ``ball_speed``: the ball's speed before the kick; ``power``: length
+        of the kick request (clipped to ``kick_speed_max``); ``launch_speed``: the ball's speed
+        after it (m/cycle); ``angle``: rcssserver's ``dir_diff`` (radians) between where the
+        kicker's body faces and the ball (0 for a kicker facing it; see
+        :mod:`agents.skills.kicking`). ``pos_rate = 0.5 + 0.25 * (angle / pi + gap /
+        kickable_margin)``; ``speed_rate = 0.5 + 0.5 *
+        ball_speed / (ball_speed_max * ball_decay)``. A random vector of length uniform in
+        ``[0, a]`` and uniform direction has the standard deviation ``a / sqrt(6)`` across;
+        the kick's moves the ball by ``travel(k)`` times that, each cycle's ball noise by the
+        travel of the cycles left (:attr:`ball_noise_gain`)."""
+        rows = np.broadcast_arrays(
+            *self.noise_rates(gap, angle, ball_speed), np.minimum(np.asarray(power, float) / self.kick_speed_max, 1.0),
+            np.asarray(launch_speed, float), np.clip(np.asarray(cycles, dtype=np.int64), 0, self.horizon))
+        shape = rows[0].shape
+        flat = [np.ascontiguousarray(row.ravel()) for row in rows]
+        out = np.empty(flat[0].shape[0])
+        kick_spreads(*flat, self.ball_travel, self.ball_noise_gain, self.kick_rand, self.ball_rand, out)
+        return out.reshape(shape)
+
     def ball_path(self, ball: np.ndarray, ball_vel: np.ndarray, cycles: int | None = None) -> np.ndarray:
         """(cycles + 1, 2) predicted ball positions after 0..cycles cycles (no obstacles, no
         noise, the field's lines ignored)."""

@@ -155,7 +155,8 @@ def best_pass(ctx: SkillContext, view: TeamView, passer: int, params: PassParams
     if count == 0:
         return None
     targets, owners, wanted = targets[:count], owners[:count], wanted[:count]
-    kicks, velocities = kick_for_velocity(model, view.own_pos[passer], ball, view.ball_vel, wanted, holder)
+    kicks, velocities = kick_for_velocity(model, view.own_pos[passer], ball, view.ball_vel, wanted, holder,
+                                          view.own_vel[passer])
     arrival = np.empty(count, dtype=np.int64)
     limit = np.empty(count, dtype=np.int64)
     usable = lane_arrivals(targets, wanted, velocities, ball, model.ball_decay, model.horizon, params.extra_cycles,

@@ -11,10 +11,14 @@ an opponent who cannot get there before the ball crosses it cannot stop the shot
 Each aim gets a probability-like score, the product of
 
 * **unblocked**: a logistic function of the lead (cycles by which the ball beats the
-  fastest opponent to the line), 0.5 at a lead of ``lead_half`` cycles;
-* **on target**: the share of the aim's error window (kick noise makes the direction
-  wander by about ``kick_noise`` radians, so ``± kick_noise * distance`` across the goal) that
-  lies between the posts.
+  fastest opponent to the line), 0.5 at a lead of ``lead_half`` cycles, averaged over the
+  aim's error window (below; the factor is interpolated between neighbouring aims), so an
+  aim next to one the goalkeeper reaches counts as riskier than one further from it;
+* **on target**: the share of the aim's error window that lies between the posts. The kick
+  noise and the ball noise of the flight (:meth:`MotionModel.kick_spread`, rcssserver's
+  formulas: they grow with the ball's distance from the kicker, its speed and the length of
+  the flight) spread the ball across the goal line; the window is the uniform spread with
+  the same standard deviation, ``± sqrt(3)`` of it.
 
 The best aim is the one with the highest score; :func:`best_shot` returns None when the ball
 is beyond ``max_range`` of the goal centre or cannot reach the goal line, and
@@ -27,13 +31,18 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from agents.skills.ball_kernels import lane_arrivals
+from agents.skills.ball_kernels import lane_arrivals, shot_scores
 from agents.skills.context import SkillContext
 from agents.skills.interception import UNREACHABLE
 from agents.skills.kicking import kick_for_velocity
 from agents.skills.lanes import opponent_cycles
 from agents.skills.model import MotionModel, check_params, check_player
+from soccer_sim.body import ball_angle_to_body
 from soccer_sim.team import TeamView
+
+
+_WINDOW = np.linspace(-1.0, 1.0, 9)
+"""Where across an aim's error window (in units of its half-width) the unblocked factor is sampled."""
 
 
 @dataclass(frozen=True)
@@ -100,25 +109,31 @@ def best_shot(ctx: SkillContext, view: TeamView, shooter: int, params: ShotParam
         return None
     aims = ctx.table(("shot aims", params.aims, params.post_margin), lambda: aim_points(model, params))
     delta = aims - ball
-    dist = np.hypot(delta[:, 0], delta[:, 1])
-    wanted = delta * (model.ball_speed_max / dist)[:, None]
-    kicks, velocities = kick_for_velocity(model, view.own_pos[shooter], ball, view.ball_vel, wanted, holder)
+    wanted = delta * (model.ball_speed_max / np.hypot(delta[:, 0], delta[:, 1]))[:, None]
+    kicks, velocities = kick_for_velocity(model, view.own_pos[shooter], ball, view.ball_vel, wanted, holder,
+                                          view.own_vel[shooter])
     count = len(aims)
     cross_cycle, limit = np.empty(count, dtype=np.int64), np.empty(count, dtype=np.int64)
     usable = lane_arrivals(aims, wanted, velocities, ball, model.ball_decay, model.horizon, 0, cross_cycle, limit)
     if usable.size == 0:
         return None
-    aims, dist, kicks, velocities, cross_cycle = aims[usable], dist[usable], kicks[usable], velocities[usable], \
-        cross_cycle[usable]
+    aims, kicks, velocities, cross_cycle = aims[usable], kicks[usable], velocities[usable], cross_cycle[usable]
     theirs, _ = opponent_cycles(ctx, view, ball, velocities, cross_cycle, params.opponent_margin)
     lead = np.where(theirs >= UNREACHABLE, model.horizon, theirs - cross_cycle).astype(float)
-    unblocked = 1.0 / (1.0 + np.exp(-(lead - params.lead_half) / params.lead_scale))
-    spread = np.maximum(model.kick_noise * dist, 1e-6)
-    post = model.goal_half_width - model.ball_radius
-    covered = np.clip(np.minimum(aims[:, 1] + spread, post) - np.maximum(aims[:, 1] - spread, -post), 0.0, None)
-    on_target = np.minimum(covered / (2.0 * spread), 1.0)
-    score = unblocked * on_target
-    best = int(np.argmax(score))
+    to_ball = ball - view.own_pos[shooter]
+    if holder:
+        gap = angle = 0.0
+    else:
+        gap = float(np.hypot(to_ball[0], to_ball[1])) - model.touch_distance
+        angle = ball_angle_to_body(float(view.own_vel[shooter, 0]), float(view.own_vel[shooter, 1]),
+                                   float(to_ball[0]), float(to_ball[1]), model.inertia_moment)
+    distance_rate, angle_rate, speed_rate = model.noise_rates(gap, angle, float(np.hypot(*view.ball_vel)))
+    score = np.empty(len(aims))
+    best = shot_scores(np.ascontiguousarray(aims[:, 1]), lead, kicks, velocities, cross_cycle, float(distance_rate),
+                       float(angle_rate), float(speed_rate), model.kick_speed_max, model.ball_travel,
+                       model.ball_noise_gain, model.kick_rand, model.ball_rand,
+                       model.goal_half_width - model.ball_radius, params.lead_half, params.lead_scale, _WINDOW,
+                       score)
     return ShotPlan(aim=aims[best].copy(), kick=kicks[best].copy(), ball_vel=velocities[best].copy(),
                     cross_cycle=int(cross_cycle[best]), opponent_cycle=int(theirs[best]),
                     score=float(score[best]), take=bool(score[best] >= params.threshold))

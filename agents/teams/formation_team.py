@@ -319,7 +319,7 @@ class FormationTeam:
         side = 1.0 if view.ball[1] >= 0.0 else -1.0
         direction = np.array([0.3, side]) / np.hypot(0.3, 1.0)
         kick, _ = skills.kick_for_velocity(self.model, view.own_pos[kicker], view.ball, view.ball_vel,
-                                           direction * self.model.kick_speed_max)
+                                           direction * self.model.kick_speed_max, player_vel=view.own_vel[kicker])
         return kick
 
     def _ball_player(self, view: TeamView, race: skills.BallRace) -> int:

