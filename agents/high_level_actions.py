@@ -116,5 +116,5 @@ class HighLevelActions:
         if size < 1e-9:
             return np.zeros(2)
         kick, _ = skills.kick_for_velocity(self.model, view.own_pos[player], view.ball, view.ball_vel,
-                                           direction / size * speed)
+                                           direction / size * speed, player_vel=view.own_vel[player])
         return kick
