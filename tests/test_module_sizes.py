@@ -13,7 +13,6 @@ KERNEL_MODULES = {
     "agents/assignment/pathcost.py": "lazy path-cost assignment: resumable A* and the rounds, compiled",
     "agents/assignment/lazy.py": "the lazy rounds' matching with kept dual prices, compiled",
     "agents/assignment/distributed_grid.py": "GRID ASSGMT's per-cell leaders, compiled",
-    "agents/assignment/incremental.py": "the Hungarian stage on a sparse graph",
     "soccer_sim/kernels.py": "the simulator core's compiled loops, in one place",
 }
 
