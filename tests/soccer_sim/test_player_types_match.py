@@ -1,0 +1,123 @@
+"""Player types in a match: the teams' choice, per-player parameters in play, and what the
+teams are told."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from soccer_sim.config import MatchConfig
+from soccer_sim.match import Match
+from soccer_sim.team import TeamCommand, TeamError
+from soccer_sim.trivial_teams import ChaserTeam, IdleTeam
+
+CONFIG = MatchConfig(max_cycles=120)
+
+
+def _top(t) -> float:
+    """A type's reachable top speed (m/cycle): full-power dashes against its decay, capped."""
+    return min(t.player_speed_max, 100.0 * t.dash_power_rate * t.effort_max / (1.0 - t.player_decay))
+
+
+class Sprinters:
+    """Every player dashes flat out towards +y; players 1 and 2 take the fastest and the
+    slowest drawn types (or ``picks``), the others the default type."""
+
+    def __init__(self, picks=None) -> None:
+        self.picks = picks
+        self.info = None
+
+    def choose_player_types(self, types, side_info):
+        if self.picks is not None:
+            return self.picks
+        drawn = sorted(types[1:], key=_top)
+        ids = [0] * side_info.players_per_team
+        ids[1], ids[2] = drawn[-1].id, drawn[0].id
+        return ids
+
+    def reset(self, side_info, config, rng) -> None:
+        self.info = side_info
+        n = side_info.players_per_team
+        self._command = TeamCommand(dash=np.tile([0.0, 10.0], (n, 1)), kick=np.zeros((n, 2)))
+
+    def act(self, view) -> TeamCommand:
+        return self._command
+
+
+class DefaultChooser(Sprinters):
+    def choose_player_types(self, types, side_info):
+        return [0] * side_info.players_per_team
+
+
+def _speeds(home, seed=3, cycles=20):
+    match = Match(home, IdleTeam(), seed=seed, config=CONFIG)
+    match.start()
+    late = []
+    for cycle in range(cycles):
+        match.step()
+        if cycle >= cycles // 2:  # running at top speed: the mean speed of the later cycles
+            late.append(np.hypot(match.state.vel[:, 0], match.state.vel[:, 1]))
+    return match, np.mean(late, axis=0)
+
+
+def test_a_fast_type_runs_faster_and_a_slow_one_slower():
+    match, top = _speeds(Sprinters())
+    fast, slow = match.player_types[match.type_ids[1]], match.player_types[match.type_ids[2]]
+    assert _top(fast) > _top(slow) + 0.05
+    # player_decay scales the speed measured after the move's decay; compare speeds before it
+    before = top / np.array([match.player_types[i].player_decay for i in match.type_ids])
+    assert before[1] > before[2] + 0.05
+    assert before[0] == pytest.approx(_top(match.player_types[0]), abs=0.05)
+    assert before[1] == pytest.approx(_top(fast), abs=0.05) and before[2] == pytest.approx(_top(slow), abs=0.05)
+
+
+def test_a_team_that_chooses_only_the_default_type_plays_exactly_as_one_that_never_chooses():
+    a, top_a = _speeds(DefaultChooser())
+    b, top_b = _speeds(_Plain())
+    assert np.array_equal(top_a, top_b) and np.array_equal(a.state.pos, b.state.pos)
+    assert not a.type_ids.any() and not b.type_ids.any()
+
+
+class _Plain:
+    """A sprinter without the choosing hook."""
+
+    def reset(self, side_info, config, rng) -> None:
+        Sprinters.reset(self, side_info, config, rng)
+
+    def act(self, view) -> TeamCommand:
+        return self._command
+
+
+def test_the_teams_are_told_their_own_parameters_and_the_opponents_types():
+    home, away = Sprinters(), Sprinters(picks=[0, 0, 0, 0, 0, 0, 0, 5, 6, 7, 0])
+    match = Match(home, away, seed=4, config=CONFIG)
+    match.start()
+    assert home.info.own_types == tuple(int(i) for i in match.type_ids[:11])
+    assert home.info.opponent_types == (0, 0, 0, 0, 0, 0, 0, 5, 6, 7, 0) == away.info.own_types
+    assert away.info.opponent_types == home.info.own_types
+    assert home.info.player_types is match.player_types and len(home.info.player_types) == 18
+    assert away.info.own_type(8) == match.player_types[6]
+    assert match.kinematics.types[11 + 8, 6] == match.player_types[6].player_decay
+
+
+def test_types_are_deterministic_per_seed_and_play_differs_from_default():
+    a, b = Match(ChaserTeam(), IdleTeam(), seed=9, config=CONFIG), Match(ChaserTeam(), IdleTeam(), seed=9,
+                                                                        config=CONFIG)
+    assert a.player_types == b.player_types
+    assert Match(ChaserTeam(), IdleTeam(), seed=10, config=CONFIG).player_types != a.player_types
+
+
+def test_pt_max_is_enforced_in_a_match_naming_the_team_and_player():
+    match = Match(Sprinters(picks=[0, 3, 3, 0, 0, 0, 0, 0, 0, 0, 0]), IdleTeam(), seed=1, config=CONFIG)
+    with pytest.raises(TeamError, match=r"player 2: player type 3 is chosen by more than pt_max=1") as err:
+        match.start()
+    assert err.value.team_name == match.team_names[0] and err.value.player == 2
+
+
+def test_a_choosing_hook_that_raises_is_the_teams_failure():
+    class Broken(Sprinters):
+        def choose_player_types(self, types, side_info):
+            raise RuntimeError("no idea")
+
+    with pytest.raises(TeamError, match="choose_player_types\\(\\) raised RuntimeError: no idea"):
+        Match(Broken(), IdleTeam(), seed=1, config=CONFIG).start()
