@@ -121,3 +121,22 @@ def test_a_choosing_hook_that_raises_is_the_teams_failure():
 
     with pytest.raises(TeamError, match="choose_player_types\\(\\) raised RuntimeError: no idea"):
         Match(Broken(), IdleTeam(), seed=1, config=CONFIG).start()
+
+
+def test_the_game_log_lists_the_drawn_types_and_each_players_type(tmp_path):
+    from soccer_sim.rcg import RcgRecorder, read_rcg
+
+    path = tmp_path / "types.rcg"
+    home = Sprinters(picks=[0, 4, 0, 0, 0, 0, 0, 0, 0, 0, 9])
+    match = Match(home, IdleTeam(), seed=2, config=MatchConfig(max_cycles=5), recorders=[RcgRecorder(path)])
+    match.run()
+    log = read_rcg(path)
+    assert [int(t["id"]) for t in log.player_types] == list(range(18))
+    for line, t in zip(log.player_types, match.player_types):
+        assert float(line["player_decay"]) == pytest.approx(t.player_decay, rel=1e-5)
+        assert float(line["kickable_margin"]) == pytest.approx(t.kickable_margin, rel=1e-5)
+        assert float(line["effort_max"]) == pytest.approx(t.effort_max, rel=1e-5)
+        assert float(line["catchable_area_l_stretch"]) == pytest.approx(t.catchable_area_l_stretch, rel=1e-5)
+    show = log.shows[-1]
+    types = {(p.side, p.unum): p.type for p in show.players}
+    assert types[("l", 2)] == 4 and types[("l", 11)] == 9 and types[("l", 1)] == 0 and types[("r", 2)] == 0
