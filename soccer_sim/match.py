@@ -158,6 +158,7 @@ class Match:
         self.tackles = Tackles(config, state, setup.goalie_rows, tackle_rng)
         self.physics = Physics(config, state)
         self.kinematics = Kinematics(config, n2)
+        self.tackles.types = self.kinematics.types
         self.player_types = draw_player_types(config, types_seq)
         """The match's heterogeneous player types (type 0 the default; :mod:`soccer_sim.player_types`)."""
         self.type_ids = np.zeros(n2, dtype=np.intp)
