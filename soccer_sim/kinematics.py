@@ -40,6 +40,12 @@ the RoboCup 2D soccer simulator (rcssserver):
   (``player_rand``, ``ball_rand``; rcssserver's ``MPObject::noise``).
 * **Decay**: after the move, velocities are multiplied by the players' and the ball's decay.
 
+**Player types**: each player's own ``dash_power_rate``, ``player_speed_max``, stamina
+recovery, ``extra_stamina``, effort bounds, ``player_decay``, ``kickable_margin``,
+``kick_rand`` and ``inertia_moment`` come from a per-player table (:attr:`Kinematics.types`,
+rows of :mod:`soccer_sim.player_types`' types); every player is of the default type (the
+config's values) until :meth:`Kinematics.set_types`.
+
 Random numbers are uniform in ``[0, 1)``, drawn by the caller in one block per cycle so the
 random stream does not depend on what happened (see :class:`CycleNoise`).
 
@@ -89,7 +95,6 @@ class Kinematics:
         phys, stam = config.physics, config.stamina
         n2 = int(n_players)
         self.phys = phys
-        self.kickable_distance = phys.kickable_distance
         self._touch_distance = phys.player_radius + phys.ball_radius
         self._dash_params = make_record(
             DASH_PARAMS, power_max=phys.dash_power_max,
@@ -135,7 +140,8 @@ class Kinematics:
     def kick_candidates(self, pos: np.ndarray, ball: np.ndarray, kick: np.ndarray, mask: np.ndarray,
                         holder: int, rows_out: np.ndarray) -> tuple[int, float]:
         """Find the players that kick this cycle: allowed by ``mask``, ball centre within
-        ``kickable_distance`` (or holding it: row ``holder``), and a non-zero kick request.
+        its kickable distance (its type's, :attr:`types`; or holding it: row ``holder``), and a
+        non-zero kick request.
 
         Writes their rows into ``rows_out[:count]`` and the centre distances of every player to
         the ball into :attr:`ball_distance`; returns (count, distance of the nearest player).
