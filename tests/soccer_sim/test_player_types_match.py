@@ -140,3 +140,56 @@ def test_the_game_log_lists_the_drawn_types_and_each_players_type(tmp_path):
     show = log.shows[-1]
     types = {(p.side, p.unum): p.type for p in show.players}
     assert types[("l", 2)] == 4 and types[("l", 11)] == 9 and types[("l", 1)] == 0 and types[("r", 2)] == 0
+
+
+def test_a_tacklers_type_sets_its_tackle_noise():
+    from dataclasses import replace
+
+    from soccer_sim.kinematics import Kinematics
+    from soccer_sim.player_types import default_type
+    from soccer_sim.state import WorldState
+    from soccer_sim.tackles import Tackles
+
+    config = MatchConfig()
+    base = default_type(config)
+
+    def push_speeds(kick_rand: float) -> list[float]:
+        kin = Kinematics(config, 2)
+        kin.set_types([replace(base, kick_rand=kick_rand), base])
+        rng, speeds = np.random.default_rng(5), []
+        for _ in range(60):
+            state = WorldState((1, 1), pos=[(0.0, 0.0), (30.0, 0.0)], ball=(0.5, 0.0))
+            tackles = Tackles(config, state, (-1, -1), rng)
+            tackles.types = kin.types
+            outcome = tackles.resolve(state, np.array([0.0, np.nan]), np.zeros(2, dtype=bool), True,
+                                      np.zeros((2, 4)), np.zeros(2, dtype=bool), np.ones(2, dtype=bool))
+            tackles.push(state, outcome, kicked=False)
+            speeds.append(float(np.hypot(*state.ball_vel)))
+        return speeds
+
+    quiet = push_speeds(0.0)
+    assert max(quiet) - min(quiet) < 1e-9 and quiet[0] == pytest.approx(2.7)
+    noisy = push_speeds(0.2)
+    assert min(noisy) < 2.7 - 0.1
+
+
+def test_each_players_kickable_margin_and_decay_apply():
+    from dataclasses import replace
+
+    from soccer_sim.kinematics import Kinematics
+    from soccer_sim.player_types import default_type
+
+    config = MatchConfig()
+    base = default_type(config)
+    kin = Kinematics(config, 2)
+    kin.set_types([replace(base, kickable_margin=0.8, player_decay=0.5), base])
+    reach = config.physics.kickable_distance + 0.05  # beyond the default reach, within the wider one
+    pos = np.array([[0.0, 0.0], [10.0 + reach, 0.0]])
+    for ball_x, expected in ((reach, [0]), (10.0, [])):  # the same distance, each player's own reach
+        rows = np.zeros(2, dtype=np.int64)
+        count, _ = kin.kick_candidates(pos, np.array([ball_x, 0.0]), np.ones((2, 2)), np.ones(2, dtype=bool), -1,
+                                       rows)
+        assert rows[:count].tolist() == expected
+    vel, ball_vel = np.ones((2, 2)), np.zeros(2)
+    kin.decay(vel, ball_vel)
+    assert vel[:, 0].tolist() == [0.5, 0.4]
