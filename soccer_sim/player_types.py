@@ -146,14 +146,16 @@ def check_choice(choice: object, types: tuple[PlayerType, ...], players: int, pt
     wrong length, an unknown type id, or more than ``pt_max`` players of one non-default type
     (rcssserver's ``pt_max``; the goalkeeper may be of any type, as in rcssserver)."""
     try:
-        ids = np.asarray(choice)
-    except Exception as exc:  # noqa: BLE001 - any unconvertible value is the team's fault
-        raise TeamError(team_name, f"choose_player_types must return type ids, got {choice!r}") from exc
-    if ids.shape != (players,):
-        raise TeamError(team_name, f"choose_player_types must return {players} type ids, got shape {ids.shape}")
+        values = choice.tolist() if isinstance(choice, np.ndarray) else list(choice)  # type: ignore[call-overload]
+    except TypeError as exc:
+        raise TeamError(team_name, f"choose_player_types must return a sequence of type ids, got {choice!r}") from exc
+    if not isinstance(values, list):  # a zero-dimensional array
+        raise TeamError(team_name, f"choose_player_types must return a sequence of type ids, got {choice!r}")
+    if len(values) != players:
+        raise TeamError(team_name, f"choose_player_types must return {players} type ids, got {len(values)}")
     counts: dict[int, int] = {}
     out = np.empty(players, dtype=np.intp)
-    for player, value in enumerate(ids.tolist()):
+    for player, value in enumerate(values):
         if isinstance(value, bool) or not isinstance(value, int) or not 0 <= value < len(types):
             raise TeamError(team_name, f"player type {value!r} is not a type id in [0, {len(types)})", player)
         counts[value] = counts.get(value, 0) + 1
@@ -162,8 +164,3 @@ def check_choice(choice: object, types: tuple[PlayerType, ...], players: int, pt
                             player)
         out[player] = value
     return out
-
-
-def type_columns(types: tuple[PlayerType, ...], ids: np.ndarray, name: str) -> np.ndarray:
-    """Per-player float64 array of parameter ``name`` for the players of type ``ids``."""
-    return np.array([getattr(types[i], name) for i in ids], dtype=np.float64)

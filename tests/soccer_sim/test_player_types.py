@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from soccer_sim.config import ConfigError, MatchConfig, PlayerTypeConfig
-from soccer_sim.player_types import check_choice, default_type, draw_player_types, type_columns
+from soccer_sim.player_types import check_choice, default_type, draw_player_types
 from soccer_sim.team import TeamError
 from soccer_sim.team_hooks import ChoosesPlayerTypes
 
@@ -89,12 +89,17 @@ def test_pt_max_enforced_with_the_team_and_player_named():
         check_choice([0, 0], types, 3, 1, "red")
 
 
-def test_type_columns_and_hook_protocol():
+def test_hook_protocol_and_choices_of_the_wrong_kind():
     types = _types()
-    ids = np.array([0, 4, 0])
-    decay = type_columns(types, ids, "player_decay")
-    assert decay.dtype == np.float64 and decay.tolist() == [0.4, types[4].player_decay, 0.4]
-
+    with pytest.raises(TeamError, match=r"player 1: player type 1.0 is not a type id"):
+        check_choice([0, 1.0, 0], types, 3, 1, "red")
+    assert check_choice(np.array([0, 5, 6], dtype=np.int32), types, 3, 1, "red").tolist() == [0, 5, 6]
+    with pytest.raises(TeamError, match="must return a sequence of type ids"):
+        check_choice(None, types, 3, 1, "red")
+    with pytest.raises(TeamError, match="must return a sequence of type ids"):
+        check_choice(np.array(3), types, 3, 1, "red")
+    with pytest.raises(TeamError, match="must return 3 type ids, got 1"):
+        check_choice(np.zeros((1, 3), dtype=int), types, 3, 1, "red")
     class Chooser:
         def choose_player_types(self, types, side_info):
             return [0] * side_info.players_per_team
