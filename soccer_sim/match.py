@@ -48,6 +48,7 @@ from soccer_sim.physics import Physics, SubstepPlanner
 from soccer_sim.player_types import check_choice, draw_player_types
 from soccer_sim.recorder import Recorder
 from soccer_sim.referee import Referee
+from soccer_sim.rules.fouls import FoulJudge
 from soccer_sim.registry import resolve_team
 from soccer_sim.scenarios.scenario import Scenario, line_up
 from soccer_sim.setup import MatchSetup, resolve_scenario
@@ -159,6 +160,9 @@ class Match:
         self.physics = Physics(config, state)
         self.kinematics = Kinematics(config, n2)
         self.tackles.types = self.kinematics.types
+        for judge in self.referee.judges:
+            if isinstance(judge, FoulJudge):
+                judge.types = self.kinematics.types
         self.player_types = draw_player_types(config, types_seq)
         """The match's heterogeneous player types (type 0 the default; :mod:`soccer_sim.player_types`)."""
         self.type_ids = np.zeros(n2, dtype=np.intp)

@@ -193,3 +193,36 @@ def test_each_players_kickable_margin_and_decay_apply():
     vel, ball_vel = np.ones((2, 2)), np.zeros(2)
     kin.decay(vel, ball_vel)
     assert vel[:, 0].tolist() == [0.5, 0.4]
+
+
+def test_the_foul_judge_uses_the_fouled_players_kickable_margin():
+    from dataclasses import replace
+
+    from soccer_sim.config import TackleConfig
+    from soccer_sim.kinematics import Kinematics
+    from soccer_sim.player_types import default_type
+    from soccer_sim.rules.fouls import FoulJudge
+    from soccer_sim.state import EventKind
+    from soccer_sim.tackles import TackleOutcome
+    from tests.soccer_sim.referee_world import N, NO_TOUCH, kinds, make_world
+
+    tackler, fouled = 5, N + 6
+    config = replace(MatchConfig(), tackles=TackleConfig(foul_detect_probability=1.0))
+    gap = config.physics.kickable_distance + 0.05  # the ball just beyond a default player's reach
+
+    def fouls(margin: float | None) -> bool:
+        ref, state, events = make_world(ball=(gap, 0.0), config=config,
+                                        moves={tackler: (-1.1, 0.0), fouled: (0.0, 0.0)})
+        if margin is not None:
+            kin = Kinematics(config, 2 * N)
+            base = default_type(config)
+            kin.set_types([replace(base, kickable_margin=margin) if row == fouled else base for row in range(2 * N)])
+            judge = next(j for j in ref.judges if isinstance(j, FoulJudge))
+            judge.types = kin.types
+        dashed = np.zeros(2 * N, dtype=bool)
+        outcome = TackleOutcome(rows=[tackler], reached=[True], fouls=[True], pushers=[tackler], dashed=dashed)
+        ref.on_commands(state, NO_TOUCH, np.zeros(2, dtype=bool), outcome)
+        return EventKind.FOUL in kinds(events)
+
+    assert not fouls(None) and not fouls(config.physics.kickable_margin)
+    assert fouls(config.physics.kickable_margin + 0.1)
