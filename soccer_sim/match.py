@@ -160,6 +160,7 @@ class Match:
         self.physics = Physics(config, state)
         self.kinematics = Kinematics(config, n2)
         self.tackles.types = self.kinematics.types
+        self.referee.goalkeeper.rng = tackle_rng
         for judge in self.referee.judges:
             if isinstance(judge, FoulJudge):
                 judge.types = self.kinematics.types
@@ -371,6 +372,8 @@ class Match:
             self.type_ids[first[team]:first[team] + self.sizes[team]] = ids
         if self.type_ids.any():
             self.kinematics.set_types([self.player_types[i] for i in self.type_ids])
+            self.referee.goalkeeper.catch_stretch = np.array(
+                [self.player_types[i].catchable_area_l_stretch for i in self.type_ids])
             self._restore_players()
         rows = [tuple(int(i) for i in self.type_ids[first[t]:first[t] + self.sizes[t]]) for t in (HOME, AWAY)]
         return tuple(replace(bare[t], player_types=self.player_types, own_types=rows[t], opponent_types=rows[1 - t])

@@ -226,3 +226,27 @@ def test_the_foul_judge_uses_the_fouled_players_kickable_margin():
 
     assert not fouls(None) and not fouls(config.physics.kickable_margin)
     assert fouls(config.physics.kickable_margin + 0.1)
+
+
+def test_a_goalkeeper_with_a_stretched_catch_area_reaches_further_with_falling_chance():
+    from soccer_sim.state import HOME, PlayMode
+    from tests.soccer_sim.referee_world import N, catch, make_world
+
+    length = CONFIG.rules.catch_length
+
+    def caught(distance: float, stretch: float | None, seed: int = 0) -> bool:
+        ref, state, _ = make_world(ball=(-45.0 + distance, 0.0), ball_vel=(-1.0, 0.0), moves={0: (-45.0, 0.0)},
+                                   last_touch=N + 9)
+        if stretch is not None:
+            ref.goalkeeper.catch_stretch = np.full(2 * N, 1.0)
+            ref.goalkeeper.catch_stretch[0] = stretch
+            ref.goalkeeper.rng = np.random.default_rng(seed)
+        catch(ref, state, HOME)
+        return state.play_mode == PlayMode.GOALIE_HOLDS
+
+    assert caught(length - 0.01, None) and not caught(length + 0.05, None)
+    assert not caught(length + 0.05, 1.0)  # the default type: no band, no draw
+    assert not caught(1.3 * length + 0.01, 1.3)  # beyond the stretched reach
+    near = sum(caught(length + 0.1 * 0.3 * length, 1.3, seed) for seed in range(200))  # chance 0.9
+    far = sum(caught(length + 0.9 * 0.3 * length, 1.3, seed) for seed in range(200))  # chance 0.1
+    assert 160 <= near <= 195 and 5 <= far <= 40
