@@ -295,6 +295,86 @@ class StaminaConfig:
 
 
 @dataclass(frozen=True)
+class PlayerTypeConfig:
+    """Heterogeneous player types as rcssserver 19 draws them (``player_param.conf``).
+
+    Type 0 is the default type (the physics, stamina and tackle configs' values); types
+    ``1..types-1`` are drawn from the match seed by :mod:`soccer_sim.player_types`, each from
+    deltas uniform in the ranges below, the trade-off partner of each delta moving by
+    ``delta * factor``. A team that never chooses types plays everyone as type 0. Players are
+    not substituted during a match, so rcssserver's ``subs_max`` has no counterpart.
+    """
+
+    types: int = 18
+    """Number of player types, the default one included (rcssserver ``player_types``)."""
+    pt_max: int = 1
+    """At most this many players of one non-default type per team (rcssserver ``pt_max``)."""
+    player_speed_max_delta_min: float = 0.0
+    """rcssserver ``player_speed_max_delta_min`` (m/cycle)."""
+    player_speed_max_delta_max: float = 0.0
+    """rcssserver ``player_speed_max_delta_max`` (m/cycle)."""
+    stamina_inc_max_delta_factor: float = 0.0
+    """rcssserver ``stamina_inc_max_delta_factor``."""
+    player_decay_delta_min: float = -0.1
+    """rcssserver ``player_decay_delta_min``."""
+    player_decay_delta_max: float = 0.1
+    """rcssserver ``player_decay_delta_max``."""
+    inertia_moment_delta_factor: float = 25.0
+    """rcssserver ``inertia_moment_delta_factor``."""
+    dash_power_rate_delta_min: float = 0.0
+    """rcssserver ``dash_power_rate_delta_min`` (the pre-v14 dash trade-off, unused by default)."""
+    dash_power_rate_delta_max: float = 0.0
+    """rcssserver ``dash_power_rate_delta_max``."""
+    player_size_delta_factor: float = -100.0
+    """rcssserver ``player_size_delta_factor``."""
+    new_dash_power_rate_delta_min: float = -0.0012
+    """rcssserver ``new_dash_power_rate_delta_min``."""
+    new_dash_power_rate_delta_max: float = 0.0008
+    """rcssserver ``new_dash_power_rate_delta_max``."""
+    new_stamina_inc_max_delta_factor: float = -6000.0
+    """rcssserver ``new_stamina_inc_max_delta_factor``."""
+    kickable_margin_delta_min: float = -0.1
+    """rcssserver ``kickable_margin_delta_min`` (m)."""
+    kickable_margin_delta_max: float = 0.1
+    """rcssserver ``kickable_margin_delta_max`` (m)."""
+    kick_rand_delta_factor: float = 1.0
+    """rcssserver ``kick_rand_delta_factor``."""
+    extra_stamina_delta_min: float = 0.0
+    """rcssserver ``extra_stamina_delta_min``."""
+    extra_stamina_delta_max: float = 50.0
+    """rcssserver ``extra_stamina_delta_max``."""
+    effort_max_delta_factor: float = -0.004
+    """rcssserver ``effort_max_delta_factor``."""
+    effort_min_delta_factor: float = -0.004
+    """rcssserver ``effort_min_delta_factor``."""
+    kick_power_rate_delta_min: float = 0.0
+    """rcssserver ``kick_power_rate_delta_min``."""
+    kick_power_rate_delta_max: float = 0.0
+    """rcssserver ``kick_power_rate_delta_max``."""
+    foul_detect_probability_delta_factor: float = 0.0
+    """rcssserver ``foul_detect_probability_delta_factor``."""
+    catchable_area_l_stretch_min: float = 1.0
+    """rcssserver ``catchable_area_l_stretch_min``."""
+    catchable_area_l_stretch_max: float = 1.3
+    """rcssserver ``catchable_area_l_stretch_max``."""
+    player_speed_max_min: float = 0.75
+    """A drawn type is kept only if its top speed ``dash_power_max * dash_power_rate *
+    effort_max / (1 - player_decay)`` is at least this (rcssserver ``player_speed_max_min``)."""
+    max_trials: int = 1000
+    """Draws per type before it falls back to the default type (rcssserver's ``MAX_TRIAL``)."""
+
+    def validate(self) -> None:
+        for name in ("types", "pt_max", "max_trials"):
+            value = getattr(self, name)
+            if not (_is_integer(value) and value >= 1):
+                raise ConfigError(f"PlayerTypeConfig.{name} must be a positive integer, got {value!r}")
+        for f in fields(self):
+            value = getattr(self, f.name)
+            if f.type == "float" and not (_is_real(value) and math.isfinite(value)):
+                raise ConfigError(f"PlayerTypeConfig.{f.name} must be a finite number, got {value!r}")
+
+
+@dataclass(frozen=True)
 class MatchConfig:
     """Everything that, with the two teams and the seed, determines a match."""
 
@@ -304,6 +384,8 @@ class MatchConfig:
     rules: RuleConfig = default_of(default_factory=RuleConfig)
     tackles: TackleConfig = default_of(default_factory=TackleConfig)
     """Tackles, fouls and cards (rcssserver's)."""
+    player_types: PlayerTypeConfig = default_of(default_factory=PlayerTypeConfig)
+    """Heterogeneous player types (rcssserver's hetero parameters)."""
     players_per_team: int = 11
     max_cycles: int | None = None
     """Stop after this many cycles (None: two full halves)."""
@@ -313,7 +395,8 @@ class MatchConfig:
 
     def validate(self) -> None:
         for name, kind in (("field", FieldConfig), ("physics", PhysicsConfig), ("stamina", StaminaConfig),
-                           ("rules", RuleConfig), ("tackles", TackleConfig)):
+                           ("rules", RuleConfig), ("tackles", TackleConfig),
+                           ("player_types", PlayerTypeConfig)):
             part = getattr(self, name)
             if not isinstance(part, kind):
                 raise ConfigError(f"MatchConfig.{name} must be a {kind.__name__}, got {type(part).__name__}")

@@ -32,21 +32,31 @@ def _fields(*names: str, kind: type = np.float64) -> list[tuple[str, type]]:
     return [(name, kind) for name in names]
 
 
+PT_DASH_POWER_RATE, PT_EXTRA_STAMINA, PT_SPEED_MAX, PT_STAMINA_INC, PT_EFFORT_MIN, PT_EFFORT_MAX = 0, 1, 2, 3, 4, 5
+PT_DECAY, PT_KICKABLE, PT_KICKABLE_MARGIN, PT_KICK_RAND, PT_INERTIA_MOMENT = 6, 7, 8, 9, 10
+PT_COLUMNS = 11
+"""Columns of the per-player parameter table (one float64 row per player row): each player's
+type's ``dash_power_rate``, ``extra_stamina``, ``player_speed_max``, ``stamina_inc_max``,
+``effort_min``, ``effort_max``, ``player_decay``, kickable distance (centre to centre:
+player and ball radii plus ``kickable_margin``), ``kickable_margin``, ``kick_rand`` and
+``inertia_moment`` (:mod:`soccer_sim.player_types`)."""
+
 DASH_PARAMS = np.dtype(_fields(
-    "power_rate", "power_max", "side_rate", "back_rate", "heading_speed", "extra_stamina", "speed_max",
-    "player_rand", "ball_rand", "stamina_max", "recovery_per_cycle", "recover_dec_thr", "recover_dec", "recover_min",
-    "effort_dec_thr", "effort_dec", "effort_min", "effort_inc_thr", "effort_inc", "effort_max"))
+    "power_max", "side_rate", "back_rate", "heading_speed",
+    "player_rand", "ball_rand", "stamina_max", "recover_dec_thr", "recover_dec", "recover_min",
+    "effort_dec_thr", "effort_dec", "effort_inc_thr", "effort_inc"))
 """The dash and stamina rules and the movement noise (:func:`dash_players`); the thresholds are
-absolute stamina values."""
+absolute stamina values. The player type's parameters come from the per-player table."""
 
 KICK_PARAMS = np.dtype(_fields(
-    "kick_max", "ball_speed_max", "touch_distance", "kickable_margin", "angle_penalty", "distance_penalty",
-    "inertia_moment", "kick_rand", "speed_rate_scale") + _fields("cap_sum", kind=np.bool_))
+    "kick_max", "ball_speed_max", "touch_distance", "angle_penalty", "distance_penalty",
+    "speed_rate_scale") + _fields("cap_sum", kind=np.bool_))
 """The kick rule (:func:`apply_kicks`): ``speed_rate_scale`` is ``0.5 / (ball_speed_max *
-ball_decay)``, ``cap_sum`` whether the cycle's kicks are capped together."""
+ball_decay)``, ``cap_sum`` whether the cycle's kicks are capped together. The player type's
+parameters come from the per-player table."""
 
-DECAY_PARAMS = np.dtype(_fields("player_decay", "ball_decay"))
-"""Velocity decay (:func:`decay_velocities`)."""
+DECAY_PARAMS = np.dtype(_fields("ball_decay"))
+"""Ball decay (:func:`decay_velocities`; each player's decay comes from the per-player table)."""
 
 MARGIN_PARAMS = np.dtype(_fields("home", "players", kind=np.int64) + _fields(
     "begin2", "end2", "x_max", "y_max"))
@@ -101,24 +111,25 @@ def _perturb(vx: float, vy: float, rand: float, length_draw: float,
 @njit(cache=True, nogil=True)
 def dash_players(vel: np.ndarray, ball_vel: np.ndarray, stamina: np.ndarray, effort: np.ndarray,
                  recovery: np.ndarray, capacity: np.ndarray, dash: np.ndarray, noise: np.ndarray,
-                 params: np.ndarray, speed_out: np.ndarray) -> float:  # pragma: no cover - compiled
+                 params: np.ndarray, types: np.ndarray, speed_out: np.ndarray) -> float:  # pragma: no cover
     """The dash and stamina rules for every player row (see :mod:`soccer_sim.kinematics`), then
     the movement noise of every body; returns the top player speed. ``noise``: (P + 1, 2) draws
-    in [0, 1), the players' rows then the ball's; ``params``: a :data:`DASH_PARAMS` record.
+    in [0, 1), the players' rows then the ball's; ``params``: a :data:`DASH_PARAMS` record;
+    ``types``: the per-player parameter table (``PT_*`` columns).
 
     As in rcssserver's ``MPObject::_inc``, a body's velocity is first clipped to its largest
     speed, then perturbed (so noise may carry it slightly beyond), then moved."""
     p = params[0]
-    power_rate, power_max, side_rate, back_rate, heading_speed = (
-        p.power_rate, p.power_max, p.side_rate, p.back_rate, p.heading_speed)
-    extra, speed_max, player_rand, stamina_max, inc_max = (
-        p.extra_stamina, p.speed_max, p.player_rand, p.stamina_max, p.recovery_per_cycle)
+    power_max, side_rate, back_rate, heading_speed = p.power_max, p.side_rate, p.back_rate, p.heading_speed
+    player_rand, stamina_max = p.player_rand, p.stamina_max
     rec_thr, rec_dec, rec_min = p.recover_dec_thr, p.recover_dec, p.recover_min
-    eff_dec_thr, eff_dec, eff_min = p.effort_dec_thr, p.effort_dec, p.effort_min
-    eff_inc_thr, eff_inc, eff_max = p.effort_inc_thr, p.effort_inc, p.effort_max
+    eff_dec_thr, eff_dec = p.effort_dec_thr, p.effort_dec
+    eff_inc_thr, eff_inc = p.effort_inc_thr, p.effort_inc
     request_cap = REQUEST_CAP
     fastest = 0.0
     for i in range(vel.shape[0]):
+        power_rate, extra, speed_max = types[i, PT_DASH_POWER_RATE], types[i, PT_EXTRA_STAMINA], types[i, PT_SPEED_MAX]
+        inc_max, eff_min, eff_max = types[i, PT_STAMINA_INC], types[i, PT_EFFORT_MIN], types[i, PT_EFFORT_MAX]
         ax, ay = dash[i, 0], dash[i, 1]
         size = math.sqrt(ax * ax + ay * ay)
         if size > request_cap:  # huge (or overflowing) request: same direction, finite length
@@ -181,8 +192,9 @@ def dash_players(vel: np.ndarray, ball_vel: np.ndarray, stamina: np.ndarray, eff
 
 @njit(cache=True, nogil=True)
 def find_kickers(pos: np.ndarray, ball: np.ndarray, kick: np.ndarray, mask: np.ndarray, holder: int,
-                 kickable: float, dist_out: np.ndarray, rows_out: np.ndarray) -> tuple[int, float]:  # pragma: no cover
-    """Rows allowed by ``mask`` with the ball within ``kickable`` (or holding it: ``holder``) and
+                 types: np.ndarray, dist_out: np.ndarray, rows_out: np.ndarray) -> tuple[int, float]:  # pragma: no cover
+    """Rows allowed by ``mask`` with the ball within their kickable distance (the per-player
+    table ``types``, column ``PT_KICKABLE``; or holding it: ``holder``) and
     a non-zero kick into ``rows_out``; every player's centre distance to the ball into
     ``dist_out``; returns (count, nearest distance)."""
     bx, by = ball[0], ball[1]
@@ -194,7 +206,7 @@ def find_kickers(pos: np.ndarray, ball: np.ndarray, kick: np.ndarray, mask: np.n
         dist_out[i] = d
         if d < nearest:
             nearest = d
-        if mask[i] and (d <= kickable or i == holder) and (kick[i, 0] != 0.0 or kick[i, 1] != 0.0):
+        if mask[i] and (d <= types[i, PT_KICKABLE] or i == holder) and (kick[i, 0] != 0.0 or kick[i, 1] != 0.0):
             rows_out[count] = i
             count += 1
     return count, nearest
@@ -203,19 +215,20 @@ def find_kickers(pos: np.ndarray, ball: np.ndarray, kick: np.ndarray, mask: np.n
 @njit(cache=True, nogil=True)
 def apply_kicks(kickers: np.ndarray, pos: np.ndarray, vel: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray,
                 kick: np.ndarray, dist: np.ndarray, holder: int, noise: np.ndarray,
-                params: np.ndarray) -> None:  # pragma: no cover - compiled
+                params: np.ndarray, types: np.ndarray) -> None:  # pragma: no cover - compiled
     """rcssserver's kick rule for the player rows ``kickers`` (see
     :meth:`soccer_sim.kinematics.Kinematics.kick`); changes ``ball_vel`` in place. ``noise``:
     (P, 2) draws in [0, 1) (length, direction) of each player's kick noise; ``params``: a
-    :data:`KICK_PARAMS` record."""
+    :data:`KICK_PARAMS` record; ``types``: the per-player parameter table (``PT_*`` columns)."""
     p = params[0]
-    kick_max, margin, touch = p.kick_max, p.kickable_margin, p.touch_distance
+    kick_max, touch = p.kick_max, p.touch_distance
     request_cap = REQUEST_CAP
     ax = ay = 0.0
     bx, by = ball[0], ball[1]
     speed_rate = 0.5 + p.speed_rate_scale * math.sqrt(ball_vel[0] * ball_vel[0] + ball_vel[1] * ball_vel[1])
     for k in range(kickers.shape[0]):
         row = kickers[k]
+        margin = types[row, PT_KICKABLE_MARGIN]
         kx, ky = kick[row, 0], kick[row, 1]
         power = math.sqrt(kx * kx + ky * ky)
         if power > request_cap:  # huge (or overflowing) request: same direction, finite length
@@ -232,14 +245,14 @@ def apply_kicks(kickers: np.ndarray, pos: np.ndarray, vel: np.ndarray, ball: np.
         if row != holder:
             distance_rate = (dist[row] - touch) / margin
             angle_rate = ball_angle_to_body(vel[row, 0], vel[row, 1], bx - pos[row, 0], by - pos[row, 1],
-                                            p.inertia_moment) / math.pi
+                                            types[row, PT_INERTIA_MOMENT]) / math.pi
         effect = 1.0 - p.angle_penalty * angle_rate - p.distance_penalty * distance_rate
         kx *= effect
         ky *= effect
         # rcssserver's kick noise: largest length kick_rand * power / max_power * (pos_rate +
         # speed_rate), each rate within [0.5, 1].
         pos_rate = 0.5 + 0.25 * (angle_rate + distance_rate)
-        reach = p.kick_rand * (power / kick_max) * (pos_rate + speed_rate) * noise[row, 0]
+        reach = types[row, PT_KICK_RAND] * (power / kick_max) * (pos_rate + speed_rate) * noise[row, 0]
         turn = (2.0 * noise[row, 1] - 1.0) * math.pi
         kx += reach * math.cos(turn)
         ky += reach * math.sin(turn)
@@ -265,11 +278,13 @@ def apply_kicks(kickers: np.ndarray, pos: np.ndarray, vel: np.ndarray, ball: np.
 
 
 @njit(cache=True, nogil=True)
-def decay_velocities(vel: np.ndarray, ball_vel: np.ndarray, params: np.ndarray) -> None:  # pragma: no cover
-    """Velocity decay of players and ball after the move. ``params``: a :data:`DECAY_PARAMS` record."""
-    p = params[0]
-    player_decay, ball_decay = p.player_decay, p.ball_decay
+def decay_velocities(vel: np.ndarray, ball_vel: np.ndarray, params: np.ndarray,
+                     types: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Velocity decay of players and ball after the move. ``params``: a :data:`DECAY_PARAMS`
+    record; ``types``: the per-player parameter table (column ``PT_DECAY``)."""
+    ball_decay = params[0].ball_decay
     for i in range(vel.shape[0]):
+        player_decay = types[i, PT_DECAY]
         vel[i, 0] *= player_decay
         vel[i, 1] *= player_decay
     ball_vel[0] *= ball_decay

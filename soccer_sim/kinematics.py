@@ -40,6 +40,12 @@ the RoboCup 2D soccer simulator (rcssserver):
   (``player_rand``, ``ball_rand``; rcssserver's ``MPObject::noise``).
 * **Decay**: after the move, velocities are multiplied by the players' and the ball's decay.
 
+**Player types**: each player's own ``dash_power_rate``, ``player_speed_max``, stamina
+recovery, ``extra_stamina``, effort bounds, ``player_decay``, ``kickable_margin``,
+``kick_rand`` and ``inertia_moment`` come from a per-player table (:attr:`Kinematics.types`,
+rows of :mod:`soccer_sim.player_types`' types); every player is of the default type (the
+config's values) until :meth:`Kinematics.set_types`.
+
 Random numbers are uniform in ``[0, 1)``, drawn by the caller in one block per cycle so the
 random stream does not depend on what happened (see :class:`CycleNoise`).
 
@@ -53,8 +59,11 @@ from __future__ import annotations
 import numpy as np
 
 from soccer_sim.config import MatchConfig
-from soccer_sim.kernels import (DASH_PARAMS, DECAY_PARAMS, KICK_PARAMS, apply_kicks, dash_players, decay_velocities,
-                                find_kickers, make_record)
+from soccer_sim.kernels import (DASH_PARAMS, DECAY_PARAMS, KICK_PARAMS, PT_COLUMNS, PT_DASH_POWER_RATE, PT_DECAY,
+                                PT_EFFORT_MAX, PT_EFFORT_MIN, PT_EXTRA_STAMINA, PT_INERTIA_MOMENT, PT_KICK_RAND,
+                                PT_KICKABLE, PT_KICKABLE_MARGIN, PT_SPEED_MAX, PT_STAMINA_INC, apply_kicks,
+                                dash_players, decay_velocities, find_kickers, make_record)
+from soccer_sim.player_types import PlayerType, default_type
 
 
 class CycleNoise:
@@ -86,42 +95,58 @@ class Kinematics:
         phys, stam = config.physics, config.stamina
         n2 = int(n_players)
         self.phys = phys
-        self.kickable_distance = phys.kickable_distance
         self._touch_distance = phys.player_radius + phys.ball_radius
         self._dash_params = make_record(
-            DASH_PARAMS, power_rate=phys.dash_power_rate, power_max=phys.dash_power_max,
+            DASH_PARAMS, power_max=phys.dash_power_max,
             side_rate=phys.side_dash_rate, back_rate=phys.back_dash_rate, heading_speed=phys.dash_heading_speed,
-            extra_stamina=stam.extra_stamina, speed_max=phys.player_speed_max, player_rand=phys.player_rand,
-            ball_rand=phys.ball_rand,
-            stamina_max=stam.maximum, recovery_per_cycle=stam.recovery_per_cycle,
+            player_rand=phys.player_rand, ball_rand=phys.ball_rand, stamina_max=stam.maximum,
             recover_dec_thr=stam.recover_dec_thr * stam.maximum, recover_dec=stam.recover_dec,
             recover_min=stam.recover_min, effort_dec_thr=stam.effort_dec_thr * stam.maximum,
-            effort_dec=stam.effort_dec, effort_min=stam.effort_min,
-            effort_inc_thr=stam.effort_inc_thr * stam.maximum, effort_inc=stam.effort_inc,
-            effort_max=stam.effort_max)
+            effort_dec=stam.effort_dec, effort_inc_thr=stam.effort_inc_thr * stam.maximum, effort_inc=stam.effort_inc)
         self._stamina_config = stam
-        self._decay_params = make_record(DECAY_PARAMS, player_decay=phys.player_decay, ball_decay=phys.ball_decay)
+        self._decay_params = make_record(DECAY_PARAMS, ball_decay=phys.ball_decay)
         self._kick_params = make_record(
             KICK_PARAMS, kick_max=phys.kick_speed_max, ball_speed_max=phys.ball_speed_max,
-            touch_distance=self._touch_distance, kickable_margin=phys.kickable_margin,
+            touch_distance=self._touch_distance,
             angle_penalty=phys.kick_angle_penalty, distance_penalty=phys.kick_distance_penalty,
-            inertia_moment=phys.inertia_moment, kick_rand=phys.kick_rand,
             speed_rate_scale=0.5 / (phys.ball_speed_max * phys.ball_decay), cap_sum=phys.cap_summed_kicks)
+        self.types = np.empty((n2, PT_COLUMNS), dtype=np.float64)
+        """Each player row's type parameters (``PT_*`` columns of :mod:`soccer_sim.kernels`);
+        every player of the default type until :meth:`set_types`."""
+        base = default_type(config)
+        self.set_types([base] * n2)
         self.ball_distance = np.empty(n2)
         """Centre distance of every player to the ball (m), from the last :meth:`kick_candidates`."""
         self.player_speed = np.empty(n2)
         """Speed of each player after the last :meth:`dash` (m/cycle)."""
 
+    def set_types(self, types: list[PlayerType] | tuple[PlayerType, ...]) -> None:
+        """Give player row ``i`` the parameters of ``types[i]`` (one type per player row)."""
+        touch = self._touch_distance
+        for row, t in enumerate(types):
+            self.types[row] = self._row(t, touch + t.kickable_margin)  # as PhysicsConfig.kickable_distance
+
+    @staticmethod
+    def _row(t: PlayerType, kickable: float) -> np.ndarray:
+        row = np.empty(PT_COLUMNS)
+        row[PT_DASH_POWER_RATE], row[PT_EXTRA_STAMINA], row[PT_SPEED_MAX] = (
+            t.dash_power_rate, t.extra_stamina, t.player_speed_max)
+        row[PT_STAMINA_INC], row[PT_EFFORT_MIN], row[PT_EFFORT_MAX] = t.stamina_inc_max, t.effort_min, t.effort_max
+        row[PT_DECAY], row[PT_KICKABLE], row[PT_KICKABLE_MARGIN] = t.player_decay, kickable, t.kickable_margin
+        row[PT_KICK_RAND], row[PT_INERTIA_MOMENT] = t.kick_rand, t.inertia_moment
+        return row
+
     # --- kicks ------------------------------------------------------------------------------
     def kick_candidates(self, pos: np.ndarray, ball: np.ndarray, kick: np.ndarray, mask: np.ndarray,
                         holder: int, rows_out: np.ndarray) -> tuple[int, float]:
         """Find the players that kick this cycle: allowed by ``mask``, ball centre within
-        ``kickable_distance`` (or holding it: row ``holder``), and a non-zero kick request.
+        its kickable distance (its type's, :attr:`types`; or holding it: row ``holder``), and a
+        non-zero kick request.
 
         Writes their rows into ``rows_out[:count]`` and the centre distances of every player to
         the ball into :attr:`ball_distance`; returns (count, distance of the nearest player).
         """
-        return find_kickers(pos, ball, kick, mask, holder, self.kickable_distance, self.ball_distance, rows_out)
+        return find_kickers(pos, ball, kick, mask, holder, self.types, self.ball_distance, rows_out)
 
     def kick(self, kickers: np.ndarray, pos: np.ndarray, vel: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray,
              kick: np.ndarray, dist: np.ndarray, holder: int, noise: np.ndarray) -> None:
@@ -132,7 +157,7 @@ class Kinematics:
         draws (:attr:`CycleNoise.kick`). A holding goalkeeper (row ``holder``) holds the ball
         touching the front of its body, so it kicks without distance or angle penalty.
         """
-        apply_kicks(kickers, pos, vel, ball, ball_vel, kick, dist, holder, noise, self._kick_params)
+        apply_kicks(kickers, pos, vel, ball, ball_vel, kick, dist, holder, noise, self._kick_params, self.types)
 
     # --- dashes and stamina ----------------------------------------------------------------
     def dash(self, vel: np.ndarray, ball_vel: np.ndarray, stamina: np.ndarray, effort: np.ndarray,
@@ -142,20 +167,20 @@ class Kinematics:
         ``effort``, ``recovery``, ``capacity``, all (2n,), in place), then add the movement
         noise of the players and of the ball (``ball_vel``; ``noise``: :attr:`CycleNoise.motion`);
         return the largest resulting player speed (m/cycle)."""
-        return dash_players(vel, ball_vel, stamina, effort, recovery, capacity, dash, noise, self._dash_params,
+        return dash_players(vel, ball_vel, stamina, effort, recovery, capacity, dash, noise, self._dash_params, self.types,
                             self.player_speed)
 
     def restore(self, stamina: np.ndarray, effort: np.ndarray, recovery: np.ndarray,
                 capacity: np.ndarray) -> None:
         """Fresh players (the start of a match and of the second half): stamina at its maximum,
-        effort at ``effort_max``, recovery 1, the half's full capacity."""
+        effort at each player type's ``effort_max``, recovery 1, the half's full capacity."""
         stam = self._stamina_config
         stamina[:] = stam.maximum
-        effort[:] = stam.effort_max
+        effort[:] = self.types[:, PT_EFFORT_MAX]
         recovery[:] = 1.0
         capacity[:] = stam.capacity_or_inf
 
     # --- decay ------------------------------------------------------------------------------
     def decay(self, vel: np.ndarray, ball_vel: np.ndarray) -> None:
         """Velocity decay after the move (in place)."""
-        decay_velocities(vel, ball_vel, self._decay_params)
+        decay_velocities(vel, ball_vel, self._decay_params, self.types)

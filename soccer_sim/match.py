@@ -38,22 +38,25 @@ from __future__ import annotations
 
 import gc
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from soccer_sim.config import MatchConfig
 from soccer_sim.kinematics import CycleNoise, Kinematics
 from soccer_sim.physics import Physics, SubstepPlanner
+from soccer_sim.player_types import check_choice, draw_player_types
 from soccer_sim.recorder import Recorder
 from soccer_sim.referee import Referee
+from soccer_sim.rules.fouls import FoulJudge
 from soccer_sim.registry import resolve_team
 from soccer_sim.scenarios.scenario import Scenario, line_up
 from soccer_sim.setup import MatchSetup, resolve_scenario
 from soccer_sim.state import AWAY, HOME, NO_PLAYER, NO_TEAM, EventLog, PlayMode, WorldState
 from soccer_sim.statistics import StatisticsRecorder, TeamStatistics
 from soccer_sim.tackles import TackleOutcome, Tackles
-from soccer_sim.team import Team, TeamError
+from soccer_sim.team import SideInfo, Team, TeamError
+from soccer_sim.team_hooks import ChoosesPlayerTypes
 from soccer_sim.view import TeamFrame
 
 _KICK_OFF = PlayMode.KICK_OFF
@@ -132,7 +135,9 @@ class Match:
         self.goalies = setup.goalies
         """Each side's goalkeeper index within the side (-1: none)."""
         n2 = sizes[0] + sizes[1]
-        physics_seq, home_seq, away_seq, scenario_seq, tackle_seq = np.random.SeedSequence(self.seed).spawn(5)
+        # A new stream goes at the end: the earlier children stay what they were.
+        physics_seq, home_seq, away_seq, scenario_seq, tackle_seq, types_seq = np.random.SeedSequence(
+            self.seed).spawn(6)
         self._team_seeds = (home_seq, away_seq)
         self.end_cycle = setup.end_cycle
         """Cycles the match lasts at most."""
@@ -154,6 +159,15 @@ class Match:
         self.tackles = Tackles(config, state, setup.goalie_rows, tackle_rng)
         self.physics = Physics(config, state)
         self.kinematics = Kinematics(config, n2)
+        self.tackles.types = self.kinematics.types
+        self.referee.goalkeeper.rng = tackle_rng
+        for judge in self.referee.judges:
+            if isinstance(judge, FoulJudge):
+                judge.types = self.kinematics.types
+        self.player_types = draw_player_types(config, types_seq)
+        """The match's heterogeneous player types (type 0 the default; :mod:`soccer_sim.player_types`)."""
+        self.type_ids = np.zeros(n2, dtype=np.intp)
+        """Each player row's type id (chosen by the teams in :meth:`start`; 0 for a team that does not choose)."""
         self._restore_players()
         self.noise = CycleNoise(np.random.default_rng(physics_seq), n2)
         self.commands = np.zeros((n2, 4))
@@ -208,8 +222,9 @@ class Match:
         if self._started:
             raise RuntimeError("a Match can be played only once; create a new one")
         self._started = True
+        infos = self._choose_types()
         for team in (HOME, AWAY):
-            info = self.setup.side_info(team, self.team_names)
+            info = infos[team]
             rng = np.random.default_rng(self._team_seeds[team])
             try:
                 self.teams[team].reset(info, self.config, rng)
@@ -337,6 +352,32 @@ class Match:
             self._condition = condition
             self.referee.stop(self.state)
             self._event_mark = len(events)
+
+    def _choose_types(self) -> tuple[SideInfo, SideInfo]:
+        """Ask each team that offers :class:`~soccer_sim.team_hooks.ChoosesPlayerTypes` for its
+        players' types (checked against ``pt_max``), give the players their parameters, and
+        return the teams' SideInfo with the types filled in."""
+        bare = [self.setup.side_info(team, self.team_names) for team in (HOME, AWAY)]
+        first = (0, self.sizes[0])
+        for team in (HOME, AWAY):
+            chooser = self.teams[team]
+            if not isinstance(chooser, ChoosesPlayerTypes):
+                continue
+            name = self.team_names[team]
+            try:
+                choice = chooser.choose_player_types(self.player_types, bare[team])
+            except (Exception, SystemExit) as exc:
+                raise _team_failure(name, "choose_player_types", exc) from exc
+            ids = check_choice(choice, self.player_types, self.sizes[team], self.config.player_types.pt_max, name)
+            self.type_ids[first[team]:first[team] + self.sizes[team]] = ids
+        if self.type_ids.any():
+            self.kinematics.set_types([self.player_types[i] for i in self.type_ids])
+            self.referee.goalkeeper.catch_stretch = np.array(
+                [self.player_types[i].catchable_area_l_stretch for i in self.type_ids])
+            self._restore_players()
+        rows = [tuple(int(i) for i in self.type_ids[first[t]:first[t] + self.sizes[t]]) for t in (HOME, AWAY)]
+        return tuple(replace(bare[t], player_types=self.player_types, own_types=rows[t], opponent_types=rows[1 - t])
+                     for t in (HOME, AWAY))  # type: ignore[return-value]
 
     def _restore_players(self) -> None:
         """Fresh players: at the start of the match and of the second half."""

@@ -44,6 +44,7 @@ import numpy as np
 
 from soccer_sim.body import facing
 from soccer_sim.config import MatchConfig
+from soccer_sim.kernels import PT_INERTIA_MOMENT, PT_KICK_RAND
 from soccer_sim.rules.fouls import park_absent
 from soccer_sim.state import NO_PLAYER, WorldState
 
@@ -90,6 +91,10 @@ class Tackles:
         self._home = state.sizes[0]
         self._parking_field = config.field
         self._pushes: list[tuple[float, float]] = []
+        self.types: np.ndarray | None = None
+        """Each player row's type parameters (:attr:`soccer_sim.kinematics.Kinematics.types`),
+        set by the match: the tackler's ``inertia_moment`` and ``kick_rand``; None: the
+        physics config's."""
         self.rng = rng
         self.busy = False
         """Whether any player is frozen or sent off (then every cycle has work to do)."""
@@ -178,7 +183,10 @@ class Tackles:
         cfg = self.config
         px, py = float(state.pos[row, 0]), float(state.pos[row, 1])
         dx, dy = float(state.ball[0]) - px, float(state.ball[1]) - py
-        fx, fy = facing(float(state.vel[row, 0]), float(state.vel[row, 1]), dx, dy, self._inertia)
+        types = self.types
+        inertia = self._inertia if types is None else float(types[row, PT_INERTIA_MOMENT])
+        kick_rand = self._physics.kick_rand if types is None else float(types[row, PT_KICK_RAND])
+        fx, fy = facing(float(state.vel[row, 0]), float(state.vel[row, 1]), dx, dy, inertia)
         x, y = dx * fx + dy * fy, dy * fx - dx * fy  # the ball in the body frame
         exponent = cfg.foul_exponent if intentional else cfg.tackle_exponent
         prob = failure_probability(x, y, cfg.tackle_dist, cfg.tackle_back_dist, cfg.tackle_width, exponent)
@@ -194,7 +202,7 @@ class Tackles:
         pos_rate = 0.5 + 0.5 * (1.0 - prob)
         speed_rate = 0.5 + 0.5 * math.hypot(state.ball_vel[0], state.ball_vel[1]) / (
             physics.ball_speed_max * physics.ball_decay)
-        noise = self.rng.uniform(0.0, physics.kick_rand * cfg.tackle_rand_factor * (pos_rate + speed_rate))
+        noise = self.rng.uniform(0.0, kick_rand * cfg.tackle_rand_factor * (pos_rate + speed_rate))
         noise_dir = self.rng.uniform(-math.pi, math.pi)
         return True, (accel * math.cos(direction) + noise * math.cos(noise_dir),
                       accel * math.sin(direction) + noise * math.sin(noise_dir))

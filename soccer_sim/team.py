@@ -60,6 +60,18 @@ class SideInfo:
     """Players of the opposing team (0 to 11; the rows of ``opp_pos``)."""
     opponent_goalie_index: int
     """Index of the opponents' goalkeeper among them, -1 (``NO_PLAYER``) if they have none."""
+    player_types: tuple = ()
+    """The match's heterogeneous player types (:class:`~soccer_sim.player_types.PlayerType`,
+    index = type id, type 0 the default), the same for both teams; empty outside a match."""
+    own_types: tuple[int, ...] = ()
+    """Each own player's type id (row order); its parameters are ``player_types[id]``. Types
+    are fixed for the whole match (no substitutions)."""
+    opponent_types: tuple[int, ...] = ()
+    """Each opponent's type id, as rcssserver's online coach sees them."""
+
+    def own_type(self, player: int):
+        """The :class:`~soccer_sim.player_types.PlayerType` of own player ``player``."""
+        return self.player_types[self.own_types[player]]
 
 
 @dataclass(eq=False)

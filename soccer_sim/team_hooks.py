@@ -4,6 +4,9 @@ A team that implements one of these protocols gets more out of the tools around 
 
 * :class:`ReportsStatistics`: ``statistics()`` returns per-match figures (name -> number)
   that match statistics, the results store and the tables carry as the team's own figures.
+* :class:`ChoosesPlayerTypes`: ``choose_player_types(types, side_info)`` picks a
+  heterogeneous player type per player at reset (:mod:`soccer_sim.player_types`); a team
+  without it plays every player as the default type 0.
 * :class:`Drawable`: ``drawing()`` returns a :class:`Drawing` that a replay draws over the
   pitch (role targets, where each player is going, the current formation's triangulation).
 
@@ -14,7 +17,7 @@ Import them from here: ``from soccer_sim.team_hooks import Drawable, Drawing, Re
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Protocol, runtime_checkable
+from typing import Any, Protocol, Sequence, runtime_checkable
 
 import numpy as np
 
@@ -81,4 +84,15 @@ class Drawable(Protocol):
 
     def drawing(self) -> Drawing:
         """The team's current drawing (called once per recorded cycle)."""
+        ...
+
+
+@runtime_checkable
+class ChoosesPlayerTypes(Protocol):
+    """A team that picks rcssserver's heterogeneous player types for its players."""
+
+    def choose_player_types(self, types: tuple[Any, ...], side_info: Any) -> Sequence[int]:
+        """One type id per player of the team (row order), from ``types`` (the match's
+        :class:`~soccer_sim.player_types.PlayerType` tuple, type 0 the default); at most
+        ``pt_max`` players of one non-default type. Called once, before ``reset``."""
         ...

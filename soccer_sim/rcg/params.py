@@ -16,6 +16,7 @@ import math
 from collections.abc import Callable, Sequence
 
 from soccer_sim.config import MatchConfig
+from soccer_sim.player_types import PlayerType
 from soccer_sim.rcg.defaults import DEFAULT_PLAYER_TYPE, PLAYER_PARAMS, SERVER_PARAMS
 
 PLAYER_TYPES = 18
@@ -112,9 +113,16 @@ def player_param_line() -> str:
     return _line("player_param", PLAYER_PARAMS)
 
 
-def player_type_lines(config: MatchConfig) -> list[str]:
-    """The 18 ``(player_type (id N) ...)`` lines. Every soccer-sim player is of the default
-    type (id 0), so each line lists the default type's parameters from ``config``: a replay
-    tool that looks a player's type up finds the parameters it played with, whichever id."""
+def player_type_lines(config: MatchConfig, types: Sequence[PlayerType] | None = None) -> list[str]:
+    """The ``(player_type (id N) ...)`` lines, one per player type of the match (``types``, as
+    :func:`soccer_sim.player_types.draw_player_types` draws them; type 0 the default). Without
+    ``types``, 18 lines that all list the default type's parameters from ``config``."""
     pairs = _with([pair for pair in DEFAULT_PLAYER_TYPE if pair[0] != "id"], PLAYER_TYPE_PARAMETERS, config)
-    return [_line("player_type", [("id", str(k)), *pairs]) for k in range(PLAYER_TYPES)]
+    if types is None:
+        return [_line("player_type", [("id", str(k)), *pairs]) for k in range(PLAYER_TYPES)]
+    lines = []
+    for t in types:
+        drawn = t.as_dict()
+        lines.append(_line("player_type", [("id", str(t.id))] + [
+            (name, number(drawn[name]) if name in drawn and t.id != 0 else value) for name, value in pairs]))
+    return lines

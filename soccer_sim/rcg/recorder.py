@@ -110,7 +110,8 @@ class RcgRecorder:
         self._started = time.time() if self.started is None else self.started
         rows = state.pos.shape[0]
         home = state.sizes[0]
-        self._labels = ["((%s %d) 0 " % self._slot(r, home) for r in range(rows)]
+        type_ids = getattr(match, "type_ids", np.zeros(rows, dtype=np.intp))
+        self._labels = ["((%s %d) %d " % (*self._slot(r, home), type_ids[r]) for r in range(rows)]
         self._half_width = match.config.field.half_width
         self._parked = np.array([parking_spot(*self._slot(r, home), self._half_width) for r in range(rows)])
         self.inertia_moment = match.config.physics.inertia_moment
@@ -134,7 +135,7 @@ class RcgRecorder:
         write(HEADER + "\n")
         write(server_param_line(match.config) + "\n")
         write(player_param_line() + "\n")
-        for line in player_type_lines(match.config):
+        for line in player_type_lines(match.config, getattr(match, "player_types", None)):
             write(line + "\n")
         self._write_cycle(match, self._base, ())
         self._marks.remember(state)

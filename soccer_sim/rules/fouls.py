@@ -33,6 +33,7 @@ import numpy as np
 
 from soccer_sim.body import facing
 from soccer_sim.config import FieldConfig
+from soccer_sim.kernels import PT_INERTIA_MOMENT, PT_KICKABLE
 from soccer_sim.rules.judge import Judge
 from soccer_sim.rules.play_modes import PlayModes
 from soccer_sim.state import AWAY, HOME, NO_PLAYER, EventKind, PlayMode, WorldState
@@ -72,6 +73,10 @@ class FoulJudge(Judge):
         self._kickable = config.physics.kickable_distance
         self._inertia = config.physics.inertia_moment
         self._sizes = 2.0 * config.physics.player_radius
+        self.types: np.ndarray | None = None
+        """Each player row's type parameters (:attr:`soccer_sim.kinematics.Kinematics.types`),
+        set by the match: a fouled player's kickable distance and ``inertia_moment``; None: the
+        physics config's."""
 
     def tackle_taken(self, state: WorldState, row: int, foul: bool, dashed: np.ndarray) -> None:
         """``row``'s tackle pushed the ball; ``foul``: it was a foul tackle; ``dashed``: (P,)
@@ -96,11 +101,13 @@ class FoulJudge(Judge):
         angle = math.atan2(by - ty, bx - tx)
         ca, sa = math.cos(angle), math.sin(angle)
         charge = yellow = red = False
+        types = self.types
         for p in opponents:
             if not state.present[p]:
                 continue
             px, py = float(state.pos[p, 0]), float(state.pos[p, 1])
-            if math.hypot(bx - px, by - py) > self._kickable:
+            kickable = self._kickable if types is None else float(types[p, PT_KICKABLE])
+            if math.hypot(bx - px, by - py) > kickable:
                 continue
             seen = False
             if foul:
@@ -116,7 +123,7 @@ class FoulJudge(Judge):
             if ahead < 0.0 or abs(side) > self._sizes:
                 continue
             fx, fy = facing(float(state.vel[p, 0]), float(state.vel[p, 1]), bx - px, by - py,
-                            self._inertia)
+                            self._inertia if types is None else float(types[p, PT_INERTIA_MOMENT]))
             if fx * ca + fy * sa < 0.0:  # the opponent's body more than 90° off the tackle's line
                 continue
             if foul:

@@ -17,6 +17,13 @@ line. A kick by the holder releases the ball.
 **Back-pass** (``back_pass_rule``): a catch of a ball whose last play was a team-mate's kick
 (a pass in flight) is refused: BACK_PASS event and an indirect free kick for the opponents
 (outside the goal area).
+
+**Player types** (:mod:`soccer_sim.player_types`): a goalkeeper whose type stretches the
+catchable length (rcssserver's ``catchable_area_l_stretch``, s >= 1) also catches a ball up
+to ``s * catch_length`` away, with a probability falling linearly from 1 at
+``catch_length`` to 0 at ``s * catch_length`` (rcssserver's rule with its default
+``catch_probability`` of 1), drawn from :attr:`GoalkeeperJudge.rng`. The default type
+(s = 1) never draws.
 """
 
 from __future__ import annotations
@@ -47,6 +54,10 @@ class GoalkeeperJudge(Judge):
         self.modes = modes
         self._passer = passer
         self._last_attempt = [_NEVER, _NEVER]
+        self.catch_stretch: np.ndarray | None = None
+        """Each player row's ``catchable_area_l_stretch`` (set by the match); None: 1 for all."""
+        self.rng: np.random.Generator | None = None
+        """The generator of the stretched area's catch draws (set by the match)."""
 
     def catch_requested(self, state: WorldState, team: int, kickers: np.ndarray) -> None:
         """A catch request by ``team``'s goalkeeper (see the module docstring)."""
@@ -66,8 +77,14 @@ class GoalkeeperJudge(Judge):
         if not (in_penalty_area(f, direction, gx, gy) and in_penalty_area(f, direction, bx, by)):
             return  # not a catch situation: no attempt, no ban
         self._last_attempt[team] = state.cycle
-        if math.hypot(bx - gx, by - gy) > rules.catch_length:
-            return
+        distance = math.hypot(bx - gx, by - gy)
+        if distance > rules.catch_length:
+            stretch = 1.0 if self.catch_stretch is None else float(self.catch_stretch[row])
+            reach = rules.catch_length * stretch
+            if distance > reach or self.rng is None:
+                return
+            if self.rng.random() >= 1.0 - (distance - rules.catch_length) / (reach - rules.catch_length):
+                return
         n = modes.n
         passer = self._passer()
         if rules.back_pass_rule and passer != NO_PLAYER and passer != row and state.team_of(passer) == team:

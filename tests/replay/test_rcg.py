@@ -137,7 +137,10 @@ def test_header_parameters_and_player_types(logged) -> None:
     assert log.server_params["goal_width"] == "14.02" and log.server_params["player_size"] == "0.3"
     assert log.player_params["player_types"] == "18"
     assert [t["id"] for t in log.player_types] == [str(k) for k in range(18)]
-    assert all(t["player_decay"] == "0.4" and t["kickable_margin"] == "0.7" for t in log.player_types)
+    assert log.player_types[0]["player_decay"] == "0.4" and log.player_types[0]["kickable_margin"] == "0.7"
+    drawn = log.player_types[1:]  # the match's drawn types (soccer_sim.player_types)
+    assert all(0.3 <= float(t["player_decay"]) <= 0.5 and 0.6 <= float(t["kickable_margin"]) <= 0.8 for t in drawn)
+    assert len({t["player_decay"] for t in drawn}) == 17
 
 
 def test_show_lines_have_rcssservers_shape(logged) -> None:
