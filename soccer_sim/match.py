@@ -174,8 +174,8 @@ class Match:
         """Absolute commands of this cycle: per player row ``[dash_x, dash_y, kick_x, kick_y]``."""
         self._dash = self.commands[:, 0:2]
         self._kick = self.commands[:, 2:4]
-        self.frames = (TeamFrame(HOME, home_name, state, self.commands),
-                       TeamFrame(AWAY, away_name, state, self.commands))
+        self.frames = (TeamFrame(HOME, home_name, state, self.commands, self.type_ids),
+                       TeamFrame(AWAY, away_name, state, self.commands, self.type_ids))
         self._end = setup.end
         self._condition: str | None = None
         """The scenario's end condition that ended the match, if one did."""

@@ -123,6 +123,12 @@ class TeamView:
     """(n,) int: cycles during which each player still cannot act (after a tackle,
     ``TackleConfig.tackle_cycles``, or after being fouled, ``foul_cycles``); its commands are
     ignored while above zero. Zeros in a view built by hand."""
+    own_types: np.ndarray | None = None
+    """(n,) int: each of our players' heterogeneous player type, an index into
+    ``SideInfo.player_types`` (0: the default type; fixed for the match). Zeros in a view
+    built by hand."""
+    opp_types: np.ndarray | None = None
+    """(m,) int: the opponents' player types, as rcssserver's online coach sees them."""
 
     def __post_init__(self) -> None:
         n = len(self.stamina)
@@ -136,6 +142,10 @@ class TeamView:
             self.opp_present = np.ones(len(self.opp_pos), dtype=bool)
         if self.frozen is None:
             self.frozen = np.zeros(n, dtype=np.int64)
+        if self.own_types is None:
+            self.own_types = np.zeros(n, dtype=np.intp)
+        if self.opp_types is None:
+            self.opp_types = np.zeros(len(self.opp_pos), dtype=np.intp)
 
 
 @dataclass(slots=True)

@@ -32,10 +32,13 @@ class TeamFrame:
     ``state`` is the match's world state: the frame reads its arrays (which the state owns and
     never replaces) every cycle, and the sides' sizes from its ``sizes``. ``commands`` is the
     match's (P, 4) absolute command buffer (``[dash_x, dash_y, kick_x, kick_y]`` per player
-    row, P players of both sides); this team writes its own rows.
+    row, P players of both sides); this team writes its own rows. ``type_ids``: the match's (P,)
+    player type per row, written once the teams have chosen (the view shows windows onto it;
+    None: everyone the default type, for frames built without a match).
     """
 
-    def __init__(self, team: int, name: str, state: WorldState, commands: np.ndarray) -> None:
+    def __init__(self, team: int, name: str, state: WorldState, commands: np.ndarray,
+                 type_ids: np.ndarray | None = None) -> None:
         home, away = state.sizes
         n = home if team == 0 else away
         total = home + away
@@ -58,6 +61,8 @@ class TeamFrame:
             ball=self._pos[total], ball_vel=self._vel[total], stamina=np.empty(n), effort=np.empty(n),
             capacity=np.empty(n), present=_read_only(state.present[own]), opp_present=_read_only(state.present[opp]),
             frozen=_read_only(state.frozen[own]),
+            own_types=None if type_ids is None else _read_only(type_ids[own]),
+            opp_types=None if type_ids is None else _read_only(type_ids[opp]),
         )
         self.tackling = False
         """Whether the last command read asked any player to tackle (then :attr:`tackle` and

@@ -100,6 +100,18 @@ def test_the_teams_are_told_their_own_parameters_and_the_opponents_types():
     assert match.kinematics.types[11 + 8, 6] == match.player_types[6].player_decay
 
 
+def test_every_view_shows_both_sides_types_read_only():
+    home, away = Sprinters(), Sprinters(picks=[0, 0, 0, 0, 0, 0, 0, 5, 6, 7, 0])
+    match = Match(home, away, seed=4, config=CONFIG)
+    match.start()
+    match.step()
+    home_view, away_view = (frame.view for frame in match.frames)
+    assert tuple(away_view.own_types) == (0, 0, 0, 0, 0, 0, 0, 5, 6, 7, 0) == tuple(home_view.opp_types)
+    assert tuple(home_view.own_types) == home.info.own_types == tuple(away_view.opp_types)
+    with pytest.raises(ValueError):
+        home_view.own_types[0] = 3
+
+
 def test_types_are_deterministic_per_seed_and_play_differs_from_default():
     a, b = Match(ChaserTeam(), IdleTeam(), seed=9, config=CONFIG), Match(ChaserTeam(), IdleTeam(), seed=9,
                                                                         config=CONFIG)
