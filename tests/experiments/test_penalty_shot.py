@@ -241,6 +241,7 @@ def test_a_resumed_run_equals_one_run_and_results_show_repeats_its_tables(tmp_pa
             == (tmp_path / "whole" / "penalty_shot_tests.csv").read_text())
 
 
+@pytest.mark.slow  # one and two workers give identical records: test_runner_resume keeps it in the default run
 def test_the_tables_are_the_same_with_one_and_two_workers(tmp_path, capsys):
     assert _run(tmp_path, "one", "--workers", "1") == 0
     one = capsys.readouterr().out
