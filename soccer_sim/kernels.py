@@ -109,6 +109,19 @@ def _perturb(vx: float, vy: float, rand: float, length_draw: float,
 
 
 @njit(cache=True, nogil=True)
+def _capped_request(x: float, y: float) -> tuple[float, float, float]:  # pragma: no cover - compiled
+    """A dash or kick request (x, y) and its length, shortened to :data:`REQUEST_CAP` in the same
+    direction when longer (or overflowing)."""
+    size = math.sqrt(x * x + y * y)
+    if size > REQUEST_CAP:
+        big = max(abs(x), abs(y))
+        x = x / big * REQUEST_CAP
+        y = y / big * REQUEST_CAP
+        size = math.sqrt(x * x + y * y)
+    return x, y, size
+
+
+@njit(cache=True, nogil=True)
 def dash_players(vel: np.ndarray, ball_vel: np.ndarray, stamina: np.ndarray, effort: np.ndarray,
                  recovery: np.ndarray, capacity: np.ndarray, dash: np.ndarray, noise: np.ndarray,
                  params: np.ndarray, types: np.ndarray, speed_out: np.ndarray) -> float:  # pragma: no cover
@@ -125,18 +138,11 @@ def dash_players(vel: np.ndarray, ball_vel: np.ndarray, stamina: np.ndarray, eff
     rec_thr, rec_dec, rec_min = p.recover_dec_thr, p.recover_dec, p.recover_min
     eff_dec_thr, eff_dec = p.effort_dec_thr, p.effort_dec
     eff_inc_thr, eff_inc = p.effort_inc_thr, p.effort_inc
-    request_cap = REQUEST_CAP
     fastest = 0.0
     for i in range(vel.shape[0]):
         power_rate, extra, speed_max = types[i, PT_DASH_POWER_RATE], types[i, PT_EXTRA_STAMINA], types[i, PT_SPEED_MAX]
         inc_max, eff_min, eff_max = types[i, PT_STAMINA_INC], types[i, PT_EFFORT_MIN], types[i, PT_EFFORT_MAX]
-        ax, ay = dash[i, 0], dash[i, 1]
-        size = math.sqrt(ax * ax + ay * ay)
-        if size > request_cap:  # huge (or overflowing) request: same direction, finite length
-            big = max(abs(ax), abs(ay))
-            ax = ax / big * request_cap
-            ay = ay / big * request_cap
-            size = math.sqrt(ax * ax + ay * ay)
+        ax, ay, size = _capped_request(dash[i, 0], dash[i, 1])
         vx, vy = vel[i, 0], vel[i, 1]
         if size > 0.0:
             rate = 1.0
@@ -222,20 +228,13 @@ def apply_kicks(kickers: np.ndarray, pos: np.ndarray, vel: np.ndarray, ball: np.
     :data:`KICK_PARAMS` record; ``types``: the per-player parameter table (``PT_*`` columns)."""
     p = params[0]
     kick_max, touch = p.kick_max, p.touch_distance
-    request_cap = REQUEST_CAP
     ax = ay = 0.0
     bx, by = ball[0], ball[1]
     speed_rate = 0.5 + p.speed_rate_scale * math.sqrt(ball_vel[0] * ball_vel[0] + ball_vel[1] * ball_vel[1])
     for k in range(kickers.shape[0]):
         row = kickers[k]
         margin = types[row, PT_KICKABLE_MARGIN]
-        kx, ky = kick[row, 0], kick[row, 1]
-        power = math.sqrt(kx * kx + ky * ky)
-        if power > request_cap:  # huge (or overflowing) request: same direction, finite length
-            big = max(abs(kx), abs(ky))
-            kx = kx / big * request_cap
-            ky = ky / big * request_cap
-            power = math.sqrt(kx * kx + ky * ky)
+        kx, ky, power = _capped_request(kick[row, 0], kick[row, 1])
         if power > kick_max:
             kx *= kick_max / power
             ky *= kick_max / power
