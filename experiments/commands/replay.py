@@ -60,6 +60,9 @@ def _open_viewer(path: str) -> int:
 
     if not os.path.isfile(path):
         return _fail(f"{path}: no such replay file")
+    if _is_game_log(path):
+        return _fail(f"{path} is an rcssserver game log, not a rerun replay: open it with rcssmonitor or "
+                     f"soccerwindow2 (soccer-sim play --record writes rerun replays)")
     viewer = shutil.which("rerun")
     if viewer is None:
         return _fail("the rerun viewer is not installed: pip install rerun-sdk (it provides the `rerun` program)")
@@ -69,6 +72,12 @@ def _open_viewer(path: str) -> int:
         return _fail(f"no display to open the viewer on; copy {path} to a machine with one and run "
                      f"`rerun {path}`, or draw it here: soccer-sim replay {path} --png field.png")
     return subprocess.call([viewer, path])
+
+
+def _is_game_log(path: str) -> bool:
+    """Whether ``path`` starts like an rcssserver game log (``ULG`` and its version)."""
+    with open(path, "rb") as file:
+        return file.read(3) == b"ULG"
 
 
 def _draw(path: str, png: str, cycle: int | None) -> int:

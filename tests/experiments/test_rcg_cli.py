@@ -99,3 +99,15 @@ def test_the_game_logs_kernel_is_warmed_with_the_simulators_own(tmp_path) -> Non
     run_match("idle", "idle", config=MatchConfig(max_cycles=3), recorders=[RcgRecorder(tmp_path / "m.rcg")])
     # the argument types the recorder calls it with
     assert engine[0].signature in [repr(tuple(signature)) for signature in facings.signatures]
+
+
+def test_replay_of_a_game_log_says_which_tools_open_it(tmp_path, capsys) -> None:
+    from experiments.cli import main
+
+    log = tmp_path / "m.rcg"
+    log.write_text("ULG6\n")
+    before = log.read_bytes()
+    assert main(["replay", str(log)]) == 2
+    err = capsys.readouterr().err
+    assert "rcssserver game log" in err and "rcssmonitor" in err and len(err.strip().splitlines()) == 1
+    assert log.read_bytes() == before
