@@ -218,6 +218,7 @@ def test_a_forfeited_chain_leaves_its_rows_empty_and_the_study_goes_on(tmp_path,
     assert [row["p_value"] == "nan" for row in tests] == [False] * 3 + [True] * 3
 
 
+@pytest.mark.slow  # slow: resuming stays in the default run through the runner's own resume tests
 def test_a_resumed_run_equals_one_run_and_results_show_repeats_its_tables(tmp_path, capsys):
     from experiments.runner import run_matches
 

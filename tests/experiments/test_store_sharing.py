@@ -232,6 +232,7 @@ def _digest(path: Path) -> str:
     return hashlib.sha256(path.read_bytes()).hexdigest()
 
 
+@pytest.mark.slow  # slow: the default run keeps the other store-sharing checks
 def test_a_resume_mixing_code_versions_warns_and_same_code_refuses(tmp_path, capsys) -> None:
     import sqlite3
 
