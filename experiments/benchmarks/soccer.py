@@ -167,7 +167,7 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _from_logs(paths: Sequence[str], roles: str | None) -> list[Figures]:
-    from experiments.benchmarks.helios_roles import helios_labels
+    from experiments.benchmarks.helios_roles import KINDS, helios_labels
     from experiments.benchmarks.soccer_rcg import rcg_figures
     from soccer_sim.rcg import read_rcg
 
@@ -175,4 +175,4 @@ def _from_logs(paths: Sequence[str], roles: str | None) -> list[Figures]:
     if roles is not None:
         shirts = helios_labels(roles)
         labels = {"l": shirts, "r": shirts}
-    return [rcg_figures(read_rcg(path), labels) for path in paths]
+    return [rcg_figures(read_rcg(path), labels, KINDS if labels is not None else None) for path in paths]

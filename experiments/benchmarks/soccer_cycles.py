@@ -27,7 +27,7 @@ Definitions (m; a cycle is 0.1 s):
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 import numpy as np
 
@@ -134,7 +134,15 @@ class CycleFigures:
         }
         return out
 
-    def role_distances(self) -> dict[str, float]:
-        """Per role label: km run by one player holding that role for the whole match."""
-        return {label: self.label_distance[label] / cycles * self.cycles / 1000.0
-                for label, cycles in sorted(self.label_cycles.items()) if cycles}
+    def role_distances(self, groups: Mapping[str, str] | None = None) -> dict[str, float]:
+        """Per role label: km run by one player holding that role for the whole match.
+        ``groups`` (label -> group, e.g. a position's role kind): per group instead, over
+        the labels it maps (labels it does not map are left out)."""
+        distance: dict[str, float] = {}
+        cycles: dict[str, int] = {}
+        for label, count in self.label_cycles.items():
+            key = label if groups is None else groups.get(label)
+            if key is not None:
+                distance[key] = distance.get(key, 0.0) + self.label_distance[label]
+                cycles[key] = cycles.get(key, 0) + count
+        return {key: distance[key] / count * self.cycles / 1000.0 for key, count in sorted(cycles.items()) if count}

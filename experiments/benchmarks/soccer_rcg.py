@@ -49,11 +49,13 @@ _MODE_FIGURES = {"corner_kick": "corners", "kick_in": "kick-ins", "goal_kick": "
 """Play mode (without its side) -> the figure a change to it counts in."""
 
 
-def rcg_figures(log: GameLog, labels: Mapping[str, Sequence[str]] | None = None) -> dict[str, float | None]:
+def rcg_figures(log: GameLog, labels: Mapping[str, Sequence[str]] | None = None,
+                groups: Mapping[str, str] | None = None) -> dict[str, float | None]:
     """Every figure of ``bench soccer`` that the game log defines (None for the others).
     ``labels``: per side letter (``l``, ``r``) the role label of shirt numbers 1..11, for the
-    distance run by role; None leaves those figures out. A ValueError for a log with no show
-    line or without the server parameters the figures need."""
+    distance run by role; None leaves those figures out. ``groups`` (label -> group, e.g.
+    position -> role kind): the distance run by group too. A ValueError for a log with no
+    show line or without the server parameters the figures need."""
     if not log.shows:
         raise ValueError("the game log has no show lines")
     params = log.server_params
@@ -110,6 +112,8 @@ def rcg_figures(log: GameLog, labels: Mapping[str, Sequence[str]] | None = None)
     figures.update(cycles.figures())
     if row_labels is not None:
         figures.update({role_figure(label): km for label, km in cycles.role_distances().items()})
+        if groups is not None:
+            figures.update({role_figure(group): km for group, km in cycles.role_distances(groups).items()})
     return figures
 
 

@@ -78,9 +78,9 @@ def test_a_game_log_gives_the_same_figures_as_the_match_it_records(tmp_path) -> 
     from soccer_sim.rcg import RcgRecorder, read_rcg
 
     path = tmp_path / "match.rcg"
-    live = match_figures("mmdr", "counter-442", 3, 1500, recorders=(RcgRecorder(path),))
+    live = match_figures("mmdr", "counter-442", 2, 700, recorders=(RcgRecorder(path),))
     logged = rcg_figures(read_rcg(path))
-    assert live["kicks"] > 50 and live["kick-ins"] > 0 and live["goalkeeper catches"] > 0
+    assert live["kicks"] > 50 and live["kick-ins"] > 0 and live["goalkeeper catches"] > 0 and live["goal kicks"] > 0
     compared = [name for name in live if logged.get(name) is not None]
     assert len(compared) >= 20
     for name in compared:
@@ -145,3 +145,16 @@ def test_bench_soccer_reads_game_logs_and_shows_what_they_lack(tmp_path, capsys)
     assert rows["passes"][1] in ("-", None) and rows["kicks"][1] not in ("-", None)
     assert main(["bench", "soccer", "--rcg", str(tmp_path / "missing.rcg")]) == 2
     assert "missing.rcg" in capsys.readouterr().err
+
+
+def test_role_distances_by_group_pool_the_labels_of_a_group() -> None:
+    figures = _cycle_figures()
+    figures.start(np.zeros((6, 2)))
+    step = np.zeros((6, 2))
+    step[1] = (1.0, 0.0)   # the centre-back runs 1 m, the full-back 3 m
+    step[2] = (3.0, 0.0)
+    labels = ["goalkeeper", "centre-back", "full-back", "goalkeeper", "centre-back", "full-back"]
+    figures.add(step, np.zeros(2), np.full(6, 8000.0), OUTFIELD, play_on=False, labels=labels)
+    kinds = figures.role_distances({"centre-back": "defender", "full-back": "defender"})
+    assert kinds == {"defender": pytest.approx(1e-3)}   # 4 m over 4 player-cycles of one cycle
+    assert figures.role_distances()["full-back"] == pytest.approx(1.5e-3)
