@@ -5,8 +5,9 @@ The counts come from what the match already records: its statistics
 match report (:mod:`experiments.match_report`: set plays, retakes, offsides, dropped balls)
 and how shots end (:mod:`soccer_sim.analysis.shots`); the per-cycle figures (distance run,
 team length and width, stamina, players near the ball) come from :class:`FiguresRecorder`,
-which feeds :class:`~experiments.benchmarks.soccer_cycles.CycleFigures` exactly as
-:mod:`experiments.benchmarks.soccer_rcg` does from a game log.
+which feeds :class:`~experiments.benchmarks.soccer_cycles.CycleFigures` and
+:class:`~experiments.benchmarks.soccer_plays.PlayFigures` (passes and shots as a log shows
+them) exactly as :mod:`experiments.benchmarks.soccer_rcg` does from a game log.
 
 Every figure is for both teams together (a sum) unless its name says otherwise.
 """
@@ -18,6 +19,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from experiments.benchmarks.soccer_cycles import CycleFigures, log_frame
+from experiments.benchmarks.soccer_plays import PlayFigures
 
 if TYPE_CHECKING:
     from soccer_sim import MatchResult
@@ -44,6 +46,7 @@ class FiguresRecorder:
     def __init__(self, roles: bool = True) -> None:
         self.roles = roles
         self.cycles: CycleFigures | None = None
+        self.plays: PlayFigures | None = None
 
     def on_start(self, match: Match) -> None:
         from soccer_sim.team_hooks import ReportsRoles
@@ -63,6 +66,9 @@ class FiguresRecorder:
         self._unknown = [[None] * size for size in state.sizes]
         self._n = n
         self.cycles.start(log_frame(state.pos, state.home_attacks))
+        f, p = config.field, config.physics
+        self.plays = PlayFigures(team, f.half_length, f.goal_width, p.ball_radius, p.ball_decay)
+        self._mark = len(match.events)
 
     def on_cycle(self, match: Match) -> None:
         from soccer_sim.state import PlayMode
@@ -74,9 +80,28 @@ class FiguresRecorder:
             labels = []
             for i, reporter in enumerate(self._reporters):
                 labels.extend(reporter.role_labels() if reporter is not None else self._unknown[i])
+        play_on = state.play_mode == PlayMode.PLAY_ON
         self.cycles.add(log_frame(state.pos, state.home_attacks), log_frame(state.ball, state.home_attacks),
-                        state.stamina, self._outfield_base & state.present, state.play_mode == PlayMode.PLAY_ON,
-                        labels)
+                        state.stamina, self._outfield_base & state.present, play_on, labels)
+        catches, tackles = self._new_plays(match)
+        ball = np.concatenate((log_frame(state.ball, state.home_attacks), log_frame(state.ball_vel, state.home_attacks)))
+        assert self.plays is not None
+        self.plays.add(np.asarray(match.kickers), catches, tackles, np.asarray(match.touchers), ball, play_on)
+
+    def _new_plays(self, match: Match) -> tuple[np.ndarray, np.ndarray]:
+        """Rows that caught the ball and rows that won a tackle in this cycle (its new events)."""
+        from soccer_sim.state import EventKind
+
+        events, state = match.events, match.state
+        catches, tackles = [], []
+        for i in range(self._mark, len(events)):
+            kind = events.kind[i]
+            if kind == EventKind.CATCH:
+                catches.append(state.first_row(events.team[i]) + events.player[i])
+            elif kind == EventKind.TACKLE and events.detail[i] % 2 == 1:
+                tackles.append(state.first_row(events.team[i]) + events.player[i])
+        self._mark = len(events)
+        return np.array(catches, dtype=np.intp), np.array(tackles, dtype=np.intp)
 
     def on_end(self, match: Match) -> None:
         pass
@@ -123,6 +148,8 @@ def match_figures(home: str, away: str, seed: int, cycles: int | None = None, *,
                        recorders=[recorder, *recorders])
     assert recorder.cycles is not None
     figures = counted_figures(result)
+    assert recorder.plays is not None
+    figures.update(recorder.plays.figures())
     figures.update(recorder.cycles.figures())
     figures.update({role_figure(label): km for label, km in recorder.cycles.role_distances().items()})
     return figures

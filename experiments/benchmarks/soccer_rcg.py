@@ -19,6 +19,9 @@ threshold and the relocation limit come from the log's ``server_param`` line). T
   (a catch by side X in that cycle or the one before; soccer-sim counts that restart
   separately, as the catch).
 
+**Passes (kick to kick)** and **shots (ball path)**: as :mod:`experiments.benchmarks.soccer_plays`
+defines them (the pitch's half length is rcssserver's 52.5 m, which the log does not give).
+
 Not in a log, so shown as ``-``: **shots**, **shots ending on a body** and **passes** (their
 definitions, :mod:`soccer_sim.analysis.plays`, need the ball's velocity at the kick, before the
 ball moved and was perturbed, and the body touches of the ball; a show line has the state
@@ -36,11 +39,14 @@ import numpy as np
 
 from experiments.benchmarks.soccer_cycles import CycleFigures
 from experiments.benchmarks.soccer_match import COUNTED, role_figure
+from experiments.benchmarks.soccer_plays import PlayFigures
 from soccer_sim.rcg import GameLog
-from soccer_sim.rcg.mapping import GOALIE, MAX_PLAYER, STAND, TACKLE, TACKLE_FAULT
+from soccer_sim.rcg.mapping import BALL_COLLIDE, GOALIE, MAX_PLAYER, STAND, TACKLE, TACKLE_FAULT
 
 NOT_IN_A_LOG = ("shots", "shots ending on a body", "passes", "set-play retakes", "teammate contacts")
 """Counted figures a game log cannot give (see the module docstring)."""
+HALF_LENGTH = 52.5
+"""Half the length of rcssserver's pitch (m; a constant of the server, not in the log)."""
 _KICK, _CATCH, _TACKLE = 0, 3, 8
 """Indices of the kick, catch and tackle counters in a player's ``(c ...)``."""
 _MODE_FIGURES = {"corner_kick": "corners", "kick_in": "kick-ins", "goal_kick": "goal kicks",
@@ -62,6 +68,8 @@ def rcg_figures(log: GameLog, labels: Mapping[str, Sequence[str]] | None = None,
     try:
         relocation = 3.0 * float(params["player_speed_max"])
         threshold = float(params["recover_dec_thr"]) * float(params["stamina_max"])
+        plays = PlayFigures(np.repeat([0, 1], MAX_PLAYER), HALF_LENGTH, float(params["goal_width"]),
+                            float(params["ball_size"]), float(params["ball_decay"]))
     except (KeyError, ValueError) as exc:
         raise ValueError(f"the game log's server_param line lacks a number for {exc}") from None
     keys = [(side, unum) for side in "lr" for unum in range(1, MAX_PLAYER + 1)]
@@ -85,14 +93,18 @@ def rcg_figures(log: GameLog, labels: Mapping[str, Sequence[str]] | None = None,
             next_mode += 1
         outfield[:] = False
         now = previous_counts.copy()
+        touched, won = [], []
         for p in show.players:
             i = index[(p.side, p.unum)]
             pos[i] = p.x, p.y
             stamina[i] = p.stamina
             outfield[i] = bool(p.state & STAND) and not p.state & GOALIE
             now[i] = p.counts[_KICK], p.counts[_CATCH], p.counts[_TACKLE]
+            if p.state & BALL_COLLIDE:
+                touched.append(i)
             if number and now[i, 2] > previous_counts[i, 2] and p.state & TACKLE and not p.state & TACKLE_FAULT:
                 counts["tackles won"] += 1
+                won.append(i)
             if number and now[i, 1] > previous_counts[i, 1]:
                 catches.add((p.side, show.cycle))
         if number == 0:
@@ -103,12 +115,15 @@ def rcg_figures(log: GameLog, labels: Mapping[str, Sequence[str]] | None = None,
             counts["goalkeeper catches"] += float(rise[:, 1].sum())
             counts["tackles"] += float(rise[:, 2].sum())
             cycles.add(pos, np.array(show.ball[:2]), stamina, outfield, mode == "play_on", row_labels)
+            plays.add(np.flatnonzero(rise[:, 0] > 0), np.flatnonzero(rise[:, 1] > 0), np.array(won, dtype=np.intp),
+                      np.array(touched, dtype=np.intp), np.array(show.ball), mode == "play_on")
         previous_counts = now
     _count_modes(modes, catches, counts)
     if log.teams:
         counts["goals"] = float(log.teams[-1][3] + log.teams[-1][4])
     figures: dict[str, float | None] = {name: (None if name in NOT_IN_A_LOG else value)
                                         for name, value in counts.items()}
+    figures.update(plays.figures())
     figures.update(cycles.figures())
     if row_labels is not None:
         figures.update({role_figure(label): km for label, km in cycles.role_distances().items()})

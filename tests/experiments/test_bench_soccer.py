@@ -81,6 +81,7 @@ def test_a_game_log_gives_the_same_figures_as_the_match_it_records(tmp_path) -> 
     live = match_figures("mmdr", "counter-442", 2, 700, recorders=(RcgRecorder(path),))
     logged = rcg_figures(read_rcg(path))
     assert live["kicks"] > 50 and live["kick-ins"] > 0 and live["goalkeeper catches"] > 0 and live["goal kicks"] > 0
+    assert live["passes (kick to kick)"] > 10
     compared = [name for name in live if logged.get(name) is not None]
     assert len(compared) >= 20
     for name in compared:
@@ -158,3 +159,69 @@ def test_role_distances_by_group_pool_the_labels_of_a_group() -> None:
     kinds = figures.role_distances({"centre-back": "defender", "full-back": "defender"})
     assert kinds == {"defender": pytest.approx(1e-3)}   # 4 m over 4 player-cycles of one cycle
     assert figures.role_distances()["full-back"] == pytest.approx(1.5e-3)
+
+
+def test_compare_sets_the_stored_real_server_figures_beside_ours(tmp_path, capsys) -> None:
+    from experiments.benchmarks.soccer import REAL_SERVER_FIGURES, real_server_rows
+    from soccer_sim import MatchConfig, run_match
+    from soccer_sim.rcg import RcgRecorder
+
+    stored = real_server_rows()
+    assert len(stored) >= 6 and all(match["goals"] is not None and match["passes"] is None for match in stored)
+    path = tmp_path / "short.rcg"
+    run_match("chaser", "chaser", seed=1, config=MatchConfig(max_cycles=100), recorders=[RcgRecorder(path)])
+    assert main(["bench", "soccer", "--rcg", str(path), "--compare", "--json"]) == 0
+    table = json.loads(capsys.readouterr().out)["tables"][0]
+    assert len(table["columns"]) == 5
+    rows = {row[0]: row for row in table["rows"]}
+    goals = np.mean([match["goals"] for match in stored])
+    assert rows["goals"][3] == pytest.approx(goals, abs=0.006)
+    assert "distance run by centre-back (km per player)" in rows  # helios-base's positions
+    bad = tmp_path / "bad.json"
+    bad.write_text("{}")
+    with pytest.raises(ValueError, match="bad.json"):
+        real_server_rows(bad)
+    assert REAL_SERVER_FIGURES.name == "helios_matches.json"
+
+
+def _plays():
+    from experiments.benchmarks.soccer_plays import PlayFigures
+
+    return PlayFigures(np.array([0, 0, 0, 1, 1, 1]), half_length=52.5, goal_width=14.02, ball_radius=0.085,
+                       ball_decay=0.94)
+
+
+NONE = np.array([], dtype=np.intp)
+STILL = np.array([0.0, 0.0, 0.0, 0.0])
+
+
+def test_passes_kick_to_kick_are_broken_by_opponents_catches_and_stoppages() -> None:
+    plays = _plays()
+    plays.add(np.array([1]), NONE, NONE, NONE, STILL, True)
+    plays.add(NONE, NONE, NONE, np.array([2]), STILL, True)   # a team-mate's body: the pass goes on
+    plays.add(np.array([2]), NONE, NONE, NONE, STILL, True)   # 1 -> 2
+    plays.add(np.array([1]), NONE, NONE, NONE, STILL, True)   # 2 -> 1
+    assert plays.passes == 2
+    plays.add(NONE, NONE, NONE, np.array([4]), STILL, True)   # off an opponent: no pass
+    plays.add(np.array([2]), NONE, NONE, NONE, STILL, True)
+    plays.add(NONE, NONE, NONE, NONE, STILL, False)           # a stoppage: no pass
+    plays.add(np.array([1]), NONE, NONE, NONE, STILL, True)
+    plays.add(NONE, np.array([0]), NONE, NONE, STILL, True)   # 1 -> the keeper's catch is a pass ...
+    plays.add(np.array([2]), NONE, NONE, NONE, STILL, True)   # ... but the catch ends the chain
+    plays.add(np.array([3]), NONE, NONE, NONE, STILL, True)   # to an opponent: no pass
+    plays.add(np.array([4, 5]), NONE, NONE, NONE, STILL, True)  # two players at once: no pass
+    plays.add(np.array([4]), NONE, NONE, NONE, STILL, True)
+    assert plays.passes == 3
+
+
+def test_shots_follow_the_ball_path_to_the_goal_the_kicker_attacks() -> None:
+    plays = _plays()
+    toward_away_goal = np.array([40.0, 0.0, 2.0, 0.1])     # reaches x = 52.585 at y = 0.6
+    plays.add(np.array([1]), NONE, NONE, NONE, toward_away_goal, True)
+    assert plays.shots == 1
+    plays.add(np.array([4]), NONE, NONE, NONE, toward_away_goal, True)  # away attacks -x: not a shot
+    plays.add(np.array([1]), NONE, NONE, NONE, np.array([40.0, 0.0, 0.5, 0.0]), True)  # rolls 8.3 m: short
+    plays.add(np.array([1]), NONE, NONE, NONE, np.array([40.0, 0.0, 2.0, 1.5]), True)  # wide of the post
+    assert plays.shots == 1
+    plays.add(np.array([4]), NONE, NONE, NONE, np.array([-40.0, 3.0, -2.0, 0.0]), True)
+    assert plays.shots == 2

@@ -5,7 +5,8 @@ helios-base's role labels (:mod:`experiments.benchmarks.helios_roles`).
 
 usage (from the repository root):
     python tests/data/rcssserver/probes/helios_figures.py FORMATION.conf LOG.rcg [LOG.rcg ...]
-FORMATION.conf: helios-base's src/formations-dt/normal-formation.conf.
+FORMATION.conf: helios-base's src/formations-dt/normal-formation.conf. Matches already in
+the file whose log is not given again are kept (so logs can be added a few at a time).
 """
 
 from __future__ import annotations
@@ -26,16 +27,20 @@ OUT = Path(__file__).resolve().parents[1] / "helios_matches.json"
 
 def main(formation: str, logs: list[str]) -> None:
     shirts = helios_labels(formation)
-    matches = []
+    names = {os.path.basename(path) for path in logs}
+    kept = json.loads(OUT.read_text())["matches"] if OUT.exists() else []
+    matches = [match for match in kept if match["log"] not in names]
+    params: dict[str, str] = {}
     for path in logs:
         log = read_rcg(path)
+        params = params or log.server_params
         figures = rcg_figures(log, {"l": shirts, "r": shirts}, KINDS)
         _, left, right, left_goals, right_goals = log.teams[-1]
         matches.append({"log": os.path.basename(path), "teams": [left, right], "score": [left_goals, right_goals],
                         "cycles": log.shows[-1].cycle,
                         "figures": {k: (None if v is None else round(v, 4)) for k, v in figures.items()}})
         print(os.path.basename(path), left_goals, right_goals, flush=True)
-    params = read_rcg(logs[0]).server_params
+    matches.sort(key=lambda match: match["log"])
     OUT.write_text(json.dumps({
         "source": "rcssserver 19.0.0, helios-base v helios-base, full matches (2 x 3000 cycles, synchronous mode), "
                   "played one at a time by probes/play_helios_matches.sh; figures by bench soccer --rcg "
