@@ -225,3 +225,11 @@ def test_shots_follow_the_ball_path_to_the_goal_the_kicker_attacks() -> None:
     assert plays.shots == 1
     plays.add(np.array([4]), NONE, NONE, NONE, np.array([-40.0, 3.0, -2.0, 0.0]), True)
     assert plays.shots == 2
+
+
+def test_workers_play_the_same_matches() -> None:
+    from experiments.benchmarks.soccer import play_all
+
+    tasks = [("chaser", "idle", 0), ("idle", "chaser", 1)]
+    alone = play_all(tasks, 60, workers=1)   # (first: the forked workers inherit what it loaded)
+    assert play_all(tasks, 60, workers=2) == alone
