@@ -9,6 +9,9 @@ A team that implements one of these protocols gets more out of the tools around 
   without it plays every player as the default type 0.
 * :class:`Drawable`: ``drawing()`` returns a :class:`Drawing` that a replay draws over the
   pitch (role targets, where each player is going, the current formation's triangulation).
+* :class:`ReportsRoles`: ``role_labels()`` names each player's current role (e.g.
+  ``"defender"``), so that ``bench soccer`` can split the distance run by role. Only that
+  benchmark calls it (once per cycle); a normal match never does.
 
 Both are checked structurally (``isinstance(team, Drawable)``), so a team needs no base class.
 Import them from here: ``from soccer_sim.team_hooks import Drawable, Drawing, ReportsStatistics``.
@@ -95,4 +98,15 @@ class ChoosesPlayerTypes(Protocol):
         """One type id per player of the team (row order), from ``types`` (the match's
         :class:`~soccer_sim.player_types.PlayerType` tuple, type 0 the default); at most
         ``pt_max`` players of one non-default type. Called once, before ``reset``."""
+        ...
+
+
+@runtime_checkable
+class ReportsRoles(Protocol):
+    """A team that can name the role each of its players is playing now."""
+
+    def role_labels(self) -> Sequence[str]:
+        """One label per player of the team (row order), e.g. ``"goalkeeper"``,
+        ``"defender"`` or a finer name such as ``"centre-back"``; any strings will do (readers
+        group figures by the label as given). Called after the team's ``act`` of a cycle."""
         ...

@@ -75,6 +75,7 @@ class FormationTeam:
         self.name = name or assigner
         self.formation_set = formations.load_builtin(self.style.system)
         kinds = [role.kind for role in self.formation_set.roles]
+        self._role_kinds = kinds
         if kinds.count("goalkeeper") != 1:
             raise ValueError(f"formation set {self.style.system!r} needs exactly one goalkeeper role")
         self._goalie_role = kinds.index("goalkeeper")
@@ -369,6 +370,19 @@ class FormationTeam:
         cycles: the largest is the assignment's makespan), and the share of role-cycles a role
         was unfilled (its player farther than ``unfilled_distance``)."""
         return self.figures.statistics()
+
+    def role_labels(self) -> list[str]:
+        """Each player's current role kind (row order): the goalkeeper's, then each outfield
+        player's assigned role (its own formation role before the first assignment)."""
+        kinds = self._role_kinds
+        labels = [kinds[r] for r in range(self.n)]
+        if self._has_outfield:
+            roles = self._match_roles if self.role_of_player is None else self._match_roles[self.role_of_player]
+            for player, role in zip(self.outfield.tolist(), roles.tolist()):
+                labels[player] = kinds[role]
+        if 0 <= self.goalie < self.n:
+            labels[self.goalie] = kinds[self._goalie_role]
+        return labels
 
     def drawing(self) -> Drawing:
         """What a replay may draw (team frame): each role's target, where each player is

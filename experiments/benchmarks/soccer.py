@@ -1,106 +1,178 @@
-"""``soccer-sim bench soccer``: what the play between two teams looks like, in numbers.
+"""``soccer-sim bench soccer``: what the play between built-in teams looks like, in numbers.
 
-Plays ``--matches`` matches on consecutive seeds (sides as given) and prints the mean per
-match, with its standard error, of: total goals, shots, shots that ended on a body
-(:mod:`soccer_sim.analysis.shots`), kicks, passes, tackles, fouls, free kicks, offside calls,
-teammate contacts, and the mean number of players (of both teams) within 2 m of the ball
-per play-on cycle (a measure of scrums: well-spaced teams keep it near 1-2). These are the
-figures by which the simulator's fidelity and the built-in teams are judged; speed is
-``bench match``'s job.
+With neither ``--home`` nor ``--away`` it plays the default set of pairings
+(:data:`~experiments.benchmarks.soccer_pairings.PAIRINGS`: 8 pairings, each on both sides
+with the same seeds, ``--matches`` seeds per pairing and side: 48 matches by default); with
+both, that one pairing, sides as given. It prints the mean per match, with its standard
+error, of every figure of :mod:`experiments.benchmarks.soccer_match` (both teams together
+unless the name says otherwise): goals, shots, passes, kicks, tackles, set plays, offsides,
+catches, retakes, dropped balls, distance run per team and by role, team length and width
+(also with the ball in midfield), the share of outfield player-cycles short of stamina, and
+the players near the ball. ``--rcg FILE...`` computes the same figures, with the same
+definitions, from rcssserver game logs instead (:mod:`experiments.benchmarks.soccer_rcg`;
+``--roles`` names the formation file that labels the players' roles), and ``--compare``
+sets the real server's figures (helios-base v helios-base,
+``tests/data/rcssserver/helios_matches.json``) beside ours. Speed is ``bench match``'s job.
 """
 
 from __future__ import annotations
 
 import argparse
-from typing import TYPE_CHECKING
+import json
+import math
+from collections.abc import Iterable, Sequence
+from pathlib import Path
 
 import numpy as np
 
-from experiments.benchmarks import add_match_arguments
 
-if TYPE_CHECKING:
-    from soccer_sim.match import Match
+REAL_SERVER_FIGURES = Path(__file__).resolve().parents[2] / "tests" / "data" / "rcssserver" / "helios_matches.json"
+"""The real server's figures per match (helios-base v helios-base), as ``--compare`` reads them."""
 
-CROWD_RADIUS = 2.0
-"""Players whose centre is within this distance of the ball's centre count as near it (m)."""
-
-
-class NearBallRecorder:
-    """Counts, over the play-on cycles, the players within :data:`CROWD_RADIUS` of the ball."""
-
-    def __init__(self) -> None:
-        self.cycles = 0
-        self.near = 0
-
-    def on_start(self, match: Match) -> None:
-        self.cycles = 0
-        self.near = 0
-
-    def on_cycle(self, match: Match) -> None:
-        from soccer_sim.state import PlayMode
-
-        state = match.state
-        if state.play_mode != PlayMode.PLAY_ON:
-            return
-        offsets = state.pos - state.ball
-        self.cycles += 1
-        self.near += int(np.count_nonzero(np.einsum("ij,ij->i", offsets, offsets) <= CROWD_RADIUS ** 2))
-
-    def on_end(self, match: Match) -> None:
-        pass
-
-    @property
-    def mean(self) -> float:
-        """Mean number of players near the ball per play-on cycle."""
-        return self.near / self.cycles if self.cycles else 0.0
+Figures = dict[str, float | None]
+"""One match's figures by name (None: not defined for that match)."""
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    add_match_arguments(parser, matches=10)
+    from experiments.arguments import positive_int
+
+    parser.add_argument("--home", default=None, help="home team (with --away: play this one pairing)")
+    parser.add_argument("--away", default=None, help="away team (with --home)")
+    parser.add_argument("--matches", type=positive_int, default=3,
+                        help="seeds per pairing and side (default: 3; 48 matches over the default pairings)")
+    parser.add_argument("--cycles", type=positive_int, default=None, help="cycles per match (default: a full match)")
+    parser.add_argument("--seed", type=int, default=0, help="seed of the first match; seed i is seed + i")
+    parser.add_argument("--workers", type=positive_int, default=1, help="matches played at once (default: 1)")
+    parser.add_argument("--rcg", nargs="+", metavar="FILE", default=None,
+                        help="compute the figures from these rcssserver game logs instead of playing")
+    parser.add_argument("--roles", metavar="FILE", default=None,
+                        help="with --rcg: a helios-base formation file naming every shirt number's role")
+    parser.add_argument("--compare", action="store_true",
+                        help="also show the real server's figures (helios-base v helios-base) beside ours")
+
+
+def matches_to_play(home: str | None, away: str | None, seeds: int, seed: int = 0) -> list[tuple[str, str, int]]:
+    """(home, away, seed) of every match: the one pairing given, or every default pairing on
+    both sides with the same seeds; a ValueError if only one of the teams is given."""
+    from experiments.benchmarks.soccer_pairings import PAIRINGS
+
+    if (home is None) != (away is None):
+        raise ValueError("give both --home and --away (one pairing) or neither (the default pairings)")
+    if home is not None:
+        return [(home, away, seed + i) for i in range(seeds)]
+    return [(a, b, seed + i) for first, second in PAIRINGS for a, b in ((first, second), (second, first))
+            for i in range(seeds)]
+
+
+def _play(task: tuple[str, str, int, int | None]) -> Figures:
+    from experiments.benchmarks.soccer_match import match_figures
+
+    home, away, seed, cycles = task
+    return match_figures(home, away, seed, cycles)
+
+
+def play_all(tasks: Sequence[tuple[str, str, int]], cycles: int | None, workers: int = 1) -> list[Figures]:
+    """The figures of every match of ``tasks``, in order (``workers`` processes at once)."""
+    jobs = [(home, away, seed, cycles) for home, away, seed in tasks]
+    if workers <= 1 or len(jobs) <= 1:
+        return [_play(job) for job in jobs]
+    from concurrent.futures import ProcessPoolExecutor
+
+    with ProcessPoolExecutor(max_workers=min(workers, len(jobs))) as pool:
+        return list(pool.map(_play, jobs))
 
 
 def measure(home: str, away: str, matches: int, seed: int = 0, cycles: int | None = None) -> dict[str, np.ndarray]:
-    """Play the matches and return one array per figure (one value per match)."""
-    from experiments.match_report import match_report
-    from soccer_sim import MatchConfig, run_match
-    from soccer_sim.analysis.shots import shot_endings
-    from soccer_sim.state import EventKind
+    """Play one pairing on ``matches`` consecutive seeds; one array per figure (one value per
+    match, NaN where a match does not define it)."""
+    return by_figure(play_all(matches_to_play(home, away, matches, seed), cycles))
 
-    config = MatchConfig(max_cycles=cycles)
-    rows: dict[str, list[float]] = {name: [] for name in (
-        "goals", "shots", "shots ending on a body", "kicks", "passes", "tackles", "fouls", "free kicks",
-        "offside calls", "teammate contacts", "players within 2 m of the ball")}
-    for i in range(matches):
-        near = NearBallRecorder()
-        result = run_match(home, away, seed=seed + i, config=config, recorders=[near])
-        home_stats, away_stats = result.statistics
-        rows["goals"].append(sum(result.score))
-        rows["shots"].append(home_stats.shots + away_stats.shots)
-        rows["shots ending on a body"].append(sum(ending == "body" for _, ending in shot_endings(result.events)))
-        rows["kicks"].append(home_stats.kicks + away_stats.kicks)
-        rows["passes"].append(home_stats.passes + away_stats.passes)
-        rows["tackles"].append(home_stats.tackles + away_stats.tackles)
-        rows["fouls"].append(home_stats.fouls + away_stats.fouls)
-        rows["free kicks"].append(sum(side["free_kick"] for side in match_report(result).set_plays))
-        rows["offside calls"].append(len(result.events.of_kind(EventKind.OFFSIDE)))
-        rows["teammate contacts"].append(home_stats.teammate_contacts + away_stats.teammate_contacts)
-        rows["players within 2 m of the ball"].append(near.mean)
-    return {name: np.asarray(values, dtype=float) for name, values in rows.items()}
+
+def by_figure(rows: Iterable[Figures]) -> dict[str, np.ndarray]:
+    """Per figure name (in first-seen order), its values over the matches (NaN: undefined)."""
+    rows = list(rows)
+    names: dict[str, None] = {}
+    for row in rows:
+        names.update(dict.fromkeys(row))
+    return {name: np.array([np.nan if row.get(name) is None else float(row[name]) for row in rows])
+            for name in names}
+
+
+def mean_and_error(values: np.ndarray) -> tuple[float, float]:
+    """Mean and standard error of the defined (non-NaN) values; NaN for what cannot be had."""
+    defined = values[~np.isnan(values)]
+    if defined.size == 0:
+        return math.nan, math.nan
+    error = float(defined.std(ddof=1) / np.sqrt(defined.size)) if defined.size > 1 else math.nan
+    return float(defined.mean()), error
+
+
+def real_server_rows(path: Path = REAL_SERVER_FIGURES) -> list[Figures]:
+    """The real server's per-match figures stored at ``path``; a ValueError naming the file if
+    it is missing or malformed."""
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+        return [dict(match["figures"]) for match in data["matches"]]
+    except (OSError, ValueError, KeyError, TypeError) as exc:
+        raise ValueError(f"{path}: cannot read the real server's figures ({exc})") from None
+
+
+def _cell(value: float, digits: int = 2) -> str:
+    return "-" if math.isnan(value) else f"{value:.{digits}f}"
+
+
+def figure_table(title: str, ours: dict[str, np.ndarray], real: dict[str, np.ndarray] | None = None):
+    """The table of means and standard errors (and the real server's beside them)."""
+    from experiments.reporting import Table
+
+    columns = ["per match (both teams)", "mean", "std. error"]
+    if real is not None:
+        columns += ["real server", "std. error "]
+    table = Table(title, columns)
+    names = list(ours) + [name for name in (real or {}) if name not in ours]
+    for name in names:
+        mean, error = mean_and_error(ours.get(name, np.array([np.nan])))
+        row = [name, _cell(mean), _cell(error)]
+        if real is not None:
+            real_mean, real_error = mean_and_error(real.get(name, np.array([np.nan])))
+            row += [_cell(real_mean), _cell(real_error)]
+        table.rows.append(row)
+    retakes = ours.get("set-play retakes")
+    if retakes is not None and not np.isnan(retakes).all():
+        table.rows.append(["set-play retakes, most in one match", _cell(float(np.nanmax(retakes)), 0), "-"]
+                          + (["-", "-"] if real is not None else []))
+    return table
 
 
 def run(args: argparse.Namespace) -> int:
     from experiments.commands.errors import fail
-    from experiments.reporting import Table
     from soccer_sim import ConfigError, TeamError, TeamNotFoundError
+    from soccer_sim.rcg import RcgError
 
     try:
-        figures = measure(args.home, args.away, args.matches, args.seed, args.cycles)
-    except (TeamNotFoundError, TeamError, ConfigError, ValueError) as exc:
+        real = by_figure(real_server_rows()) if args.compare else None
+        if args.rcg is not None:
+            rows, title = _from_logs(args.rcg, args.roles), f"{len(args.rcg)} game logs"
+        else:
+            if args.roles is not None:
+                raise ValueError("--roles goes with --rcg")
+            tasks = matches_to_play(args.home, args.away, args.matches, args.seed)
+            rows = play_all(tasks, args.cycles, args.workers)
+            what = f"{args.home} vs {args.away}" if args.home else "8 default pairings, both sides"
+            title = f"{what}: {len(tasks)} matches (seeds {args.seed}..{args.seed + args.matches - 1})"
+    except (TeamNotFoundError, TeamError, ConfigError, RcgError, ValueError) as exc:
         return fail(str(exc))
-    table = Table(f"{args.home} vs {args.away}: {args.matches} matches (seeds {args.seed}..{args.seed + args.matches - 1})",
-                  ["per match (both teams)", "mean", "std. error"])
-    for name, values in figures.items():
-        error = values.std(ddof=1) / np.sqrt(values.size) if values.size > 1 else float("nan")
-        table.rows.append([name, f"{values.mean():.2f}", f"{error:.2f}"])
-    table.print()
+    figure_table(title, by_figure(rows), real).print()
     return 0
+
+
+def _from_logs(paths: Sequence[str], roles: str | None) -> list[Figures]:
+    from experiments.benchmarks.helios_roles import KINDS, helios_labels
+    from experiments.benchmarks.soccer_rcg import rcg_figures
+    from soccer_sim.rcg import read_rcg
+
+    labels = None
+    if roles is not None:
+        shirts = helios_labels(roles)
+        labels = {"l": shirts, "r": shirts}
+    return [rcg_figures(read_rcg(path), labels, KINDS if labels is not None else None) for path in paths]

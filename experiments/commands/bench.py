@@ -26,7 +26,8 @@ BENCHMARKS: dict[str, tuple[str, str]] = {
     "replay": ("experiments.benchmarks.replay", "time and file size of recording a rerun replay of a match"),
     "roles": ("experiments.benchmarks.roles", "microseconds per call of every role assigner"),
     "skills": ("experiments.benchmarks.skills", "microseconds per call of every soccer skill"),
-    "soccer": ("experiments.benchmarks.soccer", "goals, shots, passes and crowding near the ball between two teams"),
+    "soccer": ("experiments.benchmarks.soccer",
+               "play figures (goals, set plays, shape, stamina, distance by role) of built-in teams or game logs"),
     "startup": ("experiments.benchmarks.startup",
                 "wall time of a first play with a cold and a warm kernel cache, and of --help"),
 }

@@ -49,13 +49,19 @@ def test_play_finds_a_team_module_in_the_working_directory(tmp_path, monkeypatch
 
 
 def test_bench_soccer_reports_the_figures_of_the_play(capsys) -> None:
-    assert main(["bench", "soccer", "--matches", "2", "--cycles", "300"]) == 0
+    assert main(["bench", "soccer", "--home", "chaser", "--away", "chaser", "--matches", "2", "--cycles", "300"]) == 0
     out = capsys.readouterr().out
     for figure in ("goals", "shots", "shots ending on a body", "passes", "tackles", "fouls", "free kicks",
-                   "offside calls", "teammate contacts", "players within 2 m"):
+                   "offside calls", "teammate contacts", "players within 2 m", "corners", "kick-ins", "goal kicks",
+                   "goalkeeper catches", "set-play retakes", "dropped balls", "distance run per team",
+                   "team length", "team width, ball in midfield", "stamina below 100",
+                   "stamina below recovery threshold"):
         assert figure in out
-    assert main(["bench", "soccer", "--home", "no-such-team", "--matches", "1", "--cycles", "10"]) == 2
+    assert main(["bench", "soccer", "--home", "no-such-team", "--away", "chaser", "--matches", "1",
+                 "--cycles", "10"]) == 2
     assert "unknown team" in capsys.readouterr().err
+    assert main(["bench", "soccer", "--home", "chaser", "--matches", "1"]) == 2
+    assert "--away" in capsys.readouterr().err
 
 
 def test_bench_soccer_counts_what_the_match_records() -> None:
@@ -69,12 +75,18 @@ def test_bench_soccer_counts_what_the_match_records() -> None:
     assert figures["shots"][0] == home.shots + away.shots
     assert figures["shots ending on a body"][0] == sum(end == "body" for _, end in shot_endings(result.events))
     assert figures["tackles"][0] == home.tackles + away.tackles
+    assert figures["tackles won"][0] == home.tackles_won + away.tackles_won
+    # the per-cycle distance is the statistics' distance run (one definition)
+    assert figures["distance run per team (km)"][0] * 2000 == pytest.approx(home.distance_run + away.distance_run)
+    # the built-in teams report their roles: every kind of the formation has a distance
+    for kind in ("goalkeeper", "defender", "midfielder", "forward"):
+        assert figures[f"distance run by {kind} (km per player)"][0] > 0
 
 
-def test_near_ball_recorder_counts_players_within_two_metres() -> None:
+def test_near_ball_figure_counts_players_within_two_metres() -> None:
     import numpy as np
 
-    from experiments.benchmarks.soccer import NearBallRecorder
+    from experiments.benchmarks.soccer_match import FiguresRecorder
     from soccer_sim import Match, MatchConfig, PlayMode
 
     match = Match("idle", "idle", config=MatchConfig(max_cycles=5))
@@ -85,13 +97,14 @@ def test_near_ball_recorder_counts_players_within_two_metres() -> None:
     state.pos[3] = (31.0, 0.0)   # 1 m away
     state.pos[14] = (30.0, 1.9)  # 1.9 m away
     state.pos[15] = (32.5, 0.0)  # 2.5 m away: not near
-    recorder = NearBallRecorder()
+    recorder = FiguresRecorder()
     recorder.on_start(match)
     recorder.on_cycle(match)
-    assert recorder.cycles == 1 and recorder.mean == 2.0
+    cycles = recorder.cycles
+    assert cycles.play_on == 1 and cycles.figures()["players within 2 m of the ball"] == 2.0
     state.play_mode = PlayMode.KICK_IN  # set plays are not counted
     recorder.on_cycle(match)
-    assert recorder.cycles == 1 and np.isclose(recorder.mean, 2.0)
+    assert cycles.play_on == 1 and np.isclose(cycles.figures()["players within 2 m of the ball"], 2.0)
 
 
 def test_bench_skills_times_every_skill(capsys) -> None:

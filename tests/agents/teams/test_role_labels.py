@@ -1,0 +1,38 @@
+"""FormationTeam names each player's current role (the ReportsRoles hook of bench soccer)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from agents.teams import FormationTeam
+from soccer_sim import MatchConfig, SideInfo
+from soccer_sim.team_hooks import ReportsRoles
+
+
+def _ready(team: FormationTeam) -> FormationTeam:
+    team.reset(SideInfo(0, "us", "them", 11, 0, 11, 0), MatchConfig(), np.random.default_rng(0))
+    return team
+
+
+def test_labels_follow_the_role_each_player_is_assigned() -> None:
+    team = _ready(FormationTeam("greedy"))
+    assert isinstance(team, ReportsRoles)
+    kinds = [role.kind for role in team.formation_set.roles]
+    labels = team.role_labels()
+    assert len(labels) == 11 and labels[0] == "goalkeeper"
+    assert labels == kinds  # before the first assignment every player holds its own role
+    swap = np.arange(10)
+    defender = next(r for r in range(10) if kinds[r + 1] == "defender")
+    forward = next(r for r in range(10) if kinds[r + 1] == "forward")
+    swap[[defender, forward]] = swap[[forward, defender]]
+    team.role_of_player = swap
+    labels = team.role_labels()
+    assert labels[defender + 1] == "forward" and labels[forward + 1] == "defender"
+    assert sorted(labels) == sorted(kinds)  # still one label per formation role
+
+
+def test_a_goalkeeper_elsewhere_in_the_rows_keeps_its_label() -> None:
+    team = FormationTeam("mmdr")
+    team.reset(SideInfo(0, "us", "them", 11, 4, 11, 0), MatchConfig(), np.random.default_rng(0))
+    labels = team.role_labels()
+    assert labels[4] == "goalkeeper" and labels.count("goalkeeper") == 1
