@@ -32,6 +32,7 @@ microseconds per cycle.
 
 from __future__ import annotations
 
+import math
 from dataclasses import astuple, dataclass
 
 import numpy as np
@@ -164,33 +165,30 @@ def adjust_role_targets(targets: np.ndarray, codes: np.ndarray, opp_pos: np.ndar
         elif c == _CM:
             if attacking:
                 dx, dy = x - ball_x, y - ball_y
-                d = np.hypot(dx, dy)
+                d = math.hypot(dx, dy)
                 if d > support_distance:
                     x = ball_x + dx * support_distance / d
                     y = ball_y + dy * support_distance / d
         targets[r, 0], targets[r, 1] = x, y
     # Centre-backs: mark when defending, then hold the last line.
-    taken = np.full(n, -1, dtype=np.int64)
+    marking = np.zeros(n, dtype=np.bool_)
     if not attacking:
+        used = np.zeros(opp_pos.shape[0], dtype=np.bool_)
         for r in range(n):
             if codes[r] != _CB:
                 continue
             best, best_d = -1, mark_radius
             for j in range(opp_pos.shape[0]):
-                free = True
-                for k in range(n):
-                    if taken[k] == j:
-                        free = False
-                if not free:
-                    continue
-                d = np.hypot(opp_pos[j, 0] - targets[r, 0], opp_pos[j, 1] - targets[r, 1])
-                if d < best_d:
-                    best, best_d = j, d
+                if not used[j]:
+                    d = math.hypot(opp_pos[j, 0] - targets[r, 0], opp_pos[j, 1] - targets[r, 1])
+                    if d < best_d:
+                        best, best_d = j, d
             if best >= 0:
-                taken[r] = best
+                used[best] = True
+                marking[r] = True
                 ox, oy = opp_pos[best, 0], opp_pos[best, 1]
                 gx, gy = -half_length - ox, -oy
-                g = max(np.hypot(gx, gy), 1e-9)
+                g = max(math.hypot(gx, gy), 1e-9)
                 targets[r, 0] = ox + gx * mark_distance / g
                 targets[r, 1] = oy + gy * mark_distance / g
     others = np.inf
@@ -200,7 +198,7 @@ def adjust_role_targets(targets: np.ndarray, codes: np.ndarray, opp_pos: np.ndar
     cb_sum, cb_count = 0.0, 0
     for r in range(n):
         if codes[r] == _CB:
-            if others < np.inf and taken[r] < 0:  # (a marker stays goal-side of its forward)
+            if others < np.inf and not marking[r]:  # (a marker stays goal-side of its forward)
                 targets[r, 0] = min(targets[r, 0], others - back_line_gap)
             cb_sum += targets[r, 0]
             cb_count += 1
