@@ -6,8 +6,8 @@ the same targets), each position (:mod:`agents.teams.positions`) does its job. T
 metres: we attack +x, our goal at ``x = -half_length``; "attacking" is the formation's attack
 situation (we win the race for the ball), "defending" its defend situation.
 
-* **Centre-backs** hold the line ``back_line_gap`` behind every other outfield role (they are
-  the rest defence when we attack); when defending each marks the opponent nearest its target
+* **Centre-backs** hold the line ``back_line_gap`` behind every other outfield role and never
+  beyond ``back_line_limit`` (they are the rest defence when we attack); when defending each marks the opponent nearest its target
   (within ``mark_radius``, a different one each), standing ``mark_distance`` goal-side of it
   (a marker follows its forward rather than the line).
 * **Full-backs** overlap when we attack on their side of the field (``overlap_push`` further
@@ -88,6 +88,10 @@ class RoleParams:
     forward_floor: float = -3.0
     """A defending centre-forward's target never goes deeper than this x: it waits near the
     halfway line for the clearance instead of crowding our box."""
+    back_line_limit: float = 0.0
+    """Centre-backs' targets never go beyond this x in open play: they stay at the halfway
+    line as the rest defence against a counter (and do not run the length of the field at
+    every change of possession)."""
 
     def __post_init__(self) -> None:
         for name, value in zip(self.__dataclass_fields__, astuple(self)):
@@ -125,9 +129,9 @@ def adjust_role_targets(targets: np.ndarray, codes: np.ndarray, opp_pos: np.ndar
     """The behaviours of the module docstring, in place; ``p`` is :class:`RoleParams` in field
     order followed by the half length and half width."""
     (mark_radius, mark_distance, back_line_gap, overlap_push, overlap_width, side_margin, tuck_in, screen_gap,
-     hold_behind, support_distance, winger_width, wide_mid_width, behind_line, forward_floor,
+     hold_behind, support_distance, winger_width, wide_mid_width, behind_line, forward_floor, back_line_limit,
      half_length, half_width) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11],
-                                 p[12], p[13], p[14], p[15])
+                                 p[12], p[13], p[14], p[15], p[16])
     n = targets.shape[0]
     line = offside_line(opp_pos, ball_x) - behind_line
     final_third = ball_x > half_length / 3.0
@@ -199,7 +203,7 @@ def adjust_role_targets(targets: np.ndarray, codes: np.ndarray, opp_pos: np.ndar
     for r in range(n):
         if codes[r] == _CB:
             if others < np.inf and not marking[r]:  # (a marker stays goal-side of its forward)
-                targets[r, 0] = min(targets[r, 0], others - back_line_gap)
+                targets[r, 0] = min(targets[r, 0], others - back_line_gap, back_line_limit)
             cb_sum += targets[r, 0]
             cb_count += 1
     cb_x = cb_sum / cb_count if cb_count else (others if others < np.inf else -half_length / 2.0)

@@ -121,3 +121,11 @@ def test_bad_parameters_are_named() -> None:
         RoleParams(tuck_in=1.5)
     with pytest.raises(ValueError, match="mark_radius"):
         RoleParams(mark_radius=-1.0)
+
+
+def test_centre_backs_stay_at_the_halfway_line_as_rest_defence_when_we_attack_high() -> None:
+    labels, before, after = _setup("4-3-3", Situation.ATTACK, (45.0, 10.0))
+    cb = labels == "centre-back"
+    assert (before[cb, 0] > RoleParams().back_line_limit + 5.0).all()
+    np.testing.assert_allclose(after[cb, 0], RoleParams().back_line_limit)
+    np.testing.assert_allclose(after[cb, 1], before[cb, 1])
