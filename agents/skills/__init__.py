@@ -55,6 +55,8 @@ The API, by module:
   :class:`ClearParams`, :class:`ClearPlan`.
 * :mod:`~agents.skills.goalkeeping`: :func:`guard_position`, :func:`should_catch`,
   :func:`distribute`, :class:`GoalieParams`.
+* :mod:`~agents.skills.crossing`: :func:`best_cross`, :func:`in_crossing_zone`,
+  :class:`CrossParams`, :class:`CrossPlan`.
 * :mod:`~agents.skills.decision`: :func:`decide_on_ball`, :class:`DecisionParams`,
   :class:`BallDecision`, :class:`OnBallAction`.
 
@@ -76,6 +78,7 @@ Timings of every call for a team of 11: ``python -m agents.skills.timing``
 
 from agents.skills.clearing import ClearParams, ClearPlan, best_clearance, goal_kick_clearance
 from agents.skills.context import Players, SkillContext, ViewArrays
+from agents.skills.crossing import CrossParams, CrossPlan, best_cross, in_crossing_zone
 from agents.skills.decision import BallDecision, DecisionParams, OnBallAction, decide_on_ball
 from agents.skills.dribbling import DribbleParams, DribblePlan, dribble, dribble_directions
 from agents.skills.goalkeeping import Distribution, GoalieParams, distribute, guard_position, should_catch
@@ -88,7 +91,8 @@ from agents.skills.passing import PassParams, PassPlan, best_pass, offside_posit
 from agents.skills.shooting import ShotParams, ShotPlan, aim_points, best_shot
 
 __all__ = [
-    "UNREACHABLE", "BallDecision", "BallRace", "ClearParams", "ClearPlan", "DecisionParams", "Distribution",
+    "UNREACHABLE", "BallDecision", "BallRace", "ClearParams", "ClearPlan", "CrossParams", "CrossPlan",
+    "best_cross", "in_crossing_zone", "DecisionParams", "Distribution",
     "DribbleParams", "DribblePlan", "GoalieParams", "Interception", "MotionModel", "OnBallAction", "PassParams",
     "PassPlan", "Players", "ShotParams", "ShotPlan", "SkillContext", "SkillInputError", "ViewArrays", "aim_points",
     "ball_race", "best_clearance", "best_pass", "best_shot", "dash_to_points", "decide_on_ball", "distribute",

@@ -4,15 +4,18 @@ The order and thresholds (:class:`DecisionParams`):
 
 1. **Shoot** when the best shot's probability-like score clears ``ShotParams.threshold``
    (:mod:`agents.skills.shooting`; out of range means no shot).
-2. **Pass** when the best safe pass (:mod:`agents.skills.passing`) scores at least
+2. **Cross** when the ball is wide in the final third and a cross into the box works
+   (:mod:`agents.skills.crossing`): a wide player puts the ball where a team-mate takes it
+   in front of goal rather than passing back or sideways.
+3. **Pass** when the best safe pass (:mod:`agents.skills.passing`) scores at least
    ``pass_good``.
-3. **Dribble** when no opponent can reach the ball within ``pressure_cycles`` and the best
+4. **Dribble** when no opponent can reach the ball within ``pressure_cycles`` and the best
    dribbling direction keeps ``dribble_clearance`` metres of clearance (never the
    goalkeeper).
-4. **Pass** to whoever is safely available (any score).
-5. **Clear** when under pressure, for the goalkeeper, or in our own part of the field (ball
+5. **Pass** to whoever is safely available (any score).
+6. **Clear** when under pressure, for the goalkeeper, or in our own part of the field (ball
    x below ``clear_line``; a fraction of the half length, so -1/3 is our third).
-6. **Dribble** otherwise (the direction with most clearance, even if small).
+7. **Dribble** otherwise (the direction with most clearance, even if small).
 
 Under pressure means an opponent's interception of the ball (rolled with its current
 velocity) comes within ``pressure_cycles`` cycles.
@@ -27,6 +30,7 @@ import numpy as np
 
 from agents.skills.clearing import ClearParams, ClearPlan, best_clearance
 from agents.skills.context import SkillContext
+from agents.skills.crossing import CrossParams, CrossPlan, best_cross, in_crossing_zone
 from agents.skills.dribbling import DribbleParams, DribblePlan, dribble
 from agents.skills.interception import intercept
 from agents.skills.model import SkillInputError, check_params, check_player
@@ -39,6 +43,7 @@ class OnBallAction(str, Enum):
     """What the player on the ball does."""
 
     SHOOT = "shoot"
+    CROSS = "cross"
     PASS = "pass"
     DRIBBLE = "dribble"
     CLEAR = "clear"
@@ -60,12 +65,16 @@ class DecisionParams:
     passing: PassParams = field(default_factory=PassParams)
     dribbling: DribbleParams = field(default_factory=DribbleParams)
     clearing: ClearParams = field(default_factory=ClearParams)
+    crossing: CrossParams | None = field(default_factory=CrossParams)
+    """Where and how crosses are tried (None: never cross)."""
 
     def __post_init__(self) -> None:
         check_params(self, non_negative=("dribble_clearance",), finite=("pass_good", "clear_line"),
                      whole=("pressure_cycles",))
         for name, kind in (("shot", ShotParams), ("passing", PassParams), ("dribbling", DribbleParams),
-                           ("clearing", ClearParams)):
+                           ("clearing", ClearParams), ("crossing", CrossParams)):
+            if name == "crossing" and self.crossing is None:
+                continue
             if not isinstance(getattr(self, name), kind):
                 raise SkillInputError(f"DecisionParams.{name} must be a {kind.__name__}")
 
@@ -74,12 +83,12 @@ class DecisionParams:
 class BallDecision:
     """The chosen action: ``kick`` goes into the player's ``TeamCommand.kick`` row; ``dash`` is
     the player's dash for a dribble (None otherwise: the team decides where it runs);
-    ``plan`` is the skill's own result (ShotPlan, PassPlan, DribblePlan or ClearPlan)."""
+    ``plan`` is the skill's own result (ShotPlan, CrossPlan, PassPlan, DribblePlan or ClearPlan)."""
 
     action: OnBallAction
     kick: np.ndarray
     dash: np.ndarray | None
-    plan: ShotPlan | PassPlan | DribblePlan | ClearPlan
+    plan: ShotPlan | CrossPlan | PassPlan | DribblePlan | ClearPlan
     pressure: int
     """Cycles until the fastest opponent controls the ball."""
 
@@ -103,6 +112,10 @@ def decide_on_ball(ctx: SkillContext, view: TeamView, player: int,
     shot = best_shot(ctx, view, player, params.shot, holder)
     if shot is not None and shot.take:
         return BallDecision(OnBallAction.SHOOT, shot.kick, None, shot, pressure)
+    if params.crossing is not None and not goalie and in_crossing_zone(model, view.ball, params.crossing):
+        cross = best_cross(ctx, view, player, params.crossing, holder)
+        if cross is not None:
+            return BallDecision(OnBallAction.CROSS, cross.kick, None, cross, pressure)
     pass_plan = best_pass(ctx, view, player, params.passing, holder)
     if pass_plan is not None and pass_plan.score >= params.pass_good:
         return BallDecision(OnBallAction.PASS, pass_plan.kick, None, pass_plan, pressure)

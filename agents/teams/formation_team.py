@@ -44,6 +44,7 @@ import formations
 from agents import skills
 from agents.roles import RoleAssigner, RoleContext, make_assigner, offensive_order
 from agents.teams.reporting import RoleFigures
+from agents.teams.role_behaviours import RoleBehaviours
 from agents.teams.role_kernels import pull_onside, settle_roles, shape_targets
 from agents.teams.set_plays import SetPlays
 from agents.teams.style import ATTACKING_DECISIONS, TeamStyle
@@ -134,6 +135,8 @@ class FormationTeam:
         """Our set plays: takers, retakes, kick-off placement, the goalkeeper's held ball."""
         self.figures = RoleFigures(config, len(self.outfield))
         """The per-match figures :meth:`statistics` reports."""
+        self.role_behaviours = RoleBehaviours(self.formation_set, model.half_length, model.half_width)
+        """Each position's own moves of its role target in open play (:mod:`agents.teams.role_behaviours`)."""
 
     def _kick_off_spots(self) -> np.ndarray:
         """(n, 2) where each role stands at our kick-off (team frame)."""
@@ -186,6 +189,8 @@ class FormationTeam:
         if shifted or narrowed:
             shape_targets(targets, self._match_roles, shift, shifted, self._half_length - 2.0,
                           self._forward_roles, 1.0 - style.box_narrowing, bool(narrowed))
+        if mode == _PLAY_ON and situation != Situation.NORMAL:
+            self.role_behaviours.adjust(targets, situation == Situation.ATTACK, ball_ref, view.opp_pos)
         self._assign_roles(view, targets, ball_ref)
         urgent = np.zeros(self.n, dtype=bool)
         set_plays.sprinter = -1
