@@ -84,8 +84,9 @@ def test_pace_grows_with_the_distance_to_the_target_and_settles_near_it() -> Non
     assert budget == 0.0 and not dash.any()
     assert budget_of(view, (0.8, 0.0), urgent=True)[1].any()  # unless in a hurry
     # The settling distance grows with the distance to the ball.
-    far_ball = one_player(ball=(-40.0, 30.0))
-    assert not budget_of(far_ball, (3.0, 0.0))[1].any()
+    far_ball = one_player(ball=(-40.0, 30.0))  # 50 m away: settles within 2.5 m
+    assert not budget_of(far_ball, (2.4, 0.0))[1].any()
+    assert budget_of(far_ball, (2.6, 0.0))[1].any()
     # In their half, a player in front of its target steps back (the offside line is there).
     assert budget_of(one_player(x=20.5, ball=(3.0, 0.0)), (20.0, 0.0))[1].any()
     # The goalkeeper never settles and always paces at cruise.
