@@ -29,7 +29,7 @@ import numpy as np
 
 from agents.skills.context import Players, SkillContext, ViewArrays
 from agents.skills.model import MotionModel, SkillInputError, float_array
-from agents.skills.pacing import PacingParams, cycles_left_in_half, pacing_constants
+from agents.skills.pacing import PacingParams, pacing_constants
 from agents.skills.player_kernels import caps_kernel, dash_kernel, paced_dash_kernel
 from soccer_sim.team import TeamView
 
@@ -37,6 +37,7 @@ _F64 = np.dtype(np.float64)
 _BOOL = np.dtype(np.bool_)
 DEFAULT_PACING = PacingParams()
 """The stamina policy's default choices."""
+_LAST_PACING = ("pacing", "last")
 
 
 def dash_to_points(model: MotionModel, players: Players, targets: np.ndarray,
@@ -84,8 +85,8 @@ def speed_caps(ctx: SkillContext, view: TeamView, urgent: np.ndarray | bool = Fa
     arrays = ctx.arrays(view)
     caps = np.empty(model.players_per_team)
     caps_kernel(_hurry(model, arrays, view, urgent, near), arrays.stamina, _capacity(view, model),
-                arrays.ours.effort, model.goalie_index, cycles_left_in_half(model, view.cycle, view.half),
-                _constants(ctx, params, 0.05), caps)
+                arrays.ours.effort, model.goalie_index, view.cycle, view.half,
+                _constants(ctx, ctx.table(_LAST_PACING, _no_pacing_yet), params, 0.05), caps)
     return caps
 
 
@@ -110,30 +111,48 @@ def paced_dashes(ctx: SkillContext, view: TeamView, targets: np.ndarray, urgent:
     n = model.players_per_team
     targets = float_array("targets", targets, (n, 2))
     out = _out(out, n)
+    last = ctx.table(_LAST_PACING, _no_pacing_yet)
+    constants = _constants(ctx, last, params, tolerance)
     if budgets is None:
-        budgets = np.empty(n)
+        budgets = last[3]
     elif not (isinstance(budgets, np.ndarray) and budgets.dtype == _F64 and budgets.shape == (n,)):
         raise SkillInputError(f"budgets must be a float64 ({n},) array")
-    if attacking is not None and not isinstance(attacking, (bool, np.bool_)):
+    if attacking is None:
+        phase = -1
+    elif attacking is True or attacking is False or isinstance(attacking, np.bool_):
+        phase = 1 if attacking else 0
+    else:
         raise SkillInputError(f"attacking must be True, False or None, got {attacking!r}")
-    phase = -1 if attacking is None else int(bool(attacking))
     paced_dash_kernel(arrays.ours.pos, arrays.ours.vel, targets, arrays.ours.effort, arrays.stamina,
                       _capacity(view, model), _hurry(model, arrays, view, urgent, near), arrays.ball[0],
-                      model.goalie_index, phase, cycles_left_in_half(model, view.cycle, view.half),
-                      _constants(ctx, params, tolerance), out, budgets)
+                      model.goalie_index, phase, view.cycle, view.half, constants, out, budgets)
     return out
 
 
-def _constants(ctx: SkillContext, params: PacingParams, tolerance: float) -> np.ndarray:
-    """The pacing kernel's constants for ``params`` (made once per match and choice)."""
+def _no_pacing_yet() -> list:
+    """The per-match record of the last pacing constants: [params, tolerance, constants,
+    scratch budgets]."""
+    return [None, None, None, None]
+
+
+def _constants(ctx: SkillContext, last: list, params: PacingParams, tolerance: float) -> np.ndarray:
+    """The pacing kernel's constants for ``params`` (made once per match and choice; the last
+    ones are kept by identity in ``last``, as hashing the parameters every cycle would cost
+    more than the kernel)."""
+    if last[0] is params and last[1] == tolerance:
+        return last[2]
     if not isinstance(params, PacingParams):
         raise SkillInputError(f"params must be a PacingParams, got {type(params).__name__}")
-    return ctx.table(("pacing", params, float(tolerance)), lambda: pacing_constants(ctx.model, params, tolerance))
+    constants = ctx.table(("pacing", params, float(tolerance)), lambda: pacing_constants(ctx.model, params, tolerance))
+    last[:] = params, tolerance, constants, np.empty(ctx.model.players_per_team)
+    return constants
 
 
 def _capacity(view: TeamView, model: MotionModel) -> np.ndarray:
     """The view's (n,) stamina left to recover this half (inf when it has none)."""
     capacity = getattr(view, "capacity", None)
+    if type(capacity) is np.ndarray and capacity.dtype is _F64 and capacity.shape == (model.players_per_team,):
+        return capacity  # the kernel only reads it
     if capacity is None:
         return np.full(model.players_per_team, np.inf)
     return float_array("capacity", capacity, (model.players_per_team,))

@@ -123,7 +123,7 @@ class PacingParams:
 (K_ACCEL_MAX, K_SPEED_MAX, K_TOP_SPEED, K_POWER_RATE, K_DECAY, K_POWER_MAX, K_SIDE_RATE, K_BACK_RATE,
  K_HEADING_SPEED, K_INCOME, K_FLOOR, K_FRESH, K_TIRED, K_RECOVER_SHARE, K_CRUISE, K_WALK, K_FAR, K_SETTLE,
  K_SETTLE_SHARE, K_PLAY_DISTANCE, K_FINAL_THIRD_X, K_DANGER_X, K_RUN_DISTANCE, K_EXTRA, K_TOLERANCE,
- K_REST_SHARE, K_REST_GAP, K_SIZE) = range(28)
+ K_REST_SHARE, K_REST_GAP, K_HALF_CYCLES, K_SIZE) = range(29)
 
 
 def pacing_constants(model: MotionModel, params: PacingParams, tolerance: float) -> np.ndarray:
@@ -146,11 +146,5 @@ def pacing_constants(model: MotionModel, params: PacingParams, tolerance: float)
     k[K_DANGER_X], k[K_RUN_DISTANCE] = params.danger_x, params.run_distance
     k[K_EXTRA], k[K_TOLERANCE] = stam.extra_stamina, tolerance
     k[K_REST_SHARE], k[K_REST_GAP] = params.rest_share, params.rest_gap
+    k[K_HALF_CYCLES] = config.rules.half_cycles
     return k
-
-
-def cycles_left_in_half(model: MotionModel, cycle: int, half: int) -> float:
-    """Cycles until the end of the current half (at least 1): the horizon over which the
-    stamina still to recover (``capacity``) must last."""
-    half_cycles = model.config.rules.half_cycles
-    return float(max((int(half) + 1) * half_cycles - int(cycle), 1))

@@ -11,7 +11,7 @@ import numpy as np
 from numba import njit
 
 from agents.skills.pacing import (K_ACCEL_MAX, K_BACK_RATE, K_CRUISE, K_DANGER_X, K_DECAY, K_EXTRA, K_FAR,
-                                  K_FINAL_THIRD_X, K_FRESH, K_FLOOR, K_HEADING_SPEED, K_INCOME, K_PLAY_DISTANCE,
+                                  K_FINAL_THIRD_X, K_FLOOR, K_FRESH, K_HALF_CYCLES, K_HEADING_SPEED, K_INCOME, K_PLAY_DISTANCE,
                                   K_POWER_MAX, K_POWER_RATE, K_RECOVER_SHARE, K_REST_GAP, K_REST_SHARE,
                                   K_RUN_DISTANCE, K_SETTLE,
                                   K_SETTLE_SHARE, K_SIDE_RATE, K_SPEED_MAX, K_TIRED, K_TOLERANCE, K_TOP_SPEED,
@@ -49,13 +49,15 @@ def dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, effort: n
 @njit(cache=True, nogil=True)
 def paced_dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, effort: np.ndarray, stamina: np.ndarray,
                       capacity: np.ndarray, urgent: np.ndarray, ball: np.ndarray, goalie: int, attacking: int,
-                      cycles_left: float, k: np.ndarray, out: np.ndarray,
+                      cycle: int, half: int, k: np.ndarray, out: np.ndarray,
                       budgets: np.ndarray) -> None:  # pragma: no cover - compiled
     """Per player, the dash to its ``targets`` row under the stamina policy of
     :mod:`agents.skills.pacing` (``k``: its constants, ``K_*``): the power budget (into
     ``budgets``, stamina per cycle), the pace it holds, the arrive-and-stop dash at that pace,
     shortened when its power (the simulator's count, side and back dashes included) exceeds
-    the budget. ``attacking``: 1 we attack, 0 we defend (play on), -1 neither (set plays)."""
+    the budget. ``attacking``: 1 we attack, 0 we defend (play on), -1 neither (set plays);
+    ``cycle``, ``half``: the view's."""
+    cycles_left = cycles_left_in_half(cycle, half, k)
     accel_max, rate = k[K_ACCEL_MAX], k[K_POWER_RATE]
     side_rate, back_rate, heading_speed = k[K_SIDE_RATE], k[K_BACK_RATE], k[K_HEADING_SPEED]
     run = k[K_RUN_DISTANCE]
@@ -107,7 +109,8 @@ def paced_dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, eff
         # against the direction of motion, weighted by the speed).
         dir_rate = 1.0
         speed = math.sqrt(vx * vx + vy * vy)
-        if speed > 0.0:
+        if speed > 0.0 and size > budget * rate * eff * min(side_rate, back_rate, 1.0):
+            # (within budget even at the costliest direction: no need for the angle)
             cos = min(1.0, max(-1.0, (ax * vx + ay * vy) / (size * speed)))
             angle = math.degrees(math.acos(cos))
             if angle > 90.0:
@@ -121,6 +124,13 @@ def paced_dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, eff
             ay *= budget / power
         out[i, 0] = ax
         out[i, 1] = ay
+
+
+@njit(cache=True, nogil=True)
+def cycles_left_in_half(cycle: int, half: int, k: np.ndarray) -> float:  # pragma: no cover - compiled
+    """Cycles until the end of the current half (at least 1): the horizon over which the
+    stamina still to recover (``capacity``) must last."""
+    return max((half + 1) * k[K_HALF_CYCLES] - cycle, 1.0)
 
 
 @njit(cache=True, nogil=True)
@@ -157,9 +167,10 @@ def pace_speed(budget: float, hurry: bool, eff: float, k: np.ndarray) -> float: 
 
 @njit(cache=True, nogil=True)
 def caps_kernel(urgent: np.ndarray, stamina: np.ndarray, capacity: np.ndarray, effort: np.ndarray, goalie: int,
-                cycles_left: float, k: np.ndarray, caps: np.ndarray) -> None:  # pragma: no cover - compiled
+                cycle: int, half: int, k: np.ndarray, caps: np.ndarray) -> None:  # pragma: no cover - compiled
     """The running-speed caps of :func:`speed_caps`: each player's :func:`pace_speed` for a
     long run (a target at least ``far`` away, the ball not near), 0 when it may not dash."""
+    cycles_left = cycles_left_in_half(cycle, half, k)
     for i in range(caps.shape[0]):
         budget = power_budget(stamina[i], capacity[i], urgent[i], i == goalie, False, k[K_FAR], np.inf, cycles_left,
                               k)
