@@ -40,7 +40,8 @@ The API, by module:
   :func:`intercept_many` (many ball trajectories), :func:`ball_race` (both teams),
   :data:`UNREACHABLE`.
 * :mod:`~agents.skills.movement`: :func:`dash_to_points`, :func:`speed_caps`,
-  :func:`paced_dashes` (both in one pass, for a team every cycle).
+  :func:`paced_dashes` (for a team every cycle, under the stamina policy of
+  :mod:`~agents.skills.pacing`, :class:`PacingParams`).
 * :mod:`~agents.skills.kicking`: :func:`kickable`, :func:`kick_effectiveness`,
   :func:`kick_for_velocity`.
 * :mod:`~agents.skills.lanes`: :func:`opponent_cycles`, :func:`teammate_cycles`,
@@ -87,13 +88,14 @@ from agents.skills.kicking import kick_effectiveness, kick_for_velocity, kickabl
 from agents.skills.lanes import lane_open, opponent_cycles, teammate_cycles
 from agents.skills.model import MotionModel, SkillInputError, view_effort
 from agents.skills.movement import dash_to_points, paced_dashes, speed_caps
+from agents.skills.pacing import PacingParams
 from agents.skills.passing import PassParams, PassPlan, best_pass, offside_positions, pass_candidates
 from agents.skills.shooting import ShotParams, ShotPlan, aim_points, best_shot
 
 __all__ = [
     "UNREACHABLE", "BallDecision", "BallRace", "ClearParams", "ClearPlan", "CrossParams", "CrossPlan",
-    "best_cross", "in_crossing_zone", "DecisionParams", "Distribution",
-    "DribbleParams", "DribblePlan", "GoalieParams", "Interception", "MotionModel", "OnBallAction", "PassParams",
+    "best_cross", "in_crossing_zone", "DecisionParams", "Distribution", "DribbleParams", "DribblePlan",
+    "GoalieParams", "Interception", "MotionModel", "OnBallAction", "PassParams", "PacingParams",
     "PassPlan", "Players", "ShotParams", "ShotPlan", "SkillContext", "SkillInputError", "ViewArrays", "aim_points",
     "ball_race", "best_clearance", "best_pass", "best_shot", "dash_to_points", "decide_on_ball", "distribute",
     "dribble", "dribble_directions", "goal_kick_clearance", "guard_position", "intercept", "intercept_many",

@@ -1,6 +1,7 @@
 """The compiled kernels of the player skills: dashing to points (:mod:`agents.skills.movement`),
 the dribbling fan (:mod:`agents.skills.dribbling`) and the goalkeeper's guard point
-(:mod:`agents.skills.goalkeeping`). Constants come as named scalar arguments."""
+(:mod:`agents.skills.goalkeeping`). Constants come as named scalar arguments, except the
+pacing kernels' (one array, indexed by the ``K_*`` names of :mod:`agents.skills.pacing`)."""
 
 from __future__ import annotations
 
@@ -8,6 +9,13 @@ import math
 
 import numpy as np
 from numba import njit
+
+from agents.skills.pacing import (K_ACCEL_MAX, K_BACK_RATE, K_CRUISE, K_DANGER_X, K_DECAY, K_EXTRA, K_FAR,
+                                  K_FINAL_THIRD_X, K_FLOOR, K_FRESH, K_HALF_CYCLES, K_HEADING_SPEED, K_INCOME, K_PLAY_DISTANCE,
+                                  K_POWER_MAX, K_POWER_RATE, K_RECOVER_SHARE, K_REST_GAP, K_REST_SHARE,
+                                  K_RUN_DISTANCE, K_SETTLE,
+                                  K_SETTLE_SHARE, K_SIDE_RATE, K_SPEED_MAX, K_TIRED, K_TOLERANCE, K_TOP_SPEED,
+                                  K_WALK)
 
 
 @njit(cache=True, nogil=True)
@@ -40,23 +48,133 @@ def dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, effort: n
 
 @njit(cache=True, nogil=True)
 def paced_dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, effort: np.ndarray, stamina: np.ndarray,
-                      urgent: np.ndarray, top_speed: float, jog_speed: float, fresh: float, accel_max: float,
-                      speed_max: float, tolerance: float, out: np.ndarray) -> None:  # pragma: no cover - compiled
-    """:func:`caps_kernel`'s caps fed to :func:`dash_kernel`, in one pass."""
-    caps = np.empty(pos.shape[0])
-    caps_kernel(urgent, stamina, effort, top_speed, jog_speed, fresh, caps)
-    dash_kernel(pos, vel, targets, effort, caps, accel_max, speed_max, tolerance, out)
+                      capacity: np.ndarray, urgent: np.ndarray, ball: np.ndarray, goalie: int, attacking: int,
+                      cycle: int, half: int, k: np.ndarray, out: np.ndarray,
+                      budgets: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Per player, the dash to its ``targets`` row under the stamina policy of
+    :mod:`agents.skills.pacing` (``k``: its constants, ``K_*``): the power budget (into
+    ``budgets``, stamina per cycle), the pace it holds, the arrive-and-stop dash at that pace,
+    shortened when its power (the simulator's count, side and back dashes included) exceeds
+    the budget. ``attacking``: 1 we attack, 0 we defend (play on), -1 neither (set plays);
+    ``cycle``, ``half``: the view's."""
+    cycles_left = cycles_left_in_half(cycle, half, k)
+    accel_max, rate = k[K_ACCEL_MAX], k[K_POWER_RATE]
+    side_rate, back_rate, heading_speed = k[K_SIDE_RATE], k[K_BACK_RATE], k[K_HEADING_SPEED]
+    run = k[K_RUN_DISTANCE]
+    bx, by = ball[0], ball[1]
+    for i in range(pos.shape[0]):
+        px, py = pos[i, 0], pos[i, 1]
+        tx, ty = targets[i, 0], targets[i, 1]
+        dx, dy = tx - px, ty - py
+        vx, vy = vel[i, 0], vel[i, 1]
+        dist = math.sqrt(dx * dx + dy * dy)
+        out[i, 0] = 0.0
+        out[i, 1] = 0.0
+        budgets[i] = 0.0
+        if dist <= k[K_TOLERANCE] and vx * vx + vy * vy <= 1e-6:
+            continue
+        st = stamina[i]
+        ball_gap = math.sqrt((px - bx) ** 2 + (py - by) ** 2)
+        hurry = urgent[i]
+        if not hurry and attacking >= 0 and i != goalie:
+            if attacking == 1:  # an attacking run into the final third, the ball in their half
+                hurry = bx >= 0.0 and tx >= k[K_FINAL_THIRD_X] and tx - px >= run
+            else:  # a run back goal-side of the ball by a player caught in front of it
+                hurry = bx <= k[K_DANGER_X] and tx < bx < px and px - tx >= run
+        if not hurry and i != goalie and dist <= max(k[K_SETTLE], k[K_SETTLE_SHARE] * ball_gap) \
+                and not (tx > 0.0 and px > tx):
+            continue  # near enough: coast to a stop
+        # Away from the play: behind it when we attack (rest defence), ahead of it when they do.
+        rest = not hurry and i != goalie and ((attacking == 1 and tx < bx - k[K_REST_GAP])
+                                              or (attacking == 0 and tx > bx + k[K_REST_GAP]))
+        eff = effort[i]
+        budget = power_budget(st, capacity[i], hurry, i == goalie, rest, dist, ball_gap, cycles_left, k)
+        budgets[i] = budget
+        if budget <= 0.0 or eff <= 0.0:
+            continue
+        cap = pace_speed(budget, hurry, eff, k)
+        if dist > cap:
+            dx *= cap / dist
+            dy *= cap / dist
+        ax, ay = dx - vx, dy - vy
+        size = math.sqrt(ax * ax + ay * ay)
+        limit = accel_max * eff
+        if size > limit:
+            ax *= limit / size
+            ay *= limit / size
+            size = limit
+        if size <= 0.0:
+            continue
+        # The power the simulator will charge (soccer_sim.kinematics: the dash direction
+        # against the direction of motion, weighted by the speed).
+        dir_rate = 1.0
+        speed = math.sqrt(vx * vx + vy * vy)
+        if speed > 0.0 and size > budget * rate * eff * min(side_rate, back_rate, 1.0):
+            # (within budget even at the costliest direction: no need for the angle)
+            cos = min(1.0, max(-1.0, (ax * vx + ay * vy) / (size * speed)))
+            angle = math.degrees(math.acos(cos))
+            if angle > 90.0:
+                along = back_rate - (back_rate - side_rate) * (1.0 - (angle - 90.0) / 90.0)
+            else:
+                along = side_rate + (1.0 - side_rate) * (1.0 - angle / 90.0)
+            dir_rate = 1.0 - min(1.0, speed / heading_speed) * (1.0 - along)
+        power = size / (rate * eff * dir_rate)
+        if power > budget:
+            ax *= budget / power
+            ay *= budget / power
+        out[i, 0] = ax
+        out[i, 1] = ay
 
 
 @njit(cache=True, nogil=True)
-def caps_kernel(urgent: np.ndarray, stamina: np.ndarray, effort: np.ndarray, top_speed: float, jog_speed: float,
-                fresh: float, caps: np.ndarray) -> None:  # pragma: no cover - compiled
-    """The running-speed rule of :func:`speed_caps`: the top speed for a player who is urgent
-    and has stamina above ``fresh``, else the jogging speed; both times its effort (both
-    speeds are proportional to it, see MotionModel.sustainable_speed)."""
+def cycles_left_in_half(cycle: int, half: int, k: np.ndarray) -> float:  # pragma: no cover - compiled
+    """Cycles until the end of the current half (at least 1): the horizon over which the
+    stamina still to recover (``capacity``) must last."""
+    return max((half + 1) * k[K_HALF_CYCLES] - cycle, 1.0)
+
+
+@njit(cache=True, nogil=True)
+def power_budget(st: float, capacity: float, hurry: bool, goalie: bool, rest: bool, dist: float, ball_gap: float,
+                 cycles_left: float, k: np.ndarray) -> float:  # pragma: no cover - compiled
+    """One player's dash-power budget (stamina per cycle) under the policy of
+    :mod:`agents.skills.pacing`: full power when in a hurry, else the income times the share
+    its target's distance, its stamina and (``rest``) its distance from the play allow; never
+    below the floor unless it is in a hurry within ``play_distance`` of the ball."""
+    floor = k[K_FLOOR]
+    if hurry:
+        budget = k[K_POWER_MAX]
+    else:
+        cruise, walk = k[K_CRUISE], k[K_WALK]
+        income = min(k[K_INCOME], max(0.0, (capacity + st - floor) / cycles_left))
+        share = cruise if goalie else walk + (cruise - walk) * min(dist / k[K_FAR], 1.0)
+        vigour = min(max((st - k[K_TIRED]) / (k[K_FRESH] - k[K_TIRED]), 0.0), 1.0)
+        share = min(share, k[K_RECOVER_SHARE] + (cruise - k[K_RECOVER_SHARE]) * vigour)
+        if rest:
+            share = min(share, k[K_REST_SHARE])
+        budget = share * income
+    spendable = st + k[K_EXTRA] if hurry and ball_gap <= k[K_PLAY_DISTANCE] else st - floor
+    return max(0.0, min(budget, k[K_POWER_MAX], spendable))
+
+
+@njit(cache=True, nogil=True)
+def pace_speed(budget: float, hurry: bool, eff: float, k: np.ndarray) -> float:  # pragma: no cover - compiled
+    """The running-speed cap of a player with dash-power ``budget`` and effort ``eff``: its
+    top speed when in a hurry, else the speed the budget holds against the decay (m/cycle)."""
+    top = k[K_TOP_SPEED] * eff
+    cap = top if hurry else min(top, budget * k[K_POWER_RATE] * eff / max(1.0 - k[K_DECAY], 1e-12))
+    return min(cap, k[K_SPEED_MAX])
+
+
+@njit(cache=True, nogil=True)
+def caps_kernel(urgent: np.ndarray, stamina: np.ndarray, capacity: np.ndarray, effort: np.ndarray, goalie: int,
+                cycle: int, half: int, k: np.ndarray, caps: np.ndarray) -> None:  # pragma: no cover - compiled
+    """The running-speed caps of :func:`speed_caps`: each player's :func:`pace_speed` for a
+    long run (a target at least ``far`` away, the ball not near), 0 when it may not dash."""
+    cycles_left = cycles_left_in_half(cycle, half, k)
     for i in range(caps.shape[0]):
-        pace = top_speed if urgent[i] and stamina[i] > fresh else jog_speed
-        caps[i] = pace * effort[i]
+        budget = power_budget(stamina[i], capacity[i], urgent[i], i == goalie, False, k[K_FAR], np.inf, cycles_left,
+                              k)
+        caps[i] = pace_speed(budget, urgent[i], effort[i], k) if budget > 0.0 else 0.0
 
 
 @njit(cache=True, nogil=True)

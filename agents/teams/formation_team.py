@@ -21,7 +21,8 @@ Every cycle (team frame: we attack +x, our goal at x = -half_length):
    taken in time, retaken set plays by another player and another kick); the goalkeeper
    distributes a held ball.
 5. **Everybody else** runs to their targets (attackers kept onside), sprinting only when it
-   matters (:func:`agents.skills.speed_caps`); the goalkeeper guards the line between ball and
+   matters and otherwise at a pace the stamina recovery pays for (:func:`agents.skills.paced_dashes`,
+   the stamina policy of :mod:`agents.skills.pacing`); the goalkeeper guards the line between ball and
    goal and catches (never a back-pass).
 
 **Smaller sides** (a scenario's 0 to 11 players, the goalkeeper optional): the goalkeeper, if
@@ -193,7 +194,6 @@ class FormationTeam:
             self.role_behaviours.adjust(targets, situation == Situation.ATTACK, ball_ref, view.opp_pos)
         self._assign_roles(view, targets, ball_ref)
         urgent = np.zeros(self.n, dtype=bool)
-        set_plays.sprinter = -1
         if mode == _PLAY_ON:
             self._play_on(view, race, urgent)
         elif mode in (_KICK_OFF, _AFTER_GOAL):
@@ -202,14 +202,10 @@ class FormationTeam:
             set_plays.goalie_holds(view, self.goals, command, self._mode_since)
         else:
             set_plays.set_play(view, self.goals, command, urgent, self._mode_since)
-        skills.paced_dashes(ctx, view, self.goals, urgent, command.dash)
-        sprinter = set_plays.sprinter
-        if sprinter >= 0:
-            # Our set-play taker runs flat out whatever its stamina: a set play not taken in
-            # time is lost (the ball is dropped).
-            r = slice(sprinter, sprinter + 1)
-            skills.dash_to_points(model, ctx.arrays(view).ours.rows(sprinter, sprinter + 1), self.goals[r],
-                                  out=command.dash[r])
+        # Urgent players (the ball's, pressers, our set-play taker) sprint down to the stamina
+        # floor, the others pace themselves (agents.skills.pacing).
+        attacking = situation == Situation.ATTACK if mode == _PLAY_ON else None
+        skills.paced_dashes(ctx, view, self.goals, urgent, command.dash, attacking=attacking)
         if self._dribble_dash is not None:  # the dribbler runs with the ball, not to a point
             command.dash[self._kicker_row] = self._dribble_dash
             self._dribble_dash = None

@@ -40,9 +40,6 @@ class SetPlays:
         self.proper_goal_kicks = config.rules.proper_goal_kicks
         self.taker = -1
         """Our taker of the current set play (-1: not chosen yet)."""
-        self.sprinter = -1
-        """The player who runs flat out this cycle whatever its stamina (our set-play taker);
-        the team clears it every cycle."""
         self.goal_kick_leaving = False
         """Our goal kick is on its way out of the penalty area (with proper goal kicks nobody
         of ours may play it yet)."""
@@ -109,7 +106,6 @@ class SetPlays:
             taker = self.taker = self._choose_taker(view)
         goals[taker] = view.ball
         urgent[taker] = True
-        self.sprinter = taker
         waited = view.cycle - since
         if waited < self.style.set_play_wait:
             return taker

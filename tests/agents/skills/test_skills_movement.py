@@ -1,13 +1,14 @@
 """Dash to a point: the player arrives and stops (the simulator's own dash rule, side and back
-dash rates included), respects the speed cap, and runs at its sustainable speed when it need
-not sprint."""
+dash rates included), respects the speed cap, and sprints only when urgent and above the
+stamina floor (the policy itself: test_skills_pacing)."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from agents.skills import MotionModel, Players, SkillContext, SkillInputError, dash_to_points, paced_dashes, speed_caps
+from agents.skills import (MotionModel, PacingParams, Players, SkillContext, SkillInputError, dash_to_points,
+                           paced_dashes, speed_caps)
 from soccer_sim.kinematics import Kinematics
 from tests.agents.skills.skill_views import CONFIG, N, make_view
 
@@ -82,16 +83,22 @@ def test_tired_players_accelerate_less() -> None:
     assert speeds.max() <= 0.6 + 1e-9
 
 
-def test_speed_caps_sprint_only_when_urgent_and_fresh() -> None:
+CRUISE_SPEED = PacingParams().cruise * CONFIG.stamina.recovery_per_cycle * CONFIG.physics.dash_power_rate / (
+    1.0 - CONFIG.physics.player_decay)
+"""The speed a fresh player's cruising budget holds (0.72 m/cycle by default)."""
+
+
+def test_speed_caps_sprint_only_when_urgent_and_above_the_floor() -> None:
     stamina = np.full(N, CONFIG.stamina.maximum)
-    stamina[3] = 0.25 * CONFIG.stamina.maximum  # below the recovery threshold
+    stamina[3] = 0.25 * CONFIG.stamina.maximum  # below the recovery threshold, so below the floor
     view = make_view(stamina=stamina)
     urgent = np.zeros(N, dtype=bool)
     urgent[[2, 3]] = True
     caps = speed_caps(CTX, view, urgent)
     assert caps[2] == pytest.approx(MODEL.top_speed)
-    assert caps[3] == pytest.approx(MODEL.sustainable_speed(1.0))
-    assert caps[0] == pytest.approx(MODEL.sustainable_speed(1.0))
+    assert caps[3] == 0.0  # far from the ball: it waits until it has recovered above the floor
+    assert caps[0] == pytest.approx(CRUISE_SPEED)
+    assert MODEL.sustainable_speed(1.0) < caps[0] < MODEL.top_speed
 
 
 def test_standing_on_the_target_costs_nothing() -> None:
@@ -104,22 +111,42 @@ def test_players_near_the_ball_may_sprint() -> None:
     view = make_view(own=own, ball=(0.0, 0.0))
     caps = speed_caps(CTX, view, near=10.0)
     assert caps[4] == pytest.approx(MODEL.top_speed)
-    assert caps[5] == pytest.approx(MODEL.sustainable_speed(1.0))
+    assert caps[5] == pytest.approx(CRUISE_SPEED)
 
 
-def test_paced_dashes_are_the_caps_and_the_dashes_in_one_pass() -> None:
+def test_a_long_run_from_rest_is_the_dash_at_the_speed_cap_within_the_budget() -> None:
+    """Players at rest with far targets: the urgent ones dash as dash_to_points at the
+    policy's speed caps (top speed); the others dash the same way, shortened to the power
+    their budget buys (they reach their cruising speed over a few cycles). The checks name
+    bad arguments."""
     rng = np.random.default_rng(5)
     stamina = np.full(N, CONFIG.stamina.maximum)
-    stamina[[1, 6]] = 0.2 * CONFIG.stamina.maximum
-    view = make_view(own=rng.uniform(-40, 40, (N, 2)), own_vel=rng.uniform(-0.5, 0.5, (N, 2)),
-                     effort=rng.uniform(0.6, 1.0, N), stamina=stamina, ball=(5.0, 5.0))
-    targets = rng.uniform(-40, 40, (N, 2))
-    urgent = rng.uniform(size=N) < 0.5
+    stamina[[1, 6]] = 0.6 * CONFIG.stamina.maximum
+    own = rng.uniform(-30, 30, (N, 2))
+    effort = rng.uniform(0.6, 1.0, N)
+    view = make_view(own=own, effort=effort, stamina=stamina, ball=(5.0, 5.0))
+    angles = rng.uniform(0, 2 * np.pi, N)
+    targets = own + 20.0 * np.column_stack([np.cos(angles), np.sin(angles)])
+    urgent = np.arange(N) % 2 == 0
+    income, rate = CONFIG.stamina.recovery_per_cycle, CONFIG.physics.dash_power_rate
     for near in (None, 20.0):
         caps = speed_caps(CTX, view, urgent, near=near)
         two_steps = dash_to_points(MODEL, CTX.arrays(view).ours, targets, caps)
-        out = np.empty((N, 2))
-        assert paced_dashes(CTX, view, targets, urgent, out, near=near) is out
-        np.testing.assert_array_equal(out, two_steps)
+        out, budgets = np.empty((N, 2)), np.empty(N)
+        assert paced_dashes(CTX, view, targets, urgent, out, near=near, budgets=budgets) is out
+        hurry = urgent if near is None else urgent | (np.hypot(*(own - (5.0, 5.0)).T) <= near)
+        np.testing.assert_allclose(out[hurry], two_steps[hurry], rtol=1e-12)
+        assert np.all(budgets[hurry] == 100.0)
+        calm = ~hurry
+        np.testing.assert_allclose(np.hypot(*out[calm].T), budgets[calm] * rate * effort[calm], rtol=1e-9)
+        np.testing.assert_allclose(out[calm] / np.hypot(*out[calm].T)[:, None],
+                                   two_steps[calm] / np.hypot(*two_steps[calm].T)[:, None], atol=1e-12)
+        fresh = calm & (stamina == CONFIG.stamina.maximum)
+        np.testing.assert_allclose(budgets[fresh], PacingParams().cruise * income)
+        assert np.all(budgets[calm & ~fresh] < PacingParams().cruise * income)
     with pytest.raises(SkillInputError, match="urgent"):
         paced_dashes(CTX, view, targets, np.ones(3, dtype=bool))
+    with pytest.raises(SkillInputError, match="attacking"):
+        paced_dashes(CTX, view, targets, attacking="yes")
+    with pytest.raises(SkillInputError, match="budgets"):
+        paced_dashes(CTX, view, targets, budgets=np.zeros(3))

@@ -16,6 +16,10 @@ from soccer_sim import MatchConfig, TeamCommand
 from soccer_sim.state import EventKind, PlayMode
 
 
+JOG = skills.PacingParams(cruise=1.0)
+"""The test team's pace: its players without the ball jog at their sustainable speed."""
+
+
 class SkillsOnlyTeam:
     """Nothing but the skills: a test team, not one of the built-in teams."""
 
@@ -45,7 +49,9 @@ class SkillsOnlyTeam:
         if may_play and first >= 0 and first != goalie:
             targets[first] = race.ours.points[first]
         urgent = np.arange(self.n) == first
-        skills.dash_to_points(model, ctx.arrays(view).ours, targets, skills.speed_caps(ctx, view, urgent),
+        # Players not chasing jog at the speed their recovery pays for (cruise 1: the income).
+        caps = skills.speed_caps(ctx, view, urgent, params=JOG)
+        skills.dash_to_points(model, ctx.arrays(view).ours, targets, caps,
                               out=command.dash)
         if view.ball_holder == goalie:
             command.kick[goalie] = skills.distribute(ctx, view).kick

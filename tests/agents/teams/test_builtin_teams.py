@@ -72,12 +72,17 @@ def test_the_fastest_player_runs_to_the_interception_point_and_others_hold_forma
     own = spread_out()
     ball, ball_vel = np.array([5.0, 10.0]), np.array([-1.5, 0.0])  # rolling towards us, nobody near
     command = team.act(view(own, spread_out(+1.0), ball, ball_vel))
-    runner = int(np.argmax(np.hypot(*command.dash.T)))
-    # The runner heads for a point on the ball's path (y = 10), ahead of the ball, not at the ball.
+    role_targets = team.targets[team._match_roles][team.role_of_player]
+    away = np.flatnonzero(np.hypot(*(team.goals[team.outfield] - role_targets).T) > 1e-9)
+    assert away.size == 1  # one runner; the others hold formation (their goals are their role targets)
+    runner = int(team.outfield[away[0]])
+    # The runner heads for a point on the ball's path (y = 10), ahead of the ball, not at the ball...
     goal = team.goals[runner]
     assert goal[1] == pytest.approx(10.0, abs=0.5) and goal[0] < ball[0] - 2.0
-    others = [i for i in team.outfield if i != runner]
-    assert np.allclose(team.goals[others], team.targets[team.outfield][team.role_of_player][[list(team.outfield).index(i) for i in others]])
+    # ...flat out (an urgent player: a full-power dash towards that point).
+    dash = command.dash[runner]
+    assert np.hypot(*dash) == pytest.approx(team.model.accel_max)
+    assert dash @ (goal - own[runner]) > 0.9 * np.hypot(*dash) * np.hypot(*(goal - own[runner]))
 
 
 def test_the_player_on_the_ball_shoots_when_close_and_free() -> None:
