@@ -1,12 +1,15 @@
 """The built-in team's set plays: who takes ours, when and how, kick-off placement, and the
 goalkeeper's held ball.
 
-At our set plays the outfield player nearest the ball takes it after the others had
-``set_play_wait`` cycles to take their places; if the taker is not there after the patience
+At our set plays the outfield player nearest the ball (our goalkeeper at our goal kicks,
+``TeamStyle.goalkeeper_goal_kicks``) takes it after the others had ``set_play_wait`` cycles
+to take their places; if the taker is not there after the patience
 (half the referee's set-play timeout, at least the wait), whoever of ours can kick the ball
 takes it, so a set play is always taken well within the timeout. A set play of ours given
 again at the same spot soon after our kick is that set play retaken: another player takes it,
-another way (goal kicks avoid the directions that were retaken).
+another way (goal kicks avoid the directions that were retaken). Corner kicks and kick-ins
+follow the routines of :mod:`agents.teams.routines` (runners into the box, a team-mate
+coming short, crosses, the ball down the line).
 """
 
 from __future__ import annotations
@@ -14,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from agents import skills
+from agents.teams import routines
 from agents.teams.style import TeamStyle
 from soccer_sim.config import MatchConfig
 from soccer_sim.state import PlayMode
@@ -95,9 +99,13 @@ class SetPlays:
         of the goal at our goal kicks); theirs needs nothing more than the formation."""
         if not view.mode_ours:
             return
-        if view.play_mode == PlayMode.GOAL_KICK and self.goalie >= 0:
+        mode = view.play_mode
+        taker = self.take(view, goals, command, urgent, since)
+        if mode == PlayMode.GOAL_KICK and self.goalie >= 0 and taker != self.goalie:
             goals[self.goalie] = self.goal_centre_guard
-        self.take(view, goals, command, urgent, since)
+        elif mode in (PlayMode.CORNER_KICK, PlayMode.KICK_IN):
+            routines.place(view, self.ctx.model, goals, self.outfield, taker,
+                           mode == PlayMode.CORNER_KICK, self.style.routines)
 
     def take(self, view: TeamView, goals: np.ndarray, command: TeamCommand, urgent: np.ndarray,
              since: int) -> int:
@@ -132,8 +140,12 @@ class SetPlays:
         goals[self.goalie] = view.own_pos[self.goalie]
 
     def _choose_taker(self, view: TeamView) -> int:
-        """The outfield player nearest the ball that has not tried this set play yet (a lone
-        goalkeeper takes it)."""
+        """Our goalkeeper at our goal kicks if it has not tried this one yet, else the outfield
+        player nearest the ball that has not tried this set play yet (a lone goalkeeper takes
+        it)."""
+        if (view.play_mode == PlayMode.GOAL_KICK and self.style.goalkeeper_goal_kicks and self.goalie >= 0
+                and self.goalie not in self.tried_takers):
+            return self.goalie
         candidates = self.outfield if len(self.outfield) else np.arange(self.n)
         fresh = np.setdiff1d(candidates, self.tried_takers)
         if fresh.size:
@@ -155,7 +167,13 @@ class SetPlays:
         else:
             kick = None
             if not self.tried_kicks:
-                kick = skills.decide_on_ball(ctx, view, kicker, self.style.decision).kick
+                mode = view.play_mode
+                if mode == PlayMode.CORNER_KICK:
+                    _, kick = routines.corner_kick(ctx, view, kicker, self.outfield, self.style.routines)
+                elif mode == PlayMode.KICK_IN:
+                    kick = routines.kick_in(ctx, view, kicker, self.style.decision, self.style.routines)
+                else:
+                    kick = skills.decide_on_ball(ctx, view, kicker, self.style.decision).kick
             if kick is None or not kick.any():
                 kick = skills.best_clearance(ctx, view, kicker).kick
             speed = float(np.hypot(*kick))
