@@ -59,6 +59,7 @@ _PLAY_ON = PlayMode.PLAY_ON
 _KICK_OFF = PlayMode.KICK_OFF
 _AFTER_GOAL = PlayMode.AFTER_GOAL
 _GOALIE_HOLDS = PlayMode.GOALIE_HOLDS
+_SAVE = skills.SaveParams()
 
 
 class FormationTeam:
@@ -301,12 +302,16 @@ class FormationTeam:
             else:
                 decision = skills.decide_on_ball(ctx, view, kicker, self.style.decision,
                                                  pressure=race.theirs.first_cycle)
-                if contested and decision.action in (skills.OnBallAction.DRIBBLE, skills.OnBallAction.CLEAR):
+                in_box = bool(model.in_penalty_area(view.ball))
+                pressed = race.theirs.first_cycle <= _SAVE.pressure_cycles and in_box
+                if (contested or pressed) and decision.action in (skills.OnBallAction.DRIBBLE,
+                                                                  skills.OnBallAction.CLEAR):
                     # Against an opponent who kicks the ball too, a dribble or a clearance up the
                     # field meets its mirror image and the two kicks cancel: kick it towards
-                    # the nearer touchline instead (both teams doing so add up).
-                    command.kick[kicker] = skills.parry_kick(ctx, view, kicker) if model.in_penalty_area(
-                        view.ball) else self._wing_kick(view, kicker)  # in our box: wide of the goal
+                    # the nearer touchline instead (both teams doing so add up); pressed in our
+                    # box, wide of the goal (a corner rather than a chance).
+                    command.kick[kicker] = skills.parry_kick(ctx, view, kicker) if in_box \
+                        else self._wing_kick(view, kicker)
                 else:
                     command.kick[kicker] = decision.kick
                     if decision.dash is not None:
