@@ -114,8 +114,9 @@ def corner_kick(ctx: skills.SkillContext, view: TeamView, taker: int, outfield: 
     wanted = delta / distance[:, None] * speed[:, None]
     kicks, velocities = skills.kick_for_velocity(model, view.own_pos[taker], ball, view.ball_vel, wanted,
                                                  player_vel=view.own_vel[taker])
-    ours, _ = skills.teammate_cycles(ctx, view, ball, velocities)
-    ours = ours.copy()
+    ours, points = skills.teammate_cycles(ctx, view, ball, velocities)
+    # Only a team-mate taking the ball inside their box makes a cross (not one it passes on the way).
+    ours = np.where(model.in_penalty_area(points, ours=False), ours, skills.UNREACHABLE)
     ours[:, taker] = skills.UNREACHABLE
     if model.goalie_index >= 0:
         ours[:, model.goalie_index] = skills.UNREACHABLE
