@@ -8,7 +8,7 @@ from agents import skills
 from agents.teams.routines import RoutineParams
 
 ATTACKING_DECISIONS = skills.DecisionParams(
-    shot=skills.ShotParams(threshold=0.2, lane_range=20.0, lane_pressure=4),
+    shot=skills.ShotParams(threshold=0.2, lane_range=22.0, lane_pressure=6),
     dribbling=skills.DribbleParams(goal_weight=2.0, speed_fraction=0.85),
 )
 """The built-in team's on-ball choices: shoot when a shot has a fair chance (the skill's own
