@@ -1,13 +1,14 @@
 """Our corner-kick and kick-in routines: who moves where, and how the taker plays the ball.
 
 **Corner kick** (ours). Up to ``corner_runners`` outfield players (those whose set-play
-spots are furthest forward, the taker and the short team-mate left out) go to spots in the opponents' box: the
-near post, the far post, the penalty spot and the far edge of the goal area (team frame,
-"near" being the corner's side). The team-mate nearest the ball comes short (``short_gap``
-metres infield and back from the ball), the others keep the formation's shape behind. The
-taker crosses: to each box spot a ball is kicked to arrive there at ``cross_speed`` and the
-cross whose lane our first player wins by the most cycles over the opponents is taken when
-that lead is at least ``cross_lead``; else, when the short team-mate is free
+spots are furthest forward, the taker and the short team-mate left out) go to spots in the
+opponents' box: the near post, the far post, the penalty spot and the far edge of the goal
+area (team frame, "near" being the corner's side). The team-mate nearest the ball comes short
+(``short_gap`` metres infield and back from the ball), the others keep the formation's shape
+behind. The taker waits ``corner_wait`` cycles for the runners, then crosses: to each box
+spot a ball is kicked to arrive there at ``cross_speed``, and the cross whose lane our first
+player to take the ball inside their box wins by the most cycles over the opponents is taken
+when that lead is at least ``cross_lead``; else, when the short team-mate is free
 (:func:`agents.skills.lane_open`), it is played short; else the best-led cross is taken all
 the same (a contested cross into the box, as real corners mostly are).
 
@@ -40,8 +41,14 @@ class RoutineParams:
     """Outfield players who go into the opponents' box at our corner kicks (at most four spots)."""
     cross_speed: float = 1.2
     """Speed at which a cross arrives at its box spot (m/cycle): slow enough to control."""
-    cross_lead: int = 1
-    """A cross is preferred to the short corner when our player wins its lane by this many cycles."""
+    cross_lead: int = 2
+    """A cross is preferred to the short corner when our player wins its lane by this many
+    cycles (one more than a tie, for the noise of a long kick)."""
+    cross_margin: float = 0.2
+    """Extra control distance given to the opponents when a cross's lane is judged (m, noise)."""
+    corner_wait: int = 30
+    """Cycles our corner taker waits before kicking so the runners reach the box (the team's
+    patience, half the referee's set-play timeout, caps it: a corner is never left to stall)."""
     short_gap: float = 6.0
     """How far infield of the ball the short team-mate stands at corners and kick-ins (m)."""
     line_length: float = 18.0
@@ -51,7 +58,8 @@ class RoutineParams:
 
     def __post_init__(self) -> None:
         skills.model.check_params(self, positive=("cross_speed", "short_gap", "line_length"),
-                                  non_negative=("line_inside",), whole=("corner_runners", "cross_lead"))
+                                  non_negative=("line_inside", "cross_margin"),
+                                  whole=("corner_runners", "cross_lead", "corner_wait"))
 
 
 def box_spots(model: skills.MotionModel, ball_y: float) -> np.ndarray:
@@ -120,7 +128,7 @@ def corner_kick(ctx: skills.SkillContext, view: TeamView, taker: int, outfield: 
     ours[:, taker] = skills.UNREACHABLE
     if model.goalie_index >= 0:
         ours[:, model.goalie_index] = skills.UNREACHABLE
-    theirs, _ = skills.opponent_cycles(ctx, view, ball, velocities)
+    theirs, _ = skills.opponent_cycles(ctx, view, ball, velocities, extra_radius=params.cross_margin)
     lead = theirs.astype(float) - ours.min(axis=1)
     best = int(np.argmax(lead))
     if lead[best] >= params.cross_lead:

@@ -119,7 +119,10 @@ class SetPlays:
         urgent[taker] = True
         self.sprinter = taker
         waited = view.cycle - since
-        if waited < self.style.set_play_wait:
+        wait = self.style.set_play_wait
+        if view.play_mode == PlayMode.CORNER_KICK:  # the runners need longer to get into the box
+            wait = min(max(wait, self.style.routines.corner_wait), self.patience)
+        if waited < wait:
             return taker
         gaps = np.hypot(*(view.own_pos - view.ball).T)
         kicker = taker

@@ -13,10 +13,11 @@ ATTACKING_DECISIONS = skills.DecisionParams(
 )
 """The built-in team's on-ball choices: shoot when a shot has a fair chance (the skill's own
 threshold waits for a near-certain one, which against a goalkeeper almost never comes), or
-from the edge of the box (20 m from the goal centre, the penalty area's depth plus a few
-metres) through a lane no defender can close when a defender is about to close the shooter
-down (within 4 cycles), making the goalkeeper save, as real teams do (about nine shots a
-match), while a shooter left alone carries the ball closer; and dribble towards the goal rather than along the wings."""
+from the edge of the box (22 m from the goal centre: the penalty area's depth plus a few
+metres) through a lane no outfield defender can close, once a defender can close the shooter
+down within 6 cycles (the decision's pressure horizon doubled), so the goalkeeper must save,
+as real teams do (about nine shots a match); a shooter left alone carries the ball closer.
+Dribble towards the goal rather than along the wings."""
 
 
 @dataclass(frozen=True)

@@ -56,7 +56,7 @@ def test_at_our_corner_runners_go_into_the_box_and_the_corner_is_crossed_into_it
     in_box = MODEL.in_penalty_area(np.delete(team.goals, [0, taker], axis=0), ours=False)
     assert in_box.sum() >= 3  # the runners' spots are in their box
     cycle, kicker, kick = play_set_play(team, own, opp, CORNER, PlayMode.CORNER_KICK, 300, 40)
-    assert kicker == taker and cycle == 300 + team.style.set_play_wait
+    assert kicker == taker and cycle == 300 + team.style.routines.corner_wait
     assert path_enters_their_box(CORNER, kick, own[kicker])
     direction = kick / np.hypot(*kick)
     assert direction[1] > 0.5  # across towards the goal, not along the goal line or back
@@ -148,3 +148,25 @@ def test_the_team_goalkeeper_comes_out_when_it_wins_the_race() -> None:
     assert race.ours.first == 0
     assert np.allclose(team.goals[0], race.ours.points[0])
     assert team.goals[0][0] > own[0][0] + 3.0  # out towards the ball
+
+
+def test_a_defender_pressed_in_our_box_with_nobody_free_kicks_the_ball_wide_of_the_goal() -> None:
+    ball = np.array([-HL + 3.0, -6.0])
+    own = np.array([[-30.0 + 3.0 * (i % 5), -20.0 + 4.0 * i] for i in range(11)])
+    own[0] = (-HL + 1.0, 0.0)
+    own[2] = ball + (-0.6, 0.0)  # our defender on the ball, facing its own goal line
+    opp = np.array([[HL - 1.0, 0.0], *[[0.0, 0.0]] * 10])
+    for i in range(1, 11):  # every team-mate marked closely, so no pass is safe
+        opp[i] = own[i] + (-0.7, 0.0)
+    opp[1] = ball + (0.9, 0.3)  # an attacker at the ball
+    opp[0] = (HL - 1.0, 0.0)
+    v = play_on_view(own, opp, ball, np.zeros(2), np.zeros_like(opp))
+    team = ready("mmdr")
+    command = team.act(v)
+    kick = command.kick[2]
+    assert np.hypot(*kick) > 0.0 and not command.kick[np.arange(11) != 2].any()
+    direction = kick / np.hypot(*kick)
+    assert np.allclose(direction, skills.parry_direction(CTX, ball), atol=1e-6)
+    # it leaves the field over our goal line wide of the goal, or over the touchline: never into the goal
+    t = (-HL - ball[0]) / direction[0] if direction[0] < 0.0 else np.inf
+    assert np.isinf(t) or abs(ball[1] + t * direction[1]) > CONFIG.field.goal_width / 2.0 + 1.0
