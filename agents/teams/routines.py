@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from agents import skills
+from agents.skills.model import check_params
 from soccer_sim.team import TeamView
 
 
@@ -57,9 +58,9 @@ class RoutineParams:
     """A kick-in down the line goes this far inside the touchline (m)."""
 
     def __post_init__(self) -> None:
-        skills.model.check_params(self, positive=("cross_speed", "short_gap", "line_length"),
-                                  non_negative=("line_inside", "cross_margin"),
-                                  whole=("corner_runners", "cross_lead", "corner_wait"))
+        check_params(self, positive=("cross_speed", "short_gap", "line_length"),
+                     non_negative=("line_inside", "cross_margin"),
+                     whole=("corner_runners", "cross_lead", "corner_wait"))
 
 
 def box_spots(model: skills.MotionModel, ball_y: float) -> np.ndarray:

@@ -7,6 +7,7 @@ race to the ball and comes out when it wins it."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from agents import skills
 from agents.teams import routines
@@ -170,3 +171,24 @@ def test_a_defender_pressed_in_our_box_with_nobody_free_kicks_the_ball_wide_of_t
     # it leaves the field over our goal line wide of the goal, or over the touchline: never into the goal
     t = (-HL - ball[0]) / direction[0] if direction[0] < 0.0 else np.inf
     assert np.isinf(t) or abs(ball[1] + t * direction[1]) > CONFIG.field.goal_width / 2.0 + 1.0
+
+
+def test_the_corner_wait_never_goes_beyond_the_teams_patience() -> None:
+    from dataclasses import replace
+
+    from agents.teams import FormationTeam
+    from soccer_sim import SideInfo
+
+    style = replace(ready("mmdr").style, routines=routines.RoutineParams(corner_wait=500))
+    team = FormationTeam("mmdr", style)
+    team.reset(SideInfo(0, "us", "them", 11, 0, 11, 0), CONFIG, np.random.default_rng(0))
+    cycle, kicker, _ = play_set_play(team, attacking_line_up(), defending(box=False), CORNER,
+                                     PlayMode.CORNER_KICK, 300, 120)
+    assert kicker == 3 and cycle == 300 + team.set_plays.patience < 300 + CONFIG.rules.set_play_timeout
+
+
+def test_routine_params_reject_bad_values() -> None:
+    with pytest.raises(skills.SkillInputError, match="short_gap"):
+        routines.RoutineParams(short_gap=0.0)
+    with pytest.raises(skills.SkillInputError, match="corner_wait"):
+        routines.RoutineParams(corner_wait=-1)
