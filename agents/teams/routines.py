@@ -83,31 +83,32 @@ def short_spot(model: skills.MotionModel, ball: np.ndarray, corner: bool, params
     return spot
 
 
-def place(view: TeamView, model: skills.MotionModel, goals: np.ndarray, outfield: np.ndarray, taker: int,
-          corner: bool, params: RoutineParams) -> None:
-    """Move the routine's players' ``goals`` (on entry their formation spots): the short
-    team-mate, and at a corner the box runners (those of ``outfield`` whose spots are furthest
-    forward; the taker is left out)."""
+def routine_goals(view: TeamView, model: skills.MotionModel, goals: np.ndarray, outfield: np.ndarray, taker: int,
+                  corner: bool, params: RoutineParams) -> tuple[np.ndarray, np.ndarray]:
+    """The routine's players and their goal points, ``(rows (k,), points (k, 2))``: the short
+    team-mate, and at a corner the box runners (those of ``outfield`` whose ``goals``, on entry
+    their formation spots, are furthest forward; the taker is left out). Chosen once per set
+    play by the caller (the ball does not move meanwhile)."""
+    rows: list[int] = []
+    points: list[np.ndarray] = []
     others = outfield[outfield != taker]
-    if others.size == 0:
-        return
-    ball = np.asarray(view.ball, float)
-    gaps = np.hypot(*(view.own_pos[others] - ball).T)
-    short = int(others[int(np.argmin(gaps))])
-    goals[short] = short_spot(model, ball, corner, params)
-    if not corner:
-        return
-    runners = others[others != short]
-    count = min(params.corner_runners, runners.size, 4)
-    if count == 0:
-        return
-    runners = runners[np.argsort(-goals[runners, 0], kind="stable")[:count]]
-    spots = box_spots(model, float(ball[1]))[:count]
-    # Each spot to the free runner nearest it, spot by spot (at most four: cheap).
-    free = list(runners)
-    for spot in spots:
-        near = int(np.argmin([np.hypot(*(view.own_pos[r] - spot)) for r in free]))
-        goals[free.pop(near)] = spot
+    if others.size:
+        ball = np.asarray(view.ball, float)
+        gaps = np.hypot(*(view.own_pos[others] - ball).T)
+        short = int(others[int(np.argmin(gaps))])
+        rows.append(short)
+        points.append(short_spot(model, ball, corner, params))
+        runners = others[others != short]
+        count = min(params.corner_runners, runners.size, 4) if corner else 0
+        if count:
+            runners = runners[np.argsort(-goals[runners, 0], kind="stable")[:count]]
+            # Each spot to the free runner nearest it, spot by spot (at most four: cheap).
+            free = list(runners)
+            for spot in box_spots(model, float(ball[1]))[:count]:
+                near = int(np.argmin([np.hypot(*(view.own_pos[r] - spot)) for r in free]))
+                rows.append(int(free.pop(near)))
+                points.append(spot)
+    return np.array(rows, dtype=np.int64), np.array(points, dtype=float).reshape(-1, 2)
 
 
 def corner_kick(ctx: skills.SkillContext, view: TeamView, taker: int, outfield: np.ndarray,

@@ -44,6 +44,9 @@ class SetPlays:
         self.proper_goal_kicks = config.rules.proper_goal_kicks
         self.taker = -1
         """Our taker of the current set play (-1: not chosen yet)."""
+        self.routine: tuple[np.ndarray, np.ndarray] | None = None
+        """The current corner's or kick-in's routine players and their goal points (None: not
+        chosen yet; :func:`agents.teams.routines.routine_goals`)."""
         self.sprinter = -1
         """The player who runs flat out this cycle whatever its stamina (our set-play taker);
         the team clears it every cycle."""
@@ -73,6 +76,7 @@ class SetPlays:
         another player takes it another way."""
         self.goal_kick_leaving = False
         self.taker = -1
+        self.routine = None
         taken = self.taken
         retake = (view.mode_ours and taken is not None and taken[0] == int(view.play_mode)
                   and view.cycle - taken[3] <= RETAKE_WINDOW
@@ -104,8 +108,11 @@ class SetPlays:
         if mode == PlayMode.GOAL_KICK and self.goalie >= 0 and taker != self.goalie:
             goals[self.goalie] = self.goal_centre_guard
         elif mode in (PlayMode.CORNER_KICK, PlayMode.KICK_IN):
-            routines.place(view, self.ctx.model, goals, self.outfield, taker,
-                           mode == PlayMode.CORNER_KICK, self.style.routines)
+            if self.routine is None:
+                self.routine = routines.routine_goals(view, self.ctx.model, goals, self.outfield, taker,
+                                                      mode == PlayMode.CORNER_KICK, self.style.routines)
+            rows, points = self.routine
+            goals[rows] = points
 
     def take(self, view: TeamView, goals: np.ndarray, command: TeamCommand, urgent: np.ndarray,
              since: int) -> int:
