@@ -55,9 +55,11 @@ The API, by module:
 * :mod:`~agents.skills.clearing`: :func:`best_clearance`, :func:`goal_kick_clearance`,
   :class:`ClearParams`, :class:`ClearPlan`.
 * :mod:`~agents.skills.goalkeeping`: :func:`guard_position`, :func:`should_catch`,
-  :func:`distribute`, :class:`GoalieParams`.
+  :func:`comes_out`, :func:`distribute`, :class:`GoalieParams`.
 * :mod:`~agents.skills.crossing`: :func:`best_cross`, :func:`in_crossing_zone`,
   :class:`CrossParams`, :class:`CrossPlan`.
+* :mod:`~agents.skills.saving`: :func:`parry_kick`, :func:`parry_direction`,
+  :func:`goalkeeper_kick`, :class:`SaveParams`.
 * :mod:`~agents.skills.decision`: :func:`decide_on_ball`, :class:`DecisionParams`,
   :class:`BallDecision`, :class:`OnBallAction`.
 
@@ -82,7 +84,8 @@ from agents.skills.context import Players, SkillContext, ViewArrays
 from agents.skills.crossing import CrossParams, CrossPlan, best_cross, in_crossing_zone
 from agents.skills.decision import BallDecision, DecisionParams, OnBallAction, decide_on_ball
 from agents.skills.dribbling import DribbleParams, DribblePlan, dribble, dribble_directions
-from agents.skills.goalkeeping import Distribution, GoalieParams, distribute, guard_position, should_catch
+from agents.skills.goalkeeping import (Distribution, GoalieParams, comes_out, distribute, guard_position,
+                                      should_catch)
 from agents.skills.interception import UNREACHABLE, BallRace, Interception, ball_race, intercept, intercept_many
 from agents.skills.kicking import kick_effectiveness, kick_for_velocity, kickable
 from agents.skills.lanes import lane_open, opponent_cycles, teammate_cycles
@@ -90,15 +93,17 @@ from agents.skills.model import MotionModel, SkillInputError, view_effort
 from agents.skills.movement import dash_to_points, paced_dashes, speed_caps
 from agents.skills.pacing import PacingParams
 from agents.skills.passing import PassParams, PassPlan, best_pass, offside_positions, pass_candidates
+from agents.skills.saving import SaveParams, goalkeeper_kick, parry_direction, parry_kick
 from agents.skills.shooting import ShotParams, ShotPlan, aim_points, best_shot
 
 __all__ = [
     "UNREACHABLE", "BallDecision", "BallRace", "ClearParams", "ClearPlan", "CrossParams", "CrossPlan",
     "best_cross", "in_crossing_zone", "DecisionParams", "Distribution", "DribbleParams", "DribblePlan",
-    "GoalieParams", "Interception", "MotionModel", "OnBallAction", "PassParams", "PacingParams",
-    "PassPlan", "Players", "ShotParams", "ShotPlan", "SkillContext", "SkillInputError", "ViewArrays", "aim_points",
+    "GoalieParams", "Interception", "MotionModel", "OnBallAction", "PassParams", "PacingParams", "PassPlan",
+    "Players", "ShotParams", "ShotPlan", "SkillContext", "SkillInputError", "ViewArrays", "aim_points",
     "ball_race", "best_clearance", "best_pass", "best_shot", "dash_to_points", "decide_on_ball", "distribute",
     "dribble", "dribble_directions", "goal_kick_clearance", "guard_position", "intercept", "intercept_many",
     "kick_effectiveness", "kick_for_velocity", "kickable", "lane_open", "offside_positions", "opponent_cycles",
     "paced_dashes", "pass_candidates", "should_catch", "speed_caps", "teammate_cycles", "view_effort",
+    "SaveParams", "comes_out", "goalkeeper_kick", "parry_direction", "parry_kick",
 ]

@@ -109,7 +109,7 @@ def decide_on_ball(ctx: SkillContext, view: TeamView, player: int,
         pressure = intercept(ctx, arrays.ball, arrays.ball_vel, arrays.theirs, 1.0).first_cycle
     under_pressure = pressure <= params.pressure_cycles
 
-    shot = best_shot(ctx, view, player, params.shot, holder)
+    shot = best_shot(ctx, view, player, params.shot, holder, pressure)
     if shot is not None and shot.take:
         return BallDecision(OnBallAction.SHOOT, shot.kick, None, shot, pressure)
     if params.crossing is not None and not goalie and in_crossing_zone(model, view.ball, params.crossing):

@@ -13,6 +13,12 @@ nobody holding, goalkeeper and ball both in our penalty area, centres at most
 ``catch_length`` apart (less a small margin), and the ball not last kicked by a team-mate
 (the back-pass rule; the view does not carry the last kicker, so the team tracks it).
 
+**Coming out.** The goalkeeper leaves its guard point for the ball only when it wins the race
+to it: it controls the ball (catch radius in our penalty area) at least ``race_margin`` cycles
+before the first opponent, at a point inside our penalty area (:func:`comes_out`). Otherwise it
+holds its line on the ball-goal segment: a goalkeeper running out to a ball an attacker gets to
+first leaves an open goal behind it.
+
 **Distribution.** Holding the ball, the goalkeeper passes to an open team-mate when a pass
 scores well enough, else clears towards the wings (:mod:`agents.skills.clearing`).
 """
@@ -26,6 +32,7 @@ import numpy as np
 
 from agents.skills.clearing import ClearParams, ClearPlan, best_clearance
 from agents.skills.context import SkillContext
+from agents.skills.interception import UNREACHABLE, BallRace
 from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, float_array
 from agents.skills.passing import PassParams, PassPlan, best_pass
 from agents.skills.player_kernels import guard_kernel
@@ -47,6 +54,9 @@ class GoalieParams:
     """The guard point stays at least this far short of the ball (m)."""
     catch_margin: float = 0.05
     """Ask for a catch only within ``catch_length`` less this (m)."""
+    race_margin: int = 1
+    """The goalkeeper comes out for the ball only when it gets there at least this many cycles
+    before the first opponent (1: strictly first, as :attr:`BallRace.we_win`)."""
     pass_score: float = 1.0
     """A held ball is passed when the best pass scores at least this, else cleared."""
     passing: PassParams = field(default_factory=lambda: PassParams(min_lead=3, min_distance=8.0))
@@ -54,7 +64,7 @@ class GoalieParams:
 
     def __post_init__(self) -> None:
         check_params(self, positive=("near", "far"), non_negative=("depth_far", "ball_gap", "catch_margin",
-                                                                   "pass_score"))
+                                                                   "pass_score"), whole=("race_margin",))
         if self.near >= self.far:
             raise SkillInputError(f"GoalieParams.near ({self.near}) must be smaller than far ({self.far})")
 
@@ -70,6 +80,20 @@ def guard_position(model: MotionModel, ball: np.ndarray,
     # Python's hypot (correctly rounded) here, the rest compiled: the same point to the bit.
     return guard_kernel(math.hypot(dx, by), dx, by, gx, params.near, params.far, params.depth_far,
                         params.ball_gap, model.goal_area_length, model.goal_area_half_width)
+
+
+def comes_out(model: MotionModel, race: BallRace, goalie: int | None = None,
+              params: GoalieParams = GoalieParams()) -> bool:
+    """Whether our goalkeeper (``goalie``, None: ours) goes for the ball of ``race`` (this
+    cycle's :func:`agents.skills.ball_race`): it reaches it ``race_margin`` cycles before every
+    opponent, inside our penalty area (see the module docstring)."""
+    goalie = model.goalie_index if goalie is None else check_player(goalie, model.players_per_team, "goalie")
+    if goalie < 0:
+        return False
+    mine = int(race.ours.cycles[goalie])
+    if mine >= UNREACHABLE or int(race.theirs.first_cycle) - mine < params.race_margin:
+        return False
+    return bool(model.in_penalty_area(race.ours.points[goalie]))
 
 
 def should_catch(ctx: SkillContext, view: TeamView, goalie: int | None = None, teammate_kicked_last: bool = False,

@@ -23,6 +23,16 @@ Each aim gets a probability-like score, the product of
 The best aim is the one with the highest score; :func:`best_shot` returns None when the ball
 is beyond ``max_range`` of the goal centre or cannot reach the goal line, and
 :attr:`ShotPlan.take` says whether its score clears ``threshold``.
+
+**Shots with an open lane.** A goalkeeper without a body orientation covers its goal from
+beyond 15 m, so a score against it rarely clears the threshold from the edge of the box; real
+players shoot there anyway when no defender stands in the way, and the goalkeeper must then
+save. Within ``lane_range`` of the goal centre the shot is also taken when the best aim among
+those the outfield opponents (all but their goalkeeper) cannot reach before the ball crosses
+the line, with a lead of at least ``lane_lead`` cycles, has a score of at least
+``lane_score``, and an opponent can close the shooter down within ``lane_pressure`` cycles
+(a shooter left alone carries the ball closer, where the goalkeeper cannot cover the goal);
+that aim is then the one shot at. ``lane_range = 0`` turns this off.
 """
 
 from __future__ import annotations
@@ -32,8 +42,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from agents.skills.ball_kernels import lane_arrivals, shot_scores
-from agents.skills.context import SkillContext
-from agents.skills.interception import UNREACHABLE
+from agents.skills.context import Players, SkillContext
+from agents.skills.interception import UNREACHABLE, intercept_many
 from agents.skills.kicking import kick_for_velocity
 from agents.skills.lanes import opponent_cycles
 from agents.skills.model import MotionModel, check_params, check_player
@@ -63,10 +73,24 @@ class ShotParams:
     """Extra control distance given to opponents (m), for noise."""
     threshold: float = 0.5
     """Shoot when the best aim's score is at least this."""
+    lane_range: float = 0.0
+    """Within this distance of the goal centre (m) also shoot through an open lane (see the
+    module docstring); 0: never (the skill alone waits for a likely goal)."""
+    lane_lead: int = 1
+    """Cycles by which the ball must beat every outfield opponent to the goal line for its
+    lane to count as open."""
+    lane_pressure: int = 1000
+    """Shoot through an open lane only when an opponent can control the ball within this many
+    cycles (the default: whatever the pressure)."""
+    lane_score: float = 0.0
+    """The open-lane aim must still score at least this against the goalkeeper (0: any shot on
+    target through an open lane is taken)."""
 
     def __post_init__(self) -> None:
-        check_params(self, positive=("max_range", "lead_scale"), non_negative=("post_margin", "opponent_margin"),
-                     counts=("aims",), fractions=("threshold",), finite=("lead_half",))
+        check_params(self, positive=("max_range", "lead_scale"),
+                     non_negative=("post_margin", "opponent_margin", "lane_range"),
+                     counts=("aims",), fractions=("threshold", "lane_score"), finite=("lead_half",),
+                     whole=("lane_lead", "lane_pressure"))
 
 
 @dataclass(frozen=True)
@@ -86,7 +110,10 @@ class ShotPlan:
     score: float
     """Probability-like score in [0, 1]."""
     take: bool
-    """Whether the score clears the threshold: shoot."""
+    """Whether to shoot: the score clears the threshold, or the lane is open (see the module
+    docstring)."""
+    open_lane: bool = False
+    """The shot is taken because its lane is open to the outfield opponents, not for its score."""
 
 
 def aim_points(model: MotionModel, params: ShotParams = ShotParams()) -> np.ndarray:
@@ -98,9 +125,11 @@ def aim_points(model: MotionModel, params: ShotParams = ShotParams()) -> np.ndar
 
 
 def best_shot(ctx: SkillContext, view: TeamView, shooter: int, params: ShotParams = ShotParams(),
-              holder: bool = False) -> ShotPlan | None:
+              holder: bool = False, pressure: int = 0) -> ShotPlan | None:
     """The best shot for ``shooter`` (who must be able to kick), or None when out of range or
-    when no aim can reach the goal line. ``holder``: a goalkeeper holding the ball."""
+    when no aim can reach the goal line. ``holder``: a goalkeeper holding the ball;
+    ``pressure``: cycles until the first opponent controls the ball (for the open-lane shot;
+    0 when unknown: closed down)."""
     model = ctx.model
     shooter = check_player(shooter, model.players_per_team, "shooter")
     ball = np.asarray(view.ball, float)
@@ -134,7 +163,32 @@ def best_shot(ctx: SkillContext, view: TeamView, shooter: int, params: ShotParam
                        model.ball_noise_gain, model.kick_rand, model.ball_rand,
                        model.goal_half_width - model.ball_radius, params.lead_half, params.lead_scale, _WINDOW,
                        score)
+    take = bool(score[best] >= params.threshold)
+    open_lane = False
+    if not take and params.lane_range > 0.0 and pressure <= params.lane_pressure \
+            and float(np.hypot(*(goal - ball))) <= params.lane_range:
+        field = _outfield_cycles(ctx, view, ball, velocities, cross_cycle, params.opponent_margin)
+        lead_ok = np.where(field >= UNREACHABLE, model.horizon, field - cross_cycle) >= params.lane_lead
+        open_score = np.where(lead_ok, score, -1.0)
+        lane = int(np.argmax(open_score))
+        if open_score[lane] >= params.lane_score:
+            best, take, open_lane = lane, True, True
     return ShotPlan(aim=aims[best].copy(), kick=kicks[best].copy(), ball_vel=velocities[best].copy(),
                     cross_cycle=int(cross_cycle[best]), opponent_cycle=int(theirs[best]),
-                    score=float(score[best]), take=bool(score[best] >= params.threshold))
+                    score=float(score[best]), take=take, open_lane=open_lane)
+
+
+def _outfield_cycles(ctx: SkillContext, view: TeamView, ball: np.ndarray, velocities: np.ndarray,
+                     limit: np.ndarray, margin: float) -> np.ndarray:
+    """Earliest cycle any opponent but their goalkeeper controls the ball on each shot lane
+    (UNREACHABLE: none before the line); opponents start one cycle late, as in
+    :func:`agents.skills.lanes.opponent_cycles`."""
+    theirs = ctx.arrays(view).theirs
+    radius, catch = ctx.opponent_radii(margin)
+    keep = np.arange(theirs.pos.shape[0]) != ctx.model.opponent_goalie_index
+    if not keep.any():
+        return np.full(len(velocities), UNREACHABLE, dtype=np.int64)
+    field = Players(ctx.model, theirs.pos[keep], theirs.vel[keep], theirs.effort[keep], radius[keep], catch[keep])
+    cycles, _ = intercept_many(ctx, ball, np.ascontiguousarray(velocities), field, 1.0, limit, 1, first_only=True)
+    return cycles.min(axis=1)
 

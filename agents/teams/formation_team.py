@@ -61,6 +61,7 @@ _PLAY_ON = PlayMode.PLAY_ON
 _KICK_OFF = PlayMode.KICK_OFF
 _AFTER_GOAL = PlayMode.AFTER_GOAL
 _GOALIE_HOLDS = PlayMode.GOALIE_HOLDS
+_SAVE = skills.SaveParams()
 
 
 class FormationTeam:
@@ -298,16 +299,21 @@ class FormationTeam:
             kicker = -1
         self._kicker_row = kicker
         if kicker >= 0:
-            if kicker == self.goalie:
-                command.kick[kicker] = skills.distribute(ctx, view, kicker).kick
+            if kicker == self.goalie:  # it may kick but not catch: parry when pressed, else distribute
+                command.kick[kicker] = skills.goalkeeper_kick(ctx, view, kicker, race.theirs.first_cycle)
             else:
                 decision = skills.decide_on_ball(ctx, view, kicker, self.style.decision,
                                                  pressure=race.theirs.first_cycle)
-                if contested and decision.action in (skills.OnBallAction.DRIBBLE, skills.OnBallAction.CLEAR):
+                in_box = bool(model.in_penalty_area(view.ball))
+                pressed = race.theirs.first_cycle <= _SAVE.pressure_cycles and in_box
+                if (contested or pressed) and decision.action in (skills.OnBallAction.DRIBBLE,
+                                                                  skills.OnBallAction.CLEAR):
                     # Against an opponent who kicks the ball too, a dribble or a clearance up the
                     # field meets its mirror image and the two kicks cancel: kick it towards
-                    # the nearer touchline instead (both teams doing so add up).
-                    command.kick[kicker] = self._wing_kick(view, kicker)
+                    # the nearer touchline instead (both teams doing so add up); pressed in our
+                    # box, wide of the goal (a corner rather than a chance).
+                    command.kick[kicker] = skills.parry_kick(ctx, view, kicker) if in_box \
+                        else self._wing_kick(view, kicker)
                 else:
                     command.kick[kicker] = decision.kick
                     if decision.dash is not None:
@@ -335,7 +341,8 @@ class FormationTeam:
         if self.style.stationary:
             # Statues only step in for a ball that comes to them.
             return first if race.ours.cycles[first] <= 2 else -1
-        if first == self.goalie and not self.model.in_penalty_area(race.ours.points[first]):
+        if first == self.goalie and not skills.comes_out(self.model, race, self.goalie):
+            # The goalkeeper goes only for a ball it wins in its area; else it holds its line.
             cycles = race.ours.cycles[self.outfield]
             if not cycles.size:  # a lone goalkeeper stays in its area
                 return -1

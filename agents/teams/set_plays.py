@@ -1,12 +1,15 @@
 """The built-in team's set plays: who takes ours, when and how, kick-off placement, and the
 goalkeeper's held ball.
 
-At our set plays the outfield player nearest the ball takes it after the others had
-``set_play_wait`` cycles to take their places; if the taker is not there after the patience
+At our set plays the outfield player nearest the ball (our goalkeeper at our goal kicks,
+``TeamStyle.goalkeeper_goal_kicks``) takes it after the others had ``set_play_wait`` cycles
+to take their places; if the taker is not there after the patience
 (half the referee's set-play timeout, at least the wait), whoever of ours can kick the ball
 takes it, so a set play is always taken well within the timeout. A set play of ours given
 again at the same spot soon after our kick is that set play retaken: another player takes it,
-another way (goal kicks avoid the directions that were retaken).
+another way (goal kicks avoid the directions that were retaken). Corner kicks and kick-ins
+follow the routines of :mod:`agents.teams.routines` (runners into the box, a team-mate
+coming short, crosses, the ball down the line).
 """
 
 from __future__ import annotations
@@ -14,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from agents import skills
+from agents.teams import routines
 from agents.teams.style import TeamStyle
 from soccer_sim.config import MatchConfig
 from soccer_sim.state import PlayMode
@@ -40,6 +44,9 @@ class SetPlays:
         self.proper_goal_kicks = config.rules.proper_goal_kicks
         self.taker = -1
         """Our taker of the current set play (-1: not chosen yet)."""
+        self.routine: tuple[np.ndarray, np.ndarray] | None = None
+        """The current corner's or kick-in's routine players and their goal points (None: not
+        chosen yet; :func:`agents.teams.routines.routine_goals`)."""
         self.goal_kick_leaving = False
         """Our goal kick is on its way out of the penalty area (with proper goal kicks nobody
         of ours may play it yet)."""
@@ -66,6 +73,7 @@ class SetPlays:
         another player takes it another way."""
         self.goal_kick_leaving = False
         self.taker = -1
+        self.routine = None
         taken = self.taken
         retake = (view.mode_ours and taken is not None and taken[0] == int(view.play_mode)
                   and view.cycle - taken[3] <= RETAKE_WINDOW
@@ -92,9 +100,16 @@ class SetPlays:
         of the goal at our goal kicks); theirs needs nothing more than the formation."""
         if not view.mode_ours:
             return
-        if view.play_mode == PlayMode.GOAL_KICK and self.goalie >= 0:
+        mode = view.play_mode
+        taker = self.take(view, goals, command, urgent, since)
+        if mode == PlayMode.GOAL_KICK and self.goalie >= 0 and taker != self.goalie:
             goals[self.goalie] = self.goal_centre_guard
-        self.take(view, goals, command, urgent, since)
+        elif mode in (PlayMode.CORNER_KICK, PlayMode.KICK_IN):
+            if self.routine is None:
+                self.routine = routines.routine_goals(view, self.ctx.model, goals, self.outfield, taker,
+                                                      mode == PlayMode.CORNER_KICK, self.style.routines)
+            rows, points = self.routine
+            goals[rows] = points
 
     def take(self, view: TeamView, goals: np.ndarray, command: TeamCommand, urgent: np.ndarray,
              since: int) -> int:
@@ -107,7 +122,10 @@ class SetPlays:
         goals[taker] = view.ball
         urgent[taker] = True
         waited = view.cycle - since
-        if waited < self.style.set_play_wait:
+        wait = self.style.set_play_wait
+        if view.play_mode == PlayMode.CORNER_KICK:  # the runners need longer to get into the box
+            wait = min(max(wait, self.style.routines.corner_wait), self.patience)
+        if waited < wait:
             return taker
         gaps = np.hypot(*(view.own_pos - view.ball).T)
         kicker = taker
@@ -128,8 +146,12 @@ class SetPlays:
         goals[self.goalie] = view.own_pos[self.goalie]
 
     def _choose_taker(self, view: TeamView) -> int:
-        """The outfield player nearest the ball that has not tried this set play yet (a lone
-        goalkeeper takes it)."""
+        """Our goalkeeper at our goal kicks if it has not tried this one yet, else the outfield
+        player nearest the ball that has not tried this set play yet (a lone goalkeeper takes
+        it)."""
+        if (view.play_mode == PlayMode.GOAL_KICK and self.style.goalkeeper_goal_kicks and self.goalie >= 0
+                and self.goalie not in self.tried_takers):
+            return self.goalie
         candidates = self.outfield if len(self.outfield) else np.arange(self.n)
         fresh = np.setdiff1d(candidates, self.tried_takers)
         if fresh.size:
@@ -151,7 +173,13 @@ class SetPlays:
         else:
             kick = None
             if not self.tried_kicks:
-                kick = skills.decide_on_ball(ctx, view, kicker, self.style.decision).kick
+                mode = view.play_mode
+                if mode == PlayMode.CORNER_KICK:
+                    _, kick = routines.corner_kick(ctx, view, kicker, self.outfield, self.style.routines)
+                elif mode == PlayMode.KICK_IN:
+                    kick = routines.kick_in(ctx, view, kicker, self.style.decision, self.style.routines)
+                else:
+                    kick = skills.decide_on_ball(ctx, view, kicker, self.style.decision).kick
             if kick is None or not kick.any():
                 kick = skills.best_clearance(ctx, view, kicker).kick
             speed = float(np.hypot(*kick))

@@ -5,14 +5,19 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from agents import skills
+from agents.teams.routines import RoutineParams
 
 ATTACKING_DECISIONS = skills.DecisionParams(
-    shot=skills.ShotParams(threshold=0.2),
+    shot=skills.ShotParams(threshold=0.2, lane_range=22.0, lane_pressure=6),
     dribbling=skills.DribbleParams(goal_weight=2.0, speed_fraction=0.85),
 )
 """The built-in team's on-ball choices: shoot when a shot has a fair chance (the skill's own
-threshold waits for a near-certain one, which against a goalkeeper almost never comes) and
-dribble towards the goal rather than along the wings."""
+threshold waits for a near-certain one, which against a goalkeeper almost never comes), or
+from the edge of the box (22 m from the goal centre: the penalty area's depth plus a few
+metres) through a lane no outfield defender can close, once a defender can close the shooter
+down within 6 cycles (the decision's pressure horizon doubled), so the goalkeeper must save,
+as real teams do (about nine shots a match); a shooter left alone carries the ball closer.
+Dribble towards the goal rather than along the wings."""
 
 
 @dataclass(frozen=True)
@@ -42,3 +47,9 @@ class TeamStyle:
     baseline against which positioning is measured)."""
     unfilled_distance: float = 10.0
     """A role counts as unfilled while the player assigned to it is farther than this (m)."""
+    routines: RoutineParams = field(default_factory=RoutineParams)
+    """Our corner-kick and kick-in routines (box runners, the short option, crosses, the ball
+    down the line; :mod:`agents.teams.routines`)."""
+    goalkeeper_goal_kicks: bool = True
+    """Our goalkeeper takes our goal kicks (as in real play; an outfield player when the
+    goalkeeper's attempt was retaken, or when there is none)."""

@@ -1,5 +1,6 @@
 """The built-in teams take every set play of theirs in time and never stall one: the kick-off
-taker stands at the ball, the goalkeeper keeps off our goal kick, a goal kick goes where
+taker stands at the ball, the goalkeeper takes our goal kick (and keeps off it once its
+attempt was retaken), a goal kick goes where
 nobody can play it inside the area, a retaken set play gets another taker and another
 kick, and a taker that does not get to the ball is replaced in time. Hand-built views for
 each, then short matches of the pairings that used to stall (a larger sweep is marked slow)."""
@@ -83,11 +84,31 @@ def test_the_kick_off_taker_is_placed_at_the_ball_and_kicks_after_the_wait(name:
 
 # ---------------------------------------------------------------- goal kick
 
-def test_our_goalkeeper_leaves_the_goal_kick_spot_for_the_goal_centre() -> None:
+def test_our_goalkeeper_takes_the_goal_kick_and_is_the_only_one_at_the_spot() -> None:
     team = ready("mmdr")
     own = goal_kick_line_up()
     assert np.hypot(*(own[0] - SPOT)) < 2.0  # where the stall began
     team.act(view(own, their_half(), SPOT, PlayMode.GOAL_KICK, cycle=100))
+    assert team.set_plays.taker == 0
+    assert np.allclose(team.goals[0], SPOT)  # the goalkeeper runs to the ball
+    others = np.hypot(*(team.goals[1:] - SPOT).T)
+    assert others.min() > 2.0  # nobody else of ours goes to the spot
+    # Placed at the ball, the goalkeeper kicks once the wait is over.
+    own[0] = SPOT + (-0.6, 0.0)
+    team = ready("mmdr")
+    cycle, kicker, kick = play_set_play(team, own, their_half(), SPOT, PlayMode.GOAL_KICK, 100, 30)
+    assert (cycle, kicker) == (100 + team.style.set_play_wait, 0) and kick[0] > 0.0
+
+
+def test_after_the_goalkeepers_goal_kick_is_retaken_it_leaves_the_spot_for_the_goal_centre() -> None:
+    team = ready("mmdr")
+    own = goal_kick_line_up()
+    own[0] = SPOT + (-0.6, 0.0)
+    opp = their_half()
+    first = play_set_play(team, own, opp, SPOT, PlayMode.GOAL_KICK, 100, 30)
+    assert first[1] == 0
+    team.act(view(own, opp, SPOT, PlayMode.GOAL_KICK, cycle=first[0] + 1))  # retaken at once
+    assert team.set_plays.taker != 0
     assert team.goals[0][0] <= -HL + 2.0 and abs(team.goals[0][1]) < 1.0
     assert np.hypot(*(team.goals[0] - SPOT)) > 8.0
 
@@ -119,6 +140,7 @@ def test_a_goal_kick_goes_where_nobody_can_play_it_inside_the_area() -> None:
 def test_a_retaken_goal_kick_gets_another_taker_and_another_kick() -> None:
     team = ready("mmdr")
     own = goal_kick_line_up()
+    own[0] = SPOT + (-0.6, -0.3)  # the goalkeeper, the first taker, at the ball
     opp = their_half()
     first = play_set_play(team, own, opp, SPOT, PlayMode.GOAL_KICK, 100, 30)
     assert first[0] == 100 + team.style.set_play_wait
