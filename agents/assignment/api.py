@@ -217,6 +217,14 @@ def dense_target_of(robots: np.ndarray, targets: np.ndarray, method: str) -> np.
     return _solve_dense(_DENSE_KEYS[method], lengths, squared, None)
 
 
+def dense_target_of_costs(lengths: np.ndarray, method: str) -> np.ndarray:
+    """:func:`dense_target_of` for a cost matrix ``lengths`` (n, m), ``0 < n <= m``, finite and
+    non-negative (e.g. travel times instead of distances): the target index of every row.
+    Nothing is checked: give anything else to :func:`assign_costs`."""
+    squared = lengths * lengths if method in ("msd2", "mmd+msd2") else None
+    return _solve_dense(_DENSE_KEYS[method], lengths, squared, None)
+
+
 _DENSE_KEYS = {method: ("mmdr/fast" if method == "mmdr" else method) for method in METHODS if method != "random"}
 
 

@@ -83,6 +83,15 @@ def _bottleneck_of_points(robots: np.ndarray, targets: np.ndarray):
 
 
 @njit(cache=True, nogil=True)
+def bottleneck_of_points(robots: np.ndarray, targets: np.ndarray) -> tuple[float, np.ndarray]:
+    """``(b, lengths)``: the smallest makespan ``b`` of any assignment of ``robots`` (n, d) to
+    ``targets`` (m, d), ``n <= m``, all finite, and the Euclidean distance matrix it was found
+    on (so a caller compares other assignments' lengths with ``b`` bit for bit)."""
+    lengths, _, _, _, _, value, _, _ = _bottleneck_of_points(robots, targets)
+    return value, lengths
+
+
+@njit(cache=True, nogil=True)
 def mmdr_points(robots: np.ndarray, targets: np.ndarray) -> np.ndarray:
     """:func:`mmdr_assignment` of the Euclidean distances between ``robots`` (n, d) and
     ``targets`` (m, d), ``n <= m``, all finite: the target index of every robot."""
