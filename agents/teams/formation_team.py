@@ -283,7 +283,7 @@ class FormationTeam:
                                                          measured)
         self.figures.add(switches, measured, mean, largest, unfilled)
         if measured and mechanism.sampled(view.cycle):  # fixed roles v the minimal makespan
-            self.figures.add_sample(*mechanism.fixed_and_minimal_makespan(players, role_targets))
+            self.figures.add_sample(*mechanism.makespans(players, role_targets, previous))
         self.role_of_player = role_of_player
         if self.goalie >= 0:
             self.goals[self.goalie] = skills.guard_position(self.model, view.ball)

@@ -10,7 +10,11 @@ times, whatever the players' types. Reported per match (:class:`~agents.teams.re
 
 * ``fixed_roles_optimal_share``: the share of samples in which the fixed roles already have
   the minimal makespan (then no assigner can shorten the longest run);
-* ``makespan_gap``: the mean of (fixed roles' makespan - minimal makespan), m.
+* ``makespan_gap``: the mean of (fixed roles' makespan - minimal makespan), m;
+* ``held_roles_optimal_share`` and ``held_makespan_gap``: the same for the roles the players
+  held at the previous cycle (kept as they are; for ``static`` the shirt numbers). Under an
+  assigner that moves roles about, shirt numbers say what ``static`` would do from here, the
+  held roles whether keeping the current assignment would have been as good.
 
 A pure shift of every target (the formation moving with the ball as one block, players on
 their old targets) keeps fixed roles optimal; the figures say how often play is like that.
@@ -30,16 +34,17 @@ match) estimates the shares to about +-2 %."""
 
 
 @njit(cache=True, nogil=True)
-def fixed_and_minimal_makespan(players: np.ndarray, targets: np.ndarray) -> tuple[float, float]:  # pragma: no cover - compiled
-    """``(fixed, minimal)``: the makespan (m) of player i on target i for ``players`` and
-    ``targets`` (k, 2), and the smallest makespan of any assignment (computed on the same
-    distances, so ``fixed == minimal`` exactly when the fixed roles are optimal)."""
+def makespans(players: np.ndarray, targets: np.ndarray,
+              held: np.ndarray) -> tuple[float, float, float]:  # pragma: no cover - compiled
+    """``(fixed, kept, minimal)`` makespans (m) for ``players`` and ``targets`` (k, 2): player i
+    on target i, player i on target ``held[i]``, and the smallest of any assignment (all on
+    the same distances, so a makespan equals ``minimal`` exactly when it is optimal)."""
     minimal, lengths = bottleneck_of_points(players, targets)
-    fixed = 0.0
+    fixed = kept = 0.0
     for i in range(players.shape[0]):
-        if lengths[i, i] > fixed:
-            fixed = lengths[i, i]
-    return fixed, minimal
+        fixed = max(fixed, lengths[i, i])
+        kept = max(kept, lengths[i, held[i]])
+    return fixed, kept, minimal
 
 
 def sampled(cycle: int) -> bool:
