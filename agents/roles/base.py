@@ -137,17 +137,20 @@ class RoleAssigner(ABC):
                              f"be ({k}, 2) arrays, got players {players.shape} and targets {targets.shape}")
         return k
 
-    @staticmethod
-    def time_scale(context: RoleContext | None, k: int) -> np.ndarray | None:
+    _checked_scale: np.ndarray | None = None
+    """The last ``time_scale`` array found valid (a team gives the same one every cycle)."""
+
+    def time_scale(self, context: RoleContext | None, k: int) -> np.ndarray | None:
         """``context.time_scale`` checked ((k,) finite positive float64, or None); RoleError
         otherwise."""
         scale = getattr(context, "time_scale", None)
-        if scale is None:
-            return None
+        if scale is None or scale is self._checked_scale:
+            return scale
         if not (isinstance(scale, np.ndarray) and scale.shape == (k,) and scale.dtype == np.float64
                 and np.isfinite(scale).all() and (scale > 0).all()):
             raise RoleError(f"context.time_scale must be a finite positive float64 ({k},) array or None, "
                             f"got {scale!r}")
+        self._checked_scale = scale
         return scale
 
     def check_order(self, role_order: np.ndarray, k: int) -> None:

@@ -20,8 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from agents.assignment.api import dense_target_of, dense_target_of_costs
-from agents.assignment.geometry import dense_distances
+from agents.assignment.api import dense_target_of
 from agents.roles.base import RoleAssigner, RoleContext
 from agents.roles.errors import RoleError
 from agents.roles.kernels import all_finite, greedy_in_order
@@ -57,11 +56,7 @@ class MethodAssigner(RoleAssigner):
         targets = np.ascontiguousarray(targets, dtype=np.float64)
         if not all_finite(players, targets):
             raise RoleError(f"role assigner {self.name!r}: players and targets must be finite")
-        scale = self.time_scale(context, players.shape[0])
-        if scale is None:
-            return dense_target_of(players, targets, self.method)
-        lengths, _ = dense_distances(players, targets)
-        return dense_target_of_costs(lengths * scale[:, None], self.method)
+        return dense_target_of(players, targets, self.method, self.time_scale(context, players.shape[0]))
 
 
 class GreedyOffenseAssigner(RoleAssigner):
