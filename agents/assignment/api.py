@@ -199,24 +199,33 @@ def assign(
     return _result(col_of_row, lengths[np.arange(n_rows), col_of_row], transposed, n, m, name)
 
 
-def dense_target_of(robots: np.ndarray, targets: np.ndarray, method: str) -> np.ndarray:
+def dense_target_of(robots: np.ndarray, targets: np.ndarray, method: str,
+                    scale: np.ndarray | None = None) -> np.ndarray:
     """``assign(robots, targets, method).target_of`` for a caller whose inputs are already
     clean, without the checks and the result object: for per-cycle callers such as the
     soccer role assigners, where those cost as much as solving a 10 x 10 problem.
 
     ``robots`` (n, d) and ``targets`` (m, d) must be finite float64 arrays with
     ``0 < n <= m`` and fewer than :data:`SPARSE_MIN_PAIRS` pairs; ``method`` one of
-    :data:`METHODS` but ``"random"`` (``"mmdr"`` uses the fast algorithm). Nothing is
-    checked: give anything else to :func:`assign`.
+    :data:`METHODS` but ``"random"`` (``"mmdr"`` uses the fast algorithm). ``scale`` (n,)
+    finite and positive, or None: robot i's distances are multiplied by ``scale[i]`` (travel
+    times of robots of different speeds, in metres at a reference speed); None leaves them
+    plain, bit for bit. Nothing is checked: give anything else to :func:`assign` or
+    :func:`assign_costs`.
     """
     if method == "mmdr":
-        return mmdr_points(robots, targets)
+        return mmdr_points(robots, targets, _NO_SCALE if scale is None else scale)
     if method == "mmd+msd2":
-        return mmd_msd2_points(robots, targets)
+        return mmd_msd2_points(robots, targets, _NO_SCALE if scale is None else scale)
     lengths, squared = dense_distances(robots, targets)
+    if scale is not None:
+        lengths = lengths * scale[:, None]
+        squared = lengths * lengths
     return _solve_dense(_DENSE_KEYS[method], lengths, squared, None)
 
 
+_NO_SCALE = np.empty(0)
+"""An empty scale: plain distances."""
 _DENSE_KEYS = {method: ("mmdr/fast" if method == "mmdr" else method) for method in METHODS if method != "random"}
 
 

@@ -73,28 +73,46 @@ def refine_to_lexicographic(
 
 
 @njit(cache=True, nogil=True)
-def _bottleneck_of_points(robots: np.ndarray, targets: np.ndarray):
+def _bottleneck_of_points(robots: np.ndarray, targets: np.ndarray, scale: np.ndarray):
     """The Euclidean problem's matrices, its graph and a bottleneck matching:
-    ``(lengths, squared, indptr, indices, pair_lengths, value, col_of_row, row_of_col)``."""
+    ``(lengths, squared, indptr, indices, pair_lengths, value, col_of_row, row_of_col)``. A
+    non-empty ``scale`` (n,) multiplies robot i's lengths by ``scale[i]`` first (travel times
+    of robots of different speeds, in the unit of a reference speed)."""
     lengths, squared = dense_distances(robots, targets)
+    if scale.shape[0]:
+        for i in range(lengths.shape[0]):
+            for j in range(lengths.shape[1]):
+                lengths[i, j] *= scale[i]
+                squared[i, j] = lengths[i, j] * lengths[i, j]
     indptr, indices, pair_lengths = dense_to_graph(lengths)
     value, col_of_row, row_of_col = bottleneck_matching(indptr, indices, pair_lengths, lengths.shape[1])
     return lengths, squared, indptr, indices, pair_lengths, value, col_of_row, row_of_col
 
 
 @njit(cache=True, nogil=True)
-def mmdr_points(robots: np.ndarray, targets: np.ndarray) -> np.ndarray:
+def bottleneck_of_points(robots: np.ndarray, targets: np.ndarray) -> tuple[float, np.ndarray]:
+    """``(b, lengths)``: the smallest makespan ``b`` of any assignment of ``robots`` (n, d) to
+    ``targets`` (m, d), ``n <= m``, all finite, and the Euclidean distance matrix it was found
+    on (so a caller compares other assignments' lengths with ``b`` bit for bit)."""
+    lengths, _, _, _, _, value, _, _ = _bottleneck_of_points(robots, targets, np.empty(0))
+    return value, lengths
+
+
+@njit(cache=True, nogil=True)
+def mmdr_points(robots: np.ndarray, targets: np.ndarray, scale: np.ndarray) -> np.ndarray:
     """:func:`mmdr_assignment` of the Euclidean distances between ``robots`` (n, d) and
-    ``targets`` (m, d), ``n <= m``, all finite: the target index of every robot."""
-    _, _, indptr, indices, pair_lengths, value, col_of_row, row_of_col = _bottleneck_of_points(robots, targets)
+    ``targets`` (m, d), ``n <= m``, all finite (robot i's times ``scale[i]`` when ``scale``
+    is not empty): the target index of every robot."""
+    _, _, indptr, indices, pair_lengths, value, col_of_row, row_of_col = _bottleneck_of_points(robots, targets,
+                                                                                                scale)
     return refine_to_lexicographic(indptr, indices, pair_lengths, value, col_of_row, row_of_col)
 
 
 @njit(cache=True, nogil=True)
-def bottleneck_squares(robots: np.ndarray, targets: np.ndarray) -> np.ndarray:
-    """The squared distances between ``robots`` and ``targets`` (as :func:`mmdr_points`),
+def bottleneck_squares(robots: np.ndarray, targets: np.ndarray, scale: np.ndarray) -> np.ndarray:
+    """The squared distances between ``robots`` and ``targets`` (scaled as :func:`mmdr_points`),
     ``inf`` for pairs longer than the bottleneck value: MMD+MSD²'s second-stage costs."""
-    lengths, squared, _, _, _, value, _, _ = _bottleneck_of_points(robots, targets)
+    lengths, squared, _, _, _, value, _, _ = _bottleneck_of_points(robots, targets, scale)
     for i in range(lengths.shape[0]):
         for j in range(lengths.shape[1]):
             if not lengths[i, j] <= value:
@@ -102,6 +120,7 @@ def bottleneck_squares(robots: np.ndarray, targets: np.ndarray) -> np.ndarray:
     return squared
 
 
-def mmd_msd2_points(robots: np.ndarray, targets: np.ndarray) -> np.ndarray:
-    """:func:`mmd_msd2_assignment` of the Euclidean distances between ``robots`` and ``targets``."""
-    return linear_sum_assignment(bottleneck_squares(robots, targets))[1].astype(np.int64, copy=False)
+def mmd_msd2_points(robots: np.ndarray, targets: np.ndarray, scale: np.ndarray) -> np.ndarray:
+    """:func:`mmd_msd2_assignment` of the Euclidean distances between ``robots`` and ``targets``
+    (scaled as :func:`mmdr_points`)."""
+    return linear_sum_assignment(bottleneck_squares(robots, targets, scale))[1].astype(np.int64, copy=False)

@@ -49,6 +49,13 @@ class RoleContext:
     controlling the ball, when the team knows better than the straight distance to ``ball``
     (e.g. the cycles its interception takes times the top speed, or inf when it cannot
     intercept). None: the straight distance. Bidding's ball role uses it."""
+    time_scale: np.ndarray | None = None
+    """Optional (k,) positive factor per outfield player (row of ``players``) turning its
+    distances into *time costs*: ``distance * time_scale[i]`` is the time player i needs, in
+    metres run at a reference speed (``reference_speed / top_speed[i]``, so a faster player's
+    metres cost less). Every assigner that weighs distances (all but ``static`` and ``random``)
+    uses it; None (the default, and what a team of equal players gives) means plain
+    distances, exactly as before."""
 
 
 def offensive_order(targets: np.ndarray) -> np.ndarray:
@@ -129,6 +136,22 @@ class RoleAssigner(ABC):
             raise RoleError(f"role assigner {self.name!r} was reset for {k} roles: players and targets must "
                              f"be ({k}, 2) arrays, got players {players.shape} and targets {targets.shape}")
         return k
+
+    _checked_scale: np.ndarray | None = None
+    """The last ``time_scale`` array found valid (a team gives the same one every cycle)."""
+
+    def time_scale(self, context: RoleContext | None, k: int) -> np.ndarray | None:
+        """``context.time_scale`` checked ((k,) finite positive float64, or None); RoleError
+        otherwise."""
+        scale = getattr(context, "time_scale", None)
+        if scale is None or scale is self._checked_scale:
+            return scale
+        if not (isinstance(scale, np.ndarray) and scale.shape == (k,) and scale.dtype == np.float64
+                and np.isfinite(scale).all() and (scale > 0).all()):
+            raise RoleError(f"context.time_scale must be a finite positive float64 ({k},) array or None, "
+                            f"got {scale!r}")
+        self._checked_scale = scale
+        return scale
 
     def check_order(self, role_order: np.ndarray, k: int) -> None:
         """RoleError unless ``role_order`` is a permutation of ``range(k)`` (for assigners that

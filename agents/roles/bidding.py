@@ -42,6 +42,10 @@ higher-priority role: winning the ball role always wins) and either
 Otherwise the best free bidder wins and the role's clock restarts. With ``min_hold = 0`` and
 ``switch_margin = 0`` the auction is memoryless.
 
+**Players of different speeds** (``context.time_scale``): a player's formation-role costs and
+its straight distance to the ball are multiplied by its time factor, so bids are times (in
+metres at the reference speed); a given ``ball_reach`` is used as it is.
+
 **Supporters** do not run straight to their targets: :meth:`BiddingAssigner.steer` moves each
 one a step down the potential field of :mod:`agents.roles.potential_field` anchored at its
 role's target (offensive terms for roles whose target is level with or ahead of the ball,
@@ -156,7 +160,8 @@ class BiddingAssigner(RoleAssigner):
     def bids(self, players: np.ndarray, targets: np.ndarray, context: RoleContext) -> np.ndarray:
         """(k, k + 1) costs, lower is better: column r < k formation role r, column k the ball role."""
         k = self.check_inputs(players, targets)
-        return bid_costs(players, targets, context.ball, context.opp_goal, self._reach(context, k), self._bidding)
+        return bid_costs(players, targets, context.ball, context.opp_goal, self._reach(context, k), self._bidding,
+                         self._scale(context, k))
 
     def assign(self, players: np.ndarray, targets: np.ndarray, role_order: np.ndarray,
                previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
@@ -164,7 +169,7 @@ class BiddingAssigner(RoleAssigner):
         self.check_order(role_order, k)
         role_of_player, ball_player, covered = bidding_round(
             players, targets, role_order, context.ball, context.opp_goal, self._reach(context, k), self._bidding,
-            self.holder, self.since, self.last_role, context.cycle)
+            self.holder, self.since, self.last_role, context.cycle, self._scale(context, k))
         self._ball_player, self.covered = int(ball_player), int(covered)
         return role_of_player
 
@@ -179,6 +184,11 @@ class BiddingAssigner(RoleAssigner):
         if np.isnan(reach).any():
             raise RoleError("role assigner 'bidding': context.ball_reach holds NaN")
         return reach
+
+    def _scale(self, context: RoleContext, k: int) -> np.ndarray:
+        """``context.time_scale`` checked, or an empty array (plain distances)."""
+        scale = self.time_scale(context, k)
+        return _NO_REACH if scale is None else scale
 
     def ball_player(self) -> int | None:
         """The winner of the ball role at the last ``assign`` (None before the first)."""

@@ -53,9 +53,10 @@ def is_permutation(order: np.ndarray, k: int) -> bool:  # pragma: no cover - com
 
 
 @njit(cache=True, nogil=True)
-def greedy_in_order(players: np.ndarray, targets: np.ndarray,
-                    order: np.ndarray) -> np.ndarray:  # pragma: no cover - compiled
-    """For each role in ``order``, the nearest player not yet taken (ties: lower row)."""
+def greedy_in_order(players: np.ndarray, targets: np.ndarray, order: np.ndarray,
+                    scale: np.ndarray) -> np.ndarray:  # pragma: no cover - compiled
+    """For each role in ``order``, the nearest player not yet taken (ties: lower row); with a
+    non-empty ``scale`` (k,) the one with the least ``distance * scale[i]`` (time cost)."""
     k = players.shape[0]
     role_of_player = np.full(k, -1, dtype=np.int64)
     for r in order:
@@ -64,6 +65,8 @@ def greedy_in_order(players: np.ndarray, targets: np.ndarray,
         for i in range(k):
             if role_of_player[i] < 0:
                 d = (players[i, 0] - tx) ** 2 + (players[i, 1] - ty) ** 2
+                if scale.shape[0]:
+                    d *= scale[i] * scale[i]
                 if d < best_d or best < 0:  # the first free player stands in for NaN distances
                     best, best_d = i, d
         role_of_player[best] = r
@@ -85,9 +88,11 @@ def all_finite(a: np.ndarray, b: np.ndarray) -> bool:  # pragma: no cover - comp
 
 @njit(cache=True, nogil=True)
 def bid_costs(players: np.ndarray, targets: np.ndarray, ball: np.ndarray, goal: np.ndarray, reach: np.ndarray,
-              params: np.ndarray) -> np.ndarray:  # pragma: no cover - compiled
+              params: np.ndarray, scale: np.ndarray) -> np.ndarray:  # pragma: no cover - compiled
     """The bid costs of :mod:`agents.roles.bidding`'s docstring; ``reach`` (k,) the ball reach
-    of every player, or empty for the straight distance; ``params`` is
+    of every player, or empty for the straight distance; ``scale`` (k,) each player's time
+    factor (its formation-role costs and straight ball distance are multiplied by it), or
+    empty for none; ``params`` is
     :meth:`~agents.roles.bidding.BiddingParams.as_record` (the bid weights are read from it).
     Returns (k, k + 1): formation roles, then the ball role."""
     k = players.shape[0]
@@ -102,13 +107,20 @@ def bid_costs(players: np.ndarray, targets: np.ndarray, ball: np.ndarray, goal: 
             c = math.hypot(px - targets[r, 0], py - targets[r, 1])
             if targets[r, 0] < ball[0] and px > targets[r, 0]:
                 c += goal_side * (px - targets[r, 0])
+            if scale.shape[0]:
+                c *= scale[i]
             costs[i, r] = c
         bx, by = ball[0] - px, ball[1] - py
         d = math.hypot(bx, by)
         theta = 0.0
         if d > 1e-9 and goal_dist > 1e-9:
             theta = math.acos(min(max((bx * gx + by * gy) / (d * goal_dist), -1.0), 1.0))
-        costs[i, k] = min(d if reach.shape[0] == 0 else reach[i], cap) + angle_weight * theta
+        near = d
+        if reach.shape[0]:
+            near = reach[i]
+        elif scale.shape[0]:
+            near = d * scale[i]
+        costs[i, k] = min(near, cap) + angle_weight * theta
     return costs
 
 
@@ -155,15 +167,16 @@ def covered_role(targets: np.ndarray, order: np.ndarray, ball: np.ndarray, kept:
 @njit(cache=True, nogil=True)
 def bidding_round(players: np.ndarray, targets: np.ndarray, order: np.ndarray, ball: np.ndarray,
                   goal: np.ndarray, reach: np.ndarray, params: np.ndarray, holder: np.ndarray, since: np.ndarray,
-                  last_role: np.ndarray, cycle: int) -> tuple[np.ndarray, int, int]:  # pragma: no cover - compiled
+                  last_role: np.ndarray, cycle: int,
+                  scale: np.ndarray) -> tuple[np.ndarray, int, int]:  # pragma: no cover - compiled
     """One cycle of bidding with ``params``
     (:meth:`~agents.roles.bidding.BiddingParams.as_record`): (role_of_player, the ball player,
     the covered formation role); updates the hysteresis memory (``holder``, ``since``) and
-    ``last_role`` (each player's role)."""
+    ``last_role`` (each player's role); ``scale`` as :func:`bid_costs`."""
     k = players.shape[0]
     p = params[0]
     min_hold, margin, slack = p.min_hold, p.switch_margin, p.cover_slack
-    costs = bid_costs(players, targets, ball, goal, reach, params)
+    costs = bid_costs(players, targets, ball, goal, reach, params, scale)
     taken = np.zeros(k, dtype=np.bool_)
     winners = np.full(k + 1, -1, dtype=np.int64)
     auction(costs, np.array([k]), taken, holder, since, cycle, min_hold, margin, winners)

@@ -6,6 +6,11 @@
   Minimal-makespan for Formational Positioning"), ``msd``, ``msd2`` and ``greedy`` (the
   shortest remaining player-role pair first, ties to the lower player then the lower role):
   :func:`agents.assignment.assign` with that method on Euclidean distances.
+
+Every assigner here that weighs distances uses *time costs* when the team's players differ in
+speed (``context.time_scale``, see :class:`~agents.roles.base.RoleContext`): a player's
+distance to a target times its factor, so a faster player far away may take a target a slow
+near one would have taken. With equal players (``time_scale`` None) they are plain distances.
 * ``greedy-offense``: roles from the most to the least offensive, each taken by the nearest
   free player (ties to the lower player row).
 * ``random``: a fresh uniformly random permutation every call, from the team's generator.
@@ -51,11 +56,12 @@ class MethodAssigner(RoleAssigner):
         targets = np.ascontiguousarray(targets, dtype=np.float64)
         if not all_finite(players, targets):
             raise RoleError(f"role assigner {self.name!r}: players and targets must be finite")
-        return dense_target_of(players, targets, self.method)
+        return dense_target_of(players, targets, self.method, self.time_scale(context, players.shape[0]))
 
 
 class GreedyOffenseAssigner(RoleAssigner):
-    """Roles in ``role_order`` (most offensive first), each taken by the nearest free player."""
+    """Roles in ``role_order`` (most offensive first), each taken by the nearest free player
+    (the quickest there, with ``context.time_scale``)."""
 
     name = "greedy-offense"
 
@@ -63,7 +69,12 @@ class GreedyOffenseAssigner(RoleAssigner):
                previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
         k = self.check_inputs(players, targets)
         self.check_order(role_order, k)
-        return greedy_in_order(players, targets, role_order)
+        scale = self.time_scale(context, k)
+        return greedy_in_order(players, targets, role_order, _EQUAL if scale is None else scale)
+
+
+_EQUAL = np.empty(0)
+"""An empty time scale: plain distances."""
 
 
 class RandomAssigner(RoleAssigner):

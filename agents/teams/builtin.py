@@ -3,6 +3,10 @@
 * The **assigner variants** (``mmdr``, ``mmd+msd2``, ``static``, ``greedy``,
   ``greedy-offense``, ``bidding``, ``msd``, ``msd2``, ``random``) are one team, a 4-3-3 with
   the default style, that differ only in their role assigner: the experiments compare them.
+* ``<assigner>-leave`` (every assigner variant but ``bidding``, e.g. ``mmdr-leave``,
+  ``mmd+msd2-leave``, ``static-leave``): the same team with ``ball_role="leave"``, the player
+  who goes for the ball out of the matching (:mod:`agents.teams.ball_role`; ``bidding``
+  already leaves its ball player out of its auction).
 * ``statues``: the same team whose outfield players never leave their kick-off spots (they
   kick a ball that comes to them); the baseline that says whether positioning matters.
 * Three **reference opponents** with their own formations and styles:
@@ -26,6 +30,9 @@ ASSIGNER_VARIANTS: tuple[str, ...] = (
 )
 """Team names that are the built-in team with that role assigner."""
 
+LEAVE_VARIANTS: tuple[str, ...] = tuple(f"{a}-leave" for a in ASSIGNER_VARIANTS if a != "bidding")
+"""Team names that are the built-in team with that assigner and ``ball_role="leave"``."""
+
 COUNTER_442 = TeamStyle(
     system="4-4-2", depth=-6.0, pressers=1,
     decision=replace(ATTACKING_DECISIONS, pass_good=1.0, dribble_clearance=2.0, clear_line=-0.1,
@@ -43,13 +50,23 @@ POSSESSION = TeamStyle(
 )
 
 
-def _variant(assigner: str) -> Callable[[], FormationTeam]:
+def _variant(assigner: str, ball_role: str = "keep") -> Callable[[], FormationTeam]:
+    leave = ball_role == "leave"
+
     def make() -> FormationTeam:
+        if leave:
+            return FormationTeam(assigner, LEAVE_STYLE, name=f"{assigner}-leave")
         return FormationTeam(assigner)
 
-    make.__name__ = make.__qualname__ = f"{assigner.replace('+', '_').replace('-', '_')}_team"
-    make.__doc__ = f"The built-in team with the {assigner!r} role assigner."
+    stem = assigner.replace('+', '_').replace('-', '_')
+    make.__name__ = make.__qualname__ = f"{stem}_leave_team" if leave else f"{stem}_team"
+    make.__doc__ = (f"The built-in team with the {assigner!r} role assigner" +
+                    (", its ball player out of the matching." if leave else "."))
     return make
+
+
+LEAVE_STYLE = TeamStyle(ball_role="leave")
+"""The assigner variants' style with the ball player out of the matching."""
 
 
 mmdr_team = _variant("mmdr")
@@ -61,6 +78,14 @@ bidding_team = _variant("bidding")
 msd_team = _variant("msd")
 msd2_team = _variant("msd2")
 random_team = _variant("random")
+mmdr_leave_team = _variant("mmdr", "leave")
+mmd_msd2_leave_team = _variant("mmd+msd2", "leave")
+static_leave_team = _variant("static", "leave")
+greedy_leave_team = _variant("greedy", "leave")
+greedy_offense_leave_team = _variant("greedy-offense", "leave")
+msd_leave_team = _variant("msd", "leave")
+msd2_leave_team = _variant("msd2", "leave")
+random_leave_team = _variant("random", "leave")
 
 
 def statues_team() -> FormationTeam:

@@ -44,11 +44,14 @@ import numpy as np
 import formations
 from agents import skills
 from agents.roles import RoleAssigner, RoleContext, make_assigner, offensive_order
+from agents.teams import mechanism
+from agents.teams.ball_role import LeaveMatching, check_ball_role
 from agents.teams.reporting import RoleFigures
 from agents.teams.role_behaviours import RoleBehaviours
 from agents.teams.role_kernels import pull_onside, settle_roles, shape_targets
 from agents.teams.set_plays import SetPlays
 from agents.teams.style import ATTACKING_DECISIONS, TeamStyle
+from agents.teams.type_choice import choose_types, time_scales
 from formations.formation_set import Situation
 from soccer_sim.config import MatchConfig
 from soccer_sim.state import SET_PLAYS, PlayMode
@@ -84,6 +87,13 @@ class FormationTeam:
         self._goalie_role = kinds.index("goalkeeper")
         self._outfield_roles = np.array([r for r in range(len(kinds)) if r != self._goalie_role], dtype=np.int64)
         self._forward_roles = np.array([r for r in range(len(kinds)) if kinds[r] == "forward"], dtype=np.int64)
+        leave = check_ball_role(self.style.ball_role, assigner) == "leave"
+        self._leave = LeaveMatching(assigner, assigner_params) if leave else None  # (agents.teams.ball_role)
+
+    def choose_player_types(self, types: tuple, side_info: SideInfo) -> list[int]:
+        """Each player's type, by its role (:mod:`agents.teams.type_choice`)."""
+        return choose_types(types, self.formation_set, self._outfield_roles, side_info.players_per_team,
+                            side_info.goalie_index)
 
     # ------------------------------------------------------------------ match lifecycle
     def reset(self, side_info: SideInfo, config: MatchConfig, rng: np.random.Generator) -> None:
@@ -112,6 +122,9 @@ class FormationTeam:
         self._out_roles = _as_slice(self._outfield_roles)
         if len(self.outfield):  # (a goalkeeper alone, or nobody, has no roles to assign)
             self.assigner.reset(len(self.outfield), rng)
+            if self._leave is not None:
+                self._leave.reset(self.outfield, n, rng)
+        self._ball_row, self._ball_row_cycle = -1, -1  # the ball player chosen before the matching, its cycle
         self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
         self.goals = np.zeros((n, 2))
         self.targets = np.zeros((roles, 2))
@@ -123,6 +136,7 @@ class FormationTeam:
             opponents=np.zeros((n, 2)), field_half_length=model.half_length, field_half_width=model.half_width,
             cycle=0, attacking=False, penalty_area_length=model.penalty_area_length,
             penalty_area_half_width=model.penalty_area_half_width,
+            time_scale=time_scales(side_info.player_types, side_info.own_types, self.outfield, config),
         )
         """What the assigner sees besides positions; one object per match, refreshed every cycle."""
         self._kickable = model.kickable_distance
@@ -193,7 +207,7 @@ class FormationTeam:
                           self._forward_roles, 1.0 - style.box_narrowing, bool(narrowed))
         if mode == _PLAY_ON and situation != Situation.NORMAL:
             self.role_behaviours.adjust(targets, situation == Situation.ATTACK, ball_ref, view.opp_pos)
-        self._assign_roles(view, targets, ball_ref)
+        self._assign_roles(view, targets, ball_ref, race)
         urgent = np.zeros(self.n, dtype=bool)
         if mode == _PLAY_ON:
             self._play_on(view, race, urgent)
@@ -234,8 +248,10 @@ class FormationTeam:
             return (Situation.OUR_SET_PLAY if view.mode_ours else Situation.THEIR_SET_PLAY), view.ball
         return Situation.NORMAL, view.ball
 
-    def _assign_roles(self, view: TeamView, targets: np.ndarray, ball_ref: np.ndarray) -> None:
-        """Outfield players -> outfield roles (the assigner), and everybody's goal point."""
+    def _assign_roles(self, view: TeamView, targets: np.ndarray, ball_ref: np.ndarray,
+                      race: skills.BallRace) -> None:
+        """Outfield players -> outfield roles (the assigner; with ``ball_role="leave"`` in play
+        on, the ball player out of the matching), and everybody's goal point."""
         outfield = self._out
         role_targets = targets[self._out_roles]
         players = view.own_pos[outfield]
@@ -252,8 +268,14 @@ class FormationTeam:
             context.cycle = view.cycle
             context.attacking = self._situation == Situation.ATTACK
             assigner = self.assigner
-            order = offensive_order(role_targets) if assigner.uses_role_order else None
-            role_of_player = assigner.assign(players, role_targets, order, self.role_of_player, context)
+            role_of_player = self._ball_row_cycle = None
+            if self._leave is not None and view.play_mode == _PLAY_ON:
+                self._ball_row, self._ball_row_cycle = self._ball_player(view, race), view.cycle
+                role_of_player = self._leave.assign(players, role_targets, self._ball_row, race.ours.points,
+                                                    self.role_of_player, context)
+            if role_of_player is None:
+                order = offensive_order(role_targets) if assigner.uses_role_order else None
+                role_of_player = assigner.assign(players, role_targets, order, self.role_of_player, context)
             # An assigner that keeps the default steer sends each player to its role's target:
             # the kernel below places those goals itself.
             goals = assigner.steer(players, role_targets, role_of_player, context) if self._steers else None
@@ -263,6 +285,8 @@ class FormationTeam:
                                                          goals, players, previous, self.style.unfilled_distance,
                                                          measured)
         self.figures.add(switches, measured, mean, largest, unfilled)
+        if measured and mechanism.sampled(view.cycle):  # fixed roles v the minimal makespan
+            self.figures.add_sample(*mechanism.makespans(players, role_targets, previous))
         self.role_of_player = role_of_player
         if self.goalie >= 0:
             self.goals[self.goalie] = skills.guard_position(self.model, view.ball)
@@ -332,6 +356,8 @@ class FormationTeam:
 
     def _ball_player(self, view: TeamView, race: skills.BallRace) -> int:
         """Our player who goes for the ball (-1: none can reach it in time)."""
+        if self._ball_row_cycle == view.cycle:  # chosen before the matching this cycle
+            return self._ball_row
         named = self.assigner.ball_player()
         if named is not None and not self.style.stationary:
             return int(self.outfield[named])

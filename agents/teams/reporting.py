@@ -21,6 +21,10 @@ class RoleFigures:
         self.distance_sum = 0.0
         self.makespan_sum = 0.0
         self.unfilled_role_cycles = 0
+        self.samples = 0
+        """Cycles sampled for the mechanism figures (:mod:`agents.teams.mechanism`)."""
+        self.fixed_optimal = self.held_optimal = 0
+        self.gap_sum = self.held_gap_sum = 0.0
 
     def add(self, switches: int, measured: bool, mean: float, largest: float, unfilled: int) -> None:
         """One cycle's figures: role switches (counted in every play mode) and, for a
@@ -33,11 +37,23 @@ class RoleFigures:
             self.makespan_sum += largest
             self.unfilled_role_cycles += unfilled
 
+    def add_sample(self, fixed: float, held: float, minimal: float) -> None:
+        """One sampled cycle of :mod:`agents.teams.mechanism`: the makespans (m) of the fixed
+        shirt-number roles, of the roles held at the previous cycle, and the minimal one."""
+        self.samples += 1
+        self.fixed_optimal += fixed <= minimal
+        self.gap_sum += fixed - minimal
+        self.held_optimal += held <= minimal
+        self.held_gap_sum += held - minimal
+
     def statistics(self) -> dict[str, float]:
         """Role switches per minute of play, the mean and the largest distance from the
         outfield players to their role targets (averaged over cycles: the largest is the
-        assignment's makespan), and the share of role-cycles a role was unfilled."""
+        assignment's makespan), the share of role-cycles a role was unfilled, and over the
+        sampled cycles the share in which fixed (and held) roles already had the minimal
+        makespan and the mean makespan gap (m; :mod:`agents.teams.mechanism`)."""
         cycles = max(self.cycles, 1)
+        samples = max(self.samples, 1)
         roles = max(self.roles, 1)
         return {
             "role_switches_per_minute": self.switches / max(self.cycles / self.cycles_per_minute, 1e-9)
@@ -45,4 +61,8 @@ class RoleFigures:
             "target_distance_mean": self.distance_sum / cycles,
             "target_distance_max": self.makespan_sum / cycles,
             "role_unfilled_share": self.unfilled_role_cycles / (cycles * roles),
+            "fixed_roles_optimal_share": self.fixed_optimal / samples,
+            "makespan_gap": self.gap_sum / samples,
+            "held_roles_optimal_share": self.held_optimal / samples,
+            "held_makespan_gap": self.held_gap_sum / samples,
         }

@@ -8,6 +8,16 @@ assigner and opponent; per assigner its role switches per minute, teammate conta
 distance run per match, and the paired difference of its goal difference from the
 ``--baseline`` assigner's against the same reference opponents on the same seeds (with the
 paired t-test's p-value). Written as CSV, Markdown and a PNG to ``--tables``.
+
+By default ``--teams`` are the nine assigner variants (the team's default ``ball_role``,
+"keep") and ``mmdr``, ``mmd+msd2`` and ``static`` with the other setting (``-leave``: the
+player who goes for the ball out of the matching, :mod:`agents.teams.ball_role`). The
+behaviour table also carries the mechanism the built-in team measures
+(:mod:`agents.teams.mechanism`, every 10th play-on cycle): the share of cycles in which the
+fixed shirt-number roles, and the roles held at the previous cycle, already were a
+minimal-makespan assignment, the mean makespan gap of the fixed roles (m), and the share of
+role-cycles a role was unfilled (its player more than 10 m from its target). Teams that do
+not report a figure show "-".
 """
 
 from __future__ import annotations
@@ -19,11 +29,16 @@ from pathlib import Path
 from experiments.commands import doc_summary
 
 KIND = "case-study"
-DEFAULT_TEAMS = ("mmdr", "mmd+msd2", "static", "greedy", "greedy-offense", "bidding")
+DEFAULT_TEAMS = ("mmdr", "mmd+msd2", "static", "greedy", "greedy-offense", "bidding", "msd", "msd2", "random",
+                 "mmdr-leave", "mmd+msd2-leave", "static-leave")
 DEFAULT_OPPONENTS = ("counter-442", "press-433", "possession", "mmd+msd2")
 BEHAVIOUR = (("role switches / min", "role_switches_per_minute", 1.0),
              ("teammate contacts", "teammate_contacts", 1.0),
-             ("distance run (km)", "distance_run", 1e-3))
+             ("distance run (km)", "distance_run", 1e-3),
+             ("fixed roles optimal (share)", "fixed_roles_optimal_share", 1.0),
+             ("fixed roles' makespan gap (m)", "makespan_gap", 1.0),
+             ("held roles optimal (share)", "held_roles_optimal_share", 1.0),
+             ("role unfilled (share)", "role_unfilled_share", 1.0))
 """(column, statistic, scale) of the behaviour table."""
 
 

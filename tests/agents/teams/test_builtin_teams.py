@@ -140,7 +140,9 @@ def test_reported_statistics_and_drawing() -> None:
     result = soccer_sim.run_match(team, "chaser", seed=2, config=MatchConfig(max_cycles=600))
     reported = result.statistics[0].reported
     assert set(reported) == {"role_switches_per_minute", "target_distance_mean", "target_distance_max",
-                             "role_unfilled_share"}
+                             "role_unfilled_share", "fixed_roles_optimal_share", "makespan_gap",
+                             "held_roles_optimal_share", "held_makespan_gap"}
+    assert 0.0 <= reported["fixed_roles_optimal_share"] <= 1.0 and reported["makespan_gap"] >= 0.0
     assert reported["target_distance_max"] >= reported["target_distance_mean"] > 0.0
     assert 0.0 <= reported["role_unfilled_share"] <= 1.0
     drawing = team.drawing()
