@@ -46,6 +46,7 @@ from agents.roles import RoleAssigner, RoleContext, make_assigner, offensive_ord
 from agents.teams.reporting import RoleFigures
 from agents.teams.role_kernels import pull_onside, settle_roles, shape_targets
 from agents.teams.set_plays import SetPlays
+from agents.teams.shape import Shape
 from agents.teams.style import ATTACKING_DECISIONS, TeamStyle
 from formations.formation_set import Situation
 from soccer_sim.config import MatchConfig
@@ -133,6 +134,9 @@ class FormationTeam:
         """Our set plays: takers, retakes, kick-off placement, the goalkeeper's held ball."""
         self.figures = RoleFigures(config, len(self.outfield))
         """The per-match figures :meth:`statistics` reports."""
+        self.shape = Shape(self.style.shape, [role.kind for role in self.formation_set.roles], self.style.depth,
+                           self.style.attack_push, model.half_length, model.half_width)
+        """The team's shape in open play: attack/defend switch, pace, rest defence, support."""
 
     def _kick_off_spots(self) -> np.ndarray:
         """(n, 2) where each role stands at our kick-off (team frame)."""
@@ -179,12 +183,14 @@ class FormationTeam:
         targets = self.targets
         targets[:] = self.formation_set.positions(ball_ref, situation)
         style = self.style
-        shift = style.depth + (style.attack_push if situation == Situation.ATTACK else 0.0)
+        shift = self.shape.shift
         shifted = mode == _PLAY_ON and shift != 0.0
         narrowed = situation == Situation.ATTACK and ball_ref[0] > self._half_length / 3.0 and style.box_narrowing
         if shifted or narrowed:
             shape_targets(targets, self._match_roles, shift, shifted, self._half_length - 2.0,
                           self._forward_roles, 1.0 - style.box_narrowing, bool(narrowed))
+        if not style.stationary:
+            self.shape.settle(view, targets, mode == _PLAY_ON)
         self._assign_roles(view, targets, ball_ref)
         urgent = np.zeros(self.n, dtype=bool)
         set_plays.sprinter = -1
@@ -220,11 +226,7 @@ class FormationTeam:
         """The formation situation and the ball position to query it at."""
         mode = view.play_mode
         if mode == _PLAY_ON:
-            if race.we_win and race.ours.first >= 0:
-                return Situation.ATTACK, race.ours.points[race.ours.first]
-            if race.theirs.first >= 0:
-                return Situation.DEFEND, race.theirs.points[race.theirs.first]
-            return Situation.NORMAL, view.ball
+            return self.shape.play_on(view, race)
         if mode == _AFTER_GOAL:
             return (Situation.OUR_SET_PLAY if view.mode_ours else Situation.THEIR_SET_PLAY), np.zeros(2)
         if mode in SET_PLAYS or mode == _GOALIE_HOLDS:
@@ -284,6 +286,9 @@ class FormationTeam:
                 if row != ball_player:
                     goals[row] = race.ours.points[row] if race.ours.cycles[row] < skills.UNREACHABLE else view.ball
                     urgent[row] = True
+        if not self.style.stationary and self.role_of_player is not None:
+            self.shape.support(view, race, ball_player, self.outfield, self._match_roles[self.role_of_player],
+                               goals, urgent)
         # An opponent on the ball ends our pass (for the back-pass rule) and contests it.
         contested = race.theirs.first_cycle == 0
         if contested:
@@ -301,6 +306,8 @@ class FormationTeam:
             else:
                 decision = skills.decide_on_ball(ctx, view, kicker, self.style.decision,
                                                  pressure=race.theirs.first_cycle)
+                if decision.action == skills.OnBallAction.SHOOT:
+                    self.shape.shot(view.cycle, view.ball)
                 if contested and decision.action in (skills.OnBallAction.DRIBBLE, skills.OnBallAction.CLEAR):
                     # Against an opponent who kicks the ball too, a dribble or a clearance up the
                     # field meets its mirror image and the two kicks cancel: kick it towards

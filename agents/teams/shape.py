@@ -1,0 +1,271 @@
+"""The built-in team's shape in open play: :class:`Shape` keeps the team one block that moves
+at a running pace, with a rest defence, support around the ball and follow-ups of shots.
+
+Team frame: we attack +x, our goal at x = -half_length; units m, m/cycle, cycles.
+
+* **Attack or defend, with hysteresis.** The ball race says every cycle who gets to the ball
+  first, and that flips back and forth whenever two players race for a loose ball. The team
+  switches between attacking and defending only when the race is won by a clear margin
+  (``switch_margin`` cycles) or when the other side has been winning it for
+  ``switch_persist`` cycles.
+* **A block that runs, not jumps.** The point the formation is queried at (where the ball
+  will be controlled) and the block's shift up the field (``TeamStyle.depth``, plus
+  ``attack_push`` when attacking) move at most ``push_speed`` per cycle forwards and
+  ``drop_speed`` per cycle backwards, and so does every role target (so that a change of
+  formation when possession changes is run, not jumped).
+* **Rest defence.** When attacking, the back line (the formation's defenders) stays
+  ``rest_ball_gap`` goal-side of the ball and ``rest_forward_margin`` goal-side of the
+  opponents' most advanced player, but no more than ``rest_max_gap`` behind the ball; when
+  defending, it stays ``defend_ball_gap`` goal-side of the ball.
+* **Support.** When attacking, the ``support_players`` team-mates nearest our ball carrier
+  (not the back line unless the ball is in our third) go to open spots ``support_radii`` from
+  it, where the pass lane is far from the opponents, onside and not on a team-mate's spot.
+* **Follow-up.** For ``follow_up_cycles`` after our shot, the ``follow_up_players`` forwards
+  nearest the goal run to the rebound area in front of it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from agents import skills
+from agents.skills.ball_kernels import offside_line
+from agents.teams.shape_kernels import settle_targets, support_spots
+from formations.formation_set import Situation
+from soccer_sim.team import TeamView
+
+__all__ = ["Shape", "ShapeParams"]
+
+
+@dataclass(frozen=True)
+class ShapeParams:
+    """How the team keeps its shape in open play (see the module docstring)."""
+
+    switch_margin: int = 3
+    """Cycles by which a side must win the ball race for the team to switch between attack
+    and defence at once (a loose ball the two sides reach within this of each other does not
+    flip the team)."""
+    switch_persist: int = 6
+    """Cycles the other side must keep winning the race for the team to switch anyway
+    (about half a second: long enough to ride out a ball bouncing between two players)."""
+    push_speed: float = 0.5
+    """Metres per cycle the formation's query point, the block's shift and every role target
+    move forwards at most: a jogging pace (a player's sustainable speed is about 0.6), so the
+    players keep up with their targets."""
+    drop_speed: float = 0.8
+    """Metres per cycle they move backwards (or sideways) at most: a running pace, faster than
+    the push up because a team drops back quicker than it pushes up when the ball is lost."""
+    rest_ball_gap: float = 15.0
+    """When attacking, the back line stays at least this far behind the ball (m): far enough
+    to meet a counter-attack, close enough to keep the team about 40 m long."""
+    rest_forward_margin: float = 2.0
+    """When attacking, the back line stays this far goal-side of the opponents' most advanced
+    player (m), so that a forward waiting for a long ball is not behind it."""
+    rest_max_gap: float = 35.0
+    """... but never more than this far behind the ball (m): a forward who stays deep in our
+    half is left offside rather than stretching the team to 60 m."""
+    defend_ball_gap: float = 2.0
+    """When defending, the back line stays at least this far goal-side of the ball (m)."""
+    support_players: int = 2
+    """Team-mates who move to open spots around our ball carrier."""
+    support_radii: tuple[float, ...] = (9.0, 13.0)
+    """Distances of the support spots from the carrier (m): a short pass, 8 to 15 m."""
+    support_directions: int = 12
+    """Directions of the support spots around the carrier (evenly spread)."""
+    support_horizon: int = 8
+    """Our carrier is the player who has or gets the ball within this many cycles."""
+    lane_cap: float = 5.0
+    """A pass lane at least this far (m) from every opponent counts as fully open."""
+    space_cap: float = 10.0
+    """A support spot at least this far (m) from every opponent counts as fully free."""
+    forward_weight: float = 2.0
+    """Score of a spot straight ahead of the carrier over one level with it (m of lane gap):
+    support that helps the ball forward first."""
+    travel_weight: float = 0.25
+    """Score lost per metre the supporter has to run to the spot, so that it takes a near one
+    and keeps it from cycle to cycle."""
+    crowd_distance: float = 7.0
+    """A spot this close (m) to another team-mate's goal or to a spot already taken is not used."""
+    follow_up_players: int = 2
+    """Forwards who run to the rebound area after our shot."""
+    follow_up_cycles: int = 30
+    """Cycles after our shot during which they do (a shot reaches the goal in about 10)."""
+    rebound_depth: float = 7.0
+    """The rebound spots are this far in front of the opponents' goal line (m)."""
+    rebound_spread: float = 4.0
+    """... and this far either side of the line from the shot to the goal's centre (m)."""
+
+    def __post_init__(self) -> None:
+        for name in ("switch_margin", "switch_persist", "support_players", "support_directions",
+                     "follow_up_players", "follow_up_cycles", "support_horizon"):
+            value = getattr(self, name)
+            if not isinstance(value, int) or isinstance(value, bool) or value < 0:
+                raise ValueError(f"ShapeParams.{name} must be a non-negative integer, got {value!r}")
+        for name in ("push_speed", "drop_speed"):
+            if not getattr(self, name) > 0.0:
+                raise ValueError(f"ShapeParams.{name} must be positive (m/cycle), got {getattr(self, name)!r}")
+        if not self.support_radii or min(self.support_radii) <= 0.0:
+            raise ValueError(f"ShapeParams.support_radii must be positive distances, got {self.support_radii!r}")
+
+
+class Shape:
+    """The team's shape state during one match (see the module docstring).
+
+    ``kinds``: the formation's role kinds (row r of the targets is role r); ``depth`` and
+    ``attack_push``: the style's shift of the outfield block (m) in open play and its extra
+    when attacking; ``half_length``/``half_width`` of the field (m)."""
+
+    def __init__(self, params: ShapeParams, kinds: list[str], depth: float, attack_push: float,
+                 half_length: float, half_width: float) -> None:
+        self.params = params
+        self.depth = depth
+        self.attack_push = attack_push
+        self.half_length = half_length
+        self.half_width = half_width
+        self.back_roles = np.array([r for r, k in enumerate(kinds) if k == "defender"], dtype=np.int64)
+        self.outfield_roles = np.array([r for r, k in enumerate(kinds) if k != "goalkeeper"], dtype=np.int64)
+        self.is_back = np.array([k == "defender" for k in kinds])
+        self.is_forward = np.array([k == "forward" for k in kinds])
+        self.attacking = False
+        """Whether the team attacks (the switch with hysteresis)."""
+        self._pending = 0
+        """Cycles the race has been won by the side we are not playing for."""
+        self.query = np.zeros(2)
+        """Where the formation is queried (rate-limited)."""
+        self.shift = 0.0
+        """The block's shift up the field (m, rate-limited)."""
+        self.previous = np.zeros((len(kinds), 2))
+        """Last cycle's role targets."""
+        self._in_play = False
+        """Whether the last cycle was play on (the rate limits start from the set play's shape)."""
+        self.shot_cycle = -(1 << 30)
+        """The cycle of our last shot."""
+        self.shot_from = np.zeros(2)
+        angles = np.arange(params.support_directions) * (2.0 * math.pi / max(params.support_directions, 1))
+        unit = np.stack([np.cos(angles), np.sin(angles)], axis=1)
+        self.offsets = np.concatenate([unit * radius for radius in params.support_radii])
+        """The support spots relative to the carrier, (S, 2)."""
+        self._rows = np.zeros(max(params.support_players, 1), dtype=np.int64)
+        self._spots = np.zeros((max(params.support_players, 1), 2))
+
+    # ------------------------------------------------------------------ attack or defend
+    def play_on(self, view: TeamView, race: skills.BallRace) -> tuple[Situation, np.ndarray]:
+        """The formation situation (attack or defend, with hysteresis) and where to query it
+        (the race winner's interception point, moved at the block's pace)."""
+        p = self.params
+        lead = race.lead
+        winning = lead > 0
+        if not self._in_play:
+            self.attacking, self._pending = winning, 0
+        elif winning == self.attacking:
+            self._pending = 0
+        else:
+            self._pending += 1
+            if abs(lead) >= p.switch_margin or self._pending >= p.switch_persist:
+                self.attacking, self._pending = winning, 0
+        if winning and race.ours.first >= 0:
+            point = race.ours.points[race.ours.first]
+        elif race.theirs.first >= 0:
+            point = race.theirs.points[race.theirs.first]
+        else:
+            point = view.ball
+        query = self.query
+        if self._in_play:
+            dx, dy = float(point[0]) - query[0], float(point[1]) - query[1]
+            d = math.hypot(dx, dy)
+            cap = p.push_speed if dx > 0.0 else p.drop_speed
+            if d > cap:
+                dx, dy = dx * cap / d, dy * cap / d
+            query[0] += dx
+            query[1] += dy
+            goal = self.depth + (self.attack_push if self.attacking else 0.0)
+            step = goal - self.shift
+            self.shift += min(step, p.push_speed) if step > 0.0 else max(step, -p.drop_speed)
+        else:
+            query[:] = point
+            self.shift = self.depth + (self.attack_push if self.attacking else 0.0)
+        return (Situation.ATTACK if self.attacking else Situation.DEFEND), query
+
+    def settle(self, view: TeamView, targets: np.ndarray, play_on: bool) -> None:
+        """The last changes to the role targets (in place): in play on the back line is held
+        behind the ball (rest defence when attacking) and every target moves at most the
+        block's pace from last cycle's (the first cycle of play from the set play's targets);
+        otherwise the targets are only remembered."""
+        p = self.params
+        limit = math.inf
+        if play_on:
+            ball_x = float(view.ball[0])
+            if self.attacking:
+                # the opponents' most advanced player (their goalkeeper is never it)
+                front = float(view.opp_pos[:, 0].min()) if len(view.opp_pos) else math.inf
+                limit = min(ball_x - p.rest_ball_gap, max(front - p.rest_forward_margin, ball_x - p.rest_max_gap))
+            else:
+                limit = ball_x - p.defend_ball_gap
+            limit = max(limit, -self.half_length + 6.0)  # never into our goal area
+        settle_targets(targets, self.previous, self.outfield_roles, self.back_roles, limit, p.push_speed,
+                       p.drop_speed, play_on)
+        self._in_play = play_on
+
+    # ------------------------------------------------------------------ support and follow-up
+    def shot(self, cycle: int, ball: np.ndarray) -> None:
+        """We shot this cycle from ``ball``: the forwards follow it up."""
+        self.shot_cycle = cycle
+        self.shot_from = np.array(ball, dtype=np.float64)
+
+    def support(self, view: TeamView, race: skills.BallRace, ball_player: int, outfield: np.ndarray,
+                player_roles: np.ndarray, goals: np.ndarray, urgent: np.ndarray) -> None:
+        """Support and follow-up goals for our players (in place; team frame).
+        ``player_roles``: the formation role of each of ``outfield``'s players."""
+        p = self.params
+        if not self.attacking:
+            return
+        followers = self._follow_up(view, ball_player, outfield, player_roles, goals, urgent)
+        if p.support_players == 0 or ball_player < 0 or race.ours.cycles[ball_player] > p.support_horizon:
+            return
+        carrier = race.ours.points[ball_player]
+        eligible = outfield != ball_player
+        if carrier[0] > -self.half_length / 3.0:
+            eligible &= ~self.is_back[player_roles]  # the back line is the rest defence
+        if followers.size:
+            eligible &= ~np.isin(outfield, followers)
+        candidates = outfield[eligible]
+        if not candidates.size:
+            return
+        x_max = offside_line(view.opp_pos, float(view.ball[0])) - 1.0
+        count = support_spots(carrier, view.own_pos, goals, candidates, view.opp_pos, self.offsets,
+                              p.support_players, x_max, self.half_length - 3.0, self.half_width - 2.0,
+                              p.lane_cap, p.space_cap, p.forward_weight, p.travel_weight, p.crowd_distance,
+                              self._rows, self._spots)
+        goals[self._rows[:count]] = self._spots[:count]
+
+    def _follow_up(self, view: TeamView, ball_player: int, outfield: np.ndarray, player_roles: np.ndarray,
+                   goals: np.ndarray, urgent: np.ndarray) -> np.ndarray:
+        """After our shot the forwards nearest the rebound spots run there; returns their rows."""
+        p = self.params
+        if view.cycle - self.shot_cycle > p.follow_up_cycles or p.follow_up_players == 0:
+            return _NONE
+        goal_x = self.half_length - p.rebound_depth
+        # Spots either side of the shot's line to the goal, at the rebound depth.
+        from_x, from_y = self.shot_from
+        t = (goal_x - from_x) / (self.half_length - from_x) if self.half_length - from_x > 1e-9 else 1.0
+        centre_y = from_y * (1.0 - min(max(t, 0.0), 1.0))
+        spots = np.array([[goal_x, centre_y - p.rebound_spread], [goal_x, centre_y + p.rebound_spread]])
+        mask = self.is_forward[player_roles] & (outfield != ball_player)
+        rows = outfield[mask]
+        if not rows.size:
+            return _NONE
+        gaps = np.hypot(view.own_pos[rows, 0] - goal_x, view.own_pos[rows, 1] - centre_y)
+        rows = rows[np.argsort(gaps, kind="stable")[: min(p.follow_up_players, len(spots))]]
+        for row in rows:
+            k = int(np.argmin(np.hypot(*(spots - view.own_pos[row]).T)))
+            goals[row] = spots[k]
+            spots[k] = np.inf  # taken
+            urgent[row] = True
+        return rows
+
+
+_NONE = np.zeros(0, dtype=np.int64)
+
