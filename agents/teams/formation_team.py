@@ -287,7 +287,7 @@ class FormationTeam:
                     goals[row] = race.ours.points[row] if race.ours.cycles[row] < skills.UNREACHABLE else view.ball
                     urgent[row] = True
         if not self.style.stationary and self.role_of_player is not None:
-            self.shape.support(view, race, ball_player, self.outfield, self._match_roles[self.role_of_player],
+            self.shape.support(view, race, ball_player, self.outfield, self._match_roles, self.role_of_player,
                                goals, urgent)
         # An opponent on the ball ends our pass (for the back-pass rule) and contests it.
         contested = race.theirs.first_cycle == 0

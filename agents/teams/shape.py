@@ -20,8 +20,8 @@ Team frame: we attack +x, our goal at x = -half_length; units m, m/cycle, cycles
 * **Support.** When attacking, the ``support_players`` team-mates nearest our ball carrier
   (not the back line unless the ball is in our third) go to open spots ``support_radii`` from
   it, where the pass lane is far from the opponents, onside and not on a team-mate's spot.
-* **Follow-up.** For ``follow_up_cycles`` after our shot, the ``follow_up_players`` forwards
-  nearest the goal run to the rebound area in front of it.
+* **Follow-up.** For ``follow_up_cycles`` after our shot (until an opponent has the ball),
+  the ``follow_up_players`` forwards nearest the goal run to the rebound area in front of it.
 """
 
 from __future__ import annotations
@@ -33,11 +33,17 @@ import numpy as np
 
 from agents import skills
 from agents.skills.ball_kernels import offside_line
-from agents.teams.shape_kernels import settle_targets, support_spots
+from agents.teams.shape_kernels import (
+    BACK_FLOOR, DEFEND_BALL_GAP, DROP, PUSH, REST_BALL_GAP, REST_FORWARD_MARGIN, REST_MAX_GAP, advance_block,
+    settle_targets, support_spots)
 from formations.formation_set import Situation
 from soccer_sim.team import TeamView
 
 __all__ = ["Shape", "ShapeParams"]
+
+BACK_LINE_FLOOR = 6.0
+"""The back line is never held deeper than this in front of our goal line (m): the goal
+area's edge is as deep as it gets."""
 
 
 @dataclass(frozen=True)
@@ -75,6 +81,9 @@ class ShapeParams:
     """Distances of the support spots from the carrier (m): a short pass, 8 to 15 m."""
     support_directions: int = 12
     """Directions of the support spots around the carrier (evenly spread)."""
+    support_every: int = 3
+    """Cycles a choice of support spots is kept (for the same carrier) before it is made
+    again: the carrier moves a metre or two meanwhile, and choosing every cycle costs time."""
     support_horizon: int = 8
     """Our carrier is the player who has or gets the ball within this many cycles."""
     lane_cap: float = 5.0
@@ -100,7 +109,7 @@ class ShapeParams:
 
     def __post_init__(self) -> None:
         for name in ("switch_margin", "switch_persist", "support_players", "support_directions",
-                     "follow_up_players", "follow_up_cycles", "support_horizon"):
+                     "follow_up_players", "follow_up_cycles", "support_horizon", "support_every"):
             value = getattr(self, name)
             if not isinstance(value, int) or isinstance(value, bool) or value < 0:
                 raise ValueError(f"ShapeParams.{name} must be a non-negative integer, got {value!r}")
@@ -133,12 +142,14 @@ class Shape:
         """Whether the team attacks (the switch with hysteresis)."""
         self._pending = 0
         """Cycles the race has been won by the side we are not playing for."""
-        self.query = np.zeros(2)
-        """Where the formation is queried (rate-limited)."""
-        self.shift = 0.0
-        """The block's shift up the field (m, rate-limited)."""
+        self._block = np.zeros(3)
+        """The formation's query point and the block's shift, moved at the block's pace."""
+        self.query = self._block[:2]
+        """Where the formation is queried (a view of ``_block``)."""
         self.previous = np.zeros((len(kinds), 2))
         """Last cycle's role targets."""
+        self._primed = False
+        """Whether ``previous`` holds last cycle's targets (not on the team's first cycle)."""
         self._in_play = False
         """Whether the last cycle was play on (the rate limits start from the set play's shape)."""
         self.shot_cycle = -(1 << 30)
@@ -148,8 +159,28 @@ class Shape:
         unit = np.stack([np.cos(angles), np.sin(angles)], axis=1)
         self.offsets = np.concatenate([unit * radius for radius in params.support_radii])
         """The support spots relative to the carrier, (S, 2)."""
+        knobs = np.zeros(7)
+        knobs[[REST_BALL_GAP, REST_FORWARD_MARGIN, REST_MAX_GAP, DEFEND_BALL_GAP, BACK_FLOOR, PUSH, DROP]] = (
+            params.rest_ball_gap, params.rest_forward_margin, params.rest_max_gap, params.defend_ball_gap,
+            -half_length + BACK_LINE_FLOOR, params.push_speed, params.drop_speed)
+        self._knobs = knobs
+        """The numbers :func:`settle_targets` needs, in its order."""
+        self._support_knobs = np.array([half_length - 3.0, half_width - 2.0, params.lane_cap, params.space_cap,
+                                        params.forward_weight, params.travel_weight, params.crowd_distance])
+        """The numbers :func:`support_spots` needs, in its order."""
+        self._held = 0
+        """Cycles the current support spots are kept for yet."""
+        self._carrier = -1
+        """The carrier they were chosen for."""
+        self._chosen, self._chosen_spots = _NONE, _NO_SPOTS
+        """The supporters' rows and their spots."""
         self._rows = np.zeros(max(params.support_players, 1), dtype=np.int64)
         self._spots = np.zeros((max(params.support_players, 1), 2))
+
+    @property
+    def shift(self) -> float:
+        """The block's shift up the field (m, moved at the block's pace)."""
+        return float(self._block[2])
 
     # ------------------------------------------------------------------ attack or defend
     def play_on(self, view: TeamView, race: skills.BallRace) -> tuple[Situation, np.ndarray]:
@@ -166,48 +197,28 @@ class Shape:
             self._pending += 1
             if abs(lead) >= p.switch_margin or self._pending >= p.switch_persist:
                 self.attacking, self._pending = winning, 0
-        if winning and race.ours.first >= 0:
-            point = race.ours.points[race.ours.first]
-        elif race.theirs.first >= 0:
-            point = race.theirs.points[race.theirs.first]
+        ours, theirs = race
+        if winning and ours.first >= 0:
+            point = ours.points[ours.first]
+        elif theirs.first >= 0:
+            point = theirs.points[theirs.first]
         else:
             point = view.ball
-        query = self.query
-        if self._in_play:
-            dx, dy = float(point[0]) - query[0], float(point[1]) - query[1]
-            d = math.hypot(dx, dy)
-            cap = p.push_speed if dx > 0.0 else p.drop_speed
-            if d > cap:
-                dx, dy = dx * cap / d, dy * cap / d
-            query[0] += dx
-            query[1] += dy
-            goal = self.depth + (self.attack_push if self.attacking else 0.0)
-            step = goal - self.shift
-            self.shift += min(step, p.push_speed) if step > 0.0 else max(step, -p.drop_speed)
-        else:
-            query[:] = point
-            self.shift = self.depth + (self.attack_push if self.attacking else 0.0)
-        return (Situation.ATTACK if self.attacking else Situation.DEFEND), query
+        block = self._block
+        advance_block(block, point, self.depth + self.attack_push if self.attacking else self.depth,
+                      self._in_play, self._knobs)
+        self._in_play = True
+        return (Situation.ATTACK if self.attacking else Situation.DEFEND), self.query
 
     def settle(self, view: TeamView, targets: np.ndarray, play_on: bool) -> None:
         """The last changes to the role targets (in place): in play on the back line is held
         behind the ball (rest defence when attacking) and every target moves at most the
         block's pace from last cycle's (the first cycle of play from the set play's targets);
         otherwise the targets are only remembered."""
-        p = self.params
-        limit = math.inf
-        if play_on:
-            ball_x = float(view.ball[0])
-            if self.attacking:
-                # the opponents' most advanced player (their goalkeeper is never it)
-                front = float(view.opp_pos[:, 0].min()) if len(view.opp_pos) else math.inf
-                limit = min(ball_x - p.rest_ball_gap, max(front - p.rest_forward_margin, ball_x - p.rest_max_gap))
-            else:
-                limit = ball_x - p.defend_ball_gap
-            limit = max(limit, -self.half_length + 6.0)  # never into our goal area
-        settle_targets(targets, self.previous, self.outfield_roles, self.back_roles, limit, p.push_speed,
-                       p.drop_speed, play_on)
+        settle_targets(targets, self.previous, self.outfield_roles, self.back_roles, view.opp_pos,
+                       float(view.ball[0]), self.attacking, play_on, play_on and self._primed, self._knobs)
         self._in_play = play_on
+        self._primed = True
 
     # ------------------------------------------------------------------ support and follow-up
     def shot(self, cycle: int, ball: np.ndarray) -> None:
@@ -216,36 +227,47 @@ class Shape:
         self.shot_from = np.array(ball, dtype=np.float64)
 
     def support(self, view: TeamView, race: skills.BallRace, ball_player: int, outfield: np.ndarray,
-                player_roles: np.ndarray, goals: np.ndarray, urgent: np.ndarray) -> None:
-        """Support and follow-up goals for our players (in place; team frame).
-        ``player_roles``: the formation role of each of ``outfield``'s players."""
+                match_roles: np.ndarray, role_of_player: np.ndarray, goals: np.ndarray, urgent: np.ndarray) -> None:
+        """Support and follow-up goals for our players (in place; team frame): ``outfield[i]``
+        plays the formation role ``match_roles[role_of_player[i]]``."""
         p = self.params
-        if not self.attacking:
+        followers = _NONE
+        if view.cycle - self.shot_cycle <= p.follow_up_cycles:
+            followers = self._follow_up(view, race, ball_player, outfield, match_roles[role_of_player], goals,
+                                        urgent)
+        if not self.attacking or ball_player < 0 or race.ours.cycles[ball_player] > p.support_horizon:
+            self._held = 0
             return
-        followers = self._follow_up(view, ball_player, outfield, player_roles, goals, urgent)
-        if p.support_players == 0 or ball_player < 0 or race.ours.cycles[ball_player] > p.support_horizon:
+        if self._held > 0 and ball_player == self._carrier and not followers.size:
+            self._held -= 1  # the same carrier a cycle later: the same spots
+            goals[self._chosen] = self._chosen_spots
             return
+        self._held, self._carrier = p.support_every - 1, ball_player
+        self._chosen, self._chosen_spots = _NONE, _NO_SPOTS
         carrier = race.ours.points[ball_player]
         eligible = outfield != ball_player
         if carrier[0] > -self.half_length / 3.0:
-            eligible &= ~self.is_back[player_roles]  # the back line is the rest defence
+            eligible &= ~self.is_back[match_roles[role_of_player]]  # the back line is the rest defence
         if followers.size:
             eligible &= ~np.isin(outfield, followers)
         candidates = outfield[eligible]
-        if not candidates.size:
+        if not candidates.size or p.support_players == 0:
             return
         x_max = offside_line(view.opp_pos, float(view.ball[0])) - 1.0
         count = support_spots(carrier, view.own_pos, goals, candidates, view.opp_pos, self.offsets,
-                              p.support_players, x_max, self.half_length - 3.0, self.half_width - 2.0,
-                              p.lane_cap, p.space_cap, p.forward_weight, p.travel_weight, p.crowd_distance,
-                              self._rows, self._spots)
-        goals[self._rows[:count]] = self._spots[:count]
+                              p.support_players, x_max, self._support_knobs, self._rows, self._spots)
+        self._chosen, self._chosen_spots = self._rows[:count].copy(), self._spots[:count].copy()
+        goals[self._chosen] = self._chosen_spots
 
-    def _follow_up(self, view: TeamView, ball_player: int, outfield: np.ndarray, player_roles: np.ndarray,
-                   goals: np.ndarray, urgent: np.ndarray) -> np.ndarray:
-        """After our shot the forwards nearest the rebound spots run there; returns their rows."""
+    def _follow_up(self, view: TeamView, race: skills.BallRace, ball_player: int, outfield: np.ndarray,
+                   player_roles: np.ndarray, goals: np.ndarray, urgent: np.ndarray) -> np.ndarray:
+        """After our shot the forwards nearest the rebound spots run there (whoever the race
+        says wins the loose ball, until an opponent has it); returns their rows."""
         p = self.params
         if view.cycle - self.shot_cycle > p.follow_up_cycles or p.follow_up_players == 0:
+            return _NONE
+        if race.theirs.first_cycle == 0 and race.ours.first_cycle > 0:
+            self.shot_cycle = -(1 << 30)  # an opponent has the ball: the follow-up is over
             return _NONE
         goal_x = self.half_length - p.rebound_depth
         # Spots either side of the shot's line to the goal, at the rebound depth.
@@ -268,4 +290,5 @@ class Shape:
 
 
 _NONE = np.zeros(0, dtype=np.int64)
+_NO_SPOTS = np.zeros((0, 2))
 

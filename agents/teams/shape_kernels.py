@@ -10,16 +10,57 @@ import numpy as np
 from numba import njit
 
 
+REST_BALL_GAP, REST_FORWARD_MARGIN, REST_MAX_GAP, DEFEND_BALL_GAP, BACK_FLOOR, PUSH, DROP = range(7)
+"""Positions of the shape's numbers in the ``knobs`` array :func:`settle_targets` takes."""
+
+
+@njit(cache=True, nogil=True)
+def advance_block(block: np.ndarray, point: np.ndarray, shift: float, in_play: bool,
+                  knobs: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Move the block (in place: ``block`` = (query x, query y, shift)) towards the query
+    ``point`` and the ``shift``: at most ``knobs[PUSH]`` metres forwards (+x) or ``knobs[DROP]``
+    metres otherwise, each; at once when not ``in_play`` (the first cycle of play)."""
+    push, drop = knobs[PUSH], knobs[DROP]
+    if not in_play:
+        block[0], block[1], block[2] = point[0], point[1], shift
+        return
+    dx, dy = point[0] - block[0], point[1] - block[1]
+    d = math.hypot(dx, dy)
+    cap = push if dx > 0.0 else drop
+    if d > cap:
+        dx, dy = dx * cap / d, dy * cap / d
+    block[0] += dx
+    block[1] += dy
+    step = shift - block[2]
+    block[2] += min(step, push) if step > 0.0 else max(step, -drop)
+
+
 @njit(cache=True, nogil=True)
 def settle_targets(targets: np.ndarray, previous: np.ndarray, rows: np.ndarray, back_rows: np.ndarray,
-                   back_limit: float, push: float, drop: float, limited: bool) -> None:  # pragma: no cover
-    """The shape's last word on the role targets (in place). The ``back_rows``' x is kept at
-    or below ``back_limit`` (the back line behind the ball; +inf: no limit). When ``limited``,
-    each of ``rows`` moves from ``previous`` by at most ``push`` (a move forwards, +x) or
-    ``drop`` (any other move) metres. ``previous`` is then set to the targets of ``rows``."""
-    for r in back_rows:
-        if targets[r, 0] > back_limit:
-            targets[r, 0] = back_limit
+                   opp_pos: np.ndarray, ball_x: float, attacking: bool, play_on: bool, limited: bool,
+                   knobs: np.ndarray) -> None:  # pragma: no cover - compiled
+    """The shape's last word on the role targets (in place). In play on the ``back_rows`` are
+    held behind the ball: when ``attacking`` (rest defence) at or below ``ball_x -
+    knobs[REST_BALL_GAP]`` and ``knobs[REST_FORWARD_MARGIN]`` behind the opponents' most
+    advanced player but no more than ``knobs[REST_MAX_GAP]`` behind the ball, otherwise at or
+    below ``ball_x - knobs[DEFEND_BALL_GAP]``; never below ``knobs[BACK_FLOOR]``. When
+    ``limited``, each of ``rows`` moves from ``previous`` by at most ``knobs[PUSH]`` (a move
+    forwards, +x) or ``knobs[DROP]`` (any other move) metres. ``previous`` is then set to the
+    targets of ``rows``."""
+    if play_on:
+        if attacking:
+            front = np.inf
+            for j in range(opp_pos.shape[0]):  # their goalkeeper is never their most advanced
+                front = min(front, opp_pos[j, 0])
+            limit = min(ball_x - knobs[REST_BALL_GAP],
+                        max(front - knobs[REST_FORWARD_MARGIN], ball_x - knobs[REST_MAX_GAP]))
+        else:
+            limit = ball_x - knobs[DEFEND_BALL_GAP]
+        limit = max(limit, knobs[BACK_FLOOR])
+        for r in back_rows:
+            if targets[r, 0] > limit:
+                targets[r, 0] = limit
+    push, drop = knobs[PUSH], knobs[DROP]
     for r in rows:
         if limited:
             dx = targets[r, 0] - previous[r, 0]
@@ -45,14 +86,14 @@ def _lane_gap(ax: float, ay: float, bx: float, by: float, px: float, py: float) 
 
 @njit(cache=True, nogil=True)
 def support_spots(carrier: np.ndarray, own_pos: np.ndarray, goals: np.ndarray, candidates: np.ndarray,
-                  opp_pos: np.ndarray, offsets: np.ndarray, count: int, x_max: float, x_limit: float,
-                  y_limit: float, lane_cap: float, space_cap: float, forward_weight: float, travel_weight: float,
-                  crowd_distance: float, out_rows: np.ndarray, out_spots: np.ndarray) -> int:  # pragma: no cover
+                  opp_pos: np.ndarray, offsets: np.ndarray, count: int, x_max: float, knobs: np.ndarray,
+                  out_rows: np.ndarray, out_spots: np.ndarray) -> int:  # pragma: no cover - compiled
     """Open spots around our ball carrier and who goes there.
 
     ``carrier`` (2,): where our carrier has (or gets) the ball; ``candidates``: rows of
     ``own_pos`` that may support (the ``count`` nearest the carrier do); ``offsets`` (S, 2):
-    the spots relative to the carrier. A spot counts only inside ``|x| <= x_limit``,
+    the spots relative to the carrier; ``knobs``: (x_limit, y_limit, lane_cap, space_cap,
+    forward_weight, travel_weight, crowd_distance). A spot counts only inside ``|x| <= x_limit``,
     ``|y| <= y_limit`` and at or behind ``x_max`` (onside). Its score is the opponents' gap
     to the pass lane (capped at ``lane_cap``) plus half their gap to the spot (capped at
     ``space_cap``) plus ``forward_weight`` times its forward share of the offset, less
@@ -60,6 +101,8 @@ def support_spots(carrier: np.ndarray, own_pos: np.ndarray, goals: np.ndarray, c
     ``crowd_distance`` of another team-mate's goal (``goals``, the candidates' own excluded)
     or of a spot already taken. Writes the supporters to ``out_rows`` and their spots to
     ``out_spots``; returns how many."""
+    x_limit, y_limit, lane_cap, space_cap = knobs[0], knobs[1], knobs[2], knobs[3]
+    forward_weight, travel_weight, crowd_distance = knobs[4], knobs[5], knobs[6]
     n_c = candidates.shape[0]
     chosen = 0
     picked = np.zeros(n_c, dtype=np.bool_)
