@@ -5,10 +5,10 @@ Every cycle (team frame: we attack +x, our goal at x = -half_length):
 1. **Who wins the ball.** :func:`agents.skills.ball_race` rolls the ball forward and finds, for
    both teams, the first player that can control it and where.
 2. **Situation and formation.** Set plays (ours or theirs, kick-offs and the pause after a
-   goal included) use the set-play formations; in play on we *attack* when we win the race
-   and *defend* otherwise. The formation is queried at the point where the ball will be
-   controlled (the race's interception point), not where it is now, so the team moves to
-   where play is going. A style may shift the whole outfield block forwards or back.
+   goal included) use the set-play formations; in play on we *attack* or *defend* as the race
+   says, with hysteresis, and query the formation where the ball will be controlled (the
+   race's interception point); a style may shift the outfield block. :mod:`agents.teams.shape`
+   moves all this at a running pace, keeps a rest defence and sends support and follow-ups.
 3. **Roles.** The role assigner (``mmdr``, ``mmd+msd2``, ``static``, ``greedy``, ...; see
    :mod:`agents.roles`) maps the ten outfield players to the ten outfield role targets; it
    may also steer the players (potential-field bidding) and name the ball player. This is

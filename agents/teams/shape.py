@@ -54,19 +54,20 @@ class ShapeParams:
     """Cycles by which a side must win the ball race for the team to switch between attack
     and defence at once (a loose ball the two sides reach within this of each other does not
     flip the team)."""
-    switch_persist: int = 6
+    switch_persist: int = 5
     """Cycles the other side must keep winning the race for the team to switch anyway
-    (about half a second: long enough to ride out a ball bouncing between two players)."""
-    push_speed: float = 0.5
+    (half a second: long enough to ride out a ball bouncing between two players, short
+    enough not to give away a counter-attack)."""
+    push_speed: float = 0.7
     """Metres per cycle the formation's query point, the block's shift and every role target
-    move forwards at most: a jogging pace (a player's sustainable speed is about 0.6), so the
-    players keep up with their targets."""
+    move forwards at most: a running pace a little above a player's sustainable speed (about
+    0.6), so the players keep up with their targets and an attack still gets forwards."""
     drop_speed: float = 0.8
-    """Metres per cycle they move backwards (or sideways) at most: a running pace, faster than
-    the push up because a team drops back quicker than it pushes up when the ball is lost."""
-    rest_ball_gap: float = 15.0
+    """Metres per cycle they move backwards (or sideways) at most: a faster run than the push
+    up, because a team that loses the ball gets back quicker than it pushes up."""
+    rest_ball_gap: float = 12.0
     """When attacking, the back line stays at least this far behind the ball (m): far enough
-    to meet a counter-attack, close enough to keep the team about 40 m long."""
+    to meet a counter-attack, close enough to keep the team compact and in support."""
     rest_forward_margin: float = 2.0
     """When attacking, the back line stays this far goal-side of the opponents' most advanced
     player (m), so that a forward waiting for a long ball is not behind it."""

@@ -25,9 +25,9 @@ class TeamStyle:
     depth: float = 0.0
     """Metres the outfield block is shifted towards the opponents' goal in open play (negative:
     a deeper block)."""
-    attack_push: float = 8.0
-    """Extra metres the outfield block moves up when we attack (win the race for the ball); the
-    attack formation is already higher, so a little keeps the team about 40 m long."""
+    attack_push: float = 14.0
+    """Extra metres the outfield block moves up when we attack (win the race for the ball), at
+    the pace :mod:`agents.teams.shape` allows; the back line stays behind as the rest defence."""
     box_narrowing: float = 0.5
     """When we attack with the ball in the final third, the forwards' targets move this share
     of the way towards the middle of the field (so that there are players in the box)."""

@@ -82,13 +82,14 @@ def test_the_query_point_and_the_block_shift_move_at_a_running_pace() -> None:
     _, query = shape.play_on(v, race(1, 9, ours_point=(-10.0, 0.0)))
     assert np.allclose(query, (-10.0, 0.0)) and shape.shift == pytest.approx(6.0)  # first cycle: no lag
     shape.settle(v, np.zeros((11, 2)), True)
-    xs, shifts = [], []
+    points, shifts = [(-10.0, 0.0)], []
     for _ in range(30):  # a long ball forwards: the query point follows it at the push pace
         _, query = shape.play_on(v, race(1, 9, ours_point=(20.0, 6.0)))
-        xs.append(query[0])
-    steps = np.diff([-10.0, *xs])
-    assert np.all(steps > 0.0) and np.all(np.hypot(steps, 0.0) <= PARAMS.push_speed + 1e-12)
-    assert xs[-1] < 20.0 - 10.0  # still on its way after 30 cycles of a 30 m jump
+        points.append(tuple(query))
+    steps = np.hypot(*np.diff(np.array(points), axis=0).T)
+    assert np.allclose(steps, PARAMS.push_speed)  # neither a jump nor a stop
+    assert points[-1][0] == pytest.approx(-10.0 + 30 * PARAMS.push_speed * 30.0 / np.hypot(30.0, 6.0))
+    assert points[-1][0] < 20.0  # still on its way after 30 cycles of a 30 m ball
     for _ in range(10):  # possession lost: the block drops (shift 6 -> -2) at the drop pace
         shape.play_on(v, race(9, 1, theirs_point=(0.0, 0.0)))
         shifts.append(shape.shift)
