@@ -125,7 +125,7 @@ def test_role_targets_never_jump_when_possession_changes_and_then_settle() -> No
 # ---------------------------------------------------------------------------- rest defence
 @pytest.mark.parametrize(("ball_x", "front_x", "line"), [
     (20.0, -5.0, -7.0),      # their most advanced player at -5: the back line 2 m goal-side of him
-    (30.0, 25.0, 15.0),      # nobody deep: 15 m behind the ball
+    (30.0, 25.0, 30.0 - PARAMS.rest_ball_gap),  # nobody deep: rest_ball_gap behind the ball
     (30.0, -45.0, -5.0),     # a forward lurking at our box is left offside: at most 35 m behind the ball
 ])
 def test_the_back_line_stays_behind_the_ball_and_their_forwards_when_we_attack(ball_x, front_x, line) -> None:
@@ -162,7 +162,7 @@ def test_two_team_mates_move_to_open_spots_at_passing_distance_from_the_carrier(
     own = np.array([[-50.0, 0.0], [-20.0, -20.0], [-20.0, 20.0], [-22.0, -7.0], [-22.0, 7.0],
                     [-4.0, 2.0], [10.0, -25.0], [2.0, -9.0], [0.0, 0.0], [3.0, 10.0], [12.0, 25.0]])
     carrier = own[8]
-    theirs = opponents(8.0)
+    theirs = opponents(30.0)  # (a deep back line: nobody of ours is pulled back onside)
     theirs[1:4] = [(5.0, -4.0), (6.0, 4.0), (3.0, 8.0)]  # lanes ahead and to the left are covered
     team.act(view(own, theirs, carrier + (0.5, 0.0), cycle=50))
     assert team.shape.attacking
