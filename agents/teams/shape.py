@@ -18,8 +18,9 @@ Team frame: we attack +x, our goal at x = -half_length; units m, m/cycle, cycles
   opponents' most advanced player, but no more than ``rest_max_gap`` behind the ball; when
   defending, it stays ``defend_ball_gap`` goal-side of the ball.
 * **Support.** When attacking, the ``support_players`` team-mates nearest our ball carrier
-  (not the back line unless the ball is in our third) go to open spots ``support_radii`` from
-  it, where the pass lane is far from the opponents, onside and not on a team-mate's spot.
+  (not the forwards, who keep their places up front, nor the back line unless the ball is in
+  our third) go to open spots ``support_radii`` from it, level with or ahead of it or a little
+  behind, where the pass lane is far from the opponents, onside and not on a team-mate's spot.
 * **Follow-up.** For ``follow_up_cycles`` after our shot (until an opponent has the ball),
   the ``follow_up_players`` forwards nearest the goal run to the rebound area in front of it.
 """
@@ -41,6 +42,10 @@ from soccer_sim.team import TeamView
 
 __all__ = ["Shape", "ShapeParams"]
 
+BACKWARD_LIMIT = -0.5
+"""Support spots lie in directions from the carrier whose forward share (cosine) is at least
+this: up to 120 degrees from straight ahead, so support helps the ball forward rather than
+back."""
 BACK_LINE_FLOOR = 6.0
 """The back line is never held deeper than this in front of our goal line (m): the goal
 area's edge is as deep as it gets."""
@@ -81,7 +86,8 @@ class ShapeParams:
     support_radii: tuple[float, ...] = (9.0, 13.0)
     """Distances of the support spots from the carrier (m): a short pass, 8 to 15 m."""
     support_directions: int = 12
-    """Directions of the support spots around the carrier (evenly spread)."""
+    """Directions of the support spots around the carrier (evenly spread; those more than 120
+    degrees from straight ahead are left out)."""
     support_every: int = 3
     """Cycles a choice of support spots is kept (for the same carrier) before it is made
     again: the carrier moves a metre or two meanwhile, and choosing every cycle costs time."""
@@ -158,6 +164,7 @@ class Shape:
         self.shot_from = np.zeros(2)
         angles = np.arange(params.support_directions) * (2.0 * math.pi / max(params.support_directions, 1))
         unit = np.stack([np.cos(angles), np.sin(angles)], axis=1)
+        unit = unit[unit[:, 0] >= BACKWARD_LIMIT]  # support level with or ahead of the ball, or a little behind
         self.offsets = np.concatenate([unit * radius for radius in params.support_radii])
         """The support spots relative to the carrier, (S, 2)."""
         knobs = np.zeros(7)
@@ -246,9 +253,12 @@ class Shape:
         self._held, self._carrier = p.support_every - 1, ball_player
         self._chosen, self._chosen_spots = _NONE, _NO_SPOTS
         carrier = race.ours.points[ball_player]
-        eligible = outfield != ball_player
+        roles = match_roles[role_of_player]
+        # The forwards keep their places up front, and the back line is the rest defence
+        # (unless the ball is in our third).
+        eligible = (outfield != ball_player) & ~self.is_forward[roles]
         if carrier[0] > -self.half_length / 3.0:
-            eligible &= ~self.is_back[match_roles[role_of_player]]  # the back line is the rest defence
+            eligible &= ~self.is_back[roles]
         if followers.size:
             eligible &= ~np.isin(outfield, followers)
         candidates = outfield[eligible]

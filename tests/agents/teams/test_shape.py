@@ -171,18 +171,21 @@ def test_two_team_mates_move_to_open_spots_at_passing_distance_from_the_carrier(
     moved = [row for i, row in enumerate(team.outfield) if row != 8 and not np.allclose(team.goals[row], planned[i])]
     assert len(moved) == PARAMS.support_players
     backs = {r for r, k in enumerate(KINDS) if k == "defender"}
-    assert not backs & set(moved)  # the back line stays the rest defence
+    forwards = {r for r, k in enumerate(KINDS) if k == "forward"}
+    assert not (backs | forwards) & set(moved)  # the rest defence stays back, the forwards up front
     ball = carrier + (0.5, 0.0)
     for row in moved:
         spot = team.goals[row]
         assert 8.0 <= np.hypot(*(spot - ball)) <= 15.0
+        assert spot[0] - ball[0] >= -0.5 * np.hypot(*(spot - ball)) - 1e-9  # not far behind the ball
         # the pass lane to the spot is open: no opponent within 2 m of it
         ab = spot - ball
         t = np.clip(((theirs - ball) @ ab) / (ab @ ab), 0.0, 1.0)
         gap = np.hypot(*(ball + t[:, None] * ab - theirs).T)
         assert gap.min() >= 2.0
-    # the supporters are the nearest non-defenders to the carrier
-    gaps = {row: np.hypot(*(own[row] - carrier)) for row in team.outfield if row != 8 and row not in backs}
+    # the supporters are the midfielders nearest the carrier
+    gaps = {row: np.hypot(*(own[row] - carrier)) for row in team.outfield
+            if row != 8 and row not in backs | forwards}
     assert sorted(moved) == sorted(sorted(gaps, key=gaps.get)[:2])
     spots = team.goals[moved]
     assert np.hypot(*(spots[0] - spots[1])) >= PARAMS.crowd_distance
