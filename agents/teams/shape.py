@@ -17,7 +17,8 @@ Team frame: we attack +x, our goal at x = -half_length; units m, m/cycle, cycles
   ``rest_ball_gap`` goal-side of the ball and ``rest_forward_margin`` goal-side of the
   opponents' most advanced player, but no more than ``rest_max_gap`` behind the ball; when
   defending, it stays ``defend_ball_gap`` goal-side of the ball.
-* **Support.** When attacking, the ``support_players`` team-mates nearest our ball carrier
+* **Support.** When attacking and an opponent can get to the ball within
+  ``support_pressure`` cycles, the ``support_players`` team-mates nearest our ball carrier
   (not the forwards, who keep their places up front, nor the back line unless the ball is in
   our third) go to open spots ``support_radii`` from it, level with or ahead of it or a little
   behind, where the pass lane is far from the opponents, onside and not on a team-mate's spot.
@@ -91,6 +92,10 @@ class ShapeParams:
     support_every: int = 3
     """Cycles a choice of support spots is kept (for the same carrier) before it is made
     again: the carrier moves a metre or two meanwhile, and choosing every cycle costs time."""
+    support_pressure: int = 10
+    """Support is sent only while an opponent can get to the ball within this many cycles: a
+    pressed carrier needs a pass, a free one runs with the ball while the team keeps its shape
+    (supporting every carrier slowed attacks down and cost goals)."""
     support_horizon: int = 8
     """Our carrier is the player who has or gets the ball within this many cycles."""
     lane_cap: float = 5.0
@@ -116,7 +121,8 @@ class ShapeParams:
 
     def __post_init__(self) -> None:
         for name in ("switch_margin", "switch_persist", "support_players", "support_directions",
-                     "follow_up_players", "follow_up_cycles", "support_horizon", "support_every"):
+                     "follow_up_players", "follow_up_cycles", "support_horizon", "support_every",
+                     "support_pressure"):
             value = getattr(self, name)
             if not isinstance(value, int) or isinstance(value, bool) or value < 0:
                 raise ValueError(f"ShapeParams.{name} must be a non-negative integer, got {value!r}")
@@ -243,7 +249,8 @@ class Shape:
         if view.cycle - self.shot_cycle <= p.follow_up_cycles:
             followers = self._follow_up(view, race, ball_player, outfield, match_roles[role_of_player], goals,
                                         urgent)
-        if not self.attacking or ball_player < 0 or race.ours.cycles[ball_player] > p.support_horizon:
+        if (not self.attacking or ball_player < 0 or race.ours.cycles[ball_player] > p.support_horizon
+                or race.theirs.first_cycle > p.support_pressure):
             self._held = 0
             return
         if self._held > 0 and ball_player == self._carrier and not followers.size:

@@ -251,3 +251,15 @@ def test_shape_params_are_checked() -> None:
         ShapeParams(push_speed=0.0)
     with pytest.raises(ValueError, match="support_radii"):
         ShapeParams(support_radii=())
+
+
+def test_a_free_carrier_runs_with_the_ball_and_nobody_leaves_the_shape() -> None:
+    team = ready()
+    own = np.array([[-50.0, 0.0], [-20.0, -20.0], [-20.0, 20.0], [-22.0, -7.0], [-22.0, 7.0],
+                    [-4.0, 2.0], [10.0, -25.0], [2.0, -9.0], [0.0, 0.0], [3.0, 10.0], [12.0, 25.0]])
+    theirs = opponents(30.0)  # nobody within 25 m of our carrier
+    team.act(view(own, theirs, own[8] + (0.5, 0.0), cycle=50))
+    assert team.shape.attacking
+    planned = team.targets[team._out_roles][team.role_of_player]
+    moved = [row for i, row in enumerate(team.outfield) if row != 8 and not np.allclose(team.goals[row], planned[i])]
+    assert moved == []
