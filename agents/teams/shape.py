@@ -36,8 +36,8 @@ import numpy as np
 from agents import skills
 from agents.skills.ball_kernels import offside_line
 from agents.teams.shape_kernels import (
-    BACK_FLOOR, DEFEND_BALL_GAP, DROP, PUSH, REST_BALL_GAP, REST_FORWARD_MARGIN, REST_MAX_GAP, advance_block,
-    settle_targets, support_spots)
+    ATTACKING, BACK_FLOOR, BALL_X, DEFEND_BALL_GAP, DEFENDING, DROP, KNOBS, LIMITED, MODE, OFF, PUSH, REST_BALL_GAP,
+    REST_FORWARD_MARGIN, REST_MAX_GAP, advance_block, settle_targets, support_spots)
 from formations.formation_set import Situation
 from soccer_sim.team import TeamView
 
@@ -89,7 +89,7 @@ class ShapeParams:
     support_directions: int = 12
     """Directions of the support spots around the carrier (evenly spread; those more than 120
     degrees from straight ahead are left out)."""
-    support_every: int = 3
+    support_every: int = 4
     """Cycles a choice of support spots is kept (for the same carrier) before it is made
     again: the carrier moves a metre or two meanwhile, and choosing every cycle costs time."""
     support_pressure: int = 10
@@ -173,7 +173,7 @@ class Shape:
         unit = unit[unit[:, 0] >= BACKWARD_LIMIT]  # support level with or ahead of the ball, or a little behind
         self.offsets = np.concatenate([unit * radius for radius in params.support_radii])
         """The support spots relative to the carrier, (S, 2)."""
-        knobs = np.zeros(7)
+        knobs = np.zeros(KNOBS)
         knobs[[REST_BALL_GAP, REST_FORWARD_MARGIN, REST_MAX_GAP, DEFEND_BALL_GAP, BACK_FLOOR, PUSH, DROP]] = (
             params.rest_ball_gap, params.rest_forward_margin, params.rest_max_gap, params.defend_ball_gap,
             -half_length + BACK_LINE_FLOOR, params.push_speed, params.drop_speed)
@@ -229,8 +229,11 @@ class Shape:
         behind the ball (rest defence when attacking) and every target moves at most the
         block's pace from last cycle's (the first cycle of play from the set play's targets);
         otherwise the targets are only remembered."""
-        settle_targets(targets, self.previous, self.outfield_roles, self.back_roles, view.opp_pos,
-                       float(view.ball[0]), self.attacking, play_on, play_on and self._primed, self._knobs)
+        knobs = self._knobs
+        knobs[BALL_X] = view.ball[0]
+        knobs[MODE] = (ATTACKING if self.attacking else DEFENDING) if play_on else OFF
+        knobs[LIMITED] = play_on and self._primed
+        settle_targets(targets, self.previous, self.outfield_roles, self.back_roles, view.opp_pos, knobs)
         self._in_play = play_on
         self._primed = True
 
@@ -249,13 +252,16 @@ class Shape:
         if view.cycle - self.shot_cycle <= p.follow_up_cycles:
             followers = self._follow_up(view, race, ball_player, outfield, match_roles[role_of_player], goals,
                                         urgent)
-        if (not self.attacking or ball_player < 0 or race.ours.cycles[ball_player] > p.support_horizon
-                or race.theirs.first_cycle > p.support_pressure):
+        # (the cheap tests first: this runs every cycle of play)
+        if not self.attacking or ball_player < 0 or race.theirs.first_cycle > p.support_pressure:
             self._held = 0
             return
         if self._held > 0 and ball_player == self._carrier and not followers.size:
             self._held -= 1  # the same carrier a cycle later: the same spots
             goals[self._chosen] = self._chosen_spots
+            return
+        if race.ours.cycles[ball_player] > p.support_horizon:
+            self._held = 0
             return
         self._held, self._carrier = p.support_every - 1, ball_player
         self._chosen, self._chosen_spots = _NONE, _NO_SPOTS

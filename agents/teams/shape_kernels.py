@@ -10,8 +10,13 @@ import numpy as np
 from numba import njit
 
 
-REST_BALL_GAP, REST_FORWARD_MARGIN, REST_MAX_GAP, DEFEND_BALL_GAP, BACK_FLOOR, PUSH, DROP = range(7)
-"""Positions of the shape's numbers in the ``knobs`` array :func:`settle_targets` takes."""
+REST_BALL_GAP, REST_FORWARD_MARGIN, REST_MAX_GAP, DEFEND_BALL_GAP, BACK_FLOOR, PUSH, DROP, BALL_X, MODE, LIMITED, \
+    KNOBS = range(11)
+"""Positions of the shape's numbers in the ``knobs`` array :func:`settle_targets` takes (one
+array rather than many arguments: a compiled call's cost grows with its arguments), and its
+length. The last three change every cycle: the ball's x, the mode and whether to limit."""
+OFF, ATTACKING, DEFENDING = 0.0, 1.0, 2.0
+"""Values of ``knobs[MODE]``: not in play on, attacking, defending."""
 
 
 @njit(cache=True, nogil=True)
@@ -37,18 +42,20 @@ def advance_block(block: np.ndarray, point: np.ndarray, shift: float, in_play: b
 
 @njit(cache=True, nogil=True)
 def settle_targets(targets: np.ndarray, previous: np.ndarray, rows: np.ndarray, back_rows: np.ndarray,
-                   opp_pos: np.ndarray, ball_x: float, attacking: bool, play_on: bool, limited: bool,
-                   knobs: np.ndarray) -> None:  # pragma: no cover - compiled
-    """The shape's last word on the role targets (in place). In play on the ``back_rows`` are
-    held behind the ball: when ``attacking`` (rest defence) at or below ``ball_x -
+                   opp_pos: np.ndarray, knobs: np.ndarray) -> None:  # pragma: no cover - compiled
+    """The shape's last word on the role targets (in place), ``knobs`` giving the numbers
+    (``ball_x`` = ``knobs[BALL_X]``). In play on (``knobs[MODE]`` not OFF) the ``back_rows`` are
+    held behind the ball: when ATTACKING (rest defence) at or below ``ball_x -
     knobs[REST_BALL_GAP]`` and ``knobs[REST_FORWARD_MARGIN]`` behind the opponents' most
     advanced player but no more than ``knobs[REST_MAX_GAP]`` behind the ball, otherwise at or
     below ``ball_x - knobs[DEFEND_BALL_GAP]``; never below ``knobs[BACK_FLOOR]``. When
-    ``limited``, each of ``rows`` moves from ``previous`` by at most ``knobs[PUSH]`` (a move
+    ``knobs[LIMITED]`` is not 0, each of ``rows`` moves from ``previous`` by at most ``knobs[PUSH]`` (a move
     forwards, +x) or ``knobs[DROP]`` (any other move) metres. ``previous`` is then set to the
     targets of ``rows``."""
-    if play_on:
-        if attacking:
+    ball_x, mode = knobs[BALL_X], knobs[MODE]
+    limited = knobs[LIMITED] != 0.0
+    if mode != OFF:
+        if mode == ATTACKING:
             front = np.inf
             for j in range(opp_pos.shape[0]):  # their goalkeeper is never their most advanced
                 front = min(front, opp_pos[j, 0])
