@@ -94,10 +94,12 @@ SET_PLAY_DISTANCE = STANDARD_FIELD.centre_circle_radius + 2.0
 the straight line between two points of a circle cuts inside it."""
 KICK_OFF_MARGIN = 0.5
 """At a kick-off (ball on the centre spot) players stand at x <= -this."""
-KICK_OFF_LINE_GAP: dict[str, float] = {"defence": 14.0, "midfield": 7.0, "attack": 0.0}
+KICK_OFF_LINE_GAP: dict[str, float] = {"defence": 21.5, "midfield": 10.5, "attack": 0.0}
 """At a kick-off each line stands at least this many metres further behind the
 halfway line than KICK_OFF_MARGIN (the limits relax with the ball's distance
-from the centre spot)."""
+from the centre spot): a back four 22 m deep (full backs level with the centre
+backs), a midfield 11 m deep and the forwards on the halfway line, so the team
+kicks off in its shape rather than bunched around the centre circle."""
 KICK_OFF_TAKER_REACH = 9.0
 """Metres from the centre spot within which kick-off takers are drawn to their
 kick-off spot (fully at the spot, not at all this far away). The nearest other
@@ -288,13 +290,12 @@ def role_position(design: RoleDesign, style: Style, bx: float, by: float) -> tup
     if design.line == "goalkeeper":
         return goalkeeper_position(bx, by)
     line: Line = getattr(style, design.line)
-    depth = line.depth(bx)
-    if style.kick_off:
-        depth = min(depth, -KICK_OFF_MARGIN - KICK_OFF_LINE_GAP[design.line] + math.hypot(bx, by))
-    x = depth + design.depth_offset
+    x = line.depth(bx) + design.depth_offset
     if design.full_back:
         start, end = FULL_BACK_PUSH_RAMP
         x += style.full_back_push * min(max((bx - start) / (end - start), 0.0), 1.0)
+    if style.kick_off:
+        x = min(x, -KICK_OFF_MARGIN - KICK_OFF_LINE_GAP[design.line] + math.hypot(bx, by) + design.depth_offset)
     if design.line == "defence" and style.behind_ball is not None:
         x = max(min(x, bx - style.behind_ball), style.defence.lo)
     width = style.wide_width if design.wide else style.width

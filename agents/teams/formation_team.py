@@ -5,10 +5,10 @@ Every cycle (team frame: we attack +x, our goal at x = -half_length):
 1. **Who wins the ball.** :func:`agents.skills.ball_race` rolls the ball forward and finds, for
    both teams, the first player that can control it and where.
 2. **Situation and formation.** Set plays (ours or theirs, kick-offs and the pause after a
-   goal included) use the set-play formations; in play on we *attack* when we win the race
-   and *defend* otherwise. The formation is queried at the point where the ball will be
-   controlled (the race's interception point), not where it is now, so the team moves to
-   where play is going. A style may shift the whole outfield block forwards or back.
+   goal included) use the set-play formations; in play on we *attack* or *defend* as the race
+   says, with hysteresis, and query the formation where the ball will be controlled (the
+   race's interception point); a style may shift the outfield block. :mod:`agents.teams.shape`
+   moves all this at a running pace, keeps a rest defence and sends support and follow-ups.
 3. **Roles.** The role assigner (``mmdr``, ``mmd+msd2``, ``static``, ``greedy``, ...; see
    :mod:`agents.roles`) maps the ten outfield players to the ten outfield role targets; it
    may also steer the players (potential-field bidding) and name the ball player. This is
@@ -50,6 +50,7 @@ from agents.teams.reporting import RoleFigures
 from agents.teams.role_behaviours import RoleBehaviours
 from agents.teams.role_kernels import pull_onside, settle_roles, shape_targets
 from agents.teams.set_plays import SetPlays
+from agents.teams.shape import Shape
 from agents.teams.style import ATTACKING_DECISIONS, TeamStyle
 from agents.teams.type_choice import choose_types, time_scales
 from formations.formation_set import Situation
@@ -153,6 +154,9 @@ class FormationTeam:
         """The per-match figures :meth:`statistics` reports."""
         self.role_behaviours = RoleBehaviours(self.formation_set, model.half_length, model.half_width)
         """Each position's own moves of its role target in open play (:mod:`agents.teams.role_behaviours`)."""
+        self.shape = Shape(self.style.shape, [role.kind for role in self.formation_set.roles], self.style.depth,
+                           self.style.attack_push, model.half_length, model.half_width)
+        """The team's shape in open play: attack/defend switch, pace, rest defence, support."""
 
     def _kick_off_spots(self) -> np.ndarray:
         """(n, 2) where each role stands at our kick-off (team frame)."""
@@ -199,7 +203,7 @@ class FormationTeam:
         targets = self.targets
         targets[:] = self.formation_set.positions(ball_ref, situation)
         style = self.style
-        shift = style.depth + (style.attack_push if situation == Situation.ATTACK else 0.0)
+        shift = self.shape.shift
         shifted = mode == _PLAY_ON and shift != 0.0
         narrowed = situation == Situation.ATTACK and ball_ref[0] > self._half_length / 3.0 and style.box_narrowing
         if shifted or narrowed:
@@ -207,6 +211,8 @@ class FormationTeam:
                           self._forward_roles, 1.0 - style.box_narrowing, bool(narrowed))
         if mode == _PLAY_ON and situation != Situation.NORMAL:
             self.role_behaviours.adjust(targets, situation == Situation.ATTACK, ball_ref, view.opp_pos)
+        if not style.stationary:
+            self.shape.settle(view, targets, mode == _PLAY_ON)
         self._assign_roles(view, targets, ball_ref, race)
         urgent = np.zeros(self.n, dtype=bool)
         if mode == _PLAY_ON:
@@ -237,11 +243,7 @@ class FormationTeam:
         """The formation situation and the ball position to query it at."""
         mode = view.play_mode
         if mode == _PLAY_ON:
-            if race.we_win and race.ours.first >= 0:
-                return Situation.ATTACK, race.ours.points[race.ours.first]
-            if race.theirs.first >= 0:
-                return Situation.DEFEND, race.theirs.points[race.theirs.first]
-            return Situation.NORMAL, view.ball
+            return self.shape.play_on(view, race)
         if mode == _AFTER_GOAL:
             return (Situation.OUR_SET_PLAY if view.mode_ours else Situation.THEIR_SET_PLAY), np.zeros(2)
         if mode in SET_PLAYS or mode == _GOALIE_HOLDS:
@@ -311,6 +313,9 @@ class FormationTeam:
                 if row != ball_player:
                     goals[row] = race.ours.points[row] if race.ours.cycles[row] < skills.UNREACHABLE else view.ball
                     urgent[row] = True
+        if not self.style.stationary and self.role_of_player is not None:
+            self.shape.support(view, race, ball_player, self.outfield, self._match_roles, self.role_of_player,
+                               goals, urgent)
         # An opponent on the ball ends our pass (for the back-pass rule) and contests it.
         contested = race.theirs.first_cycle == 0
         if contested:
@@ -328,6 +333,8 @@ class FormationTeam:
             else:
                 decision = skills.decide_on_ball(ctx, view, kicker, self.style.decision,
                                                  pressure=race.theirs.first_cycle)
+                if decision.action == skills.OnBallAction.SHOOT:
+                    self.shape.shot(view.cycle, view.ball)
                 in_box = bool(model.in_penalty_area(view.ball))
                 pressed = race.theirs.first_cycle <= _SAVE.pressure_cycles and in_box
                 if (contested or pressed) and decision.action in (skills.OnBallAction.DRIBBLE,

@@ -6,6 +6,7 @@ from dataclasses import dataclass, field
 
 from agents import skills
 from agents.teams.routines import RoutineParams
+from agents.teams.shape import ShapeParams
 
 ATTACKING_DECISIONS = skills.DecisionParams(
     shot=skills.ShotParams(threshold=0.2, lane_range=22.0, lane_pressure=6),
@@ -30,7 +31,8 @@ class TeamStyle:
     """Metres the outfield block is shifted towards the opponents' goal in open play (negative:
     a deeper block)."""
     attack_push: float = 14.0
-    """Extra metres the outfield block moves up when we attack (win the race for the ball)."""
+    """Extra metres the outfield block moves up when we attack (win the race for the ball), at
+    the pace :mod:`agents.teams.shape` allows; the back line stays behind as the rest defence."""
     box_narrowing: float = 0.5
     """When we attack with the ball in the final third, the forwards' targets move this share
     of the way towards the middle of the field (so that there are players in the box)."""
@@ -45,6 +47,9 @@ class TeamStyle:
     stationary: bool = False
     """Outfield players hold their kick-off spots and only kick a ball that comes to them (the
     baseline against which positioning is measured)."""
+    shape: ShapeParams = field(default_factory=ShapeParams)
+    """How the team keeps its shape in open play: the attack/defend switch's hysteresis, the
+    pace of the block, rest defence, support and follow-up (:mod:`agents.teams.shape`)."""
     unfilled_distance: float = 10.0
     """A role counts as unfilled while the player assigned to it is farther than this (m)."""
     routines: RoutineParams = field(default_factory=RoutineParams)

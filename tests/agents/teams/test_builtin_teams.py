@@ -8,6 +8,7 @@ import pytest
 
 import soccer_sim
 from agents.teams import FormationTeam, TeamStyle, builtin
+from agents.teams.shape import ShapeParams
 from soccer_sim import MatchConfig, PlayMode, SideInfo
 from soccer_sim.registry import available_teams, resolve_team
 from soccer_sim.team import TeamView
@@ -68,7 +69,8 @@ def test_unknown_assigner_and_wrong_team_size_are_clear_errors() -> None:
 
 
 def test_the_fastest_player_runs_to_the_interception_point_and_others_hold_formation() -> None:
-    team = ready(FormationTeam("mmd+msd2"))
+    # (no support runs: they move two players off their targets, see tests/agents/teams/test_shape.py)
+    team = ready(FormationTeam("mmd+msd2", TeamStyle(shape=ShapeParams(support_players=0))))
     own = spread_out()
     ball, ball_vel = np.array([5.0, 10.0]), np.array([-1.5, 0.0])  # rolling towards us, nobody near
     command = team.act(view(own, spread_out(+1.0), ball, ball_vel))
