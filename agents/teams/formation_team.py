@@ -46,6 +46,7 @@ from agents import skills
 from agents.roles import RoleAssigner, RoleContext, make_assigner, offensive_order
 from agents.teams import mechanism
 from agents.teams.ball_role import LeaveMatching, check_ball_role
+from agents.teams.on_ball import choose_kicker, on_ball_kick
 from agents.teams.reporting import RoleFigures
 from agents.teams.role_behaviours import RoleBehaviours
 from agents.teams.role_kernels import pull_onside, settle_roles, shape_targets
@@ -65,7 +66,6 @@ _PLAY_ON = PlayMode.PLAY_ON
 _KICK_OFF = PlayMode.KICK_OFF
 _AFTER_GOAL = PlayMode.AFTER_GOAL
 _GOALIE_HOLDS = PlayMode.GOALIE_HOLDS
-_SAVE = skills.SaveParams()
 
 
 class FormationTeam:
@@ -320,7 +320,8 @@ class FormationTeam:
         contested = race.theirs.first_cycle == 0
         if contested:
             self._our_pass_in_flight = False
-        kicker = self._kicker(view, race, ball_player)
+        kicker = choose_kicker(view, race, ball_player, self._kickable,
+                               self._eligible if self._our_pass_in_flight else None)
         goalie_near = self.goalie >= 0 and race.ours.cycles[self.goalie] <= 1
         if kicker >= 0 and kicker == self.goalie and skills.should_catch(
                 ctx, view, self.goalie, teammate_kicked_last=self._our_pass_in_flight):
@@ -328,38 +329,14 @@ class FormationTeam:
             kicker = -1
         self._kicker_row = kicker
         if kicker >= 0:
-            if kicker == self.goalie:  # it may kick but not catch: parry when pressed, else distribute
-                command.kick[kicker] = skills.goalkeeper_kick(ctx, view, kicker, race.theirs.first_cycle)
-            else:
-                decision = skills.decide_on_ball(ctx, view, kicker, self.style.decision,
-                                                 pressure=race.theirs.first_cycle)
-                if decision.action == skills.OnBallAction.SHOOT:
-                    self.shape.shot(view.cycle, view.ball)
-                in_box = bool(model.in_penalty_area(view.ball))
-                pressed = race.theirs.first_cycle <= _SAVE.pressure_cycles and in_box
-                if (contested or pressed) and decision.action in (skills.OnBallAction.DRIBBLE,
-                                                                  skills.OnBallAction.CLEAR):
-                    # Against an opponent who kicks the ball too, a dribble or a clearance up the
-                    # field meets its mirror image and the two kicks cancel: kick it towards
-                    # the nearer touchline instead (both teams doing so add up); pressed in our
-                    # box, wide of the goal (a corner rather than a chance).
-                    command.kick[kicker] = skills.parry_kick(ctx, view, kicker) if in_box \
-                        else self._wing_kick(view, kicker)
-                else:
-                    command.kick[kicker] = decision.kick
-                    if decision.dash is not None:
-                        self._dribble_dash = decision.dash
+            kick, self._dribble_dash, shot = on_ball_kick(ctx, view, kicker, self.goalie, self.style.decision,
+                                                          race, contested)
+            command.kick[kicker] = kick
+            if shot:
+                self.shape.shot(view.cycle, view.ball)
         elif goalie_near and not command.catch and skills.should_catch(
                 ctx, view, self.goalie, teammate_kicked_last=self._our_pass_in_flight):
             command.catch = True
-
-    def _wing_kick(self, view: TeamView, kicker: int) -> np.ndarray:
-        """The kick sending the ball hard towards the nearer touchline, a little forwards."""
-        side = 1.0 if view.ball[1] >= 0.0 else -1.0
-        direction = np.array([0.3, side]) / np.hypot(0.3, 1.0)
-        kick, _ = skills.kick_for_velocity(self.model, view.own_pos[kicker], view.ball, view.ball_vel,
-                                           direction * self.model.kick_speed_max, player_vel=view.own_vel[kicker])
-        return kick
 
     def _ball_player(self, view: TeamView, race: skills.BallRace) -> int:
         """Our player who goes for the ball (-1: none can reach it in time)."""
@@ -382,22 +359,6 @@ class FormationTeam:
             best = int(np.argmin(cycles))
             return int(self.outfield[best]) if cycles[best] < skills.UNREACHABLE else -1
         return int(first)
-
-    def _kicker(self, view: TeamView, race: skills.BallRace, ball_player: int) -> int:
-        """The one player of ours who kicks this cycle (-1: none can). Only players the race
-        says control the ball now are candidates (it already leaves out those offside when we
-        played the ball)."""
-        if race.ours.first_cycle != 0:
-            return -1
-        gaps = np.hypot(*(view.own_pos - view.ball).T)
-        if self._our_pass_in_flight:
-            gaps[~self._eligible] = np.inf  # offside when the ball was played: hands off
-        nearest = int(np.argmin(gaps))
-        if gaps[nearest] > self._kickable:
-            return -1
-        if ball_player >= 0 and gaps[ball_player] <= self._kickable:
-            return ball_player
-        return nearest
 
     def _keep_onside(self, view: TeamView, ball_player: int) -> None:
         """Outfield goals beyond the offside line (the second-last opponent or the ball, in

@@ -1,0 +1,63 @@
+"""The built-in team's player on the ball in play on: who of ours kicks this cycle and what
+the kick is (team frame: we attack +x)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from agents import skills
+from soccer_sim.team import TeamView
+
+_SAVE = skills.SaveParams()
+
+
+def choose_kicker(view: TeamView, race: skills.BallRace, ball_player: int, kickable: float,
+                  eligible: np.ndarray | None) -> int:
+    """The one player of ours who kicks this cycle (-1: none can). Only players the race says
+    control the ball now are candidates (it already leaves out those offside when we played
+    the ball); ``eligible`` (None: everybody), while our pass is in flight, leaves out the
+    team-mates who were offside when it was played. The ball player kicks if it can, else the
+    nearest player within ``kickable`` (m)."""
+    if race.ours.first_cycle != 0:
+        return -1
+    gaps = np.hypot(*(view.own_pos - view.ball).T)
+    if eligible is not None:
+        gaps[~eligible] = np.inf  # offside when the ball was played: hands off
+    nearest = int(np.argmin(gaps))
+    if gaps[nearest] > kickable:
+        return -1
+    if ball_player >= 0 and gaps[ball_player] <= kickable:
+        return ball_player
+    return nearest
+
+
+def on_ball_kick(ctx: skills.SkillContext, view: TeamView, kicker: int, goalie: int,
+                 decision_params: skills.DecisionParams, race: skills.BallRace,
+                 contested: bool) -> tuple[np.ndarray, np.ndarray | None, bool]:
+    """``kicker``'s kick: (kick, the dribbler's dash or None, whether it is a shot).
+
+    The goalkeeper, which may kick but not catch here, parries when pressed and otherwise
+    distributes. An outfield player decides with :func:`agents.skills.decide_on_ball`; against
+    an opponent who kicks the ball too, a dribble or a clearance up the field would meet its
+    mirror image and the two kicks cancel, so it kicks towards the nearer touchline instead
+    (both teams doing so add up); pressed in our box, it kicks wide of the goal (a corner
+    rather than a chance)."""
+    model = ctx.model
+    if kicker == goalie:
+        return skills.goalkeeper_kick(ctx, view, kicker, race.theirs.first_cycle), None, False
+    decision = skills.decide_on_ball(ctx, view, kicker, decision_params, pressure=race.theirs.first_cycle)
+    in_box = bool(model.in_penalty_area(view.ball))
+    pressed = race.theirs.first_cycle <= _SAVE.pressure_cycles and in_box
+    if (contested or pressed) and decision.action in (skills.OnBallAction.DRIBBLE, skills.OnBallAction.CLEAR):
+        kick = skills.parry_kick(ctx, view, kicker) if in_box else wing_kick(model, view, kicker)
+        return kick, None, False
+    return decision.kick, decision.dash, decision.action == skills.OnBallAction.SHOOT
+
+
+def wing_kick(model: skills.MotionModel, view: TeamView, kicker: int) -> np.ndarray:
+    """The kick sending the ball hard towards the nearer touchline, a little forwards."""
+    side = 1.0 if view.ball[1] >= 0.0 else -1.0
+    direction = np.array([0.3, side]) / np.hypot(0.3, 1.0)
+    kick, _ = skills.kick_for_velocity(model, view.own_pos[kicker], view.ball, view.ball_vel,
+                                       direction * model.kick_speed_max, player_vel=view.own_vel[kicker])
+    return kick
