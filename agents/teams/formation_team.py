@@ -46,6 +46,7 @@ from agents import skills
 from agents.roles import RoleAssigner, RoleContext, make_assigner, offensive_order
 from agents.teams import mechanism
 from agents.teams.ball_role import LeaveMatching, check_ball_role
+from agents.teams.positions import position_labels
 from agents.teams.on_ball import choose_kicker, on_ball_kick
 from agents.teams.reporting import RoleFigures
 from agents.teams.role_behaviours import RoleBehaviours
@@ -82,7 +83,7 @@ class FormationTeam:
         self.name = name or assigner
         self.formation_set = formations.load_builtin(self.style.system)
         kinds = [role.kind for role in self.formation_set.roles]
-        self._role_kinds = kinds
+        self._role_labels = position_labels(self.formation_set)
         if kinds.count("goalkeeper") != 1:
             raise ValueError(f"formation set {self.style.system!r} needs exactly one goalkeeper role")
         self._goalie_role = kinds.index("goalkeeper")
@@ -374,9 +375,10 @@ class FormationTeam:
         return self.figures.statistics()
 
     def role_labels(self) -> list[str]:
-        """Each player's current role kind (row order): the goalkeeper's, then each outfield
-        player's assigned role (its own formation role before the first assignment)."""
-        kinds = self._role_kinds
+        """Each player's current position (row order; :mod:`agents.teams.positions`): the
+        goalkeeper's, then each outfield player's assigned role's (its own formation role's
+        before the first assignment)."""
+        kinds = self._role_labels
         labels = [kinds[r] for r in range(self.n)]
         if self._has_outfield:
             roles = self._match_roles if self.role_of_player is None else self._match_roles[self.role_of_player]

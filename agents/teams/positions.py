@@ -37,6 +37,12 @@ POSITIONS: tuple[str, ...] = (GOALKEEPER, CENTRE_BACK, FULL_BACK, HOLDING_MIDFIE
                               WIDE_MIDFIELDER, WINGER, CENTRE_FORWARD)
 """Every position label, from the back to the front (a label's index is its code)."""
 
+POSITION_KINDS: dict[str, str] = {
+    GOALKEEPER: "goalkeeper", CENTRE_BACK: "defender", FULL_BACK: "defender", HOLDING_MIDFIELDER: "midfielder",
+    CENTRAL_MIDFIELDER: "midfielder", WIDE_MIDFIELDER: "midfielder", WINGER: "forward", CENTRE_FORWARD: "forward",
+}
+"""Position label -> the formation role kind it belongs to (for tables by kind)."""
+
 WIDE_FRACTION = 0.45
 """A role is wide when its reference spot's |y| is at least this share of the standard half
 width (15.3 m of 34 m): full-backs and wingers stand about 20 m out, central players within

@@ -13,6 +13,8 @@ from __future__ import annotations
 import json
 import os
 
+from agents.teams.positions import POSITION_KINDS as KINDS
+
 POSITIONS = {
     "Goalie": "goalkeeper",
     "CenterBack": "centre-back",
@@ -24,10 +26,6 @@ POSITIONS = {
     "CenterForward": "centre-forward",
 }
 """helios-base role name -> position label."""
-KINDS = {"goalkeeper": "goalkeeper", "centre-back": "defender", "full-back": "defender",
-         "holding-midfielder": "midfielder", "central-midfielder": "midfielder", "wide-midfielder": "midfielder",
-         "winger": "forward", "centre-forward": "forward"}
-"""Position label -> the formation role kind it belongs to (for tables by kind)."""
 
 
 def helios_labels(path: str | os.PathLike) -> list[str]:

@@ -152,4 +152,9 @@ def match_figures(home: str, away: str, seed: int, cycles: int | None = None, *,
     figures.update(recorder.plays.figures())
     figures.update(recorder.cycles.figures())
     figures.update({role_figure(label): km for label, km in recorder.cycles.role_distances().items()})
+    # Positions also count for their role kind (labels that are kinds already count as such).
+    from agents.teams.positions import POSITION_KINDS
+
+    groups = {**POSITION_KINDS, **{kind: kind for kind in POSITION_KINDS.values()}}
+    figures.update({role_figure(group): km for group, km in recorder.cycles.role_distances(groups).items()})
     return figures

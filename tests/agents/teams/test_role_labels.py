@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from agents.teams import FormationTeam
+from agents.teams.positions import position_labels
 from soccer_sim import MatchConfig, SideInfo
 from soccer_sim.team_hooks import ReportsRoles
 
@@ -17,17 +18,17 @@ def _ready(team: FormationTeam) -> FormationTeam:
 def test_labels_follow_the_role_each_player_is_assigned() -> None:
     team = _ready(FormationTeam("greedy"))
     assert isinstance(team, ReportsRoles)
-    kinds = [role.kind for role in team.formation_set.roles]
+    kinds = list(position_labels(team.formation_set))
     labels = team.role_labels()
     assert len(labels) == 11 and labels[0] == "goalkeeper"
     assert labels == kinds  # before the first assignment every player holds its own role
     swap = np.arange(10)
-    defender = next(r for r in range(10) if kinds[r + 1] == "defender")
-    forward = next(r for r in range(10) if kinds[r + 1] == "forward")
+    defender = next(r for r in range(10) if kinds[r + 1] == "centre-back")
+    forward = next(r for r in range(10) if kinds[r + 1] == "centre-forward")
     swap[[defender, forward]] = swap[[forward, defender]]
     team.role_of_player = swap
     labels = team.role_labels()
-    assert labels[defender + 1] == "forward" and labels[forward + 1] == "defender"
+    assert labels[defender + 1] == "centre-forward" and labels[forward + 1] == "centre-back"
     assert sorted(labels) == sorted(kinds)  # still one label per formation role
 
 
