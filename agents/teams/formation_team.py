@@ -228,6 +228,8 @@ class FormationTeam:
         # floor, the others pace themselves (agents.skills.pacing).
         attacking = situation == Situation.ATTACK if mode == _PLAY_ON else None
         skills.paced_dashes(ctx, view, self.goals, urgent, command.dash, attacking=attacking)
+        if mode != _PLAY_ON and view.mode_ours:
+            set_plays.run_if_held_back(view, self.goals, command.dash)
         if self._dribble_dash is not None:  # the dribbler runs with the ball, not to a point
             command.dash[self._kicker_row] = self._dribble_dash
             self._dribble_dash = None

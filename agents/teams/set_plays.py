@@ -136,6 +136,17 @@ class SetPlays:
         self._kick(view, kicker, command)
         return taker
 
+    def run_if_held_back(self, view: TeamView, goals: np.ndarray, dash: np.ndarray) -> None:
+        """Our set-play taker, if the stamina policy left it standing short of the ball (at the
+        stamina floor late in a half, when the capacity no longer pays for recovery), runs to
+        the ball anyway: a set play not taken in time is lost (the ball is dropped)."""
+        taker = self.taker
+        if taker < 0 or dash[taker].any() or np.hypot(*(view.own_pos[taker] - view.ball)) <= self.kickable:
+            return
+        rows = slice(taker, taker + 1)
+        skills.dash_to_points(self.ctx.model, self.ctx.arrays(view).ours.rows(taker, taker + 1), goals[rows],
+                              out=dash[rows])
+
     def goalie_holds(self, view: TeamView, goals: np.ndarray, command: TeamCommand, since: int) -> None:
         """Our goalkeeper holding the ball distributes it once the wait is over, standing still
         meanwhile."""

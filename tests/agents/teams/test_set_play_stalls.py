@@ -227,3 +227,21 @@ def test_full_matches_take_every_set_play(home: str, away: str, seed: int) -> No
     assert found["dropped"] == [], found
     assert found["missed_kick_offs"] == [], found
 
+
+
+def test_a_taker_at_the_stamina_floor_still_runs_to_the_ball() -> None:
+    """Late in a half a player at the stamina floor whose capacity no longer pays for recovery
+    gets no dash from the pacing policy; as our kick-in's taker it must run anyway (a kick-in
+    not taken in time is a dropped ball)."""
+    team = ready("mmd+msd2")
+    floor = (CONFIG.stamina.recover_dec_thr + skills.PacingParams().floor_margin) * CONFIG.stamina.maximum
+    own = np.array([[-20.0 + 2.0 * i, -10.0 + 2.0 * i] for i in range(11)])
+    ball = np.array([-20.0, -CONFIG.field.half_width])
+    own[4] = ball + (0.0, 3.1)  # the nearest player, 3.1 m from the ball: the taker
+    for cycle in (2950, 2951):  # the kick-in begins, then the taker is on its way
+        seen = view(own, their_half(), ball, PlayMode.KICK_IN, cycle=cycle)
+        seen.stamina[:] = floor - 2.0
+        command = team.act(seen)
+    assert team.set_plays.taker == 4
+    # It runs at full power (a dash of 100 accelerates 0.6 m/cycle^2), not stands.
+    assert np.hypot(*command.dash[4]) == pytest.approx(100.0 * CONFIG.physics.dash_power_rate, rel=0.05)
