@@ -27,14 +27,35 @@ def dense_to_graph(lengths_matrix: np.ndarray) -> tuple[np.ndarray, np.ndarray, 
     indices = np.empty(indptr[n], dtype=np.int64)
     lengths = np.empty(indptr[n])
     for i in range(n):
-        order = np.argsort(lengths_matrix[i], kind="mergesort")
         pos = indptr[i]
-        for j in order:
-            if lengths_matrix[i, j] < np.inf:
-                indices[pos] = j
-                lengths[pos] = lengths_matrix[i, j]
-                pos += 1
+        if m > _INSERTION_MAX:
+            for j in np.argsort(lengths_matrix[i], kind="mergesort"):
+                if lengths_matrix[i, j] < np.inf:
+                    indices[pos] = j
+                    lengths[pos] = lengths_matrix[i, j]
+                    pos += 1
+            continue
+        # Small rows (the per-cycle role problems): a stable insertion sort in place, the
+        # same order as the merge sort (ties by target index) without its allocations.
+        start = pos
+        for j in range(m):
+            value = lengths_matrix[i, j]
+            if not value < np.inf:
+                continue
+            k = pos
+            while k > start and lengths[k - 1] > value:
+                lengths[k] = lengths[k - 1]
+                indices[k] = indices[k - 1]
+                k -= 1
+            lengths[k] = value
+            indices[k] = j
+            pos += 1
     return indptr, indices, lengths
+
+
+_INSERTION_MAX = 32
+"""Rows of at most this many targets are sorted by insertion (cheaper than a merge sort's
+allocations for the 10-odd targets of a role problem); longer ones by merge sort."""
 
 
 @njit(cache=True, nogil=True)

@@ -69,7 +69,8 @@ def refine_to_lexicographic(
 
 # Point-to-point forms for per-cycle callers (the soccer role assigners solve a 10 x 10
 # problem every cycle): the same steps as above in one compiled call, so the answer is the
-# same bit for bit while the several calls' dispatch costs are paid once.
+# same bit for bit while the several calls' dispatch costs are paid once (and the graph's
+# short rows are sorted without allocations, see :func:`.graphs.dense_to_graph`).
 
 
 @njit(cache=True, nogil=True)

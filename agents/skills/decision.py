@@ -119,12 +119,14 @@ def decide_on_ball(ctx: SkillContext, view: TeamView, player: int,
     pass_plan = best_pass(ctx, view, player, params.passing, holder)
     if pass_plan is not None and pass_plan.score >= params.pass_good:
         return BallDecision(OnBallAction.PASS, pass_plan.kick, None, pass_plan, pressure)
-    dribble_plan = dribble(ctx, view, player, params.dribbling)
-    if not under_pressure and dribble_plan.clearance >= params.dribble_clearance and not goalie:
+    # A dribble is only ever chosen free of pressure and by an outfield player: not worked
+    # out otherwise (it is the dearest plan after the pass).
+    dribble_plan = None if under_pressure or goalie else dribble(ctx, view, player, params.dribbling)
+    if dribble_plan is not None and dribble_plan.clearance >= params.dribble_clearance:
         return BallDecision(OnBallAction.DRIBBLE, dribble_plan.kick, dribble_plan.dash, dribble_plan, pressure)
     if pass_plan is not None:
         return BallDecision(OnBallAction.PASS, pass_plan.kick, None, pass_plan, pressure)
-    if under_pressure or goalie or float(view.ball[0]) < params.clear_line * model.half_length:
+    if dribble_plan is None or float(view.ball[0]) < params.clear_line * model.half_length:
         clear = best_clearance(ctx, view, player, params.clearing, holder)
         return BallDecision(OnBallAction.CLEAR, clear.kick, None, clear, pressure)
     return BallDecision(OnBallAction.DRIBBLE, dribble_plan.kick, dribble_plan.dash, dribble_plan, pressure)

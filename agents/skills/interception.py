@@ -114,11 +114,25 @@ def intercept_many(ctx: SkillContext, ball: np.ndarray, ball_vel: np.ndarray, pl
     count, n = ball_vel.shape[0], players.pos.shape[0]
     limits = NO_LIMITS if limit is None else _indices("limit", limit, count, None)
     chosen = EVERYONE if only is None else _indices("only", only, count, n)
+    return intercept_checked(ctx, ball, ball_vel, players, float(catch_side), limits, int(reaction),
+                             bool(first_only), chosen)
+
+
+def intercept_checked(ctx: SkillContext, ball: np.ndarray, ball_vel: np.ndarray, players: Players,
+                      catch_side: float, limits: np.ndarray, reaction: int, first_only: bool,
+                      only: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`intercept_many` for a caller whose inputs are already in the kernel's form (a
+    skill's own arrays, checked where they were made): ``ball`` (1, 2) or (P, 2) and
+    ``ball_vel`` (P, 2) C-contiguous float64, ``limits`` and ``only`` C-contiguous int64 (P,)
+    (or :data:`NO_LIMITS` / :data:`EVERYONE`), players indices below their count. Nothing is
+    checked (the compiled search does not check bounds)."""
+    model = ctx.model
+    count, n = ball_vel.shape[0], players.pos.shape[0]
     cycles = np.empty((count, n), dtype=np.int64)
     points = np.empty((count, n, 2))
     intercept_kernel(ball, ball_vel, players.pos, players.vel, players.effort, players.radius, players.catch_radius,
-                     model.reach, model.ball_travel, model.player_coast, limits, chosen, cycles, points,
-                     *ctx.intercept_constants, float(catch_side), int(reaction), bool(first_only))
+                     model.reach, model.ball_travel, model.player_coast, limits, only, cycles, points,
+                     *ctx.intercept_constants, catch_side, reaction, first_only)
     return cycles, points
 
 

@@ -29,7 +29,8 @@ import numpy as np
 from agents.skills.ball_kernels import (LEAD_CAP, beyond_line, deciding_cycles, lane_arrivals, offside_line,
                                         pass_scores, pass_targets)
 from agents.skills.context import SkillContext
-from agents.skills.interception import UNREACHABLE, intercept_many
+from agents.skills.interception import UNREACHABLE, intercept_checked
+from agents.skills.interception_kernels import EVERYONE
 from agents.skills.kicking import kick_for_velocity
 from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, float_array
 from soccer_sim.team import TeamView
@@ -163,21 +164,22 @@ def best_pass(ctx: SkillContext, view: TeamView, passer: int, params: PassParams
                            arrival, limit)
     if usable.size == 0:
         return None
-    vel_u, own_u, lim_u = velocities[usable], owners[usable], limit[usable]
+    vel_u, own_u, lim_u, arrival_u = velocities[usable], owners[usable], limit[usable], arrival[usable]
     # The lanes' searches (as teammate_cycles and opponent_cycles make them): the receiver
-    # alone on each lane, then every opponent up to the cycle that can still decide.
+    # alone on each lane, then every opponent up to the cycle that can still decide (all
+    # arrays made here, in the search's form: no checks needed).
     arrays = ctx.arrays(view)
-    ours, our_points = intercept_many(ctx, arrays.ball, vel_u, arrays.ours, -1.0, lim_u, 0, False, own_u)
+    ours, our_points = intercept_checked(ctx, arrays.ball, vel_u, arrays.ours, -1.0, lim_u, 0, False, own_u)
     rows = np.arange(usable.size)
     receive, received_at = ours[rows, own_u], our_points[rows, own_u]
     opponents = arrays.theirs.with_radii(*ctx.opponent_radii(params.opponent_margin))
-    theirs = intercept_many(ctx, arrays.ball, vel_u, opponents, 1.0,
-                            deciding_cycles(receive, arrival[usable], lim_u, params.min_lead), 1,
-                            True)[0].min(axis=1, initial=UNREACHABLE)
+    theirs = intercept_checked(ctx, arrays.ball, vel_u, opponents, 1.0,
+                               deciding_cycles(receive, arrival_u, lim_u, params.min_lead), 1, True,
+                               EVERYONE)[0].min(axis=1, initial=UNREACHABLE)
     effort = arrays.ours.effort
     score = np.empty(usable.size)
     points = np.empty((usable.size, 2))
-    best = pass_scores(targets[usable], received_at, receive, theirs, arrival[usable], own_u, view.own_pos,
+    best = pass_scores(targets[usable], received_at, receive, theirs, arrival_u, own_u, view.own_pos,
                        view.own_vel, effort, view.opp_pos, ball, model.reach, float(model.player_coast[-1]),
                        model.kickable_distance, model.half_length, params.min_lead, score, points,
                        params.weight_forward, params.weight_goal, params.weight_space, params.weight_lead)

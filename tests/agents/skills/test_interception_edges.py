@@ -17,3 +17,24 @@ def test_a_ball_on_the_touchline_can_be_reached() -> None:
     assert result.first == 0 and 0 < result.first_cycle < 10
     gone = skills.intercept(ctx, ball + (0.0, 0.1), np.zeros(2), players)  # wholly out
     assert gone.first == -1
+
+
+def test_checked_entry_is_the_same_search() -> None:
+    """intercept_checked (inputs already in the kernel's form) gives what intercept_many gives,
+    with limits, a reaction delay, first-only searches and single-player lanes."""
+    from agents.skills.interception import intercept_checked, intercept_many
+    from agents.skills.interception_kernels import EVERYONE, NO_LIMITS
+
+    model = skills.MotionModel.even_sides(MatchConfig())
+    ctx = skills.SkillContext(model)
+    rng = np.random.default_rng(3)
+    players = skills.Players(model, rng.uniform(-30, 30, (11, 2)), rng.uniform(-0.5, 0.5, (11, 2)))
+    ball, vels = np.array([[1.0, -2.0]]), rng.uniform(-2.5, 2.5, (8, 2))
+    limit, only = rng.integers(0, 40, 8).astype(np.int64), rng.integers(0, 11, 8).astype(np.int64)
+    for args, checked in (((None, 0, False, None), (NO_LIMITS, 0, False, EVERYONE)),
+                          ((limit, 1, True, None), (limit, 1, True, EVERYONE)),
+                          ((limit, 0, False, only), (limit, 0, False, only))):
+        want = intercept_many(ctx, ball, vels, players, 1.0, *args)
+        got = intercept_checked(ctx, ball, vels, players, 1.0, *checked)
+        assert np.array_equal(want[0], got[0]) and np.array_equal(want[1], got[1])
+        assert (got[0] < skills.UNREACHABLE).any()
