@@ -1,14 +1,53 @@
-"""The built-in team's player on the ball in play on: who of ours kicks this cycle and what
-the kick is (team frame: we attack +x)."""
+"""The built-in team's player on the ball in play on: who of ours may play the ball, who
+kicks this cycle and what the kick is, and our tackle when an opponent has the ball (team
+frame: we attack +x)."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from agents import skills
-from soccer_sim.team import TeamView
+from agents.skills.tackling import TackleParams, Tackling, player_inertia
+from soccer_sim.config import MatchConfig
+from soccer_sim.team import SideInfo, TeamCommand, TeamView
 
 _SAVE = skills.SaveParams()
+
+
+def able_players(view: TeamView, eligible: np.ndarray | None) -> np.ndarray | None:
+    """(n,) bool: our players who may play the ball (None: all): those of ``eligible`` (None:
+    all; e.g. not those offside when our pass in flight was played) that are not frozen after
+    a tackle or a foul (the simulator ignores a frozen player's commands)."""
+    frozen = view.frozen
+    if not frozen.any():
+        return eligible
+    free = frozen == 0
+    return free if eligible is None else eligible & free
+
+
+def make_tackling(model: skills.MotionModel, config: MatchConfig, side_info: SideInfo,
+                  params: TackleParams) -> Tackling:
+    """The team's tackle decisions for a match (:mod:`agents.skills.tackling`), with each
+    player's own type."""
+    inertia = player_inertia(model, side_info.player_types, side_info.own_types)
+    return Tackling(model, config.tackles, inertia, side_info.goalie_index, params)
+
+
+def tackle_if_worth(tackling: Tackling, view: TeamView, command: TeamCommand, race: skills.BallRace,
+                    ours_last: bool) -> None:
+    """None of ours can kick the ball: put our tackle, if the moment calls for one and one is
+    worth it (:mod:`agents.skills.tackling`), into ``command``. ``ours_last``: we played the
+    ball last (our pass is in flight)."""
+    occasion = tackling.occasion(view, race.theirs.first_cycle, race.ours.first_cycle, ours_last)
+    tackle = tackling.choose(view, occasion) if occasion else None
+    if tackle is None:
+        return
+    n = view.own_pos.shape[0]
+    command.tackle = np.full(n, np.nan)
+    command.tackle[tackle.player] = tackle.direction
+    if tackle.foul:
+        command.foul = np.zeros(n, dtype=bool)
+        command.foul[tackle.player] = True
 
 
 def choose_kicker(view: TeamView, race: skills.BallRace, ball_player: int, kickable: float,
