@@ -16,7 +16,9 @@ opponents played into our half that heads into our goal or that they will reach 
 shot or a cross to block: the tackle reaches twice as far as a kick); see
 :meth:`Tackling.occasion`. :meth:`Tackling.choose` then looks only at our outfield players
 within ``tackle_dist`` of the ball that can act (present, not frozen), so it costs nothing in
-the rest of the match. A player tackles when its success probability (computed as the
+the rest of the match. Our goalkeeper, who catches what it can, tackles only a shot it
+cannot catch before the ball crosses our goal line (:attr:`TackleParams.keeper_saves`: a
+diving save that pushes it wide). A player tackles when its success probability (computed as the
 simulator computes it: :func:`soccer_sim.tackles.body_frame_failure`, with the player's own
 ``inertia_moment``) is at least :attr:`TackleParams.min_probability`, or
 :attr:`TackleParams.danger_probability` near our goal where losing the tackler for ten
@@ -94,6 +96,11 @@ class TackleParams:
     shot_probability: float = 0.4
     """The threshold for blocking a ball heading into our goal: the tackler loses ten cycles,
     but the ball would otherwise reach the goalkeeper or the net."""
+    keeper_saves: bool = True
+    """Our goalkeeper tackles (dives at) a ball heading into our goal that it cannot catch
+    before the ball crosses the line: a save that knocks the ball wide, often for a corner."""
+    keeper_probability: float = 0.3
+    """The goalkeeper's threshold for such a save: the alternative is a goal."""
     block_speed: float = 1.0
     """A block is only for a ball at least this fast (m/cycle): a kicked ball, not one rolling out."""
     professional_fouls: bool = True
@@ -103,11 +110,11 @@ class TackleParams:
     """Directions weighed for the push (evenly spaced)."""
 
     def __post_init__(self) -> None:
-        for name in ("enabled", "blocks", "professional_fouls"):
+        for name in ("enabled", "blocks", "keeper_saves", "professional_fouls"):
             if not isinstance(getattr(self, name), bool):
                 raise SkillInputError(f"TackleParams.{name} must be a bool, got {getattr(self, name)!r}")
-        check_params(self, fractions=("min_probability", "danger_probability", "shot_probability", "min_score",
-                                        "corner_value"),
+        check_params(self, fractions=("min_probability", "danger_probability", "shot_probability",
+                                        "keeper_probability", "min_score", "corner_value"),
                      non_negative=("danger_distance", "touchline_weight", "post_margin", "block_speed"),
                      counts=("directions",))
 
@@ -184,16 +191,21 @@ class Tackling:
                 return Occasion.SHOT
         return Occasion.BLOCK if their_cycle < our_cycle else Occasion.NONE
 
-    def choose(self, view: TeamView, occasion: Occasion = Occasion.ON_BALL) -> Tackle | None:
+    def choose(self, view: TeamView, occasion: Occasion = Occasion.ON_BALL,
+               keeper_misses: bool = False) -> Tackle | None:
         """Our tackle this cycle, or None. Call it only when none of our players can kick the
-        ball, with what :meth:`occasion` says (the module docstring)."""
+        ball, with what :meth:`occasion` says (the module docstring); ``keeper_misses``: our
+        goalkeeper cannot catch the ball before it leaves the field (then, on a shot and with
+        :attr:`TackleParams.keeper_saves`, it may dive at it)."""
         if not self.enabled or occasion == Occasion.NONE:
             return None
         cfg, params, model = self.config, self.params, self.model
         ball = view.ball
         gaps = np.hypot(view.own_pos[:, 0] - ball[0], view.own_pos[:, 1] - ball[1])
         able = (gaps <= cfg.tackle_dist) & view.present & (view.frozen == 0)
-        if 0 <= self.goalie < able.size:
+        keeper = 0 <= self.goalie < able.size
+        keeper_dives = keeper and occasion == Occasion.SHOT and keeper_misses and params.keeper_saves
+        if keeper and not keeper_dives:
             able[self.goalie] = False
         if not able.any():
             return None
@@ -213,7 +225,8 @@ class Tackling:
                 foul_failure = body_frame_failure(cfg, dx, dy, vx, vy, float(self.inertia[row]), True)[0]
                 if 1.0 - foul_failure >= params.danger_probability:
                     probability, foul = 1.0 - min(foul_failure, 1.0), True
-            if probability < threshold or (best is not None and probability <= best.probability):
+            least = params.keeper_probability if row == self.goalie else threshold
+            if probability < least or (best is not None and probability <= best.probability):
                 continue
             direction = self.direction(ball, view.ball_vel, math.atan2(fy, fx), math.atan2(y, x), danger)
             if direction is not None:

@@ -39,7 +39,9 @@ def tackle_if_worth(tackling: Tackling, view: TeamView, command: TeamCommand, ra
     worth it (:mod:`agents.skills.tackling`), into ``command``. ``ours_last``: we played the
     ball last (our pass is in flight)."""
     occasion = tackling.occasion(view, race.theirs.first_cycle, race.ours.first_cycle, ours_last)
-    tackle = tackling.choose(view, occasion) if occasion else None
+    goalie = tackling.goalie
+    misses = goalie >= 0 and race.ours.cycles[goalie] >= skills.UNREACHABLE
+    tackle = tackling.choose(view, occasion, misses) if occasion else None
     if tackle is None:
         return
     n = view.own_pos.shape[0]
