@@ -93,7 +93,7 @@ class TackleParams:
     blocks: bool = True
     """Also tackle a ball the opponents played into our half that we cannot kick: one heading
     into our goal, or one they will reach before us (a block; see :meth:`Tackling.occasion`)."""
-    shot_probability: float = 0.4
+    shot_probability: float = 0.25
     """The threshold for blocking a ball heading into our goal: the tackler loses ten cycles,
     but the ball would otherwise reach the goalkeeper or the net."""
     keeper_saves: bool = True
@@ -185,11 +185,18 @@ class Tackling:
         vx, vy = float(view.ball_vel[0]), float(view.ball_vel[1])
         if math.hypot(vx, vy) < params.block_speed:
             return Occasion.NONE
-        if vx < 0.0:
-            crossing = float(view.ball[1]) + vy * (-self.model.half_length - float(view.ball[0])) / vx
-            if abs(crossing) <= self.model.goal_half_width + params.post_margin:
-                return Occasion.SHOT
+        if self.shot_at_us(view, ours_last):
+            return Occasion.SHOT
         return Occasion.BLOCK if their_cycle < our_cycle else Occasion.NONE
+
+    def shot_at_us(self, view: TeamView, ours_last: bool) -> bool:
+        """Whether the ball, not last played by us, at least :attr:`TackleParams.block_speed`
+        fast, heads into our goal (between the posts with :attr:`TackleParams.post_margin`)."""
+        vx, vy = float(view.ball_vel[0]), float(view.ball_vel[1])
+        if ours_last or vx >= 0.0 or math.hypot(vx, vy) < self.params.block_speed:
+            return False
+        crossing = float(view.ball[1]) + vy * (-self.model.half_length - float(view.ball[0])) / vx
+        return abs(crossing) <= self.model.goal_half_width + self.params.post_margin
 
     def choose(self, view: TeamView, occasion: Occasion = Occasion.ON_BALL,
                keeper_misses: bool = False) -> Tackle | None:

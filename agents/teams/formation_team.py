@@ -332,8 +332,9 @@ class FormationTeam:
             kicker = -1
         self._kicker_row = kicker
         if kicker >= 0:
-            kick, self._dribble_dash, shot = on_ball_kick(ctx, view, kicker, self.goalie, self.style.decision,
-                                                          race, contested)
+            blocking = self.tackling.shot_at_us(view, self._our_pass_in_flight)
+            kick, self._dribble_dash, shot = on_ball_kick(ctx, view, kicker, self.goalie, self.style.decision, race,
+                                                          contested, blocking)
             command.kick[kicker] = kick
             if shot:
                 self.shape.shot(view.cycle, view.ball)

@@ -12,6 +12,10 @@ from soccer_sim.config import MatchConfig
 from soccer_sim.team import SideInfo, TeamCommand, TeamView
 
 _SAVE = skills.SaveParams()
+_BLOCK = skills.SaveParams(behind_depth=18.0)
+"""An outfield player's block of a shot at our goal, or its clearance in our penalty area with
+an opponent about to win the ball: wide of the post and over our goal line (a corner rather
+than a chance) from anywhere in the area and just outside."""
 
 
 def able_players(view: TeamView, eligible: np.ndarray | None) -> np.ndarray | None:
@@ -74,23 +78,26 @@ def choose_kicker(view: TeamView, race: skills.BallRace, ball_player: int, kicka
 
 def on_ball_kick(ctx: skills.SkillContext, view: TeamView, kicker: int, goalie: int,
                  decision_params: skills.DecisionParams, race: skills.BallRace,
-                 contested: bool) -> tuple[np.ndarray, np.ndarray | None, bool]:
+                 contested: bool, shot_at_us: bool = False) -> tuple[np.ndarray, np.ndarray | None, bool]:
     """``kicker``'s kick: (kick, the dribbler's dash or None, whether it is a shot).
 
     The goalkeeper, which may kick but not catch here, parries when pressed and otherwise
     distributes. An outfield player decides with :func:`agents.skills.decide_on_ball`; against
     an opponent who kicks the ball too, a dribble or a clearance up the field would meet its
     mirror image and the two kicks cancel, so it kicks towards the nearer touchline instead
-    (both teams doing so add up); pressed in our box, it kicks wide of the goal (a corner
-    rather than a chance)."""
+    (both teams doing so add up); pressed in our box, it kicks wide of the goal and behind
+    (a corner rather than a chance). ``shot_at_us``: the ball is the opponents' shot heading into our
+    goal; an outfield player blocks it wide (:data:`_BLOCK`)."""
     model = ctx.model
     if kicker == goalie:
         return skills.goalkeeper_kick(ctx, view, kicker, race.theirs.first_cycle), None, False
+    if shot_at_us:
+        return skills.parry_kick(ctx, view, kicker, _BLOCK), None, False
     decision = skills.decide_on_ball(ctx, view, kicker, decision_params, pressure=race.theirs.first_cycle)
     in_box = bool(model.in_penalty_area(view.ball))
     pressed = race.theirs.first_cycle <= _SAVE.pressure_cycles and in_box
     if (contested or pressed) and decision.action in (skills.OnBallAction.DRIBBLE, skills.OnBallAction.CLEAR):
-        kick = skills.parry_kick(ctx, view, kicker) if in_box else wing_kick(model, view, kicker)
+        kick = skills.parry_kick(ctx, view, kicker, _BLOCK) if in_box else wing_kick(model, view, kicker)
         return kick, None, False
     return decision.kick, decision.dash, decision.action == skills.OnBallAction.SHOOT
 
