@@ -81,7 +81,7 @@ class TackleParams:
     """Tackle only if the best direction's push share times its worth reaches this: a tackler
     whose body faces away from anywhere useful (chasing from behind towards our goal) would
     only poke the ball along to the opponent."""
-    corner_value: float = 0.3
+    corner_value: float = 0.45
     """Worth of a push over our goal line wide of the posts near our goal (on the scale of the
     aim's cosine, 1 the best): worse than a push up the field, better than a weak one."""
     touchline_weight: float = 1.0
@@ -93,13 +93,13 @@ class TackleParams:
     blocks: bool = True
     """Also tackle a ball the opponents played into our half that we cannot kick: one heading
     into our goal, or one they will reach before us (a block; see :meth:`Tackling.occasion`)."""
-    shot_probability: float = 0.25
+    shot_probability: float = 0.15
     """The threshold for blocking a ball heading into our goal: the tackler loses ten cycles,
     but the ball would otherwise reach the goalkeeper or the net."""
     keeper_saves: bool = True
     """Our goalkeeper tackles (dives at) a ball heading into our goal that it cannot catch
     before the ball crosses the line: a save that knocks the ball wide, often for a corner."""
-    keeper_probability: float = 0.3
+    keeper_probability: float = 0.15
     """The goalkeeper's threshold for such a save: the alternative is a goal."""
     block_speed: float = 1.0
     """A block is only for a ball at least this fast (m/cycle): a kicked ball, not one rolling out."""
