@@ -23,7 +23,7 @@ def able_players(view: TeamView, eligible: np.ndarray | None) -> np.ndarray | No
     all; e.g. not those offside when our pass in flight was played) that are not frozen after
     a tackle or a foul (the simulator ignores a frozen player's commands)."""
     frozen = view.frozen
-    if not frozen.any():
+    if not np.count_nonzero(frozen):  # (cheaper than .any() on a few players)
         return eligible
     free = frozen == 0
     return free if eligible is None else eligible & free
@@ -43,9 +43,10 @@ def tackle_if_worth(tackling: Tackling, view: TeamView, command: TeamCommand, ra
     worth it (:mod:`agents.skills.tackling`), into ``command``. ``ours_last``: we played the
     ball last (our pass is in flight)."""
     occasion = tackling.occasion(view, race.theirs.first_cycle, race.ours.first_cycle, ours_last)
+    if not occasion:
+        return
     goalie = tackling.goalie
-    misses = goalie >= 0 and race.ours.cycles[goalie] >= skills.UNREACHABLE
-    tackle = tackling.choose(view, occasion, misses) if occasion else None
+    tackle = tackling.choose(view, occasion, goalie >= 0 and race.ours.cycles[goalie] >= skills.UNREACHABLE)
     if tackle is None:
         return
     n = view.own_pos.shape[0]
