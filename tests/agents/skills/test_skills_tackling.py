@@ -162,3 +162,26 @@ def test_built_in_teams_tackle_in_a_short_match() -> None:
     tackles = result.events.of_kind(EventKind.TACKLE)
     assert tackles and any(detail % 2 == 1 for *_, detail in tackles)
     assert sum(s.tackles for s in result.statistics) == len(tackles)
+
+
+def test_frozen_players_are_left_out_of_the_ball_and_a_shot_at_us_is_blocked_wide() -> None:
+    from agents import skills
+    from agents.teams.on_ball import able_players, choose_kicker, on_ball_kick
+
+    view = make_view(own={5: (-0.5, 0.0)}, ball=(0.0, 0.0))
+    assert able_players(view, None) is None
+    view.frozen[5] = 4
+    able = able_players(view, None)
+    assert not able[5] and able.sum() == N - 1
+    ctx = skills.SkillContext(MODEL)
+    race = skills.ball_race(ctx, view, able)
+    assert race.ours.first != 5 and choose_kicker(view, race, -1, MODEL.kickable_distance, able) == -1
+    # An outfield player who can kick an opponent's shot at our goal deflects it wide and behind.
+    shot = make_view(own={4: (-44.0, 1.0)}, opp={9: (-30.0, 0.0)}, ball=(-44.0, 0.2), ball_vel=(-2.4, -0.1))
+    team = tackling()
+    assert team.shot_at_us(shot, ours_last=False) and not team.shot_at_us(shot, ours_last=True)
+    race = skills.ball_race(ctx, shot)
+    kick, dash, is_shot = on_ball_kick(ctx, shot, 4, 0, skills.DecisionParams(), race, False, True)
+    out = shot.ball_vel + kick
+    assert dash is None and not is_shot and out[0] < 0.0
+    assert abs(0.2 + out[1] * (-HL + 44.0) / out[0]) > MODEL.goal_half_width + 2.0
