@@ -43,7 +43,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from soccer_sim.body import facing
-from soccer_sim.config import MatchConfig
+from soccer_sim.config import MatchConfig, TackleConfig
 from soccer_sim.kernels import PT_INERTIA_MOMENT, PT_KICK_RAND
 from soccer_sim.rules.fouls import park_absent
 from soccer_sim.state import NO_PLAYER, WorldState
@@ -57,6 +57,29 @@ def failure_probability(x: float, y: float, tackle_dist: float, tackle_back_dist
     if abs(reach) <= 1.0e-5:
         return 1.0
     return (abs(x) / reach) ** exponent + (abs(y) / tackle_width) ** exponent
+
+
+def body_frame_failure(cfg: TackleConfig, to_ball_x: float, to_ball_y: float, vx: float, vy: float,
+                       inertia_moment: float, foul: bool) -> tuple[float, float, float, float, float]:
+    """A tackle's failure probability for a tackler with velocity ``(vx, vy)`` (m/cycle) and the
+    ball at ``(to_ball_x, to_ball_y)`` from it (m; any frame), its body facing as
+    :func:`soccer_sim.body.facing` says: (failure probability, the ball's x ahead and y to the
+    side in the body frame, the body direction's unit vector). ``foul``: a foul tackle on a
+    ball an opponent can kick (``foul_exponent``). The one computation :class:`Tackles` and a
+    team weighing a tackle both use."""
+    fx, fy = facing(vx, vy, to_ball_x, to_ball_y, inertia_moment)
+    x, y = to_ball_x * fx + to_ball_y * fy, to_ball_y * fx - to_ball_x * fy  # the ball in the body frame
+    exponent = cfg.foul_exponent if foul else cfg.tackle_exponent
+    return failure_probability(x, y, cfg.tackle_dist, cfg.tackle_back_dist, cfg.tackle_width, exponent), x, y, fx, fy
+
+
+def push_acceleration(cfg: TackleConfig, relative: float, ball_angle: float) -> float:
+    """The push (m/cycle, before the noise) of a successful tackle in a direction ``relative``
+    radians from the body (|relative| <= pi) on a ball ``ball_angle`` radians (|.| <= pi) off
+    the body's direction: hardest straight ahead, ``max_back_tackle_power`` straight back."""
+    power = cfg.max_back_tackle_power + (cfg.max_tackle_power - cfg.max_back_tackle_power) * (
+        1.0 - abs(relative) / math.pi)
+    return power * cfg.tackle_power_rate * (1.0 - 0.5 * abs(ball_angle) / math.pi)
 
 
 @dataclass
@@ -186,18 +209,13 @@ class Tackles:
         types = self.types
         inertia = self._inertia if types is None else float(types[row, PT_INERTIA_MOMENT])
         kick_rand = self._physics.kick_rand if types is None else float(types[row, PT_KICK_RAND])
-        fx, fy = facing(float(state.vel[row, 0]), float(state.vel[row, 1]), dx, dy, inertia)
-        x, y = dx * fx + dy * fy, dy * fx - dx * fy  # the ball in the body frame
-        exponent = cfg.foul_exponent if intentional else cfg.tackle_exponent
-        prob = failure_probability(x, y, cfg.tackle_dist, cfg.tackle_back_dist, cfg.tackle_width, exponent)
+        prob, x, y, fx, fy = body_frame_failure(cfg, dx, dy, float(state.vel[row, 0]), float(state.vel[row, 1]),
+                                                inertia, intentional)
         if prob >= 1.0 or self.rng.random() >= 1.0 - prob:
             return False, (0.0, 0.0)
         body = math.atan2(fy, fx)
         relative = math.remainder(direction - body, 2.0 * math.pi)  # (-pi, pi]: the direction from the body
-        power = cfg.max_back_tackle_power + (cfg.max_tackle_power - cfg.max_back_tackle_power) * (
-            1.0 - abs(relative) / math.pi)
-        ball_angle = abs(math.atan2(y, x))
-        accel = power * cfg.tackle_power_rate * (1.0 - 0.5 * ball_angle / math.pi)
+        accel = push_acceleration(cfg, relative, math.atan2(y, x))
         physics = self._physics
         pos_rate = 0.5 + 0.5 * (1.0 - prob)
         speed_rate = 0.5 + 0.5 * math.hypot(state.ball_vel[0], state.ball_vel[1]) / (

@@ -10,8 +10,9 @@
 * ``statues``: the same team whose outfield players never leave their kick-off spots (they
   kick a ball that comes to them); the baseline that says whether positioning matters.
 * Three **reference opponents** with their own formations and styles:
-  ``counter-442`` (a deep, compact 4-4-2 that clears long and counter-attacks),
-  ``press-433`` (a high 4-3-3 that hunts the ball with two players) and ``possession``
+  ``counter-442`` (a deep, compact 4-4-2 that clears long and counter-attacks, tackles only
+  when nearly sure and never fouls on purpose),
+  ``press-433`` (a high 4-3-3 that hunts the ball with two players and tackles more readily) and ``possession``
   (a 4-3-3 that keeps the ball with short passes and shoots only from close in).
 """
 
@@ -22,6 +23,7 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from agents.skills import PassParams
+from agents.skills.tackling import TackleParams
 from agents.teams.formation_team import FormationTeam
 from agents.teams.style import ATTACKING_DECISIONS, TeamStyle
 
@@ -35,11 +37,13 @@ LEAVE_VARIANTS: tuple[str, ...] = tuple(f"{a}-leave" for a in ASSIGNER_VARIANTS 
 
 COUNTER_442 = TeamStyle(
     system="4-4-2", depth=-6.0, pressers=1,
+    tackling=TackleParams(min_probability=0.85, professional_fouls=False),
     decision=replace(ATTACKING_DECISIONS, pass_good=1.0, dribble_clearance=2.0, clear_line=-0.1,
                      passing=PassParams(weight_forward=1.6, weight_space=0.4, max_distance=45.0)),
 )
 PRESS_433 = TeamStyle(
     system="4-3-3", depth=6.0, pressers=2,
+    tackling=TackleParams(min_probability=0.7, danger_probability=0.5),
     decision=replace(ATTACKING_DECISIONS, pass_good=1.1, pressure_cycles=4),
 )
 POSSESSION = TeamStyle(

@@ -46,8 +46,8 @@ from agents import skills
 from agents.roles import RoleAssigner, RoleContext, make_assigner, offensive_order
 from agents.teams import mechanism
 from agents.teams.ball_role import LeaveMatching, check_ball_role
+from agents.teams.on_ball import able_players, choose_kicker, make_tackling, on_ball_kick, tackle_if_worth
 from agents.teams.positions import position_labels
-from agents.teams.on_ball import choose_kicker, on_ball_kick
 from agents.teams.reporting import RoleFigures
 from agents.teams.role_behaviours import RoleBehaviours
 from agents.teams.role_kernels import pull_onside, settle_roles, shape_targets
@@ -158,6 +158,8 @@ class FormationTeam:
         self.shape = Shape(self.style.shape, [role.kind for role in self.formation_set.roles], self.style.depth,
                            self.style.attack_push, model.half_length, model.half_width)
         """The team's shape in open play: attack/defend switch, pace, rest defence, support."""
+        self.tackling = make_tackling(model, config, side_info, self.style.tackling)
+        """Our tackles (:mod:`agents.skills.tackling`)."""
 
     def _kick_off_spots(self) -> np.ndarray:
         """(n, 2) where each role stands at our kick-off (team frame)."""
@@ -186,6 +188,7 @@ class FormationTeam:
         command.kick[:] = 0.0
         command.catch = False
         command.move = None
+        command.tackle = command.foul = None
         mode = view.play_mode
         key = (int(mode), bool(view.mode_ours))
         set_plays = self.set_plays
@@ -197,7 +200,7 @@ class FormationTeam:
                 set_plays.begin(view)
             self._mode_key, self._mode_since = key, view.cycle
         ctx, model = self.skills, self.model
-        race = skills.ball_race(ctx, view, self._eligible if self._our_pass_in_flight else None,
+        race = skills.ball_race(ctx, view, able_players(view, self._eligible if self._our_pass_in_flight else None),
                                 their_first_only=True)
         situation, ball_ref = self._situation_and_ball(view, race)
         self._situation = situation
@@ -324,7 +327,7 @@ class FormationTeam:
         if contested:
             self._our_pass_in_flight = False
         kicker = choose_kicker(view, race, ball_player, self._kickable,
-                               self._eligible if self._our_pass_in_flight else None)
+                               able_players(view, self._eligible if self._our_pass_in_flight else None))
         goalie_near = self.goalie >= 0 and race.ours.cycles[self.goalie] <= 1
         if kicker >= 0 and kicker == self.goalie and skills.should_catch(
                 ctx, view, self.goalie, teammate_kicked_last=self._our_pass_in_flight):
@@ -332,14 +335,17 @@ class FormationTeam:
             kicker = -1
         self._kicker_row = kicker
         if kicker >= 0:
-            kick, self._dribble_dash, shot = on_ball_kick(ctx, view, kicker, self.goalie, self.style.decision,
-                                                          race, contested)
+            blocking = self.tackling.shot_at_us(view, self._our_pass_in_flight)
+            kick, self._dribble_dash, shot = on_ball_kick(ctx, view, kicker, self.goalie, self.style.decision, race,
+                                                          contested, blocking)
             command.kick[kicker] = kick
             if shot:
                 self.shape.shot(view.cycle, view.ball)
         elif goalie_near and not command.catch and skills.should_catch(
                 ctx, view, self.goalie, teammate_kicked_last=self._our_pass_in_flight):
             command.catch = True
+        elif not command.catch:
+            tackle_if_worth(self.tackling, view, command, race, self._our_pass_in_flight)
 
     def _ball_player(self, view: TeamView, race: skills.BallRace) -> int:
         """Our player who goes for the ball (-1: none can reach it in time)."""

@@ -1,14 +1,60 @@
-"""The built-in team's player on the ball in play on: who of ours kicks this cycle and what
-the kick is (team frame: we attack +x)."""
+"""The built-in team's player on the ball in play on: who of ours may play the ball, who
+kicks this cycle and what the kick is, and our tackle when an opponent has the ball (team
+frame: we attack +x)."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from agents import skills
-from soccer_sim.team import TeamView
+from agents.skills.tackling import TackleParams, Tackling, player_inertia
+from soccer_sim.config import MatchConfig
+from soccer_sim.team import SideInfo, TeamCommand, TeamView
 
 _SAVE = skills.SaveParams()
+_BLOCK = skills.SaveParams(behind_depth=18.0)
+"""An outfield player's block of a shot at our goal, or its clearance in our penalty area with
+an opponent about to win the ball: wide of the post and over our goal line (a corner rather
+than a chance) from anywhere in the area and just outside."""
+
+
+def able_players(view: TeamView, eligible: np.ndarray | None) -> np.ndarray | None:
+    """(n,) bool: our players who may play the ball (None: all): those of ``eligible`` (None:
+    all; e.g. not those offside when our pass in flight was played) that are not frozen after
+    a tackle or a foul (the simulator ignores a frozen player's commands)."""
+    frozen = view.frozen
+    if not np.count_nonzero(frozen):  # (cheaper than .any() on a few players)
+        return eligible
+    free = frozen == 0
+    return free if eligible is None else eligible & free
+
+
+def make_tackling(model: skills.MotionModel, config: MatchConfig, side_info: SideInfo,
+                  params: TackleParams) -> Tackling:
+    """The team's tackle decisions for a match (:mod:`agents.skills.tackling`), with each
+    player's own type."""
+    inertia = player_inertia(model, side_info.player_types, side_info.own_types)
+    return Tackling(model, config.tackles, inertia, side_info.goalie_index, params)
+
+
+def tackle_if_worth(tackling: Tackling, view: TeamView, command: TeamCommand, race: skills.BallRace,
+                    ours_last: bool) -> None:
+    """None of ours can kick the ball: put our tackle, if the moment calls for one and one is
+    worth it (:mod:`agents.skills.tackling`), into ``command``. ``ours_last``: we played the
+    ball last (our pass is in flight)."""
+    occasion = tackling.occasion(view, race.theirs.first_cycle, race.ours.first_cycle, ours_last)
+    if not occasion:
+        return
+    goalie = tackling.goalie
+    tackle = tackling.choose(view, occasion, goalie >= 0 and race.ours.cycles[goalie] >= skills.UNREACHABLE)
+    if tackle is None:
+        return
+    n = view.own_pos.shape[0]
+    command.tackle = np.full(n, np.nan)
+    command.tackle[tackle.player] = tackle.direction
+    if tackle.foul:
+        command.foul = np.zeros(n, dtype=bool)
+        command.foul[tackle.player] = True
 
 
 def choose_kicker(view: TeamView, race: skills.BallRace, ball_player: int, kickable: float,
@@ -33,23 +79,26 @@ def choose_kicker(view: TeamView, race: skills.BallRace, ball_player: int, kicka
 
 def on_ball_kick(ctx: skills.SkillContext, view: TeamView, kicker: int, goalie: int,
                  decision_params: skills.DecisionParams, race: skills.BallRace,
-                 contested: bool) -> tuple[np.ndarray, np.ndarray | None, bool]:
+                 contested: bool, shot_at_us: bool = False) -> tuple[np.ndarray, np.ndarray | None, bool]:
     """``kicker``'s kick: (kick, the dribbler's dash or None, whether it is a shot).
 
     The goalkeeper, which may kick but not catch here, parries when pressed and otherwise
     distributes. An outfield player decides with :func:`agents.skills.decide_on_ball`; against
     an opponent who kicks the ball too, a dribble or a clearance up the field would meet its
     mirror image and the two kicks cancel, so it kicks towards the nearer touchline instead
-    (both teams doing so add up); pressed in our box, it kicks wide of the goal (a corner
-    rather than a chance)."""
+    (both teams doing so add up); pressed in our box, it kicks wide of the goal and behind
+    (a corner rather than a chance). ``shot_at_us``: the ball is the opponents' shot heading into our
+    goal; an outfield player blocks it wide (:data:`_BLOCK`)."""
     model = ctx.model
     if kicker == goalie:
         return skills.goalkeeper_kick(ctx, view, kicker, race.theirs.first_cycle), None, False
+    if shot_at_us:
+        return skills.parry_kick(ctx, view, kicker, _BLOCK), None, False
     decision = skills.decide_on_ball(ctx, view, kicker, decision_params, pressure=race.theirs.first_cycle)
     in_box = bool(model.in_penalty_area(view.ball))
     pressed = race.theirs.first_cycle <= _SAVE.pressure_cycles and in_box
     if (contested or pressed) and decision.action in (skills.OnBallAction.DRIBBLE, skills.OnBallAction.CLEAR):
-        kick = skills.parry_kick(ctx, view, kicker) if in_box else wing_kick(model, view, kicker)
+        kick = skills.parry_kick(ctx, view, kicker, _BLOCK) if in_box else wing_kick(model, view, kicker)
         return kick, None, False
     return decision.kick, decision.dash, decision.action == skills.OnBallAction.SHOOT
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from agents import skills
+from agents.skills.tackling import TackleParams
 from agents.teams.routines import RoutineParams
 from agents.teams.shape import ShapeParams
 
@@ -55,6 +56,9 @@ class TeamStyle:
     routines: RoutineParams = field(default_factory=RoutineParams)
     """Our corner-kick and kick-in routines (box runners, the short option, crosses, the ball
     down the line; :mod:`agents.teams.routines`)."""
+    tackling: TackleParams = field(default_factory=TackleParams)
+    """When our players tackle an opponent on the ball, where they push it, and whether they
+    ever foul on purpose (:mod:`agents.skills.tackling`)."""
     goalkeeper_goal_kicks: bool = True
     """Our goalkeeper takes our goal kicks (as in real play; an outfield player when the
     goalkeeper's attempt was retaken, or when there is none)."""
