@@ -13,6 +13,10 @@ from soccer_sim.team import SideInfo, TeamCommand, TeamView
 
 _SAVE = skills.SaveParams()
 _BLOCK = skills.SaveParams(behind_depth=18.0)
+_DEEP_PRESSURE = 4
+"""Cycles until an opponent controls the ball within which a player of ours deep in our half
+counts as pressed (and so puts the ball behind or wide instead of dribbling or clearing across
+our goal): a defender closed down near its goal line plays safe, as real ones do."""
 """An outfield player's block of a shot at our goal, or its clearance in our penalty area with
 an opponent about to win the ball: wide of the post and over our goal line (a corner rather
 than a chance) from anywhere in the area and just outside."""
@@ -95,10 +99,12 @@ def on_ball_kick(ctx: skills.SkillContext, view: TeamView, kicker: int, goalie: 
     if shot_at_us:
         return skills.parry_kick(ctx, view, kicker, _BLOCK), None, False
     decision = skills.decide_on_ball(ctx, view, kicker, decision_params, pressure=race.theirs.first_cycle)
-    in_box = bool(model.in_penalty_area(view.ball))
-    pressed = race.theirs.first_cycle <= _SAVE.pressure_cycles and in_box
+    # Deep in our half (as deep as the penalty area, any width), a pressed player puts the
+    # ball behind or wide rather than across our goal.
+    deep = float(view.ball[0]) < model.penalty_area_length - model.half_length
+    pressed = race.theirs.first_cycle <= _DEEP_PRESSURE and deep
     if (contested or pressed) and decision.action in (skills.OnBallAction.DRIBBLE, skills.OnBallAction.CLEAR):
-        kick = skills.parry_kick(ctx, view, kicker, _BLOCK) if in_box else wing_kick(model, view, kicker)
+        kick = skills.parry_kick(ctx, view, kicker, _BLOCK) if deep else wing_kick(model, view, kicker)
         return kick, None, False
     return decision.kick, decision.dash, decision.action == skills.OnBallAction.SHOOT
 
