@@ -50,7 +50,7 @@ from agents.teams.on_ball import able_players, choose_kicker, make_tackling, on_
 from agents.teams.positions import position_labels
 from agents.teams.reporting import RoleFigures
 from agents.teams.role_behaviours import RoleBehaviours
-from agents.teams.role_kernels import pull_onside, settle_roles, shape_targets
+from agents.teams.role_kernels import pull_onside, settle_roles, shape_targets, steered_goals
 from agents.teams.set_plays import SetPlays
 from agents.teams.shape import Shape
 from agents.teams.style import ATTACKING_DECISIONS, TeamStyle
@@ -286,7 +286,10 @@ class FormationTeam:
                 role_of_player = assigner.assign(players, role_targets, order, self.role_of_player, context)
             # An assigner that keeps the default steer sends each player to its role's target:
             # the kernel below places those goals itself.
-            goals = assigner.steer(players, role_targets, role_of_player, context) if self._steers else None
+            goals = None
+            if self._steers:
+                goals = steered_goals(players, assigner.steer(players, role_targets, role_of_player, context),
+                                      role_targets[role_of_player])
         previous = self.role_of_player if self.role_of_player is not None else role_of_player
         measured = view.play_mode == _PLAY_ON
         switches, mean, largest, unfilled = settle_roles(self.goals, self.outfield, role_targets, role_of_player,

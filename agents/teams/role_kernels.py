@@ -66,3 +66,18 @@ def pull_onside(goals: np.ndarray, rows: np.ndarray, opp_pos: np.ndarray, ball_x
     for r in rows:
         if goals[r, 0] > limit:
             goals[r, 0] = max(limit, 0.0)
+
+
+def steered_goals(players: np.ndarray, steps: np.ndarray, anchors: np.ndarray) -> np.ndarray:
+    """A steering assigner's goal points (``steps``: each player's next point a short way down
+    its field, e.g. potential-field bidding's) as goal points in the same directions but as
+    far away as the players' role targets (``anchors``), all (m, 2) in the team frame.
+
+    The team paces a run by how far its goal is (:mod:`agents.skills.pacing`): a goal one
+    field step away would read as "arrived" and leave the player walking or standing, however
+    far its role target is. A step no longer than the player's way to its target is kept."""
+    step = steps - players
+    length = np.hypot(step[:, 0], step[:, 1])
+    reach = np.hypot(anchors[:, 0] - players[:, 0], anchors[:, 1] - players[:, 1])
+    scale = np.where(length > 1e-9, np.maximum(reach, length) / np.maximum(length, 1e-9), 1.0)
+    return players + step * scale[:, None]
