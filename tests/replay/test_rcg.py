@@ -31,6 +31,7 @@ class Trajectory:
     def on_start(self, match) -> None:
         self.cycles, self.pos, self.vel, self.ball, self.score, self.attacks = [], [], [], [], [], []
         self.stamina = []
+        self.type_ids = match.type_ids.copy()  # each player's type (the built-in team chooses some)
         self.on_cycle(match)
 
     def on_cycle(self, match) -> None:
@@ -74,9 +75,12 @@ def test_positions_are_the_simulators_in_rcssservers_frame(logged) -> None:
 
 def test_players_state_type_stamina_and_body(logged) -> None:
     _, trajectory, _, log = logged
+    rows = {(side, unum): row for row, (side, unum) in
+            enumerate([("l", u) for u in range(1, 12)] + [("r", u) for u in range(1, 12)])}
+    assert trajectory.type_ids.any() and not trajectory.type_ids[11:].any()  # mmdr chooses types, chaser not
     for show in log.shows:
         for p in show.players:
-            assert p.type == 0 and p.state & 0x1
+            assert p.state & 0x1 and p.type == trajectory.type_ids[rows[(p.side, p.unum)]]
             assert bool(p.state & 0x8) == (p.unum == 1)  # goalie flag on the keepers only
     last = log.shows[-1]
     players = sorted(last.players, key=lambda p: (p.side, p.unum))
