@@ -19,6 +19,24 @@ from agents.skills.pacing import (K_ACCEL_MAX, K_BACK_RATE, K_CRUISE, K_DANGER_X
 
 
 @njit(cache=True, nogil=True)
+def arrive_and_stop(dx: float, dy: float, vx: float, vy: float, dist: float, cap: float,
+                    limit: float) -> tuple[float, float, float]:  # pragma: no cover - compiled
+    """The acceleration (ax, ay) and its size that take a player moving at (vx, vy) towards a
+    point (dx, dy) away (``dist`` m) at no more than ``cap`` m/cycle and stop it there, capped
+    at ``limit`` m/cycle^2 (a full dash at the player's effort)."""
+    if dist > cap:
+        dx *= cap / dist
+        dy *= cap / dist
+    ax, ay = dx - vx, dy - vy
+    size = math.sqrt(ax * ax + ay * ay)
+    if size > limit:
+        ax *= limit / size
+        ay *= limit / size
+        size = limit
+    return ax, ay, size
+
+
+@njit(cache=True, nogil=True)
 def dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, effort: np.ndarray, caps: np.ndarray,
                 accel_max: float, speed_max: float, tolerance: float, out: np.ndarray) -> None:  # pragma: no cover
     """Per player, the dash that brings it from ``pos``/``vel`` to its ``targets`` row and stops
@@ -32,16 +50,7 @@ def dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, effort: n
             out[i, 0] = 0.0
             out[i, 1] = 0.0
             continue
-        cap = min(caps[i], speed_max)
-        if dist > cap:
-            dx *= cap / dist
-            dy *= cap / dist
-        ax, ay = dx - vx, dy - vy
-        size = math.sqrt(ax * ax + ay * ay)
-        limit = accel_max * effort[i]
-        if size > limit:
-            ax *= limit / size
-            ay *= limit / size
+        ax, ay, _ = arrive_and_stop(dx, dy, vx, vy, dist, min(caps[i], speed_max), accel_max * effort[i])
         out[i, 0] = ax
         out[i, 1] = ay
 
@@ -92,17 +101,7 @@ def paced_dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, eff
         budgets[i] = budget
         if budget <= 0.0 or eff <= 0.0:
             continue
-        cap = pace_speed(budget, hurry, eff, k)
-        if dist > cap:
-            dx *= cap / dist
-            dy *= cap / dist
-        ax, ay = dx - vx, dy - vy
-        size = math.sqrt(ax * ax + ay * ay)
-        limit = accel_max * eff
-        if size > limit:
-            ax *= limit / size
-            ay *= limit / size
-            size = limit
+        ax, ay, size = arrive_and_stop(dx, dy, vx, vy, dist, pace_speed(budget, hurry, eff, k), accel_max * eff)
         if size <= 0.0:
             continue
         # The power the simulator will charge (soccer_sim.kinematics: the dash direction
