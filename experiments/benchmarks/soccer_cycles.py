@@ -21,6 +21,8 @@ Definitions (m; a cycle is 0.1 s):
   * **stamina**: the share of outfield player-cycles with stamina below ``low_stamina``
     (rcssserver caps a dash below 100) and below the recovery threshold
     (``recover_dec_thr x stamina_max``: below it the server lowers the player's recovery);
+  * **place by role label**: the mean x (m, towards the opponents' goal, 0 at the halfway
+    line) and the mean |y| (m from the long axis) of the players holding that label;
   * **players near the ball**: the mean number of players (both teams) within
     ``CROWD_RADIUS`` of the ball (scrums: well-spaced teams keep it near 1-2).
 """
@@ -62,6 +64,7 @@ class CycleFigures:
         self.distance = np.zeros(2)
         self.label_distance: dict[str, float] = {}
         self.label_cycles: dict[str, int] = {}
+        self.label_place: dict[str, list[float]] = {}  # label -> [sum of x towards attack, sum of |y|, cycles]
         self.play_on = 0
         self.near = 0
         self.extent = np.zeros((2, 2))  # [all cycles, midfield cycles] x [length, width], summed over teams
@@ -99,6 +102,15 @@ class CycleFigures:
         if not play_on:
             return
         self.play_on += 1
+        if labels is not None:
+            place = self.label_place
+            forward = np.where(self.team == 0, pos[:, 0], -pos[:, 0]).tolist()  # the home team attacks +x
+            for label, x, y in zip(labels, forward, np.abs(pos[:, 1]).tolist()):
+                if label is not None:
+                    sums = place.setdefault(label, [0.0, 0.0, 0])
+                    sums[0] += x
+                    sums[1] += y
+                    sums[2] += 1
         near = pos - ball
         self.near += int(np.count_nonzero(np.einsum("ij,ij->i", near, near) <= CROWD_RADIUS ** 2))
         midfield = abs(float(ball[0])) < MIDFIELD_HALF_LENGTH
@@ -146,3 +158,16 @@ class CycleFigures:
                 distance[key] = distance.get(key, 0.0) + self.label_distance[label]
                 cycles[key] = cycles.get(key, 0) + count
         return {key: distance[key] / count * self.cycles / 1000.0 for key, count in sorted(cycles.items()) if count}
+
+    def role_places(self, groups: Mapping[str, str] | None = None) -> dict[str, tuple[float, float]]:
+        """Per role label (or per group, as :meth:`role_distances`): the mean x towards the
+        opponents' goal and the mean |y| (m) of its players over the play-on cycles."""
+        sums: dict[str, list[float]] = {}
+        for label, (x, y, count) in self.label_place.items():
+            key = label if groups is None else groups.get(label)
+            if key is not None:
+                total = sums.setdefault(key, [0.0, 0.0, 0])
+                total[0] += x
+                total[1] += y
+                total[2] += count
+        return {key: (x / count, y / count) for key, (x, y, count) in sorted(sums.items()) if count}

@@ -14,6 +14,7 @@ Every figure is for both teams together (a sum) unless its name says otherwise.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -36,6 +37,16 @@ ROLE_PREFIX = "distance run by "
 def role_figure(label: str) -> str:
     """The name of the figure of the distance run by players with role label ``label``."""
     return f"{ROLE_PREFIX}{label} (km per player)"
+
+
+def place_figures(cycles: CycleFigures, groups: Mapping[str, str] | None = None) -> dict[str, float]:
+    """The mean place of each role label's (or group's) players as figures: x towards the
+    opponents' goal and |y| (m; :meth:`CycleFigures.role_places`)."""
+    figures: dict[str, float] = {}
+    for label, (x, y) in cycles.role_places(groups).items():
+        figures[f"mean x of {label} (m)"] = x
+        figures[f"mean |y| of {label} (m)"] = y
+    return figures
 
 
 class FiguresRecorder:
@@ -157,4 +168,6 @@ def match_figures(home: str, away: str, seed: int, cycles: int | None = None, *,
 
     groups = {**POSITION_KINDS, **{kind: kind for kind in POSITION_KINDS.values()}}
     figures.update({role_figure(group): km for group, km in recorder.cycles.role_distances(groups).items()})
+    figures.update(place_figures(recorder.cycles))
+    figures.update(place_figures(recorder.cycles, groups))
     return figures

@@ -38,7 +38,7 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 
 from experiments.benchmarks.soccer_cycles import CycleFigures
-from experiments.benchmarks.soccer_match import COUNTED, role_figure
+from experiments.benchmarks.soccer_match import COUNTED, place_figures, role_figure
 from experiments.benchmarks.soccer_plays import PlayFigures
 from soccer_sim.rcg import GameLog
 from soccer_sim.rcg.mapping import BALL_COLLIDE, GOALIE, MAX_PLAYER, STAND, TACKLE, TACKLE_FAULT
@@ -127,8 +127,10 @@ def rcg_figures(log: GameLog, labels: Mapping[str, Sequence[str]] | None = None,
     figures.update(cycles.figures())
     if row_labels is not None:
         figures.update({role_figure(label): km for label, km in cycles.role_distances().items()})
+        figures.update(place_figures(cycles))
         if groups is not None:
             figures.update({role_figure(group): km for group, km in cycles.role_distances(groups).items()})
+            figures.update(place_figures(cycles, groups))
     return figures
 
 

@@ -56,6 +56,23 @@ def test_distance_leaves_out_relocations_and_splits_by_role_label() -> None:
     assert roles["forward"] == 0.0 and "None" not in roles and None not in roles
 
 
+def test_places_by_role_label_face_each_teams_attack_in_play_on_cycles() -> None:
+    figures = _cycle_figures()
+    labels = ["goalkeeper", "centre-back", "winger", "goalkeeper", "centre-back", "winger"]
+    # the home team attacks +x, the away team -x (the log frame)
+    pos = np.array([[-50.0, 0.0], [-30.0, 5.0], [20.0, -25.0], [50.0, 0.0], [34.0, -3.0], [-10.0, 29.0]])
+    figures.start(pos)
+    stamina = np.full(6, 8000.0)
+    figures.add(pos, np.zeros(2), stamina, OUTFIELD, play_on=True, labels=labels)
+    figures.add(pos * 0.0, np.zeros(2), stamina, OUTFIELD, play_on=False, labels=labels)  # a stoppage
+    places = figures.role_places()
+    assert places["centre-back"] == pytest.approx((-32.0, 4.0))
+    assert places["winger"] == pytest.approx((15.0, 27.0))
+    assert places["goalkeeper"] == pytest.approx((-50.0, 0.0))
+    grouped = figures.role_places({"centre-back": "defender", "winger": "forward"})
+    assert set(grouped) == {"defender", "forward"} and grouped["defender"] == pytest.approx((-32.0, 4.0))
+
+
 def test_stamina_shares_are_of_outfield_player_cycles() -> None:
     figures = _cycle_figures()
     pos = np.zeros((6, 2))
