@@ -66,6 +66,7 @@ def test_a_slot_token_must_be_hex() -> None:
 pytest.importorskip("ray")
 
 
+@pytest.mark.slow  # the local backend's crash blame stays in the default run (test_run_exit_codes)
 def test_on_ray_a_team_that_crashes_its_worker_forfeits_and_the_node_stays(tmp_path, capsys) -> None:
     from experiments.cli import main
     from experiments.results.store import ResultStore
