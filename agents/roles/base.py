@@ -88,6 +88,9 @@ class RoleAssigner(ABC):
     uses_role_order: bool = True
     """Whether :meth:`assign` looks at ``role_order``; an assigner that does not says so, and a
     team may then pass None instead of working the order out every cycle."""
+    uses_ball_reach: bool = False
+    """Whether :meth:`assign` looks at ``RoleContext.ball_reach``; a team that knows it may fill
+    it in for such an assigner only (working it out every cycle costs time)."""
 
     def reset(self, n_roles: int, rng: np.random.Generator) -> None:
         """A new match with ``n_roles`` roles (and as many players); ``rng`` is the team's

@@ -134,6 +134,8 @@ class BiddingAssigner(RoleAssigner):
     """Potential-field bidding (see the module docstring). ``params`` or keyword overrides of
     :class:`BiddingParams` (and of its :class:`FieldParams`), e.g. ``BiddingAssigner(min_hold=5)``."""
 
+    uses_ball_reach = True
+
     name = "bidding"
 
     def __init__(self, params: BiddingParams | None = None, **overrides: object) -> None:

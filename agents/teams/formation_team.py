@@ -46,7 +46,7 @@ from agents import skills
 from agents.roles import RoleAssigner, RoleContext, make_assigner, offensive_order
 from agents.teams import mechanism
 from agents.teams.ball_role import LeaveMatching, check_ball_role
-from agents.teams.on_ball import able_players, choose_kicker, make_tackling, on_ball_kick, tackle_if_worth
+from agents.teams.on_ball import able_players, ball_reach, choose_kicker, make_tackling, on_ball_kick, tackle_if_worth
 from agents.teams.positions import position_labels
 from agents.teams.reporting import RoleFigures
 from agents.teams.role_behaviours import RoleBehaviours
@@ -270,12 +270,13 @@ class FormationTeam:
             role_of_player = np.arange(len(self.outfield))
             goals = self.kick_off_spots[self._match_roles]
         else:
-            context = self._context
+            context, assigner, play_on = self._context, self.assigner, view.play_mode == _PLAY_ON
             context.ball = ball_ref
+            context.ball_reach = ball_reach(race, self.outfield, self.model) if assigner.uses_ball_reach and play_on \
+                else None
             context.opponents = view.opp_pos
             context.cycle = view.cycle
             context.attacking = self._situation == Situation.ATTACK
-            assigner = self.assigner
             role_of_player = self._ball_row_cycle = None
             if self._leave is not None and view.play_mode == _PLAY_ON:
                 self._ball_row, self._ball_row_cycle = self._ball_player(view, race), view.cycle
@@ -284,8 +285,7 @@ class FormationTeam:
             if role_of_player is None:
                 order = offensive_order(role_targets) if assigner.uses_role_order else None
                 role_of_player = assigner.assign(players, role_targets, order, self.role_of_player, context)
-            # An assigner that keeps the default steer sends each player to its role's target:
-            # the kernel below places those goals itself.
+            # (a default steer sends each player to its role's target: the kernel below does that)
             goals = None
             if self._steers:
                 goals = steered_goals(players, assigner.steer(players, role_targets, role_of_player, context),

@@ -116,3 +116,13 @@ def wing_kick(model: skills.MotionModel, view: TeamView, kicker: int) -> np.ndar
     kick, _ = skills.kick_for_velocity(model, view.own_pos[kicker], view.ball, view.ball_vel,
                                        direction * model.kick_speed_max, player_vel=view.own_vel[kicker])
     return kick
+
+
+def ball_reach(race: skills.BallRace, outfield: np.ndarray, model: skills.MotionModel) -> np.ndarray:
+    """How far (m) each outfield player effectively is from controlling the ball: the cycles
+    its interception takes (the race) times the top speed, inf for a player who cannot
+    intercept (:attr:`agents.roles.RoleContext.ball_reach`, what bidding's ball role bids
+    with instead of the straight distance to the formation's query point)."""
+    cycles = race.ours.cycles[outfield].astype(np.float64)
+    cycles[race.ours.cycles[outfield] >= skills.UNREACHABLE] = np.inf
+    return cycles * model.top_speed

@@ -19,11 +19,38 @@ def test_a_short_step_is_stretched_to_the_role_targets_distance_in_its_direction
     np.testing.assert_allclose(goals[2], [3.0, 3.0])              # no step: stays
 
 
-def test_the_bidding_teams_players_keep_near_their_role_targets() -> None:
-    from soccer_sim import MatchConfig, run_match
+def test_the_bidding_teams_players_far_from_their_places_run() -> None:
+    """Players 20 m and more from their role targets in play on: with one-step goals the
+    pacing would let most of them walk (a goal 1 m away); stretched, they all run."""
+    from soccer_sim import MatchConfig, PlayMode, SideInfo
+    from soccer_sim.registry import resolve_team
+    from soccer_sim.team import TeamView
 
-    result = run_match("bidding", "mmdr", seed=1, config=MatchConfig(max_cycles=600))
-    figures = result.statistics[0].reported
-    # With one-step goals the pacing left bidding's players about 10 m from their targets on
-    # average (the other assigners: about 5 m).
-    assert figures["target_distance_mean"] < 8.0
+    config = MatchConfig()
+    team, _ = resolve_team("bidding")
+    team.reset(SideInfo(0, "us", "them", 11, 0, 11, 0), config, np.random.default_rng(0))
+    own = np.array([[-50.0, 0.0], *[[-45.0, -30.0 + 6.0 * i] for i in range(10)]])  # all crammed at our goal line
+    opp = np.array([[50.0, 0.0], *[[20.0, -30.0 + 6.0 * i] for i in range(10)]])
+    view = TeamView(own_pos=own, own_vel=np.zeros_like(own), opp_pos=opp, opp_vel=np.zeros_like(opp),
+                    ball=np.array([10.0, 0.0]), ball_vel=np.zeros(2), stamina=np.full(11, config.stamina.maximum),
+                    play_mode=PlayMode.PLAY_ON, mode_ours=False, cycle=100)
+    dash = team.act(view).dash
+    speeds = np.hypot(dash[1:, 0], dash[1:, 1])
+    # A dash of 0.6 m/cycle^2 is full power; a walk towards a 1 m goal is a small fraction of it.
+    assert np.count_nonzero(speeds > 0.3) >= 8
+
+
+def test_bidding_is_told_each_players_reach_from_the_race_and_only_bidding() -> None:
+    from agents import skills
+    from agents.roles import make_assigner
+    from agents.skills.interception import BallRace, Interception
+    from agents.teams.on_ball import ball_reach
+    from soccer_sim import MatchConfig
+
+    model = skills.MotionModel(MatchConfig(), players=11, goalie=0, opponents=11, opponent_goalie=0)
+    ours = Interception(np.array([0, 4, skills.UNREACHABLE, 10]), np.zeros((4, 2)), 0, 0)
+    race = BallRace(ours, Interception(np.array([3]), np.zeros((1, 2)), 0, 3))
+    reach = ball_reach(race, np.array([1, 2, 3]), model)
+    np.testing.assert_allclose(reach, [4 * model.top_speed, np.inf, 10 * model.top_speed])
+    assert make_assigner("bidding").uses_ball_reach
+    assert not any(make_assigner(name).uses_ball_reach for name in ("mmdr", "mmd+msd2", "static", "greedy", "random"))
