@@ -127,8 +127,6 @@ class MotionModel:
         """Stamina below which recovery and effort start falling for good (see StaminaConfig)."""
         self.recovery_per_cycle = float(stam.recovery_per_cycle)
         self.dash_power_rate = float(phys.dash_power_rate)
-        self.jog_speed = float(self.sustainable_speed(1.0))
-        """Sustainable speed of a fresh player (m/cycle); ``jog_speed * effort`` for others."""
 
     @classmethod
     def for_side(cls, config: MatchConfig, side: SideInfo, horizon: int = 60) -> MotionModel:
