@@ -22,6 +22,7 @@ def tables_only(out: str) -> list[str]:
     return [line for line in out.splitlines() if " matches in " not in line and not line.startswith("wrote ")]
 
 
+@pytest.mark.slow  # test_runner_failures and test_play_robustness keep both cases in the default suite
 def test_a_failing_and_a_hanging_team_forfeit_and_the_study_goes_on(tmp_path, capsys) -> None:
     raising, hanging = SCRIPTED + "RaisingTeam", SCRIPTED + "HangingTeam"
     code = main([*STUDY, "--part", "league", "--league", f"idle,chaser,{raising},{hanging}", "--league-games", "2",

@@ -12,6 +12,7 @@ from tests.experiments.helpers import outcome
 pytest.importorskip("ray")
 
 
+@pytest.mark.slow  # the Ray cluster tests keep a Ray run in the default suite
 def test_ray_backend_plays_a_small_tournament(tmp_path, capsys) -> None:
     common = ["tournament", "--teams", "chaser,idle", "--games", "4", "--cycles", "200", "--workers", "2",
               "--no-progress"]
