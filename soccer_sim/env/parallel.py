@@ -166,8 +166,7 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         self._steps = 0
         self._log = []
         self._done = (False, False)
-        self._info = EpisodeInfo(sizes[HOME], kw["event_texts"])
-        self._info.update(match, len(match.events))
+        self._info = EpisodeInfo(sizes[HOME], kw["event_texts"])  # the start is not a cycle played: no counts
         self._rewards.out[:] = 0.0
         self.agents = list(self.possible_agents)
         self._observe()

@@ -51,6 +51,12 @@ def test_pettingzoo_checks_on_a_representative_subset(controlled: str, mode: str
     _check_all(controlled, mode, scenario, 12)
 
 
+def test_pettingzoo_checks_with_the_action_mask_in_the_observation() -> None:
+    options = dict(_options("left", "high_level", "counter-attack", 15), action_mask_in_observation=True)
+    parallel_api_test(parallel_env(**options), num_cycles=15)
+    api_test(env(**options), num_cycles=15)
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("controlled, mode, scenario", list(itertools.product(CONTROLLED, MODES, scenario_names())))
 def test_pettingzoo_checks_on_every_form_and_scenario(controlled: str, mode: str, scenario: str) -> None:
