@@ -13,7 +13,6 @@ from examples.scripted_team import ScriptedTeam, scripted_policy
 from experiments.cli import main
 from soccer_sim import EventKind, MatchConfig, TeamError, run_match
 from soccer_sim.env import PolicyTeam, env, observation_size, parallel_env
-from soccer_sim.replay import ReplayError
 
 pytestmark = pytest.mark.filterwarnings("ignore:Agent's (minimum|maximum) observation space value")
 
