@@ -12,8 +12,10 @@ Rewards: :mod:`soccer_sim.env.rewards` (goals by default; named dense terms). In
 :mod:`soccer_sim.env.global_state` (``state()`` and the ``state_space`` attribute).
 
 An episode ends for all agents together: *terminated* when the match is over (its time, or
-the scenario's end conditions and cycle limit; or at the first goal with ``end_on_goal``),
-*truncated* after ``max_cycles`` steps (:meth:`soccer_sim.ending.MatchEnd.episode_end`).
+one of the scenario's end conditions; or at the first goal with ``end_on_goal``), *truncated*
+after ``max_cycles`` steps or at the scenario's ``cycle_limit`` (time limits that cut an
+episode short, which learners should bootstrap through;
+:meth:`soccer_sim.ending.MatchEnd.episode_end`).
 
 **Batched interface** (no dicts): ``reset_arrays(seed)`` and ``step_arrays(actions)`` with
 one row per agent in :attr:`possible_agents` order (left first): ``actions`` (N, 5) floats for
@@ -228,9 +230,12 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         self._steps += 1
         self._info.update(match, mark)
         self._rewards.after(state, match.events, mark)
-        self._done = self.setup.end.episode_end(state, goal_scored=int(state.score.sum()) != score,
-                                                end_on_goal=self.end_on_goal, steps=self._steps,
-                                                max_cycles=self.max_cycles)
+        terminated, truncated = self.setup.end.episode_end(state, goal_scored=int(state.score.sum()) != score,
+                                                           end_on_goal=self.end_on_goal, steps=self._steps,
+                                                           max_cycles=self.max_cycles)
+        if terminated and match.end_reason == "cycle_limit":
+            terminated, truncated = False, True  # the scenario's time limit: a cut, not an outcome
+        self._done = (terminated, truncated)
         self._observe()
         if self._done[0] or self._done[1]:
             self.agents = []
