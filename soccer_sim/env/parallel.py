@@ -208,8 +208,10 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         terminated, truncated = self._done
         return (self._obs.copy(), self._rewards.out.copy(), np.full(n, terminated), np.full(n, truncated))
 
-    def _advance(self, rows: np.ndarray) -> None:
-        """Play one cycle with the checked actions ``rows`` of every agent."""
+    def _advance(self, rows: np.ndarray, observe: bool = True) -> None:
+        """Play one cycle with the checked actions ``rows`` of every agent (``observe=False``:
+        refresh the teams' views only, without building observations and masks, when
+        replaying steps nobody looks at)."""
         match = self._match
         state = match.state
         for side in self.sides:
@@ -236,7 +238,7 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         if terminated and match.end_reason == "cycle_limit":
             terminated, truncated = False, True  # the scenario's time limit: a cut, not an outcome
         self._done = (terminated, truncated)
-        self._observe()
+        self._observe(build=observe)
         if self._done[0] or self._done[1]:
             self.agents = []
             if self.render_mode == "human":
@@ -279,11 +281,13 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
             check_action(agent, action)
 
     # ------------------------------------------------------------------ what agents see
-    def _observe(self) -> None:
+    def _observe(self, build: bool = True) -> None:
         match = self._match
         state = match.state
         for side in self.sides:
             view = match.frames[side].update_view(state, state.attack_direction(side))
+            if not build:
+                continue
             block = self._blocks[side]
             self._builders[side].build(view, out=self._obs[block])
             if self._masks is not None:
