@@ -24,6 +24,7 @@ pytestmark = pytest.mark.filterwarnings("ignore:Agent's (minimum|maximum) observ
 
 def _random_steps(environment, steps: int, seed: int = 0) -> list:
     rng = np.random.default_rng(seed)
+    environment.action_space(environment.possible_agents[0]).seed(seed)  # the one space of every agent
     seen = []
     for _ in range(steps):
         if not environment.agents:
@@ -85,6 +86,7 @@ def test_a_scenario_ends_terminated_on_its_conditions_and_truncated_at_its_cycle
 def test_infos_hold_only_numbers_and_fixed_shape_arrays() -> None:
     environment = parallel_env(scenario="3-vs-1-with-keeper", controlled="both", action_mode="high_level")
     _, infos = environment.reset(seed=4)
+    environment.action_space("left_0").seed(4)  # one space for all agents: the sampled actions repeat
     shapes = {key: np.shape(value) for key, value in infos["left_0"].items()}
     assert set(shapes) >= {"play_mode", "cycle", "score", "events", "episode_goals", "episode_shots",
                            "episode_passes", "episode_possession", "action_mask"}
