@@ -136,6 +136,8 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
 
     # ------------------------------------------------------------------ episodes
     def reset(self, seed: int | None = None, options: dict | None = None) -> tuple[dict, dict]:
+        """Start an episode: (observations, infos) by agent. ``seed``: None or a non-negative
+        integer (None continues the environment's seed sequence); ``options`` is unused."""
         self.reset_arrays(seed)
         return self._observation_dict(), self.current_infos()
 
@@ -174,6 +176,8 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         self._observe()
 
     def step(self, actions: dict[str, Any]) -> tuple[dict, dict, dict, dict, dict]:
+        """One cycle from every live agent's action: (observations, rewards, terminations,
+        truncations, infos) by agent; a ValueError naming the agent for a bad action."""
         self._check_live()
         self._check_keys(actions)
         values = [actions[agent] for agent in self.possible_agents]
@@ -333,6 +337,8 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
 
     # ------------------------------------------------------------------ rendering
     def render(self) -> np.ndarray | None:
+        """The top view as an (H, W, 3) uint8 image (``rgb_array``), or None (``human``: the
+        match streams to the viewer, or its file, as it plays)."""
         if self.render_mode is None:
             import gymnasium
 
@@ -347,6 +353,7 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         return None  # "human": the match streams to the viewer (or its file) as it plays
 
     def close(self) -> None:
+        """End the episode (a human recording is flushed) and drop the match."""
         if self._match is not None and self.agents and self.render_mode == "human":
             self._match.finish()  # flush the recording
         self._match = None
