@@ -46,9 +46,9 @@ def state_size(slots: int) -> int:
 class GlobalState:
     """Builds the normalised global state of a match with sides ``sizes`` and ``slots`` slots."""
 
-    def __init__(self, sizes: tuple[int, int], slots: int, config: MatchConfig) -> None:
+    def __init__(self, sizes: tuple[int, int], slots: int, config: MatchConfig, horizon: int | None = None) -> None:
         self.sizes, self.slots = sizes, slots
-        self.scales = s = Scales.of(config)
+        self.scales = s = Scales.of(config, horizon)
         field, physics = config.field, config.physics
         player = (s.length + field.margin) / s.length
         ball = (s.length + field.margin + physics.ball_speed_max) / s.length

@@ -86,8 +86,11 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         offsets = {side: sum(sizes[s] for s in self.sides if s < side) for side in self.sides}
         self._blocks = {side: slice(offsets[side], offsets[side] + sizes[side]) for side in self.sides}
         rows = {side: slice(first[side], first[side] + sizes[side]) for side in self.sides}
+        limits = [c for c in (self.max_cycles, self.scenario.cycle_limit if self.scenario else None) if c]
+        horizon = min(limits) if limits else None
+        """The episode's last cycle when it ends before the match would: the time feature's scale."""
         self._builders = {side: ObservationBuilder(sizes[side], sizes[1 - side], goalies[side], self.config,
-                                                   kw["observation_slots"]) for side in self.sides}
+                                                   kw["observation_slots"], horizon) for side in self.sides}
         builder = self._builders[self.sides[0]]
         self.observation_slots = builder.slots
         box = spaces.Box(builder.low, builder.high, dtype=np.float32)
@@ -106,7 +109,7 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
             0, 1, (self._action_space.n,), dtype=np.int8)}) if self._mask_in_obs else box
         self.observation_spaces = {agent: self._observation_space for agent in self.possible_agents}
         self.action_spaces = {agent: self._action_space for agent in self.possible_agents}
-        self._global = GlobalState(sizes, self.observation_slots, self.config)
+        self._global = GlobalState(sizes, self.observation_slots, self.config, horizon)
         self.state_space = self._global.space
         """The global state's Box (:mod:`soccer_sim.env.global_state`)."""
         self._rewards = Rewards(opts.weights, self.sides, rows, offsets, len(self.possible_agents))

@@ -27,7 +27,7 @@ slice                      size    what
 next                       9       play mode, one-hot (:class:`~soccer_sim.state.PlayMode` order)
 next                       1       1 when the current set play is ours
 next                       2       goals for, goals against
-next                       1       match time: cycle / total cycles
+next                       1       time: cycle / the episode's horizon (see :meth:`Scales.of`)
 next                       1       half: 0 first, 1 second
 next                       k       presence mask of the team-mate slots: 1 on the pitch, 0 sent off or no player
 next                       k       presence mask of the opponent slots, the same
@@ -125,22 +125,26 @@ class Scales:
     total_cycles: float
 
     @classmethod
-    def of(cls, config: MatchConfig) -> Scales:
+    def of(cls, config: MatchConfig, horizon: int | None = None) -> Scales:
+        """The scales of ``config``; the time feature divides the cycle by ``horizon`` (the
+        episode's last cycle: a scenario's ``cycle_limit`` or the env's ``max_cycles``) when given,
+        else by the match's cycles, so a short episode's time still runs from 0 to 1."""
         physics = config.physics
         return cls(length=config.field.length / 2.0, player_speed=physics.player_speed_max,
                    ball_speed=physics.ball_speed_max, stamina=config.stamina.maximum,
                    dash=physics.dash_power_max * physics.dash_power_rate, kick=physics.kick_speed_max,
-                   total_cycles=float(config.max_cycles or config.total_cycles))
+                   total_cycles=float(horizon or config.max_cycles or config.total_cycles))
 
 
 class ObservationBuilder:
     """Writes every player's observation of a team's view into one (n, size) float32 array."""
 
-    def __init__(self, n: int, m: int, goalie: int, config: MatchConfig, slots: int | None = None) -> None:
+    def __init__(self, n: int, m: int, goalie: int, config: MatchConfig, slots: int | None = None,
+                 horizon: int | None = None) -> None:
         self.n, self.m = n, m
         self.slots = k = observation_slots(n, m, slots)
         self.size = observation_size(k, k)
-        self.scales = Scales.of(config)
+        self.scales = Scales.of(config, horizon)
         self.low, self.high = observation_bounds(k, config)
         self.out = np.zeros((n, self.size), dtype=np.float32)
         self._goalie = np.zeros(n, dtype=np.float32)

@@ -119,3 +119,27 @@ def test_step_arrays_checks_its_actions() -> None:
     assert high.action_masks().shape == (5, 24) and parallel_env().action_masks() is None
     with pytest.raises(ValueError, match="action of left_2 must be in 0..23, got 30"):
         high.step_arrays(np.array([0, 1, 30, 2, 3]))
+
+
+@pytest.mark.parametrize("options", [dict(scenario="empty-goal"), dict(max_cycles=120)])
+def test_the_time_feature_runs_over_the_episode_not_the_whole_match(options) -> None:
+    """A short episode's time feature (observation and state) goes from 0 to 1 at its last cycle."""
+    from soccer_sim.env.global_state import PER_PLAYER
+    from soccer_sim.env.spaces import MODES
+
+    env = parallel_env(controlled="left", **options)
+    obs, _ = env.reset(seed=3)
+    agent = env.agents[0]
+    time_column = 12 + 8 * env.observation_slots + MODES + 3
+    state_column = 2 * PER_PLAYER * env.observation_slots + 6
+    assert obs[agent][time_column] == pytest.approx(0.0) and env.state()[state_column] == pytest.approx(0.0)
+    horizon, steps = options.get("max_cycles") or env.scenario.cycle_limit, 0
+    idle = {a: np.zeros(env.action_space(a).shape, dtype=np.float32) for a in env.agents}
+    while env.agents:
+        obs, _, _, _, _ = env.step({a: idle[a] for a in env.agents})
+        steps += 1
+        if env.agents:
+            last_obs, last_state = obs[agent][time_column], env.state()[state_column]
+    assert steps == horizon
+    assert last_obs == pytest.approx((horizon - 1) / horizon, abs=1e-6)
+    assert last_state == pytest.approx((horizon - 1) / horizon, abs=1e-6)
