@@ -8,6 +8,7 @@ import numpy as np
 
 from agents import skills
 from agents.skills.tackling import TackleParams, Tackling, player_inertia
+from agents.teams.finishing import finishing_shot
 from soccer_sim.config import MatchConfig
 from soccer_sim.team import SideInfo, TeamCommand, TeamView
 
@@ -91,7 +92,8 @@ def on_ball_kick(ctx: skills.SkillContext, view: TeamView, kicker: int, goalie: 
     an opponent who kicks the ball too, a dribble or a clearance up the field would meet its
     mirror image and the two kicks cancel, so it kicks towards the nearer touchline instead
     (both teams doing so add up); pressed in our box, it kicks wide of the goal and behind
-    (a corner rather than a chance). ``shot_at_us``: the ball is the opponents' shot heading into our
+    (a corner rather than a chance); pressed near their goal, it shoots
+    (:mod:`agents.teams.finishing`). ``shot_at_us``: the ball is the opponents' shot heading into our
     goal; an outfield player blocks it wide (:data:`_BLOCK`)."""
     model = ctx.model
     if kicker == goalie:
@@ -99,6 +101,9 @@ def on_ball_kick(ctx: skills.SkillContext, view: TeamView, kicker: int, goalie: 
     if shot_at_us:
         return skills.parry_kick(ctx, view, kicker, _BLOCK), None, False
     decision = skills.decide_on_ball(ctx, view, kicker, decision_params, pressure=race.theirs.first_cycle)
+    finish = finishing_shot(ctx, view, kicker, decision, contested, decision_params.shot)
+    if finish is not None:  # pressed near their goal: shoot (agents.teams.finishing)
+        return finish, None, True
     # Deep in our half (as deep as the penalty area, any width), a pressed player puts the
     # ball behind or wide rather than across our goal.
     deep = float(view.ball[0]) < model.penalty_area_length - model.half_length
