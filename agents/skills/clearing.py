@@ -8,7 +8,11 @@ found (:mod:`agents.skills.lanes`); the score of a direction is
       + w_forward * cos(angle) + w_wing * |sin(angle)| - w_out * [the ball leaves the field]``
 
 so a clearance prefers a team-mate, then a long run before any opponent, upfield and (for
-the goalkeeper) towards the wings, and not out of play. The weights are :class:`ClearParams`.
+the goalkeeper) towards the wings, and not out of play. A ball the opponents' goalkeeper
+controls first is a ball given away: its time term is 0 (``ClearParams.keeper_gets_it``);
+one that leaves the field is given away where it crosses the line
+(``ClearParams.out_gives_it_away``).
+The weights are :class:`ClearParams`.
 """
 
 from __future__ import annotations
@@ -40,6 +44,17 @@ class ClearParams:
     weight_wing: float = 0.0
     """Preference for the wings (the goalkeeper's clearance raises it)."""
     weight_out: float = 0.8
+    keeper_gets_it: bool = True
+    """A direction whose ball the opponents' goalkeeper is the first to control scores no
+    time at all (however late it gets there: it holds the ball, a clearance given away) rather
+    than the long run before an opponent that would otherwise make a ball rolling towards
+    their goal look the safest: those balls ended most clearances in the opponents' half in
+    the goalkeeper's hands (about 9 catches a match between built-in teams)."""
+    out_gives_it_away: bool = True
+    """The time term of a ball that leaves the field counts only the cycles until it crosses
+    the line (then the opponents have it: a kick-in or a goal kick), not the unhindered roll
+    beyond: otherwise a ball nobody reaches before it goes out scores the most time, and
+    clearances rolled out over the opponents' goal line for goal kicks."""
 
     def __post_init__(self) -> None:
         check_params(self, non_negative=("spread_deg", "weight_ours", "weight_time", "weight_forward", "weight_wing",
@@ -104,7 +119,7 @@ class _Lanes:
         self.kicks, self.velocities = kick_for_velocity(model, view.own_pos[kicker], ball, view.ball_vel,
                                                         self.dirs * model.ball_speed_max, holder,
                                                         view.own_vel[kicker])
-        self.theirs, _ = opponent_cycles(ctx, view, ball, self.velocities)
+        self.theirs, who = opponent_cycles(ctx, view, ball, self.velocities)
         ours, _ = teammate_cycles(ctx, view, ball, self.velocities)
         ours = ours.copy()
         ours[:, kicker] = UNREACHABLE
@@ -112,8 +127,15 @@ class _Lanes:
         rest = ball + self.velocities * model.ball_travel[-1]
         out = ~model.in_field(rest) & ~((rest[:, 0] > model.half_length)
                                         & (np.abs(rest[:, 1]) < model.goal_half_width))
+        given = self.theirs
+        if params.out_gives_it_away:
+            path = ball + model.ball_travel[None, :, None] * self.velocities[:, None, :]  # (P, horizon + 1, 2)
+            inside = model.in_field(path) | ((path[..., 0] > model.half_length)
+                                             & (np.abs(path[..., 1]) < model.goal_half_width))
+            given = np.minimum(given, np.where(inside.all(axis=1), UNREACHABLE, np.argmin(inside, axis=1)))
         self.score = (params.weight_ours * (self.our_first < self.theirs)
-                      + params.weight_time * np.minimum(self.theirs, params.time_cap) / params.time_cap
+                      + params.weight_time * np.minimum(given, params.time_cap) / params.time_cap
+                      * ~(params.keeper_gets_it & (who == model.opponent_goalie_index))
                       + params.weight_forward * np.cos(angles) + params.weight_wing * np.abs(np.sin(angles))
                       - params.weight_out * out)
 

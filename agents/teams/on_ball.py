@@ -8,18 +8,20 @@ import numpy as np
 
 from agents import skills
 from agents.skills.tackling import TackleParams, Tackling, player_inertia
+from agents.teams.finishing import finishing_shot
 from soccer_sim.config import MatchConfig
 from soccer_sim.team import SideInfo, TeamCommand, TeamView
 
 _SAVE = skills.SaveParams()
-_BLOCK = skills.SaveParams(behind_depth=18.0)
+_BLOCK = skills.SaveParams(behind_depth=20.0)
+"""An outfield player's block of a shot at our goal, or its clearance within ``behind_depth``
+(20 m: the penalty area and a few metres beyond) of our goal line with an opponent about to
+win the ball: wide of the post and over our goal line (a corner rather than a chance). With
+the area's 16.5 m alone, 1.5 corners a match between built-in teams; with 20 m, 1.75."""
 _DEEP_PRESSURE = 4
 """Cycles until an opponent controls the ball within which a player of ours deep in our half
 counts as pressed (and so puts the ball behind or wide instead of dribbling or clearing across
 our goal): a defender closed down near its goal line plays safe, as real ones do."""
-"""An outfield player's block of a shot at our goal, or its clearance in our penalty area with
-an opponent about to win the ball: wide of the post and over our goal line (a corner rather
-than a chance) from anywhere in the area and just outside."""
 
 
 def able_players(view: TeamView, eligible: np.ndarray | None) -> np.ndarray | None:
@@ -91,7 +93,8 @@ def on_ball_kick(ctx: skills.SkillContext, view: TeamView, kicker: int, goalie: 
     an opponent who kicks the ball too, a dribble or a clearance up the field would meet its
     mirror image and the two kicks cancel, so it kicks towards the nearer touchline instead
     (both teams doing so add up); pressed in our box, it kicks wide of the goal and behind
-    (a corner rather than a chance). ``shot_at_us``: the ball is the opponents' shot heading into our
+    (a corner rather than a chance); pressed near their goal, it shoots
+    (:mod:`agents.teams.finishing`). ``shot_at_us``: the ball is the opponents' shot heading into our
     goal; an outfield player blocks it wide (:data:`_BLOCK`)."""
     model = ctx.model
     if kicker == goalie:
@@ -99,9 +102,12 @@ def on_ball_kick(ctx: skills.SkillContext, view: TeamView, kicker: int, goalie: 
     if shot_at_us:
         return skills.parry_kick(ctx, view, kicker, _BLOCK), None, False
     decision = skills.decide_on_ball(ctx, view, kicker, decision_params, pressure=race.theirs.first_cycle)
-    # Deep in our half (as deep as the penalty area, any width), a pressed player puts the
-    # ball behind or wide rather than across our goal.
-    deep = float(view.ball[0]) < model.penalty_area_length - model.half_length
+    finish = finishing_shot(ctx, view, kicker, decision, contested, decision_params.shot)
+    if finish is not None:  # pressed near their goal: shoot (agents.teams.finishing)
+        return finish, None, True
+    # Within the block's depth of our goal line (any width), a pressed player puts the ball
+    # behind or wide rather than across our goal.
+    deep = float(view.ball[0]) < _BLOCK.behind_depth - model.half_length
     pressed = race.theirs.first_cycle <= _DEEP_PRESSURE and deep
     if (contested or pressed) and decision.action in (skills.OnBallAction.DRIBBLE, skills.OnBallAction.CLEAR):
         kick = skills.parry_kick(ctx, view, kicker, _BLOCK) if deep else wing_kick(model, view, kicker)

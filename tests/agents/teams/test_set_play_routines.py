@@ -114,6 +114,30 @@ def test_a_kick_in_with_nobody_free_goes_down_the_line() -> None:
     assert direction[0] > 0.9 and abs(direction[1]) < 0.3  # forwards, along the touchline
 
 
+
+@pytest.mark.parametrize("x", [20.0, 30.0, 40.0])
+def test_a_kick_in_down_the_line_near_their_goal_stops_short_of_the_goal_line(x) -> None:
+    """Untouched, the ball played down the line stops ``line_stop`` short of the opponents'
+    goal line (it arrives at its target at ``cross_speed`` and would roll on over the line
+    for a goal kick), and still goes forwards along the touchline."""
+    ball = np.array([x, -HW])
+    own = attacking_line_up()
+    own[3] = ball + (-0.6, 0.5)
+    v = view(own, defending(box=False), ball, PlayMode.KICK_IN)
+    params = routines.RoutineParams()
+    kick = routines.down_the_line(CTX, v, 3, params)
+    velocity = routines.line_velocity(MODEL, ball, params)
+    assert np.allclose(kick, skills.kick_for_velocity(MODEL, v.own_pos[3], ball, v.ball_vel, velocity,
+                                                      player_vel=v.own_vel[3])[0])
+    rest = ball + velocity / (1.0 - MODEL.ball_decay)
+    assert velocity[0] > abs(velocity[1])  # forwards, along the touchline
+    assert rest[0] <= HL - params.line_stop + 1e-6
+    # Arriving at its target at cross_speed instead, it would have rolled over the goal line.
+    delta = np.array([min(x + params.line_length, HL - 3.0), -(HW - params.line_inside)]) - ball
+    distance = float(np.hypot(*delta))
+    arriving = min(distance * (1.0 - MODEL.ball_decay) + params.cross_speed, MODEL.ball_speed_max)
+    assert x + delta[0] / distance * arriving / (1.0 - MODEL.ball_decay) > HL
+
 def breakaway(attacker_gap: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     ball = np.array([-HL + 22.0, 3.0])
     own = np.array([[-30.0 + 3.0 * (i % 5), 10.0 + 2.0 * i] for i in range(11)])
