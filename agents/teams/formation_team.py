@@ -358,10 +358,10 @@ class FormationTeam:
         """Our player who goes for the ball (-1: none can reach it in time)."""
         if self._ball_row_cycle == view.cycle:  # chosen before the matching this cycle
             return self._ball_row
-        named = self.assigner.ball_player()
-        if named is not None and not self.style.stationary:
+        named, first = self.assigner.ball_player(), race.ours.first
+        keeper = first == self.goalie >= 0 and skills.comes_out(self.model, race, self.goalie)
+        if named is not None and not self.style.stationary and not keeper:  # (a ball our keeper wins is its own)
             return int(self.outfield[named])
-        first = race.ours.first
         if first < 0:
             return -1
         if self.style.stationary:
