@@ -161,6 +161,9 @@ class Shape:
         """The formation's query point and the block's shift, moved at the block's pace."""
         self.query = self._block[:2]
         """Where the formation is queried (a view of ``_block``)."""
+        self.ball_point = np.zeros(2)
+        """Where the ball will be controlled (the race winner's interception point, else the
+        ball), this cycle of play on: what the block's query point moves towards."""
         self.previous = np.zeros((len(kinds), 2))
         """Last cycle's role targets."""
         self._primed = False
@@ -220,6 +223,7 @@ class Shape:
             point = theirs.points[theirs.first]
         else:
             point = view.ball
+        self.ball_point[:] = point
         block = self._block
         advance_block(block, point, self.depth + self.attack_push if self.attacking else self.depth,
                       self._in_play, self._knobs)
