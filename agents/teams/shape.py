@@ -85,7 +85,7 @@ class ShapeParams:
     defend_ball_gap: float = 2.0
     """When defending, the back line stays at least this far goal-side of the ball (m)."""
     support_players: int = 2
-    """Team-mates who move to open spots around our ball carrier."""
+    """Roles whose targets move to open spots around our ball carrier."""
     support_radii: tuple[float, ...] = (9.0, 13.0)
     """Distances of the support spots from the carrier (m): a short pass, 8 to 15 m."""
     support_directions: int = 12
@@ -108,10 +108,10 @@ class ShapeParams:
     """Score of a spot straight ahead of the carrier over one level with it (m of lane gap):
     support that helps the ball forward first."""
     travel_weight: float = 0.25
-    """Score lost per metre the supporter has to run to the spot, so that it takes a near one
-    and keeps it from cycle to cycle."""
+    """Score lost per metre from the supporting role's own target to the spot, so that a role
+    takes a spot near its place and keeps it from cycle to cycle."""
     crowd_distance: float = 7.0
-    """A spot this close (m) to another team-mate's goal or to a spot already taken is not used."""
+    """A spot this close (m) to another role's target or to a spot already taken is not used."""
     follow_up_players: int = 2
     """Forwards who run to the rebound area after our shot."""
     follow_up_cycles: int = 30
