@@ -23,8 +23,9 @@ class RoleContext:
     refreshes it every cycle, so an assigner must copy what it keeps."""
 
     ball: np.ndarray
-    """(2,) the ball position the formation was queried at (where the ball will be controlled,
-    possibly predicted), metres."""
+    """(2,) where the ball will be controlled (possibly predicted: the built-in team gives its
+    ball race's interception point in play on, not the formation's query point, which follows
+    the ball at a running pace), metres."""
     own_goal: np.ndarray
     """(2,) centre of our goal, (-half_length, 0)."""
     opp_goal: np.ndarray

@@ -11,7 +11,9 @@ bids are "higher is better", the same thing negated):
   estimate, ``context.ball_reach``, e.g. from its interception race), ``theta`` (radians, 0 to
   pi) the angle between the player-to-ball and ball-to-opponents'-goal directions: near the
   ball and lined up behind it to kick towards the goal bids best. Beyond ``ball_cap`` metres
-  only the alignment counts;
+  only the alignment counts. A player whose ``ball_reach`` is inf (it cannot intercept, or may
+  not play the ball) bids ``ball_cap + angle_weight * pi`` more than that with its straight
+  distance: after every player who can, so the cap does not make "cannot" as good as "far";
 * a **formation role** r (the paper's supporters, generalised to the formation's roles):
   ``|p - t_r|``, the distance to the role's anchor (its formation target ``t_r``), plus a
   role term: for a *defensive* role (target behind the ball, ``t_x < b_x``)

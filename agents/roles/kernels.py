@@ -116,10 +116,13 @@ def bid_costs(players: np.ndarray, targets: np.ndarray, ball: np.ndarray, goal: 
         if d > 1e-9 and goal_dist > 1e-9:
             theta = math.acos(min(max((bx * gx + by * gy) / (d * goal_dist), -1.0), 1.0))
         near = d
+        if scale.shape[0]:
+            near = d * scale[i]
+        if reach.shape[0] and math.isinf(reach[i]):  # cannot intercept: after every player who can
+            costs[i, k] = cap + angle_weight * math.pi + min(near, cap) + angle_weight * theta
+            continue
         if reach.shape[0]:
             near = reach[i]
-        elif scale.shape[0]:
-            near = d * scale[i]
         costs[i, k] = min(near, cap) + angle_weight * theta
     return costs
 

@@ -8,7 +8,8 @@ Every cycle (team frame: we attack +x, our goal at x = -half_length):
    goal included) use the set-play formations; in play on we *attack* or *defend* as the race
    says, with hysteresis, and query the formation where the ball will be controlled (the
    race's interception point); a style may shift the outfield block. :mod:`agents.teams.shape`
-   moves all this at a running pace, keeps a rest defence and sends support and follow-ups.
+   moves all this at a running pace, keeps a rest defence, makes support spots role targets
+   and sends follow-ups.
 3. **Roles.** The role assigner (``mmdr``, ``mmd+msd2``, ``static``, ``greedy``, ...; see
    :mod:`agents.roles`) maps the ten outfield players to the ten outfield role targets; it
    may also steer the players (potential-field bidding) and name the ball player. This is
@@ -217,6 +218,9 @@ class FormationTeam:
             self.role_behaviours.adjust(targets, situation == Situation.ATTACK, ball_ref, view.opp_pos)
         if not style.stationary:
             self.shape.settle(view, targets, mode == _PLAY_ON)
+            if mode == _PLAY_ON:  # support spots are role targets: the assigner picks who goes
+                self.shape.support(view, race, self._ball_player(view, race), self.outfield, self._match_roles,
+                                   self.role_of_player, targets)
         self._assign_roles(view, targets, ball_ref, race)
         urgent = np.zeros(self.n, dtype=bool)
         if mode == _PLAY_ON:
@@ -271,7 +275,7 @@ class FormationTeam:
             goals = self.kick_off_spots[self._match_roles]
         else:
             context, assigner, play_on = self._context, self.assigner, view.play_mode == _PLAY_ON
-            context.ball = ball_ref
+            context.ball = self.shape.ball_point if play_on else ball_ref  # (not the block's paced query point)
             context.ball_reach = ball_reach(race, self.outfield, self.model) if assigner.uses_ball_reach and play_on \
                 else None
             context.opponents = view.opp_pos
@@ -311,8 +315,8 @@ class FormationTeam:
                 return  # our goal kick is on its way out: with proper goal kicks nobody may play it yet
             set_plays.goal_kick_leaving = False
         ball_player = self._ball_player(view, race)
-        if not self.style.stationary:
-            self._keep_onside(view, ball_player)
+        if not self.style.stationary:  # goals beyond the offside line go back behind it by offside_margin
+            pull_onside(self.goals, self.outfield, view.opp_pos, float(view.ball[0]), self.style.offside_margin)
         if ball_player >= 0:
             goals[ball_player] = race.ours.points[ball_player]
             urgent[ball_player] = True
@@ -323,8 +327,8 @@ class FormationTeam:
                     goals[row] = race.ours.points[row] if race.ours.cycles[row] < skills.UNREACHABLE else view.ball
                     urgent[row] = True
         if not self.style.stationary and self.role_of_player is not None:
-            self.shape.support(view, race, ball_player, self.outfield, self._match_roles, self.role_of_player,
-                               goals, urgent)
+            self.shape.follow_up(view, race, ball_player, self.outfield, self._match_roles, self.role_of_player,
+                                 goals, urgent)
         # An opponent on the ball ends our pass (for the back-pass rule) and contests it.
         contested = race.theirs.first_cycle == 0
         if contested:
@@ -354,10 +358,10 @@ class FormationTeam:
         """Our player who goes for the ball (-1: none can reach it in time)."""
         if self._ball_row_cycle == view.cycle:  # chosen before the matching this cycle
             return self._ball_row
-        named = self.assigner.ball_player()
-        if named is not None and not self.style.stationary:
+        named, first = self.assigner.ball_player(), race.ours.first
+        keeper = first == self.goalie >= 0 and skills.comes_out(self.model, race, self.goalie)
+        if named is not None and not self.style.stationary and not keeper:  # (a ball our keeper wins is its own)
             return int(self.outfield[named])
-        first = race.ours.first
         if first < 0:
             return -1
         if self.style.stationary:
@@ -371,11 +375,6 @@ class FormationTeam:
             best = int(np.argmin(cycles))
             return int(self.outfield[best]) if cycles[best] < skills.UNREACHABLE else -1
         return int(first)
-
-    def _keep_onside(self, view: TeamView, ball_player: int) -> None:
-        """Outfield goals beyond the offside line (the second-last opponent or the ball, in
-        their half) are pulled back behind it by ``offside_margin``."""
-        pull_onside(self.goals, self.outfield, view.opp_pos, float(view.ball[0]), self.style.offside_margin)
 
     # ------------------------------------------------------------------ reporting
     def statistics(self) -> dict[str, float]:

@@ -18,10 +18,12 @@ Team frame: we attack +x, our goal at x = -half_length; units m, m/cycle, cycles
   opponents' most advanced player, but no more than ``rest_max_gap`` behind the ball; when
   defending, it stays ``defend_ball_gap`` goal-side of the ball.
 * **Support.** When attacking and an opponent can get to the ball within
-  ``support_pressure`` cycles, the ``support_players`` team-mates nearest our ball carrier
-  (not the forwards, who keep their places up front, nor the back line unless the ball is in
-  our third) go to open spots ``support_radii`` from it, level with or ahead of it or a little
-  behind, where the pass lane is far from the opponents, onside and not on a team-mate's spot.
+  ``support_pressure`` cycles, the targets of the ``support_players`` roles nearest our ball
+  carrier (not the forwards, who keep their places up front, nor the back line unless the ball
+  is in our third, nor the carrier's own role) move to open spots ``support_radii`` from it,
+  level with or ahead of it or a little behind, where the pass lane is far from the opponents,
+  onside and not on another role's target. This happens before the roles are assigned: the
+  role assigner decides who runs to a support spot, as it decides who goes anywhere else.
 * **Follow-up.** For ``follow_up_cycles`` after our shot (until an opponent has the ball),
   the ``follow_up_players`` forwards nearest the goal run to the rebound area in front of it.
 """
@@ -83,7 +85,7 @@ class ShapeParams:
     defend_ball_gap: float = 2.0
     """When defending, the back line stays at least this far goal-side of the ball (m)."""
     support_players: int = 2
-    """Team-mates who move to open spots around our ball carrier."""
+    """Roles whose targets move to open spots around our ball carrier."""
     support_radii: tuple[float, ...] = (9.0, 13.0)
     """Distances of the support spots from the carrier (m): a short pass, 8 to 15 m."""
     support_directions: int = 12
@@ -106,10 +108,10 @@ class ShapeParams:
     """Score of a spot straight ahead of the carrier over one level with it (m of lane gap):
     support that helps the ball forward first."""
     travel_weight: float = 0.25
-    """Score lost per metre the supporter has to run to the spot, so that it takes a near one
-    and keeps it from cycle to cycle."""
+    """Score lost per metre from the supporting role's own target to the spot, so that a role
+    takes a spot near its place and keeps it from cycle to cycle."""
     crowd_distance: float = 7.0
-    """A spot this close (m) to another team-mate's goal or to a spot already taken is not used."""
+    """A spot this close (m) to another role's target or to a spot already taken is not used."""
     follow_up_players: int = 2
     """Forwards who run to the rebound area after our shot."""
     follow_up_cycles: int = 30
@@ -159,6 +161,9 @@ class Shape:
         """The formation's query point and the block's shift, moved at the block's pace."""
         self.query = self._block[:2]
         """Where the formation is queried (a view of ``_block``)."""
+        self.ball_point = np.zeros(2)
+        """Where the ball will be controlled (the race winner's interception point, else the
+        ball), this cycle of play on: what the block's query point moves towards."""
         self.previous = np.zeros((len(kinds), 2))
         """Last cycle's role targets."""
         self._primed = False
@@ -218,6 +223,7 @@ class Shape:
             point = theirs.points[theirs.first]
         else:
             point = view.ball
+        self.ball_point[:] = point
         block = self._block
         advance_block(block, point, self.depth + self.attack_push if self.attacking else self.depth,
                       self._in_play, self._knobs)
@@ -244,21 +250,21 @@ class Shape:
         self.shot_from = np.array(ball, dtype=np.float64)
 
     def support(self, view: TeamView, race: skills.BallRace, ball_player: int, outfield: np.ndarray,
-                match_roles: np.ndarray, role_of_player: np.ndarray, goals: np.ndarray, urgent: np.ndarray) -> None:
-        """Support and follow-up goals for our players (in place; team frame): ``outfield[i]``
-        plays the formation role ``match_roles[role_of_player[i]]``."""
+                match_roles: np.ndarray, role_of_player: np.ndarray | None, targets: np.ndarray) -> None:
+        """Support as role targets (in place, before the roles are assigned): the targets of the
+        ``support_players`` eligible roles nearest our ball carrier move to open spots around
+        it, so the role assigner decides who runs there. ``outfield[i]`` held the formation role
+        ``match_roles[role_of_player[i]]`` at the last assignment (None: no assignment yet, no
+        support); ``ball_player`` is the row sent at the ball (-1: none)."""
         p = self.params
-        followers = _NONE
-        if view.cycle - self.shot_cycle <= p.follow_up_cycles:
-            followers = self._follow_up(view, race, ball_player, outfield, match_roles[role_of_player], goals,
-                                        urgent)
         # (the cheap tests first: this runs every cycle of play)
-        if not self.attacking or ball_player < 0 or race.theirs.first_cycle > p.support_pressure:
+        if (not self.attacking or ball_player < 0 or role_of_player is None
+                or race.theirs.first_cycle > p.support_pressure):
             self._held = 0
             return
-        if self._held > 0 and ball_player == self._carrier and not followers.size:
+        if self._held > 0 and ball_player == self._carrier:
             self._held -= 1  # the same carrier a cycle later: the same spots
-            goals[self._chosen] = self._chosen_spots
+            targets[self._chosen] = self._chosen_spots
             return
         if race.ours.cycles[ball_player] > p.support_horizon:
             self._held = 0
@@ -266,22 +272,27 @@ class Shape:
         self._held, self._carrier = p.support_every - 1, ball_player
         self._chosen, self._chosen_spots = _NONE, _NO_SPOTS
         carrier = race.ours.points[ball_player]
-        roles = match_roles[role_of_player]
-        # The forwards keep their places up front, and the back line is the rest defence
-        # (unless the ball is in our third).
-        eligible = (outfield != ball_player) & ~self.is_forward[roles]
+        # The forwards keep their places up front, the back line is the rest defence (unless
+        # the ball is in our third), and the carrier's own role is the carrier's.
+        eligible = ~self.is_forward[match_roles]
         if carrier[0] > -self.half_length / 3.0:
-            eligible &= ~self.is_back[roles]
-        if followers.size:
-            eligible &= ~np.isin(outfield, followers)
-        candidates = outfield[eligible]
+            eligible &= ~self.is_back[match_roles]
+        eligible[role_of_player[outfield == ball_player]] = False
+        candidates = match_roles[eligible]
         if not candidates.size or p.support_players == 0:
             return
         x_max = offside_line(view.opp_pos, float(view.ball[0])) - 1.0
-        count = support_spots(carrier, view.own_pos, goals, candidates, view.opp_pos, self.offsets,
+        count = support_spots(carrier, targets, targets, candidates, view.opp_pos, self.offsets,
                               p.support_players, x_max, self._support_knobs, self._rows, self._spots)
         self._chosen, self._chosen_spots = self._rows[:count].copy(), self._spots[:count].copy()
-        goals[self._chosen] = self._chosen_spots
+        targets[self._chosen] = self._chosen_spots
+
+    def follow_up(self, view: TeamView, race: skills.BallRace, ball_player: int, outfield: np.ndarray,
+                  match_roles: np.ndarray, role_of_player: np.ndarray, goals: np.ndarray, urgent: np.ndarray) -> None:
+        """Follow-up goals after our shot (in place; team frame): ``outfield[i]`` plays the
+        formation role ``match_roles[role_of_player[i]]``."""
+        if view.cycle - self.shot_cycle <= self.params.follow_up_cycles:
+            self._follow_up(view, race, ball_player, outfield, match_roles[role_of_player], goals, urgent)
 
     def _follow_up(self, view: TeamView, race: skills.BallRace, ball_player: int, outfield: np.ndarray,
                    player_roles: np.ndarray, goals: np.ndarray, urgent: np.ndarray) -> np.ndarray:

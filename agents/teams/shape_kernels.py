@@ -97,15 +97,17 @@ def support_spots(carrier: np.ndarray, own_pos: np.ndarray, goals: np.ndarray, c
                   out_rows: np.ndarray, out_spots: np.ndarray) -> int:  # pragma: no cover - compiled
     """Open spots around our ball carrier and who goes there.
 
-    ``carrier`` (2,): where our carrier has (or gets) the ball; ``candidates``: rows of
-    ``own_pos`` that may support (the ``count`` nearest the carrier do); ``offsets`` (S, 2):
+    ``carrier`` (2,): where our carrier has (or gets) the ball; ``own_pos``: where the
+    possible supporters are (the team passes its role targets: support spots become role
+    targets); ``candidates``: rows of ``own_pos`` that may support (the ``count`` nearest the
+    carrier do); ``offsets`` (S, 2):
     the spots relative to the carrier; ``knobs``: (x_limit, y_limit, lane_cap, space_cap,
     forward_weight, travel_weight, crowd_distance). A spot counts only inside ``|x| <= x_limit``,
     ``|y| <= y_limit`` and at or behind ``x_max`` (onside). Its score is the opponents' gap
     to the pass lane (capped at ``lane_cap``) plus half their gap to the spot (capped at
     ``space_cap``) plus ``forward_weight`` times its forward share of the offset, less
     ``travel_weight`` per metre the supporter has to run, less everything when it is within
-    ``crowd_distance`` of another team-mate's goal (``goals``, the candidates' own excluded)
+    ``crowd_distance`` of another row's point in ``goals`` (the candidates' own excluded)
     or of a spot already taken. Writes the supporters to ``out_rows`` and their spots to
     ``out_spots``; returns how many."""
     x_limit, y_limit, lane_cap, space_cap = knobs[0], knobs[1], knobs[2], knobs[3]

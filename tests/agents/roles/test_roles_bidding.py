@@ -201,7 +201,8 @@ def test_the_teams_ball_reach_replaces_the_straight_distance_in_the_ball_bid() -
     assert assigner.bids(players, targets, ctx)[:, 3].tolist() == pytest.approx([2.0, 15.0, 20.0])
     # The team knows player 1 is running onto the ball's path: it is 1 m away in effect.
     reach = replace(ctx, ball_reach=np.array([4.0, 1.0, np.inf]))
-    assert assigner.bids(players, targets, reach)[:, 3].tolist() == pytest.approx([4.0, 1.0, 20.0])
+    # (player 2 cannot intercept: it bids after everybody who can, by its straight distance, capped)
+    assert assigner.bids(players, targets, reach)[:, 3].tolist() == pytest.approx([4.0, 1.0, 40.0 + 3.0 * math.pi])
     assigner.assign(players, targets, offensive_order(targets), None, reach)
     assert assigner.ball_player() == 1
     for bad, message in ((np.array([1.0, 2.0]), r"float64 \(3,\) array"), (np.array([1.0, np.nan, 2.0]), "NaN")):
@@ -228,3 +229,24 @@ def test_the_compiled_bidding_reads_each_parameter_by_its_name() -> None:
                           context((20.0, 0.0)))
     assert costs[0, 0] == pytest.approx(10.0 + 10.0 * 0.75) and costs[1, 0] == pytest.approx(40.0)
     assert costs[0, 2] == pytest.approx(20.0) and costs[1, 2] == pytest.approx(21.0)
+
+
+def test_a_player_who_cannot_intercept_never_outbids_one_who_can() -> None:
+    """The cap makes every reach beyond ``ball_cap`` alike; "cannot intercept" (inf: the ball
+    leaves the field first, or the player may not play it) must not count as merely far."""
+    from dataclasses import replace
+
+    ball = (10.0, 0.0)
+    players = np.array([[12.0, 0.0], [9.0, 0.0], [-30.0, 0.0]])  # 0 is beyond the ball (misaligned), 1 lined up
+    targets = np.array([[-30.0, 0.0], [0.0, 0.0], [12.0, 0.0]])
+    ctx = replace(context(ball), ball_reach=np.array([30.0, np.inf, 60.0]))
+    assigner = ready(3)
+    costs = assigner.bids(players, targets, ctx)[:, 3]
+    assert costs[1] > max(costs[0], costs[2])  # 1 m away but unable (e.g. offside): the worst bid
+    assert costs[0] == pytest.approx(20.0 + 3.0 * math.pi) and costs[2] == pytest.approx(20.0)
+    assigner.assign(players, targets, offensive_order(targets), None, ctx)
+    assert assigner.ball_player() == 2
+    # Nobody can intercept: the straight distance (capped) and the alignment decide among them.
+    nobody = replace(ctx, ball_reach=np.full(3, np.inf))
+    costs = assigner.bids(players, targets, nobody)[:, 3]
+    assert np.argmin(costs) == 1 and costs[0] - costs[1] == pytest.approx(1.0 + 3.0 * math.pi)

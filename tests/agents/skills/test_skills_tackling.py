@@ -158,7 +158,8 @@ def test_the_team_tackles_only_when_it_cannot_kick_the_ball_itself() -> None:
 
 
 def test_built_in_teams_tackle_in_a_short_match() -> None:
-    result = run_match("mmdr", "counter-442", seed=2, config=MatchConfig(max_cycles=1000))
+    # (2000 cycles: about a tackle every 500 cycles per match, so 1000 can hold none)
+    result = run_match("mmdr", "counter-442", seed=2, config=MatchConfig(max_cycles=2000))
     tackles = result.events.of_kind(EventKind.TACKLE)
     assert tackles and any(detail % 2 == 1 for *_, detail in tackles)
     assert sum(s.tackles for s in result.statistics) == len(tackles)

@@ -104,15 +104,16 @@ def test_role_targets_never_jump_when_possession_changes_and_then_settle() -> No
     theirs = opponents(-30.0)
     theirs[5] = (-20.0, 30.0)  # their player on the ball deep in our half: we defend
     team.act(view(own, theirs, (-20.0, 30.0), cycle=10))
-    before = team.targets.copy()
-    # Now our player 9 has the ball at their box: attack. Targets move, but at a running pace.
+    before = team.shape.previous.copy()
+    # Now our player 9 has the ball at their box: attack. Targets move, but at a running pace
+    # (the shape's paced targets: support spots are put on top of them, see the support tests).
     own[9] = (30.0, -10.0)
     theirs = opponents(20.0)
     steps = []
     for cycle in range(11, 160):
         team.act(view(own, theirs, (30.5, -10.0), cycle=cycle))
-        steps.append(np.hypot(*(team.targets[1:] - before[1:]).T).max())
-        before = team.targets.copy()
+        steps.append(np.hypot(*(team.shape.previous[1:] - before[1:]).T).max())
+        before = team.shape.previous.copy()
     assert team.shape.attacking
     assert max(steps) <= PARAMS.drop_speed + 1e-9 and steps[0] > 0.3
     assert steps[-1] < 1e-9  # settled: the shape's own targets, no longer limited
@@ -157,25 +158,38 @@ def test_the_back_line_stays_goal_side_of_the_ball_when_we_defend() -> None:
 
 
 # ---------------------------------------------------------------------------- support
-def test_two_team_mates_move_to_open_spots_at_passing_distance_from_the_carrier() -> None:
-    team = ready()
-    own = np.array([[-50.0, 0.0], [-20.0, -20.0], [-20.0, 20.0], [-22.0, -7.0], [-22.0, 7.0],
-                    [-4.0, 2.0], [10.0, -25.0], [2.0, -9.0], [0.0, 0.0], [3.0, 10.0], [12.0, 25.0]])
-    carrier = own[8]
+NO_SUPPORT = TeamStyle(shape=ShapeParams(support_players=0))
+SUPPORT_OWN = np.array([[-50.0, 0.0], [-20.0, -20.0], [-20.0, 20.0], [-22.0, -7.0], [-22.0, 7.0],
+                        [-4.0, 2.0], [10.0, -25.0], [2.0, -9.0], [0.0, 0.0], [3.0, 10.0], [12.0, 25.0]])
+
+
+def support_roles(assigner: str, own, theirs, ball, carrier_row: int = 8):
+    """The team after one cycle of play, and the roles whose targets support moved (compared with
+    the same team without support), for a carrier ``own[carrier_row]`` on the ``ball``."""
+    teams = []
+    for style in (None, NO_SUPPORT):
+        team = ready(assigner, style)
+        team.act(view(own, theirs, ball, cycle=49))  # (a first cycle: support needs the roles held)
+        team.act(view(own, theirs, ball, cycle=50))
+        teams.append(team)
+    team, plain = teams
+    moved = [r for r in team._match_roles if not np.allclose(team.targets[r], plain.targets[r])]
+    return team, plain, moved
+
+
+def test_support_moves_two_midfield_role_targets_to_open_spots_at_passing_distance() -> None:
+    carrier = SUPPORT_OWN[8]
     theirs = opponents(30.0)  # (a deep back line: nobody of ours is pulled back onside)
     theirs[1:4] = [(5.0, -4.0), (6.0, 4.0), (3.0, 8.0)]  # lanes ahead and to the left are covered
-    team.act(view(own, theirs, carrier + (0.5, 0.0), cycle=50))
+    ball = carrier + (0.5, 0.0)
+    team, plain, moved = support_roles("static", SUPPORT_OWN, theirs, ball)
     assert team.shape.attacking
-    roles = team.role_of_player
-    planned = team.targets[team._out_roles][roles]
-    moved = [row for i, row in enumerate(team.outfield) if row != 8 and not np.allclose(team.goals[row], planned[i])]
     assert len(moved) == PARAMS.support_players
     backs = {r for r, k in enumerate(KINDS) if k == "defender"}
     forwards = {r for r, k in enumerate(KINDS) if k == "forward"}
     assert not (backs | forwards) & set(moved)  # the rest defence stays back, the forwards up front
-    ball = carrier + (0.5, 0.0)
-    for row in moved:
-        spot = team.goals[row]
+    for role in moved:
+        spot = team.targets[role]
         assert 8.0 <= np.hypot(*(spot - ball)) <= 15.0
         assert spot[0] - ball[0] >= -0.5 * np.hypot(*(spot - ball)) - 1e-9  # not far behind the ball
         # the pass lane to the spot is open: no opponent within 2 m of it
@@ -183,20 +197,45 @@ def test_two_team_mates_move_to_open_spots_at_passing_distance_from_the_carrier(
         t = np.clip(((theirs - ball) @ ab) / (ab @ ab), 0.0, 1.0)
         gap = np.hypot(*(ball + t[:, None] * ab - theirs).T)
         assert gap.min() >= 2.0
-    # the supporters are the midfielders nearest the carrier
-    gaps = {row: np.hypot(*(own[row] - carrier)) for row in team.outfield
-            if row != 8 and row not in backs | forwards}
+    # the support roles are the midfield roles whose own targets lie nearest the carrier (whoever plays them)
+    carrier_role = team._match_roles[team.role_of_player[list(team.outfield).index(8)]]
+    gaps = {r: np.hypot(*(plain.targets[r] - carrier)) for r in team._match_roles
+            if r not in backs | forwards and r != carrier_role}
     assert sorted(moved) == sorted(sorted(gaps, key=gaps.get)[:2])
-    spots = team.goals[moved]
-    assert np.hypot(*(spots[0] - spots[1])) >= PARAMS.crowd_distance
+    assert np.hypot(*(team.targets[moved[0]] - team.targets[moved[1]])) >= PARAMS.crowd_distance
+
+
+@pytest.mark.parametrize("assigner", ["static", "mmdr", "greedy"])
+def test_the_role_assigner_decides_who_runs_to_a_support_spot(assigner: str) -> None:
+    theirs = opponents(30.0)
+    theirs[1] = (5.0, -4.0)  # pressure on the carrier
+    own = SUPPORT_OWN.copy()
+    own[5] = (-30.0, 0.0)  # the holding midfielder far behind: static still sends it if its role supports
+    team, _, moved = support_roles(assigner, own, theirs, own[8] + (0.5, 0.0))
+    assert moved
+    out_targets = team.targets[team._match_roles]
+    for role in moved:
+        players = [row for i, row in enumerate(team.outfield) if team._match_roles[team.role_of_player[i]] == role]
+        assert len(players) == 1 and np.allclose(team.goals[players[0]], team.targets[role])
+        if assigner == "static":
+            assert players[0] == role  # the role's own player, however far
+    assert np.allclose(out_targets[team.role_of_player][team.outfield != 8], team.goals[team.outfield[team.outfield != 8]])
+
+
+def test_the_carriers_own_role_never_supports() -> None:
+    theirs = opponents(30.0)
+    theirs[1] = (5.0, -4.0)
+    own = SUPPORT_OWN.copy()
+    own[[7, 8]] = own[[8, 7]]  # a central midfielder (role 7) carries the ball at the centre spot
+    team, _, moved = support_roles("static", own, theirs, own[7] + (0.5, 0.0), carrier_row=7)
+    assert moved and 7 not in moved
 
 
 def test_nobody_supports_when_we_defend() -> None:
-    team = ready()
     own = np.array([[-50.0, 0.0], *[[-20.0 + 3.0 * i, -15.0 + 3.0 * i] for i in range(10)]])
     theirs = opponents(-10.0)
-    team.act(view(own, theirs, theirs[2] + (-0.5, 0.0), cycle=50))
-    assert not team.shape.attacking
+    team, _, moved = support_roles("static", own, theirs, theirs[2] + (-0.5, 0.0))
+    assert not team.shape.attacking and moved == []
     planned = team.targets[team._out_roles][team.role_of_player]
     off_target = [row for i, row in enumerate(team.outfield) if not np.allclose(team.goals[row], planned[i])]
     assert len(off_target) == 1  # only the player sent at the ball
@@ -254,12 +293,6 @@ def test_shape_params_are_checked() -> None:
 
 
 def test_a_free_carrier_runs_with_the_ball_and_nobody_leaves_the_shape() -> None:
-    team = ready()
-    own = np.array([[-50.0, 0.0], [-20.0, -20.0], [-20.0, 20.0], [-22.0, -7.0], [-22.0, 7.0],
-                    [-4.0, 2.0], [10.0, -25.0], [2.0, -9.0], [0.0, 0.0], [3.0, 10.0], [12.0, 25.0]])
     theirs = opponents(30.0)  # nobody within 25 m of our carrier
-    team.act(view(own, theirs, own[8] + (0.5, 0.0), cycle=50))
-    assert team.shape.attacking
-    planned = team.targets[team._out_roles][team.role_of_player]
-    moved = [row for i, row in enumerate(team.outfield) if row != 8 and not np.allclose(team.goals[row], planned[i])]
-    assert moved == []
+    team, _, moved = support_roles("static", SUPPORT_OWN, theirs, SUPPORT_OWN[8] + (0.5, 0.0))
+    assert team.shape.attacking and moved == []

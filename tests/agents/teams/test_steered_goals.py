@@ -54,3 +54,52 @@ def test_bidding_is_told_each_players_reach_from_the_race_and_only_bidding() -> 
     np.testing.assert_allclose(reach, [4 * model.top_speed, np.inf, 10 * model.top_speed])
     assert make_assigner("bidding").uses_ball_reach
     assert not any(make_assigner(name).uses_ball_reach for name in ("mmdr", "mmd+msd2", "static", "greedy", "random"))
+
+
+def test_a_ball_the_bidding_teams_goalkeeper_wins_in_its_area_is_the_goalkeepers() -> None:
+    """Bidding names an outfield ball player, but a ball our goalkeeper reaches first in our
+    penalty area is its own, as under every other assigner (it used to stay on its line)."""
+    from soccer_sim import MatchConfig, PlayMode, SideInfo
+    from soccer_sim.registry import resolve_team
+    from soccer_sim.team import TeamView
+
+    config = MatchConfig()
+    keepers = {}
+    for name in ("bidding", "mmdr"):
+        team, _ = resolve_team(name)
+        team.reset(SideInfo(0, "us", "them", 11, 0, 11, 0), config, np.random.default_rng(0))
+        own = np.array([[-51.0, 0.0], *[[-20.0, -30.0 + 6.0 * i] for i in range(10)]])
+        opp = np.array([[50.0, 0.0], *[[10.0, -30.0 + 6.0 * i] for i in range(10)]])
+        for cycle in (100, 101):  # (bidding names its ball player from the cycle before)
+            view = TeamView(own_pos=own, own_vel=np.zeros_like(own), opp_pos=opp, opp_vel=np.zeros_like(opp),
+                            ball=np.array([-44.0, 3.0]), ball_vel=np.array([-0.3, 0.0]),
+                            stamina=np.full(11, config.stamina.maximum), play_mode=PlayMode.PLAY_ON, mode_ours=False,
+                            cycle=cycle)
+            team.act(view)
+        keepers[name] = team.goals[0].copy()
+        assert team.assigner.ball_player() is None or name == "bidding"
+    # The keeper runs onto the ball's path (a few metres out), not to its guard point on the line.
+    for goal in keepers.values():
+        assert goal[0] > -47.0 and abs(goal[1] - 3.0) < 1.5
+    np.testing.assert_allclose(keepers["bidding"], keepers["mmdr"])
+
+
+def test_the_assigner_is_told_where_the_ball_will_be_controlled_not_the_blocks_lagging_query_point() -> None:
+    """The formation's query point follows the ball at a running pace; bidding's ball role
+    (alignment) and its supporters' field (shot lines) are about the ball itself."""
+    from soccer_sim import MatchConfig, PlayMode, SideInfo
+    from soccer_sim.registry import resolve_team
+    from soccer_sim.team import TeamView
+
+    config = MatchConfig()
+    team, _ = resolve_team("bidding")
+    team.reset(SideInfo(0, "us", "them", 11, 0, 11, 0), config, np.random.default_rng(0))
+    own = np.array([[-51.0, 0.0], *[[-10.0 + 2.0 * (i % 5), -20.0 + 4.0 * i] for i in range(10)]])
+    opp = np.array([[50.0, 0.0], *[[30.0, -30.0 + 6.0 * i] for i in range(10)]])
+    for cycle, ball in ((100, (-5.0, 0.0)), (101, (20.0, 2.0))):  # a long ball: 25 m in a cycle
+        view = TeamView(own_pos=own, own_vel=np.zeros_like(own), opp_pos=opp, opp_vel=np.zeros_like(opp),
+                        ball=np.array(ball), ball_vel=np.zeros(2), stamina=np.full(11, config.stamina.maximum),
+                        play_mode=PlayMode.PLAY_ON, mode_ours=False, cycle=cycle)
+        team.act(view)
+    assert np.hypot(*(team.shape.query - (20.0, 2.0))) > 20.0  # the block is still on its way
+    assert np.hypot(*(team._context.ball - (20.0, 2.0))) < 1.0  # the ball stands still: controlled where it is
