@@ -1,8 +1,9 @@
 """High-level actions for the PettingZoo environment, built on the built-in team's skills.
 
 Like Google Research Football's and Half Field Offense's action sets, each player picks one
-of a few meaningful actions per cycle instead of raw dash and kick vectors. For a team of
-``n`` the actions (a ``Discrete(13 + n)`` space) are:
+of a few meaningful actions per cycle instead of raw dash and kick vectors. For ``k`` team-mate
+slots (the environment's observation slots: 11 by default, whatever the team's size ``n``) the
+actions (a ``Discrete(13 + k)`` space) are:
 
 =============  ===============================================================================
 0 - 7          run at full speed towards +x, then counter-clockwise every 45 degrees (team frame)
@@ -11,10 +12,12 @@ of a few meaningful actions per cycle instead of raw dash and kick vectors. For 
 10             shoot: the best shot (``skills.best_shot``), else a hard kick at the goal centre
 11             dribble (``skills.dribble``)
 12             idle: no dash, no kick
-13 + k        pass to team-mate k (arriving at about 0.5 m/cycle; to myself: keep the ball)
+13 + k        pass to team-mate k (arriving at about 0.5 m/cycle; to myself: keep the ball; to an
+              empty slot or a team-mate sent off: no kick)
 =============  ===============================================================================
 
-Kicks happen only when the ball is kickable; the goalkeeper asks to catch when it chooses
+:meth:`HighLevelActions.action_mask` says which of them a player can take now. Kicks happen
+only when the ball is kickable; the goalkeeper asks to catch when it chooses
 "intercept" and the ball is within its reach. The environment finds this class through the
 entry point group ``soccer_sim.action_modes`` (name ``high_level``), so ``soccer_sim`` never
 imports ``agents``.
@@ -27,12 +30,13 @@ import numpy as np
 import formations
 from agents import skills
 from formations import Situation
-from soccer_sim import MatchConfig, SideInfo, TeamCommand, TeamView
+from soccer_sim import MatchConfig, PlayMode, SideInfo, TeamCommand, TeamView
 
 MOVES = 8
 GO_TO_TARGET, INTERCEPT, SHOOT, DRIBBLE, IDLE, PASS = 8, 9, 10, 11, 12, 13
 _ANGLES = np.arange(MOVES) * (np.pi / 4)
 DIRECTIONS = np.column_stack([np.cos(_ANGLES), np.sin(_ANGLES)])
+_NO_KICK_MODES = (PlayMode.AFTER_GOAL, PlayMode.TIME_OVER)
 PASS_ARRIVAL_SPEED = 0.5
 """m/cycle: how fast a pass should reach its receiver."""
 
@@ -62,6 +66,27 @@ class HighLevelActions:
         if 0 <= goalie < n:
             self.role_of[goalie] = keeper_role
         self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
+
+    def action_mask(self, view: TeamView, slots: int | None = None) -> np.ndarray:
+        """(n, ``size(slots)``) bool, which actions each player can take now (``slots``: the
+        team-mate slots of the action space, default n). Running, going to the target,
+        intercepting and idling always; shooting, dribbling and passing only with the ball
+        kickable, the play mode letting the team kick (play on, or its own restart) and the
+        player not frozen after a tackle; a pass only to a team-mate on the pitch."""
+        n = self.n
+        mask = np.zeros((n, self.size(n if slots is None else slots)), dtype=bool)
+        mask[:, :SHOOT] = True
+        mask[:, IDLE] = True
+        mode = view.play_mode
+        may_kick = mode == PlayMode.PLAY_ON or (view.mode_ours and mode not in _NO_KICK_MODES)
+        if not may_kick:
+            return mask
+        able = skills.kickable(self.model, view.own_pos, view.ball) & view.present
+        if view.frozen is not None:
+            able &= view.frozen == 0
+        mask[:, SHOOT] = mask[:, DRIBBLE] = able
+        mask[:, PASS:PASS + n] = able[:, None] & view.present[None, :]
+        return mask
 
     def command_for(self, view: TeamView, actions: np.ndarray) -> TeamCommand:
         """The team's command for the players' ``actions`` ((n,) ints, already checked)."""
@@ -101,7 +126,7 @@ class HighLevelActions:
                 urgent[i] = run[i] = True
             elif action >= PASS and can_kick[i]:
                 receiver = action - PASS
-                if receiver != i:
+                if receiver != i and receiver < self.n and view.present[receiver]:  # else: no kick
                     distance = float(np.hypot(*(view.own_pos[receiver] - view.ball)))
                     speed = min(distance * (1.0 - model.ball_decay) + PASS_ARRIVAL_SPEED, model.ball_speed_max)
                     command.kick[i] = self._kick_towards(view, i, view.own_pos[receiver], speed)

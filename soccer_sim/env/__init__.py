@@ -1,33 +1,70 @@
 """The PettingZoo interface: :func:`parallel_env` (a ``ParallelEnv``) and :func:`env` (the
-same as an AEC environment, through PettingZoo's conversion), so that PettingZoo's test
-helpers and multi-agent RL libraries take the module as it is; :class:`PolicyTeam` enters a
-policy written for the environment in matches and tournaments.
+same as an AEC environment), so that PettingZoo's test helpers and multi-agent RL libraries
+take the module as it is; :class:`PolicyTeam` enters a policy written for the environment in
+matches and tournaments. User guide: ``docs/env.md``.
 
-Options (keyword arguments of both): ``controlled`` ("left", "right" or "both"),
-``opponent`` (a registered team name or Team object for an uncontrolled side; default
-:data:`DEFAULT_OPPONENT`), ``max_cycles`` (truncation), ``end_on_goal``, ``config`` (a
-MatchConfig), ``render_mode`` ("rgb_array" or "human"), ``reward_shaping``. See
-:mod:`soccer_sim.env.parallel` and, for observations and actions, :mod:`soccer_sim.env.spaces`.
+Options (keyword arguments of both):
+
+``controlled``
+    "left", "right" or "both" (default): the sides played by agents.
+``scenario``
+    a :class:`~soccer_sim.scenarios.Scenario`, a library name (``"3-vs-1-with-keeper"``) or a
+    ``.json``/``.toml`` file (default: the regular match); sizes the sides and ends episodes
+    on its end conditions.
+``opponent``
+    the uncontrolled side: a registered team name, a ``package.module:Attribute`` path or a
+    Team object (default :data:`DEFAULT_OPPONENT`).
+``max_cycles``
+    truncate after this many steps (default: none).
+``end_on_goal``
+    terminate at the first goal (default False).
+``config``
+    a MatchConfig (default: the regular one).
+``action_mode``
+    "low_level" (default; ``Box(-1, 1, (5,))``) or "high_level" (``Discrete(13 + k)``).
+``rewards``
+    None or "sparse" (goals only, the default), "dense", or a dict term -> weight
+    (:mod:`soccer_sim.env.rewards`); ``reward_shaping`` w adds w to ``ball_progress``.
+``event_texts``
+    also put the step's events as text in the infos (default False: numbers only,
+    :mod:`soccer_sim.env.infos`).
+``action_mask_in_observation``
+    observations are dicts ``{"observation", "action_mask"}`` (discrete modes; default False:
+    the Box observation, the mask in ``infos[agent]["action_mask"]``).
+``observation_slots``
+    player slots per side in an observation (default 11: one layout for every scenario,
+    :mod:`soccer_sim.env.spaces`).
+``render_mode``
+    "rgb_array" or "human" (a rerun viewer, or an ``.rrd`` file in ``record_dir`` where no
+    display is; :mod:`soccer_sim.env.render`).
+
+See :mod:`soccer_sim.env.parallel` for episodes and the batched interface
+(``reset_arrays``/``step_arrays``), :mod:`soccer_sim.env.global_state` for ``state()``,
+:mod:`soccer_sim.env.persistence` for pickling.
 """
 
 from __future__ import annotations
 
-from soccer_sim.env.parallel import DEFAULT_OPPONENT, SoccerParallelEnv
+from soccer_sim.env.infos import EVENT_KIND_NAMES, PLAY_MODE_NAMES
+from soccer_sim.env.options import DEFAULT_OPPONENT
+from soccer_sim.env.parallel import SoccerParallelEnv
 from soccer_sim.env.policy_team import PolicyTeam
-from soccer_sim.env.spaces import ACTION_SIZE, observation_size
+from soccer_sim.env.rewards import DENSE, TERMS
+from soccer_sim.env.spaces import ACTION_SIZE, OBSERVATION_SLOTS, observation_size
 
 
-def parallel_env(**kwargs) -> SoccerParallelEnv:
+def parallel_env(**options) -> SoccerParallelEnv:
     """The parallel environment (see the module docstring for the options)."""
-    return SoccerParallelEnv(**kwargs)
+    return SoccerParallelEnv(**options)
 
 
-def env(**kwargs):
-    """The AEC form of :func:`parallel_env`: agents act one after another within a cycle."""
-    from pettingzoo.utils.conversions import parallel_to_aec
+def env(**options):
+    """The AEC form of :func:`parallel_env`: agents act one after another within a cycle, each
+    action checked at its own agent's step (:mod:`soccer_sim.env.aec`)."""
+    from soccer_sim.env.aec import to_aec
 
-    return parallel_to_aec(parallel_env(**kwargs))
+    return to_aec(parallel_env(**options))
 
 
-__all__ = ["ACTION_SIZE", "DEFAULT_OPPONENT", "PolicyTeam", "SoccerParallelEnv", "env", "observation_size",
-           "parallel_env"]
+__all__ = ["ACTION_SIZE", "DEFAULT_OPPONENT", "DENSE", "EVENT_KIND_NAMES", "OBSERVATION_SLOTS", "PLAY_MODE_NAMES",
+           "PolicyTeam", "SoccerParallelEnv", "TERMS", "env", "observation_size", "parallel_env"]

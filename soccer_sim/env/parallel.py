@@ -1,56 +1,48 @@
 """The PettingZoo parallel environment: one or both teams played by outside agents.
 
-Agents are named ``left_0`` ... ``left_10`` (the home team, which kicks off from the left) and
-``right_0`` ... (the away team); player 0 is the goalkeeper. Each step is one match cycle:
-the controlled players' actions (see :mod:`soccer_sim.env.spaces`) replace their team's
-decision, an uncontrolled side is played by a team (a registered name or a Team object),
-and every agent observes the world in its own team's frame.
+Agents are named ``left_0`` ... ``left_{n-1}`` (the home team, which kicks off from the left)
+and ``right_0`` ... ``right_{m-1}`` (the away team), each side sized from the scenario (11 a
+side in the regular match); player 0 is the goalkeeper where the side has one. Each step is
+one match cycle: the controlled players' actions (:mod:`soccer_sim.env.spaces`) replace their
+team's decision, an uncontrolled side is played by a team (a registered name or a Team
+object), and every agent observes the world in its own team's frame.
 
-Rewards: +1 to every agent of a team when it scores, -1 when it concedes; with
-``reward_shaping`` w > 0, every agent of a team also gets w times the ball's progress towards
-the opponents' goal in the cycle (metres along the team's attacking direction), off by default.
-An episode ends for all agents together: *terminated* at the end of the match (or at the
-first goal with ``end_on_goal``), *truncated* after ``max_cycles`` steps
-(:meth:`soccer_sim.ending.MatchEnd.episode_end` of the environment's
-:class:`~soccer_sim.setup.MatchSetup`).
+Rewards: :mod:`soccer_sim.env.rewards` (goals by default; named dense terms). Infos:
+:mod:`soccer_sim.env.infos` (numbers and fixed-shape arrays). The global state:
+:mod:`soccer_sim.env.global_state` (``state()`` and the ``state_space`` attribute).
+
+An episode ends for all agents together: *terminated* when the match is over (its time, or
+the scenario's end conditions and cycle limit; or at the first goal with ``end_on_goal``),
+*truncated* after ``max_cycles`` steps (:meth:`soccer_sim.ending.MatchEnd.episode_end`).
+
+**Batched interface** (no dicts): ``reset_arrays(seed)`` and ``step_arrays(actions)`` with
+one row per agent in :attr:`possible_agents` order (left first): ``actions`` (N, 5) floats for
+the low-level mode, (N,) or (N, 1) integers for a discrete mode; ``step_arrays`` returns
+``obs`` (N, D) float32, ``rewards`` (N,) float32, ``terminations`` and ``truncations`` (N,)
+bool, new arrays each call. ``action_masks()`` is the (N, A) int8 mask of a discrete mode,
+:meth:`infos` the dict infos on demand. Both interfaces drive the same episode and may be mixed.
 """
 
 from __future__ import annotations
 
-import functools
 from typing import Any
 
 import numpy as np
 from gymnasium import spaces
 from pettingzoo import ParallelEnv
 
-from soccer_sim.config import MatchConfig
-from soccer_sim.env.spaces import ACTION_SIZE, ActionDecoder, ObservationBuilder, check_actions
+from soccer_sim.env.global_state import GlobalState
+from soccer_sim.env.infos import EpisodeInfo
+from soccer_sim.env.options import (CONTROLLED, DEFAULT_OPPONENT, RENDER_MODES, SIDES, check_seed,
+                                    load_action_mode, resolve_options)
+from soccer_sim.env.persistence import ReplayPickling
+from soccer_sim.env.rewards import Rewards
+from soccer_sim.env.spaces import ACTION_SIZE, ActionDecoder, ObservationBuilder, check_action, check_actions
 from soccer_sim.match import Match
-from soccer_sim.registry import resolve_team
-from soccer_sim.setup import MatchSetup
-from soccer_sim.state import AWAY, HOME, PlayMode
+from soccer_sim.state import AWAY, HOME
 from soccer_sim.team import SideInfo, TeamCommand
 
-DEFAULT_OPPONENT = "static"
-"""The built-in team that won the default tournament (README): the default opponent."""
-
-SIDES = ("left", "right")
-ACTION_MODE_GROUP = "soccer_sim.action_modes"
-"""Entry point group of high-level action translators (the built-in one: ``high_level``)."""
-
-
-def load_action_mode(name: str) -> Any:
-    """A new translator of the action mode ``name`` (an entry point of :data:`ACTION_MODE_GROUP`):
-    an object with ``size(n)``, ``reset(side_info, config)`` and ``command_for(view, actions)``."""
-    from importlib import metadata
-
-    found = {ep.name: ep for ep in metadata.entry_points(group=ACTION_MODE_GROUP)}
-    if name not in found:
-        known = ", ".join(["low_level", *sorted(found)])
-        raise ValueError(f"unknown action_mode {name!r}; known: {known}")
-    return found[name].load()()
-CONTROLLED = {"left": (HOME,), "right": (AWAY,), "both": (HOME, AWAY)}
+__all__ = ["CONTROLLED", "DEFAULT_OPPONENT", "SIDES", "SoccerParallelEnv", "load_action_mode"]
 
 
 class _ExternalTeam:
@@ -60,7 +52,7 @@ class _ExternalTeam:
         self.name = name
         self.command: TeamCommand | None = None
 
-    def reset(self, side_info: SideInfo, config: MatchConfig, rng: np.random.Generator) -> None:
+    def reset(self, side_info: SideInfo, config: Any, rng: np.random.Generator) -> None:
         n = side_info.players_per_team
         self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
 
@@ -68,146 +60,202 @@ class _ExternalTeam:
         return self.command
 
 
-class SoccerParallelEnv(ParallelEnv):
+class SoccerParallelEnv(ReplayPickling, ParallelEnv):
     """See the module docstring; build it with :func:`soccer_sim.env.parallel_env`."""
 
-    metadata = {"name": "soccer_sim_v0", "render_modes": ["rgb_array", "human"], "render_fps": 10,
+    metadata = {"name": "soccer_sim_v1", "render_modes": list(RENDER_MODES), "render_fps": 10,
                 "is_parallelizable": True}
 
-    def __init__(self, controlled: str = "both", opponent: Any = DEFAULT_OPPONENT, max_cycles: int | None = None,
-                 end_on_goal: bool = False, config: MatchConfig | None = None, render_mode: str | None = None,
-                 reward_shaping: float = 0.0, action_mode: str = "low_level") -> None:
-        if controlled not in CONTROLLED:
-            raise ValueError(f"controlled must be 'left', 'right' or 'both', got {controlled!r}")
-        if render_mode not in (None, *self.metadata["render_modes"]):
-            raise ValueError(f"render_mode must be None, 'rgb_array' or 'human', got {render_mode!r}")
-        if max_cycles is not None and (isinstance(max_cycles, bool) or int(max_cycles) != max_cycles
-                                       or max_cycles < 1):
-            raise ValueError(f"max_cycles must be a positive integer or None, got {max_cycles!r}")
-        if not (np.isfinite(reward_shaping) and reward_shaping >= 0):
-            raise ValueError(f"reward_shaping must be a non-negative number, got {reward_shaping!r}")
-        self.config = config or MatchConfig()
-        if not isinstance(self.config, MatchConfig):
-            raise TypeError(f"config must be a MatchConfig, got {type(self.config).__name__}")
-        self.controlled = controlled
-        self.sides = CONTROLLED[controlled]
-        self.opponent = opponent
-        if controlled != "both":
-            resolve_team(opponent)  # an unknown name fails here, naming the registered teams
-        self.max_cycles = max_cycles
-        self.end_on_goal = end_on_goal
-        self.render_mode = render_mode
-        self.reward_shaping = float(reward_shaping)
-        self.setup = setup = MatchSetup.resolve(self.config)
-        """The regular match every episode plays (sides, goalkeepers, end)."""
-        n = setup.sizes[HOME]
-        self.n = n
-        self.possible_agents = [f"{SIDES[side]}_{i}" for side in self.sides for i in range(n)]
-        self._index = {agent: (int(agent.startswith("right")), int(agent.split("_")[1]))
-                       for agent in self.possible_agents}
+    def __init__(self, **options: Any) -> None:
+        self._options = opts = resolve_options(**options)
+        kw = opts.kwargs
+        self.config = opts.setup.config
+        self.setup = setup = opts.setup
+        """The match every episode plays (sides, goalkeepers, start, end), from the scenario."""
+        self.scenario = setup.scenario
+        self.controlled, self.opponent = kw["controlled"], kw["opponent"]
+        self.max_cycles, self.end_on_goal = kw["max_cycles"], kw["end_on_goal"]
+        self.render_mode, self.action_mode = kw["render_mode"], kw["action_mode"]
+        self.sides = opts.sides
         sizes, goalies = setup.sizes, setup.goalies
-        size = ObservationBuilder(sizes[HOME], sizes[AWAY], goalies[HOME], self.config).size
-        self._observation_space = spaces.Box(-np.inf, np.inf, (size,), dtype=np.float32)
-        self.action_mode = action_mode
-        self._high_level = {side: load_action_mode(action_mode) for side in self.sides} \
-            if action_mode != "low_level" else {}
-        if self._high_level:
-            self._action_space = spaces.Discrete(next(iter(self._high_level.values())).size(n))
-        else:
-            self._action_space = spaces.Box(-1.0, 1.0, (ACTION_SIZE,), dtype=np.float32)
-        self._builders = {side: ObservationBuilder(sizes[side], sizes[1 - side], goalies[side], self.config)
-                          for side in self.sides}
+        self.possible_agents = [f"{SIDES[side]}_{i}" for side in self.sides for i in range(sizes[side])]
+        self._index = {agent: k for k, agent in enumerate(self.possible_agents)}
+        first = (0, sizes[HOME])
+        offsets = {side: sum(sizes[s] for s in self.sides if s < side) for side in self.sides}
+        self._blocks = {side: slice(offsets[side], offsets[side] + sizes[side]) for side in self.sides}
+        rows = {side: slice(first[side], first[side] + sizes[side]) for side in self.sides}
+        self._builders = {side: ObservationBuilder(sizes[side], sizes[1 - side], goalies[side], self.config,
+                                                   kw["observation_slots"]) for side in self.sides}
+        builder = self._builders[self.sides[0]]
+        self.observation_slots = builder.slots
+        box = spaces.Box(builder.low, builder.high, dtype=np.float32)
         self._decoders = {side: ActionDecoder(sizes[side], goalies[side], self.config) for side in self.sides}
-        self._side_agents = {side: [f"{SIDES[side]}_{i}" for i in range(n)] for side in self.sides}
+        low_level = self.action_mode == "low_level"
+        self._translators = {} if low_level else {side: load_action_mode(self.action_mode) for side in self.sides}
+        if low_level:
+            self._action_space = spaces.Box(-1.0, 1.0, (ACTION_SIZE,), dtype=np.float32)
+            self._masks = None
+        else:
+            size = next(iter(self._translators.values())).size(self.observation_slots)
+            self._action_space = spaces.Discrete(size)
+            self._masks = np.ones((len(self.possible_agents), size), dtype=np.int8)
+        self._mask_in_obs = kw["action_mask_in_observation"]
+        self._observation_space = spaces.Dict({"observation": box, "action_mask": spaces.Box(
+            0, 1, (self._action_space.n,), dtype=np.int8)}) if self._mask_in_obs else box
+        self.observation_spaces = {agent: self._observation_space for agent in self.possible_agents}
+        self.action_spaces = {agent: self._action_space for agent in self.possible_agents}
+        self._global = GlobalState(sizes, self.observation_slots, self.config)
+        self.state_space = self._global.space
+        """The global state's Box (:mod:`soccer_sim.env.global_state`)."""
+        self._rewards = Rewards(opts.weights, self.sides, rows, offsets, len(self.possible_agents))
+        self._obs = np.zeros((len(self.possible_agents), box.shape[0]), dtype=np.float32)
         self._seeds = np.random.SeedSequence()
         self._match: Match | None = None
+        self._match_seed: int | None = None
+        self._episodes = 0
+        self._log: list[np.ndarray] = []
+        self._done = (False, False)
         self.agents: list[str] = []
 
     # ------------------------------------------------------------------ spaces
-    @functools.lru_cache(maxsize=None)  # noqa: B019 - one space object per agent, as PettingZoo wants
-    def observation_space(self, agent: str) -> spaces.Box:
+    def observation_space(self, agent: str) -> spaces.Space:
+        """The one observation space of every agent (built once, with the environment)."""
         self._check_agent(agent)
         return self._observation_space
 
-    @functools.lru_cache(maxsize=None)  # noqa: B019
-    def action_space(self, agent: str) -> spaces.Box:
+    def action_space(self, agent: str) -> spaces.Space:
+        """The one action space of every agent (built once, with the environment)."""
         self._check_agent(agent)
         return self._action_space
-
-    def _side_info(self, side: int) -> SideInfo:
-        return self.setup.side_info(side, self._match.team_names)
 
     def _check_agent(self, agent: str) -> None:
         if agent not in self._index:
             raise ValueError(f"unknown agent {agent!r}; the agents are {', '.join(self.possible_agents)}")
 
-    # ------------------------------------------------------------------ episode
+    # ------------------------------------------------------------------ episodes
     def reset(self, seed: int | None = None, options: dict | None = None) -> tuple[dict, dict]:
+        self.reset_arrays(seed)
+        return self._observation_dict(), self.infos()
+
+    def reset_arrays(self, seed: int | None = None) -> np.ndarray:
+        """Start an episode (``seed``: None continues the environment's seed sequence) and
+        return the (N, D) observations, rows in :attr:`possible_agents` order."""
+        check_seed(seed)
         if seed is not None:
             self._seeds = np.random.SeedSequence(int(seed))
-        match_seed = int(self._seeds.spawn(1)[0].generate_state(1)[0])
-        teams = [_ExternalTeam(f"agents-{SIDES[side]}") if side in self.sides else self.opponent
+        self._start(int(self._seeds.spawn(1)[0].generate_state(1)[0]), record=True)
+        return self._obs.copy()
+
+    def _start(self, match_seed: int, record: bool) -> None:
+        kw = self._options.kwargs
+        sizes = self.setup.sizes
+        teams = [_ExternalTeam(f"agents-{SIDES[side]}") if side in self.sides or not sizes[side] else self.opponent
                  for side in (HOME, AWAY)]
-        recorders = self._human_recorders()
-        self._match = Match(teams[HOME], teams[AWAY], seed=match_seed, recorders=recorders, setup=self.setup)
-        self._match.start()
-        self._externals = {side: self._match.teams[side] for side in self.sides}
-        for side, translator in self._high_level.items():
-            translator.reset(self._side_info(side), self.config)
+        recorders = []
+        if record and self.render_mode == "human":
+            from soccer_sim.env.render import human_recorder
+
+            recorders.append(human_recorder(kw["record_dir"], self._episodes, match_seed))
+        self._episodes += 1
+        self._match = match = Match(teams[HOME], teams[AWAY], seed=match_seed, recorders=recorders, setup=self.setup)
+        self._match_seed = match_seed
+        match.start()
+        self._externals = {side: match.teams[side].command for side in self.sides}
+        for side, translator in self._translators.items():
+            translator.reset(self.setup.side_info(side, match.team_names), self.config)
         self._steps = 0
-        self._events_seen = len(self._match.events)
+        self._log = []
+        self._done = (False, False)
+        self._info = EpisodeInfo(sizes[HOME], kw["event_texts"])
+        self._info.update(match, len(match.events))
+        self._rewards.out[:] = 0.0
         self.agents = list(self.possible_agents)
-        observations = self._observe()
-        info = self._info([])
-        infos = {agent: {**info, "events": []} for agent in self.agents}
-        return observations, infos
+        self._observe()
 
     def step(self, actions: dict[str, Any]) -> tuple[dict, dict, dict, dict, dict]:
+        self._check_live()
+        self._check_keys(actions)
+        values = [actions[agent] for agent in self.possible_agents]
+        if self._translators:
+            checked = np.array([self._check_choice(a, v) for a, v in zip(self.possible_agents, values)],
+                               dtype=np.int64)
+        else:
+            checked = check_actions(self.possible_agents, values)
+        agents = self.agents
+        self._advance(checked)
+        rewards = dict(zip(agents, self._rewards.out.tolist()))
+        terminated, truncated = self._done
+        return (self._observation_dict(agents), rewards, dict.fromkeys(agents, terminated),
+                dict.fromkeys(agents, truncated), self.infos(agents))
+
+    def step_arrays(self, actions: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """One step from the (N, A) actions of all agents (see the module docstring); returns
+        (obs (N, D), rewards (N,), terminations (N,), truncations (N,))."""
+        self._check_live()
+        n = len(self.possible_agents)
+        if self._translators:
+            rows = np.asarray(actions)
+            if rows.shape == (n, 1):
+                rows = rows[:, 0]
+            if rows.shape != (n,) or rows.dtype.kind not in "iu" or not (
+                    (rows >= 0) & (rows < self._action_space.n)).all():
+                rows = np.array([self._check_choice(a, v) for a, v in zip(self.possible_agents, _rows(actions, n))],
+                                dtype=np.int64)
+        else:
+            rows = check_actions(self.possible_agents, _rows(actions, n))
+        self._advance(rows)
+        terminated, truncated = self._done
+        return (self._obs.copy(), self._rewards.out.copy(), np.full(n, terminated), np.full(n, truncated))
+
+    def _advance(self, rows: np.ndarray) -> None:
+        """Play one cycle with the checked actions ``rows`` of every agent."""
         match = self._match
-        if match is None or not self.agents:
-            raise RuntimeError("call reset() before step(), and again after the episode ended")
-        self._check_actions(actions)
+        state = match.state
         for side in self.sides:
-            if self._high_level:
-                choices = np.array([self._check_choice(f"{SIDES[side]}_{i}", actions[f"{SIDES[side]}_{i}"])
-                                    for i in range(self.n)], dtype=np.int64)
-                command = self._high_level[side].command_for(match.frames[side].view, choices)
+            block = rows[self._blocks[side]]
+            if self._translators:
+                command = self._translators[side].command_for(match.frames[side].view, block)
             else:
-                names = self._side_agents[side]
-                command = self._decoders[side].decode(check_actions(names, [actions[a] for a in names]))
-            external = self._externals[side].command
+                command = self._decoders[side].decode(block)
+            external = self._externals[side]
             external.dash[:] = command.dash
             external.kick[:] = command.kick
             external.catch = command.catch
-        state = match.state
-        score_before = state.score.copy()
-        ball_before = state.ball.copy()
+        self._log.append(rows.copy())
+        self._rewards.before(state)
+        mark = len(match.events)
+        score = int(state.score.sum())
         match.step()
         self._steps += 1
-        goals = state.score - score_before
-        team_reward = {HOME: float(goals[HOME] - goals[AWAY]), AWAY: float(goals[AWAY] - goals[HOME])}
-        if self.reward_shaping:
-            progress = (state.ball[0] - ball_before[0]) * state.home_attacks
-            team_reward[HOME] += self.reward_shaping * progress
-            team_reward[AWAY] -= self.reward_shaping * progress
-        terminated, truncated = self.setup.end.episode_end(state, goal_scored=bool(goals.any()),
-                                                           end_on_goal=self.end_on_goal, steps=self._steps,
-                                                           max_cycles=self.max_cycles)
-        observations = self._observe()
-        events = self._new_events()
-        rewards = {agent: team_reward[self._index[agent][0]] for agent in self.agents}
-        terminations = {agent: terminated for agent in self.agents}
-        truncations = {agent: truncated for agent in self.agents}
-        info = self._info(events)
-        infos = {agent: {**info, "events": list(events)} for agent in self.agents}
-        if terminated or truncated:
+        self._info.update(match, mark)
+        self._rewards.after(state, match.events, mark)
+        self._done = self.setup.end.episode_end(state, goal_scored=int(state.score.sum()) != score,
+                                                end_on_goal=self.end_on_goal, steps=self._steps,
+                                                max_cycles=self.max_cycles)
+        self._observe()
+        if self._done[0] or self._done[1]:
             self.agents = []
             if self.render_mode == "human":
                 match.finish()
-        return observations, rewards, terminations, truncations, infos
+
+    def _check_live(self) -> None:
+        if self._match is None or not self.agents:
+            raise RuntimeError("call reset() before step(), and again after the episode ended")
+
+    def _check_keys(self, actions: dict[str, Any]) -> None:
+        if not isinstance(actions, dict):
+            raise ValueError(f"actions must be a dict agent -> action, got {type(actions).__name__}")
+        unknown = sorted(set(actions) - set(self.agents), key=str)
+        if unknown:
+            finished = [a for a in unknown if a in self._index]
+            raise ValueError(f"actions for agents that are not live: {', '.join(map(str, unknown))}"
+                             + (f" ({', '.join(finished)} finished or not controlled)" if finished else ""))
+        missing = [agent for agent in self.agents if agent not in actions]
+        if missing:
+            raise ValueError(f"no action for the live agents {', '.join(missing)}")
 
     def _check_choice(self, agent: str, action: Any) -> int:
-        """A high-level action as an int in the Discrete space; ValueError naming the agent."""
+        """A discrete action as an int in the action space; ValueError naming the agent."""
         value = np.asarray(action)
         if value.shape not in ((), (1,)) or value.dtype.kind not in "iu":
             raise ValueError(f"action of {agent} must be one integer (action_mode={self.action_mode!r}), "
@@ -217,69 +265,65 @@ class SoccerParallelEnv(ParallelEnv):
             raise ValueError(f"action of {agent} must be in 0..{self._action_space.n - 1}, got {choice}")
         return choice
 
-    def _check_actions(self, actions: dict[str, Any]) -> None:
-        if not isinstance(actions, dict):
-            raise ValueError(f"actions must be a dict agent -> action, got {type(actions).__name__}")
-        unknown = sorted(set(actions) - set(self.agents))
-        if unknown:
-            finished = [a for a in unknown if a in self._index]
-            raise ValueError(f"actions for agents that are not live: {', '.join(map(str, unknown))}"
-                             + (f" ({', '.join(finished)} finished or not controlled)" if finished else ""))
-        missing = [agent for agent in self.agents if agent not in actions]
-        if missing:
-            raise ValueError(f"no action for the live agents {', '.join(missing)}")
+    def check_agent_action(self, agent: str, action: Any) -> None:
+        """ValueError naming ``agent`` if ``action`` is not a valid action (the AEC form checks
+        each agent's action at its own step)."""
+        self._check_agent(agent)
+        if self._translators:
+            self._check_choice(agent, action)
+        else:
+            check_action(agent, action)
 
     # ------------------------------------------------------------------ what agents see
-    def _observe(self) -> dict[str, np.ndarray]:
+    def _observe(self) -> None:
         match = self._match
         state = match.state
-        observations = {}
         for side in self.sides:
             view = match.frames[side].update_view(state, state.attack_direction(side))
-            rows = self._builders[side].build(view)
-            for i in range(self.n):
-                observations[f"{SIDES[side]}_{i}"] = rows[i]
-        return observations
+            block = self._blocks[side]
+            self._builders[side].build(view, out=self._obs[block])
+            if self._masks is not None:
+                translator = self._translators[side]
+                if hasattr(translator, "action_mask"):
+                    self._masks[block] = translator.action_mask(view, self.observation_slots)
 
-    def _new_events(self) -> list[str]:
-        from soccer_sim.analysis.events import describe_event
+    def _observation_dict(self, agents: list[str] | None = None) -> dict[str, Any]:
+        obs = self._obs.copy()
+        names = self.possible_agents if agents is None else agents
+        if not self._mask_in_obs:
+            return dict(zip(names, obs))
+        masks = self._masks.copy()
+        return {agent: {"observation": obs[k], "action_mask": masks[k]} for k, agent in enumerate(names)}
 
-        log = self._match.events
-        names = self._match.team_names
-        start, self._events_seen = self._events_seen, len(log)
-        return [describe_event(names, log.kind[k], log.team[k], log.player[k], log.x[k], log.y[k], log.detail[k])
-                for k in range(start, len(log))]
+    def action_masks(self) -> np.ndarray | None:
+        """(N, A) int8: 1 where each agent's discrete action can be taken now (rows in
+        :attr:`possible_agents` order); None for the low-level mode, which has no mask."""
+        return None if self._masks is None else self._masks.copy()
 
-    def _info(self, events: list[str]) -> dict[str, Any]:
-        state = self._match.state
-        return {"play_mode": PlayMode(state.play_mode).name.lower(), "cycle": int(state.cycle),
-                "score": (int(state.score[0]), int(state.score[1])), "events": events}
-
-    def state(self) -> np.ndarray:
-        """The global state, absolute frame, float32: every player's x, y, vx, vy (home then
-        away), the ball's x, y, vx, vy, the score, the cycle and the play mode."""
+    def infos(self, agents: list[str] | None = None) -> dict[str, dict[str, Any]]:
+        """Every agent's info after the last reset or step (:mod:`soccer_sim.env.infos`)."""
         if self._match is None:
             raise RuntimeError("call reset() first")
-        s = self._match.state
-        return np.concatenate([np.hstack([s.pos, s.vel]).reshape(-1), s.ball, s.ball_vel,
-                               s.score.astype(float), [float(s.cycle), float(int(s.play_mode))]]).astype(np.float32)
+        names = self.possible_agents if agents is None else agents
+        info = self._info.info(self._match.state)
+        out = {agent: dict(info) for agent in names}
+        if self._masks is not None:
+            masks = self._masks.copy()
+            masks.flags.writeable = False
+            for k, agent in enumerate(names):
+                out[agent]["action_mask"] = masks[k]
+        if self._info.event_texts:
+            for agent in names:
+                out[agent]["event_texts"] = list(info["event_texts"])
+        return out
 
-    def state_space(self) -> spaces.Box:
-        return spaces.Box(-np.inf, np.inf, (8 * self.n + 8,), dtype=np.float32)
+    def state(self) -> np.ndarray:
+        """The global state, normalised like the observations (:mod:`soccer_sim.env.global_state`)."""
+        if self._match is None:
+            raise RuntimeError("call reset() first")
+        return self._global.build(self._match.state)
 
     # ------------------------------------------------------------------ rendering
-    def _human_recorders(self) -> list:
-        if self.render_mode != "human":
-            return []
-        from soccer_sim.replay import ReplayError, RerunRecorder
-        from soccer_sim.replay.recorder import has_display
-
-        if not has_display():
-            raise ReplayError("render_mode='human' streams to a rerun viewer, which needs a display; use "
-                              "render_mode='rgb_array', or record with soccer_sim.replay.RerunRecorder(path) "
-                              "and watch the file elsewhere")
-        return [RerunRecorder(spawn=True, flush_every=10)]
-
     def render(self) -> np.ndarray | None:
         if self.render_mode is None:
             import gymnasium
@@ -292,7 +336,21 @@ class SoccerParallelEnv(ParallelEnv):
             from soccer_sim.env.render import render_rgb
 
             return render_rgb(self._match.state, self.config.field)
-        return None  # "human": the match streams to the viewer as it plays
+        return None  # "human": the match streams to the viewer (or its file) as it plays
 
     def close(self) -> None:
+        if self._match is not None and self.agents and self.render_mode == "human":
+            self._match.finish()  # flush the recording
         self._match = None
+        self.agents = []
+
+
+def _rows(actions: Any, n: int) -> list[Any]:
+    """``actions`` as a list of ``n`` rows for the agent-by-agent checks (ValueError for another count)."""
+    try:
+        rows = list(actions)
+    except TypeError:
+        raise ValueError(f"actions must be an array of one row per agent ({n}), got {actions!r}") from None
+    if len(rows) != n:
+        raise ValueError(f"actions must have one row per agent ({n}), got {len(rows)}")
+    return rows

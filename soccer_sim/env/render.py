@@ -1,5 +1,6 @@
-"""A top view of the field as an RGB image (numpy only, no window): the environment's
-``rgb_array`` render mode."""
+"""The environment's render modes: ``rgb_array``, a top view of the field as an RGB image
+(numpy only, no window), and ``human``, the match streamed to a rerun viewer where a window
+can open, else recorded into a ``.rrd`` file (:func:`human_recorder`)."""
 
 from __future__ import annotations
 
@@ -64,3 +65,25 @@ def render_rgb(state: WorldState, field: FieldConfig) -> np.ndarray:
             _disc(image, _pixels(rows, field, shape), 4, TEAM[team])
     _disc(image, _pixels(state.ball[None, :], field, shape), 2, BALL)
     return image
+
+
+def human_recorder(record_dir: str | None, episode: int, seed: int) -> object:
+    """The recorder of ``render_mode="human"`` for one episode: a rerun viewer it spawns when a
+    display is there; else (a server, a container) a warning naming the ``.rrd`` file the
+    episode is recorded into instead (``record_dir``, default the temporary directory), to be
+    watched with ``soccer-sim replay FILE`` or ``rerun FILE`` on a machine with a display."""
+    import os
+    import tempfile
+    import warnings
+
+    from soccer_sim.replay import RerunRecorder
+    from soccer_sim.replay.recorder import has_display
+
+    if has_display():
+        return RerunRecorder(spawn=True, flush_every=10)
+    folder = record_dir or tempfile.gettempdir()
+    path = os.path.join(folder, f"soccer-sim-env-{os.getpid()}-{id(object()):x}-episode-{episode}-seed-{seed}.rrd")
+    warnings.warn(f"render_mode='human': no display here, so the episode is recorded into {path} instead; "
+                  "watch it with `soccer-sim replay FILE` or `rerun FILE` where a display is, or use "
+                  "render_mode='rgb_array'", stacklevel=3)
+    return RerunRecorder(path, flush_every=1000)

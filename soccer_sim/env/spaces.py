@@ -5,9 +5,12 @@ team attacks +x, its own goal is at -x), so the PettingZoo environment and
 :class:`~soccer_sim.env.policy_team.PolicyTeam` (a policy entered in matches as a team) see
 exactly the same numbers.
 
-Observation of player ``i`` of a team of ``n`` against ``m`` (float32, ``observation_size(n, m)``
-values); positions are divided by the field's half length, player velocities by the players'
-top speed, the ball's velocity by its top speed, stamina by its maximum:
+Observation of player ``i`` of a team of ``n`` against ``m``: float32, ``observation_size(k, k)``
+values for ``k`` *slots* per side (default :data:`OBSERVATION_SLOTS`, 11, whatever the sides'
+sizes, so every scenario up to 11 a side shares one observation space and a policy moves
+between scenarios unchanged). Positions are divided by the field's half length, player
+velocities by the players' top speed, the ball's velocity by its top speed, stamina by its
+maximum:
 
 =========================  ======  ==========================================================
 slice                      size    what
@@ -19,16 +22,28 @@ slice                      size    what
 ``6:8``                    2       ball position
 ``8:10``                   2       ball velocity
 ``10:12``                  2       ball position minus own position
-``12:12+4n``               4n      every team-mate by shirt number (self included): x, y, vx, vy
-``12+4n:12+4n+4m``         4m      every opponent by shirt number: x, y, vx, vy
+``12:12+4k``               4k      team-mate slots by shirt number (self included): x, y, vx, vy
+``12+4k:12+8k``            4k      opponent slots by shirt number: x, y, vx, vy
 next                       9       play mode, one-hot (:class:`~soccer_sim.state.PlayMode` order)
 next                       1       1 when the current set play is ours
 next                       2       goals for, goals against
 next                       1       match time: cycle / total cycles
 next                       1       half: 0 first, 1 second
-next                       n       every team-mate by shirt number: 1 on the pitch, 0 sent off
-next                       m       every opponent by shirt number: 1 on the pitch, 0 sent off
+next                       k       presence mask of the team-mate slots: 1 on the pitch, 0 sent off or no player
+next                       k       presence mask of the opponent slots, the same
 =========================  ======  ==========================================================
+
+**Padding**: slots beyond a side's size (a team-mate slot ``j >= n``, an opponent slot
+``j >= m``) hold zeros and a 0 in the presence mask, so 3 v 1 and 11 v 11 observations have the
+same layout.
+
+**Bounds** (:func:`observation_bounds`), from the configuration: player positions within
+``(half_length + margin) / half_length`` (players are kept on the field plus its margin;
+1.095 on the regular field), the ball within a cycle's flight more (1.152), velocities
+within 2 (collisions may push a player past its top speed; measured over random and built-in
+play: players 1.35, ball 1.0), the relative ball position within the sum, goals within the
+match's cycles, every flag, mask, share and stamina in [0, 1]. Observations are clipped to
+them, so they always lie in the space.
 
 A player sent off keeps its rows (parked off the pitch) and its actions are ignored.
 
@@ -53,11 +68,47 @@ from soccer_sim.team import TeamCommand
 ACTION_SIZE = 5
 MODES = len(PlayMode)
 _TAIL = MODES + 1 + 2 + 1 + 1
+OBSERVATION_SLOTS = 11
+"""Player slots per side in an observation by default (the largest side a scenario fields)."""
+VELOCITY_BOUND = 2.0
+"""Bound of a scaled velocity in the observation (measured: players up to 1.35, the ball 1.0)."""
 
 
 def observation_size(n: int, m: int) -> int:
-    """Values in one player's observation, for ``n`` team-mates (self included) and ``m`` opponents."""
+    """Values in one player's observation, for ``n`` team-mate slots (self included) and ``m``
+    opponent slots (both :data:`OBSERVATION_SLOTS` by default, see the module docstring)."""
     return 12 + 4 * n + 4 * m + _TAIL + n + m
+
+
+def observation_slots(n: int, m: int, slots: int | None = None) -> int:
+    """Slots per side for sides of ``n`` and ``m`` players: ``slots`` (None: at least
+    :data:`OBSERVATION_SLOTS`); ValueError when a side does not fit."""
+    if slots is None:
+        return max(OBSERVATION_SLOTS, n, m)
+    if isinstance(slots, bool) or not isinstance(slots, (int, np.integer)) or slots < max(n, m, 1):
+        raise ValueError(f"observation_slots must be an integer of at least the larger side ({max(n, m, 1)}), "
+                         f"got {slots!r}")
+    return int(slots)
+
+
+def observation_bounds(slots: int, config: MatchConfig) -> tuple[np.ndarray, np.ndarray]:
+    """(low, high) float32 arrays of the observation with ``slots`` slots per side (see the
+    module docstring)."""
+    field, physics = config.field, config.physics
+    half = field.length / 2.0
+    player = (half + field.margin) / half
+    ball = (half + field.margin + physics.ball_speed_max) / half
+    high = np.ones(observation_size(slots, slots), dtype=np.float64)
+    high[0:2], high[2:4], high[6:8], high[8:10], high[10:12] = player, VELOCITY_BOUND, ball, VELOCITY_BOUND, \
+        player + ball
+    rows = high[12:12 + 8 * slots].reshape(2 * slots, 4)
+    rows[:, 0:2], rows[:, 2:4] = player, VELOCITY_BOUND
+    low = -high
+    low[4:6] = 0.0
+    tail = 12 + 8 * slots
+    low[tail:] = 0.0
+    high[tail + MODES + 1:tail + MODES + 3] = max(config.total_cycles, 1)  # goals: at most one a cycle
+    return low.astype(np.float32), high.astype(np.float32)
 
 
 @dataclass(frozen=True)
@@ -84,35 +135,40 @@ class Scales:
 class ObservationBuilder:
     """Writes every player's observation of a team's view into one (n, size) float32 array."""
 
-    def __init__(self, n: int, m: int, goalie: int, config: MatchConfig) -> None:
+    def __init__(self, n: int, m: int, goalie: int, config: MatchConfig, slots: int | None = None) -> None:
         self.n, self.m = n, m
-        self.size = observation_size(n, m)
+        self.slots = k = observation_slots(n, m, slots)
+        self.size = observation_size(k, k)
         self.scales = Scales.of(config)
+        self.low, self.high = observation_bounds(k, config)
         self.out = np.zeros((n, self.size), dtype=np.float32)
         if 0 <= goalie < n:
             self.out[goalie, 5] = 1.0
         self._mates = slice(12, 12 + 4 * n)
-        self._opps = slice(12 + 4 * n, 12 + 4 * n + 4 * m)
-        self._mode = 12 + 4 * n + 4 * m
+        self._opps = slice(12 + 4 * k, 12 + 4 * k + 4 * m)
+        self._mode = 12 + 8 * k
+        self._mates_present = slice(self._mode + _TAIL, self._mode + _TAIL + n)
+        self._opps_present = slice(self._mode + _TAIL + k, self._mode + _TAIL + k + m)
 
-    def build(self, view) -> np.ndarray:
-        """The (n, size) observations of ``view`` (a new array: safe to keep)."""
+    def build(self, view, out: np.ndarray | None = None) -> np.ndarray:
+        """The (n, size) observations of ``view``, clipped to the bounds: written into ``out``
+        when given (rows of a caller's array), else into a new array (safe to keep). Padding
+        slots stay zero."""
         s = self.scales
-        out = self.out
+        buf = self.out
         pos = view.own_pos / s.length
         vel = view.own_vel / s.player_speed
         ball = view.ball / s.length
-        out[:, 0:2] = pos
-        out[:, 2:4] = vel
-        out[:, 4] = view.stamina / s.stamina
-        out[:, 6:8] = ball
-        out[:, 8:10] = view.ball_vel / s.ball_speed
-        out[:, 10:12] = ball - pos
-        mates = np.concatenate([pos, vel], axis=1).reshape(-1)
-        opps = np.concatenate([view.opp_pos / s.length, view.opp_vel / s.player_speed], axis=1).reshape(-1)
-        out[:, self._mates] = mates
-        out[:, self._opps] = opps
-        tail = out[:, self._mode:]
+        buf[:, 0:2] = pos
+        buf[:, 2:4] = vel
+        buf[:, 4] = view.stamina / s.stamina
+        buf[:, 6:8] = ball
+        buf[:, 8:10] = view.ball_vel / s.ball_speed
+        buf[:, 10:12] = ball - pos
+        buf[:, self._mates] = np.concatenate([pos, vel], axis=1).reshape(-1)
+        buf[:, self._opps] = np.concatenate([view.opp_pos / s.length, view.opp_vel / s.player_speed],
+                                            axis=1).reshape(-1)
+        tail = buf[:, self._mode:]
         tail[:, :MODES] = 0.0
         tail[:, int(view.play_mode)] = 1.0
         tail[:, MODES] = float(view.mode_ours)
@@ -120,9 +176,11 @@ class ObservationBuilder:
         tail[:, MODES + 2] = view.score[1]
         tail[:, MODES + 3] = view.cycle / s.total_cycles
         tail[:, MODES + 4] = view.half
-        tail[:, _TAIL:_TAIL + self.n] = view.present
-        tail[:, _TAIL + self.n:] = view.opp_present
-        return out.copy()
+        buf[:, self._mates_present] = view.present
+        buf[:, self._opps_present] = view.opp_present
+        if out is None:
+            return np.clip(buf, self.low, self.high)
+        return np.clip(buf, self.low, self.high, out=out)
 
 
 class ActionDecoder:

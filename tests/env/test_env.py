@@ -4,13 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from gymnasium import spaces
 from pettingzoo.test import api_test, max_cycles_test, parallel_api_test, render_test, seed_test
 
 import soccer_sim.env as soccer_env
 from examples.random_team import RandomTeam
 from examples.scripted_team import ScriptedTeam, scripted_policy
 from experiments.cli import main
-from soccer_sim import MatchConfig, TeamError, run_match
+from soccer_sim import EventKind, MatchConfig, TeamError, run_match
 from soccer_sim.env import PolicyTeam, env, observation_size, parallel_env
 from soccer_sim.replay import ReplayError
 
@@ -126,21 +127,25 @@ def test_a_goal_rewards_the_scorers_and_ends_the_episode_when_asked() -> None:
         observations, rewards, terminations, truncations, infos = environment.step(actions)
         total += rewards["left_3"]
     assert terminations["left_3"] and not truncations["left_3"] and total == 1.0
-    assert infos["left_3"]["score"] == (1, 0) and any(e.startswith("GOAL") for e in infos["left_3"]["events"])
+    assert infos["left_3"]["score"].tolist() == [1, 0] and infos["left_3"]["events"][EventKind.GOAL] == 1
 
 
-def test_rgb_array_and_human_render_modes() -> None:
+def test_rgb_array_and_human_render_modes(tmp_path, monkeypatch) -> None:
     environment = parallel_env(render_mode="rgb_array")
     environment.reset(seed=0)
     image = environment.render()
     assert image.dtype == np.uint8 and image.ndim == 3 and image.shape[2] == 3
     assert (image == [220, 50, 47]).all(axis=2).any() and (image == [38, 139, 210]).all(axis=2).any()
-    human = parallel_env(render_mode="human")
-    import os
-
-    if not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")):
-        with pytest.raises(ReplayError, match="needs a display"):
-            human.reset(seed=0)
+    for name in ("DISPLAY", "WAYLAND_DISPLAY"):
+        monkeypatch.delenv(name, raising=False)
+    human = parallel_env(render_mode="human", max_cycles=5, record_dir=str(tmp_path))
+    with pytest.warns(UserWarning, match="no display here, so the episode is recorded into .*rrd"):
+        human.reset(seed=0)
+    while human.agents:
+        human.step({a: np.zeros(5, np.float32) for a in human.agents})
+    assert human.render() is None
+    files = list(tmp_path.glob("*.rrd"))
+    assert len(files) == 1 and files[0].stat().st_size > 0  # the episode, recorded for a viewer elsewhere
     with pytest.raises(ValueError, match="render_mode must be"):
         parallel_env(render_mode="window")
 
@@ -236,8 +241,10 @@ def test_malformed_actions_of_every_kind_name_the_agent() -> None:
     with pytest.raises(ValueError, match="action of left_1 is not finite"):
         environment.step({**good, "left_1": [0, 0, np.inf, 0, 0]})
     _, rewards, *_ , infos = environment.step({**good, "left_3": [0.5, 0.0, 0.0, 0.0, 0.0]})  # a list is fine
-    infos["left_0"]["events"].append("mine")
-    assert "mine" not in infos["left_1"]["events"]  # every agent has its own info
+    infos["left_0"]["mine"] = 1
+    assert "mine" not in infos["left_1"]  # every agent has its own info dict; its arrays are read-only
+    with pytest.raises(ValueError, match="read-only"):
+        infos["left_0"]["events"][0] = 5
 
 
 @pytest.mark.slow
@@ -268,14 +275,22 @@ def test_an_environment_step_costs_at_most_twice_a_plain_cycle() -> None:
     assert statistics.median(ratios) <= 2.0, ratios
 
 
-def test_state_is_the_global_state_in_the_absolute_frame() -> None:
+def test_state_is_the_normalised_global_state_in_the_absolute_frame() -> None:
     environment = parallel_env(controlled="right", opponent="idle", max_cycles=3)
     environment.reset(seed=0)
     state = environment.state()
-    assert state.dtype == np.float32 and environment.state_space().contains(state)
+    assert isinstance(environment.state_space, spaces.Box) and environment.state_space.contains(state)
+    assert state.dtype == np.float32 and state.shape == (12 * 11 + 20,)
     match = environment._match.state
-    np.testing.assert_allclose(state[:4 * 22].reshape(22, 4)[:, :2], match.pos, rtol=1e-6)
-    np.testing.assert_allclose(state[88:90], match.ball, rtol=1e-6)
+    players = state[:12 * 11].reshape(22, 6)
+    np.testing.assert_allclose(players[:, :2], match.pos / 52.5, rtol=1e-6)  # over the half length
+    np.testing.assert_allclose(players[:, 4], 1.0)  # full stamina
+    tail = state[12 * 11:]
+    np.testing.assert_allclose(tail[0:2], match.ball / 52.5, rtol=1e-6, atol=1e-7)
+    assert tail[6] == 0.0 and tail[8] == 1.0  # the time fraction; home attacks +x
+    assert tail[9:18].tolist() == [0, 1, 0, 0, 0, 0, 0, 0, 0] and tail[18:].tolist() == [1, 0]  # home's kick-off
+    environment.step({a: np.zeros(5, np.float32) for a in environment.agents})
+    assert environment.state()[12 * 11 + 6] == pytest.approx(1 / 6000)
 
 
 @pytest.mark.slow
