@@ -11,10 +11,11 @@ what               shape                             what
 actions            ``(E, N, *action_shape)``         ``(E, N, 5)`` float for low-level actions,
                                                      ``(E, N)`` integers for the high level
 observations       ``(E, N, D)`` float32             every agent's observation
-rewards            ``(E, N)`` float64                the reward of the step
+rewards            ``(E, N)`` float32                the reward of the step
 terminations       ``(E, N)`` bool                   episode over (match end, goal, scenario)
 truncations        ``(E, N)`` bool                   cut at ``max_cycles``
 infos              list of E dicts agent -> info     as the parallel environment gives them
+                                                     (empty dicts with ``infos=False``)
 =================  ================================  =========================================
 
 ``E`` is ``num_envs`` and ``N`` the agents of one environment. A match whose episode ends in a
@@ -52,9 +53,10 @@ import numpy as np
 
 
 def vector_env(num_envs: int, processes: int = 0, env_fn: Callable[[], Any] | None = None,
-               context: str = "spawn", **env_kwargs: Any) -> SyncVectorEnv | SubprocVectorEnv:
+               context: str = "spawn", infos: bool = True, **env_kwargs: Any) -> SyncVectorEnv | SubprocVectorEnv:
     """``num_envs`` matches of ``parallel_env(**env_kwargs)`` (or of ``env_fn()``) stepped together,
-    in this process (``processes=0``) or in ``processes`` worker processes; see the module docstring."""
+    in this process (``processes=0``) or in ``processes`` worker processes; see the module docstring.
+    ``infos=False`` leaves the agent infos out (faster: no dicts built or sent)."""
     if env_fn is not None and env_kwargs:
         raise ValueError("give either env_fn or parallel_env options, not both")
     if env_fn is None:
@@ -64,8 +66,8 @@ def vector_env(num_envs: int, processes: int = 0, env_fn: Callable[[], Any] | No
     if isinstance(processes, bool) or not isinstance(processes, (int, np.integer)) or processes < 0:
         raise ValueError(f"processes must be a non-negative integer, got {processes!r}")
     if processes == 0:
-        return SyncVectorEnv(num_envs, env_fn)
-    return SubprocVectorEnv(num_envs, env_fn, processes=int(processes), context=context)
+        return SyncVectorEnv(num_envs, env_fn, infos=infos)
+    return SubprocVectorEnv(num_envs, env_fn, processes=int(processes), context=context, infos=infos)
 
 
 def _check_num_envs(num_envs: Any) -> int:
@@ -87,26 +89,44 @@ def _seeds(seed: int | Sequence[int] | None, count: int) -> list[int | None]:
 
 
 class _Slot:
-    """One match of a vector environment: arrays in and out, reset as soon as its episode ends."""
+    """One match of a vector environment: arrays in and out, reset as soon as its episode ends.
 
-    def __init__(self, env: Any) -> None:
+    Uses the environment's batched ``reset_arrays``/``step_arrays`` where it has them (the
+    soccer environment), else the dict API of any PettingZoo ParallelEnv with Box observations."""
+
+    def __init__(self, env: Any, infos: bool) -> None:
         self.env = env
         self.agents = list(env.possible_agents)
-        self.shape = env.observation_space(self.agents[0]).shape
+        space = env.observation_space(self.agents[0])
+        if not hasattr(space, "shape") or space.shape is None or len(space.shape) != 1:
+            raise ValueError(f"a vector environment needs flat Box observations, got {space} "
+                             "(leave action_mask_in_observation off: the masks are in the infos)")
+        self.shape = space.shape
+        # Looked up on the class: a wrapper forwarding attributes must not be bypassed.
+        self.arrays = all(hasattr(type(env), name) for name in ("step_arrays", "reset_arrays", "infos"))
+        self.infos = infos
 
     def reset(self, seed: int | None) -> tuple[np.ndarray, dict]:
+        if self.arrays:
+            obs = self.env.reset_arrays(seed)
+            return obs, self.env.infos() if self.infos else {}
         observations, infos = self.env.reset(seed=seed)
-        return self._stack(observations), infos
+        return self._stack(observations), infos if self.infos else {}
 
     def step(self, actions: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, dict]:
         env = self.env
-        live = env.agents
-        observations, rewards, terminations, truncations, infos = env.step(
-            {agent: actions[k] for k, agent in enumerate(self.agents) if agent in live})
-        obs = self._stack(observations)
-        reward = np.array([rewards.get(a, 0.0) for a in self.agents], dtype=np.float64)
-        terminated = np.array([terminations.get(a, True) for a in self.agents], dtype=bool)
-        truncated = np.array([truncations.get(a, False) for a in self.agents], dtype=bool)
+        if self.arrays:
+            obs, reward, terminated, truncated = env.step_arrays(actions)
+            infos = env.infos() if self.infos else {}
+        else:
+            live = env.agents
+            observations, rewards, terminations, truncations, infos = env.step(
+                {agent: actions[k] for k, agent in enumerate(self.agents) if agent in live})
+            obs = self._stack(observations)
+            reward = np.array([rewards.get(a, 0.0) for a in self.agents], dtype=np.float32)
+            terminated = np.array([terminations.get(a, True) for a in self.agents], dtype=bool)
+            truncated = np.array([truncations.get(a, False) for a in self.agents], dtype=bool)
+            infos = infos if self.infos else {}
         if not env.agents:  # the episode ended for everyone: start the next at once
             infos = {"final_observation": obs, "final_info": infos}
             obs, reset_infos = self.reset(None)
@@ -152,9 +172,9 @@ class _VectorBase:
 class SyncVectorEnv(_VectorBase):
     """The matches of a vector environment stepped one after another in this process."""
 
-    def __init__(self, num_envs: int, env_fn: Callable[[], Any]) -> None:
+    def __init__(self, num_envs: int, env_fn: Callable[[], Any], infos: bool = True) -> None:
         self.num_envs = _check_num_envs(num_envs)
-        self._slots = [_Slot(env_fn()) for _ in range(self.num_envs)]
+        self._slots = [_Slot(env_fn(), infos) for _ in range(self.num_envs)]
         first = self._slots[0].env
         self.possible_agents = list(first.possible_agents)
         self.observation_space = first.observation_space(self.possible_agents[0])
@@ -184,10 +204,10 @@ def _gather(results: list[tuple]) -> tuple[np.ndarray, np.ndarray, np.ndarray, n
     return np.stack(obs), np.stack(rewards), np.stack(terminated), np.stack(truncated), list(infos)
 
 
-def _worker(connection: Any, env_fn: Callable[[], Any], count: int) -> None:
+def _worker(connection: Any, env_fn: Callable[[], Any], count: int, infos: bool) -> None:
     """A worker process: builds ``count`` matches and serves reset/step/close requests."""
     try:
-        slots = [_Slot(env_fn()) for _ in range(count)]
+        slots = [_Slot(env_fn(), infos) for _ in range(count)]
         first = slots[0].env
         agent = first.possible_agents[0]
         connection.send(("ok", (list(first.possible_agents), first.observation_space(agent),
@@ -232,7 +252,7 @@ class SubprocVectorEnv(_VectorBase):
     """The matches of a vector environment spread over worker processes, stepped at once."""
 
     def __init__(self, num_envs: int, env_fn: Callable[[], Any], processes: int = 2,
-                 context: str = "spawn") -> None:
+                 context: str = "spawn", infos: bool = True) -> None:
         self.num_envs = _check_num_envs(num_envs)
         if not 1 <= processes <= self.num_envs:
             raise ValueError(f"processes must be between 1 and num_envs={self.num_envs}, got {processes}")
@@ -243,7 +263,7 @@ class SubprocVectorEnv(_VectorBase):
         self.closed = False
         for count in counts:
             parent, child = ctx.Pipe()
-            process = ctx.Process(target=_worker, args=(child, env_fn, count), daemon=True)
+            process = ctx.Process(target=_worker, args=(child, env_fn, count, infos), daemon=True)
             process.start()
             child.close()
             self._connections.append(parent)

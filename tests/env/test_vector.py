@@ -7,6 +7,7 @@ import functools
 
 import numpy as np
 import pytest
+from pettingzoo.utils import BaseParallelWrapper
 
 from soccer_sim.env import parallel_env
 from soccer_sim.env.vector import SubprocVectorEnv, SyncVectorEnv, vector_env
@@ -105,6 +106,36 @@ def test_seed_list_and_high_level_actions() -> None:
             vector.step(np.zeros((2, 11)))
     assert vector.possible_agents[0] == "right_0"
     _assert_match_equals_single(out, 1, _single_run(4, [a[1] for a in actions], options))
+
+
+class _DoubledRewards(BaseParallelWrapper):
+    """A wrapper the vector environment must go through (it has no batched interface)."""
+
+    def step(self, actions):
+        observations, rewards, terminations, truncations, infos = self.env.step(actions)
+        return observations, {a: 2 * r for a, r in rewards.items()}, terminations, truncations, infos
+
+
+def _doubled(**options):
+    return _DoubledRewards(parallel_env(**options))
+
+
+def test_uneven_scenario_wrapped_environments_and_no_infos() -> None:
+    options = {"scenario": "3-vs-1-with-keeper", "controlled": "both", "rewards": "dense", "max_cycles": 40}
+    actions = _actions(60, 2, agents=5, seed=4)
+    with vector_env(2, **options) as vector:
+        assert vector.possible_agents == ["left_0", "left_1", "left_2", "right_0", "right_1"]
+        out = _vector_run(vector, 9, actions)
+    for e in range(2):
+        _assert_match_equals_single(out, e, _single_run(9 + e, [a[e] for a in actions], options))
+    ended = [row[4][e] for row in out[1:] for e in range(2) if "final_info" in row[4][e]]
+    assert ended and all(info["final_info"]["left_0"]["episode_goals"].shape == (2,) for info in ended)
+    assert any(row[1].any() for row in out[1:])  # the dense terms reward something
+    with vector_env(2, env_fn=functools.partial(_doubled, **options), infos=False) as vector:
+        doubled = _vector_run(vector, 9, actions)
+    for got, want in zip(doubled[1:], out[1:]):
+        assert np.array_equal(got[0], want[0]) and np.allclose(got[1], 2 * want[1])
+        assert all(info == {} or set(info) == {"final_observation", "final_info"} for info in got[4])
 
 
 def test_bad_input_is_named() -> None:
