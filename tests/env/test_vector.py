@@ -180,3 +180,17 @@ def test_spawned_workers_give_the_same_as_single_environments() -> None:
         out = _vector_run(vector, 20, actions)
     for e in range(4):
         _assert_match_equals_single(out, e, _single_run(20 + e, [a[e] for a in actions], OPTIONS))
+
+
+@pytest.mark.slow  # starts a worker process
+def test_bench_env_reports_the_throughput_of_every_way(capsys) -> None:
+    from experiments.cli import main
+
+    assert main(["bench", "env", "--cycles", "30", "--repeats", "1", "--envs", "2", "--processes", "1"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    rows = {line.split("\t")[0]: line.split("\t")[1:] for line in lines if "\t" in line}
+    for label in ("single environment (dict API)", "single environment, step_arrays",
+                  "vector environment, 2 matches in process", "vector environment, 2 matches on 1 process"):
+        matches, steps, agent_steps, ratio = rows[label]
+        assert float(steps.replace(",", "")) > 0
+        assert float(agent_steps.replace(",", "")) == pytest.approx(22 * float(steps.replace(",", "")), rel=0.01)
