@@ -22,7 +22,8 @@ def main(cycles: int = 1000) -> None:
         observations, rewards, terminations, truncations, infos = env.step(actions)
         for agent, reward in rewards.items():
             totals[agent] += reward
-    print(f"after {cycles} cycles: score {infos['left_0']['score']}, reward of left_0 {totals['left_0']:+.0f}")
+    score = tuple(infos["left_0"]["score"].tolist())
+    print(f"after {cycles} cycles: score {score}, reward of left_0 {totals['left_0']:+.0f}")
 
 
 if __name__ == "__main__":

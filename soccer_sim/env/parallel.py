@@ -20,7 +20,7 @@ one row per agent in :attr:`possible_agents` order (left first): ``actions`` (N,
 the low-level mode, (N,) or (N, 1) integers for a discrete mode; ``step_arrays`` returns
 ``obs`` (N, D) float32, ``rewards`` (N,) float32, ``terminations`` and ``truncations`` (N,)
 bool, new arrays each call. ``action_masks()`` is the (N, A) int8 mask of a discrete mode,
-:meth:`infos` the dict infos on demand. Both interfaces drive the same episode and may be mixed.
+:meth:`current_infos` the dict infos on demand. Both interfaces drive the same episode and may be mixed.
 """
 
 from __future__ import annotations
@@ -135,7 +135,7 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
     # ------------------------------------------------------------------ episodes
     def reset(self, seed: int | None = None, options: dict | None = None) -> tuple[dict, dict]:
         self.reset_arrays(seed)
-        return self._observation_dict(), self.infos()
+        return self._observation_dict(), self.current_infos()
 
     def reset_arrays(self, seed: int | None = None) -> np.ndarray:
         """Start an episode (``seed``: None continues the environment's seed sequence) and
@@ -166,8 +166,7 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         self._steps = 0
         self._log = []
         self._done = (False, False)
-        self._info = EpisodeInfo(sizes[HOME], kw["event_texts"])
-        self._info.update(match, len(match.events))
+        self._info = EpisodeInfo(sizes[HOME], kw["event_texts"])  # the start is not a cycle played: no counts
         self._rewards.out[:] = 0.0
         self.agents = list(self.possible_agents)
         self._observe()
@@ -186,7 +185,7 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         rewards = dict(zip(agents, self._rewards.out.tolist()))
         terminated, truncated = self._done
         return (self._observation_dict(agents), rewards, dict.fromkeys(agents, terminated),
-                dict.fromkeys(agents, truncated), self.infos(agents))
+                dict.fromkeys(agents, truncated), self.current_infos(agents))
 
     def step_arrays(self, actions: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """One step from the (N, A) actions of all agents (see the module docstring); returns
@@ -300,7 +299,7 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         :attr:`possible_agents` order); None for the low-level mode, which has no mask."""
         return None if self._masks is None else self._masks.copy()
 
-    def infos(self, agents: list[str] | None = None) -> dict[str, dict[str, Any]]:
+    def current_infos(self, agents: list[str] | None = None) -> dict[str, dict[str, Any]]:
         """Every agent's info after the last reset or step (:mod:`soccer_sim.env.infos`)."""
         if self._match is None:
             raise RuntimeError("call reset() first")

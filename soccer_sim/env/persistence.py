@@ -32,11 +32,13 @@ class ReplayPickling:
         live = self._match is not None
         log = np.stack(self._log) if live and self._log else None
         return {"options": self._options.kwargs, "seeds": self._seeds, "match_seed": self._match_seed if live
-                else None, "log": log, "steps": self._steps if live else 0}
+                else None, "log": log, "steps": self._steps if live else 0,
+                "limits": (self.max_cycles, self.end_on_goal)}
 
     def __setstate__(self, state: dict[str, Any]) -> None:
         self.__init__(**state["options"])
         self._seeds = state["seeds"]
+        self.max_cycles, self.end_on_goal = state["limits"]  # as set on the original (PettingZoo's tests do)
         if state["match_seed"] is None:
             return
         self._start(state["match_seed"], record=False)

@@ -142,11 +142,15 @@ class ObservationBuilder:
         self.scales = Scales.of(config)
         self.low, self.high = observation_bounds(k, config)
         self.out = np.zeros((n, self.size), dtype=np.float32)
+        self._goalie = np.zeros(n, dtype=np.float32)
         if 0 <= goalie < n:
-            self.out[goalie, 5] = 1.0
-        self._mates = slice(12, 12 + 4 * n)
-        self._opps = slice(12 + 4 * k, 12 + 4 * k + 4 * m)
+            self._goalie[goalie] = 1.0
+        self._row = np.zeros(self.size, dtype=np.float32)
+        """The values every player of the team shares (all but the own columns)."""
+        self._mate_rows = self._row[12:12 + 4 * n].reshape(n, 4)
+        self._opp_rows = self._row[12 + 4 * k:12 + 4 * k + 4 * m].reshape(m, 4)
         self._mode = 12 + 8 * k
+        self._tail = self._row[self._mode:]
         self._mates_present = slice(self._mode + _TAIL, self._mode + _TAIL + n)
         self._opps_present = slice(self._mode + _TAIL + k, self._mode + _TAIL + k + m)
 
@@ -155,32 +159,38 @@ class ObservationBuilder:
         when given (rows of a caller's array), else into a new array (safe to keep). Padding
         slots stay zero."""
         s = self.scales
-        buf = self.out
+        row, buf = self._row, self.out
+        # Everything but the own columns (0:6, 10:12) is the same for every player: one row, copied.
         pos = view.own_pos / s.length
         vel = view.own_vel / s.player_speed
         ball = view.ball / s.length
+        row[6:8] = ball
+        row[8:10] = view.ball_vel / s.ball_speed
+        mates, opps = self._mate_rows, self._opp_rows  # (n, 4) and (m, 4) windows on the row
+        mates[:, 0:2] = pos
+        mates[:, 2:4] = vel
+        opps[:, 0:2] = view.opp_pos / s.length
+        opps[:, 2:4] = view.opp_vel / s.player_speed
+        tail = self._tail
+        tail[:MODES] = 0.0
+        tail[int(view.play_mode)] = 1.0
+        tail[MODES] = float(view.mode_ours)
+        tail[MODES + 1] = view.score[0]
+        tail[MODES + 2] = view.score[1]
+        tail[MODES + 3] = view.cycle / s.total_cycles
+        tail[MODES + 4] = view.half
+        row[self._mates_present] = view.present
+        row[self._opps_present] = view.opp_present
+        buf[:] = row
         buf[:, 0:2] = pos
         buf[:, 2:4] = vel
         buf[:, 4] = view.stamina / s.stamina
-        buf[:, 6:8] = ball
-        buf[:, 8:10] = view.ball_vel / s.ball_speed
-        buf[:, 10:12] = ball - pos
-        buf[:, self._mates] = np.concatenate([pos, vel], axis=1).reshape(-1)
-        buf[:, self._opps] = np.concatenate([view.opp_pos / s.length, view.opp_vel / s.player_speed],
-                                            axis=1).reshape(-1)
-        tail = buf[:, self._mode:]
-        tail[:, :MODES] = 0.0
-        tail[:, int(view.play_mode)] = 1.0
-        tail[:, MODES] = float(view.mode_ours)
-        tail[:, MODES + 1] = view.score[0]
-        tail[:, MODES + 2] = view.score[1]
-        tail[:, MODES + 3] = view.cycle / s.total_cycles
-        tail[:, MODES + 4] = view.half
-        buf[:, self._mates_present] = view.present
-        buf[:, self._opps_present] = view.opp_present
+        buf[:, 5] = self._goalie
+        np.subtract(ball, pos, out=buf[:, 10:12])
         if out is None:
-            return np.clip(buf, self.low, self.high)
-        return np.clip(buf, self.low, self.high, out=out)
+            out = np.empty_like(buf)
+        np.maximum(buf, self.low, out=out)
+        return np.minimum(out, self.high, out=out)
 
 
 class ActionDecoder:

@@ -1,0 +1,105 @@
+"""PettingZoo's own checks (API, seeds, max cycles, render, state) over the environment's forms:
+controlled left, right and both, both action modes, every shipped scenario. A representative
+subset runs by default; the full matrix is marked slow."""
+
+from __future__ import annotations
+
+import itertools
+import warnings
+
+import numpy as np
+import pytest
+from pettingzoo.test import (api_test, max_cycles_test, parallel_api_test, parallel_seed_test, render_test,
+                             seed_test, state_test)
+
+import soccer_sim.env as soccer_env
+from soccer_sim.env import env, parallel_env
+from soccer_sim.scenarios import scenario_names
+
+pytestmark = pytest.mark.filterwarnings("ignore::UserWarning")
+CONTROLLED = ("left", "right", "both")
+MODES = ("low_level", "high_level")
+
+
+def _options(controlled: str, mode: str, scenario: str, max_cycles: int) -> dict:
+    return dict(controlled=controlled, action_mode=mode, scenario=scenario, opponent="chaser", max_cycles=max_cycles)
+
+
+def _fields_players(controlled: str, scenario: str) -> bool:
+    from soccer_sim.env.options import CONTROLLED as SIDES_OF
+    from soccer_sim.setup import MatchSetup
+
+    sizes = MatchSetup.resolve(None, scenario).sizes
+    return any(sizes[side] for side in SIDES_OF[controlled])
+
+
+def _check_all(controlled: str, mode: str, scenario: str, cycles: int) -> None:
+    options = _options(controlled, mode, scenario, cycles)
+    parallel_api_test(parallel_env(**options), num_cycles=cycles)
+    api_test(env(**options), num_cycles=cycles)
+    seed_test(lambda: env(**options), num_cycles=cycles)
+    parallel_seed_test(lambda: parallel_env(**options), num_cycles=cycles)
+    state_test(env(**options), parallel_env(**options), num_cycles=cycles)
+
+
+@pytest.mark.parametrize("controlled, mode, scenario", [
+    ("both", "low_level", "full-match"),
+    ("left", "high_level", "3-vs-1-with-keeper"),
+    ("right", "low_level", "run-to-score-with-keeper"),
+])
+def test_pettingzoo_checks_on_a_representative_subset(controlled: str, mode: str, scenario: str) -> None:
+    _check_all(controlled, mode, scenario, 12)
+
+
+def test_pettingzoo_checks_with_the_action_mask_in_the_observation() -> None:
+    options = dict(_options("left", "high_level", "counter-attack", 15), action_mask_in_observation=True)
+    parallel_api_test(parallel_env(**options), num_cycles=15)
+    api_test(env(**options), num_cycles=15)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("controlled, mode, scenario", list(itertools.product(CONTROLLED, MODES, scenario_names())))
+def test_pettingzoo_checks_on_every_form_and_scenario(controlled: str, mode: str, scenario: str) -> None:
+    if not _fields_players(controlled, scenario):
+        with pytest.raises(ValueError, match="fields no players on the controlled side"):
+            parallel_env(**_options(controlled, mode, scenario, 10))
+        return
+    _check_all(controlled, mode, scenario, 40)
+    # Every scenario's episodes run to their end (an end condition or the cycle limit), not only 40 steps.
+    environment = parallel_env(**{**_options(controlled, mode, scenario, None), "max_cycles": 3000})
+    environment.reset(seed=1)
+    while environment.agents:
+        *_, terminations, truncations, _ = environment.step(
+            {a: environment.action_space(a).sample() for a in environment.agents})
+    assert all(terminations.values()) or all(truncations.values())
+
+
+def test_max_cycles_and_render_as_a_user_calls_them(tmp_path) -> None:
+    max_cycles_test(soccer_env)
+
+    def make(render_mode=None):  # "human" works everywhere: a viewer, or a recording where no display is
+        return env(max_cycles=10, scenario="counter-attack", opponent="chaser", render_mode=render_mode,
+                   record_dir=str(tmp_path))
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        render_test(make)
+
+
+def test_many_steps_are_determined_by_the_seed_and_actions() -> None:
+    """PettingZoo's seed tests compare a few steps; this compares whole episodes of a scenario
+    with a randomised start (its start state drawn from the seed), and a long stretch of a match."""
+    def episode(seed: int, scenario: str, steps: int) -> list[np.ndarray]:
+        environment = parallel_env(scenario=scenario, controlled="both", max_cycles=steps)
+        seen = [environment.reset_arrays(seed=seed)]
+        rng = np.random.default_rng(7)
+        while environment.agents:
+            obs, rewards, *_ = environment.step_arrays(rng.uniform(-1, 1, (len(environment.possible_agents), 5)))
+            seen.append(np.concatenate([obs.ravel(), rewards, environment.state()]))
+        return seen
+
+    first, second = episode(5, "counter-attack", 400), episode(5, "counter-attack", 400)
+    assert len(first) == len(second) > 20 and all(np.array_equal(a, b) for a, b in zip(first, second))
+    assert not np.array_equal(first[0], episode(6, "counter-attack", 400)[0])  # the start is drawn from the seed
+    long_a, long_b = episode(2, "full-match", 800), episode(2, "full-match", 800)
+    assert len(long_a) == 801 and all(np.array_equal(a, b) for a, b in zip(long_a, long_b))
