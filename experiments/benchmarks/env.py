@@ -56,69 +56,81 @@ def _action_table(action_mode: str) -> np.ndarray:
     return rng.uniform(-1, 1, size=(997, 5)).astype(np.float32)
 
 
-def _time_arrays(args: argparse.Namespace, table: np.ndarray) -> float | None:
-    """Seconds per step of the single environment's batched ``step_arrays`` (None without it)."""
+def _dict_run(args: argparse.Namespace, table: np.ndarray, seed: int) -> float:
+    """Seconds per step of one run of the single environment's dict API."""
     from soccer_sim.env import parallel_env
 
-    times = []
-    for repeat in range(args.repeats + 1):
-        environment = parallel_env(controlled="both", max_cycles=args.cycles, action_mode=args.action_mode)
-        if not hasattr(environment, "step_arrays"):
-            return None
-        environment.reset(seed=repeat)
-        agents = len(environment.possible_agents)
-        rows = [table[(np.arange(agents) + k) % len(table)] for k in range(97)]
-        start, steps = time.perf_counter(), 0
-        while environment.agents:
-            environment.step_arrays(rows[steps % len(rows)])
-            steps += 1
-        if repeat:
-            times.append((time.perf_counter() - start) / steps)
-    return statistics.median(times)
+    environment = parallel_env(controlled="both", max_cycles=args.cycles, action_mode=args.action_mode)
+    policy = _ReplayedPolicy(table)
+    observations, _ = environment.reset(seed=seed)
+    start, steps = time.perf_counter(), 0
+    while environment.agents:
+        observations, *_ = environment.step({agent: policy.act(observations[agent]) for agent in environment.agents})
+        steps += 1
+    return (time.perf_counter() - start) / steps
 
 
-def _time_vector(args: argparse.Namespace, table: np.ndarray, processes: int) -> float:
-    """Seconds per match step of a vector environment of ``--envs`` matches (each match steps
-    ``--cycles`` times per run; auto-resets keep it going)."""
+def _arrays_run(args: argparse.Namespace, table: np.ndarray, seed: int) -> float | None:
+    """Seconds per step of one run of the batched ``step_arrays`` (None where the environment lacks it)."""
+    from soccer_sim.env import parallel_env
+
+    environment = parallel_env(controlled="both", max_cycles=args.cycles, action_mode=args.action_mode)
+    if not hasattr(environment, "step_arrays"):
+        return None
+    environment.reset_arrays(seed)
+    agents = len(environment.possible_agents)
+    rows = [table[(np.arange(agents) + k) % len(table)] for k in range(97)]
+    start, steps = time.perf_counter(), 0
+    while environment.agents:
+        environment.step_arrays(rows[steps % len(rows)])
+        steps += 1
+    return (time.perf_counter() - start) / steps
+
+
+def _vector_run(args: argparse.Namespace, table: np.ndarray, vector, seed: int) -> float:
+    """Seconds per match step of one run of ``--cycles`` steps of a vector environment."""
+    shape = (vector.num_envs, vector.num_agents)
+    rows = [table[(np.arange(np.prod(shape)) + k) % len(table)].reshape(*shape, *table.shape[1:]) for k in range(97)]
+    vector.reset(seed=seed)
+    start = time.perf_counter()
+    for step in range(args.cycles):
+        vector.step(rows[step % len(rows)])
+    return (time.perf_counter() - start) / (args.cycles * vector.num_envs)
+
+
+def _throughput(args: argparse.Namespace, table: np.ndarray) -> None:
+    """The throughput table; the ways run in turn within each repeat, so that a load on the
+    machine weighs on all of them alike."""
+    from experiments.reporting import Table
     from soccer_sim.env.vector import vector_env
 
-    times = []
-    with vector_env(args.envs, processes=min(processes, args.envs), infos=False, controlled="both",
-                    max_cycles=args.cycles + 1, action_mode=args.action_mode) as vector:
-        shape = (args.envs, vector.num_agents)
-        rows = [table[(np.arange(np.prod(shape)) + k) % len(table)].reshape(*shape, *table.shape[1:])
-                for k in range(97)]
-        for repeat in range(args.repeats + 1):
-            vector.reset(seed=repeat)
-            start = time.perf_counter()
-            for step in range(args.cycles):
-                vector.step(rows[step % len(rows)])
-            if repeat:
-                times.append((time.perf_counter() - start) / (args.cycles * args.envs))
-    return statistics.median(times)
-
-
-def _throughput(args: argparse.Namespace, table: np.ndarray, single_step: float) -> None:
-    from experiments.reporting import Table
-
     agents = 22
-    rows = [("single environment (dict API)", 1, single_step)]
-    arrays = _time_arrays(args, table)
-    rows.append(("single environment, step_arrays", 1, arrays))
-    rows.append((f"vector environment, {args.envs} matches in process", args.envs, _time_vector(args, table, 0)))
     workers = min(args.processes, args.envs)
-    rows.append((f"vector environment, {args.envs} matches on {workers} process{'es' * (workers != 1)}", args.envs,
-                 _time_vector(args, table, args.processes)))
-    out = Table(f"Throughput, 22 agents per match, {args.action_mode} actions "
-                f"({args.repeats} runs of {args.cycles} cycles per match, medians, wall time)",
+    options = {"infos": False, "controlled": "both", "max_cycles": args.cycles + 1, "action_mode": args.action_mode}
+    with vector_env(args.envs, **options) as local, vector_env(args.envs, processes=workers, **options) as remote:
+        ways = [("single environment (dict API)", 1, lambda seed: _dict_run(args, table, seed)),
+                ("single environment, step_arrays", 1, lambda seed: _arrays_run(args, table, seed)),
+                (f"vector environment, {args.envs} matches in process", args.envs,
+                 lambda seed: _vector_run(args, table, local, seed)),
+                (f"vector environment, {args.envs} matches on {workers} process{'es' * (workers != 1)}", args.envs,
+                 lambda seed: _vector_run(args, table, remote, seed))]
+        times: list[list[float | None]] = [[] for _ in ways]
+        for repeat in range(args.repeats + 1):  # the first is a warm-up
+            for k, (_, _, timed) in enumerate(ways):
+                seconds = timed(repeat)
+                if repeat:
+                    times[k].append(seconds)
+    medians = [None if None in t else statistics.median(t) for t in times]
+    out = Table(f"Throughput, 22 agents per match, {args.action_mode} actions ({args.repeats} runs of "
+                f"{args.cycles} cycles per match, in turn; medians, wall time)",
                 ["how", "matches", "steps / s", "agent-steps / s", "x single"], labels=1)
-    for label, matches, step in rows:
+    for (label, matches, _), step in zip(ways, medians):
         if step is None:
             out.rows.append([label, str(matches), "-", "-", "-"])
             continue
         out.rows.append([label, str(matches), f"{1.0 / step:,.0f}", f"{agents / step:,.0f}",
-                         f"{single_step / step:.2f}"])
-    if arrays is None:
+                         f"{medians[0] / step:.2f}"])
+    if medians[1] is None:
         out.caption = "step_arrays: not offered by this environment"
     out.print()
 
@@ -161,5 +173,5 @@ def run(args: argparse.Namespace) -> int:
                            "-" if np.isnan(plain_cycle) else f"{plain_cycle * 1e6:.0f}",
                            "-" if np.isnan(plain_cycle) else f"{env_step / plain_cycle:.2f}"])
     table_out.print()
-    _throughput(args, table, env_step)
+    _throughput(args, table)
     return 0

@@ -103,13 +103,13 @@ class _Slot:
                              "(leave action_mask_in_observation off: the masks are in the infos)")
         self.shape = space.shape
         # Looked up on the class: a wrapper forwarding attributes must not be bypassed.
-        self.arrays = all(hasattr(type(env), name) for name in ("step_arrays", "reset_arrays", "infos"))
+        self.arrays = all(hasattr(type(env), name) for name in ("step_arrays", "reset_arrays", "current_infos"))
         self.infos = infos
 
     def reset(self, seed: int | None) -> tuple[np.ndarray, dict]:
         if self.arrays:
             obs = self.env.reset_arrays(seed)
-            return obs, self.env.infos() if self.infos else {}
+            return obs, self.env.current_infos() if self.infos else {}
         observations, infos = self.env.reset(seed=seed)
         return self._stack(observations), infos if self.infos else {}
 
@@ -117,7 +117,7 @@ class _Slot:
         env = self.env
         if self.arrays:
             obs, reward, terminated, truncated = env.step_arrays(actions)
-            infos = env.infos() if self.infos else {}
+            infos = env.current_infos() if self.infos else {}
         else:
             live = env.agents
             observations, rewards, terminations, truncations, infos = env.step(

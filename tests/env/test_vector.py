@@ -66,6 +66,7 @@ def test_in_process_matches_equal_single_environments_across_an_auto_reset() -> 
     actions = _actions(30, 3)  # 12-cycle episodes: two automatic resets per match
     with vector_env(3, **OPTIONS) as vector:
         assert isinstance(vector, SyncVectorEnv)
+        assert all(slot.arrays for slot in vector._slots)  # the batched interface, not the dicts
         assert vector.num_agents == 11 and vector.possible_agents[0] == "left_0"
         assert vector.observation_space == parallel_env(**OPTIONS).observation_space("left_0")
         out = _vector_run(vector, 7, actions)
@@ -132,6 +133,7 @@ def test_uneven_scenario_wrapped_environments_and_no_infos() -> None:
     assert ended and all(info["final_info"]["left_0"]["episode_goals"].shape == (2,) for info in ended)
     assert any(row[1].any() for row in out[1:])  # the dense terms reward something
     with vector_env(2, env_fn=functools.partial(_doubled, **options), infos=False) as vector:
+        assert not any(slot.arrays for slot in vector._slots)  # through the wrapper's step
         doubled = _vector_run(vector, 9, actions)
     for got, want in zip(doubled[1:], out[1:]):
         assert np.array_equal(got[0], want[0]) and np.allclose(got[1], 2 * want[1])
