@@ -223,7 +223,7 @@ def _worker(connection: Any, env_fn: Callable[[], Any], count: int, infos: bool)
             break
         try:
             if command == "step":
-                reply = [slot.step(payload[k]) for k, slot in enumerate(slots)]
+                reply = _gather([slot.step(payload[k]) for k, slot in enumerate(slots)])  # few arrays to pickle
             elif command == "reset":
                 reply = [slot.reset(seed) for slot, seed in zip(slots, payload)]
             elif command == "close":
@@ -302,7 +302,9 @@ class SubprocVectorEnv(_VectorBase):
         """One cycle of every match (the workers step theirs at the same time)."""
         array = self._check_actions(actions)
         self._send_all("step", self._blocks(array))
-        return _gather([item for block in self._receive_all() for item in block])
+        blocks = self._receive_all()
+        return (*(np.concatenate([block[k] for block in blocks]) for k in range(4)),
+                [info for block in blocks for info in block[4]])
 
     def close(self) -> None:
         """Ends the worker processes (safe to call twice)."""
