@@ -79,3 +79,47 @@ def test_rllib_setup_trains_a_shared_policy() -> None:
 
     returns = main(iterations=1, batch=256)
     assert len(returns) == 1 and math.isfinite(returns[0])
+
+
+LIBRARY_CASES = {
+    "full match, both, low level": {"controlled": "both", "max_cycles": 40},
+    "full match, left, high level": {"controlled": "left", "max_cycles": 40, "action_mode": "high_level"},
+    "empty-goal": {"scenario": "empty-goal", "controlled": "left", "rewards": "dense"},
+    "3-vs-1-with-keeper, both": {"scenario": "3-vs-1-with-keeper", "controlled": "both", "rewards": "dense",
+                                 "max_cycles": 40},
+    "counter-attack, high level": {"scenario": "counter-attack", "controlled": "left", "max_cycles": 40,
+                                   "action_mode": "high_level"},
+}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("case", list(LIBRARY_CASES))
+def test_torchrl_specs_and_a_tianshou_collector_over_sides_modes_and_scenarios(case) -> None:
+    pytest.importorskip("torchrl")
+    pytest.importorskip("tianshou")
+    from tianshou.algorithm.algorithm_base import RandomActionPolicy
+    from tianshou.algorithm.multiagent.marl import MultiAgentPolicy
+    from tianshou.algorithm.random import MARLRandomDiscreteMaskedOffPolicyAlgorithm
+    from tianshou.data import Collector, VectorReplayBuffer
+    from tianshou.env import DummyVectorEnv, PettingZooEnv
+    from torchrl.envs.utils import check_env_specs
+
+    import soccer_sim.env as soccer_env
+    from examples.torchrl_setup import make_env
+
+    options = LIBRARY_CASES[case]
+    wrapped = make_env(**options)
+    check_env_specs(wrapped)
+    assert wrapped.rollout(60, break_when_any_done=False).batch_size[0] == 60
+    make = lambda: PettingZooEnv(soccer_env.env(**options))  # noqa: E731
+    envs = DummyVectorEnv([make, make])
+    probe = make()
+    if options.get("action_mode") == "high_level":  # integer actions within the mask
+        shared = MARLRandomDiscreteMaskedOffPolicyAlgorithm(probe.action_space).policy
+        policy = MultiAgentPolicy({agent: shared for agent in probe.agents})
+    else:
+        policy = RandomActionPolicy(probe.action_space)
+    collector = Collector(policy, envs, VectorReplayBuffer(4000, 2))
+    collector.reset()
+    assert collector.collect(n_step=400).n_collected_steps == 400
+    envs.close()
