@@ -3,7 +3,7 @@ SuperSuit) on a curriculum scenario, save the reward curve, and compare the trai
 goals with a random policy's.
 
     pip install -e ".[rl]"
-    python examples/ppo_shared_policy.py --timesteps 500000 --out ppo-empty-goal
+    nice -n 10 python examples/ppo_shared_policy.py --timesteps 600000 --out ppo-empty-goal
 
 Parameter sharing: SuperSuit's ``pettingzoo_env_to_vec_env_v1`` turns each agent of each
 match into one slot of a Stable-Baselines3 vector environment, so one network acts for all of
@@ -165,7 +165,7 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     parser.add_argument("--scenario", default="empty-goal", help="a scenario of soccer_sim/scenarios (default: %(default)s)")
     parser.add_argument("--opponent", default=None, help="team playing the scenario's other side (default: the env's)")
     parser.add_argument("--action-mode", default="low_level", choices=("low_level", "high_level"))
-    parser.add_argument("--timesteps", type=int, default=500_000, help="agent steps of training (default: %(default)s)")
+    parser.add_argument("--timesteps", type=int, default=600_000, help="agent steps of training (default: %(default)s)")
     parser.add_argument("--envs", type=int, default=8, help="matches played at once (default: %(default)s)")
     parser.add_argument("--processes", type=int, default=0,
                         help="SuperSuit worker processes (default 0: all matches in this process)")

@@ -5,9 +5,9 @@
 
 RLlib's ``ParallelPettingZooEnv`` turns the parallel environment into a ``MultiAgentEnv``;
 ``policy_mapping_fn`` maps every agent to the one policy ``shared``. The first iteration
-includes Ray's start-up (tens of seconds on a small machine). For the high-level actions,
-``action_mode="high_level", action_mask_in_observation=True`` gives RLlib the
-``{"observation", "action_mask"}`` dict observations its action-masking modules read.
+includes Ray's start-up (tens of seconds on a small machine). For the high-level actions with
+an action-masking RLModule, ``action_mode="high_level", action_mask_in_observation=True`` makes
+the observations ``{"observation", "action_mask"}`` dicts.
 """
 
 from __future__ import annotations
