@@ -12,8 +12,10 @@ Rewards: :mod:`soccer_sim.env.rewards` (goals by default; named dense terms). In
 :mod:`soccer_sim.env.global_state` (``state()`` and the ``state_space`` attribute).
 
 An episode ends for all agents together: *terminated* when the match is over (its time, or
-the scenario's end conditions and cycle limit; or at the first goal with ``end_on_goal``),
-*truncated* after ``max_cycles`` steps (:meth:`soccer_sim.ending.MatchEnd.episode_end`).
+one of the scenario's end conditions; or at the first goal with ``end_on_goal``), *truncated*
+after ``max_cycles`` steps or at the scenario's ``cycle_limit`` (time limits that cut an
+episode short, which learners should bootstrap through;
+:meth:`soccer_sim.ending.MatchEnd.episode_end`).
 
 **Batched interface** (no dicts): ``reset_arrays(seed)`` and ``step_arrays(actions)`` with
 one row per agent in :attr:`possible_agents` order (left first): ``actions`` (N, 5) floats for
@@ -134,6 +136,8 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
 
     # ------------------------------------------------------------------ episodes
     def reset(self, seed: int | None = None, options: dict | None = None) -> tuple[dict, dict]:
+        """Start an episode: (observations, infos) by agent. ``seed``: None or a non-negative
+        integer (None continues the environment's seed sequence); ``options`` is unused."""
         self.reset_arrays(seed)
         return self._observation_dict(), self.current_infos()
 
@@ -172,6 +176,8 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         self._observe()
 
     def step(self, actions: dict[str, Any]) -> tuple[dict, dict, dict, dict, dict]:
+        """One cycle from every live agent's action: (observations, rewards, terminations,
+        truncations, infos) by agent; a ValueError naming the agent for a bad action."""
         self._check_live()
         self._check_keys(actions)
         values = [actions[agent] for agent in self.possible_agents]
@@ -206,8 +212,10 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         terminated, truncated = self._done
         return (self._obs.copy(), self._rewards.out.copy(), np.full(n, terminated), np.full(n, truncated))
 
-    def _advance(self, rows: np.ndarray) -> None:
-        """Play one cycle with the checked actions ``rows`` of every agent."""
+    def _advance(self, rows: np.ndarray, observe: bool = True) -> None:
+        """Play one cycle with the checked actions ``rows`` of every agent (``observe=False``:
+        refresh the teams' views only, without building observations and masks, when
+        replaying steps nobody looks at)."""
         match = self._match
         state = match.state
         for side in self.sides:
@@ -228,10 +236,13 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         self._steps += 1
         self._info.update(match, mark)
         self._rewards.after(state, match.events, mark)
-        self._done = self.setup.end.episode_end(state, goal_scored=int(state.score.sum()) != score,
-                                                end_on_goal=self.end_on_goal, steps=self._steps,
-                                                max_cycles=self.max_cycles)
-        self._observe()
+        terminated, truncated = self.setup.end.episode_end(state, goal_scored=int(state.score.sum()) != score,
+                                                           end_on_goal=self.end_on_goal, steps=self._steps,
+                                                           max_cycles=self.max_cycles)
+        if terminated and match.end_reason == "cycle_limit":
+            terminated, truncated = False, True  # the scenario's time limit: a cut, not an outcome
+        self._done = (terminated, truncated)
+        self._observe(build=observe)
         if self._done[0] or self._done[1]:
             self.agents = []
             if self.render_mode == "human":
@@ -274,11 +285,13 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
             check_action(agent, action)
 
     # ------------------------------------------------------------------ what agents see
-    def _observe(self) -> None:
+    def _observe(self, build: bool = True) -> None:
         match = self._match
         state = match.state
         for side in self.sides:
             view = match.frames[side].update_view(state, state.attack_direction(side))
+            if not build:
+                continue
             block = self._blocks[side]
             self._builders[side].build(view, out=self._obs[block])
             if self._masks is not None:
@@ -324,6 +337,8 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
 
     # ------------------------------------------------------------------ rendering
     def render(self) -> np.ndarray | None:
+        """The top view as an (H, W, 3) uint8 image (``rgb_array``), or None (``human``: the
+        match streams to the viewer, or its file, as it plays)."""
         if self.render_mode is None:
             import gymnasium
 
@@ -338,6 +353,7 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         return None  # "human": the match streams to the viewer (or its file) as it plays
 
     def close(self) -> None:
+        """End the episode (a human recording is flushed) and drop the match."""
         if self._match is not None and self.agents and self.render_mode == "human":
             self._match.finish()  # flush the recording
         self._match = None

@@ -10,10 +10,11 @@ them (one (N, A) array per step). Unpickling builds the environment anew, starts
 match and replays the actions: the copy is in exactly the state of the original (the same
 observations, rewards, infos and ends, bit for bit, from then on).
 
-The cost: a few MB per full match of actions in the pickle, and the replay's time on
-unpickling (each step as long as a step of the original: a whole 6,000-cycle match takes
-about a second). ``copy.deepcopy`` goes the same way. A ``render_mode="human"`` copy does
-not record the replayed part again.
+The cost: the actions in the pickle (1.3 MB for 3,000 steps of 11 agents), and the replay's
+time on unpickling: the match's cycles played again, without building the observations
+between (after 3,000 steps a copy took 0.26 s with both sides controlled, 0.37 s against the
+default opponent, on a shared 2-core machine). ``copy.deepcopy`` goes the same way. A
+``render_mode="human"`` copy does not record the replayed part again.
 """
 
 from __future__ import annotations
@@ -42,6 +43,6 @@ class ReplayPickling:
         if state["match_seed"] is None:
             return
         self._start(state["match_seed"], record=False)
-        log = state["log"]
-        for k in range(state["steps"]):
-            self._advance(log[k])
+        log, steps = state["log"], state["steps"]
+        for k in range(steps):
+            self._advance(log[k], observe=k == steps - 1)

@@ -28,10 +28,12 @@ def _as_callable(policy: Any, where: str) -> Callable[[np.ndarray], Any]:
 
 class PolicyTeam:
     """A team playing ``policy`` for every player (see the module docstring); ``name`` is
-    how results name it."""
+    how results name it; ``observation_slots``: as the environment's option of that name (the
+    policy must see the layout it was trained on; default 11 slots a side)."""
 
-    def __init__(self, policy: Any, name: str = "policy") -> None:
+    def __init__(self, policy: Any, name: str = "policy", observation_slots: int | None = None) -> None:
         self.name = name
+        self.observation_slots = observation_slots
         if isinstance(policy, dict):
             self._policies = {int(k): _as_callable(p, f"policy for player {k}") for k, p in policy.items()}
             self._shared = None
@@ -45,7 +47,11 @@ class PolicyTeam:
         if missing:
             raise TeamError(self.name, f"no policy for players {missing}")
         self.n = n
-        self._builder = ObservationBuilder(n, side_info.opponents, side_info.goalie_index, config)
+        try:
+            self._builder = ObservationBuilder(n, side_info.opponents, side_info.goalie_index, config,
+                                               self.observation_slots)
+        except ValueError as exc:
+            raise TeamError(self.name, str(exc)) from None
         self._decoder = ActionDecoder(n, side_info.goalie_index, config)
         self._actions = np.zeros((n, ACTION_SIZE))
         self._names = [f"player {i}" for i in range(n)]

@@ -13,7 +13,6 @@ from examples.scripted_team import ScriptedTeam, scripted_policy
 from experiments.cli import main
 from soccer_sim import EventKind, MatchConfig, TeamError, run_match
 from soccer_sim.env import PolicyTeam, env, observation_size, parallel_env
-from soccer_sim.replay import ReplayError
 
 pytestmark = pytest.mark.filterwarnings("ignore:Agent's (minimum|maximum) observation space value")
 
@@ -170,6 +169,14 @@ def test_policy_team_plays_matches_and_reports_failing_policies() -> None:
         run_match(PolicyTeam(broken, name="broken"), "idle", config=MatchConfig(max_cycles=5))
     with pytest.raises(TeamError, match="action of player 0 must have shape"):
         run_match(PolicyTeam(lambda o: np.zeros(3)), "idle", config=MatchConfig(max_cycles=5))
+    with pytest.raises(TeamError, match="observation_slots must be an integer of at least the larger side"):
+        run_match(PolicyTeam(scripted_policy, observation_slots=4), "idle", config=MatchConfig(max_cycles=5))
+    environment = parallel_env(scenario="3-vs-1-with-keeper", controlled="left", opponent="idle", observation_slots=3)
+    observations, _ = environment.reset(seed=0)
+    seen = []
+    team = PolicyTeam(lambda o: seen.append(o) or np.zeros(5), observation_slots=3)
+    run_match(team, "idle", seed=environment._match_seed, scenario="3-vs-1-with-keeper")
+    assert np.array_equal(seen[0], observations["left_0"])  # the same match: the same numbers
     with pytest.raises(TeamError, match=r"no policy for players \[1, 2"):
         run_match(PolicyTeam({0: scripted_policy}), "idle", config=MatchConfig(max_cycles=5))
 

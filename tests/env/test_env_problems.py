@@ -24,6 +24,7 @@ pytestmark = pytest.mark.filterwarnings("ignore:Agent's (minimum|maximum) observ
 
 def _random_steps(environment, steps: int, seed: int = 0) -> list:
     rng = np.random.default_rng(seed)
+    environment.action_space(environment.possible_agents[0]).seed(seed)  # the one space of every agent
     seen = []
     for _ in range(steps):
         if not environment.agents:
@@ -53,7 +54,7 @@ def test_scenarios_size_the_sides_and_pad_the_observations(tmp_path: Path) -> No
     # An uneven scenario steps to its own end; a file and a Scenario object work as the name does.
     while environment.agents:
         *_, terminations, truncations, _ = environment.step({a: np.ones(5, np.float32) for a in environment.agents})
-    assert all(terminations.values()) and environment._match.end_reason in ("goal", "out", "lost", "cycle_limit")
+    assert all(terminations.values()) and environment._match.end_reason in ("goal", "out", "lost")
     path = save_scenario(get_scenario("counter-attack"), tmp_path / "mine.json")
     for scenario in (str(path), get_scenario("counter-attack")):
         assert parallel_env(scenario=scenario, controlled="left").possible_agents == [f"left_{i}" for i in range(4)]
@@ -67,9 +68,25 @@ def test_scenarios_size_the_sides_and_pad_the_observations(tmp_path: Path) -> No
     assert small.observation_space("left_0").shape == (observation_size(3, 3),)
 
 
+def test_a_scenario_ends_terminated_on_its_conditions_and_truncated_at_its_cycle_limit() -> None:
+    environment = parallel_env(scenario="empty-goal", action_mode="high_level")
+    for action, reason in ((12, "cycle_limit"), (None, "goal")):  # idle all along; intercept and shoot
+        environment.reset(seed=3)
+        steps = 0
+        while environment.agents:
+            choice = action if action is not None else (10 if environment.action_masks()[0, 10] else 9)
+            _, _, terminations, truncations, _ = environment.step({"left_0": choice})
+            steps += 1
+        assert environment._match.end_reason == reason
+        assert (terminations["left_0"], truncations["left_0"]) == ((False, True) if reason == "cycle_limit"
+                                                                  else (True, False))
+        assert steps == 300 if reason == "cycle_limit" else steps < 300
+
+
 def test_infos_hold_only_numbers_and_fixed_shape_arrays() -> None:
     environment = parallel_env(scenario="3-vs-1-with-keeper", controlled="both", action_mode="high_level")
     _, infos = environment.reset(seed=4)
+    environment.action_space("left_0").seed(4)  # one space for all agents: the sampled actions repeat
     shapes = {key: np.shape(value) for key, value in infos["left_0"].items()}
     assert set(shapes) >= {"play_mode", "cycle", "score", "events", "episode_goals", "episode_shots",
                            "episode_passes", "episode_possession", "action_mask"}

@@ -95,7 +95,7 @@ def test_step_arrays_plays_the_same_episode_as_step(mode: str) -> None:
         assert np.array_equal(arrays[1], np.array([rewards[a] for a in one.possible_agents], np.float32))
         assert arrays[2].dtype == bool and arrays[2].tolist() == [terminations[a] for a in one.possible_agents]
         assert arrays[3].tolist() == [truncations[a] for a in one.possible_agents]
-    assert not two.agents and arrays[2].all()
+    assert not two.agents and (arrays[2] | arrays[3]).all()
     with pytest.raises(RuntimeError, match="call reset"):
         two.step_arrays(actions)
 

@@ -6,6 +6,9 @@ from __future__ import annotations
 
 import itertools
 import warnings
+from dataclasses import replace
+from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -14,7 +17,7 @@ from pettingzoo.test import (api_test, max_cycles_test, parallel_api_test, paral
 
 import soccer_sim.env as soccer_env
 from soccer_sim.env import env, parallel_env
-from soccer_sim.scenarios import scenario_names
+from soccer_sim.scenarios import get_scenario, scenario_names
 
 pytestmark = pytest.mark.filterwarnings("ignore::UserWarning")
 CONTROLLED = ("left", "right", "both")
@@ -33,13 +36,31 @@ def _fields_players(controlled: str, scenario: str) -> bool:
     return any(sizes[side] for side in SIDES_OF[controlled])
 
 
-def _check_all(controlled: str, mode: str, scenario: str, cycles: int) -> None:
+def _seeded(make, **options):
+    """An environment (and its action space) already seeded, so that the checks' own
+    ``reset()`` without a seed and their sampled actions are repeatable."""
+    environment = make(**options)
+    environment.reset(seed=0)
+    environment.action_space(environment.possible_agents[0]).seed(0)  # one space object for all agents
+    return environment
+
+
+def _check_all(controlled: str, mode: str, scenario: str, cycles: int, record_dir: Path) -> None:
     options = _options(controlled, mode, scenario, cycles)
     parallel_api_test(parallel_env(**options), num_cycles=cycles)
     api_test(env(**options), num_cycles=cycles)
     seed_test(lambda: env(**options), num_cycles=cycles)
     parallel_seed_test(lambda: parallel_env(**options), num_cycles=cycles)
     state_test(env(**options), parallel_env(**options), num_cycles=cycles)
+    # max_cycles_test needs episodes of at least 4 steps: the scenario without its end conditions
+    # (a corner may be cleared in 2 cycles), so that the truncation is what ends them.
+    fixed = {**options, "max_cycles": None, "scenario": replace(get_scenario(scenario), end_on=())}
+    max_cycles_test(SimpleNamespace(parallel_env=lambda **kw: _seeded(parallel_env, **{**fixed, **kw}),
+                                    env=lambda **kw: _seeded(env, **{**fixed, **kw})))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # "human" without a display: recorded into record_dir, with a warning
+        render_test(lambda render_mode=None: _seeded(env, **options, render_mode=render_mode,
+                                                     record_dir=str(record_dir)))
 
 
 @pytest.mark.parametrize("controlled, mode, scenario", [
@@ -47,8 +68,9 @@ def _check_all(controlled: str, mode: str, scenario: str, cycles: int) -> None:
     ("left", "high_level", "3-vs-1-with-keeper"),
     ("right", "low_level", "run-to-score-with-keeper"),
 ])
-def test_pettingzoo_checks_on_a_representative_subset(controlled: str, mode: str, scenario: str) -> None:
-    _check_all(controlled, mode, scenario, 12)
+def test_pettingzoo_checks_on_a_representative_subset(controlled: str, mode: str, scenario: str,
+                                                     tmp_path: Path) -> None:
+    _check_all(controlled, mode, scenario, 12, tmp_path)
 
 
 def test_pettingzoo_checks_with_the_action_mask_in_the_observation() -> None:
@@ -59,12 +81,13 @@ def test_pettingzoo_checks_with_the_action_mask_in_the_observation() -> None:
 
 @pytest.mark.slow
 @pytest.mark.parametrize("controlled, mode, scenario", list(itertools.product(CONTROLLED, MODES, scenario_names())))
-def test_pettingzoo_checks_on_every_form_and_scenario(controlled: str, mode: str, scenario: str) -> None:
+def test_pettingzoo_checks_on_every_form_and_scenario(controlled: str, mode: str, scenario: str,
+                                                     tmp_path: Path) -> None:
     if not _fields_players(controlled, scenario):
         with pytest.raises(ValueError, match="fields no players on the controlled side"):
             parallel_env(**_options(controlled, mode, scenario, 10))
         return
-    _check_all(controlled, mode, scenario, 40)
+    _check_all(controlled, mode, scenario, 40, tmp_path)
     # Every scenario's episodes run to their end (an end condition or the cycle limit), not only 40 steps.
     environment = parallel_env(**{**_options(controlled, mode, scenario, None), "max_cycles": 3000})
     environment.reset(seed=1)
