@@ -30,7 +30,7 @@ def main() -> dict:
 
     env = make_env(scenario="3-vs-1-with-keeper", controlled="both", rewards="dense", max_cycles=100)
     check_env_specs(env)  # raises if a tensor does not match its spec
-    rollout = env.rollout(50)  # random actions from the action spec
+    rollout = env.rollout(50, break_when_any_done=False)  # random actions; ended episodes restart
     summary = {"steps": rollout.batch_size[0],
                "left_reward": float(rollout["next", "left", "reward"].sum()),
                "right_reward": float(rollout["next", "right", "reward"].sum()),
