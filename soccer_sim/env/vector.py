@@ -39,6 +39,10 @@ builds its matches itself from ``env_fn`` (default: ``parallel_env(**env_kwargs)
 must therefore pickle: a module-level function or a ``functools.partial`` of one, with a team
 named by its registered name rather than passed as an object. Close a subprocess vector
 environment (``close()`` or a ``with`` block) to end its workers.
+
+Bad actions (the wrong shape, a NaN, a discrete choice out of range) are refused with a
+ValueError naming the match and the agent before any match steps; an error raised inside a
+worker is raised in the caller with its own type, the worker's traceback chained to it.
 """
 
 from __future__ import annotations
@@ -160,6 +164,20 @@ class _VectorBase:
             raise ValueError(f"actions must have shape {shape} (matches, agents, action), got {array.shape}")
         if space.shape == () and array.dtype.kind not in "iu":
             raise ValueError(f"actions must be integers for a discrete action space, got dtype {array.dtype}")
+        # Checked here, before any match steps, so that a bad action leaves every match where it was.
+        if space.shape == ():
+            bad = (array < 0) | (array >= space.n)
+            what = f"in 0..{space.n - 1}"
+        else:
+            try:
+                bad = ~np.isfinite(array.astype(np.float64)).reshape(*shape[:2], -1).all(axis=2)
+            except (TypeError, ValueError):
+                raise ValueError(f"actions must be numbers, got dtype {array.dtype}") from None
+            what = "finite"
+        if bad.any():
+            e, k = (int(i) for i in np.argwhere(bad)[0])
+            raise ValueError(f"action of {self.possible_agents[k]} in match {e} must be {what}, "
+                             f"got {array[e, k].tolist()}")
         return array
 
     def __enter__(self):

@@ -105,6 +105,10 @@ def test_seed_list_and_high_level_actions() -> None:
         out = _vector_run(vector, [11, 4], actions)
         with pytest.raises(ValueError, match="must be integers"):
             vector.step(np.zeros((2, 11)))
+        too_big = np.zeros((2, 11), dtype=np.int64)
+        too_big[0, 3] = vector.action_space.n
+        with pytest.raises(ValueError, match=rf"action of right_3 in match 0 must be in 0..{vector.action_space.n - 1}"):
+            vector.step(too_big)
     assert vector.possible_agents[0] == "right_0"
     _assert_match_equals_single(out, 1, _single_run(4, [a[1] for a in actions], options))
 
@@ -153,10 +157,26 @@ def test_bad_input_is_named() -> None:
         vector.reset(seed=0)
         with pytest.raises(ValueError, match=r"must have shape \(2, 11, 5\)"):
             vector.step(np.zeros((2, 10, 5)))
+        before = [slot.env.state().copy() for slot in vector._slots]
         bad = np.zeros((2, 11, 5))
         bad[1, 4, 0] = np.nan
-        with pytest.raises(ValueError, match="left_4"):  # the single environment's own message
+        with pytest.raises(ValueError, match="action of left_4 in match 1 must be finite"):
             vector.step(bad)
+        # Refused before any match stepped: both are where they were.
+        assert all(np.array_equal(b, slot.env.state()) for b, slot in zip(before, vector._slots))
+
+
+class _RefusesKicks(BaseParallelWrapper):
+    """Raises a LookupError (an error of the worker's own making) for any kick."""
+
+    def step(self, actions):
+        if any(np.any(np.asarray(action)[2:4] != 0) for action in actions.values()):
+            raise LookupError("kicks refused")
+        return self.env.step(actions)
+
+
+def _refusing(**options):
+    return _RefusesKicks(parallel_env(**options))
 
 
 def test_an_error_in_a_worker_is_raised_in_the_parent_with_its_type() -> None:
@@ -168,9 +188,16 @@ def test_an_error_in_a_worker_is_raised_in_the_parent_with_its_type() -> None:
         vector.reset(seed=1)
         bad = np.zeros((2, 11, 5))
         bad[1, 7, 2] = np.inf
-        with pytest.raises(ValueError, match="left_7"):
+        with pytest.raises(ValueError, match="left_7 in match 1"):
             vector.step(bad)
         vector.step(np.zeros((2, 11, 5)))  # the workers live on after an error
+    with vector_env(2, processes=2, context="fork", env_fn=functools.partial(_refusing, **OPTIONS)) as vector:
+        vector.reset(seed=1)
+        kick = np.zeros((2, 11, 5))
+        kick[1, 2, 3] = 0.5
+        with pytest.raises(LookupError, match="kicks refused"):
+            vector.step(kick)
+        vector.step(np.zeros((2, 11, 5)))
     with pytest.raises(RuntimeError, match="closed"):
         vector.step(np.zeros((2, 11, 5)))
 
