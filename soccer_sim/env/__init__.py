@@ -38,7 +38,8 @@ Options (keyword arguments of both):
     "rgb_array" or "human" (a rerun viewer, or an ``.rrd`` file in ``record_dir`` where no
     display is; :mod:`soccer_sim.env.render`).
 
-See :mod:`soccer_sim.env.parallel` for episodes and the batched interface
+:func:`vector_env` steps several matches at once, in this process or on worker processes
+(:mod:`soccer_sim.env.vector`). See :mod:`soccer_sim.env.parallel` for episodes and the batched interface
 (``reset_arrays``/``step_arrays``), :mod:`soccer_sim.env.global_state` for ``state()``,
 :mod:`soccer_sim.env.persistence` for pickling.
 """
@@ -51,6 +52,7 @@ from soccer_sim.env.parallel import SoccerParallelEnv
 from soccer_sim.env.policy_team import PolicyTeam
 from soccer_sim.env.rewards import DENSE, TERMS
 from soccer_sim.env.spaces import ACTION_SIZE, OBSERVATION_SLOTS, observation_size
+from soccer_sim.env.vector import vector_env
 
 
 def parallel_env(**options) -> SoccerParallelEnv:
@@ -67,4 +69,5 @@ def env(**options):
 
 
 __all__ = ["ACTION_SIZE", "DEFAULT_OPPONENT", "DENSE", "EVENT_KIND_NAMES", "OBSERVATION_SLOTS", "PLAY_MODE_NAMES",
-           "PolicyTeam", "SoccerParallelEnv", "TERMS", "env", "observation_size", "parallel_env"]
+           "PolicyTeam", "SoccerParallelEnv", "TERMS", "env", "observation_size", "parallel_env",
+           "vector_env"]

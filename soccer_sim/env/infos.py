@@ -15,7 +15,8 @@ key                     value            what
 ``episode_shots``       int64 (2,)       shots so far (SHOT events: kicks on target, see ``EventKind``)
 ``episode_passes``      int64 (2,)       passes received so far (PASS events)
 ``episode_possession``  float32 (2,)     possession shares so far (:mod:`soccer_sim.analysis.possession`)
-``action_mask``         int8 (A,)        high-level action mode only: 1 where the action can be taken
+``action_mask``         int8 (A,)        high-level action mode only, unless ``action_mask_in_observation`` puts it in the
+                                         observation instead: 1 where the action can be taken
 ======================  ===============  ==================================================================
 
 The ``episode_*`` values of the last step are the episode's statistics. With

@@ -268,9 +268,11 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
             raise ValueError(f"no action for the live agents {', '.join(missing)}")
 
     def _check_choice(self, agent: str, action: Any) -> int:
-        """A discrete action as an int in the action space; ValueError naming the agent."""
+        """A discrete action as an int in the action space; ValueError naming the agent. A float
+        with an integral value (``5.0``, as some libraries' random policies give) counts as it."""
         value = np.asarray(action)
-        if value.shape not in ((), (1,)) or value.dtype.kind not in "iu":
+        integral = value.dtype.kind in "iu" or (value.dtype.kind == "f" and bool(np.all(np.mod(value, 1) == 0)))
+        if value.shape not in ((), (1,)) or not integral:
             raise ValueError(f"action of {agent} must be one integer (action_mode={self.action_mode!r}), "
                              f"got {action!r}")
         choice = int(value.reshape(-1)[0])
@@ -322,7 +324,7 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         names = self.possible_agents if agents is None else agents
         info = self._info.info(self._match.state)
         out = {agent: dict(info) for agent in names}
-        if self._masks is not None:
+        if self._masks is not None and not self._mask_in_obs:  # one place only: TorchRL reads both
             masks = self._masks.copy()
             masks.flags.writeable = False
             for k, agent in enumerate(names):

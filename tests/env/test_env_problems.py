@@ -194,6 +194,7 @@ def test_high_level_action_masks() -> None:
     assert isinstance(dicts.observation_space("left_0"), spaces.Dict)
     assert set(observations["left_0"]) == {"observation", "action_mask"}
     assert dicts.observation_space("left_0").contains(observations["left_0"])
+    assert "action_mask" not in infos["left_0"]  # in one place only (TorchRL's specs take it from either)
     with pytest.raises(ValueError, match="action_mask_in_observation needs a discrete action mode"):
         parallel_env(action_mask_in_observation=True)
     assert parallel_env().reset(seed=0)[1]["left_0"].get("action_mask") is None  # no mask for low-level actions
@@ -232,3 +233,12 @@ def test_the_aec_form_reports_a_bad_action_at_its_own_agents_step() -> None:
     high.reset(seed=0)
     with pytest.raises(ValueError, match="action of left_0 must be in 0..23, got 99"):
         high.step(99)
+
+
+def test_a_discrete_action_may_be_an_integral_float_but_not_a_fraction() -> None:
+    """Some libraries' random policies give 5.0 for a Discrete space: taken as 5; 5.5 is refused."""
+    environment = parallel_env(scenario="empty-goal", action_mode="high_level")
+    environment.reset(seed=1)
+    environment.step({"left_0": np.float32(5.0)})
+    with pytest.raises(ValueError, match="action of left_0 must be one integer"):
+        environment.step({"left_0": 5.5})
