@@ -8,6 +8,7 @@ import numpy as np
 
 from agents import skills
 from agents.skills.tackling import TackleParams, Tackling, player_inertia
+from agents.teams.carrying import carry_kick
 from agents.teams.finishing import finishing_shot
 from soccer_sim.config import MatchConfig
 from soccer_sim.team import SideInfo, TeamCommand, TeamView
@@ -105,6 +106,9 @@ def on_ball_kick(ctx: skills.SkillContext, view: TeamView, kicker: int, goalie: 
     finish = finishing_shot(ctx, view, kicker, decision, contested, decision_params.shot)
     if finish is not None:  # pressed near their goal: shoot (agents.teams.finishing)
         return finish, None, True
+    carry = None if contested else carry_kick(ctx, view, kicker, decision, decision_params)
+    if carry is not None:  # near their goal: dribble on rather than pass back or clear
+        return carry[0], carry[1], False
     # Within the block's depth of our goal line (any width), a pressed player puts the ball
     # behind or wide rather than across our goal.
     deep = float(view.ball[0]) < _BLOCK.behind_depth - model.half_length
