@@ -86,7 +86,6 @@ from agents.skills.decision import BallDecision, DecisionParams, OnBallAction, d
 from agents.skills.dribbling import DribbleParams, DribblePlan, dribble, dribble_directions
 from agents.skills.goalkeeping import (Distribution, GoalieParams, comes_out, distribute, guard_position,
                                       should_catch)
-from agents.skills.goal_line import GoalLineParams, goal_line_guard
 from agents.skills.interception import UNREACHABLE, BallRace, Interception, ball_race, intercept, intercept_many
 from agents.skills.kicking import kick_effectiveness, kick_for_velocity, kickable
 from agents.skills.lanes import lane_open, opponent_cycles, teammate_cycles
@@ -106,6 +105,5 @@ __all__ = [
     "dribble", "dribble_directions", "goal_kick_clearance", "guard_position", "intercept", "intercept_many",
     "kick_effectiveness", "kick_for_velocity", "kickable", "lane_open", "offside_positions", "opponent_cycles",
     "paced_dashes", "pass_candidates", "should_catch", "speed_caps", "teammate_cycles", "view_effort",
-    "SaveParams", "comes_out", "goalkeeper_kick", "parry_direction", "parry_kick", "GoalLineParams",
-    "goal_line_guard",
+    "SaveParams", "comes_out", "goalkeeper_kick", "parry_direction", "parry_kick",
 ]

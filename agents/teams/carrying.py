@@ -35,7 +35,9 @@ class CarryParams:
     carry_range: float = 32.0
     """Within this distance of the opponents' goal centre (m) a pass back or a clearance
     becomes a dribble: the final third's width of play around the box, beyond which passing
-    back to build up is what real teams do (0: never)."""
+    back to build up is what real teams do (0: never). In 48 built-in matches 38 m scored a
+    little more (goals 3.98 against 3.83) but sent more balls out (corners 1.75 -> 1.48,
+    kick-ins 15.7 -> 17.7)."""
     pass_gain: float = 3.0
     """A pass stands when its reception point is at least this much closer to the goal centre
     than the ball (m): a pass forward into the box beats carrying it there."""

@@ -268,7 +268,7 @@ class FormationTeam:
         role_targets = targets[self._out_roles]
         players = view.own_pos[outfield]
         if not self._has_outfield:
-            self.goals[self.goalie] = skills.goal_line_guard(self.model, view.ball)
+            self.goals[self.goalie] = skills.guard_position(self.model, view.ball)
             return
         if self.style.stationary:
             role_of_player = np.arange(len(self.outfield))
@@ -304,7 +304,7 @@ class FormationTeam:
             self.figures.add_sample(*mechanism.makespans(players, role_targets, previous))
         self.role_of_player = role_of_player
         if self.goalie >= 0:
-            self.goals[self.goalie] = skills.goal_line_guard(self.model, view.ball)
+            self.goals[self.goalie] = skills.guard_position(self.model, view.ball)
 
     # ------------------------------------------------------------------ play on
     def _play_on(self, view: TeamView, race: skills.BallRace, urgent: np.ndarray) -> None:

@@ -95,7 +95,8 @@ def on_ball_kick(ctx: skills.SkillContext, view: TeamView, kicker: int, goalie: 
     mirror image and the two kicks cancel, so it kicks towards the nearer touchline instead
     (both teams doing so add up); pressed in our box, it kicks wide of the goal and behind
     (a corner rather than a chance); pressed near their goal, it shoots
-    (:mod:`agents.teams.finishing`). ``shot_at_us``: the ball is the opponents' shot heading into our
+    (:mod:`agents.teams.finishing`), and there it carries the ball on rather than passing back
+    or clearing (:mod:`agents.teams.carrying`). ``shot_at_us``: the ball is the opponents' shot heading into our
     goal; an outfield player blocks it wide (:data:`_BLOCK`)."""
     model = ctx.model
     if kicker == goalie:

@@ -141,7 +141,7 @@ def test_a_kick_in_down_the_line_near_their_goal_stops_short_of_the_goal_line(x)
 def breakaway(attacker_gap: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     ball = np.array([-HL + 22.0, 3.0])
     own = np.array([[-30.0 + 3.0 * (i % 5), 10.0 + 2.0 * i] for i in range(11)])
-    own[0] = skills.goal_line_guard(MODEL, ball)
+    own[0] = skills.guard_position(MODEL, ball)
     opp = np.array([[HL - 1.0, 0.0], *[[20.0, -25.0 + 5.0 * i] for i in range(10)]])
     opp[9] = ball + (attacker_gap, 0.0)
     return own, opp, ball, np.array([-1.2, -0.1])
@@ -159,7 +159,7 @@ def test_the_team_goalkeeper_holds_its_line_when_the_attacker_wins_the_race() ->
     opp_vel[9] = (-0.9, 0.0)
     team = ready("mmdr")
     team.act(play_on_view(own, opp, ball, ball_vel, opp_vel))
-    assert np.allclose(team.goals[0], skills.goal_line_guard(MODEL, ball))
+    assert np.allclose(team.goals[0], skills.guard_position(MODEL, ball))
     assert np.hypot(*(team.goals[0] - own[0])) < 0.5
 
 
