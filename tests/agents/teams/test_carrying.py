@@ -64,12 +64,27 @@ def test_far_from_goal_or_forwards_the_pass_stands() -> None:
     assert carry_kick(CTX, near, P, shoot, passing) is None
 
 
-def test_a_pressed_player_near_their_goal_dribbles_rather_than_clears() -> None:
-    x = HL - 29.0
-    own = {i: (-45.0, -30.0 + 6.0 * i) for i in range(11)}
+def pressed_view(distance: float):
+    """Our player ``P`` on the ball ``distance`` m in front of the opponents' goal line, closed
+    down by two defenders, team-mates far back (no pass)."""
+    x = HL - distance
+    own = {i: (-48.0, -30.0 + 6.0 * i) for i in range(11)}
     own[P] = (x - 0.5, 5.0)
     opp = {0: (HL - 1.0, 0.0), 3: (x + 1.6, 5.8), 4: (x + 1.2, 3.8)}
-    view = make_view(own=own, opp=opp, ball=(x, 5.0))
+    return make_view(own=own, opp=opp, ball=(x, 5.0))
+
+
+def test_a_pressed_player_in_the_attacking_zone_dribbles_rather_than_clears() -> None:
+    far = pressed_view(50.0)  # beyond clear_range (42 m): the clearance stands
+    decision = skills.decide_on_ball(CTX, far, P, DECISIONS)
+    assert decision.action == skills.OnBallAction.CLEAR
+    assert carry_kick(CTX, far, P, decision, DECISIONS) is None
+    mid = pressed_view(38.0)  # beyond carry_range, within clear_range: a dribble
+    decision = skills.decide_on_ball(CTX, mid, P, DECISIONS)
+    assert decision.action == skills.OnBallAction.CLEAR
+    assert carry_kick(CTX, mid, P, decision, DECISIONS) is not None
+    assert carry_kick(CTX, mid, P, decision, DECISIONS, CarryParams(clear_range=0.0)) is None
+    view = pressed_view(29.0)
     decision = skills.decide_on_ball(CTX, view, P, DECISIONS)
     assert decision.action == skills.OnBallAction.CLEAR  # pressed, no pass: the decision clears
     carried = carry_kick(CTX, view, P, decision, DECISIONS)
@@ -81,5 +96,7 @@ def test_a_pressed_player_near_their_goal_dribbles_rather_than_clears() -> None:
 def test_carry_params_reject_bad_values() -> None:
     with pytest.raises(ValueError, match="carry_range"):
         CarryParams(carry_range=-1.0)
+    with pytest.raises(ValueError, match="clear_range"):
+        CarryParams(clear_range=-1.0)
     with pytest.raises(ValueError, match="pass_gain"):
         CarryParams(pass_gain=-1.0)
