@@ -8,6 +8,7 @@ import numpy as np
 
 from agents import skills
 from agents.skills.tackling import TackleParams, Tackling, player_inertia
+from agents.teams.carrying import carry_kick
 from agents.teams.finishing import finishing_shot
 from soccer_sim.config import MatchConfig
 from soccer_sim.team import SideInfo, TeamCommand, TeamView
@@ -94,7 +95,8 @@ def on_ball_kick(ctx: skills.SkillContext, view: TeamView, kicker: int, goalie: 
     mirror image and the two kicks cancel, so it kicks towards the nearer touchline instead
     (both teams doing so add up); pressed in our box, it kicks wide of the goal and behind
     (a corner rather than a chance); pressed near their goal, it shoots
-    (:mod:`agents.teams.finishing`). ``shot_at_us``: the ball is the opponents' shot heading into our
+    (:mod:`agents.teams.finishing`), and there it carries the ball on rather than passing back
+    or clearing (:mod:`agents.teams.carrying`). ``shot_at_us``: the ball is the opponents' shot heading into our
     goal; an outfield player blocks it wide (:data:`_BLOCK`)."""
     model = ctx.model
     if kicker == goalie:
@@ -105,6 +107,9 @@ def on_ball_kick(ctx: skills.SkillContext, view: TeamView, kicker: int, goalie: 
     finish = finishing_shot(ctx, view, kicker, decision, contested, decision_params.shot)
     if finish is not None:  # pressed near their goal: shoot (agents.teams.finishing)
         return finish, None, True
+    carry = None if contested else carry_kick(ctx, view, kicker, decision, decision_params)
+    if carry is not None:  # near their goal: dribble on rather than pass back or clear
+        return carry[0], carry[1], False
     # Within the block's depth of our goal line (any width), a pressed player puts the ball
     # behind or wide rather than across our goal.
     deep = float(view.ball[0]) < _BLOCK.behind_depth - model.half_length
