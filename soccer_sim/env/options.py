@@ -72,6 +72,8 @@ def resolve_options(controlled: str = "both", opponent: Any = DEFAULT_OPPONENT, 
     if max_cycles is not None and (isinstance(max_cycles, bool) or not isinstance(max_cycles, (int, np.integer))
                                    or max_cycles < 1):
         raise ValueError(f"max_cycles must be a positive integer or None, got {max_cycles!r}")
+    if render_mode == "human" and record_dir is not None:
+        _make_record_dir(record_dir)
     weights = reward_weights(rewards, reward_shaping)
     if action_mask_in_observation and action_mode == "low_level":
         raise ValueError("action_mask_in_observation needs a discrete action mode (action_mode='high_level')")
@@ -105,3 +107,12 @@ def load_action_mode(name: str) -> Any:
         known = ", ".join(["low_level", *sorted(found)])
         raise ValueError(f"unknown action_mode {name!r}; known: {known}")
     return found[name].load()()
+
+
+def _make_record_dir(record_dir: Any) -> None:
+    """Create ``record_dir`` (where ``render_mode="human"`` records without a display) now, so a
+    folder that cannot be made is refused at construction, naming it, not at the first reset."""
+    try:
+        os.makedirs(record_dir, exist_ok=True)
+    except (OSError, TypeError) as exc:
+        raise ValueError(f"record_dir {record_dir!r}: cannot make the folder ({exc})") from None

@@ -137,7 +137,12 @@ def test_rgb_array_and_human_render_modes(tmp_path, monkeypatch) -> None:
     assert (image == [220, 50, 47]).all(axis=2).any() and (image == [38, 139, 210]).all(axis=2).any()
     for name in ("DISPLAY", "WAYLAND_DISPLAY"):
         monkeypatch.delenv(name, raising=False)
+    (tmp_path / "a-file").write_text("")
+    with pytest.raises(ValueError, match="record_dir .*a-file/rrd.*cannot make the folder"):
+        parallel_env(render_mode="human", record_dir=str(tmp_path / "a-file" / "rrd"))  # refused when made
+    tmp_path = tmp_path / "new" / "folder"  # made at construction
     human = parallel_env(render_mode="human", max_cycles=5, record_dir=str(tmp_path))
+    assert tmp_path.is_dir()
     with pytest.warns(UserWarning, match="no display here, so the episode is recorded into .*rrd"):
         human.reset(seed=0)
     while human.agents:
