@@ -64,9 +64,9 @@ def vector_env(num_envs: int, processes: int = 0, env_fn: Callable[[], Any] | No
     if env_fn is not None and env_kwargs:
         raise ValueError("give either env_fn or parallel_env options, not both")
     if env_fn is None:
-        from soccer_sim.env import parallel_env
+        from soccer_sim.env.parallel import SoccerParallelEnv  # what parallel_env makes
 
-        env_fn = functools.partial(parallel_env, **env_kwargs)
+        env_fn = functools.partial(SoccerParallelEnv, **env_kwargs)
     if isinstance(processes, bool) or not isinstance(processes, (int, np.integer)) or processes < 0:
         raise ValueError(f"processes must be a non-negative integer, got {processes!r}")
     if processes == 0:
