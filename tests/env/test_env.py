@@ -186,6 +186,7 @@ def test_policy_team_plays_matches_and_reports_failing_policies() -> None:
         run_match(PolicyTeam({0: scripted_policy}), "idle", config=MatchConfig(max_cycles=5))
 
 
+@pytest.mark.slow  # tests/examples' scripted_in_tournament keeps a tournament of it in the default suite
 def test_the_scripted_team_enters_a_tournament_from_the_command_line(tmp_path, capsys) -> None:
     assert main(["tournament", "--teams", "static,examples.scripted_team:ScriptedTeam", "--games", "2",
                  "--cycles", "300", "--workers", "2", "--out", str(tmp_path / "r.sqlite"),
