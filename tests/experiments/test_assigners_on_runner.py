@@ -35,6 +35,7 @@ def test_a_failing_and_a_hanging_team_forfeit_and_the_study_goes_on(tmp_path, ca
     assert (tmp_path / "a-tables" / "league.csv").is_file() and (tmp_path / "a-tables" / "assigners.md").is_file()
 
 
+@pytest.mark.slow  # test_runner_resume keeps resumed runs in the default suite
 def test_a_resumed_study_gives_the_same_tables_as_one_run_and_as_results_show(tmp_path, capsys) -> None:
     from experiments.results.store import ResultStore
 

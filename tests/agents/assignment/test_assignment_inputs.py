@@ -193,6 +193,7 @@ print(digest.hexdigest())
 """
 
 
+@pytest.mark.slow  # test_determinism_seeds keeps whole matches across processes in the default suite
 def test_same_output_across_processes():
     """Tie-heavy grids, dense and k-d tree paths, every method: identical in fresh interpreters."""
     import os
