@@ -1,0 +1,104 @@
+"""Self-localisation: the position and velocity a player believes it has.
+
+rcssserver never tells a player where it is. It sees the field's 55 flags (``field.cpp``'s
+landmarks: centre, goals, posts, penalty boxes, corners, and the ring of flags 5 m outside the
+lines) with the same quantisation as the ball but the finer ``quantize_step_l`` (0.01), and
+reads its own speed from ``sense_body`` (``bodysender.cpp``: ``Quantize(|v|, 0.01)`` and the
+velocity's direction relative to the body in integer degrees).
+
+**The model.** Each flag ``f`` in the view cone (or, outside it, within ``visible_distance``)
+and within ``max_observation_length`` gives a reported distance
+``d_f = Quantize(exp(Quantize(log(|f - p| + EPS), quantize_step_l)), 0.1)`` and direction
+``a_f`` = the angle from the body to the flag rounded to ``direction_step``. The player knows
+its body direction ``b`` (as a real agent does from the lines it sees) and estimates
+``p_f = f - d_f (cos(b + a_f), sin(b + a_f))``; its position is the mean of the ``p_f``. The
+error thus follows the server's quantisation: at most 0.05 m (+0.5 %) along each flag's line
+of sight and ``d_f sin(0.5°)`` across it, averaged over the flags in view. With no flag in view
+the position is NaN and ``localised`` False. Velocity: magnitude ``Quantize(|v|, 0.01)`` m/cycle,
+direction rounded to ``direction_step`` relative to the body (``BodySenderPlayerV6``).
+``SeeParams.exact_self`` returns the true position and velocity instead.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from soccer_sim.perception.params import SeeParams
+from soccer_sim.perception.see import EPS, quantize, wrap_degrees
+
+PENALTY_AREA_LENGTH = 16.5
+"""rcssserver's ``PENALTY_AREA_LENGTH`` (m), where the penalty-box flags stand."""
+PENALTY_AREA_WIDTH = 40.32
+"""rcssserver's ``PENALTY_AREA_WIDTH`` (m)."""
+FLAG_MARGIN = 5.0
+"""rcssserver's ``PITCH_MARGIN`` (m): the outer ring of flags stands this far outside the lines."""
+
+
+def field_flags(length: float = 105.0, width: float = 68.0, goal_width: float = 14.02) -> np.ndarray:
+    """The positions (55, 2) m of rcssserver's flags for a pitch of ``length`` x ``width`` m
+    centred on the origin: centre and the two ends of the halfway line, the four corners, both
+    goals' centres and posts, the three flags of each penalty box, and the outer ring (every
+    10 m along the touchlines' outside from -50 to 50, and at -30..30 behind the goal lines)."""
+    hl, hw, hg = length / 2.0, width / 2.0, goal_width / 2.0
+    px, py = hl - PENALTY_AREA_LENGTH, PENALTY_AREA_WIDTH / 2.0
+    pts = [(0.0, 0.0), (0.0, -hw), (0.0, hw)]
+    for sx in (-1.0, 1.0):
+        pts += [(sx * hl, -hw), (sx * hl, hw), (sx * hl, 0.0), (sx * hl, -hg), (sx * hl, hg),
+                (sx * px, -py), (sx * px, 0.0), (sx * px, py)]
+        pts += [(sx * (hl + FLAG_MARGIN), float(y)) for y in range(-30, 31, 10)]
+    for sy in (-1.0, 1.0):
+        pts += [(float(x), sy * (hw + FLAG_MARGIN)) for x in range(-50, 51, 10)]
+    return np.array(pts, dtype=np.float64)
+
+
+@dataclass(frozen=True)
+class SelfEstimate:
+    """What ``n`` players believe about themselves."""
+
+    position: np.ndarray
+    """Believed positions (n, 2) m; NaN where not localised."""
+    velocity: np.ndarray
+    """Believed velocities (n, 2) m/cycle."""
+    localised: np.ndarray
+    """(n,) True where at least one flag was seen (always True with ``exact_self``)."""
+    flags_seen: np.ndarray
+    """(n,) number of flags the estimate averages (0 with ``exact_self``)."""
+
+
+def localise(positions: np.ndarray, velocities: np.ndarray, body_dirs: np.ndarray,
+             params: SeeParams = SeeParams(), flags: np.ndarray | None = None) -> SelfEstimate:
+    """Each player's estimate of its own position and velocity by the model of the module
+    docstring, for players at ``positions`` (n, 2) m with ``velocities`` (n, 2) m/cycle and
+    body directions ``body_dirs`` (n,) degrees; ``flags`` default :func:`field_flags`.
+    Deterministic (the server's flag quantisation has no random part)."""
+    pos = np.asarray(positions, dtype=np.float64).reshape(-1, 2)
+    vel = np.asarray(velocities, dtype=np.float64).reshape(-1, 2)
+    body = np.asarray(body_dirs, dtype=np.float64).reshape(-1)
+    n = len(pos)
+    if vel.shape != pos.shape or body.shape != (n,):
+        raise ValueError(f"localise: positions {pos.shape}, velocities {vel.shape} and body_dirs "
+                         f"{body.shape} must describe the same players")
+    if params.exact_self:
+        return SelfEstimate(position=pos.copy(), velocity=vel.copy(), localised=np.ones(n, dtype=bool),
+                            flags_seen=np.zeros(n, dtype=np.int64))
+    flag_pts = field_flags() if flags is None else np.asarray(flags, dtype=np.float64).reshape(-1, 2)
+    offset = flag_pts[None, :, :] - pos[:, None, :]
+    dist = np.hypot(offset[..., 0], offset[..., 1])
+    rel = wrap_degrees(np.degrees(np.arctan2(offset[..., 1], offset[..., 0])) - body[:, None])
+    cone = np.ones_like(dist, dtype=bool) if params.omnidirectional \
+        else np.abs(rel) < params.visible_angle / 2.0
+    visible = (cone & (dist < params.max_observation_length)) | (dist <= params.visible_distance)
+    d_rep = quantize(np.exp(quantize(np.log(dist + EPS), params.quantize_step_l)), params.distance_step)
+    a_rep = np.radians(body[:, None] + quantize(rel, params.direction_step))
+    est = flag_pts[None, :, :] - d_rep[..., None] * np.stack([np.cos(a_rep), np.sin(a_rep)], axis=-1)
+    count = visible.sum(axis=1)
+    total = np.where(visible[..., None], est, 0.0).sum(axis=1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        position = np.where(count[:, None] > 0, total / count[:, None], np.nan)
+    speed = quantize(np.hypot(vel[:, 0], vel[:, 1]), 0.01)
+    heading = np.radians(body + quantize(wrap_degrees(np.degrees(np.arctan2(vel[:, 1], vel[:, 0])) - body),
+                                         params.direction_step))
+    velocity = np.stack([speed * np.cos(heading), speed * np.sin(heading)], axis=1)
+    return SelfEstimate(position=position, velocity=velocity, localised=count > 0, flags_seen=count)

@@ -1,0 +1,165 @@
+"""rcssserver's ``see`` for soccer-sim's point robots: what each player of a team sees.
+
+soccer-sim's players have no neck, so a player looks along its body direction (the direction
+of :func:`soccer_sim.body.facing`; :func:`body_directions` computes it for a team). The model is
+rcssserver's ``VisualSenderPlayerV1::sendHighBall`` / ``sendHighPlayer`` with
+``QuantizeObservation`` (``visualsenderplayer.cpp``), view quality ``high``, focus point at the
+player itself (the default: ``focus_dist`` 0):
+
+* ``dir`` = angle from the body to the object (``calcRadDir``), reported rounded to
+  ``direction_step`` degrees;
+* true distance ``d``; reported distance ``Quantize(exp(Quantize(log(d + EPS), q)), 0.1)``
+  with ``q`` = ``quantize_step``, ``EPS`` = 1e-10 and ``Quantize(v, s) = rint(v / s) * s``;
+* **in the cone** (``|dir| < visible_angle / 2`` and ``d < max_observation_length``): seen. A
+  player's team is dropped with probability ``(d' - team_far) / (team_too_far - team_far)``
+  and, if the team stays, its number with probability
+  ``(d' - unum_far) / (unum_too_far - unum_far)`` (both clipped to [0, 1]; ``d'`` the reported
+  distance; ``calcNoTeamProb``, ``calcNoUnumProb``);
+* **outside the cone** but ``d <= visible_distance``: seen with distance and direction but
+  anonymous (``calcCloseName``: ``(B)``, ``(P)``);
+* otherwise not seen. A player never sees itself.
+
+With quantisation the reported distance is a deterministic function of the state (as in the
+server); the random parts are the identity drops, drawn from the ``numpy.random.Generator`` the
+caller passes. Velocities (``dist_chg``, ``dir_chg``) are not modelled here.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from soccer_sim.body import DEFAULT_INERTIA_MOMENT, facing
+from soccer_sim.perception.params import SeeParams
+
+EPS = 1.0e-10
+"""rcssserver's ``EPS`` (``utility.h``), added before the logarithm."""
+
+UNSEEN = -1
+""":attr:`Sightings.identity` of an object not seen."""
+ANONYMOUS = 0
+"""Identity level: neither team nor number known (far away, or seen outside the cone)."""
+TEAM_ONLY = 1
+"""Identity level: the team is known, not the number."""
+FULL = 2
+"""Identity level: team and number known (the ball, when seen, always has this level)."""
+
+
+def quantize(value: np.ndarray, step: float) -> np.ndarray:
+    """rcssserver's ``Quantize`` (``utility.h``): ``rint(value / step) * step``."""
+    return np.rint(np.asarray(value, dtype=np.float64) / step) * step
+
+
+def quantized_distance(distance: np.ndarray, log_step: float, final_step: float = 0.1) -> np.ndarray:
+    """The distance (m) a player reports for a true ``distance`` (m):
+    ``Quantize(exp(Quantize(log(d + EPS), log_step)), final_step)``."""
+    d = np.asarray(distance, dtype=np.float64)
+    return quantize(np.exp(quantize(np.log(d + EPS), log_step)), final_step)
+
+
+def wrap_degrees(angle: np.ndarray) -> np.ndarray:
+    """Angles (degrees) folded into [-180, 180)."""
+    return (np.asarray(angle, dtype=np.float64) + 180.0) % 360.0 - 180.0
+
+
+def body_directions(positions: np.ndarray, velocities: np.ndarray, ball: np.ndarray,
+                    inertia_moment: float = DEFAULT_INERTIA_MOMENT) -> np.ndarray:
+    """Body directions (degrees, absolute frame of the positions) of ``n`` players at
+    ``positions`` (n, 2) m with ``velocities`` (n, 2) m/cycle and the ball at ``ball`` (2,) m:
+    :func:`soccer_sim.body.facing`, the simulator's one body-direction model."""
+    pos = np.asarray(positions, dtype=np.float64).reshape(-1, 2)
+    vel = np.asarray(velocities, dtype=np.float64).reshape(-1, 2)
+    if pos.shape != vel.shape:
+        raise ValueError(f"body_directions: positions {pos.shape} and velocities {vel.shape} differ")
+    to_ball = np.asarray(ball, dtype=np.float64).reshape(2) - pos
+    # 11 compiled calls per team (Python floats: cheaper dispatch); the model lives in one place
+    faces = [facing(vx, vy, bx, by, float(inertia_moment))
+             for (vx, vy), (bx, by) in zip(vel.tolist(), to_ball.tolist())]
+    out = np.array(faces, dtype=np.float64).reshape(-1, 2)
+    return np.degrees(np.arctan2(out[:, 1], out[:, 0]))
+
+
+@dataclass(frozen=True)
+class Sightings:
+    """What ``n`` observers see of ``m`` objects (object 0 the ball, then the players in the
+    order given). Arrays are (n, m); entries of unseen objects are NaN / :data:`UNSEEN`."""
+
+    seen: np.ndarray
+    """True where the observer sees the object."""
+    distance: np.ndarray
+    """Reported distance (m), a multiple of ``distance_step``."""
+    direction: np.ndarray
+    """Reported direction relative to the observer's body (degrees, [-180, 180), positive
+    counter-clockwise), a multiple of ``direction_step``."""
+    identity: np.ndarray
+    """:data:`FULL`, :data:`TEAM_ONLY`, :data:`ANONYMOUS` or :data:`UNSEEN` (int8)."""
+    in_cone: np.ndarray
+    """True where the object was seen in the view cone (False: seen only by being close)."""
+
+
+def _as_points(name: str, value: np.ndarray, shape: tuple[int, ...] | None = None) -> np.ndarray:
+    """``value`` as a float (k, 2) array, with a clear error naming ``name``."""
+    arr = np.asarray(value, dtype=np.float64)
+    if arr.ndim != 2 or arr.shape[1] != 2:
+        raise ValueError(f"see: {name} must have shape (k, 2), got {arr.shape}")
+    if shape is not None and arr.shape != shape:
+        raise ValueError(f"see: {name} must have shape {shape}, got {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"see: {name} must be finite")
+    return arr
+
+
+def see(observers: np.ndarray, body_dirs: np.ndarray, ball: np.ndarray, players: np.ndarray,
+        rng: np.random.Generator, params: SeeParams = SeeParams(),
+        self_index: np.ndarray | None = None) -> Sightings:
+    """What each of ``observers`` (n, 2) m, looking along ``body_dirs`` (n,) degrees, sees of the
+    ``ball`` (2,) m and the ``players`` (p, 2) m (all players of both teams).
+    ``self_index[i]`` is observer i's row in ``players`` (it never sees itself; -1 or None: not
+    among them). Identity drops use ``rng``; everything else is deterministic (module
+    docstring). Vectorised over observers x objects."""
+    obs = _as_points("observers", observers)
+    n = len(obs)
+    body = np.asarray(body_dirs, dtype=np.float64).reshape(-1)
+    if body.shape != (n,) or not np.all(np.isfinite(body)):
+        raise ValueError(f"see: body_dirs must be {n} finite angles, got shape {body.shape}")
+    ball_pt = _as_points("ball", np.asarray(ball, dtype=np.float64).reshape(1, 2))
+    objects = np.concatenate([ball_pt, _as_points("players", np.asarray(players).reshape(-1, 2))])
+    m = len(objects)
+    offset = objects[None, :, :] - obs[:, None, :]
+    true_dist = np.hypot(offset[..., 0], offset[..., 1])
+    rel = wrap_degrees(np.degrees(np.arctan2(offset[..., 1], offset[..., 0])) - body[:, None])
+    if params.omnidirectional:
+        in_cone = true_dist < params.max_observation_length
+    else:
+        in_cone = (np.abs(rel) < params.visible_angle / 2.0) & (true_dist < params.max_observation_length)
+    close = ~in_cone & (true_dist <= params.visible_distance)
+    seen = in_cone | close
+    if self_index is not None:
+        idx = np.asarray(self_index, dtype=np.int64).reshape(-1)
+        if idx.shape != (n,) or np.any(idx >= m - 1):
+            raise ValueError(f"see: self_index must be {n} rows of players (or -1)")
+        rows = np.nonzero(idx >= 0)[0]
+        seen[rows, idx[rows] + 1] = False
+    distance = quantized_distance(true_dist, params.quantize_step, params.distance_step)
+    direction = wrap_degrees(quantize(rel, params.direction_step))
+    # identity: drawn for every pair so the stream does not depend on who sees what
+    u_team = rng.random((n, m))
+    u_unum = rng.random((n, m))
+    p_no_team = _drop_chance(distance, params.team_far_length, params.team_too_far_length)
+    p_no_unum = _drop_chance(distance, params.unum_far_length, params.unum_too_far_length)
+    identity = np.where(u_team < p_no_team, ANONYMOUS, np.where(u_unum < p_no_unum, TEAM_ONLY, FULL))
+    identity = np.where(close, ANONYMOUS, identity)
+    identity[:, 0] = FULL  # the ball (also the close "(B)") has no team or number to lose
+    identity = np.where(seen, identity, UNSEEN).astype(np.int8)
+    return Sightings(seen=seen, distance=np.where(seen, distance, np.nan),
+                     direction=np.where(seen, direction, np.nan), identity=identity,
+                     in_cone=in_cone & seen)
+
+
+def _drop_chance(distance: np.ndarray, far: float, too_far: float) -> np.ndarray:
+    """rcssserver's linear chance of losing an identity at reported ``distance`` (m):
+    ``(d - far) / (too_far - far)`` clipped to [0, 1] (a step at ``far`` when they are equal)."""
+    if too_far == far:
+        return (distance > far).astype(np.float64)
+    return np.clip((distance - far) / (too_far - far), 0.0, 1.0)
