@@ -1,11 +1,14 @@
 """Per-player partial observation: rcssserver's ``see`` adapted to soccer-sim's point robots
-(:mod:`.see`), when sees arrive (:func:`.params.see_cycles`) and self-localisation
-(:mod:`.localise`). Self-contained: the match loop does not use it yet."""
+(:mod:`.see`), when sees arrive (:func:`.params.see_cycles`), self-localisation
+(:mod:`.localise`) and the say/hear channel (:mod:`.audio`). Self-contained: the match loop
+does not use it yet."""
 
+from soccer_sim.perception.audio import SAY_CHARACTERS, AudioChannel, AudioParams, Heard, check_message
 from soccer_sim.perception.localise import SelfEstimate, field_flags, localise
 from soccer_sim.perception.params import SeeParams, see_cycles
 from soccer_sim.perception.see import (ANONYMOUS, FULL, TEAM_ONLY, UNSEEN, Sightings, body_directions,
                                        quantized_distance, see)
 
-__all__ = ["ANONYMOUS", "FULL", "TEAM_ONLY", "UNSEEN", "SeeParams", "SelfEstimate", "Sightings",
-           "body_directions", "field_flags", "localise", "quantized_distance", "see", "see_cycles"]
+__all__ = ["ANONYMOUS", "FULL", "SAY_CHARACTERS", "TEAM_ONLY", "UNSEEN", "AudioChannel", "AudioParams", "Heard",
+           "SeeParams", "SelfEstimate", "Sightings", "body_directions", "check_message", "field_flags", "localise",
+           "quantized_distance", "see", "see_cycles"]

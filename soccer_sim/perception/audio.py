@@ -1,0 +1,240 @@
+"""rcssserver's ``say`` / ``hear`` channel between the players of a match.
+
+The rules, all from rcssserver (file and parameter names cited so they can be checked):
+
+* **Say.** A player says at most one message per cycle (soccer-sim's command carries one per
+  player). rcssserver's parser (``player.cpp``, the ``(say ...`` branch) accepts only the
+  characters of the ``sscanf`` set ``[-0-9a-zA-Z ().+*/?<>_]`` (:data:`SAY_CHARACTERS`), at
+  least one of them, and ``Player::say`` drops a message longer than ``say_msg_size``. The
+  server ignores such a message silently; here it is a :class:`~soccer_sim.team.TeamError`
+  naming the team, the player and what is wrong, so a team's bug cannot go unnoticed.
+* **Who receives it.** ``Stadium::sendPlayerAudio`` offers the message to every player at the
+  moment it is said; ``AudioSenderPlayerv8::nonSelfPlayerPredicate`` keeps it for listeners
+  within ``audio_cut_dist`` of the speaker (``distance2 <= audio_cut_dist ** 2``, positions
+  of the cycle it is said in), team-mates and opponents alike. The cached messages are sent
+  at the start of the next cycle (``AudioSenderPlayerv8::newCycle``): said at cycle ``t``,
+  heard at ``t + 1``. The speaker gets its own message back as ``(hear t self ...)``
+  (``sendSelfAudio``), which costs no capacity.
+* **How many are heard.** Each player has two integer capacities, for team-mates and for
+  opponents (``player.cpp``: ``M_hear_capacity_from_teammate`` / ``_opponent``), starting at
+  ``hear_max``; each cycle both grow by ``hear_inc`` up to ``hear_max``
+  (``Player::updateCapacity``, before the delivery). At delivery the cached messages are
+  taken in a uniformly random order (``Unfocused::getMsg``: ``irand`` over what is left); one
+  is heard in full when the capacity of its speaker's side is at least ``hear_decay``
+  (``canHearFullFrom``), which then drops by ``hear_decay`` (``decrementHearCapacity``); the
+  others are lost (the partial ``(hear t our unum)`` notices are off by default). With the
+  defaults (1, 1, 1) a player hears one team-mate and one opponent per cycle, each chosen
+  uniformly among those in range who spoke. A listener may attend to one player
+  (``attentionto``; ``Focused::getMsg``): that player's message is then taken first.
+* **The hear message** names a team-mate speaker's number but not an opponent's
+  (``serializeAllyAudioFull`` / ``serializeOppAudioFull``); :meth:`Heard.for_listener` keeps
+  that asymmetry.
+
+The random order is drawn from the ``numpy.random.Generator`` the caller passes, one uniform
+per (listener, speaker) pair on every delivery, so the stream never depends on who spoke.
+Everything is vectorised over listeners x speakers (22 x 22 at most).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, fields
+
+import numpy as np
+
+from soccer_sim.config_checks import ConfigError
+from soccer_sim.team import TeamError
+
+SAY_CHARACTERS: str = ("-0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                       " ().+*/?<>_")
+"""The characters rcssserver's ``say`` parser accepts (``player.cpp``: the ``sscanf`` set
+``[-0-9a-zA-Z ().+*/?<>_]``): 74 characters."""
+
+
+@dataclass(frozen=True)
+class AudioParams:
+    """The say/hear channel's parameters; every default is rcssserver's (``serverparam.cpp``)."""
+
+    say_msg_size: int = 10
+    """``say_msg_size`` (characters): the longest message a player may say."""
+    audio_cut_dist: float = 50.0
+    """``audio_cut_dist`` (m; ``AUDIO_CUT_OFF_DIST``): a message reaches only listeners at most
+    this far from the speaker when it is said."""
+    hear_max: int = 1
+    """``hear_max``: the most hearing capacity a player holds per side (team-mates, opponents)."""
+    hear_inc: int = 1
+    """``hear_inc``: capacity regained per cycle per side (never above ``hear_max``)."""
+    hear_decay: int = 1
+    """``hear_decay``: capacity one message heard in full costs; a message is heard only while
+    the capacity is at least this (0: unlimited hearing)."""
+    characters: str = SAY_CHARACTERS
+    """The characters a message may use (:data:`SAY_CHARACTERS`, the server's set)."""
+
+    def __post_init__(self) -> None:
+        for f in fields(self):
+            value = getattr(self, f.name)
+            if f.name == "characters":
+                if not isinstance(value, str) or not value:
+                    raise ConfigError(f"AudioParams.characters must be a non-empty str, got {value!r}")
+                continue
+            if f.name == "audio_cut_dist":
+                if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) \
+                        or not np.isfinite(value) or value < 0:
+                    raise ConfigError(f"AudioParams.audio_cut_dist must be a finite number >= 0 m, got {value!r}")
+                continue
+            if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
+                raise ConfigError(f"AudioParams.{f.name} must be a whole number >= 0, got {value!r}")
+        if self.say_msg_size < 1:
+            raise ConfigError(f"AudioParams.say_msg_size must be at least 1, got {self.say_msg_size!r}")
+
+
+def check_message(message: object, params: AudioParams = AudioParams(), team_name: str = "?",
+                  player: int | None = None) -> None:
+    """Raise :class:`TeamError` (naming ``team_name`` and ``player``) unless ``message`` is a
+    message the server accepts: a non-empty ``str`` of at most ``say_msg_size`` characters,
+    all from ``params.characters``. ``None`` (saying nothing) is not a message: check it first."""
+    if not isinstance(message, str):
+        raise TeamError(team_name, f"say message must be a str or None, got {type(message).__name__}", player)
+    if not message:
+        raise TeamError(team_name, "say message is empty (say None to say nothing)", player)
+    if len(message) > params.say_msg_size:
+        raise TeamError(team_name, f"say message {message!r} has {len(message)} characters, more than "
+                                   f"say_msg_size {params.say_msg_size}", player)
+    bad = sorted(set(message) - set(params.characters))
+    if bad:
+        raise TeamError(team_name, f"say message {message!r} has characters the server refuses: "
+                                   f"{''.join(bad)!r} (allowed: {params.characters!r})", player)
+
+
+@dataclass(frozen=True)
+class Heard:
+    """What every player hears at ``cycle`` (messages said at ``cycle - 1``). Players are
+    numbered across the match: the first team's ``0 .. n0 - 1``, then the second team's."""
+
+    cycle: int
+    """The cycle the messages are heard in."""
+    messages: tuple[str | None, ...]
+    """The message each player said at ``cycle - 1`` (None: said nothing)."""
+    arrived: np.ndarray
+    """(listeners, speakers) bool: the message reached the listener (within
+    ``audio_cut_dist``; never the speaker itself)."""
+    heard: np.ndarray
+    """(listeners, speakers) bool: heard in full (a subset of ``arrived`` within capacity)."""
+    team: np.ndarray
+    """(players,) int: each player's team (0 or 1)."""
+
+    def for_listener(self, listener: int) -> tuple[tuple[tuple[int, str], ...], tuple[str, ...], str | None]:
+        """What ``listener`` hears, as the server reports it: the team-mates' messages as
+        ``(speaker's index within the team, message)`` pairs, the opponents' messages (speaker
+        not named), and its own message (``self``; None if it said nothing)."""
+        team = self.team
+        first = int(np.count_nonzero(team < team[listener]))
+        mates: list[tuple[int, str]] = []
+        opponents: list[str] = []
+        for s in np.flatnonzero(self.heard[listener]).tolist():
+            msg = self.messages[s]
+            assert msg is not None
+            if team[s] == team[listener]:
+                mates.append((s - first, msg))
+            else:
+                opponents.append(msg)
+        return tuple(mates), tuple(opponents), self.messages[listener]
+
+
+class AudioChannel:
+    """The say/hear channel of one match (module docstring for the rules).
+
+    Per cycle ``t``: :meth:`hear` ``(t, ...)`` delivers what was said at ``t - 1``, then
+    :meth:`say` ``(t, ...)`` records what the players say at ``t``, with their positions at
+    ``t`` (m, one frame for both teams)."""
+
+    def __init__(self, team_sizes: tuple[int, int], team_names: tuple[str, str] = ("home", "away"),
+                 params: AudioParams = AudioParams()) -> None:
+        sizes = tuple(int(n) for n in team_sizes)
+        if len(sizes) != 2 or any(n < 0 or n > 11 for n in sizes):
+            raise ValueError(f"AudioChannel: team_sizes must be two numbers of players 0..11, got {team_sizes!r}")
+        self.params = params
+        self.team_sizes = sizes
+        self.team_names = tuple(team_names)
+        self.team = np.repeat(np.array([0, 1], dtype=np.int64), sizes)
+        self._same = self.team[:, None] == self.team[None, :]
+        n = len(self.team)
+        self._cap = np.full((n, 2), params.hear_max, dtype=np.int64)  # [:, 0] team-mates, [:, 1] opponents
+        self._cap_cycle: int | None = None
+        self._said_cycle: int | None = None
+        self._messages: tuple[str | None, ...] = (None,) * n
+        self._arrived = np.zeros((n, n), dtype=bool)
+
+    @property
+    def players(self) -> int:
+        """Players of both teams (rows of ``positions``)."""
+        return len(self.team)
+
+    def reset_capacity(self) -> None:
+        """Refill every capacity to ``hear_max`` (rcssserver's ``Player::recoverAll``, at
+        half time)."""
+        self._cap[:] = self.params.hear_max
+
+    def say(self, cycle: int, messages: Sequence[Sequence[str | None]], positions: np.ndarray) -> None:
+        """Record what the players say at ``cycle``: ``messages[k][i]`` is player ``i`` of team
+        ``k``'s message or None; ``positions`` (players, 2) m at ``cycle``. A bad message is a
+        :class:`TeamError` naming its team and player."""
+        if self._said_cycle is not None and cycle <= self._said_cycle:
+            raise ValueError(f"AudioChannel.say: cycle {cycle} is not after the last say cycle {self._said_cycle}")
+        if len(messages) != 2:
+            raise ValueError(f"AudioChannel.say: messages must hold one sequence per team (2), got {len(messages)}")
+        flat: list[str | None] = []
+        for k, (team_msgs, size) in enumerate(zip(messages, self.team_sizes)):
+            if len(team_msgs) != size:
+                raise TeamError(self.team_names[k], f"{len(team_msgs)} say messages for {size} players")
+            for i, msg in enumerate(team_msgs):
+                if msg is not None:
+                    check_message(msg, self.params, self.team_names[k], i)
+                flat.append(msg)
+        pos = np.asarray(positions, dtype=np.float64)
+        if pos.shape != (self.players, 2) or not np.all(np.isfinite(pos)):
+            raise ValueError(f"AudioChannel.say: positions must be finite, shape ({self.players}, 2); got {pos.shape}")
+        spoke = np.array([m is not None for m in flat], dtype=bool)
+        diff = pos[:, None, :] - pos[None, :, :]
+        in_range = np.einsum("lsk,lsk->ls", diff, diff) <= self.params.audio_cut_dist ** 2
+        arrived = in_range & spoke[None, :]
+        np.fill_diagonal(arrived, False)
+        self._messages, self._arrived, self._said_cycle = tuple(flat), arrived, int(cycle)
+
+    def hear(self, cycle: int, rng: np.random.Generator, attention: np.ndarray | None = None) -> Heard:
+        """Deliver at ``cycle`` what was said at ``cycle - 1`` (anything older is lost, as the
+        server delivers every cycle), after regaining ``hear_inc`` capacity per cycle since the
+        last delivery. ``attention[l]`` (players,) is the player listener ``l`` attends to
+        (-1: none). Draws one uniform per (listener, speaker) from ``rng``."""
+        p = self.params
+        n = self.players
+        if self._cap_cycle is not None:
+            if cycle <= self._cap_cycle:
+                raise ValueError(f"AudioChannel.hear: cycle {cycle} is not after the last hear cycle {self._cap_cycle}")
+            gained = p.hear_inc * (cycle - self._cap_cycle)
+            self._cap = np.minimum(self._cap + gained, p.hear_max)
+        self._cap_cycle = int(cycle)
+        key = rng.random((n, n))
+        current = self._said_cycle == cycle - 1
+        arrived = self._arrived if current else np.zeros((n, n), dtype=bool)
+        messages = self._messages if current else (None,) * n
+        if attention is not None:
+            att = np.asarray(attention, dtype=np.int64).reshape(-1)
+            if att.shape != (n,) or np.any((att < -1) | (att >= n)):
+                raise ValueError(f"AudioChannel.hear: attention must be {n} player indices or -1")
+            rows = np.flatnonzero(att >= 0)
+            key[rows, att[rows]] = -1.0  # taken before every other message
+        heard = np.zeros((n, n), dtype=bool)
+        for side, group in enumerate((self._same, ~self._same)):
+            candidates = arrived & group
+            order = np.argsort(np.where(candidates, key, np.inf), axis=1, kind="stable")
+            rank = np.empty_like(order)
+            np.put_along_axis(rank, order, np.arange(n)[None, :], axis=1)
+            if p.hear_decay == 0:
+                allowed = np.full(n, n, dtype=np.int64)
+            else:
+                allowed = self._cap[:, side] // p.hear_decay
+            chosen = candidates & (rank < allowed[:, None])
+            self._cap[:, side] -= p.hear_decay * chosen.sum(axis=1)
+            heard |= chosen
+        return Heard(cycle=int(cycle), messages=messages, arrived=arrived, heard=heard, team=self.team)
