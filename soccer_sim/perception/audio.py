@@ -158,12 +158,15 @@ class AudioChannel:
         self.team_names = tuple(team_names)
         self.team = np.repeat(np.array([0, 1], dtype=np.int64), sizes)
         self._same = self.team[:, None] == self.team[None, :]
+        self._other = ~self._same
+        self._side_key = 2.0 * self._other  # sorts opponents' messages after team-mates'
         n = len(self.team)
         self._cap = np.full((n, 2), params.hear_max, dtype=np.int64)  # [:, 0] team-mates, [:, 1] opponents
         self._cap_cycle: int | None = None
         self._said_cycle: int | None = None
         self._messages: tuple[str | None, ...] = (None,) * n
         self._arrived = np.zeros((n, n), dtype=bool)
+        self._allowed = frozenset(params.characters)
 
     @property
     def players(self) -> int:
@@ -184,11 +187,14 @@ class AudioChannel:
         if len(messages) != 2:
             raise ValueError(f"AudioChannel.say: messages must hold one sequence per team (2), got {len(messages)}")
         flat: list[str | None] = []
+        size_limit, allowed = self.params.say_msg_size, self._allowed
         for k, (team_msgs, size) in enumerate(zip(messages, self.team_sizes)):
             if len(team_msgs) != size:
                 raise TeamError(self.team_names[k], f"{len(team_msgs)} say messages for {size} players")
             for i, msg in enumerate(team_msgs):
-                if msg is not None:
+                # fast path for the usual good message; check_message says what is wrong otherwise
+                if msg is not None and not (type(msg) is str and 0 < len(msg) <= size_limit
+                                            and allowed.issuperset(msg)):
                     check_message(msg, self.params, self.team_names[k], i)
                 flat.append(msg)
         pos = np.asarray(positions, dtype=np.float64)
@@ -225,16 +231,20 @@ class AudioChannel:
             rows = np.flatnonzero(att >= 0)
             key[rows, att[rows]] = -1.0  # taken before every other message
         heard = np.zeros((n, n), dtype=bool)
-        for side, group in enumerate((self._same, ~self._same)):
-            candidates = arrived & group
-            order = np.argsort(np.where(candidates, key, np.inf), axis=1, kind="stable")
-            rank = np.empty_like(order)
-            np.put_along_axis(rank, order, np.arange(n)[None, :], axis=1)
-            if p.hear_decay == 0:
-                allowed = np.full(n, n, dtype=np.int64)
-            else:
-                allowed = self._cap[:, side] // p.hear_decay
-            chosen = candidates & (rank < allowed[:, None])
-            self._cap[:, side] -= p.hear_decay * chosen.sum(axis=1)
-            heard |= chosen
+        if not arrived.any():
+            return Heard(cycle=int(cycle), messages=messages, arrived=arrived, heard=heard, team=self.team)
+        # one sort ranks each listener's arrivals: team-mates first (keys in [-1, 1)), then
+        # opponents (keys + 2); the rank within a side is the place in the server's random order
+        same, other = self._same, self._other
+        order = np.argsort(np.where(arrived, key + self._side_key, np.inf), axis=1)
+        rank = np.argsort(order, axis=1)
+        mates_arrived = np.count_nonzero(arrived & same, axis=1)
+        rank -= np.where(same, 0, mates_arrived[:, None])
+        if p.hear_decay == 0:
+            allowed = np.full((n, 2), n, dtype=np.int64)
+        else:
+            allowed = self._cap // p.hear_decay
+        heard = arrived & (rank < np.where(same, allowed[:, :1], allowed[:, 1:]))
+        self._cap[:, 0] -= p.hear_decay * np.count_nonzero(heard & same, axis=1)
+        self._cap[:, 1] -= p.hear_decay * np.count_nonzero(heard & other, axis=1)
         return Heard(cycle=int(cycle), messages=messages, arrived=arrived, heard=heard, team=self.team)
