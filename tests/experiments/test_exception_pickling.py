@@ -25,6 +25,7 @@ EXAMPLES: dict[str, tuple] = {
     "experiments.errors.ExperimentError": ("a run cannot start",),
     "agents.errors.AgentsError": ("an assigner refuses its input",),
     "agents.roles.errors.RoleError": ("unknown role assigner 'mmdx'",),
+    "agents.messages.MessageError": ("ball x must be finite and within [-64.0, 64.0], got 70.0",),
     "formations.errors.FormationInputError": ("ball must be a point (2,) or points (k, 2)",),
     "formations.errors.UnknownRoleError": ("no role numbered 12",),
     "soccer_sim.errors.SoccerSimError": ("the simulator refuses its input",),
