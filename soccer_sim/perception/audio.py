@@ -28,7 +28,8 @@ The rules, all from rcssserver (file and parameter names cited so they can be ch
   (``attentionto``; ``Focused::getMsg``): that player's message is then taken first.
 * **The hear message** names a team-mate speaker's number but not an opponent's
   (``serializeAllyAudioFull`` / ``serializeOppAudioFull``); :meth:`Heard.for_listener` keeps
-  that asymmetry.
+  that asymmetry. Both give the speaker's direction from the listener's body at delivery in
+  whole degrees (``Rad2IDeg``, truncated): :attr:`Heard.direction`.
 
 The random order is drawn from the ``numpy.random.Generator`` the caller passes, one uniform
 per (listener, speaker) pair on every delivery, so the stream never depends on who spoke.
@@ -122,6 +123,11 @@ class Heard:
     """(listeners, speakers) bool: heard in full (a subset of ``arrived`` within capacity)."""
     team: np.ndarray
     """(players,) int: each player's team (0 or 1)."""
+    direction: np.ndarray | None = None
+    """(listeners, speakers) whole degrees: where each heard speaker is, relative to the
+    listener's body direction, at delivery (``Rad2IDeg(angleFromBody)``: truncated towards
+    zero, in (-180, 180]); NaN where nothing was heard; None when :meth:`AudioChannel.hear`
+    got no positions."""
 
     def for_listener(self, listener: int) -> tuple[tuple[tuple[int, str], ...], tuple[str, ...], str | None]:
         """What ``listener`` hears, as the server reports it: the team-mates' messages as
@@ -207,11 +213,14 @@ class AudioChannel:
         np.fill_diagonal(arrived, False)
         self._messages, self._arrived, self._said_cycle = tuple(flat), arrived, int(cycle)
 
-    def hear(self, cycle: int, rng: np.random.Generator, attention: np.ndarray | None = None) -> Heard:
+    def hear(self, cycle: int, rng: np.random.Generator, attention: np.ndarray | None = None,
+             positions: np.ndarray | None = None, body_dirs: np.ndarray | None = None) -> Heard:
         """Deliver at ``cycle`` what was said at ``cycle - 1`` (anything older is lost, as the
         server delivers every cycle), after regaining ``hear_inc`` capacity per cycle since the
         last delivery. ``attention[l]`` (players,) is the player listener ``l`` attends to
-        (-1: none). Draws one uniform per (listener, speaker) from ``rng``."""
+        (-1: none). With ``positions`` (players, 2) m and ``body_dirs`` (players,) degrees at
+        ``cycle``, :attr:`Heard.direction` says where each heard speaker is. Draws one uniform per
+        (listener, speaker) from ``rng``."""
         p = self.params
         n = self.players
         if self._cap_cycle is not None:
@@ -231,8 +240,17 @@ class AudioChannel:
             rows = np.flatnonzero(att >= 0)
             key[rows, att[rows]] = -1.0  # taken before every other message
         heard = np.zeros((n, n), dtype=bool)
-        if not arrived.any():
-            return Heard(cycle=int(cycle), messages=messages, arrived=arrived, heard=heard, team=self.team)
+        if arrived.any():
+            heard = self._choose(arrived, key)
+        direction = None
+        if positions is not None or body_dirs is not None:
+            direction = self._directions(heard, positions, body_dirs)
+        return Heard(cycle=int(cycle), messages=messages, arrived=arrived, heard=heard, team=self.team,
+                     direction=direction)
+
+    def _choose(self, arrived: np.ndarray, key: np.ndarray) -> np.ndarray:
+        """Which arrived messages each listener hears in full, spending its capacities."""
+        p, n = self.params, self.players
         # one sort ranks each listener's arrivals: team-mates first (keys in [-1, 1)), then
         # opponents (keys + 2); the rank within a side is the place in the server's random order
         same, other = self._same, self._other
@@ -247,4 +265,19 @@ class AudioChannel:
         heard = arrived & (rank < np.where(same, allowed[:, :1], allowed[:, 1:]))
         self._cap[:, 0] -= p.hear_decay * np.count_nonzero(heard & same, axis=1)
         self._cap[:, 1] -= p.hear_decay * np.count_nonzero(heard & other, axis=1)
-        return Heard(cycle=int(cycle), messages=messages, arrived=arrived, heard=heard, team=self.team)
+        return heard
+
+    def _directions(self, heard: np.ndarray, positions: np.ndarray | None,
+                    body_dirs: np.ndarray | None) -> np.ndarray:
+        """Whole degrees from each listener's body to each heard speaker (NaN elsewhere)."""
+        n = self.players
+        pos = np.asarray(positions, dtype=np.float64) if positions is not None else None
+        body = np.asarray(body_dirs, dtype=np.float64).reshape(-1) if body_dirs is not None else None
+        if pos is None or pos.shape != (n, 2) or body is None or body.shape != (n,) \
+                or not np.all(np.isfinite(pos)) or not np.all(np.isfinite(body)):
+            raise ValueError(f"AudioChannel.hear: positions ({n}, 2) m and body_dirs ({n},) degrees must "
+                             "both be given, finite")
+        diff = pos[None, :, :] - pos[:, None, :]
+        rel = np.degrees(np.arctan2(diff[..., 1], diff[..., 0])) - body[:, None]
+        rel = 180.0 - (180.0 - rel) % 360.0  # folded into (-180, 180]
+        return np.where(heard, np.trunc(rel), np.nan)

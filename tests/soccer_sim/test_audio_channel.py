@@ -144,3 +144,21 @@ def test_call_order_errors() -> None:
         ch.say(5, [["a", "b"], []], np.zeros((1, 2)))
     with pytest.raises(ValueError, match="team_sizes"):
         AudioChannel((12, 0))
+
+
+def test_direction_to_the_speaker_truncated_degrees_from_the_body() -> None:
+    ch = AudioChannel((2, 1))
+    pos = np.array([[0.0, 0.0], [10.0, 10.0], [-10.0, 0.5]])
+    ch.say(0, [[None, "a"], ["b"]], pos)
+    body = np.array([0.0, 90.0, 50.0])
+    h = ch.hear(1, np.random.default_rng(0), positions=pos, body_dirs=body)
+    assert h.direction is not None
+    assert h.direction[0, 1] == 45.0                        # speaker 1 at 45 degrees
+    assert h.direction[0, 2] == 177.0                       # atan2(0.5, -10) = 177.14 -> 177 (truncated)
+    assert h.direction[1, 2] == 115.0                       # -154.59 - 90 folded: 115.41 -> 115
+    assert h.direction[2, 1] == -24.0                       # 25.41 - 50 = -24.59 -> -24 (towards zero)
+    assert np.isnan(h.direction[0, 0]) and np.isnan(h.direction[1, 0])  # 0 said nothing
+    plain = AudioChannel((1, 0))
+    assert plain.hear(0, np.random.default_rng(0)).direction is None
+    with pytest.raises(ValueError, match="body_dirs"):
+        ch.hear(2, np.random.default_rng(0), positions=pos)
