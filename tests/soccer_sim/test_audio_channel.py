@@ -162,3 +162,16 @@ def test_direction_to_the_speaker_truncated_degrees_from_the_body() -> None:
     assert plain.hear(0, np.random.default_rng(0)).direction is None
     with pytest.raises(ValueError, match="body_dirs"):
         ch.hear(2, np.random.default_rng(0), positions=pos)
+
+
+def test_capacity_not_regained_without_hear_inc_until_reset() -> None:
+    ch = AudioChannel((2, 0), params=AudioParams(hear_inc=0))
+    pos = line_up(2, 0)
+    rng = np.random.default_rng(4)
+    got = []
+    for t in range(3):
+        ch.say(2 * t, [["a", "b"], []], pos)
+        got.append(int(ch.hear(2 * t + 1, rng).heard.sum()))
+        if t == 1:
+            ch.reset_capacity()  # half time: rcssserver's recoverAll
+    assert got == [2, 0, 2]
