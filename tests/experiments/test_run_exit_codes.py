@@ -90,6 +90,7 @@ def test_a_teams_own_forfeits_are_results_and_exit_0(tmp_path, capsys) -> None:
     assert code == 0 and err == "" and f"forfeited by {raising}" in out
 
 
+@pytest.mark.slow  # test_runner_failures keeps a crash inside act as a forfeit in the default suite
 def test_a_worker_crash_inside_act_is_the_teams_forfeit(tmp_path) -> None:
     specs = [MatchSpec("idle", SCRIPTED + "CrashingTeam", 0, 50), MatchSpec(SCRIPTED + "ExitingTeam", "idle", 0, 50)]
     summary = run_matches(specs, tmp_path / "r.sqlite", "tournament", {}, cycles=50, workers=1, progress=False)

@@ -205,6 +205,7 @@ def test_leases_of_killed_runs_are_taken_over_and_a_live_runs_match_is_waited_fo
     db.close()
 
 
+@pytest.mark.slow  # test_run_exit_codes keeps a run that exits 1 for missing matches in the default suite
 def test_a_run_that_stops_waiting_for_another_runs_matches_exits_1(tmp_path, capsys, monkeypatch) -> None:
     import experiments.runner.run as run_module
 

@@ -125,6 +125,7 @@ def test_a_stored_match_is_recreated_by_its_row(tmp_path, capsys) -> None:
     assert "must end in .rrd" in capsys.readouterr().err
 
 
+@pytest.mark.slow  # test_rcg_cli keeps the runner recording every k-th match in the default suite
 def test_the_runner_records_every_kth_match(tmp_path, capsys) -> None:
     replays = tmp_path / "replays"
     base = ["tournament", "--teams", "chaser,idle", "--games", "4", "--cycles", "120", "--workers", "2",
