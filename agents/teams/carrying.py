@@ -25,6 +25,7 @@ import numpy as np
 
 from agents import skills
 from agents.skills.model import check_params
+from agents.teams.finishing import goal_distance
 from soccer_sim.team import TeamView
 
 
@@ -64,16 +65,14 @@ def carry_kick(ctx: skills.SkillContext, view: TeamView, kicker: int, decision: 
     towards the opponents' goal, or None when ``decision`` stands (see the module docstring)."""
     if params.carry_range <= 0.0 or decision.action not in (skills.OnBallAction.PASS, skills.OnBallAction.CLEAR):
         return None
-    model = ctx.model
-    ball = view.ball
-    gx = model.half_length
-    dist = float(np.hypot(gx - float(ball[0]), float(ball[1])))
+    gx = ctx.model.half_length
+    dist = goal_distance(gx, view.ball)
     if dist > (params.carry_range if decision.action == skills.OnBallAction.PASS
                else max(params.carry_range, params.clear_range)):
         return None
     if decision.action == skills.OnBallAction.PASS:
         point = decision.plan.receive_point
-        if float(np.hypot(gx - float(point[0]), float(point[1]))) <= dist - params.pass_gain:
+        if goal_distance(gx, point) <= dist - params.pass_gain:
             return None
     plan = skills.dribble(ctx, view, kicker, decision_params.dribbling)
     if decision.action == skills.OnBallAction.PASS and plan.clearance < decision_params.dribble_clearance:

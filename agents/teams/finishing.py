@@ -21,6 +21,11 @@ from agents.skills.model import check_params
 from soccer_sim.team import TeamView
 
 
+def goal_distance(half_length: float, point: np.ndarray) -> float:
+    """Distance (m) from ``point`` (team frame) to the opponents' goal centre (half_length, 0)."""
+    return float(np.hypot(half_length - float(point[0]), float(point[1])))
+
+
 @dataclass(frozen=True)
 class FinishParams:
     """When a pressed player near the opponents' goal shoots (metres, cycles)."""
@@ -54,9 +59,7 @@ def finishing_shot(ctx: skills.SkillContext, view: TeamView, kicker: int, decisi
         return None
     if not contested and decision.pressure > params.pressure_cycles:
         return None
-    model = ctx.model
-    ball = view.ball
-    if float(np.hypot(model.half_length - float(ball[0]), float(ball[1]))) > params.shot_range:
+    if goal_distance(ctx.model.half_length, view.ball) > params.shot_range:
         return None
     plan = skills.best_shot(ctx, view, kicker, shot_params, pressure=int(decision.pressure))
     return None if plan is None else plan.kick
