@@ -21,6 +21,7 @@ from dataclasses import dataclass, fields
 from dataclasses import field as default_of
 
 from soccer_sim.config_checks import ConfigError, _is_integer, _is_real, _require_fraction, _require_positive
+from soccer_sim.perception.config import ObservationConfig
 from soccer_sim.rule_config import RuleConfig, TackleConfig
 
 
@@ -386,6 +387,9 @@ class MatchConfig:
     """Tackles, fouls and cards (rcssserver's)."""
     player_types: PlayerTypeConfig = default_of(default_factory=PlayerTypeConfig)
     """Heterogeneous player types (rcssserver's hetero parameters)."""
+    observation: ObservationConfig = default_of(default_factory=ObservationConfig)
+    """What the teams perceive: the exact state (``full``, the default) or each player's own
+    noisy view and the say/hear channel (``partial``)."""
     players_per_team: int = 11
     max_cycles: int | None = None
     """Stop after this many cycles (None: two full halves)."""
@@ -396,7 +400,7 @@ class MatchConfig:
     def validate(self) -> None:
         for name, kind in (("field", FieldConfig), ("physics", PhysicsConfig), ("stamina", StaminaConfig),
                            ("rules", RuleConfig), ("tackles", TackleConfig),
-                           ("player_types", PlayerTypeConfig)):
+                           ("player_types", PlayerTypeConfig), ("observation", ObservationConfig)):
             part = getattr(self, name)
             if not isinstance(part, kind):
                 raise ConfigError(f"MatchConfig.{name} must be a {kind.__name__}, got {type(part).__name__}")

@@ -44,6 +44,8 @@ import numpy as np
 
 from soccer_sim.config import MatchConfig
 from soccer_sim.kinematics import CycleNoise, Kinematics
+from soccer_sim.kernels import PT_DECAY, PT_INERTIA_MOMENT
+from soccer_sim.perception.observer import Observer
 from soccer_sim.physics import Physics, SubstepPlanner
 from soccer_sim.player_types import check_choice, draw_player_types
 from soccer_sim.recorder import Recorder
@@ -56,7 +58,7 @@ from soccer_sim.state import AWAY, HOME, NO_PLAYER, NO_TEAM, EventLog, PlayMode,
 from soccer_sim.statistics import StatisticsRecorder, TeamStatistics
 from soccer_sim.tackles import TackleOutcome, Tackles
 from soccer_sim.team import SideInfo, Team, TeamError
-from soccer_sim.team_hooks import ChoosesPlayerTypes
+from soccer_sim.team_hooks import ChoosesPlayerTypes, check_plays_partial
 from soccer_sim.view import TeamFrame
 
 _KICK_OFF = PlayMode.KICK_OFF
@@ -136,8 +138,9 @@ class Match:
         """Each side's goalkeeper index within the side (-1: none)."""
         n2 = sizes[0] + sizes[1]
         # A new stream goes at the end: the earlier children stay what they were.
-        physics_seq, home_seq, away_seq, scenario_seq, tackle_seq, types_seq = np.random.SeedSequence(
-            self.seed).spawn(6)
+        physics_seq, home_seq, away_seq, scenario_seq, tackle_seq, types_seq, perception_seq = \
+            np.random.SeedSequence(self.seed).spawn(7)
+        self._perception_seq = perception_seq
         self._team_seeds = (home_seq, away_seq)
         self.end_cycle = setup.end_cycle
         """Cycles the match lasts at most."""
@@ -174,8 +177,15 @@ class Match:
         """Absolute commands of this cycle: per player row ``[dash_x, dash_y, kick_x, kick_y]``."""
         self._dash = self.commands[:, 0:2]
         self._kick = self.commands[:, 2:4]
-        self.frames = (TeamFrame(HOME, home_name, state, self.commands, self.type_ids),
-                       TeamFrame(AWAY, away_name, state, self.commands, self.type_ids))
+        audio = config.observation.audio
+        self.frames = (TeamFrame(HOME, home_name, state, self.commands, self.type_ids, audio),
+                       TeamFrame(AWAY, away_name, state, self.commands, self.type_ids, audio))
+        self.observer: Observer | None = None
+        """The partial-observation model (built in :meth:`start` under ``observation.mode ==
+        "partial"``; None under full observation)."""
+        if config.observation.partial:
+            for team in (HOME, AWAY):
+                check_plays_partial(self.teams[team], self.team_names[team])
         self._end = setup.end
         self._condition: str | None = None
         """The scenario's end condition that ended the match, if one did."""
@@ -223,6 +233,11 @@ class Match:
             raise RuntimeError("a Match can be played only once; create a new one")
         self._started = True
         infos = self._choose_types()
+        if self.config.observation.partial:
+            self.observer = Observer(self.config.observation, self.sizes, self.team_names,
+                                     self.kinematics.types[:, PT_DECAY], self.kinematics.types[:, PT_INERTIA_MOMENT],
+                                     self.type_ids,
+                                     np.random.default_rng(self._perception_seq))
         for team in (HOME, AWAY):
             info = infos[team]
             rng = np.random.default_rng(self._team_seeds[team])
@@ -318,6 +333,8 @@ class Match:
     # ------------------------------------------------------------------------------------
     def _collect_commands(self) -> list[np.ndarray | None]:
         state = self.state
+        if self.observer is not None:
+            return self._collect_partial()
         moves: list[np.ndarray | None] = [None, None]
         sign = state.home_attacks
         for team in (HOME, AWAY):
@@ -329,6 +346,26 @@ class Match:
                 raise _team_failure(frame.name, "act", exc) from exc
             self._catch[team], moves[team] = frame.read_command(command, sign)
             sign = -sign
+        return moves
+
+    def _collect_partial(self) -> list[np.ndarray | None]:
+        """Under partial observation: each team gets its players' views
+        (:meth:`Observer.observe`), and what its players say goes into the channel."""
+        state = self.state
+        views = self.observer.observe(state)  # type: ignore[union-attr]
+        moves: list[np.ndarray | None] = [None, None]
+        sign = state.home_attacks
+        said = []
+        for team in (HOME, AWAY):
+            frame = self.frames[team]
+            try:
+                command = self.teams[team].act(views[team])
+            except (Exception, SystemExit) as exc:
+                raise _team_failure(frame.name, "act", exc) from exc
+            self._catch[team], moves[team] = frame.read_command(command, sign)
+            said.append(frame.said if frame.said is not None else (None,) * frame.n)
+            sign = -sign
+        self.observer.say(state.cycle, said, state.pos)  # type: ignore[union-attr]
         return moves
 
     def _resolve_tackles(self, tackling: bool) -> TackleOutcome | None:

@@ -10,6 +10,7 @@ metres per cycle² for accelerations.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from collections.abc import Sequence
 from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 import numpy as np
@@ -182,6 +183,14 @@ class TeamCommand:
     while an opponent can kick the ball it succeeds more easily (``foul_exponent``), does not
     freeze the tackler, stops the opponents that can kick the ball for ``foul_cycles``, and is
     carded when the referee sees it. None: no foul tackles."""
+    say: Sequence[str | None] | None = None
+    """One message per player (a str of at most ``AudioParams.say_msg_size`` characters from
+    rcssserver's set, :data:`soccer_sim.perception.SAY_CHARACTERS`) or None for a player that
+    says nothing; None: nobody speaks. rcssserver's ``(say MSG)``: under partial observation a
+    message said now is heard next cycle by the players within ``audio_cut_dist``
+    (:class:`~soccer_sim.perception.views.PlayerViews` ``heard_mates`` / ``heard_opponents``).
+    Under full observation messages are checked but reach nobody. A bad message is a TeamError
+    naming the player."""
 
 
 @runtime_checkable

@@ -13,6 +13,13 @@ A team that implements one of these protocols gets more out of the tools around 
   ``"defender"``), so that ``bench soccer`` can split the distance run by role. Only that
   benchmark calls it (once per cycle); a normal match never does.
 
+* ``observation_modes``: a tuple attribute naming the observation modes the team plays under
+  (``("full",)`` when absent). A team that lists ``"partial"`` accepts, under
+  ``MatchConfig.observation.mode == "partial"``, a
+  :class:`~soccer_sim.perception.views.PlayerViews` (each player's own noisy view and the
+  messages it heard) in ``act`` instead of the exact ``TeamView``
+  (:func:`check_plays_partial`).
+
 Both are checked structurally (``isinstance(team, Drawable)``), so a team needs no base class.
 Import them from here: ``from soccer_sim.team_hooks import Drawable, Drawing, ReportsStatistics``.
 """
@@ -110,3 +117,22 @@ class ReportsRoles(Protocol):
         ``"defender"`` or a finer name such as ``"centre-back"``; any strings will do (readers
         group figures by the label as given). Called after the team's ``act`` of a cycle."""
         ...
+
+
+def plays_partial(team: object) -> bool:
+    """Whether ``team`` says it plays under partial observation (``"partial"`` in its
+    ``observation_modes``)."""
+    modes = getattr(team, "observation_modes", ("full",))
+    return isinstance(modes, (tuple, list, frozenset, set)) and "partial" in modes
+
+
+def check_plays_partial(team: object, name: str) -> None:
+    """A :class:`~soccer_sim.team.TeamError` naming the team unless it plays under partial
+    observation: a team written for the exact ``TeamView`` would otherwise fail on its first
+    ``act`` with an unrelated attribute error."""
+    if not plays_partial(team):
+        from soccer_sim.team import TeamError
+
+        raise TeamError(name, "cannot play under partial observation: its act() takes the exact TeamView. "
+                              "A team that takes each player's PlayerViews declares "
+                              "observation_modes = ('full', 'partial') (docs/simulator.md, section 14)")

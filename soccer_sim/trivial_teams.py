@@ -1,4 +1,5 @@
 """Two trivial teams for tests and benchmarks: ``idle`` stands still, ``chaser`` runs at the ball.
+Both play under full and partial observation (``observation_modes``).
 
 Both reuse one command object and no per-player Python (the chaser's rule is one compiled
 loop, :func:`soccer_sim.kernels.chase_ball`), so they add almost nothing to a cycle's cost: the
@@ -11,11 +12,14 @@ import numpy as np
 
 from soccer_sim.config import MatchConfig
 from soccer_sim.kernels import chase_ball
+from soccer_sim.perception.views import PlayerViews
 from soccer_sim.team import SideInfo, TeamCommand, TeamView
 
 
 class IdleTeam:
     """Every player stands still and never kicks."""
+
+    observation_modes = ("full", "partial")
 
     def reset(self, side_info: SideInfo, config: MatchConfig, rng: np.random.Generator) -> None:
         n = side_info.players_per_team
@@ -27,7 +31,10 @@ class IdleTeam:
 
 class ChaserTeam:
     """Every player (the goalkeeper too) runs flat out at the ball and, when it can, kicks it
-    as hard as possible straight at the centre of the opponents' goal."""
+    as hard as possible straight at the centre of the opponents' goal. Under partial observation
+    each player runs at where it last saw the ball (the centre spot before it has seen it)."""
+
+    observation_modes = ("full", "partial")
 
     _DASH_GAIN = 100.0
     """Requested acceleration per metre of distance to the ball: large, so the match's clipping
@@ -38,10 +45,24 @@ class ChaserTeam:
         self._goal_x = config.field.half_length
         self._kick_speed = config.physics.kick_speed_max
         self._command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
+        self._last_ball = np.zeros((n, 2))  # partial observation: where each player last saw the ball
 
-    def act(self, view: TeamView) -> TeamCommand:
+    def act(self, view: TeamView | PlayerViews) -> TeamCommand:
         command = self._command
+        if isinstance(view, PlayerViews):
+            return self._act_on_own_views(view)
         chase_ball(view.own_pos, view.ball, view.ball_vel, self._goal_x, self._kick_speed, self._DASH_GAIN,
                    command.dash, command.kick)
         return command
 
+
+    def _act_on_own_views(self, views: PlayerViews) -> TeamCommand:
+        """Each player from its own view: dash at where it last saw the ball, kick at goal."""
+        command = self._command
+        seen = views.ball_seen
+        self._last_ball[seen] = views.ball[seen]
+        ball = self._last_ball
+        command.dash[:] = (ball - views.position) * self._DASH_GAIN
+        to_goal = np.array([self._goal_x, 0.0]) - ball
+        command.kick[:] = to_goal * (self._kick_speed / np.maximum(np.hypot(to_goal[:, 0], to_goal[:, 1]), 1e-9))[:, None]
+        return command

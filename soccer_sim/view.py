@@ -15,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from soccer_sim.kernels import mirror_bodies, store_command
+from soccer_sim.perception.audio import AudioParams, check_message
 from soccer_sim.state import NO_PLAYER, StateError, WorldState
 from soccer_sim.team import TeamCommand, TeamError, TeamView
 
@@ -38,7 +39,7 @@ class TeamFrame:
     """
 
     def __init__(self, team: int, name: str, state: WorldState, commands: np.ndarray,
-                 type_ids: np.ndarray | None = None) -> None:
+                 type_ids: np.ndarray | None = None, audio: AudioParams = AudioParams()) -> None:
         home, away = state.sizes
         n = home if team == 0 else away
         total = home + away
@@ -71,6 +72,9 @@ class TeamFrame:
         """(n,) the last command's tackle directions, absolute frame, radians (NaN: none)."""
         self.foul = np.zeros(n, dtype=bool)
         """(n,) the last command's foul flags."""
+        self.said: tuple[str | None, ...] | None = None
+        """The last command's messages (one per player, None: silent), or None if nobody spoke."""
+        self._audio = audio
         self._commands = commands[self.rows]
         self._dash = self._commands[:, 0:2]
         self._kick = self._commands[:, 2:4]
@@ -126,7 +130,23 @@ class TeamFrame:
             self.tackling = self._read_tackle(command.tackle, command.foul, sign)
         elif self.tackling:
             self.tackling = False
+        said = command.say
+        self.said = None if said is None else self._read_say(said)
         return catch, move
+
+    def _read_say(self, said: object) -> tuple[str | None, ...]:
+        """The messages of ``command.say`` (one per player, str or None), each checked against
+        the channel's rules (:func:`~soccer_sim.perception.audio.check_message`)."""
+        if isinstance(said, (str, bytes)) or not hasattr(said, "__len__") or not hasattr(said, "__iter__"):
+            raise TeamError(self.name, f"command.say must be a sequence of {self.n} messages (str or None), "
+                                       f"got {type(said).__name__}")
+        messages = tuple(said)  # type: ignore[arg-type]
+        if len(messages) != self.n:
+            raise TeamError(self.name, f"command.say has {len(messages)} messages for {self.n} players")
+        for i, message in enumerate(messages):
+            if message is not None:
+                check_message(message, self._audio, self.name, i)
+        return messages
 
     def _read_tackle(self, tackle: object, foul: object, sign: int) -> bool:
         """Validate the tackle directions (degrees, own frame, NaN for none) and foul flags

@@ -108,6 +108,10 @@ def config_description(config: MatchConfig, scenario: Scenario | None = None) ->
     """Every parameter of ``config`` as canonical JSON (sorted keys), with the whole content of
     ``scenario`` under the key ``scenario`` when one is played."""
     described = asdict(config)
+    from soccer_sim.perception.config import ObservationConfig
+
+    if config.observation == ObservationConfig():
+        del described["observation"]  # full observation keeps the hash its results files always had
     if scenario is not None:
         from soccer_sim.scenarios import scenario_to_dict
 

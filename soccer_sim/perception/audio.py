@@ -206,6 +206,10 @@ class AudioChannel:
         pos = np.asarray(positions, dtype=np.float64)
         if pos.shape != (self.players, 2) or not np.all(np.isfinite(pos)):
             raise ValueError(f"AudioChannel.say: positions must be finite, shape ({self.players}, 2); got {pos.shape}")
+        if flat.count(None) == len(flat):  # a silent cycle: nothing arrives anywhere
+            self._messages, self._said_cycle = tuple(flat), int(cycle)
+            self._arrived = np.zeros((self.players, self.players), dtype=bool)
+            return
         spoke = np.array([m is not None for m in flat], dtype=bool)
         diff = pos[:, None, :] - pos[None, :, :]
         in_range = np.einsum("lsk,lsk->ls", diff, diff) <= self.params.audio_cut_dist ** 2

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from soccer_sim.perception.params import SeeParams
-from soccer_sim.perception.see import EPS, quantize, wrap_degrees
+from soccer_sim.perception.kernels import localise_into, params_array, sense_velocities
 
 PENALTY_AREA_LENGTH = 16.5
 """rcssserver's ``PENALTY_AREA_LENGTH`` (m), where the penalty-box flags stand."""
@@ -51,6 +51,10 @@ def field_flags(length: float = 105.0, width: float = 68.0, goal_width: float = 
     for sy in (-1.0, 1.0):
         pts += [(float(x), sy * (hw + FLAG_MARGIN)) for x in range(-50, 51, 10)]
     return np.array(pts, dtype=np.float64)
+
+
+DEFAULT_FLAGS = field_flags()
+"""The 55 flags of the default 105 x 68 m pitch (m)."""
 
 
 @dataclass(frozen=True)
@@ -83,22 +87,21 @@ def localise(positions: np.ndarray, velocities: np.ndarray, body_dirs: np.ndarra
     if params.exact_self:
         return SelfEstimate(position=pos.copy(), velocity=vel.copy(), localised=np.ones(n, dtype=bool),
                             flags_seen=np.zeros(n, dtype=np.int64))
-    flag_pts = field_flags() if flags is None else np.asarray(flags, dtype=np.float64).reshape(-1, 2)
-    offset = flag_pts[None, :, :] - pos[:, None, :]
-    dist = np.hypot(offset[..., 0], offset[..., 1])
-    rel = wrap_degrees(np.degrees(np.arctan2(offset[..., 1], offset[..., 0])) - body[:, None])
-    cone = np.ones_like(dist, dtype=bool) if params.omnidirectional \
-        else np.abs(rel) < params.visible_angle / 2.0
-    visible = (cone & (dist < params.max_observation_length)) | (dist <= params.visible_distance)
-    d_rep = quantize(np.exp(quantize(np.log(dist + EPS), params.quantize_step_l)), params.distance_step)
-    a_rep = np.radians(body[:, None] + quantize(rel, params.direction_step))
-    est = flag_pts[None, :, :] - d_rep[..., None] * np.stack([np.cos(a_rep), np.sin(a_rep)], axis=-1)
-    count = visible.sum(axis=1)
-    total = np.where(visible[..., None], est, 0.0).sum(axis=1)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        position = np.where(count[:, None] > 0, total / count[:, None], np.nan)
-    speed = quantize(np.hypot(vel[:, 0], vel[:, 1]), 0.01)
-    heading = np.radians(body + quantize(wrap_degrees(np.degrees(np.arctan2(vel[:, 1], vel[:, 0])) - body),
-                                         params.direction_step))
-    velocity = np.stack([speed * np.cos(heading), speed * np.sin(heading)], axis=1)
-    return SelfEstimate(position=position, velocity=velocity, localised=count > 0, flags_seen=count)
+    flag_pts = DEFAULT_FLAGS if flags is None else np.ascontiguousarray(flags, dtype=np.float64).reshape(-1, 2)
+    position = np.empty((n, 2))
+    count = np.empty(n, dtype=np.int64)
+    localise_into(np.ascontiguousarray(pos), np.ascontiguousarray(body), flag_pts, params_array(params), position,
+                  count)
+    return SelfEstimate(position=position, velocity=sensed_velocity(vel, body, params), localised=count > 0,
+                        flags_seen=count)
+
+
+def sensed_velocity(velocities: np.ndarray, body_dirs: np.ndarray, params: SeeParams = SeeParams()) -> np.ndarray:
+    """The velocities (n, 2) m/cycle that ``sense_body`` reports for true ``velocities`` (n, 2)
+    m/cycle and body directions ``body_dirs`` (n,) degrees: the speed quantised to 0.01 m/cycle,
+    the direction relative to the body rounded to ``direction_step`` (``BodySenderPlayerV6``)."""
+    vel = np.asarray(velocities, dtype=np.float64).reshape(-1, 2)
+    body = np.asarray(body_dirs, dtype=np.float64).reshape(-1)
+    out = np.empty((len(vel), 2))
+    sense_velocities(np.ascontiguousarray(vel), np.ascontiguousarray(body), float(params.direction_step), out)
+    return out

@@ -30,32 +30,25 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from soccer_sim.body import DEFAULT_INERTIA_MOMENT, facing
+from soccer_sim.body import DEFAULT_INERTIA_MOMENT
+from soccer_sim.perception.kernels import (ANONYMOUS, EPS, FULL, TEAM_ONLY, UNSEEN, body_degrees, params_array,
+                                           reported_distances, see_into)
 from soccer_sim.perception.params import SeeParams
 
-EPS = 1.0e-10
-"""rcssserver's ``EPS`` (``utility.h``), added before the logarithm."""
+__all__ = ["ANONYMOUS", "EPS", "FULL", "TEAM_ONLY", "UNSEEN", "Sightings", "body_directions", "quantized_distance",
+           "see", "wrap_degrees"]
 
-UNSEEN = -1
-""":attr:`Sightings.identity` of an object not seen."""
-ANONYMOUS = 0
-"""Identity level: neither team nor number known (far away, or seen outside the cone)."""
-TEAM_ONLY = 1
-"""Identity level: the team is known, not the number."""
-FULL = 2
-"""Identity level: team and number known (the ball, when seen, always has this level)."""
-
-
-def quantize(value: np.ndarray, step: float) -> np.ndarray:
-    """rcssserver's ``Quantize`` (``utility.h``): ``rint(value / step) * step``."""
-    return np.rint(np.asarray(value, dtype=np.float64) / step) * step
 
 
 def quantized_distance(distance: np.ndarray, log_step: float, final_step: float = 0.1) -> np.ndarray:
     """The distance (m) a player reports for a true ``distance`` (m):
-    ``Quantize(exp(Quantize(log(d + EPS), log_step)), final_step)``."""
+    ``Quantize(exp(Quantize(log(d + EPS), log_step)), final_step)`` with rcssserver's
+    ``Quantize(v, q) = rint(v / q) * q`` and ``EPS`` 1e-10 (element-wise, any shape)."""
     d = np.asarray(distance, dtype=np.float64)
-    return quantize(np.exp(quantize(np.log(d + EPS), log_step)), final_step)
+    flat = np.ascontiguousarray(d).reshape(-1)
+    out = np.empty_like(flat)
+    reported_distances(flat, float(log_step), float(final_step), out)
+    return out.reshape(d.shape)
 
 
 def wrap_degrees(angle: np.ndarray) -> np.ndarray:
@@ -64,20 +57,19 @@ def wrap_degrees(angle: np.ndarray) -> np.ndarray:
 
 
 def body_directions(positions: np.ndarray, velocities: np.ndarray, ball: np.ndarray,
-                    inertia_moment: float = DEFAULT_INERTIA_MOMENT) -> np.ndarray:
+                    inertia_moment: float | np.ndarray = DEFAULT_INERTIA_MOMENT) -> np.ndarray:
     """Body directions (degrees, absolute frame of the positions) of ``n`` players at
     ``positions`` (n, 2) m with ``velocities`` (n, 2) m/cycle and the ball at ``ball`` (2,) m:
-    :func:`soccer_sim.body.facing`, the simulator's one body-direction model."""
-    pos = np.asarray(positions, dtype=np.float64).reshape(-1, 2)
-    vel = np.asarray(velocities, dtype=np.float64).reshape(-1, 2)
+    :func:`soccer_sim.body.facing`, the simulator's one body-direction model (``inertia_moment``
+    one number or one per player)."""
+    pos = np.ascontiguousarray(positions, dtype=np.float64).reshape(-1, 2)
+    vel = np.ascontiguousarray(velocities, dtype=np.float64).reshape(-1, 2)
     if pos.shape != vel.shape:
         raise ValueError(f"body_directions: positions {pos.shape} and velocities {vel.shape} differ")
-    to_ball = np.asarray(ball, dtype=np.float64).reshape(2) - pos
-    # 11 compiled calls per team (Python floats: cheaper dispatch); the model lives in one place
-    faces = [facing(vx, vy, bx, by, float(inertia_moment))
-             for (vx, vy), (bx, by) in zip(vel.tolist(), to_ball.tolist())]
-    out = np.array(faces, dtype=np.float64).reshape(-1, 2)
-    return np.degrees(np.arctan2(out[:, 1], out[:, 0]))
+    inertia = np.broadcast_to(np.asarray(inertia_moment, dtype=np.float64), (len(pos),)).copy()
+    out = np.empty(len(pos))
+    body_degrees(pos, vel, np.ascontiguousarray(ball, dtype=np.float64).reshape(2), inertia, out)
+    return out
 
 
 @dataclass(frozen=True)
@@ -126,40 +118,19 @@ def see(observers: np.ndarray, body_dirs: np.ndarray, ball: np.ndarray, players:
     ball_pt = _as_points("ball", np.asarray(ball, dtype=np.float64).reshape(1, 2))
     objects = np.concatenate([ball_pt, _as_points("players", np.asarray(players).reshape(-1, 2))])
     m = len(objects)
-    offset = objects[None, :, :] - obs[:, None, :]
-    true_dist = np.hypot(offset[..., 0], offset[..., 1])
-    rel = wrap_degrees(np.degrees(np.arctan2(offset[..., 1], offset[..., 0])) - body[:, None])
-    if params.omnidirectional:
-        in_cone = true_dist < params.max_observation_length
-    else:
-        in_cone = (np.abs(rel) < params.visible_angle / 2.0) & (true_dist < params.max_observation_length)
-    close = ~in_cone & (true_dist <= params.visible_distance)
-    seen = in_cone | close
+    idx = np.full(n, -1, dtype=np.int64)
     if self_index is not None:
         idx = np.asarray(self_index, dtype=np.int64).reshape(-1)
-        if idx.shape != (n,) or np.any(idx >= m - 1):
+        if idx.shape != (n,) or np.any(idx >= m - 1) or np.any(idx < -1):
             raise ValueError(f"see: self_index must be {n} rows of players (or -1)")
-        rows = np.nonzero(idx >= 0)[0]
-        seen[rows, idx[rows] + 1] = False
-    distance = quantized_distance(true_dist, params.quantize_step, params.distance_step)
-    direction = wrap_degrees(quantize(rel, params.direction_step))
-    # identity: drawn for every pair so the stream does not depend on who sees what
-    u_team = rng.random((n, m))
-    u_unum = rng.random((n, m))
-    p_no_team = _drop_chance(distance, params.team_far_length, params.team_too_far_length)
-    p_no_unum = _drop_chance(distance, params.unum_far_length, params.unum_too_far_length)
-    identity = np.where(u_team < p_no_team, ANONYMOUS, np.where(u_unum < p_no_unum, TEAM_ONLY, FULL))
-    identity = np.where(close, ANONYMOUS, identity)
-    identity[:, 0] = FULL  # the ball (also the close "(B)") has no team or number to lose
-    identity = np.where(seen, identity, UNSEEN).astype(np.int8)
-    return Sightings(seen=seen, distance=np.where(seen, distance, np.nan),
-                     direction=np.where(seen, direction, np.nan), identity=identity,
-                     in_cone=in_cone & seen)
-
-
-def _drop_chance(distance: np.ndarray, far: float, too_far: float) -> np.ndarray:
-    """rcssserver's linear chance of losing an identity at reported ``distance`` (m):
-    ``(d - far) / (too_far - far)`` clipped to [0, 1] (a step at ``far`` when they are equal)."""
-    if too_far == far:
-        return (distance > far).astype(np.float64)
-    return np.clip((distance - far) / (too_far - far), 0.0, 1.0)
+    seen = np.empty((n, m), dtype=bool)
+    distance = np.empty((n, m))
+    direction = np.empty((n, m))
+    identity = np.empty((n, m), dtype=np.int8)
+    in_cone = np.empty((n, m), dtype=bool)
+    # identity drops: drawn for every pair (team drops, then number drops) so the stream does not
+    # depend on who sees what
+    uniforms = rng.random((2, n, m))
+    see_into(obs, body, objects, idx, np.ones(m, dtype=bool), uniforms, params_array(params), seen, distance,
+             direction, identity, in_cone)
+    return Sightings(seen=seen, distance=distance, direction=direction, identity=identity, in_cone=in_cone)

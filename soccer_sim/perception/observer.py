@@ -1,0 +1,152 @@
+"""The partial-observation model of a match: every player's :class:`~.views.PlayerViews` row each
+cycle, and the say/hear channel between the players.
+
+Per cycle ``t`` (:meth:`Observer.observe`, before the teams decide), in the absolute frame:
+
+1. **Body directions** of all players (:func:`~.see.body_directions`, the simulator's one
+   model) and the **sensed velocities** (:func:`~.localise.sensed_velocity`).
+2. **Self-localisation.** Each player's belief about its own position is advanced by its sensed
+   velocity over the player's decay (``pos(t) = pos(t-1) + vel(t) / player_decay``: the
+   movement of the last cycle, which every rcssserver client dead-reckons), and replaced by the
+   flag estimate (:func:`~.localise.localise`) on cycles with a see. A player starts the match
+   knowing where it stands (as a client knows where it moved itself).
+3. **Sees** for the players whose see arrives in cycle ``t`` (:func:`~.params.see_cycles`; each
+   player's see phase, ``offset_ms`` in ``[0, send_step)``, is drawn at the start of the match,
+   as rcssserver's clients connect at different moments): :func:`~.see.see` over the ball and
+   all players on the pitch (players sent off are neither seen nor see); the reported polar
+   coordinates are turned into positions with the player's own belief.
+4. **Hear**: the messages said at ``t - 1`` (:class:`~.audio.AudioChannel`).
+
+Then, after the teams decide, :meth:`Observer.say` records their messages with the positions
+at ``t``. All randomness (see phases, identity drops, the hearing order) comes from the one
+generator the match gives the observer, in a fixed order, so a match stays a pure function of
+its inputs. Nothing here runs under full observation.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import numpy as np
+
+from soccer_sim.perception.audio import AudioChannel
+from soccer_sim.perception.config import ObservationConfig
+from soccer_sim.perception.kernels import params_array, perceive
+from soccer_sim.perception.localise import DEFAULT_FLAGS
+from soccer_sim.perception.params import see_cycles
+from soccer_sim.perception.views import PlayerViews
+from soccer_sim.state import WorldState
+
+
+class Observer:
+    """Builds both teams' :class:`PlayerViews` each cycle of a partially observed match.
+
+    ``sizes``: (home, away) players; ``decay``: (P,) each player row's ``player_decay`` (its
+    player type's); ``type_ids``: (P,) each row's player type; ``rng``: the observer's own
+    generator."""
+
+    def __init__(self, config: ObservationConfig, sizes: tuple[int, int], team_names: tuple[str, str],
+                 decay: np.ndarray, inertia: np.ndarray, type_ids: np.ndarray, rng: np.random.Generator) -> None:
+        self.params = params = config.see
+        self.sizes = sizes
+        total = sizes[0] + sizes[1]
+        self._total = total
+        self._rng = rng
+        self._prm = params_array(params)
+        self._decay = np.ascontiguousarray(decay, dtype=np.float64)
+        self._inertia = np.ascontiguousarray(inertia, dtype=np.float64)
+        self.offsets_ms = rng.integers(0, int(params.send_step), total)
+        """(P,) each player's see phase (ms)."""
+        send, sim = int(params.send_step), int(params.simulator_step)
+        period = math.lcm(send, sim) // sim
+        self._see_table = see_cycles(np.arange(period)[:, None], params, self.offsets_ms[None, :])
+        self.channel = AudioChannel(sizes, team_names, config.audio)
+        self._team = np.repeat(np.array([0, 1], dtype=np.int64), sizes)
+        self._first = np.where(self._team == 0, 0, sizes[0]).astype(np.int64)
+        self._sign = np.ones(total)
+        self._belief = np.zeros((total, 2))
+        self._started = False
+        self._half = 0
+        k = max(total - 1, 0)
+        # The views' arrays: written in place every cycle (team frames), windows per team below.
+        self._out = out = dict(
+            stamina=np.empty(total), effort=np.empty(total), capacity=np.empty(total),
+            frozen=np.empty(total, dtype=np.int64), present=np.empty(total, dtype=bool),
+            holds_ball=np.zeros(total, dtype=bool), position=np.empty((total, 2)), velocity=np.empty((total, 2)),
+            body_direction=np.empty(total), localised=np.empty(total, dtype=bool), saw=np.empty(total, dtype=bool),
+            ball_seen=np.empty(total, dtype=bool), ball=np.empty((total, 2)), ball_distance=np.empty(total),
+            ball_direction=np.empty(total), seen_count=np.empty(total, dtype=np.int64),
+            seen_position=np.empty((total, k, 2)), seen_distance=np.empty((total, k)),
+            seen_direction=np.empty((total, k)), seen_side=np.empty((total, k), dtype=np.int8),
+            seen_number=np.empty((total, k), dtype=np.int8))
+        self.seen_rows = np.empty((total, k), dtype=np.int64)
+        """(P, K) the player row of each player seen in the last cycle's lists (-1 padding): the
+        truth behind the views, for tests and statistics."""
+        rows = (slice(0, sizes[0]), slice(sizes[0], total))
+        self.views = tuple(PlayerViews(player_types=np.asarray(type_ids[r]).copy(),
+                                       **{name: array[r] for name, array in out.items()}) for r in rows)
+        """(home, away) views; :meth:`observe` refreshes them."""
+
+    # ------------------------------------------------------------------------------------
+    def observe(self, state: WorldState) -> tuple[PlayerViews, PlayerViews]:
+        """Every player's perception at ``state.cycle`` (module docstring), as (home, away) views."""
+        out, home_n = self._out, self.sizes[0]
+        if state.half != self._half:
+            self._half = state.half
+            self.channel.reset_capacity()
+        sign = self._sign
+        sign[:home_n] = state.home_attacks
+        sign[home_n:] = -state.home_attacks
+        present = state.present
+        seeing = out["saw"]
+        np.logical_and(self._see_table[state.cycle % len(self._see_table)], present, out=seeing)
+        if not self._started:
+            self._belief[:] = state.pos  # a player knows where it starts
+        uniforms = self._rng.random((2, int(np.count_nonzero(seeing)), self._total + 1))
+        perceive(state.pos, state.vel, state.ball, present, seeing, self._inertia, self._decay, DEFAULT_FLAGS,
+                 self._prm, self.params.exact_self, self._started, uniforms, self._team, self._first, sign,
+                 self._belief, out["body_direction"], out["position"], out["velocity"], out["localised"],
+                 out["ball_seen"], out["ball_distance"], out["ball_direction"], out["ball"], out["seen_count"],
+                 out["seen_distance"], out["seen_direction"], out["seen_position"], out["seen_side"],
+                 out["seen_number"], self.seen_rows)
+        self._started = True
+        out["stamina"][:] = state.stamina
+        out["effort"][:] = state.effort
+        out["capacity"][:] = state.capacity
+        out["frozen"][:] = state.frozen
+        out["present"][:] = present
+        holds = out["holds_ball"]
+        holds[:] = False
+        if state.ball_holder >= 0:
+            holds[state.ball_holder] = True
+        heard = self.channel.hear(state.cycle, self._rng)
+        mates, opponents = self._heard_by_player(heard.heard, heard.messages)
+        score = state.score.tolist()
+        for team, view in enumerate(self.views):
+            r = slice(0, home_n) if team == 0 else slice(home_n, self._total)
+            view.cycle, view.half, view.play_mode = state.cycle, state.half, state.play_mode
+            view.mode_ours = state.mode_team == team
+            view.score = (score[team], score[1 - team])
+            view.heard_mates, view.heard_opponents = mates[r], opponents[r]
+        return self.views
+
+    def say(self, cycle: int, messages: Sequence[Sequence[str | None]], positions: np.ndarray) -> None:
+        """Record the messages both teams say at ``cycle`` (``messages[team][i]``, str or None),
+        with the players' ``positions`` (P, 2) m at ``cycle``; a bad one is a ``TeamError``."""
+        self.channel.say(cycle, messages, positions)
+
+    def _heard_by_player(self, heard: np.ndarray, messages: tuple[str | None, ...]) -> tuple[tuple, tuple]:
+        """Per player, the (team-mate index, message) pairs and the opponents' messages it hears."""
+        total = self._total
+        if not heard.any():
+            return ((),) * total, ((),) * total
+        mates: list[list] = [[] for _ in range(total)]
+        opponents: list[list] = [[] for _ in range(total)]
+        team, first = self._team, self._first
+        for listener, speaker in zip(*(a.tolist() for a in np.nonzero(heard))):
+            if team[speaker] == team[listener]:
+                mates[listener].append((speaker - int(first[speaker]), messages[speaker]))
+            else:
+                opponents[listener].append(messages[speaker])
+        return tuple(tuple(m) for m in mates), tuple(tuple(o) for o in opponents)
