@@ -13,13 +13,15 @@ if TYPE_CHECKING:  # annotations only: importing the simulator is left to what p
     from soccer_sim import MatchConfig
 
 
-def match_config(cycles: int | None) -> MatchConfig:
-    """The MatchConfig for a cycle count (None: a regulation match of two halves)."""
+def match_config(cycles: int | None, observation: str = "full") -> MatchConfig:
+    """The MatchConfig for a cycle count (None: a regulation match of two halves) and an
+    observation mode (``"full"`` or ``"partial"``: ``--observation``)."""
     from dataclasses import replace
 
     from soccer_sim import MatchConfig, RuleConfig
+    from soccer_sim.perception.config import ObservationConfig
 
     rules = RuleConfig()
     if cycles is not None and cycles > 2 * rules.half_cycles:
         rules = replace(rules, half_cycles=(cycles + 1) // 2)
-    return MatchConfig(rules=rules, max_cycles=cycles)
+    return MatchConfig(rules=rules, max_cycles=cycles, observation=ObservationConfig(observation))

@@ -58,7 +58,7 @@ from soccer_sim.state import AWAY, HOME, NO_PLAYER, NO_TEAM, EventLog, PlayMode,
 from soccer_sim.statistics import StatisticsRecorder, TeamStatistics
 from soccer_sim.tackles import TackleOutcome, Tackles
 from soccer_sim.team import SideInfo, Team, TeamError
-from soccer_sim.team_hooks import ChoosesPlayerTypes, check_plays_partial
+from soccer_sim.team_hooks import ChoosesPlayerTypes, check_observation_mode
 from soccer_sim.view import TeamFrame
 
 _KICK_OFF = PlayMode.KICK_OFF
@@ -183,9 +183,8 @@ class Match:
         self.observer: Observer | None = None
         """The partial-observation model (built in :meth:`start` under ``observation.mode ==
         "partial"``; None under full observation)."""
-        if config.observation.partial:
-            for team in (HOME, AWAY):
-                check_plays_partial(self.teams[team], self.team_names[team])
+        for team in (HOME, AWAY):
+            check_observation_mode(self.teams[team], self.team_names[team], config.observation.mode)
         self._end = setup.end
         self._condition: str | None = None
         """The scenario's end condition that ended the match, if one did."""

@@ -18,7 +18,7 @@ A team that implements one of these protocols gets more out of the tools around 
   ``MatchConfig.observation.mode == "partial"``, a
   :class:`~soccer_sim.perception.views.PlayerViews` (each player's own noisy view and the
   messages it heard) in ``act`` instead of the exact ``TeamView``
-  (:func:`check_plays_partial`).
+  (:func:`check_observation_mode`).
 
 Both are checked structurally (``isinstance(team, Drawable)``), so a team needs no base class.
 Import them from here: ``from soccer_sim.team_hooks import Drawable, Drawing, ReportsStatistics``.
@@ -119,20 +119,29 @@ class ReportsRoles(Protocol):
         ...
 
 
-def plays_partial(team: object) -> bool:
-    """Whether ``team`` says it plays under partial observation (``"partial"`` in its
-    ``observation_modes``)."""
+def observation_modes(team: object) -> tuple[str, ...]:
+    """The observation modes ``team`` plays under: its ``observation_modes`` attribute, else
+    ``("full",)``."""
     modes = getattr(team, "observation_modes", ("full",))
-    return isinstance(modes, (tuple, list, frozenset, set)) and "partial" in modes
+    return tuple(modes) if isinstance(modes, (tuple, list, frozenset, set)) else ("full",)
 
 
-def check_plays_partial(team: object, name: str) -> None:
-    """A :class:`~soccer_sim.team.TeamError` naming the team unless it plays under partial
-    observation: a team written for the exact ``TeamView`` would otherwise fail on its first
-    ``act`` with an unrelated attribute error."""
-    if not plays_partial(team):
-        from soccer_sim.team import TeamError
+def plays_partial(team: object) -> bool:
+    """Whether ``team`` plays under partial observation (``"partial"`` in its ``observation_modes``)."""
+    return "partial" in observation_modes(team)
 
+
+def check_observation_mode(team: object, name: str, mode: str) -> None:
+    """A :class:`~soccer_sim.team.TeamError` naming the team unless it plays under observation
+    ``mode``: a team written for the exact ``TeamView`` would otherwise fail on its first ``act``
+    with an unrelated attribute error (and one written for per-player views under full)."""
+    if mode in observation_modes(team):
+        return
+    from soccer_sim.team import TeamError
+
+    if mode == "partial":
         raise TeamError(name, "cannot play under partial observation: its act() takes the exact TeamView. "
                               "A team that takes each player's PlayerViews declares "
                               "observation_modes = ('full', 'partial') (docs/simulator.md, section 14)")
+    raise TeamError(name, f"cannot play under {mode} observation: it declares observation_modes = "
+                          f"{observation_modes(team)!r}")

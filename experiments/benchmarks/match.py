@@ -15,6 +15,8 @@ from experiments.benchmarks import add_match_arguments
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_match_arguments(parser, matches=5)
+    parser.add_argument("--observation", choices=("full", "partial"), default="full",
+                        help="full (default) or partial observation: each player's own view and messages")
     parser.add_argument("--profile", action="store_true", help="also print a cProfile top list of one match")
     parser.add_argument("--top", type=int, default=25, help="entries in the profile top list (default: 25)")
 
@@ -30,9 +32,12 @@ def run(args: argparse.Namespace) -> int:
     from experiments.reporting import Table
     from soccer_sim import ConfigError, MatchConfig, TeamError, TeamNotFoundError, run_match
 
-    config = MatchConfig(max_cycles=args.cycles)
+    from soccer_sim.perception.config import ObservationConfig
+
+    observation = ObservationConfig(args.observation)
+    config = MatchConfig(max_cycles=args.cycles, observation=observation)
     try:  # the warm-up match also checks the teams and the seed
-        run_match(args.home, args.away, seed=args.seed, config=MatchConfig(max_cycles=200))
+        run_match(args.home, args.away, seed=args.seed, config=MatchConfig(max_cycles=200, observation=observation))
     except (TeamNotFoundError, TeamError, ConfigError, ValueError) as exc:
         return fail(str(exc))
     times, cycles, goals = [], [], []
@@ -44,7 +49,8 @@ def run(args: argparse.Namespace) -> int:
         goals.append(sum(result.score))
     median = statistics.median(times)
     per_cycle = [t / c * 1e6 for t, c in zip(times, cycles)]
-    table = Table(f"{args.home} vs {args.away}: {args.matches} matches of {cycles[0]} cycles",
+    table = Table(f"{args.home} vs {args.away}: {args.matches} matches of {cycles[0]} cycles, "
+                  f"{args.observation} observation",
                   ["median s / match", "min s / match", "median µs / cycle", "min µs / cycle", "goals / match"],
                   labels=0)
     table.rows.append([f"{median:.3f}", f"{min(times):.3f}", f"{statistics.median(per_cycle):.1f}",

@@ -44,6 +44,9 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--cycles", type=positive_int, default=None,
                         help="stop after this many cycles (default: the full two halves of 3000); more than "
                              "6000 lengthens both halves to half of it each")
+    parser.add_argument("--observation", choices=("full", "partial"), default="full",
+                        help="what the teams perceive: the exact state (default) or each player's own noisy view "
+                             "and the say/hear channel (partial; both teams must support it)")
     parser.add_argument("--json", action="store_true", help="print the match report as one JSON object")
     parser.add_argument("--scenario", default=None, metavar="NAME|FILE",
                         help="play a scenario: a name from `soccer-sim scenarios` or a .json/.toml file "
@@ -68,6 +71,7 @@ def run(args: argparse.Namespace) -> int:
 
     from rich.markup import escape
 
+    from experiments.commands.run_options import RunInputError, check_observation
     from experiments.match_report import match_report
     from experiments.recording import rcg_recording, replay_recording
     from experiments.runner.worker import MatchTimeout, arm_timer, disarm_timer
@@ -78,11 +82,12 @@ def run(args: argparse.Namespace) -> int:
 
     timeout = getattr(args, "match_timeout", None)
     try:
-        config = match_config(args.cycles)
+        config = match_config(args.cycles, getattr(args, "observation", "full"))
         scenario = _scenario(getattr(args, "scenario", None))
         with replay_recording(getattr(args, "record", None), "--record") as replays, \
                 rcg_recording(getattr(args, "rcg", None), "--rcg") as logs:
             recorders = [*replays, *logs]
+            check_observation([args.home, args.away], config.observation.mode)
             warm_kernels((args.home, args.away))  # a cold cache is filled here, not on the match's clock
             start = time.perf_counter()
             alarm = arm_timer(timeout)  # the tournament's timer: MatchTimeout where the match hangs
@@ -103,7 +108,7 @@ def run(args: argparse.Namespace) -> int:
             return _fail(f"match stopped: it exceeded its time budget of {exc.__cause__.seconds:g} s "
                          f"(--match-timeout) while team {exc.team_name!r} was in {method}()", 1)
         return _fail(str(exc), 1)
-    except (TeamNotFoundError, ConfigError, ValueError, ReplayError, RcgError) as exc:  # bad input
+    except (TeamNotFoundError, ConfigError, ValueError, ReplayError, RcgError, RunInputError) as exc:  # bad input
         return _fail(str(exc), 2)
     report = match_report(result)
     try:

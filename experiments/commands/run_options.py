@@ -38,6 +38,10 @@ def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None
     parser.add_argument("--seed", type=seed_value, default=0, help="first seed; a pairing plays seeds seed, seed+1, ... (default: 0)")
     parser.add_argument("--cycles", type=positive_int, default=None,
                         help="cycles per match (default: a regulation match of 6000); part of the configuration hash")
+    parser.add_argument("--observation", choices=("full", "partial"), default="full",
+                        help="what the teams perceive: the exact state (full, default) or each player's own noisy "
+                             "view and the say/hear channel (partial; teams must support it); part of the "
+                             "configuration hash")
     parser.add_argument("--workers", type=positive_int, default=os.cpu_count() or 1,
                         help="worker processes (default: every core); with --backend ray: at most this many CPUs "
                              "of a local Ray instance")
@@ -68,6 +72,21 @@ def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None
     parser.add_argument("--no-progress", action="store_true", help="no progress bar or progress lines")
     parser.add_argument("--same-code", action="store_true",
                         help="refuse to resume into a --out holding matches of another code version (default: warn)")
+
+
+def check_observation(teams: list[str], observation: str) -> None:
+    """A RunInputError naming the first of ``teams`` that cannot play under ``observation``
+    (``--observation partial`` needs teams that take per-player views), before any match."""
+    from experiments.runner.worker import make_team
+    from soccer_sim.team_hooks import observation_modes
+
+    for name in teams:
+        team, _ = make_team(name)
+        modes = observation_modes(team)
+        if observation not in modes:
+            raise RunInputError(f"team {name!r} cannot play under --observation {observation}: it plays under "
+                                f"{', '.join(modes)} only (a team that takes per-player views declares "
+                                "observation_modes = ('full', 'partial') or ('partial',))")
 
 
 def add_team_option(parser: argparse.ArgumentParser, option: str, defaults: tuple[str, ...], what: str) -> None:

@@ -52,7 +52,8 @@ def build_specs(params: dict) -> list:
     from experiments.runner.spec import paired_specs
 
     return [spec for a, b in itertools.combinations(params["teams"], 2)
-            for spec in paired_specs(a, b, params["games"], params["seed"], params["cycles"])]
+            for spec in paired_specs(a, b, params["games"], params["seed"], params["cycles"],
+                                     params.get("observation", "full"))]
 
 
 def run(args: argparse.Namespace) -> int:
@@ -62,10 +63,12 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _params(args: argparse.Namespace) -> dict:
-    from experiments.commands.run_options import team_list
+    from experiments.commands.run_options import check_observation, team_list
 
-    return {"teams": team_list(args.teams, "--teams", minimum=2), "games": args.games, "seed": args.seed,
-            "cycles": args.cycles}
+    teams = team_list(args.teams, "--teams", minimum=2)
+    check_observation(teams, args.observation)
+    return {"teams": teams, "games": args.games, "seed": args.seed, "cycles": args.cycles,
+            "observation": args.observation}
 
 
 def tables(records: Sequence, teams: Sequence[str]) -> tuple:

@@ -130,14 +130,25 @@ def _digest(text: str) -> str:
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
-def paired_specs(team: str, opponent: str, games: int, seed: int, cycles: int | None) -> list[MatchSpec]:
+def paired_specs(team: str, opponent: str, games: int, seed: int, cycles: int | None,
+                 observation: str = "full") -> list[MatchSpec]:
     """``games`` matches between two teams on paired seeds: seed ``seed + k`` is played once
     with each team at home, so ``games`` is rounded up to an even number. A team against itself
-    plays ``games`` matches on distinct seeds (swapping sides would repeat the same match)."""
+    plays ``games`` matches on distinct seeds (swapping sides would repeat the same match).
+    ``observation``: ``"full"`` or ``"partial"`` (the configuration's observation mode)."""
+    config = None
+    if observation != "full":
+        from experiments.configuration import match_config
+
+        config = match_config(cycles, observation)
+
+    def spec(home: str, away: str, s: int) -> MatchSpec:
+        return MatchSpec(home, away, s, cycles, configuration=config)
+
     if team == opponent:
-        return [MatchSpec(team, team, s, cycles) for s in range(seed, seed + games)]
-    return [spec for s in range(seed, seed + (games + 1) // 2)
-            for spec in (MatchSpec(team, opponent, s, cycles), MatchSpec(opponent, team, s, cycles))]
+        return [spec(team, team, s) for s in range(seed, seed + games)]
+    return [one for s in range(seed, seed + (games + 1) // 2)
+            for one in (spec(team, opponent, s), spec(opponent, team, s))]
 
 
 def code_version() -> str:

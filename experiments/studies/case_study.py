@@ -60,7 +60,8 @@ def build_specs(params: dict) -> list:
     from experiments.runner.spec import paired_specs
 
     return [spec for team in params["teams"] for opponent in params["opponents"]
-            for spec in paired_specs(team, opponent, params["games"], params["seed"], params["cycles"])]
+            for spec in paired_specs(team, opponent, params["games"], params["seed"], params["cycles"],
+                                     params.get("observation", "full"))]
 
 
 def run(args: argparse.Namespace) -> int:
@@ -70,7 +71,7 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _params(args: argparse.Namespace) -> dict:
-    from experiments.commands.run_options import RunInputError, team_list
+    from experiments.commands.run_options import RunInputError, check_observation, team_list
 
     # Each list on its own first, so a bad --opponents is named as such before --baseline is
     # checked against --teams.
@@ -78,8 +79,9 @@ def _params(args: argparse.Namespace) -> dict:
     opponents = team_list(args.opponents, "--opponents")
     if args.baseline not in teams:
         raise RunInputError(f"--baseline {args.baseline!r} must be one of --teams ({', '.join(teams)})")
+    check_observation(teams + [o for o in opponents if o not in teams], args.observation)
     return {"teams": teams, "opponents": opponents, "baseline": args.baseline,
-            "games": args.games, "seed": args.seed, "cycles": args.cycles}
+            "games": args.games, "seed": args.seed, "cycles": args.cycles, "observation": args.observation}
 
 
 def tables(records: Sequence, params: dict) -> tuple:

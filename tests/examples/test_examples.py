@@ -64,3 +64,17 @@ def test_formation_team_refuses_a_smaller_side_by_name() -> None:
     module = runpy.run_path(str(EXAMPLES / "formation_team.py"))
     with pytest.raises(soccer_sim.TeamError, match="plays 11 players with a goalkeeper, not 3"):
         soccer_sim.run_match(module["FormationTeam"](), "chaser", seed=0, scenario="3-vs-1-with-keeper")
+
+
+def test_partial_team_plays_from_its_own_views_and_beats_idle() -> None:
+    from dataclasses import replace
+
+    from examples.partial_team import PartialTeam
+    from soccer_sim import MatchConfig, TeamError, run_match
+    from soccer_sim.perception.config import ObservationConfig
+
+    config = MatchConfig(observation=ObservationConfig("partial"), max_cycles=1500)
+    result = run_match(PartialTeam(), "idle", seed=1, config=config)
+    assert result.score[0] >= 2 and result.score[1] == 0
+    with pytest.raises(TeamError, match="cannot play under full observation"):
+        run_match(PartialTeam(), "idle", seed=1, config=replace(config, observation=ObservationConfig()))

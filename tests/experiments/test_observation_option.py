@@ -1,0 +1,38 @@
+"""``--observation`` on the commands that play matches: the configuration it selects, and a
+clear refusal of teams that cannot play under it, before any match."""
+
+from __future__ import annotations
+
+from experiments.cli import main
+from experiments.configuration import match_config
+from experiments.runner.spec import config_hash, paired_specs
+
+
+def test_partial_observation_is_its_own_configuration():
+    full, partial = match_config(None), match_config(None, "partial")
+    assert full.observation.mode == "full" and partial.observation.mode == "partial"
+    assert config_hash(full) != config_hash(partial)
+    # full observation keeps the hash results files of earlier versions hold
+    assert config_hash(full) == config_hash(match_config(None, "full"))
+    specs = paired_specs("chaser", "idle", 2, 0, 100, "partial")
+    assert [s.config().observation.mode for s in specs] == ["partial", "partial"]
+    assert all(s.configuration is None for s in paired_specs("chaser", "idle", 2, 0, 100))
+
+
+def test_a_team_that_cannot_play_partial_is_refused_before_any_match(tmp_path, capsys):
+    out = tmp_path / "r.sqlite"
+    code = main(["tournament", "--teams", "chaser,static", "--games", "2", "--cycles", "50", "--observation",
+                 "partial", "--out", str(out), "--no-progress", "--workers", "1"])
+    assert code == 2
+    assert "team 'static' cannot play under --observation partial" in capsys.readouterr().err
+    assert not out.exists()
+
+
+def test_a_partial_tournament_plays_and_play_takes_the_option(tmp_path, capsys):
+    out = tmp_path / "r.sqlite"
+    code = main(["tournament", "--teams", "chaser,idle", "--games", "2", "--cycles", "60", "--observation",
+                 "partial", "--out", str(out), "--no-progress", "--workers", "1"])
+    assert code == 0 and out.exists()
+    assert main(["play", "chaser", "idle", "--cycles", "40", "--observation", "partial"]) == 0
+    assert main(["play", "static", "idle", "--cycles", "40", "--observation", "partial"]) == 2
+    assert "cannot play under --observation partial" in capsys.readouterr().err
