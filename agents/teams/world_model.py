@@ -1,0 +1,130 @@
+"""Each player's own world model under partial observation: what it believes about the ball,
+its team-mates and the opponents, from its own sees and the messages it hears.
+
+:class:`TeamBeliefs` holds one model per player of a team, as arrays with the believing player
+first (row ``i`` is player ``i``'s model, and nothing in row ``i`` is computed from another
+row), so a whole team's models advance in a few compiled calls per cycle. Team frame, metres,
+m/cycle, cycles. Per cycle (:meth:`TeamBeliefs.update`):
+
+1. **Predict.** The believed ball rolls on with its believed velocity and slows by
+   ``ball_decay``; players are believed to stay where they were seen; every age grows by one.
+2. **Own sees.** The ball through an alpha-beta filter (restarted when a sighting falls outside
+   the noise its distance allows: the ball was kicked), the velocity of a restart from the last
+   two sightings; players seen with a number update that player, those seen without one the
+   nearest believed player of their side (or of either side) within a gate
+   (:mod:`agents.teams.belief_kernels`). Each player's own position is its self-localisation.
+3. **Messages.** A team-mate's :class:`~agents.messages.WorldMessage` tells where it stands
+   (said last cycle: age 1) and where it believed the ball was, with the belief's age; the
+   listener takes the ball from it when that is fresher than its own belief, rolled on by the
+   cycle the message took.
+
+What a player says (:meth:`TeamBeliefs.world_message`) is its own ball belief and position,
+which team-mates far from the ball use to keep theirs fresh.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from agents.messages import MessageError, WorldMessage, X_RANGE, Y_RANGE, V_RANGE, decode, encode
+from agents.teams.belief_kernels import AGE_NEVER, predict_beliefs, see_ball, see_players
+from soccer_sim.config import MatchConfig
+from soccer_sim.perception.views import PlayerViews
+
+
+@dataclass(frozen=True)
+class BeliefParams:
+    """How the world model weighs what it sees (dimensionless gains, metres)."""
+
+    ball_gain: float = 0.6
+    """Share of a ball sighting's residual taken into the believed position (the rest is the
+    prediction, which averages out the see model's distance quantisation)."""
+    ball_velocity_gain: float = 0.2
+    """Share of the residual (m) taken into the believed velocity (m/cycle) per sighting."""
+    ball_noise_share: float = 0.12
+    """A sighting farther from the prediction than this share of its distance (plus 0.3 m)
+    restarts the filter: more than the +-5 % distance quantisation and 1 degree direction
+    steps explain, so the ball's motion changed."""
+    gate_share: float = 0.15
+    """Players seen without a number are matched to a believed player within this share of the
+    reported distance..."""
+    gate_floor: float = 2.0
+    """... plus this (m)."""
+
+
+class TeamBeliefs:
+    """The world models of a team's ``n`` players about ``m`` opponents (module docstring)."""
+
+    def __init__(self, n: int, m: int, config: MatchConfig, params: BeliefParams = BeliefParams()) -> None:
+        self.n, self.m, self.params = n, m, params
+        self._ball_decay = float(config.physics.ball_decay)
+        self._ball_speed_max = float(config.physics.ball_speed_max)
+        self.ball = np.zeros((n, 2))
+        """(n, 2) each player's believed ball position (m; the centre spot before any sighting)."""
+        self.ball_vel = np.zeros((n, 2))
+        """(n, 2) each player's believed ball velocity (m/cycle)."""
+        self.ball_age = np.full(n, AGE_NEVER, dtype=np.int64)
+        """(n,) cycles since the ball information each player holds was seen (by it or the
+        team-mate who told it); AGE_NEVER before any."""
+        self.mate_pos = np.zeros((n, n, 2))
+        """(n, n, 2) where player i believes team-mate j is (row i, column i: itself)."""
+        self.mate_age = np.full((n, n), AGE_NEVER, dtype=np.int64)
+        self.opp_pos = np.zeros((n, m, 2))
+        """(n, m, 2) where player i believes opponent k is."""
+        self.opp_age = np.full((n, m), AGE_NEVER, dtype=np.int64)
+        self._last_seen = np.zeros((n, 2))
+        self._last_seen_cycle = np.full(n, -AGE_NEVER, dtype=np.int64)
+        self._rows = np.arange(n)
+        self._decoded: dict[str, WorldMessage | None] = {}
+
+    def update(self, views: PlayerViews) -> None:
+        """One cycle of every player's model from its own row of ``views`` (module docstring)."""
+        p = self.params
+        predict_beliefs(self.ball, self.ball_vel, self.ball_age, self.mate_age, self.opp_age, self._ball_decay)
+        see_ball(self.ball, self.ball_vel, self.ball_age, self._last_seen, self._last_seen_cycle, views.ball_seen,
+                 views.ball, views.ball_distance, views.cycle, p.ball_gain, p.ball_velocity_gain,
+                 p.ball_noise_share, self._ball_decay, self._ball_speed_max)
+        see_players(views.saw, views.seen_count, views.seen_position, views.seen_side, views.seen_number,
+                    views.seen_distance, self.mate_pos, self.mate_age, self.opp_pos, self.opp_age, p.gate_share,
+                    p.gate_floor)
+        rows = self._rows
+        self.mate_pos[rows, rows] = views.position
+        self.mate_age[rows, rows] = 0
+        self._hear(views.heard_mates)
+
+    def _hear(self, heard: tuple[tuple[tuple[int, str], ...], ...]) -> None:
+        """Fold the team-mates' world messages into each listener's model."""
+        decoded = self._decoded
+        if len(decoded) > 64:
+            decoded.clear()
+        for i, messages in enumerate(heard):
+            for speaker, text in messages:
+                msg = decoded.get(text, False)
+                if msg is False:
+                    try:
+                        found = decode(text)
+                    except MessageError:
+                        found = None
+                    msg = decoded[text] = found if isinstance(found, WorldMessage) else None
+                if msg is None or not 0 <= speaker < self.n or speaker == i:
+                    continue
+                if self.mate_age[i, speaker] > 1:
+                    self.mate_pos[i, speaker] = msg.sender
+                    self.mate_age[i, speaker] = 1
+                age = msg.ball_age + 1
+                if age < self.ball_age[i]:
+                    vx, vy = msg.ball_velocity
+                    self.ball[i] = (msg.ball[0] + vx, msg.ball[1] + vy)
+                    self.ball_vel[i] = (vx * self._ball_decay, vy * self._ball_decay)
+                    self.ball_age[i] = age
+
+    def world_message(self, i: int) -> str:
+        """Player ``i``'s ball belief and own position as a 10-character message."""
+        ball = np.clip(self.ball[i], (-X_RANGE, -Y_RANGE), (X_RANGE, Y_RANGE))
+        vel = np.clip(self.ball_vel[i], -V_RANGE, V_RANGE)
+        me = np.clip(self.mate_pos[i, i], (-X_RANGE, -Y_RANGE), (X_RANGE, Y_RANGE))
+        return encode(WorldMessage(ball=(float(ball[0]), float(ball[1])),
+                                   ball_velocity=(float(vel[0]), float(vel[1])),
+                                   ball_age=int(min(self.ball_age[i], 13)), sender=(float(me[0]), float(me[1]))))

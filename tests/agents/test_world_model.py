@@ -1,0 +1,159 @@
+"""Each player's own world model (agents.teams.world_model): filtered ball, players by number or
+by nearest, team-mates' messages, and that a player's model uses only its own observations."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from agents.messages import WorldMessage, encode
+from agents.teams.belief_kernels import AGE_NEVER
+from agents.teams.world_model import TeamBeliefs
+from soccer_sim import MatchConfig
+from soccer_sim.match import Match
+from soccer_sim.perception.config import ObservationConfig
+from soccer_sim.perception.views import OPPONENT, TEAMMATE, PlayerViews
+from soccer_sim.trivial_teams import ChaserTeam
+
+N, M = 3, 2
+K = N + M - 1
+CONFIG = MatchConfig()
+
+
+def views(cycle: int, **rows) -> PlayerViews:
+    """Hand-built views of a 3-player team (nobody sees anything unless given)."""
+    base = dict(stamina=np.full(N, 8000.0), effort=np.ones(N), capacity=np.full(N, np.inf),
+                frozen=np.zeros(N, np.int64), present=np.ones(N, bool), player_types=np.zeros(N, np.intp),
+                holds_ball=np.zeros(N, bool), position=np.array([[-10.0, 0.0], [0.0, 5.0], [10.0, -5.0]]),
+                velocity=np.zeros((N, 2)), body_direction=np.zeros(N), localised=np.ones(N, bool),
+                saw=np.ones(N, bool), ball_seen=np.zeros(N, bool), ball=np.full((N, 2), np.nan),
+                ball_distance=np.full(N, np.nan), ball_direction=np.full(N, np.nan),
+                seen_count=np.zeros(N, np.int64), seen_position=np.full((N, K, 2), np.nan),
+                seen_distance=np.full((N, K), np.nan), seen_direction=np.full((N, K), np.nan),
+                seen_side=np.zeros((N, K), np.int8), seen_number=np.full((N, K), -1, np.int8))
+    base.update(rows)
+    return PlayerViews(cycle=cycle, **base)
+
+
+def see_ball_at(points: dict[int, tuple[float, float]], cycle: int, **extra) -> PlayerViews:
+    v = views(cycle, **extra)
+    for i, at in points.items():
+        v.ball_seen[i] = True
+        v.ball[i] = at
+        v.ball_distance[i] = np.hypot(*(np.array(at) - v.position[i]))
+    return v
+
+
+def test_a_rolling_ball_is_tracked_and_a_kick_restarts_the_filter():
+    beliefs = TeamBeliefs(N, M, CONFIG)
+    decay = CONFIG.physics.ball_decay
+    pos, vel = np.array([0.0, 0.0]), np.array([1.0, 0.0])
+    for cycle in range(12):
+        beliefs.update(see_ball_at({0: tuple(pos)}, cycle))
+        pos, vel = pos + vel, vel * decay
+    assert np.hypot(*(beliefs.ball[0] - (pos - vel / decay))) < 0.3
+    assert abs(beliefs.ball_vel[0, 0] - vel[0]) < 0.15
+    assert beliefs.ball_age[0] == 0 and beliefs.ball_age[1] == AGE_NEVER  # player 1 saw nothing
+    # a kick: the ball now goes the other way; two sightings later the belief follows it
+    kicked = pos - vel / decay
+    beliefs.update(see_ball_at({0: tuple(kicked + [-2.0, 0.0])}, 12))
+    beliefs.update(see_ball_at({0: tuple(kicked + [-3.8, 0.0])}, 13))
+    assert beliefs.ball_vel[0, 0] < -1.0
+
+
+def test_players_by_number_then_the_nearest_of_their_side():
+    beliefs = TeamBeliefs(N, M, CONFIG)
+    v = views(0)
+    v.seen_count[0] = 2
+    v.seen_position[0, :2] = [[5.0, 5.0], [20.0, 0.0]]
+    v.seen_side[0, :2] = [OPPONENT, TEAMMATE]
+    v.seen_number[0, :2] = [1, 2]
+    v.seen_distance[0, :2] = [16.0, 30.0]
+    beliefs.update(v)
+    np.testing.assert_allclose(beliefs.opp_pos[0, 1], [5.0, 5.0])
+    np.testing.assert_allclose(beliefs.mate_pos[0, 2], [20.0, 0.0])
+    assert beliefs.mate_age[0, 2] == 0 and beliefs.opp_age[0, 0] == AGE_NEVER
+    # next cycle an opponent without number near the believed opponent 1 is taken for it
+    v = views(1)
+    v.seen_count[0] = 1
+    v.seen_position[0, 0] = [6.0, 5.5]
+    v.seen_side[0, 0] = OPPONENT
+    v.seen_distance[0, 0] = 17.0
+    beliefs.update(v)
+    np.testing.assert_allclose(beliefs.opp_pos[0, 1], [6.0, 5.5])
+    assert beliefs.opp_age[0, 1] == 0
+    # its own column is its self-localisation
+    np.testing.assert_allclose(beliefs.mate_pos[np.arange(N), np.arange(N)], v.position)
+
+
+def test_a_fresher_ball_from_a_team_mate_is_taken_a_staler_one_not():
+    beliefs = TeamBeliefs(N, M, CONFIG)
+    beliefs.update(see_ball_at({2: (30.0, 10.0)}, 0))
+    said = encode(WorldMessage(ball=(31.0, 10.0), ball_velocity=(0.5, 0.0), ball_age=0, sender=(12.0, -4.0)))
+    heard = ((), ((2, said),), ((0, said),))   # player 1 hears player 2; player 2 hears "player 0"
+    beliefs.update(views(1, heard_mates=heard))
+    np.testing.assert_allclose(beliefs.ball[1], [31.5, 10.0], atol=0.06)
+    np.testing.assert_allclose(beliefs.mate_pos[1, 2], [12.0, -4.0], atol=0.06)
+    assert beliefs.ball_age[1] == 1
+    # player 2 saw the ball itself one cycle ago: the same message (age 1 when heard) is not fresher
+    assert beliefs.ball_age[2] == 1 and abs(beliefs.ball[2, 0] - 31.5) > 0.2
+    # messages that are not world messages are ignored
+    beliefs.update(views(2, heard_mates=((), ((0, "not-a-msg!"),), ())))
+
+
+def test_a_players_model_uses_only_its_own_observations():
+    """Changing what player 2 sees and hears changes nothing in players 0 and 1's models."""
+    first, second = TeamBeliefs(N, M, CONFIG), TeamBeliefs(N, M, CONFIG)
+    rng = np.random.default_rng(0)
+    for cycle in range(30):
+        a = see_ball_at({0: (cycle * 0.5, 1.0), 1: (cycle * 0.5 + 0.1, 1.0), 2: (cycle * 0.5, 1.2)}, cycle)
+        b = see_ball_at({0: (cycle * 0.5, 1.0), 1: (cycle * 0.5 + 0.1, 1.0), 2: tuple(rng.uniform(-40, 40, 2))},
+                        cycle)
+        b.position[2] = rng.uniform(-40, 40, 2)
+        b.seen_count[2] = 1
+        b.seen_position[2, 0] = rng.uniform(-40, 40, 2)
+        b.seen_side[2, 0] = OPPONENT
+        b.seen_distance[2, 0] = 10.0
+        first.update(a)
+        second.update(b)
+    for name in ("ball", "ball_vel", "ball_age", "mate_pos", "mate_age", "opp_pos", "opp_age"):
+        np.testing.assert_array_equal(getattr(first, name)[:2], getattr(second, name)[:2], err_msg=name)
+    assert not np.array_equal(first.ball[2], second.ball[2])
+
+
+class _Believer(ChaserTeam):
+    def __init__(self, talk: bool) -> None:
+        self.talk = talk
+
+    def reset(self, side_info, config, rng):
+        super().reset(side_info, config, rng)
+        self.beliefs = TeamBeliefs(side_info.players_per_team, side_info.opponents, config)
+
+    def act(self, views):
+        self.beliefs.update(views)
+        command = super().act(views)
+        command.say = [self.beliefs.world_message(i) if views.ball_seen[i] else None for i in range(views.n)]
+        if not self.talk:
+            command.say = None
+        return command
+
+
+def _errors(talk: bool) -> tuple[float, float]:
+    home = _Believer(talk)
+    match = Match(home, ChaserTeam(), seed=3, config=MatchConfig(observation=ObservationConfig("partial"),
+                                                                max_cycles=600))
+    match.start()
+    ball, mates = [], []
+    while match.state.cycle < 600:
+        match.step()
+        sign = match.state.attack_direction(0)
+        ball.append(np.hypot(*(home.beliefs.ball - match.state.ball * sign).T))
+        truth = match.state.pos[:11] * sign
+        mates.append(np.hypot(*(home.beliefs.mate_pos - truth[None]).reshape(-1, 2).T))
+    return float(np.median(np.concatenate(ball))), float(np.percentile(np.concatenate(mates), 90))
+
+
+def test_in_a_match_beliefs_follow_the_truth_and_messages_keep_team_mates_known():
+    ball_quiet, mates_quiet = _errors(False)
+    ball_talk, mates_talk = _errors(True)
+    assert ball_quiet < 1.0 and ball_talk < 1.0
+    assert mates_talk < 5.0 < mates_quiet  # without messages players behind stay unknown
