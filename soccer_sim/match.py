@@ -57,7 +57,7 @@ from soccer_sim.setup import MatchSetup, resolve_scenario
 from soccer_sim.state import AWAY, HOME, NO_PLAYER, NO_TEAM, EventLog, PlayMode, WorldState
 from soccer_sim.statistics import StatisticsRecorder, TeamStatistics
 from soccer_sim.tackles import TackleOutcome, Tackles
-from soccer_sim.team import SideInfo, Team, TeamError
+from soccer_sim.team import SideInfo, Team, team_failure
 from soccer_sim.team_hooks import ChoosesPlayerTypes, check_observation_mode
 from soccer_sim.view import TeamFrame
 
@@ -243,7 +243,7 @@ class Match:
             try:
                 self.teams[team].reset(info, self.config, rng)
             except (Exception, SystemExit) as exc:
-                raise _team_failure(self.team_names[team], "reset", exc) from exc
+                raise team_failure(self.team_names[team], "reset", exc) from exc
         self.referee.start(self.state, self.setup.start_mode, self.setup.start_side)
         self._event_mark = len(self.events)
         for recorder in self.recorders:
@@ -331,40 +331,23 @@ class Match:
 
     # ------------------------------------------------------------------------------------
     def _collect_commands(self) -> list[np.ndarray | None]:
-        state = self.state
-        if self.observer is not None:
-            return self._collect_partial()
+        """Each team's command from its view (under partial observation: its players' views,
+        :meth:`Observer.observe`, and what its players say goes into the channel)."""
+        state, observer = self.state, self.observer
         moves: list[np.ndarray | None] = [None, None]
         sign = state.home_attacks
+        views = observer.observe(state) if observer is not None else None
         for team in (HOME, AWAY):
             frame = self.frames[team]
-            view = frame.update_view(state, sign)
+            view = frame.update_view(state, sign) if views is None else views[team]
             try:
                 command = self.teams[team].act(view)
             except (Exception, SystemExit) as exc:
-                raise _team_failure(frame.name, "act", exc) from exc
+                raise team_failure(frame.name, "act", exc) from exc
             self._catch[team], moves[team] = frame.read_command(command, sign)
             sign = -sign
-        return moves
-
-    def _collect_partial(self) -> list[np.ndarray | None]:
-        """Under partial observation: each team gets its players' views
-        (:meth:`Observer.observe`), and what its players say goes into the channel."""
-        state = self.state
-        views = self.observer.observe(state)  # type: ignore[union-attr]
-        moves: list[np.ndarray | None] = [None, None]
-        sign = state.home_attacks
-        said = []
-        for team in (HOME, AWAY):
-            frame = self.frames[team]
-            try:
-                command = self.teams[team].act(views[team])
-            except (Exception, SystemExit) as exc:
-                raise _team_failure(frame.name, "act", exc) from exc
-            self._catch[team], moves[team] = frame.read_command(command, sign)
-            said.append(frame.said if frame.said is not None else (None,) * frame.n)
-            sign = -sign
-        self.observer.say(state.cycle, said, state.pos)  # type: ignore[union-attr]
+        if observer is not None:
+            observer.say(state.cycle, [f.said if f.said is not None else (None,) * f.n for f in self.frames], state.pos)
         return moves
 
     def _resolve_tackles(self, tackling: bool) -> TackleOutcome | None:
@@ -403,7 +386,7 @@ class Match:
             try:
                 choice = chooser.choose_player_types(self.player_types, bare[team])
             except (Exception, SystemExit) as exc:
-                raise _team_failure(name, "choose_player_types", exc) from exc
+                raise team_failure(name, "choose_player_types", exc) from exc
             ids = check_choice(choice, self.player_types, self.sizes[team], self.config.player_types.pt_max, name)
             self.type_ids[first[team]:first[team] + self.sizes[team]] = ids
         if self.type_ids.any():
@@ -432,16 +415,3 @@ def run_match(home: Team | str | type, away: Team | str | type, seed: int = 0,
     The result is a pure function of the teams, the config, the scenario and the seed.
     """
     return Match(home, away, seed=seed, config=config, recorders=recorders, scenario=scenario).run()
-
-
-def _team_failure(name: str, method: str, exc: BaseException) -> TeamError:
-    """The TeamError for an exception out of a team's ``reset``/``act``. ``sys.exit()`` in a
-    team's code is a failure of that team too: it must not end the program that plays the match
-    (a tournament, an environment, ``soccer-sim play``) with the team's exit status."""
-    if isinstance(exc, SystemExit):
-        return TeamError(name, f"called sys.exit({exc.code!r}) in {method}()")
-    return TeamError(name, f"{method}() raised {type(exc).__name__}: {exc}")
-
-
-_resolve_scenario = resolve_scenario
-"""Kept for callers of the old private name; :func:`soccer_sim.setup.resolve_scenario`."""

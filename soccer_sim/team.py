@@ -43,6 +43,15 @@ class TeamError(SoccerSimError):
         return type(self), (self.team_name, self.message, self.player)
 
 
+def team_failure(name: str, method: str, exc: BaseException) -> TeamError:
+    """The TeamError for an exception out of a team's ``method`` (``reset``, ``act``, ...).
+    ``sys.exit()`` in a team's code is a failure of that team too: it must not end the program
+    that plays the match (a tournament, an environment, ``soccer-sim play``) with its exit status."""
+    if isinstance(exc, SystemExit):
+        return TeamError(name, f"called sys.exit({exc.code!r}) in {method}()")
+    return TeamError(name, f"{method}() raised {type(exc).__name__}: {exc}")
+
+
 @dataclass(frozen=True)
 class SideInfo:
     """Who a team is in this match (given to :meth:`Team.reset`)."""
