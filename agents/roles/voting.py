@@ -1,0 +1,98 @@
+"""Reconciling the role assignments that a team's players compute each on its own world model.
+
+Under partial observation every player runs the role assigner on what it believes, so two
+players may compute different assignments. As in UT Austin Villa's decentralised positioning
+(SCRAM's setting), players broadcast their assignment as a vote (a
+:class:`~agents.messages.VoteMessage`: the whole permutation and the cycle it was computed for)
+and each follows the assignment most of the votes it knows agree on.
+
+:class:`VoteBook` keeps, for each listening player, the latest vote it heard from each
+team-mate (row ``i`` is player ``i``'s memory, filled only from what player ``i`` heard), and
+:meth:`VoteBook.follow` picks per player among its own proposal and the votes at most
+``horizon`` cycles old: the assignment with the most identical votes; on a tie its own
+proposal if that is among the most voted, else the most recent of the tied (then the lowest
+team-mate index). With everyone's models agreeing this is the shared assignment; when they
+differ, it pulls players towards one.
+
+:func:`role_conflicts` measures the disagreement that is left: roles that two or more players
+believe they hold, and roles nobody holds.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from agents.messages import CYCLE_MODULUS, MessageError, VoteMessage, decode, encode
+
+
+class VoteBook:
+    """Each of a team's ``n`` players' memory of its team-mates' votes (module docstring)."""
+
+    def __init__(self, n: int, horizon: int = 20) -> None:
+        if n < 1 or n > 11:
+            raise ValueError(f"VoteBook: a team has 1 to 11 players, got {n}")
+        if horizon < 0:
+            raise ValueError(f"VoteBook: horizon must be >= 0 cycles, got {horizon}")
+        self.n, self.horizon = n, horizon
+        self.votes = np.zeros((n, n, n), dtype=np.int64)
+        """(n, n, n): ``votes[i, j]`` the last assignment player i heard from team-mate j."""
+        self.vote_cycle = np.full((n, n), -(1 << 40), dtype=np.int64)
+        """(n, n): the cycle each of those votes was computed for (very negative: none)."""
+        self._decoded: dict[str, VoteMessage | None] = {}
+
+    @staticmethod
+    def message(assignment: np.ndarray, cycle: int) -> str:
+        """A vote for ``assignment`` (``assignment[j]`` the role of player j) computed at ``cycle``."""
+        return encode(VoteMessage(assignment=tuple(int(r) for r in assignment), cycle=int(cycle)))
+
+    def hear(self, cycle: int, heard_mates: tuple[tuple[tuple[int, str], ...], ...]) -> None:
+        """Store the votes among the team-mates' messages each player heard at ``cycle`` (other
+        messages are left alone; a vote of the wrong size is ignored)."""
+        decoded = self._decoded
+        if len(decoded) > 256:
+            decoded.clear()
+        for i, messages in enumerate(heard_mates):
+            for speaker, text in messages:
+                vote = decoded.get(text, False)
+                if vote is False:
+                    try:
+                        found = decode(text)
+                    except MessageError:
+                        found = None
+                    vote = decoded[text] = found if isinstance(found, VoteMessage) else None
+                if vote is None or len(vote.assignment) != self.n or not 0 <= speaker < self.n:
+                    continue
+                # the cycle travels modulo CYCLE_MODULUS: the latest cycle <= now with that residue
+                computed = cycle - (cycle - vote.cycle) % CYCLE_MODULUS
+                if computed >= self.vote_cycle[i, speaker]:
+                    self.votes[i, speaker] = vote.assignment
+                    self.vote_cycle[i, speaker] = computed
+
+    def follow(self, cycle: int, own: np.ndarray) -> np.ndarray:
+        """(n, n): the assignment each player follows, from its own proposal ``own[i]`` (n, n)
+        and the fresh votes it holds (module docstring)."""
+        n = self.n
+        proposals = np.asarray(own, dtype=np.int64)
+        if proposals.shape != (n, n):
+            raise ValueError(f"VoteBook.follow: own proposals must be ({n}, {n}), got {proposals.shape}")
+        # candidates per player: its own proposal (column 0), then each team-mate's vote
+        candidates = np.concatenate([proposals[:, None, :], self.votes], axis=1)        # (n, n + 1, n)
+        fresh = np.concatenate([np.ones((n, 1), dtype=bool), cycle - self.vote_cycle <= self.horizon], axis=1)
+        fresh[:, 1:][np.arange(n), np.arange(n)] = False                               # its own old votes
+        same = (candidates[:, :, None, :] == candidates[:, None, :, :]).all(axis=3)   # (n, n + 1, n + 1)
+        support = (same & fresh[:, None, :]).sum(axis=2)
+        support = np.where(fresh, support, -1)
+        best = support.max(axis=1, keepdims=True)
+        tied = support == best
+        # ties: own proposal first, then the most recent vote, then the lowest team-mate index
+        recency = np.concatenate([np.full((n, 1), 1 << 41), self.vote_cycle], axis=1)
+        key = np.where(tied, recency * (n + 2) - np.arange(n + 1)[None, :], np.iinfo(np.int64).min)
+        choice = key.argmax(axis=1)
+        return candidates[np.arange(n), choice]
+
+
+def role_conflicts(roles: np.ndarray, n_roles: int) -> tuple[int, int]:
+    """(roles claimed by two or more players, roles claimed by nobody) for ``roles`` (k,), the
+    role each player believes it holds (under one shared assignment both are 0)."""
+    counts = np.bincount(np.asarray(roles, dtype=np.int64), minlength=n_roles)[:n_roles]
+    return int(np.count_nonzero(counts > 1)), int(np.count_nonzero(counts == 0))

@@ -1,0 +1,59 @@
+"""Reconciling per-player role assignments by votes (agents.roles.voting)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from agents.messages import WorldMessage, encode
+from agents.roles.voting import VoteBook, role_conflicts
+
+IDENTITY = np.arange(4)
+SWAP = np.array([1, 0, 2, 3])
+
+
+def heard(pairs: dict[int, list[tuple[int, str]]], n: int = 4) -> tuple:
+    return tuple(tuple(pairs.get(i, [])) for i in range(n))
+
+
+def test_without_votes_each_player_follows_its_own_proposal():
+    book = VoteBook(4)
+    own = np.stack([IDENTITY, SWAP, IDENTITY, SWAP])
+    np.testing.assert_array_equal(book.follow(0, own), own)
+
+
+def test_the_majority_of_fresh_votes_wins_and_stale_votes_do_not_count():
+    book = VoteBook(4, horizon=5)
+    # player 1 proposes SWAP but hears IDENTITY from players 0, 2 and 3
+    swap_vote, id_vote = VoteBook.message(SWAP, 10), VoteBook.message(IDENTITY, 10)
+    for cycle, speaker in ((10, 0), (11, 2), (12, 3)):
+        book.hear(cycle, heard({1: [(speaker, id_vote)], 0: [(1, swap_vote)]}))
+    own = np.stack([IDENTITY, SWAP, IDENTITY, IDENTITY])
+    followed = book.follow(12, own)
+    np.testing.assert_array_equal(followed[1], IDENTITY)
+    # player 0 heard one SWAP vote: a tie with its own proposal, which it keeps
+    np.testing.assert_array_equal(followed[0], IDENTITY)
+    # sixteen cycles later the votes are stale: player 1 is back to its own proposal
+    np.testing.assert_array_equal(book.follow(26, own)[1], SWAP)
+
+
+def test_a_player_follows_the_others_when_they_outvote_it_two_to_one():
+    book = VoteBook(4)
+    book.hear(5, heard({0: [(1, VoteBook.message(SWAP, 5))]}))
+    book.hear(6, heard({0: [(2, VoteBook.message(SWAP, 6))]}))
+    np.testing.assert_array_equal(book.follow(6, np.stack([IDENTITY] * 4))[0], SWAP)
+
+
+def test_only_votes_of_the_right_size_from_team_mates_are_kept():
+    book = VoteBook(4)
+    world = encode(WorldMessage(ball=(1.0, 2.0), ball_velocity=(0.0, 0.0), ball_age=0, sender=(0.0, 0.0)))
+    book.hear(3, heard({0: [(1, world)], 1: [(2, VoteBook.message(np.arange(3), 3))], 2: [(3, "garbage!!!")]}))
+    assert np.all(book.vote_cycle < 0)
+    with pytest.raises(ValueError, match="own proposals must be"):
+        book.follow(3, np.zeros((3, 3)))
+
+
+def test_role_conflicts_count_shared_and_empty_roles():
+    assert role_conflicts(np.array([0, 1, 2, 3]), 4) == (0, 0)
+    assert role_conflicts(np.array([0, 0, 2, 2]), 4) == (2, 2)
+    assert role_conflicts(np.array([1, 1, 1, 3]), 4) == (1, 2)
