@@ -26,16 +26,18 @@ from agents.messages import CYCLE_MODULUS, MessageError, VoteMessage, decode, en
 
 
 class VoteBook:
-    """Each of a team's ``n`` players' memory of its team-mates' votes (module docstring)."""
+    """Each of a team's ``n`` players' memory of its team-mates' votes on an assignment of ``k``
+    roles (default ``n``; e.g. the outfield roles) (module docstring)."""
 
-    def __init__(self, n: int, horizon: int = 20) -> None:
-        if n < 1 or n > 11:
-            raise ValueError(f"VoteBook: a team has 1 to 11 players, got {n}")
+    def __init__(self, n: int, horizon: int = 20, k: int | None = None) -> None:
+        k = n if k is None else k
+        if n < 1 or n > 11 or k < 1 or k > 11:
+            raise ValueError(f"VoteBook: a team has 1 to 11 players and roles, got {n} players, {k} roles")
         if horizon < 0:
             raise ValueError(f"VoteBook: horizon must be >= 0 cycles, got {horizon}")
-        self.n, self.horizon = n, horizon
-        self.votes = np.zeros((n, n, n), dtype=np.int64)
-        """(n, n, n): ``votes[i, j]`` the last assignment player i heard from team-mate j."""
+        self.n, self.k, self.horizon = n, k, horizon
+        self.votes = np.zeros((n, n, k), dtype=np.int64)
+        """(n, n, k): ``votes[i, j]`` the last assignment player i heard from team-mate j."""
         self.vote_cycle = np.full((n, n), -(1 << 40), dtype=np.int64)
         """(n, n): the cycle each of those votes was computed for (very negative: none)."""
         self._decoded: dict[str, VoteMessage | None] = {}
@@ -60,7 +62,7 @@ class VoteBook:
                     except MessageError:
                         found = None
                     vote = decoded[text] = found if isinstance(found, VoteMessage) else None
-                if vote is None or len(vote.assignment) != self.n or not 0 <= speaker < self.n:
+                if vote is None or len(vote.assignment) != self.k or not 0 <= speaker < self.n:
                     continue
                 # the cycle travels modulo CYCLE_MODULUS: the latest cycle <= now with that residue
                 computed = cycle - (cycle - vote.cycle) % CYCLE_MODULUS
@@ -69,26 +71,29 @@ class VoteBook:
                     self.vote_cycle[i, speaker] = computed
 
     def follow(self, cycle: int, own: np.ndarray) -> np.ndarray:
-        """(n, n): the assignment each player follows, from its own proposal ``own[i]`` (n, n)
+        """(n, k): the assignment each player follows, from its own proposal ``own[i]`` (n, k)
         and the fresh votes it holds (module docstring)."""
         n = self.n
         proposals = np.asarray(own, dtype=np.int64)
-        if proposals.shape != (n, n):
-            raise ValueError(f"VoteBook.follow: own proposals must be ({n}, {n}), got {proposals.shape}")
-        # candidates per player: its own proposal (column 0), then each team-mate's vote
-        candidates = np.concatenate([proposals[:, None, :], self.votes], axis=1)        # (n, n + 1, n)
-        fresh = np.concatenate([np.ones((n, 1), dtype=bool), cycle - self.vote_cycle <= self.horizon], axis=1)
-        fresh[:, 1:][np.arange(n), np.arange(n)] = False                               # its own old votes
-        same = (candidates[:, :, None, :] == candidates[:, None, :, :]).all(axis=3)   # (n, n + 1, n + 1)
-        support = (same & fresh[:, None, :]).sum(axis=2)
-        support = np.where(fresh, support, -1)
-        best = support.max(axis=1, keepdims=True)
-        tied = support == best
-        # ties: own proposal first, then the most recent vote, then the lowest team-mate index
-        recency = np.concatenate([np.full((n, 1), 1 << 41), self.vote_cycle], axis=1)
-        key = np.where(tied, recency * (n + 2) - np.arange(n + 1)[None, :], np.iinfo(np.int64).min)
-        choice = key.argmax(axis=1)
-        return candidates[np.arange(n), choice]
+        if proposals.shape != (n, self.k):
+            raise ValueError(f"VoteBook.follow: own proposals must be ({n}, {self.k}), got {proposals.shape}")
+        return np.stack([self.follow_one(i, cycle, proposals[i]) for i in range(n)])
+
+    def follow_one(self, i: int, cycle: int, proposal: np.ndarray) -> np.ndarray:
+        """The assignment player ``i`` follows given its own ``proposal`` (k,): :meth:`follow`
+        for one player (its row uses only its own memory)."""
+        n = self.n
+        # candidates: its own proposal (row 0), then each team-mate's last vote
+        candidates = np.concatenate([np.asarray(proposal, dtype=np.int64)[None, :], self.votes[i]])   # (n + 1, k)
+        fresh = np.concatenate([[True], cycle - self.vote_cycle[i] <= self.horizon])
+        fresh[1 + i] = False  # (its own old votes)
+        same = (candidates[:, None, :] == candidates[None, :, :]).all(axis=2)
+        support = np.where(fresh, (same & fresh[None, :]).sum(axis=1), -1)
+        tied = support == support.max()
+        # ties: its own proposal first, then the most recent vote, then the lowest team-mate index
+        recency = np.concatenate([[1 << 41], self.vote_cycle[i]])
+        key = np.where(tied, recency * (n + 2) - np.arange(n + 1), np.iinfo(np.int64).min)
+        return candidates[int(key.argmax())]
 
 
 def role_conflicts(roles: np.ndarray, n_roles: int) -> tuple[int, int]:

@@ -57,3 +57,15 @@ def test_role_conflicts_count_shared_and_empty_roles():
     assert role_conflicts(np.array([0, 1, 2, 3]), 4) == (0, 0)
     assert role_conflicts(np.array([0, 0, 2, 2]), 4) == (2, 2)
     assert role_conflicts(np.array([1, 1, 1, 3]), 4) == (1, 2)
+
+
+def test_one_player_follows_as_the_team_call_says_and_votes_may_cover_fewer_roles():
+    book = VoteBook(5, k=4)
+    book.hear(5, heard({0: [(1, VoteBook.message(SWAP, 5))], 2: [(4, VoteBook.message(SWAP, 5))]}, n=5))
+    book.hear(6, heard({0: [(3, VoteBook.message(SWAP, 6))]}, n=5))
+    own = np.stack([IDENTITY] * 5)
+    team = book.follow(6, own)
+    for i in range(5):
+        np.testing.assert_array_equal(book.follow_one(i, 6, own[i]), team[i])
+    np.testing.assert_array_equal(team[0], SWAP)
+    np.testing.assert_array_equal(team[1], IDENTITY)
