@@ -40,6 +40,8 @@ The team reports per-match figures through :meth:`FormationTeam.statistics`
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 import formations
@@ -47,6 +49,7 @@ from agents import skills
 from agents.roles import RoleAssigner, RoleContext, make_assigner, offensive_order
 from agents.teams import mechanism
 from agents.teams.ball_role import LeaveMatching, check_ball_role
+from agents.teams.decentralised import DecentralisedPlay
 from agents.teams.on_ball import able_players, ball_reach, choose_kicker, make_tackling, on_ball_kick, tackle_if_worth
 from agents.teams.positions import position_labels
 from agents.teams.reporting import RoleFigures
@@ -59,6 +62,7 @@ from agents.teams.type_choice import choose_types, time_scales
 from formations.formation_set import Situation
 from soccer_sim.config import MatchConfig
 from soccer_sim.state import SET_PLAYS, PlayMode
+from soccer_sim.perception.views import PlayerViews
 from soccer_sim.team import SideInfo, TeamCommand, TeamView
 from soccer_sim.team_hooks import Drawing
 
@@ -72,7 +76,10 @@ _GOALIE_HOLDS = PlayMode.GOALIE_HOLDS
 
 class FormationTeam:
     """The built-in team (see the module docstring) with role assigner ``assigner`` and style
-    ``style``; ``name`` is how it reports itself (defaults to the assigner's name)."""
+    ``style``; ``name`` is how it reports itself (defaults to the assigner's name). Under partial
+    observation each player decides on its own (:mod:`agents.teams.decentralised`)."""
+
+    observation_modes = ("full", "partial")
 
     def __init__(self, assigner: str = "mmd+msd2", style: TeamStyle | None = None, name: str | None = None,
                  **assigner_params: object) -> None:
@@ -92,6 +99,12 @@ class FormationTeam:
         self._forward_roles = np.array([r for r in range(len(kinds)) if kinds[r] == "forward"], dtype=np.int64)
         leave = check_ball_role(self.style.ball_role, assigner) == "leave"
         self._leave = LeaveMatching(assigner, assigner_params) if leave else None  # (agents.teams.ball_role)
+        self._brain = lambda: type(self)(assigner, style, name, **assigner_params)
+        self.role_filter: Callable[[np.ndarray], np.ndarray] | None = None
+        """A hook from the assignment computed to the one followed (a player's votes, under
+        partial observation); None: the one computed."""
+        self.players: DecentralisedPlay | None = None
+        """Under partial observation: the players deciding on their own (else None)."""
 
     def choose_player_types(self, types: tuple, side_info: SideInfo) -> list[int]:
         """Each player's type, by its role (:mod:`agents.teams.type_choice`)."""
@@ -100,6 +113,10 @@ class FormationTeam:
 
     # ------------------------------------------------------------------ match lifecycle
     def reset(self, side_info: SideInfo, config: MatchConfig, rng: np.random.Generator) -> None:
+        self.players = None
+        if config.observation.partial and self.role_filter is None:  # (a player's own brain has a filter)
+            self.players = DecentralisedPlay(self._brain, side_info, config, rng)
+            return
         n = side_info.players_per_team
         roles = len(self.formation_set.roles)
         goalie = side_info.goalie_index
@@ -180,7 +197,9 @@ class FormationTeam:
         self._choose_roles = False
 
     # ------------------------------------------------------------------ one cycle
-    def act(self, view: TeamView) -> TeamCommand:
+    def act(self, view: TeamView | PlayerViews) -> TeamCommand:
+        if self.players is not None:
+            return self.players.act(view)
         command = self.command
         if self.n == 0:
             return command
@@ -289,6 +308,8 @@ class FormationTeam:
             if role_of_player is None:
                 order = offensive_order(role_targets) if assigner.uses_role_order else None
                 role_of_player = assigner.assign(players, role_targets, order, self.role_of_player, context)
+            if self.role_filter is not None:
+                role_of_player = self.role_filter(role_of_player)
             # (a default steer sends each player to its role's target: the kernel below does that)
             goals = None
             if self._steers:
@@ -382,12 +403,14 @@ class FormationTeam:
         and the largest distance from the outfield players to their role targets (averaged over
         cycles: the largest is the assignment's makespan), and the share of role-cycles a role
         was unfilled (its player farther than ``unfilled_distance``)."""
-        return self.figures.statistics()
+        return self.players.statistics() if self.players is not None else self.figures.statistics()
 
     def role_labels(self) -> list[str]:
         """Each player's current position (row order; :mod:`agents.teams.positions`): the
         goalkeeper's, then each outfield player's assigned role's (its own formation role's
         before the first assignment)."""
+        if self.players is not None:
+            return self.players.role_labels()
         kinds = self._role_labels
         labels = [kinds[r] for r in range(self.n)]
         if self._has_outfield:
@@ -401,7 +424,10 @@ class FormationTeam:
     def drawing(self) -> Drawing:
         """What a replay may draw (team frame): each role's target, where each player is
         going, the outfield players and their roles and role targets (None before the first
-        assignment), and the current formation's sample balls and triangles."""
+        assignment), and the current formation's sample balls and triangles (under partial
+        observation: as the goalkeeper's brain, else the first player's, sees them)."""
+        if self.players is not None and self.players.brains:
+            return self.players.brains[max(self.players.goalie, 0)].drawing()
         formation = self.formation_set.formation(self._situation)
         role_of_player = self.role_of_player
         assigned = None if role_of_player is None else self.targets[self._out_roles][role_of_player]

@@ -43,6 +43,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--cycles", type=positive_int, default=None, help="cycles per match (default: a full match)")
     parser.add_argument("--seed", type=int, default=0, help="seed of the first match; seed i is seed + i")
     parser.add_argument("--workers", type=positive_int, default=1, help="matches played at once (default: 1)")
+    parser.add_argument("--observation", choices=("full", "partial"), default="full",
+                        help="full (default) or partial observation (each player decides from its own view)")
     parser.add_argument("--rcg", nargs="+", metavar="FILE", default=None,
                         help="compute the figures from these rcssserver game logs instead of playing")
     parser.add_argument("--roles", metavar="FILE", default=None,
@@ -64,16 +66,17 @@ def matches_to_play(home: str | None, away: str | None, seeds: int, seed: int = 
             for i in range(seeds)]
 
 
-def _play(task: tuple[str, str, int, int | None]) -> Figures:
+def _play(task: tuple[str, str, int, int | None, str]) -> Figures:
     from experiments.benchmarks.soccer_match import match_figures
 
-    home, away, seed, cycles = task
-    return match_figures(home, away, seed, cycles)
+    home, away, seed, cycles, observation = task
+    return match_figures(home, away, seed, cycles, observation=observation)
 
 
-def play_all(tasks: Sequence[tuple[str, str, int]], cycles: int | None, workers: int = 1) -> list[Figures]:
+def play_all(tasks: Sequence[tuple[str, str, int]], cycles: int | None, workers: int = 1,
+             observation: str = "full") -> list[Figures]:
     """The figures of every match of ``tasks``, in order (``workers`` processes at once)."""
-    jobs = [(home, away, seed, cycles) for home, away, seed in tasks]
+    jobs = [(home, away, seed, cycles, observation) for home, away, seed in tasks]
     if workers <= 1 or len(jobs) <= 1:
         return [_play(job) for job in jobs]
     from concurrent.futures import ProcessPoolExecutor
@@ -157,9 +160,10 @@ def run(args: argparse.Namespace) -> int:
             if args.roles is not None:
                 raise ValueError("--roles goes with --rcg")
             tasks = matches_to_play(args.home, args.away, args.matches, args.seed)
-            rows = play_all(tasks, args.cycles, args.workers)
+            rows = play_all(tasks, args.cycles, args.workers, args.observation)
             what = f"{args.home} vs {args.away}" if args.home else "8 default pairings, both sides"
-            title = f"{what}: {len(tasks)} matches (seeds {args.seed}..{args.seed + args.matches - 1})"
+            title = (f"{what}: {len(tasks)} matches (seeds {args.seed}..{args.seed + args.matches - 1}), "
+                     f"{args.observation} observation")
     except (TeamNotFoundError, TeamError, ConfigError, RcgError, ValueError) as exc:
         return fail(str(exc))
     figure_table(title, by_figure(rows), real).print()

@@ -150,12 +150,15 @@ def counted_figures(result: MatchResult) -> dict[str, float | None]:
 
 
 def match_figures(home: str, away: str, seed: int, cycles: int | None = None, *, roles: bool = True,
-                  recorders: tuple = ()) -> dict[str, float | None]:
-    """Play one match and return every figure of it by name (None: not defined for it)."""
+                  recorders: tuple = (), observation: str = "full") -> dict[str, float | None]:
+    """Play one match and return every figure of it by name (None: not defined for it);
+    ``observation``: ``"full"`` or ``"partial"``."""
     from soccer_sim import MatchConfig, run_match
+    from soccer_sim.perception.config import ObservationConfig
 
     recorder = FiguresRecorder(roles)
-    result = run_match(home, away, seed=seed, config=MatchConfig(max_cycles=cycles),
+    config = MatchConfig(max_cycles=cycles, observation=ObservationConfig(observation))
+    result = run_match(home, away, seed=seed, config=config,
                        recorders=[recorder, *recorders])
     assert recorder.cycles is not None
     figures = counted_figures(result)
