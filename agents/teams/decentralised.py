@@ -36,11 +36,14 @@ from agents.roles.voting import VoteBook, role_conflicts
 from agents.teams.world_model import TeamBeliefs
 from soccer_sim.config import MatchConfig
 from soccer_sim.perception.views import PlayerViews
-from soccer_sim.state import NO_PLAYER, PlayMode
+from soccer_sim.state import NO_PLAYER, SET_PLAYS, PlayMode
 from soccer_sim.team import SideInfo, TeamCommand, TeamView
 
 if TYPE_CHECKING:
     from agents.teams.formation_team import FormationTeam
+
+_RECHOSEN = frozenset(SET_PLAYS - {PlayMode.KICK_OFF})
+"""Our set plays whose taker each player re-chooses every cycle (a kick-off's taker is placed)."""
 
 VOTE_HORIZON = 20
 """Cycles a heard vote counts (2 s: the assignment moves on with the ball)."""
@@ -103,10 +106,17 @@ class DecentralisedPlay:
         command.kick[:] = 0.0
         command.catch = False
         move = tackle = foul = None
+        # At our set plays each player picks the taker afresh every cycle from what it believes
+        # now: a choice made on stale beliefs (each player sure another is nearer) would leave
+        # the ball untaken, while beliefs about the players near the ball soon agree.
+        rechoose = views.mode_ours and views.play_mode in _RECHOSEN
         for i in range(n):
             if not views.present[i]:
                 continue
-            own = self.brains[i].act(self._view_of(i, views))
+            brain = self.brains[i]
+            if rechoose:
+                brain.set_plays.taker = -1
+            own = brain.act(self._view_of(i, views))
             command.dash[i] = own.dash[i]
             command.kick[i] = own.kick[i]
             if i == self.goalie:

@@ -1,0 +1,69 @@
+"""The built-in team under partial observation: each player decides from its own view alone."""
+
+from __future__ import annotations
+
+import copy
+
+import numpy as np
+
+from soccer_sim import MatchConfig, resolve_team, run_match
+from soccer_sim.match import Match
+from soccer_sim.perception.config import ObservationConfig
+from soccer_sim.trivial_teams import ChaserTeam
+
+PARTIAL = MatchConfig(observation=ObservationConfig("partial"), max_cycles=120)
+
+
+class _Recorder(ChaserTeam):
+    """A chaser keeping copies of the views its side's players got."""
+
+    def act(self, views):
+        self.seen = getattr(self, "seen", [])
+        self.seen.append(copy.deepcopy(views))
+        return super().act(views)
+
+
+def _recorded_views():
+    recorder = _Recorder()
+    match = Match(recorder, ChaserTeam(), seed=4, config=PARTIAL)
+    match.run()
+    return recorder.seen, match
+
+
+def test_changing_one_players_view_changes_no_other_players_command():
+    views, match = _recorded_views()
+    info = match.setup.side_info(0, match.team_names)
+    teams = []
+    for _ in range(2):
+        team, _ = resolve_team("mmdr")
+        team.reset(info, PARTIAL, np.random.default_rng(7))
+        teams.append(team)
+    for v in views[:80]:
+        commands = [team.act(copy.deepcopy(v)) for team in teams]
+        np.testing.assert_array_equal(commands[0].dash, commands[1].dash)
+    last = views[80]
+    altered = copy.deepcopy(last)
+    j = 5
+    altered.ball[j] = (30.0, -20.0)
+    altered.ball_seen[j] = True
+    altered.ball_distance[j] = 25.0
+    altered.position[j] += 3.0
+    altered.heard_mates = tuple(((0, "xxxxxxxxxx"),) if i == j else m for i, m in enumerate(last.heard_mates))
+    first = copy.deepcopy(teams[0].act(copy.deepcopy(last)))
+    second = teams[1].act(altered)
+    others = np.arange(11) != j
+    np.testing.assert_array_equal(first.dash[others], second.dash[others])
+    np.testing.assert_array_equal(first.kick[others], second.kick[others])
+    assert [first.say[i] for i in range(11) if i != j] == [second.say[i] for i in range(11) if i != j]
+    assert not np.array_equal(first.dash[j], second.dash[j]) or first.say[j] != second.say[j]
+
+
+def test_a_decentralised_match_plays_reports_conflicts_and_is_deterministic():
+    config = MatchConfig(observation=ObservationConfig("partial"), max_cycles=400)
+    one = run_match("mmdr", "static", seed=2, config=config)
+    two = run_match("mmdr", "static", seed=2, config=config)
+    np.testing.assert_array_equal(one.state.pos, two.state.pos)
+    home = one.statistics[0]
+    assert home.kicks > 0 and home.distance_run > 1000.0
+    reported = home.reported
+    assert 0.0 <= reported["role_conflict_share"] <= 1.0 and "believed_unfilled_share" in reported
