@@ -130,16 +130,32 @@ def encode_world(msg: WorldMessage) -> str:
     sx, sy = _pair("sender", msg.sender)
     if isinstance(msg.ball_age, bool) or not isinstance(msg.ball_age, int) or msg.ball_age < 0:
         raise MessageError(f"ball_age must be a whole number of cycles >= 0, got {msg.ball_age!r}")
-    digits = ((_step_index("ball x", bx, X_RANGE, POSITION_STEP), _NX),
-              (_step_index("ball y", by, Y_RANGE, POSITION_STEP), _NY),
-              (_step_index("ball_velocity x", vx, V_RANGE, VELOCITY_STEP), _NV),
-              (_step_index("ball_velocity y", vy, V_RANGE, VELOCITY_STEP), _NV),
-              (min(msg.ball_age, MAX_AGE), _NAGE),
-              (_step_index("sender x", sx, X_RANGE, POSITION_STEP), _NX),
-              (_step_index("sender y", sy, Y_RANGE, POSITION_STEP), _NY))
-    payload = 0
-    for digit, size in digits:
-        payload = payload * size + digit
+    return _world_text(_step_index("ball x", bx, X_RANGE, POSITION_STEP),
+                       _step_index("ball y", by, Y_RANGE, POSITION_STEP),
+                       _step_index("ball_velocity x", vx, V_RANGE, VELOCITY_STEP),
+                       _step_index("ball_velocity y", vy, V_RANGE, VELOCITY_STEP), min(msg.ball_age, MAX_AGE),
+                       _step_index("sender x", sx, X_RANGE, POSITION_STEP),
+                       _step_index("sender y", sy, Y_RANGE, POSITION_STEP))
+
+
+def encode_world_clipped(ball: tuple[float, float], ball_velocity: tuple[float, float], ball_age: int,
+                         sender: tuple[float, float]) -> str:
+    """A world message of finite values, each clipped into its range first (positions to the
+    pitch with its margin, the velocity to ``V_RANGE``, the age to ``MAX_AGE``): the fast way a
+    team says what it believes, which may lie a little outside the ranges (a ball behind the
+    goal line, a sender beyond the margin)."""
+    def grid(value: float, half_range: float, per_unit: int) -> int:
+        return round((min(max(value, -half_range), half_range) + half_range) * per_unit)
+
+    return _world_text(grid(ball[0], X_RANGE, _PER_M), grid(ball[1], Y_RANGE, _PER_M),
+                       grid(ball_velocity[0], V_RANGE, _PER_V), grid(ball_velocity[1], V_RANGE, _PER_V),
+                       min(max(int(ball_age), 0), MAX_AGE), grid(sender[0], X_RANGE, _PER_M),
+                       grid(sender[1], Y_RANGE, _PER_M))
+
+
+def _world_text(bx: int, by: int, vx: int, vy: int, age: int, sx: int, sy: int) -> str:
+    """The world message of grid indices (the encoder's digits, most significant first)."""
+    payload = (((((bx * _NY + by) * _NV + vx) * _NV + vy) * _NAGE + age) * _NX + sx) * _NY + sy
     return _to_text(payload * KINDS + WORLD)
 
 

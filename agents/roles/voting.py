@@ -41,6 +41,8 @@ class VoteBook:
         self.vote_cycle = np.full((n, n), -(1 << 40), dtype=np.int64)
         """(n, n): the cycle each of those votes was computed for (very negative: none)."""
         self._decoded: dict[str, VoteMessage | None] = {}
+        self._keys: list[list[tuple[int, ...]]] = [[tuple(range(k))] * n for _ in range(n)]
+        self._cycles: list[list[int]] = [[-(1 << 40)] * n for _ in range(n)]
 
     @staticmethod
     def message(assignment: np.ndarray, cycle: int) -> str:
@@ -51,7 +53,7 @@ class VoteBook:
         """Store the votes among the team-mates' messages each player heard at ``cycle`` (other
         messages are left alone; a vote of the wrong size is ignored)."""
         decoded = self._decoded
-        if len(decoded) > 256:
+        if len(decoded) > 4096:
             decoded.clear()
         for i, messages in enumerate(heard_mates):
             for speaker, text in messages:
@@ -66,9 +68,11 @@ class VoteBook:
                     continue
                 # the cycle travels modulo CYCLE_MODULUS: the latest cycle <= now with that residue
                 computed = cycle - (cycle - vote.cycle) % CYCLE_MODULUS
-                if computed >= self.vote_cycle[i, speaker]:
+                if computed >= self._cycles[i][speaker]:
                     self.votes[i, speaker] = vote.assignment
                     self.vote_cycle[i, speaker] = computed
+                    self._keys[i][speaker] = vote.assignment
+                    self._cycles[i][speaker] = computed
 
     def follow(self, cycle: int, own: np.ndarray) -> np.ndarray:
         """(n, k): the assignment each player follows, from its own proposal ``own[i]`` (n, k)
@@ -82,18 +86,22 @@ class VoteBook:
     def follow_one(self, i: int, cycle: int, proposal: np.ndarray) -> np.ndarray:
         """The assignment player ``i`` follows given its own ``proposal`` (k,): :meth:`follow`
         for one player (its row uses only its own memory)."""
-        n = self.n
-        # candidates: its own proposal (row 0), then each team-mate's last vote
-        candidates = np.concatenate([np.asarray(proposal, dtype=np.int64)[None, :], self.votes[i]])   # (n + 1, k)
-        fresh = np.concatenate([[True], cycle - self.vote_cycle[i] <= self.horizon])
-        fresh[1 + i] = False  # (its own old votes)
-        same = (candidates[:, None, :] == candidates[None, :, :]).all(axis=2)
-        support = np.where(fresh, (same & fresh[None, :]).sum(axis=1), -1)
-        tied = support == support.max()
-        # ties: its own proposal first, then the most recent vote, then the lowest team-mate index
-        recency = np.concatenate([[1 << 41], self.vote_cycle[i]])
-        key = np.where(tied, recency * (n + 2) - np.arange(n + 1), np.iinfo(np.int64).min)
-        return candidates[int(key.argmax())]
+        own = tuple(np.asarray(proposal, dtype=np.int64).tolist())
+        # per assignment: [votes for it, then its best row's (recency, -team-mate index) for ties]
+        tally: dict[tuple[int, ...], list] = {own: [1, (1 << 41, 1)]}
+        horizon, keys, cycles = self.horizon, self._keys[i], self._cycles[i]
+        for j in range(self.n):
+            if j == i or cycle - cycles[j] > horizon:
+                continue
+            rank = (cycles[j], -j)
+            entry = tally.get(keys[j])
+            if entry is None:
+                tally[keys[j]] = [1, rank]
+            else:
+                entry[0] += 1
+                entry[1] = max(entry[1], rank)
+        best = max(tally.items(), key=lambda item: (item[1][0], item[1][1]))[0]
+        return np.array(best, dtype=np.int64)
 
 
 def role_conflicts(roles: np.ndarray, n_roles: int) -> tuple[int, int]:

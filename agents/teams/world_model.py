@@ -28,7 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from agents.messages import MessageError, WorldMessage, X_RANGE, Y_RANGE, V_RANGE, decode, encode
+from agents.messages import MessageError, WorldMessage, decode, encode_world_clipped
 from agents.teams.belief_kernels import AGE_NEVER, predict_beliefs, see_ball, see_players
 from soccer_sim.config import MatchConfig
 from soccer_sim.perception.views import PlayerViews
@@ -97,7 +97,7 @@ class TeamBeliefs:
     def _hear(self, heard: tuple[tuple[tuple[int, str], ...], ...]) -> None:
         """Fold the team-mates' world messages into each listener's model."""
         decoded = self._decoded
-        if len(decoded) > 64:
+        if len(decoded) > 4096:
             decoded.clear()
         for i, messages in enumerate(heard):
             for speaker, text in messages:
@@ -122,9 +122,7 @@ class TeamBeliefs:
 
     def world_message(self, i: int) -> str:
         """Player ``i``'s ball belief and own position as a 10-character message."""
-        ball = np.clip(self.ball[i], (-X_RANGE, -Y_RANGE), (X_RANGE, Y_RANGE))
-        vel = np.clip(self.ball_vel[i], -V_RANGE, V_RANGE)
-        me = np.clip(self.mate_pos[i, i], (-X_RANGE, -Y_RANGE), (X_RANGE, Y_RANGE))
-        return encode(WorldMessage(ball=(float(ball[0]), float(ball[1])),
-                                   ball_velocity=(float(vel[0]), float(vel[1])),
-                                   ball_age=int(min(self.ball_age[i], 13)), sender=(float(me[0]), float(me[1]))))
+        bx, by = self.ball[i].tolist()
+        vx, vy = self.ball_vel[i].tolist()
+        sx, sy = self.mate_pos[i, i].tolist()
+        return encode_world_clipped((bx, by), (vx, vy), int(self.ball_age[i]), (sx, sy))
