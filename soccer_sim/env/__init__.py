@@ -34,6 +34,15 @@ Options (keyword arguments of both):
 ``observation_slots``
     player slots per side in an observation (default 11: one layout for every scenario,
     :mod:`soccer_sim.env.spaces`).
+``observation``
+    "full" (the exact world in every agent's team frame, :mod:`soccer_sim.env.spaces`) or
+    "partial" (each agent's own noisy, range-limited view of the match's partial observation,
+    :mod:`soccer_sim.env.partial_spaces`; low-level actions only; the opponent must play
+    partial); default: the config's mode (full).
+``say_values``
+    0 to 5, partial observation only: the low-level action gains a speak flag and this many
+    values, said as one message to the team-mates in range and decoded in their next
+    observation (:mod:`soccer_sim.env.say_codec`); default 0.
 ``render_mode``
     "rgb_array" or "human" (a rerun viewer, or an ``.rrd`` file in ``record_dir`` where no
     display is; :mod:`soccer_sim.env.render`).

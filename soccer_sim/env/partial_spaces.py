@@ -61,9 +61,10 @@ from __future__ import annotations
 import numpy as np
 
 from soccer_sim.config import MatchConfig
+from soccer_sim.env.partial_kernel import observe_rows
 from soccer_sim.env.say_codec import SayCodec
 from soccer_sim.env.spaces import _TAIL, MODES, VELOCITY_BOUND, Scales, observation_slots
-from soccer_sim.perception.views import OPPONENT, TEAMMATE, PlayerViews
+from soccer_sim.perception.views import PlayerViews
 
 UNIDENTIFIED_SLOTS = 5
 """Slots for seen players whose number was not seen (far away, or close behind the agent)."""
@@ -129,9 +130,8 @@ class PartialObservationBuilder:
         """End of the numbered slots; the unidentified slots follow."""
         self._tail = self._people + 4 * UNIDENTIFIED_SLOTS
         self._hear = self._tail + _TAIL
-        self._rows = np.arange(n)
-        self._own_slot = _OWN + 3 * self._rows
-        """Column of each agent's own x in the team-mate slots (its number is its row)."""
+        self._scale = np.array([self.scales.length, self.scales.player_speed, self.scales.stamina, SEE_AGE_CAP,
+                                BALL_AGE_CAP], dtype=np.float64)
         self._seen = np.zeros((n, self._tail - _OWN), dtype=np.float32)
         """Each agent's player slots from its last see (it alone writes its row)."""
         self._ball = np.zeros((n, 2))
@@ -152,91 +152,44 @@ class PartialObservationBuilder:
         clipped to the bounds: written into ``out`` when given, else into a new array. With
         ``write=False`` only the memories are updated (None is returned)."""
         cycle = views.cycle
-        seen_ball = views.ball_seen
-        self._ball[seen_ball] = views.ball[seen_ball]
-        self._ball_cycle[seen_ball] = cycle
-        saw = np.flatnonzero(views.saw)
-        if len(saw):
-            self._see_cycle[saw] = cycle
-            self._remember_see(views, saw)
+        buf = self.out
+        observe_rows(cycle, self._scale, views.position, views.velocity, views.stamina, views.body_direction,
+                     views.saw, views.ball_seen, views.ball, views.seen_count, views.seen_position, views.seen_side,
+                     views.seen_number, self._goalie, self._ball, self._ball_cycle, self._see_cycle, self._seen,
+                     self.slots, UNIDENTIFIED_SLOTS, write, buf)
         if not write:
             return None
-        s, k = self.scales, self.slots
-        buf = self.out
-        pos = views.position / s.length
-        buf[:, 0:2] = pos
-        buf[:, 2:4] = views.velocity / s.player_speed
-        buf[:, 4] = views.stamina / s.stamina
-        buf[:, 5] = self._goalie
-        body = np.radians(views.body_direction)
-        buf[:, 6] = np.cos(body)
-        buf[:, 7] = np.sin(body)
-        buf[:, 8] = views.saw
-        buf[:, 9] = np.minimum(cycle - self._see_cycle, SEE_AGE_CAP) / SEE_AGE_CAP
-        ball = self._ball / s.length
-        buf[:, 10:12] = ball
-        buf[:, 12:14] = ball - pos
-        buf[:, 14] = np.minimum(cycle - self._ball_cycle, BALL_AGE_CAP) / BALL_AGE_CAP
-        buf[:, 15] = seen_ball
-        buf[:, _OWN:self._tail] = self._seen
-        buf[self._rows, self._own_slot] = pos[:, 0]
-        buf[self._rows, self._own_slot + 1] = pos[:, 1]
-        buf[self._rows, self._own_slot + 2] = 1.0
         tail = buf[:, self._tail:self._hear]
         tail[:, :MODES] = 0.0
         tail[:, int(views.play_mode)] = 1.0
         tail[:, MODES] = float(views.mode_ours)
         tail[:, MODES + 1] = views.score[0]
         tail[:, MODES + 2] = views.score[1]
-        tail[:, MODES + 3] = cycle / s.total_cycles
+        tail[:, MODES + 3] = cycle / self.scales.total_cycles
         tail[:, MODES + 4] = views.half
         if self.codec is not None:
-            self._write_heard(views, buf[:, self._hear:], k)
+            self._write_heard(views, buf[:, self._hear:])
         if out is None:
             out = np.empty_like(buf)
         np.maximum(buf, self.low, out=out)
         return np.minimum(out, self.high, out=out)
 
-    def _remember_see(self, views: PlayerViews, rows: np.ndarray) -> None:
-        """Replace the player slots of the agents ``rows`` (those with a see this cycle) with
-        what they see: identified team-mates and opponents by number, the others nearest first."""
-        k = self.slots
-        block = self._seen
-        block[rows] = 0.0
-        count = views.seen_count[rows]
-        width = views.seen_side.shape[1]
-        valid = np.arange(width)[None, :] < count[:, None]
-        side = views.seen_side[rows]
-        number = views.seen_number[rows].astype(np.int64)
-        where = views.seen_position[rows] / self.scales.length  # (r, K, 2); NaN in the padding
-        known = valid & (number >= 0)
-        for mark, base in ((TEAMMATE, 0), (OPPONENT, 3 * k)):
-            r, c = np.nonzero(known & (side == mark))
-            col = base + 3 * number[r, c]
-            block[rows[r], col] = where[r, c, 0]
-            block[rows[r], col + 1] = where[r, c, 1]
-            block[rows[r], col + 2] = 1.0
-        anonymous = valid & (number < 0)
-        rank = np.cumsum(anonymous, axis=1) - 1
-        r, c = np.nonzero(anonymous & (rank < UNIDENTIFIED_SLOTS))
-        col = 6 * k + 4 * rank[r, c]
-        block[rows[r], col] = where[r, c, 0]
-        block[rows[r], col + 1] = where[r, c, 1]
-        block[rows[r], col + 2] = side[r, c]
-        block[rows[r], col + 3] = 1.0
-
-    def _write_heard(self, views: PlayerViews, hear: np.ndarray, slots: int) -> None:
-        """The hear part (module docstring) of every agent from its own heard messages."""
+    def _write_heard(self, views: PlayerViews, hear: np.ndarray) -> None:
+        """The hear part (module docstring) of every agent from its own heard messages: the first
+        decodable team-mate message of each, and the opponent flag."""
+        values, codec = self.say_values, self.codec
         hear[:] = 0.0
-        values = self.say_values
-        codec = self.codec
-        for i, (mates, opponents) in enumerate(zip(views.heard_mates, views.heard_opponents)):
-            if opponents:
-                hear[i, values + 2] = 1.0
+        hear[:, values + 2] = [1.0 if heard else 0.0 for heard in views.heard_opponents]
+        rows, decoded, speakers = [], [], []
+        for i, mates in enumerate(views.heard_mates):
             for speaker, message in mates:
-                decoded = codec.decode(message)
-                if decoded is not None:
-                    hear[i, :values] = decoded
-                    hear[i, values] = 1.0
-                    hear[i, values + 1] = speaker / max(slots - 1, 1)
+                said = codec.values_of(message)
+                if said is not None:
+                    rows.append(i)
+                    decoded.append(said)
+                    speakers.append(speaker)
                     break
+        if rows:
+            hear[rows, :values] = decoded
+            hear[rows, values] = 1.0
+            hear[rows, values + 1] = np.array(speakers, dtype=np.float32) / max(self.slots - 1, 1)

@@ -213,7 +213,6 @@ def test_bad_options_are_refused_naming_the_option() -> None:
              (dict(observation="partial", say_values=2.0), "say_values must be"),
              (dict(observation="partial", action_mode="high_level"), "action_mode 'high_level' needs the exact"),
              (dict(observation="partial", controlled="left"), "opponent 'static' cannot play under partial"),
-             (dict(observation="partial", controlled="right", opponent="mmdr"), "opponent 'mmdr' cannot"),
              (dict(observation="full", config=MatchConfig(observation=ObservationConfig("partial"))),
               "observation='full' contradicts"),
              (dict(observation="partial", say_values=5, config=MatchConfig(observation=ObservationConfig(
