@@ -7,6 +7,11 @@ one match cycle: the controlled players' actions (:mod:`soccer_sim.env.spaces`) 
 team's decision, an uncontrolled side is played by a team (a registered name or a Team
 object), and every agent observes the world in its own team's frame.
 
+Under ``observation="partial"`` an agent observes only its own player's perception
+(:mod:`soccer_sim.env.partial_spaces`; the match's views of a cycle are taken one call ahead,
+:mod:`soccer_sim.env.lookahead`), and with ``say_values`` its action also says a message
+(:mod:`soccer_sim.env.say_codec`).
+
 Rewards: :mod:`soccer_sim.env.rewards` (goals by default; named dense terms). Infos:
 :mod:`soccer_sim.env.infos` (numbers and fixed-shape arrays). The global state:
 :mod:`soccer_sim.env.global_state` (``state()`` and the ``state_space`` attribute).
@@ -19,7 +24,7 @@ episode short, which learners should bootstrap through;
 
 **Batched interface** (no dicts): ``reset_arrays(seed)`` and ``step_arrays(actions)`` with
 one row per agent in :attr:`possible_agents` order (left first): ``actions`` (N, 5) floats for
-the low-level mode, (N,) or (N, 1) integers for a discrete mode; ``step_arrays`` returns
+the low-level mode (N, 6 + s with ``say_values=s``), (N,) or (N, 1) integers for a discrete mode; ``step_arrays`` returns
 ``obs`` (N, D) float32, ``rewards`` (N,) float32, ``terminations`` and ``truncations`` (N,)
 bool, new arrays each call. ``action_masks()`` is the (N, A) int8 mask of a discrete mode,
 :meth:`current_infos` the dict infos on demand. Both interfaces drive the same episode and may be mixed.

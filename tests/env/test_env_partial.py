@@ -19,6 +19,7 @@ from soccer_sim.env.vector import vector_env
 from soccer_sim.perception import SAY_CHARACTERS, AudioParams
 from soccer_sim.perception.config import ObservationConfig
 from soccer_sim.perception.views import PlayerViews
+from soccer_sim.trivial_teams import IdleTeam
 
 pytestmark = pytest.mark.filterwarnings("ignore::UserWarning")
 PARTIAL = dict(observation="partial", opponent="chaser")
@@ -204,6 +205,34 @@ def test_undecodable_team_mate_messages_count_as_nothing_heard() -> None:
     np.testing.assert_allclose(hear[2], [0.5, -0.5, 1.0, 0.5, 0.0], atol=STEP + 1e-6)  # the decodable one, from 5
 
 
+def test_the_memories_last_between_sightings_and_end_with_the_half() -> None:
+    environment = parallel_env(**PARTIAL, controlled="left", max_cycles=5)
+    environment.reset_arrays(seed=0)
+    views = _copy(environment._match.observer.views[0])
+    builder = PartialObservationBuilder(11, 11, 0, environment.config)
+    seen = builder.build(views)
+    assert seen[:, 15].any() and seen[:, 8].any()
+    blind = _copy(views)
+    blind.ball_seen[:], blind.saw[:], blind.cycle = False, False, views.cycle + 7
+    later = builder.build(blind)
+    kept = views.ball_seen
+    np.testing.assert_array_equal(later[kept, 10:12], seen[kept, 10:12])  # where it last saw the ball
+    np.testing.assert_allclose(later[kept, 14], 7 / BALL_AGE_CAP)
+    np.testing.assert_array_equal(later[:, 16:82], seen[:, 16:82])  # the last see's slots
+    blind.half = 1
+    second = builder.build(blind)
+    assert not second[:, 10:12].any() and (second[:, 14] == 1.0).all() and (second[:, 9] == 1.0).all()
+    own = 16 + 3 * np.arange(11)
+    assert second[:, 16:82].sum() == pytest.approx(second[np.arange(11)[:, None], own[:, None] + [0, 1, 2]].sum())
+
+
+class _FullOnly(IdleTeam):
+    """A team written for the exact TeamView only."""
+
+    name = "full-only"
+    observation_modes = ("full",)
+
+
 def test_bad_options_are_refused_naming_the_option() -> None:
     cases = [(dict(observation="partly"), "observation must be 'full' or 'partial'"),
              (dict(say_values=2), "say_values=2 needs partial observation"),
@@ -212,7 +241,8 @@ def test_bad_options_are_refused_naming_the_option() -> None:
              (dict(observation="partial", say_values=True), "say_values must be"),
              (dict(observation="partial", say_values=2.0), "say_values must be"),
              (dict(observation="partial", action_mode="high_level"), "action_mode 'high_level' needs the exact"),
-             (dict(observation="partial", controlled="left"), "opponent 'static' cannot play under partial"),
+             (dict(observation="partial", controlled="left", opponent=_FullOnly()),
+              "opponent 'full-only' cannot play under partial"),
              (dict(observation="full", config=MatchConfig(observation=ObservationConfig("partial"))),
               "observation='full' contradicts"),
              (dict(observation="partial", say_values=5, config=MatchConfig(observation=ObservationConfig(
