@@ -58,6 +58,7 @@ from __future__ import annotations
 from soccer_sim.env.infos import EVENT_KIND_NAMES, PLAY_MODE_NAMES
 from soccer_sim.env.options import DEFAULT_OPPONENT
 from soccer_sim.env.parallel import SoccerParallelEnv
+from soccer_sim.env.partial_spaces import partial_observation_size
 from soccer_sim.env.policy_team import PolicyTeam
 from soccer_sim.env.rewards import DENSE, TERMS
 from soccer_sim.env.spaces import ACTION_SIZE, OBSERVATION_SLOTS, observation_size
@@ -79,4 +80,4 @@ def env(**options):
 
 __all__ = ["ACTION_SIZE", "DEFAULT_OPPONENT", "DENSE", "EVENT_KIND_NAMES", "OBSERVATION_SLOTS", "PLAY_MODE_NAMES",
            "PolicyTeam", "SoccerParallelEnv", "TERMS", "env", "observation_size", "parallel_env",
-           "vector_env"]
+           "partial_observation_size", "vector_env"]

@@ -24,10 +24,11 @@ episode short, which learners should bootstrap through;
 
 **Batched interface** (no dicts): ``reset_arrays(seed)`` and ``step_arrays(actions)`` with
 one row per agent in :attr:`possible_agents` order (left first): ``actions`` (N, 5) floats for
-the low-level mode (N, 6 + s with ``say_values=s``), (N,) or (N, 1) integers for a discrete mode; ``step_arrays`` returns
-``obs`` (N, D) float32, ``rewards`` (N,) float32, ``terminations`` and ``truncations`` (N,)
-bool, new arrays each call. ``action_masks()`` is the (N, A) int8 mask of a discrete mode,
-:meth:`current_infos` the dict infos on demand. Both interfaces drive the same episode and may be mixed.
+the low-level mode (N, 6 + s with ``say_values=s``), (N,) or (N, 1) integers for a discrete
+mode; ``step_arrays`` returns ``obs`` (N, D) float32, ``rewards`` (N,) float32,
+``terminations`` and ``truncations`` (N,) bool, new arrays each call. ``action_masks()`` is the
+(N, A) int8 mask of a discrete mode, :meth:`current_infos` the dict infos on demand. Both
+interfaces drive the same episode and may be mixed.
 """
 
 from __future__ import annotations

@@ -8,7 +8,7 @@ from dataclasses import fields, replace
 
 import numpy as np
 import pytest
-from pettingzoo.test import api_test, parallel_api_test
+from pettingzoo.test import api_test, parallel_api_test, parallel_seed_test
 
 from soccer_sim import MatchConfig, run_match
 from soccer_sim.env import PolicyTeam, env, parallel_env
@@ -44,6 +44,7 @@ def test_pettingzoo_api_tests_pass_under_partial_observation_and_with_the_say_ac
     parallel_api_test(parallel_env(**PARTIAL, controlled="both", say_values=3, max_cycles=12), num_cycles=12)
     api_test(env(**PARTIAL, controlled="right", max_cycles=10), num_cycles=10)
     api_test(env(**PARTIAL, scenario="3-vs-1-with-keeper", say_values=3, max_cycles=10), num_cycles=10)
+    parallel_seed_test(lambda: parallel_env(**PARTIAL, controlled="left", say_values=2, max_cycles=10), num_cycles=10)
 
 
 def test_spaces_sizes_and_observations_within_the_space() -> None:
