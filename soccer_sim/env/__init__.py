@@ -34,6 +34,15 @@ Options (keyword arguments of both):
 ``observation_slots``
     player slots per side in an observation (default 11: one layout for every scenario,
     :mod:`soccer_sim.env.spaces`).
+``observation``
+    "full" (the exact world in every agent's team frame, :mod:`soccer_sim.env.spaces`) or
+    "partial" (each agent's own noisy, range-limited view of the match's partial observation,
+    :mod:`soccer_sim.env.partial_spaces`; low-level actions only; the opponent must play
+    partial); default: the config's mode (full).
+``say_values``
+    0 to 5, partial observation only: the low-level action gains a speak flag and this many
+    values, said as one message to the team-mates in range and decoded in their next
+    observation (:mod:`soccer_sim.env.say_codec`); default 0.
 ``render_mode``
     "rgb_array" or "human" (a rerun viewer, or an ``.rrd`` file in ``record_dir`` where no
     display is; :mod:`soccer_sim.env.render`).
@@ -49,6 +58,7 @@ from __future__ import annotations
 from soccer_sim.env.infos import EVENT_KIND_NAMES, PLAY_MODE_NAMES
 from soccer_sim.env.options import DEFAULT_OPPONENT
 from soccer_sim.env.parallel import SoccerParallelEnv
+from soccer_sim.env.partial_spaces import partial_observation_size
 from soccer_sim.env.policy_team import PolicyTeam
 from soccer_sim.env.rewards import DENSE, TERMS
 from soccer_sim.env.spaces import ACTION_SIZE, OBSERVATION_SLOTS, observation_size
@@ -70,4 +80,4 @@ def env(**options):
 
 __all__ = ["ACTION_SIZE", "DEFAULT_OPPONENT", "DENSE", "EVENT_KIND_NAMES", "OBSERVATION_SLOTS", "PLAY_MODE_NAMES",
            "PolicyTeam", "SoccerParallelEnv", "TERMS", "env", "observation_size", "parallel_env",
-           "vector_env"]
+           "partial_observation_size", "vector_env"]

@@ -7,6 +7,11 @@ one match cycle: the controlled players' actions (:mod:`soccer_sim.env.spaces`) 
 team's decision, an uncontrolled side is played by a team (a registered name or a Team
 object), and every agent observes the world in its own team's frame.
 
+Under ``observation="partial"`` an agent observes only its own player's perception
+(:mod:`soccer_sim.env.partial_spaces`; the match's views of a cycle are taken one call ahead,
+:mod:`soccer_sim.env.lookahead`), and with ``say_values`` its action also says a message
+(:mod:`soccer_sim.env.say_codec`).
+
 Rewards: :mod:`soccer_sim.env.rewards` (goals by default; named dense terms). Infos:
 :mod:`soccer_sim.env.infos` (numbers and fixed-shape arrays). The global state:
 :mod:`soccer_sim.env.global_state` (``state()`` and the ``state_space`` attribute).
@@ -19,10 +24,11 @@ episode short, which learners should bootstrap through;
 
 **Batched interface** (no dicts): ``reset_arrays(seed)`` and ``step_arrays(actions)`` with
 one row per agent in :attr:`possible_agents` order (left first): ``actions`` (N, 5) floats for
-the low-level mode, (N,) or (N, 1) integers for a discrete mode; ``step_arrays`` returns
-``obs`` (N, D) float32, ``rewards`` (N,) float32, ``terminations`` and ``truncations`` (N,)
-bool, new arrays each call. ``action_masks()`` is the (N, A) int8 mask of a discrete mode,
-:meth:`current_infos` the dict infos on demand. Both interfaces drive the same episode and may be mixed.
+the low-level mode (N, 6 + s with ``say_values=s``), (N,) or (N, 1) integers for a discrete
+mode; ``step_arrays`` returns ``obs`` (N, D) float32, ``rewards`` (N,) float32,
+``terminations`` and ``truncations`` (N,) bool, new arrays each call. ``action_masks()`` is the
+(N, A) int8 mask of a discrete mode, :meth:`current_infos` the dict infos on demand. Both
+interfaces drive the same episode and may be mixed.
 """
 
 from __future__ import annotations
@@ -39,6 +45,8 @@ from soccer_sim.env.options import (CONTROLLED, DEFAULT_OPPONENT, RENDER_MODES, 
                                     load_action_mode, resolve_options)
 from soccer_sim.env.persistence import ReplayPickling
 from soccer_sim.env.rewards import Rewards
+from soccer_sim.env.lookahead import LookaheadObserver
+from soccer_sim.env.partial_spaces import PartialObservationBuilder
 from soccer_sim.env.spaces import ACTION_SIZE, ActionDecoder, ObservationBuilder, check_action, check_actions
 from soccer_sim.match import Match
 from soccer_sim.state import AWAY, HOME
@@ -48,7 +56,10 @@ __all__ = ["CONTROLLED", "DEFAULT_OPPONENT", "SIDES", "SoccerParallelEnv", "load
 
 
 class _ExternalTeam:
-    """A team whose command comes from the environment's agents (set before each cycle)."""
+    """A team whose command comes from the environment's agents (set before each cycle); it
+    ignores what it is given to see, so it plays under either observation mode."""
+
+    observation_modes = ("full", "partial")
 
     def __init__(self, name: str) -> None:
         self.name = name
@@ -89,8 +100,18 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         limits = [c for c in (self.max_cycles, self.scenario.cycle_limit if self.scenario else None) if c]
         horizon = min(limits) if limits else None
         """The episode's last cycle when it ends before the match would: the time feature's scale."""
-        self._builders = {side: ObservationBuilder(sizes[side], sizes[1 - side], goalies[side], self.config,
-                                                   kw["observation_slots"], horizon) for side in self.sides}
+        self.partial = self.config.observation.partial
+        """Whether agents observe partially (``observation="partial"``, :mod:`soccer_sim.env.partial_spaces`)."""
+        self.say_values = say = kw["say_values"]
+        if self.partial:
+            self._builders = {side: PartialObservationBuilder(sizes[side], sizes[1 - side], goalies[side], self.config,
+                                                              kw["observation_slots"], horizon, say)
+                              for side in self.sides}
+        else:
+            self._builders = {side: ObservationBuilder(sizes[side], sizes[1 - side], goalies[side], self.config,
+                                                       kw["observation_slots"], horizon) for side in self.sides}
+        self._action_size = ACTION_SIZE + (1 + say if say else 0)
+        """Values of a low-level action: 5, and the speak flag and the message's values with ``say_values``."""
         builder = self._builders[self.sides[0]]
         self.observation_slots = builder.slots
         box = spaces.Box(builder.low, builder.high, dtype=np.float32)
@@ -98,7 +119,7 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         low_level = self.action_mode == "low_level"
         self._translators = {} if low_level else {side: load_action_mode(self.action_mode) for side in self.sides}
         if low_level:
-            self._action_space = spaces.Box(-1.0, 1.0, (ACTION_SIZE,), dtype=np.float32)
+            self._action_space = spaces.Box(-1.0, 1.0, (self._action_size,), dtype=np.float32)
             self._masks = None
         else:
             size = next(iter(self._translators.values())).size(self.observation_slots)
@@ -167,6 +188,10 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         self._match = match = Match(teams[HOME], teams[AWAY], seed=match_seed, recorders=recorders, setup=self.setup)
         self._match_seed = match_seed
         match.start()
+        if self.partial:
+            match.observer = LookaheadObserver(match.observer)  # the agents see a cycle before it is played
+            for builder in self._builders.values():
+                builder.reset()
         self._externals = {side: match.teams[side].command for side in self.sides}
         for side, translator in self._translators.items():
             translator.reset(self.setup.side_info(side, match.team_names), self.config)
@@ -188,7 +213,7 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
             checked = np.array([self._check_choice(a, v) for a, v in zip(self.possible_agents, values)],
                                dtype=np.int64)
         else:
-            checked = check_actions(self.possible_agents, values)
+            checked = check_actions(self.possible_agents, values, self._action_size)
         agents = self.agents
         self._advance(checked)
         rewards = dict(zip(agents, self._rewards.out.tolist()))
@@ -210,7 +235,7 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
                 rows = np.array([self._check_choice(a, v) for a, v in zip(self.possible_agents, _rows(actions, n))],
                                 dtype=np.int64)
         else:
-            rows = check_actions(self.possible_agents, _rows(actions, n))
+            rows = check_actions(self.possible_agents, _rows(actions, n), self._action_size)
         self._advance(rows)
         terminated, truncated = self._done
         return (self._obs.copy(), self._rewards.out.copy(), np.full(n, terminated), np.full(n, truncated))
@@ -231,6 +256,8 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
             external.dash[:] = command.dash
             external.kick[:] = command.kick
             external.catch = command.catch
+            if self.say_values:
+                external.say = self._builders[side].codec.encode(block[:, ACTION_SIZE + 1:], block[:, ACTION_SIZE] > 0)
         self._log.append(rows.copy())
         self._rewards.before(state)
         mark = len(match.events)
@@ -287,12 +314,17 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         if self._translators:
             self._check_choice(agent, action)
         else:
-            check_action(agent, action)
+            check_action(agent, action, self._action_size)
 
     # ------------------------------------------------------------------ what agents see
     def _observe(self, build: bool = True) -> None:
         match = self._match
         state = match.state
+        if self.partial:  # each agent's own view of the coming cycle (the memories see every cycle)
+            views = match.observer.observe(state)
+            for side in self.sides:
+                self._builders[side].build(views[side], out=self._obs[self._blocks[side]], write=build)
+            return
         for side in self.sides:
             view = match.frames[side].update_view(state, state.attack_direction(side))
             if not build:

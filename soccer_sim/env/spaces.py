@@ -215,28 +215,29 @@ class ActionDecoder:
         return command
 
 
-def check_actions(agents: list[str], actions: list[object]) -> np.ndarray:
-    """The actions of ``agents`` as one float64 (len(agents), 5) array clipped to [-1, 1]: one
+def check_actions(agents: list[str], actions: list[object], size: int = ACTION_SIZE) -> np.ndarray:
+    """The actions of ``agents`` as one float64 (len(agents), size) array clipped to [-1, 1]: one
     array operation when every action is well formed, else :func:`check_action` agent by agent,
-    so the ValueError names the first agent at fault."""
+    so the ValueError names the first agent at fault. ``size``: values per action (5; more with
+    the say action of partial observation)."""
     try:
         rows = np.array(actions, dtype=np.float64)
     except (TypeError, ValueError):
         rows = None
-    if rows is None or rows.shape != (len(agents), ACTION_SIZE) or not np.isfinite(rows).all():
-        return np.array([check_action(agent, action) for agent, action in zip(agents, actions)])
+    if rows is None or rows.shape != (len(agents), size) or not np.isfinite(rows).all():
+        return np.array([check_action(agent, action, size) for agent, action in zip(agents, actions)])
     return np.clip(rows, -1.0, 1.0, out=rows)
 
 
-def check_action(agent: str, action: object) -> np.ndarray:
-    """One agent's action as a float64 (5,) array clipped to [-1, 1]; ValueError naming the
+def check_action(agent: str, action: object, size: int = ACTION_SIZE) -> np.ndarray:
+    """One agent's action as a float64 (size,) array clipped to [-1, 1]; ValueError naming the
     agent for the wrong shape, a non-numeric value or a NaN."""
     try:
         array = np.asarray(action, dtype=np.float64)
     except (TypeError, ValueError):
-        raise ValueError(f"action of {agent} must be {ACTION_SIZE} numbers, got {action!r}") from None
-    if array.shape != (ACTION_SIZE,):
-        raise ValueError(f"action of {agent} must have shape ({ACTION_SIZE},), got {array.shape}")
+        raise ValueError(f"action of {agent} must be {size} numbers, got {action!r}") from None
+    if array.shape != (size,):
+        raise ValueError(f"action of {agent} must have shape ({size},), got {array.shape}")
     if not np.isfinite(array).all():
         raise ValueError(f"action of {agent} is not finite: {array.tolist()}")
     return np.clip(array, -1.0, 1.0)

@@ -8,7 +8,8 @@ come out as arrays, agents in the order of ``possible_agents`` (``left_0``, ``le
 =================  ================================  =========================================
 what               shape                             what
 =================  ================================  =========================================
-actions            ``(E, N, *action_shape)``         ``(E, N, 5)`` float for low-level actions,
+actions            ``(E, N, *action_shape)``         ``(E, N, 5)`` float for low-level actions
+                                                     (``6 + s`` with ``say_values=s``),
                                                      ``(E, N)`` integers for the high level
 observations       ``(E, N, D)`` float32             every agent's observation
 rewards            ``(E, N)`` float32                the reward of the step
