@@ -50,9 +50,10 @@ from agents.roles import RoleAssigner, RoleContext, make_assigner, offensive_ord
 from agents.teams import mechanism
 from agents.teams.ball_role import LeaveMatching, check_ball_role
 from agents.teams.decentralised import DecentralisedPlay
-from agents.teams.on_ball import able_players, ball_reach, choose_kicker, make_tackling, on_ball_kick, tackle_if_worth
-from agents.teams.positions import position_labels
-from agents.teams.reporting import RoleFigures
+from agents.teams.on_ball import (able_players, ball_player, ball_reach, choose_kicker, make_tackling, on_ball_kick,
+                                  tackle_if_worth)
+from agents.teams.positions import current_labels, nearest_roles, position_labels
+from agents.teams.reporting import RoleFigures, team_drawing
 from agents.teams.role_behaviours import RoleBehaviours
 from agents.teams.role_kernels import pull_onside, settle_roles, shape_targets, steered_goals
 from agents.teams.set_plays import SetPlays
@@ -185,14 +186,9 @@ class FormationTeam:
 
     def _pick_roles(self, view: TeamView) -> None:
         """A smaller side's outfield players take the outfield roles whose targets (for the ball
-        where it is now) are nearest them, one each (minimal total distance)."""
-        from scipy.optimize import linear_sum_assignment
-
-        targets = self.formation_set.positions(view.ball, Situation.NORMAL)[self._outfield_roles]
-        players = view.own_pos[self.outfield]
-        cost = np.hypot(players[:, None, 0] - targets[None, :, 0], players[:, None, 1] - targets[None, :, 1])
-        _, chosen = linear_sum_assignment(cost)
-        self._match_roles = np.sort(self._outfield_roles[chosen])
+        where it is now) are nearest them, one each (:func:`~agents.teams.positions.nearest_roles`)."""
+        self._match_roles = nearest_roles(self.formation_set, self._outfield_roles, view.ball,
+                                          view.own_pos[self.outfield])
         self._out_roles = _as_slice(self._match_roles)
         self._choose_roles = False
 
@@ -379,23 +375,8 @@ class FormationTeam:
         """Our player who goes for the ball (-1: none can reach it in time)."""
         if self._ball_row_cycle == view.cycle:  # chosen before the matching this cycle
             return self._ball_row
-        named, first = self.assigner.ball_player(), race.ours.first
-        keeper = first == self.goalie >= 0 and skills.comes_out(self.model, race, self.goalie)
-        if named is not None and not self.style.stationary and not keeper:  # (a ball our keeper wins is its own)
-            return int(self.outfield[named])
-        if first < 0:
-            return -1
-        if self.style.stationary:
-            # Statues only step in for a ball that comes to them.
-            return first if race.ours.cycles[first] <= 2 else -1
-        if first == self.goalie and not skills.comes_out(self.model, race, self.goalie):
-            # The goalkeeper goes only for a ball it wins in its area; else it holds its line.
-            cycles = race.ours.cycles[self.outfield]
-            if not cycles.size:  # a lone goalkeeper stays in its area
-                return -1
-            best = int(np.argmin(cycles))
-            return int(self.outfield[best]) if cycles[best] < skills.UNREACHABLE else -1
-        return int(first)
+        return ball_player(self.assigner.ball_player(), race, self.goalie, self.outfield, self.model,
+                           self.style.stationary)
 
     # ------------------------------------------------------------------ reporting
     def statistics(self) -> dict[str, float]:
@@ -411,15 +392,8 @@ class FormationTeam:
         before the first assignment)."""
         if self.players is not None:
             return self.players.role_labels()
-        kinds = self._role_labels
-        labels = [kinds[r] for r in range(self.n)]
-        if self._has_outfield:
-            roles = self._match_roles if self.role_of_player is None else self._match_roles[self.role_of_player]
-            for player, role in zip(self.outfield.tolist(), roles.tolist()):
-                labels[player] = kinds[role]
-        if 0 <= self.goalie < self.n:
-            labels[self.goalie] = kinds[self._goalie_role]
-        return labels
+        return current_labels(self._role_labels, self.n, self.outfield, self._match_roles, self.role_of_player,
+                              self.goalie, self._goalie_role)
 
     def drawing(self) -> Drawing:
         """What a replay may draw (team frame): each role's target, where each player is
@@ -428,14 +402,8 @@ class FormationTeam:
         observation: as the goalkeeper's brain, else the first player's, sees them)."""
         if self.players is not None and self.players.brains:
             return self.players.brains[max(self.players.goalie, 0)].drawing()
-        formation = self.formation_set.formation(self._situation)
-        role_of_player = self.role_of_player
-        assigned = None if role_of_player is None else self.targets[self._out_roles][role_of_player]
-        return Drawing(
-            targets=self.targets.copy(), goals=self.goals.copy(), outfield=self.outfield.copy(),
-            role_of_player=None if role_of_player is None else role_of_player.copy(),
-            assigned_targets=assigned, formation_balls=formation.balls, formation_triangles=formation.triangles,
-        )
+        return team_drawing(self.formation_set.formation(self._situation), self.targets, self._out_roles,
+                            self.goals, self.outfield, self.role_of_player)
 
 
 def _as_slice(indices: np.ndarray) -> slice | np.ndarray:

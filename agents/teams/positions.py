@@ -96,3 +96,31 @@ def position_labels(formation_set: FormationSet, wide_fraction: float = WIDE_FRA
 def position_codes(formation_set: FormationSet) -> np.ndarray:
     """:func:`position_labels` as int64 codes (indices into :data:`POSITIONS`), for kernels."""
     return np.array([POSITIONS.index(label) for label in position_labels(formation_set)], dtype=np.int64)
+
+
+def nearest_roles(formation_set: FormationSet, outfield_roles: np.ndarray, ball: np.ndarray,
+                  players: np.ndarray) -> np.ndarray:
+    """The outfield roles (sorted) a smaller side's outfield ``players`` (k, 2) m take: those
+    whose targets for the ball at ``ball`` lie nearest them, one each (a minimal total distance
+    matching)."""
+    from scipy.optimize import linear_sum_assignment
+
+    targets = formation_set.positions(ball, Situation.NORMAL)[outfield_roles]
+    cost = np.hypot(players[:, None, 0] - targets[None, :, 0], players[:, None, 1] - targets[None, :, 1])
+    _, chosen = linear_sum_assignment(cost)
+    return np.sort(outfield_roles[chosen])
+
+
+def current_labels(role_labels: list[str], n: int, outfield: np.ndarray, match_roles: np.ndarray,
+                   role_of_player: np.ndarray | None, goalie: int, goalie_role: int) -> list[str]:
+    """Each of ``n`` players' current position label (row order): the goalkeeper's, then each
+    outfield player's assigned role's (its own formation role's before the first assignment).
+    ``role_labels``: the label of each formation role."""
+    labels = [role_labels[r] for r in range(n)]
+    if len(outfield):
+        roles = match_roles if role_of_player is None else match_roles[role_of_player]
+        for player, role in zip(outfield.tolist(), roles.tolist()):
+            labels[player] = role_labels[role]
+    if 0 <= goalie < n:
+        labels[goalie] = role_labels[goalie_role]
+    return labels

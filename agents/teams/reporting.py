@@ -4,7 +4,10 @@ reports)."""
 
 from __future__ import annotations
 
+import numpy as np
+
 from soccer_sim.config import MatchConfig
+from soccer_sim.team_hooks import Drawing
 
 
 class RoleFigures:
@@ -66,3 +69,16 @@ class RoleFigures:
             "held_roles_optimal_share": self.held_optimal / samples,
             "held_makespan_gap": self.held_gap_sum / samples,
         }
+
+
+def team_drawing(formation, targets: np.ndarray, outfield_roles, goals: np.ndarray, outfield: np.ndarray,
+                 role_of_player: np.ndarray | None) -> Drawing:
+    """What a replay may draw for the built-in team (team frame): each role's target
+    (``targets``), where each player is going (``goals``), the outfield players with their roles
+    and role targets (None before the first assignment), and the ``formation``'s sample balls
+    and triangles. ``outfield_roles``: the rows of ``targets`` the outfield roles take."""
+    assigned = None if role_of_player is None else targets[outfield_roles][role_of_player]
+    return Drawing(targets=targets.copy(), goals=goals.copy(), outfield=outfield.copy(),
+                   role_of_player=None if role_of_player is None else role_of_player.copy(),
+                   assigned_targets=assigned, formation_balls=formation.balls,
+                   formation_triangles=formation.triangles)
