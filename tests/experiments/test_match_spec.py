@@ -58,7 +58,9 @@ def test_the_scenario_content_not_only_its_name_changes_the_identity() -> None:
 
 def test_the_hash_of_a_configuration_alone_is_the_one_stored_results_files_hold() -> None:
     config = config_for(300)
-    legacy = hashlib.sha256(json.dumps(asdict(config), sort_keys=True, default=str).encode()).hexdigest()[:16]
+    described = asdict(config)
+    del described["observation"]  # a field added later: left out at its default (full observation)
+    legacy = hashlib.sha256(json.dumps(described, sort_keys=True, default=str).encode()).hexdigest()[:16]
     assert config_hash(config) == legacy
 
 

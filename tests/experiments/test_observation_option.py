@@ -21,10 +21,11 @@ def test_partial_observation_is_its_own_configuration():
 
 def test_a_team_that_cannot_play_partial_is_refused_before_any_match(tmp_path, capsys):
     out = tmp_path / "r.sqlite"
-    code = main(["tournament", "--teams", "chaser,static", "--games", "2", "--cycles", "50", "--observation",
+    full_only = "examples.formation_team:FormationTeam"
+    code = main(["tournament", "--teams", f"chaser,{full_only}", "--games", "2", "--cycles", "50", "--observation",
                  "partial", "--out", str(out), "--no-progress", "--workers", "1"])
     assert code == 2
-    assert "team 'static' cannot play under --observation partial" in capsys.readouterr().err
+    assert f"team '{full_only}' cannot play under --observation partial" in capsys.readouterr().err
     assert not out.exists()
 
 
@@ -34,5 +35,6 @@ def test_a_partial_tournament_plays_and_play_takes_the_option(tmp_path, capsys):
                  "partial", "--out", str(out), "--no-progress", "--workers", "1"])
     assert code == 0 and out.exists()
     assert main(["play", "chaser", "idle", "--cycles", "40", "--observation", "partial"]) == 0
-    assert main(["play", "static", "idle", "--cycles", "40", "--observation", "partial"]) == 2
+    assert main(["play", "examples.formation_team:FormationTeam", "idle", "--cycles", "40", "--observation",
+                 "partial"]) == 2
     assert "cannot play under --observation partial" in capsys.readouterr().err
