@@ -5,6 +5,7 @@ from __future__ import annotations
 import copy
 
 import numpy as np
+import pytest
 
 from soccer_sim import MatchConfig, resolve_team, run_match
 from soccer_sim.match import Match
@@ -58,6 +59,7 @@ def test_changing_one_players_view_changes_no_other_players_command():
     assert not np.array_equal(first.dash[j], second.dash[j]) or first.say[j] != second.say[j]
 
 
+@pytest.mark.slow  # the default suite plays decentralised brains in the test above
 def test_a_decentralised_match_plays_reports_conflicts_and_is_deterministic():
     config = MatchConfig(observation=ObservationConfig("partial"), max_cycles=400)
     one = run_match("mmdr", "static", seed=2, config=config)

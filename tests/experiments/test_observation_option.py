@@ -3,6 +3,8 @@ clear refusal of teams that cannot play under it, before any match."""
 
 from __future__ import annotations
 
+import pytest
+
 from experiments.cli import main
 from experiments.configuration import match_config
 from experiments.runner.spec import config_hash, paired_specs
@@ -27,8 +29,11 @@ def test_a_team_that_cannot_play_partial_is_refused_before_any_match(tmp_path, c
     assert code == 2
     assert f"team '{full_only}' cannot play under --observation partial" in capsys.readouterr().err
     assert not out.exists()
+    assert main(["play", "chaser", "idle", "--cycles", "20", "--observation", "partial"]) == 0
+    assert main(["play", full_only, "idle", "--cycles", "20", "--observation", "partial"]) == 2
 
 
+@pytest.mark.slow  # the default suite keeps the refusal and `play --observation partial` above
 def test_a_partial_tournament_plays_and_play_takes_the_option(tmp_path, capsys):
     out = tmp_path / "r.sqlite"
     code = main(["tournament", "--teams", "chaser,idle", "--games", "2", "--cycles", "60", "--observation",
