@@ -110,6 +110,7 @@ class SetPlays:
                                                       mode == PlayMode.CORNER_KICK, self.style.routines)
             rows, points = self.routine
             goals[rows] = points
+            goals[taker] = view.ball  # (a routine made around another taker never holds this one back)
 
     def take(self, view: TeamView, goals: np.ndarray, command: TeamCommand, urgent: np.ndarray,
              since: int) -> int:
