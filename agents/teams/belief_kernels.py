@@ -40,13 +40,15 @@ def predict_beliefs(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray
 @njit(cache=True, nogil=True)
 def see_ball(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray, last_seen: np.ndarray,
              last_seen_cycle: np.ndarray, seen: np.ndarray, at: np.ndarray, distance: np.ndarray, cycle: int,
-             gain: float, velocity_gain: float, noise_share: float, ball_decay: float,
+             gain: float, velocity_gain: float, noise_share: float, near: float, ball_decay: float,
              speed_max: float) -> None:  # pragma: no cover - compiled
     """Fold each observer's ball sighting (``seen``, ``at``, reported ``distance``) into its
     belief: an alpha-beta filter on the predicted position (``gain`` of the residual into the
     position, ``velocity_gain`` into the velocity), restarted when the residual is larger than
     the sighting's noise allows (``noise_share`` of the distance plus 0.3 m: the ball was kicked
-    or the belief was stale), the velocity then taken from the last two sightings."""
+    or the belief was stale), the velocity then taken from the last two sightings. A sighting
+    nearer than ``near`` m is precise enough to be taken as it is, with the velocity from the
+    last two sightings when they are recent."""
     for i in range(ball.shape[0]):
         if not seen[i]:
             continue
@@ -54,7 +56,14 @@ def see_ball(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray, last_
         rx, ry = zx - ball[i, 0], zy - ball[i, 1]
         gate = noise_share * distance[i] + 0.3
         fresh = ball_age[i] <= 3
-        if fresh and rx * rx + ry * ry <= gate * gate:
+        if distance[i] < near and fresh and 0 < cycle - last_seen_cycle[i] <= 3:
+            gap = cycle - last_seen_cycle[i]
+            rolled = (1.0 - ball_decay ** gap) / (1.0 - ball_decay)
+            scale = ball_decay ** (gap - 1) / rolled
+            ball_vel[i, 0] = (zx - last_seen[i, 0]) * scale
+            ball_vel[i, 1] = (zy - last_seen[i, 1]) * scale
+            ball[i, 0], ball[i, 1] = zx, zy
+        elif fresh and rx * rx + ry * ry <= gate * gate:
             ball[i, 0] += gain * rx
             ball[i, 1] += gain * ry
             ball_vel[i, 0] += velocity_gain * rx

@@ -87,6 +87,7 @@ class DecentralisedPlay:
         """(n, k): the assignment each player followed last."""
         self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
         self._last_dash = np.zeros((n, 2))
+        self._kickable = first.model.kickable_distance + 0.2 if first is not None else 0.0
         self._views = [_empty_view(n, m, side_info) for _ in range(n)]
         self._cycle = 0
         self._play_on_cycles = 0
@@ -149,6 +150,7 @@ class DecentralisedPlay:
             missing = ~move.any(axis=1)
             move[missing] = views.position[missing]
         command.move, command.tackle, command.foul = move, tackle, foul
+        self.beliefs.kicked(command.kick, self._kickable)
         command.say = self._messages(views)
         self._count_conflicts(views)
         return command

@@ -47,6 +47,9 @@ class BeliefParams:
     """A sighting farther from the prediction than this share of its distance (plus 0.3 m)
     restarts the filter: more than the +-5 % distance quantisation and 1 degree direction
     steps explain, so the ball's motion changed."""
+    near: float = 5.0
+    """A ball sighting nearer than this (m) is taken as it is (its distance errs by at most
+    about 0.25 m), the velocity from the last two sightings."""
     gate_share: float = 0.15
     """Players seen without a number are matched to a believed player within this share of the
     reported distance..."""
@@ -85,7 +88,7 @@ class TeamBeliefs:
         predict_beliefs(self.ball, self.ball_vel, self.ball_age, self.mate_age, self.opp_age, self._ball_decay)
         see_ball(self.ball, self.ball_vel, self.ball_age, self._last_seen, self._last_seen_cycle, views.ball_seen,
                  views.ball, views.ball_distance, views.cycle, p.ball_gain, p.ball_velocity_gain,
-                 p.ball_noise_share, self._ball_decay, self._ball_speed_max)
+                 p.ball_noise_share, p.near, self._ball_decay, self._ball_speed_max)
         see_players(views.saw, views.seen_count, views.seen_position, views.seen_side, views.seen_number,
                     views.seen_distance, self.mate_pos, self.mate_age, self.opp_pos, self.opp_age, p.gate_share,
                     p.gate_floor)
@@ -119,6 +122,17 @@ class TeamBeliefs:
                     self.ball[i] = (msg.ball[0] + vx, msg.ball[1] + vy)
                     self.ball_vel[i] = (vx * self._ball_decay, vy * self._ball_decay)
                     self.ball_age[i] = age
+
+    def kicked(self, kick: np.ndarray, kickable: float) -> None:
+        """Each player's own kicks of this cycle (``kick`` (n, 2) m/cycle, team frame; zero rows
+        for none) change the velocity it believes the ball has, when it believes the ball is
+        within ``kickable`` m: a player knows what it just did."""
+        gap = self.ball - self.mate_pos[self._rows, self._rows]
+        mine = kick.any(axis=1) & (np.einsum("ij,ij->i", gap, gap) <= kickable * kickable)
+        if mine.any():
+            self.ball_vel[mine] += kick[mine]
+            speed = np.hypot(self.ball_vel[mine, 0], self.ball_vel[mine, 1])
+            self.ball_vel[mine] *= np.minimum(1.0, self._ball_speed_max / np.maximum(speed, 1e-9))[:, None]
 
     def world_message(self, i: int) -> str:
         """Player ``i``'s ball belief and own position as a 10-character message."""
