@@ -24,6 +24,7 @@ Bad input (a value out of range, not finite, a string that is not a message) is 
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 from agents.errors import AgentsError
@@ -237,6 +238,39 @@ def decode(text: str) -> WorldMessage | VoteMessage:
     if cycle >= CYCLE_MODULUS or rank >= math.factorial(n):
         raise MessageError(f"message {text!r} is not a valid vote message")
     return VoteMessage(assignment=_permutation(rank, n), cycle=cycle)
+
+
+
+class HeardMessages:
+    """Decodes the team-mates' messages a team's players heard, each distinct text once (a
+    bounded cache: the same message reaches several listeners), and lists those of one kind."""
+
+    def __init__(self, limit: int = 4096) -> None:
+        self._cache: dict[str, WorldMessage | VoteMessage | None] = {}
+        self._limit = limit
+
+    def decode(self, text: str) -> WorldMessage | VoteMessage | None:
+        """The message ``text`` encodes, or None if it is none of ours."""
+        found = self._cache.get(text, False)
+        if found is False:
+            if len(self._cache) >= self._limit:
+                self._cache.clear()
+            try:
+                found = decode(text)
+            except MessageError:
+                found = None
+            self._cache[text] = found
+        return found  # type: ignore[return-value]
+
+    def of_kind(self, heard_mates: tuple[tuple[tuple[int, str], ...], ...],
+                kind: type) -> Iterator[tuple[int, int, object]]:
+        """(listener, speaker, message) for every heard message of ``kind`` (WorldMessage or
+        VoteMessage); ``heard_mates[listener]`` holds (speaker, text) pairs."""
+        for listener, messages in enumerate(heard_mates):
+            for speaker, text in messages:
+                message = self.decode(text)
+                if isinstance(message, kind):
+                    yield listener, speaker, message
 
 
 assert _NX * _NY * _NV * _NV * _NAGE * _NX * _NY * KINDS <= _CAPACITY

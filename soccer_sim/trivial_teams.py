@@ -64,5 +64,6 @@ class ChaserTeam:
         ball = self._last_ball
         command.dash[:] = (ball - views.position) * self._DASH_GAIN
         to_goal = np.array([self._goal_x, 0.0]) - ball
-        command.kick[:] = to_goal * (self._kick_speed / np.maximum(np.hypot(to_goal[:, 0], to_goal[:, 1]), 1e-9))[:, None]
+        length = np.maximum(np.hypot(to_goal[:, 0], to_goal[:, 1]), 1e-9)
+        command.kick[:] = to_goal * (self._kick_speed / length)[:, None]
         return command

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from agents.messages import CYCLE_MODULUS, MessageError, VoteMessage, decode, encode
+from agents.messages import CYCLE_MODULUS, HeardMessages, VoteMessage, encode
 
 
 class VoteBook:
@@ -40,7 +40,7 @@ class VoteBook:
         """(n, n, k): ``votes[i, j]`` the last assignment player i heard from team-mate j."""
         self.vote_cycle = np.full((n, n), -(1 << 40), dtype=np.int64)
         """(n, n): the cycle each of those votes was computed for (very negative: none)."""
-        self._decoded: dict[str, VoteMessage | None] = {}
+        self._heard = HeardMessages()
         self._keys: list[list[tuple[int, ...]]] = [[tuple(range(k))] * n for _ in range(n)]
         self._cycles: list[list[int]] = [[-(1 << 40)] * n for _ in range(n)]
 
@@ -52,27 +52,16 @@ class VoteBook:
     def hear(self, cycle: int, heard_mates: tuple[tuple[tuple[int, str], ...], ...]) -> None:
         """Store the votes among the team-mates' messages each player heard at ``cycle`` (other
         messages are left alone; a vote of the wrong size is ignored)."""
-        decoded = self._decoded
-        if len(decoded) > 4096:
-            decoded.clear()
-        for i, messages in enumerate(heard_mates):
-            for speaker, text in messages:
-                vote = decoded.get(text, False)
-                if vote is False:
-                    try:
-                        found = decode(text)
-                    except MessageError:
-                        found = None
-                    vote = decoded[text] = found if isinstance(found, VoteMessage) else None
-                if vote is None or len(vote.assignment) != self.k or not 0 <= speaker < self.n:
-                    continue
-                # the cycle travels modulo CYCLE_MODULUS: the latest cycle <= now with that residue
-                computed = cycle - (cycle - vote.cycle) % CYCLE_MODULUS
-                if computed >= self._cycles[i][speaker]:
-                    self.votes[i, speaker] = vote.assignment
-                    self.vote_cycle[i, speaker] = computed
-                    self._keys[i][speaker] = vote.assignment
-                    self._cycles[i][speaker] = computed
+        for i, speaker, vote in self._heard.of_kind(heard_mates, VoteMessage):
+            if len(vote.assignment) != self.k or not 0 <= speaker < self.n:
+                continue
+            # the cycle travels modulo CYCLE_MODULUS: the latest cycle <= now with that residue
+            computed = cycle - (cycle - vote.cycle) % CYCLE_MODULUS
+            if computed >= self._cycles[i][speaker]:
+                self.votes[i, speaker] = vote.assignment
+                self.vote_cycle[i, speaker] = computed
+                self._keys[i][speaker] = vote.assignment
+                self._cycles[i][speaker] = computed
 
     def follow(self, cycle: int, own: np.ndarray) -> np.ndarray:
         """(n, k): the assignment each player follows, from its own proposal ``own[i]`` (n, k)

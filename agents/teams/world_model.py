@@ -28,7 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from agents.messages import MessageError, WorldMessage, decode, encode_world_clipped
+from agents.messages import HeardMessages, WorldMessage, encode_world_clipped
 from agents.teams.belief_kernels import AGE_NEVER, predict_beliefs, see_ball, see_players
 from soccer_sim.config import MatchConfig
 from soccer_sim.perception.views import PlayerViews
@@ -80,7 +80,7 @@ class TeamBeliefs:
         self._last_seen = np.zeros((n, 2))
         self._last_seen_cycle = np.full(n, -AGE_NEVER, dtype=np.int64)
         self._rows = np.arange(n)
-        self._decoded: dict[str, WorldMessage | None] = {}
+        self._heard = HeardMessages()
 
     def update(self, views: PlayerViews) -> None:
         """One cycle of every player's model from its own row of ``views`` (module docstring)."""
@@ -99,29 +99,18 @@ class TeamBeliefs:
 
     def _hear(self, heard: tuple[tuple[tuple[int, str], ...], ...]) -> None:
         """Fold the team-mates' world messages into each listener's model."""
-        decoded = self._decoded
-        if len(decoded) > 4096:
-            decoded.clear()
-        for i, messages in enumerate(heard):
-            for speaker, text in messages:
-                msg = decoded.get(text, False)
-                if msg is False:
-                    try:
-                        found = decode(text)
-                    except MessageError:
-                        found = None
-                    msg = decoded[text] = found if isinstance(found, WorldMessage) else None
-                if msg is None or not 0 <= speaker < self.n or speaker == i:
-                    continue
-                if self.mate_age[i, speaker] > 1:
-                    self.mate_pos[i, speaker] = msg.sender
-                    self.mate_age[i, speaker] = 1
-                age = msg.ball_age + 1
-                if age < self.ball_age[i]:
-                    vx, vy = msg.ball_velocity
-                    self.ball[i] = (msg.ball[0] + vx, msg.ball[1] + vy)
-                    self.ball_vel[i] = (vx * self._ball_decay, vy * self._ball_decay)
-                    self.ball_age[i] = age
+        for i, speaker, msg in self._heard.of_kind(heard, WorldMessage):
+            if not 0 <= speaker < self.n or speaker == i:
+                continue
+            if self.mate_age[i, speaker] > 1:
+                self.mate_pos[i, speaker] = msg.sender
+                self.mate_age[i, speaker] = 1
+            age = msg.ball_age + 1
+            if age < self.ball_age[i]:
+                vx, vy = msg.ball_velocity
+                self.ball[i] = (msg.ball[0] + vx, msg.ball[1] + vy)
+                self.ball_vel[i] = (vx * self._ball_decay, vy * self._ball_decay)
+                self.ball_age[i] = age
 
     def kicked(self, kick: np.ndarray, kickable: float) -> None:
         """Each player's own kicks of this cycle (``kick`` (n, 2) m/cycle, team frame; zero rows
