@@ -33,16 +33,25 @@ from pathlib import Path
 MANIFEST_PATH = Path(__file__).with_name("kernel_manifest.py")
 """The generated module :func:`write_manifest` writes."""
 
+PARTIAL_TEAM = "mmdr"
+"""The built-in team whose partially observed self-play records the partial-observation kernels."""
+
+PARTIAL_CYCLES = 600
+"""Cycles of that recording (a partially observed match of built-in teams is slow; every
+partial-only kernel runs from the first cycles)."""
+
 RECORD_CYCLES = 6000
 """Cycles of each recording match: a whole regulation match, so rare situations (set plays,
 shots on goal) call their kernels too."""
 
 
-def record_match(home: str, away: str, seed: int = 0, cycles: int | None = RECORD_CYCLES) -> list[dict]:
+def record_match(home: str, away: str, seed: int = 0, cycles: int | None = RECORD_CYCLES,
+                 observation: str = "full") -> list[dict]:
     """Play ``home`` v ``away`` in this process and return every kernel first called from
     Python during it: ``{"module", "function", "signature", "seconds"}`` dicts, in call order.
 
-    Kernels already called in this process before are not seen again; run it in a fresh one."""
+    Kernels already called in this process before are not seen again; run it in a fresh one.
+    ``observation``: the match's observation mode (``"full"`` or ``"partial"``)."""
     from numba.core.dispatcher import Dispatcher
 
     from experiments.configuration import match_config
@@ -66,7 +75,7 @@ def record_match(home: str, away: str, seed: int = 0, cycles: int | None = RECOR
     Dispatcher._compile_for_args = watched
     try:
         with tempfile.TemporaryDirectory(prefix="soccer-sim-record-") as folder:
-            run_match(home, away, seed=seed, config=match_config(cycles),
+            run_match(home, away, seed=seed, config=match_config(cycles, observation),
                       recorders=[RcgRecorder(Path(folder) / "match.rcg")])
     finally:
         Dispatcher._compile_for_args = original
@@ -82,7 +91,11 @@ def builtin_teams() -> list[str]:
 
 
 def record_teams(teams: list[str], cycles: int = RECORD_CYCLES) -> dict[str, list[dict]]:
-    """Each team's self-play recording, each in a fresh process, all sharing one new numba cache."""
+    """Each team's self-play recording, each in a fresh process, all sharing one new numba cache;
+    then, under :data:`~experiments.warmup.PARTIAL_ENTRY`, the kernels a partially observed
+    self-play of :data:`PARTIAL_TEAM` adds (over :data:`PARTIAL_CYCLES` cycles)."""
+    from experiments.warmup import PARTIAL_ENTRY
+
     recordings: dict[str, list[dict]] = {}
     with tempfile.TemporaryDirectory(prefix="soccer-sim-kernels-") as cache:
         env = dict(os.environ, NUMBA_CACHE_DIR=cache)
@@ -91,6 +104,11 @@ def record_teams(teams: list[str], cycles: int = RECORD_CYCLES) -> dict[str, lis
                                   "--cycles", str(cycles)], env=env, capture_output=True, text=True, check=True)
             recordings[team] = json.loads(out.stdout)
             print(f"{team}: {len(recordings[team])} kernels", file=sys.stderr)
+        out = subprocess.run([sys.executable, "-m", "experiments.kernel_record", "--team", PARTIAL_TEAM,
+                              "--cycles", str(PARTIAL_CYCLES), "--observation", "partial"], env=env,
+                             capture_output=True, text=True, check=True)
+        recordings[PARTIAL_ENTRY] = json.loads(out.stdout)
+        print(f"{PARTIAL_ENTRY}: {len(recordings[PARTIAL_ENTRY])} kernels", file=sys.stderr)
     return recordings
 
 
@@ -125,11 +143,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--team", help="record this team's self-play in this process and print it as JSON")
     parser.add_argument("--cycles", type=int, default=RECORD_CYCLES,
                         help=f"cycles per match (default: {RECORD_CYCLES})")
+    parser.add_argument("--observation", choices=("full", "partial"), default="full",
+                        help="with --team: the observation mode of the recorded match (default: full)")
     parser.add_argument("--write", action="store_true",
                         help=f"record every built-in team and rewrite {MANIFEST_PATH.name}")
     args = parser.parse_args(argv)
     if args.team:
-        print(json.dumps(record_match(args.team, args.team, cycles=args.cycles)))
+        print(json.dumps(record_match(args.team, args.team, cycles=args.cycles, observation=args.observation)))
         return 0
     if not args.write:
         parser.error("give --team NAME or --write")

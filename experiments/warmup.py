@@ -30,6 +30,10 @@ from dataclasses import dataclass
 from typing import TextIO
 
 COMPILING_LINE = "compiling kernels (first run only)"
+
+PARTIAL_ENTRY = "(partial observation)"
+"""The manifest's entry for the kernels a partially observed match adds (recorded from a
+built-in team's self-play under partial observation)."""
 """The line printed to stderr before a cold cache is filled."""
 
 
@@ -62,18 +66,33 @@ class WarmUp:
     seconds: float
 
 
-def kernels_for(teams: Iterable[str]) -> tuple[Kernel, ...]:
+def kernels_for(teams: Iterable[str], observation: str = "full") -> tuple[Kernel, ...]:
     """The kernels the matches of ``teams`` call, from the manifest: the simulator's own (those
-    every built-in team's matches call), every registered team's, a mixed team's members'. A team
-    the manifest does not know (a ``package.module:Attribute`` path) adds none: its own kernels
+    every built-in team's matches call), every registered team's, a mixed team's members'; under
+    ``observation="partial"`` also those of a partially observed match (the see model, the
+    players' world models and votes: the manifest's entry :data:`PARTIAL_ENTRY`). A team the
+    manifest does not know (a ``package.module:Attribute`` path) adds none: its own kernels
     compile on first use."""
     from experiments.kernel_manifest import KERNELS, TEAMS
 
-    indices: set[int] = set.intersection(*(set(ids) for ids in TEAMS.values()))
+    teams_only = [ids for name, ids in TEAMS.items() if name != PARTIAL_ENTRY]
+    indices: set[int] = set.intersection(*(set(ids) for ids in teams_only))
     for team in teams:
         for name in _member_names(team):
             indices.update(TEAMS.get(name, ()))
+    if observation == "partial":
+        indices.update(TEAMS.get(PARTIAL_ENTRY, ()))
     return tuple(Kernel(*KERNELS[i]) for i in sorted(indices))
+
+
+def observation_of(specs: Iterable) -> str:
+    """``"partial"`` when any of the match ``specs`` plays under partial observation, else
+    ``"full"`` (a spec of full observation has no configuration of its own, or a full one)."""
+    for spec in specs:
+        configuration = getattr(spec, "configuration", None)
+        if configuration is not None and configuration.observation.partial:
+            return "partial"
+    return "full"
 
 
 def _member_names(team: str) -> list[str]:
@@ -82,10 +101,11 @@ def _member_names(team: str) -> list[str]:
     return sorted(set(member_names(team))) if is_mixed_name(team) else [team]
 
 
-def warm_kernels(teams: Iterable[str], processes: int | None = None, stream: TextIO | None = None) -> WarmUp:
-    """Make sure every kernel the matches of ``teams`` need is in the on-disk cache (see
-    :func:`ensure_cached`)."""
-    return ensure_cached(kernels_for(teams), processes, stream)
+def warm_kernels(teams: Iterable[str], processes: int | None = None, stream: TextIO | None = None,
+                 observation: str = "full") -> WarmUp:
+    """Make sure every kernel the matches of ``teams`` under ``observation`` need is in the
+    on-disk cache (see :func:`ensure_cached`)."""
+    return ensure_cached(kernels_for(teams, observation), processes, stream)
 
 
 def ensure_cached(kernels: Sequence[Kernel], processes: int | None = None, stream: TextIO | None = None) -> WarmUp:

@@ -88,7 +88,8 @@ def run(args: argparse.Namespace) -> int:
                 rcg_recording(getattr(args, "rcg", None), "--rcg") as logs:
             recorders = [*replays, *logs]
             check_observation([args.home, args.away], config.observation.mode)
-            warm_kernels((args.home, args.away))  # a cold cache is filled here, not on the match's clock
+            # a cold cache is filled here, not on the match's clock
+            warm_kernels((args.home, args.away), observation=config.observation.mode)
             start = time.perf_counter()
             alarm = arm_timer(timeout)  # the tournament's timer: MatchTimeout where the match hangs
             try:

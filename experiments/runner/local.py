@@ -25,7 +25,7 @@ from typing import Any
 from experiments.results.record import FORFEIT_NONE, MatchRecord
 from experiments.runner.spec import MatchSpec
 from experiments.runner.worker import failed_record, play_spec
-from experiments.warmup import Kernel, load_kernels, warm_kernels
+from experiments.warmup import Kernel, load_kernels, observation_of, warm_kernels
 
 KILL_GRACE = 10.0
 """Seconds a worker may overrun ``--match-timeout`` before it is killed (its own timer should
@@ -86,8 +86,9 @@ class LocalPool:
     def warm_up(self, specs: Iterable[MatchSpec]) -> None:
         """Compile the kernels the teams of ``specs`` need into the on-disk cache (on this pool's
         number of processes, only if the cache is cold); workers started later load them."""
+        specs = list(specs)
         teams = sorted({name for spec in specs for name in spec.team_names})
-        self._kernels = warm_kernels(teams, processes=self.size).kernels
+        self._kernels = warm_kernels(teams, processes=self.size, observation=observation_of(specs)).kernels
 
     def _start_worker(self) -> _Worker:
         parent_end, child_end = self._context.Pipe()

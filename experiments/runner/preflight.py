@@ -108,7 +108,7 @@ def check_node(expected: Expected) -> NodeCheck:
     from experiments.warmup import warm_kernels
 
     # One process: helper processes spawned from inside a Ray worker would re-run its main module.
-    warm_kernels(expected.teams, processes=1, stream=io.StringIO())
+    warm_kernels(expected.teams, processes=1, stream=io.StringIO(), observation=expected.config().observation.mode)
     return result(None)
 
 

@@ -180,9 +180,9 @@ class RayPool:
         cycles, configuration, scenario = setting     # one per run (see run_setting)
         self._expected = Expected.of_driver(version, config_hash, cycles, teams, configuration, scenario)
         if self._local:
-            from experiments.warmup import warm_kernels
+            from experiments.warmup import observation_of, warm_kernels
 
-            warm_kernels(teams, processes=self.size)
+            warm_kernels(teams, processes=self.size, observation=observation_of(specs))
         self._in_flight: dict[object, MatchTask] = {}
         self._pending: deque[tuple[MatchSpec, int, frozenset[str]]] = deque()
         self._poll()

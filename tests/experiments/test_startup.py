@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from experiments.warmup import COMPILING_LINE, Kernel
+from experiments.warmup import COMPILING_LINE, PARTIAL_ENTRY, Kernel
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -112,7 +112,7 @@ def test_manifest_names_existing_kernels_with_the_right_number_of_arguments() ->
     from experiments.kernel_record import builtin_teams
     from experiments.warmup import dispatcher_of, signature_of
 
-    assert sorted(TEAMS) == sorted(builtin_teams())
+    assert sorted(TEAMS) == sorted([*builtin_teams(), PARTIAL_ENTRY])
     assert sorted({i for ids in TEAMS.values() for i in ids}) == list(range(len(KERNELS)))
     for entry in KERNELS:
         kernel = Kernel(*entry)
@@ -131,8 +131,22 @@ def test_kernels_for_takes_the_union_of_the_teams_and_of_mixed_members() -> None
     assert set(kernels_for(["mmd+msd2", "press-433"])) == of("mmd+msd2", "press-433")
     assert set(kernels_for(["mixed(static|greedy|static)", "idle"])) == of("static", "greedy", "idle")
     engine = set(kernels_for(["examples.my_team:MyTeam"]))  # the simulator's kernels only
-    assert engine and all(engine <= of(team) for team in TEAMS)
+    assert engine and all(engine <= of(team) for team in TEAMS if team != PARTIAL_ENTRY)
     assert {k.module.split(".")[0] for k in engine} == {"soccer_sim"}
+
+
+def test_partial_observation_adds_the_see_model_and_the_world_models() -> None:
+    from experiments.kernel_manifest import KERNELS, TEAMS
+    from experiments.warmup import kernels_for, observation_of
+    from experiments.runner.spec import paired_specs
+
+    full, partial = set(kernels_for(["mmdr"])), set(kernels_for(["mmdr"], observation="partial"))
+    added = {k.name for k in partial - full}
+    assert "soccer_sim.perception.kernels:perceive" in added
+    assert "agents.teams.belief_kernels:see_ball" in added
+    assert partial - full == {Kernel(*KERNELS[i]) for i in TEAMS[PARTIAL_ENTRY]} - full
+    assert observation_of(paired_specs("mmdr", "chaser", 2, 0, 100, "partial")) == "partial"
+    assert observation_of(paired_specs("mmdr", "chaser", 2, 0, 100)) == "full"
 
 
 def test_help_imports_no_numpy_numba_rich_or_simulator(tmp_path: Path) -> None:
@@ -188,7 +202,7 @@ def test_the_runner_warms_up_before_the_progress_clock_and_the_first_worker(monk
     class Stop(Exception):
         pass
 
-    def warm(teams, processes=None):
+    def warm(teams, processes=None, observation="full"):
         order.append(("warm", tuple(teams), processes))
         return WarmUp((kernel,), 1, processes, 0.0)
 
