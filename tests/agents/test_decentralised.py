@@ -69,3 +69,23 @@ def test_a_decentralised_match_plays_reports_conflicts_and_is_deterministic():
     assert home.kicks > 0 and home.distance_run > 1000.0
     reported = home.reported
     assert 0.0 <= reported["role_conflict_share"] <= 1.0 and "believed_unfilled_share" in reported
+
+
+_SCRIPT = """
+from soccer_sim import MatchConfig, run_match
+from soccer_sim.perception.config import ObservationConfig
+config = MatchConfig(observation=ObservationConfig("partial"), max_cycles=150)
+result = run_match("mmd+msd2", "counter-442", seed=6, config=config)
+print(result.state.pos.tobytes().hex())
+"""
+
+
+@pytest.mark.slow  # the default suite checks a partial match across processes with chasers
+def test_a_decentralised_match_is_the_same_in_another_process():
+    import subprocess
+    import sys
+
+    config = MatchConfig(observation=ObservationConfig("partial"), max_cycles=150)
+    here = run_match("mmd+msd2", "counter-442", seed=6, config=config)
+    out = subprocess.run([sys.executable, "-c", _SCRIPT], capture_output=True, text=True, check=True).stdout.split()
+    assert out[-1] == here.state.pos.tobytes().hex()
