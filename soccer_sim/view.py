@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from soccer_sim.kernels import mirror_bodies, store_command
-from soccer_sim.perception.audio import AudioParams, check_message
+from soccer_sim.perception.audio import AudioParams, check_team_messages
 from soccer_sim.state import NO_PLAYER, StateError, WorldState
 from soccer_sim.team import TeamCommand, TeamError, TeamView
 
@@ -75,6 +75,7 @@ class TeamFrame:
         self.said: tuple[str | None, ...] | None = None
         """The last command's messages (one per player, None: silent), or None if nobody spoke."""
         self._audio = audio
+        self._allowed = frozenset(audio.characters)
         self._commands = commands[self.rows]
         self._dash = self._commands[:, 0:2]
         self._kick = self._commands[:, 2:4]
@@ -136,16 +137,12 @@ class TeamFrame:
 
     def _read_say(self, said: object) -> tuple[str | None, ...]:
         """The messages of ``command.say`` (one per player, str or None), each checked against
-        the channel's rules (:func:`~soccer_sim.perception.audio.check_message`)."""
+        the channel's rules (:func:`~soccer_sim.perception.audio.check_team_messages`)."""
         if isinstance(said, (str, bytes)) or not hasattr(said, "__len__") or not hasattr(said, "__iter__"):
             raise TeamError(self.name, f"command.say must be a sequence of {self.n} messages (str or None), "
                                        f"got {type(said).__name__}")
         messages = tuple(said)  # type: ignore[arg-type]
-        if len(messages) != self.n:
-            raise TeamError(self.name, f"command.say has {len(messages)} messages for {self.n} players")
-        for i, message in enumerate(messages):
-            if message is not None:
-                check_message(message, self._audio, self.name, i)
+        check_team_messages(messages, self.n, self._audio, self.name, self._allowed)
         return messages
 
     def _read_tackle(self, tackle: object, foul: object, sign: int) -> bool:

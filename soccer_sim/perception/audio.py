@@ -107,6 +107,20 @@ def check_message(message: object, params: AudioParams = AudioParams(), team_nam
                                    f"{''.join(bad)!r} (allowed: {params.characters!r})", player)
 
 
+def check_team_messages(messages: Sequence[str | None], size: int, params: AudioParams = AudioParams(),
+                        team_name: str = "?", allowed: frozenset[str] | None = None) -> None:
+    """Raise :class:`TeamError` unless ``messages`` holds ``size`` entries, each None or a
+    message :func:`check_message` accepts (the usual good message passes a fast test first;
+    ``allowed``: ``frozenset(params.characters)``, given by callers that check every cycle)."""
+    if len(messages) != size:
+        raise TeamError(team_name, f"{len(messages)} say messages for {size} players")
+    limit = params.say_msg_size
+    allowed = frozenset(params.characters) if allowed is None else allowed
+    for i, msg in enumerate(messages):
+        if msg is not None and not (type(msg) is str and 0 < len(msg) <= limit and allowed.issuperset(msg)):
+            check_message(msg, params, team_name, i)
+
+
 @dataclass(frozen=True)
 class Heard:
     """What every player hears at ``cycle`` (messages said at ``cycle - 1``). Players are
@@ -193,16 +207,9 @@ class AudioChannel:
         if len(messages) != 2:
             raise ValueError(f"AudioChannel.say: messages must hold one sequence per team (2), got {len(messages)}")
         flat: list[str | None] = []
-        size_limit, allowed = self.params.say_msg_size, self._allowed
         for k, (team_msgs, size) in enumerate(zip(messages, self.team_sizes)):
-            if len(team_msgs) != size:
-                raise TeamError(self.team_names[k], f"{len(team_msgs)} say messages for {size} players")
-            for i, msg in enumerate(team_msgs):
-                # fast path for the usual good message; check_message says what is wrong otherwise
-                if msg is not None and not (type(msg) is str and 0 < len(msg) <= size_limit
-                                            and allowed.issuperset(msg)):
-                    check_message(msg, self.params, self.team_names[k], i)
-                flat.append(msg)
+            check_team_messages(team_msgs, size, self.params, self.team_names[k], self._allowed)
+            flat.extend(team_msgs)
         pos = np.asarray(positions, dtype=np.float64)
         if pos.shape != (self.players, 2) or not np.all(np.isfinite(pos)):
             raise ValueError(f"AudioChannel.say: positions must be finite, shape ({self.players}, 2); got {pos.shape}")

@@ -172,10 +172,10 @@ def test_say_must_hold_one_message_per_player():
             command.say = ["hi"]
             return command
 
-    with pytest.raises(TeamError, match="1 messages for 11 players"):
+    with pytest.raises(TeamError, match="1 say messages for 11 players"):
         run_match(WrongLength(), "chaser", seed=0, config=partial_config(3))
     # under full observation a bad message is refused too (it reaches nobody)
-    with pytest.raises(TeamError, match="1 messages for 11 players"):
+    with pytest.raises(TeamError, match="1 say messages for 11 players"):
         run_match(WrongLength(), "chaser", seed=0, config=MatchConfig(max_cycles=3))
 
 
