@@ -36,7 +36,7 @@ from soccer_sim.perception.kernels import (ANONYMOUS, EPS, FULL, TEAM_ONLY, UNSE
 from soccer_sim.perception.params import SeeParams
 
 __all__ = ["ANONYMOUS", "EPS", "FULL", "TEAM_ONLY", "UNSEEN", "Sightings", "body_directions", "quantized_distance",
-           "see", "wrap_degrees"]
+           "see"]
 
 
 
@@ -49,11 +49,6 @@ def quantized_distance(distance: np.ndarray, log_step: float, final_step: float 
     out = np.empty_like(flat)
     reported_distances(flat, float(log_step), float(final_step), out)
     return out.reshape(d.shape)
-
-
-def wrap_degrees(angle: np.ndarray) -> np.ndarray:
-    """Angles (degrees) folded into [-180, 180)."""
-    return (np.asarray(angle, dtype=np.float64) + 180.0) % 360.0 - 180.0
 
 
 def body_directions(positions: np.ndarray, velocities: np.ndarray, ball: np.ndarray,
