@@ -24,19 +24,24 @@ Bad input (a value out of range, not finite, a string that is not a message) is 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 
+import numpy as np
+
 from agents.errors import AgentsError
+from agents import message_kernels
+from agents.message_kernels import (decode_digits, grid_index, number_digits, vote_number,
+                                    world_number)
 from soccer_sim.perception.audio import SAY_CHARACTERS
 
 ALPHABET: str = "".join(c for c in SAY_CHARACTERS if c not in " ()")
 """The 71 characters a message uses: rcssserver's ``say`` set without space and parentheses."""
 MESSAGE_LENGTH = 10
 """Characters of every message (rcssserver's ``say_msg_size``)."""
-KINDS = 2
+KINDS = message_kernels.KINDS
 """Kinds of message: :data:`WORLD` and :data:`VOTE`."""
-WORLD, VOTE = 0, 1
+WORLD, VOTE = message_kernels.WORLD, message_kernels.VOTE
 POSITION_STEP = 0.1
 """Resolution of positions (m)."""
 X_RANGE = 64.0
@@ -49,7 +54,7 @@ V_RANGE = 3.0
 """Velocity components must lie in [-V_RANGE, V_RANGE] m/cycle (``ball_speed_max``)."""
 MAX_AGE = 13
 """Ball ages (cycles since the sender saw the ball) above this are sent as this."""
-MAX_PLAYERS = 11
+MAX_PLAYERS = message_kernels.MAX_PLAYERS
 """The most players a vote covers."""
 CYCLE_MODULUS = 1 << 20
 """A vote's cycle is sent modulo this (1 048 576 cycles, far beyond a match)."""
@@ -62,6 +67,10 @@ _PER_M = round(1 / POSITION_STEP)        # grid points per m
 _PER_V = round(1 / VELOCITY_STEP)        # grid points per m/cycle
 _CAPACITY = len(ALPHABET) ** MESSAGE_LENGTH
 _CODE = {c: i for i, c in enumerate(ALPHABET)}
+ALPHABET_BYTES = np.frombuffer(ALPHABET.encode("ascii"), dtype=np.uint8)
+"""The alphabet's characters as bytes, indexed by digit."""
+_DIGIT_OF_BYTE = np.full(256, -1, dtype=np.int64)
+_DIGIT_OF_BYTE[ALPHABET_BYTES] = np.arange(len(ALPHABET))
 
 
 class MessageError(AgentsError, ValueError):
@@ -116,12 +125,9 @@ def _pair(name: str, value: object) -> tuple[float, float]:
 
 def _to_text(number: int) -> str:
     """``number`` (0 <= number < 71 ** 10) as exactly MESSAGE_LENGTH base-71 characters."""
-    base = len(ALPHABET)
-    chars = []
-    for _ in range(MESSAGE_LENGTH):
-        number, digit = divmod(number, base)
-        chars.append(ALPHABET[digit])
-    return "".join(reversed(chars))
+    digits = np.empty(MESSAGE_LENGTH, dtype=np.int64)
+    number_digits(number, digits)
+    return ALPHABET_BYTES[digits].tobytes().decode("ascii")
 
 
 def encode_world(msg: WorldMessage) -> str:
@@ -145,40 +151,15 @@ def encode_world_clipped(ball: tuple[float, float], ball_velocity: tuple[float, 
     pitch with its margin, the velocity to ``V_RANGE``, the age to ``MAX_AGE``): the fast way a
     team says what it believes, which may lie a little outside the ranges (a ball behind the
     goal line, a sender beyond the margin)."""
-    def grid(value: float, half_range: float, per_unit: int) -> int:
-        return round((min(max(value, -half_range), half_range) + half_range) * per_unit)
-
-    return _world_text(grid(ball[0], X_RANGE, _PER_M), grid(ball[1], Y_RANGE, _PER_M),
-                       grid(ball_velocity[0], V_RANGE, _PER_V), grid(ball_velocity[1], V_RANGE, _PER_V),
-                       min(max(int(ball_age), 0), MAX_AGE), grid(sender[0], X_RANGE, _PER_M),
-                       grid(sender[1], Y_RANGE, _PER_M))
+    return _world_text(grid_index(ball[0], X_RANGE, _PER_M), grid_index(ball[1], Y_RANGE, _PER_M),
+                       grid_index(ball_velocity[0], V_RANGE, _PER_V), grid_index(ball_velocity[1], V_RANGE, _PER_V),
+                       min(max(int(ball_age), 0), MAX_AGE), grid_index(sender[0], X_RANGE, _PER_M),
+                       grid_index(sender[1], Y_RANGE, _PER_M))
 
 
 def _world_text(bx: int, by: int, vx: int, vy: int, age: int, sx: int, sy: int) -> str:
     """The world message of grid indices (the encoder's digits, most significant first)."""
-    payload = (((((bx * _NY + by) * _NV + vx) * _NV + vy) * _NAGE + age) * _NX + sx) * _NY + sy
-    return _to_text(payload * KINDS + WORLD)
-
-
-def _permutation_rank(assignment: tuple[int, ...]) -> int:
-    """The Lehmer-code rank of a permutation of ``0 .. n - 1`` (0 .. n! - 1)."""
-    rank = 0
-    left = list(range(len(assignment)))
-    for value in assignment:
-        i = left.index(value)
-        rank = rank * len(left) + i
-        left.pop(i)
-    return rank
-
-
-def _permutation(rank: int, n: int) -> tuple[int, ...]:
-    """The permutation of ``0 .. n - 1`` with Lehmer-code ``rank`` (inverse of the above)."""
-    digits = []
-    for size in range(1, n + 1):
-        rank, d = divmod(rank, size)
-        digits.append(d)
-    left = list(range(n))
-    return tuple(left.pop(d) for d in reversed(digits))
+    return _to_text(world_number(bx, by, vx, vy, age, sx, sy, _NX, _NY, _NV, _NAGE))
 
 
 def encode_vote(msg: VoteMessage) -> str:
@@ -193,9 +174,7 @@ def encode_vote(msg: VoteMessage) -> str:
         raise MessageError(f"assignment must be a permutation of 0..n-1 with n <= {MAX_PLAYERS}, got {assignment}")
     if isinstance(msg.cycle, bool) or not isinstance(msg.cycle, int) or msg.cycle < 0:
         raise MessageError(f"cycle must be a whole number >= 0, got {msg.cycle!r}")
-    payload = ((msg.cycle % CYCLE_MODULUS) * (MAX_PLAYERS + 1) + n) * math.factorial(MAX_PLAYERS) \
-        + _permutation_rank(assignment)
-    return _to_text(payload * KINDS + VOTE)
+    return _to_text(vote_number(np.array(assignment, dtype=np.int64), msg.cycle, CYCLE_MODULUS))
 
 
 def encode(msg: WorldMessage | VoteMessage) -> str:
@@ -212,33 +191,78 @@ def decode(text: str) -> WorldMessage | VoteMessage:
     a character outside :data:`ALPHABET`, or digits no encoder produces)."""
     if not isinstance(text, str) or len(text) != MESSAGE_LENGTH:
         raise MessageError(f"a message is a str of {MESSAGE_LENGTH} characters, got {text!r}")
-    number = 0
     for c in text:
         if c not in _CODE:
             raise MessageError(f"message {text!r} has a character outside the alphabet: {c!r}")
-        number = number * len(ALPHABET) + _CODE[c]
-    payload, kind = divmod(number, KINDS)
-    if kind == WORLD:
-        digits = []
-        for size in (_NY, _NX, _NAGE, _NV, _NV, _NY):  # the encoder's digits, last first
-            payload, digit = divmod(payload, size)
-            digits.append(digit)
-        sy, sx, age, vy, vx, by = digits
-        bx = payload
-        if bx >= _NX:
-            raise MessageError(f"message {text!r} is not a valid world message")
+    decoded = decode_texts([text])
+    if decoded.kind[0] == WORLD:
+        return decoded.world_message(0)
+    if decoded.kind[0] == VOTE:
+        return decoded.vote_message(0)
+    raise MessageError(f"message {text!r} is not a valid {'world' if decoded.number_kind[0] == WORLD else 'vote'} "
+                       "message")
+
+
+class Decoded:
+    """Messages decoded in one compiled call (:func:`decode_texts`): per message its kind
+    (:data:`WORLD`, :data:`VOTE`, or -1 for none of ours), a world message's values and a
+    vote's assignment and cycle, as arrays."""
+
+    def __init__(self, count: int) -> None:
+        self.kind = np.full(count, -1, dtype=np.int64)
+        """(p,) WORLD, VOTE or -1."""
+        self.number_kind = np.full(count, -1, dtype=np.int64)
+        """(p,) the kind digit of a message that is none of ours (-1: not even a number)."""
+        self.grid = np.zeros((count, 7), dtype=np.int64)
+        self.vote = np.zeros((count, MAX_PLAYERS), dtype=np.int64)
+        """(p, 11) a vote's assignment (its first ``vote_size`` entries)."""
+        self.vote_size = np.zeros(count, dtype=np.int64)
+        self.vote_cycle = np.zeros(count, dtype=np.int64)
+        """(p,) a vote's cycle modulo CYCLE_MODULUS."""
+
+    @property
+    def world(self) -> np.ndarray:
+        """(p, 7) world messages' values: ball x, y (m), velocity x, y (m/cycle), age
+        (cycles), sender x, y (m)."""
+        g = self.grid.astype(np.float64)
+        g[:, [0, 5]] = (g[:, [0, 5]] - _NX // 2) / _PER_M
+        g[:, [1, 6]] = (g[:, [1, 6]] - _NY // 2) / _PER_M
+        g[:, [2, 3]] = (g[:, [2, 3]] - _NV // 2) / _PER_V
+        return g
+
+    def world_message(self, p: int) -> WorldMessage:
+        """Message ``p`` as a :class:`WorldMessage` (it must be one)."""
+        bx, by, vx, vy, age, sx, sy = self.grid[p].tolist()
+
         def pos(ix: int, iy: int) -> tuple[float, float]:
             """Grid indices to metres (a division, so 0.1 m steps come out as 52.5, not 52.500000000000014)."""
             return (ix - _NX // 2) / _PER_M, (iy - _NY // 2) / _PER_M
 
         return WorldMessage(ball=pos(bx, by), ball_velocity=((vx - _NV // 2) / _PER_V, (vy - _NV // 2) / _PER_V),
                             ball_age=age, sender=pos(sx, sy))
-    payload, rank = divmod(payload, math.factorial(MAX_PLAYERS))
-    cycle, n = divmod(payload, MAX_PLAYERS + 1)
-    if cycle >= CYCLE_MODULUS or rank >= math.factorial(n):
-        raise MessageError(f"message {text!r} is not a valid vote message")
-    return VoteMessage(assignment=_permutation(rank, n), cycle=cycle)
 
+    def vote_message(self, p: int) -> VoteMessage:
+        """Message ``p`` as a :class:`VoteMessage` (it must be one)."""
+        return VoteMessage(assignment=tuple(self.vote[p, : self.vote_size[p]].tolist()),
+                           cycle=int(self.vote_cycle[p]))
+
+
+def decode_texts(texts: Sequence[str]) -> Decoded:
+    """Decode many message texts in one compiled call; a text that is not a message (wrong
+    length, not ASCII, a character outside the alphabet, digits no encoder makes) gets kind -1."""
+    decoded = Decoded(len(texts))
+    if not texts:
+        return decoded
+    digits = np.full((len(texts), MESSAGE_LENGTH), -1, dtype=np.int64)
+    fine = [p for p, t in enumerate(texts) if len(t) == MESSAGE_LENGTH and t.isascii()]
+    if fine:
+        raw = np.frombuffer("".join(texts[p] for p in fine).encode("ascii"), dtype=np.uint8)
+        digits[fine] = _DIGIT_OF_BYTE[raw].reshape(len(fine), MESSAGE_LENGTH)
+    decode_digits(digits, _NX, _NY, _NV, _NAGE, CYCLE_MODULUS, decoded.kind, decoded.grid, decoded.vote,
+                  decoded.vote_size, decoded.vote_cycle)
+    last = digits[:, -1]
+    decoded.number_kind = np.where((digits >= 0).all(axis=1), last % KINDS, -1)
+    return decoded
 
 
 class HeardMessages:
@@ -273,5 +297,6 @@ class HeardMessages:
                     yield listener, speaker, message
 
 
+assert len(ALPHABET) == message_kernels.BASE and MESSAGE_LENGTH == message_kernels.LENGTH
 assert _NX * _NY * _NV * _NV * _NAGE * _NX * _NY * KINDS <= _CAPACITY
 assert CYCLE_MODULUS * (MAX_PLAYERS + 1) * math.factorial(MAX_PLAYERS) * KINDS <= _CAPACITY

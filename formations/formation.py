@@ -133,6 +133,11 @@ class Formation:
         values = self._interpolator.values_many(points)
         return values.reshape(len(points), self._n_roles, 2)
 
+    def positions_each(self, balls: np.ndarray, out: np.ndarray) -> None:
+        """:meth:`positions` for each of ``balls`` (k, 2) (finite, float64) into ``out``
+        (k, roles, 2), C-contiguous, in one compiled call."""
+        self._interpolator.values_each(balls, out.reshape(len(balls), self._n_roles * 2))
+
     def nearest_covered_ball(self, ball_xy: ArrayLike) -> tuple[float, float]:
         """The ball position actually interpolated: *ball_xy* itself inside the
         samples' convex hull, else its projection onto the hull boundary."""

@@ -195,6 +195,15 @@ class TriangleInterpolator:
                       self._edge_inv_length2, self._edge_values, self._edge_value_deltas, out)
         return out
 
+    def values_each(self, points: np.ndarray, out: np.ndarray) -> None:
+        """:meth:`value` at each of ``points`` (k, 2) into ``out`` (k, m), in one compiled call
+        (the same numbers as k calls of :meth:`value`, for a caller that queries a few points a
+        cycle); the points must be finite."""
+        nx, ny = self._grid_shape
+        _values_kernel(points, self._grid_table, nx, ny, self._cell_offsets, self._cell_triangles, self._bary_table,
+                       self._affine, self._edge_offsets, self._cell_edge_items, self._edge_starts, self._edge_deltas,
+                       self._edge_inv_length2, self._edge_values, self._edge_value_deltas, out)
+
     def values_many(self, points: np.ndarray) -> np.ndarray:
         """Interpolated values (k, m) at points (k, 2).
 
@@ -374,6 +383,18 @@ def _value_kernel(x: float, y: float, grid: np.ndarray, nx: int, ny: int, cell_o
     edge, s = _nearest_edge_kernel(x, y, cell, edge_offsets, cell_edges, starts, deltas, inv_length2)
     for i in range(out.shape[0]):
         out[i] = edge_values[edge, i] + s * edge_value_deltas[edge, i]
+
+
+@njit(cache=True, nogil=True)
+def _values_kernel(points: np.ndarray, grid: np.ndarray, nx: int, ny: int, cell_offsets: np.ndarray,
+                   cell_triangles: np.ndarray, bary: np.ndarray, affine: np.ndarray, edge_offsets: np.ndarray,
+                   cell_edges: np.ndarray, starts: np.ndarray, deltas: np.ndarray, inv_length2: np.ndarray,
+                   edge_values: np.ndarray, edge_value_deltas: np.ndarray,
+                   out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """:func:`_value_kernel` at each row of ``points`` into the same row of ``out``."""
+    for p in range(points.shape[0]):
+        _value_kernel(points[p, 0], points[p, 1], grid, nx, ny, cell_offsets, cell_triangles, bary, affine,
+                      edge_offsets, cell_edges, starts, deltas, inv_length2, edge_values, edge_value_deltas, out[p])
 
 
 def _affine_maps(simplices: np.ndarray, transform: np.ndarray, values: np.ndarray) -> np.ndarray:

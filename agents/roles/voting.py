@@ -21,8 +21,13 @@ believe they hold, and roles nobody holds.
 from __future__ import annotations
 
 import numpy as np
+from numba import njit
 
-from agents.messages import CYCLE_MODULUS, HeardMessages, VoteMessage, encode
+from agents.messages import CYCLE_MODULUS, VOTE, VoteMessage, encode
+from agents.team_messages import HeardBatch, heard_batch, vote_texts
+
+NO_VOTE = -(1 << 40)
+"""The cycle of a vote never heard."""
 
 
 class VoteBook:
@@ -36,61 +41,123 @@ class VoteBook:
         if horizon < 0:
             raise ValueError(f"VoteBook: horizon must be >= 0 cycles, got {horizon}")
         self.n, self.k, self.horizon = n, k, horizon
-        self.votes = np.zeros((n, n, k), dtype=np.int64)
+        self.votes = np.tile(np.arange(k, dtype=np.int64), (n, n, 1))
         """(n, n, k): ``votes[i, j]`` the last assignment player i heard from team-mate j."""
-        self.vote_cycle = np.full((n, n), -(1 << 40), dtype=np.int64)
-        """(n, n): the cycle each of those votes was computed for (very negative: none)."""
-        self._heard = HeardMessages()
-        self._keys: list[list[tuple[int, ...]]] = [[tuple(range(k))] * n for _ in range(n)]
-        self._cycles: list[list[int]] = [[-(1 << 40)] * n for _ in range(n)]
+        self.vote_cycle = np.full((n, n), NO_VOTE, dtype=np.int64)
+        """(n, n): the cycle each of those votes was computed for (NO_VOTE: none)."""
 
     @staticmethod
     def message(assignment: np.ndarray, cycle: int) -> str:
         """A vote for ``assignment`` (``assignment[j]`` the role of player j) computed at ``cycle``."""
         return encode(VoteMessage(assignment=tuple(int(r) for r in assignment), cycle=int(cycle)))
 
-    def hear(self, cycle: int, heard_mates: tuple[tuple[tuple[int, str], ...], ...]) -> None:
-        """Store the votes among the team-mates' messages each player heard at ``cycle`` (other
-        messages are left alone; a vote of the wrong size is ignored)."""
-        for i, speaker, vote in self._heard.of_kind(heard_mates, VoteMessage):
-            if len(vote.assignment) != self.k or not 0 <= speaker < self.n:
-                continue
-            # the cycle travels modulo CYCLE_MODULUS: the latest cycle <= now with that residue
-            computed = cycle - (cycle - vote.cycle) % CYCLE_MODULUS
-            if computed >= self._cycles[i][speaker]:
-                self.votes[i, speaker] = vote.assignment
-                self.vote_cycle[i, speaker] = computed
-                self._keys[i][speaker] = vote.assignment
-                self._cycles[i][speaker] = computed
+    @staticmethod
+    def messages(assignments: np.ndarray, cycle: int, present: np.ndarray) -> list[str | None]:
+        """Each present player's vote for its row of ``assignments`` (n, k) computed at ``cycle``."""
+        return vote_texts(np.ascontiguousarray(assignments, dtype=np.int64), int(cycle), present)
+
+    def hear(self, cycle: int, heard: HeardBatch | tuple) -> None:
+        """Store the votes among the team-mates' messages each player heard at ``cycle``
+        (``heard``: a :class:`~agents.team_messages.HeardBatch`, or per listener its
+        (team-mate index, text) pairs); other messages are left alone, and a vote of the
+        wrong size or from no team-mate is ignored."""
+        if not isinstance(heard, HeardBatch):
+            heard = heard_batch(heard)
+        if heard.listener.size:
+            d = heard.decoded
+            _store_votes(heard.listener, heard.speaker, d.kind, d.vote, d.vote_size, d.vote_cycle, VOTE, cycle,
+                         CYCLE_MODULUS, self.votes, self.vote_cycle)
 
     def follow(self, cycle: int, own: np.ndarray) -> np.ndarray:
         """(n, k): the assignment each player follows, from its own proposal ``own[i]`` (n, k)
         and the fresh votes it holds (module docstring)."""
         n = self.n
-        proposals = np.asarray(own, dtype=np.int64)
+        proposals = np.ascontiguousarray(own, dtype=np.int64)
         if proposals.shape != (n, self.k):
             raise ValueError(f"VoteBook.follow: own proposals must be ({n}, {self.k}), got {proposals.shape}")
-        return np.stack([self.follow_one(i, cycle, proposals[i]) for i in range(n)])
+        out = np.empty_like(proposals)
+        follow_votes(np.arange(n), self.votes, self.vote_cycle, proposals, cycle, self.horizon, out)
+        return out
 
     def follow_one(self, i: int, cycle: int, proposal: np.ndarray) -> np.ndarray:
         """The assignment player ``i`` follows given its own ``proposal`` (k,): :meth:`follow`
         for one player (its row uses only its own memory)."""
-        own = tuple(np.asarray(proposal, dtype=np.int64).tolist())
-        # per assignment: [votes for it, then its best row's (recency, -team-mate index) for ties]
-        tally: dict[tuple[int, ...], list] = {own: [1, (1 << 41, 1)]}
-        horizon, keys, cycles = self.horizon, self._keys[i], self._cycles[i]
-        for j in range(self.n):
-            if j == i or cycle - cycles[j] > horizon:
+        proposals = np.empty((self.n, self.k), dtype=np.int64)
+        proposals[i] = proposal
+        follow_votes(np.array([i]), self.votes, self.vote_cycle, proposals, cycle, self.horizon, proposals)
+        return proposals[i].copy()
+
+
+@njit(cache=True, nogil=True)
+def _store_votes(listener, speaker, kind, vote, size, vote_cycle_sent, vote_kind, cycle, modulus, votes,
+                 vote_cycle) -> None:  # pragma: no cover - compiled
+    """Keep each heard vote of the right size from a team-mate, unless the listener holds a
+    newer one from that team-mate (the cycle travels modulo ``modulus``: the latest cycle no
+    later than now with that residue)."""
+    n, k = votes.shape[0], votes.shape[2]
+    for p in range(listener.shape[0]):
+        i, j = listener[p], speaker[p]
+        if kind[p] != vote_kind or size[p] != k or j < 0 or j >= n:
+            continue
+        computed = cycle - (cycle - vote_cycle_sent[p]) % modulus
+        if computed >= vote_cycle[i, j]:
+            votes[i, j, :] = vote[p, :k]
+            vote_cycle[i, j] = computed
+
+
+@njit(cache=True, nogil=True)
+def follow_votes(rows: np.ndarray, votes: np.ndarray, vote_cycle: np.ndarray, proposals: np.ndarray, cycle: int,
+                 horizon: int, out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """For each player ``i`` of ``rows``, into ``out[i]``: among its own ``proposals[i]`` and
+    the votes it holds at most ``horizon`` cycles old, the assignment with the most identical
+    votes; on a tie its own if that is among them, else the most recent (then the lowest
+    team-mate index). ``out`` may be ``proposals``."""
+    n, k = votes.shape[0], votes.shape[2]
+    fresh = np.empty(n, dtype=np.bool_)
+    own = np.empty(k, dtype=np.int64)
+    for i in rows:
+        own[:] = proposals[i]
+        for j in range(n):
+            fresh[j] = j != i and cycle - vote_cycle[i, j] <= horizon
+        best, best_count, best_cycle, best_j = -1, 0, 0, 0   # -1: the own proposal
+        for c in range(-1, n):
+            if c >= 0 and not fresh[c]:
                 continue
-            rank = (cycles[j], -j)
-            entry = tally.get(keys[j])
-            if entry is None:
-                tally[keys[j]] = [1, rank]
-            else:
-                entry[0] += 1
-                entry[1] = max(entry[1], rank)
-        best = max(tally.items(), key=lambda item: (item[1][0], item[1][1]))[0]
-        return np.array(best, dtype=np.int64)
+            candidate = own if c < 0 else votes[i, c]
+            if c >= 0 and _same(candidate, own):
+                continue  # counted with the own proposal
+            count = 1 if c < 0 else 0
+            latest, latest_j = NO_VOTE, 0
+            seen_before = False
+            for j in range(n):
+                if fresh[j] and _same(votes[i, j], candidate):
+                    if c >= 0 and j < c:
+                        seen_before = True
+                        break
+                    count += 1
+                    if vote_cycle[i, j] > latest or (vote_cycle[i, j] == latest and j < latest_j):
+                        latest, latest_j = vote_cycle[i, j], j
+            if seen_before:
+                continue  # tallied at its first voter
+            if c < 0:
+                best, best_count = -1, count
+                continue
+            if count > best_count or (count == best_count and best >= 0
+                                      and (latest > best_cycle or (latest == best_cycle and latest_j < best_j))):
+                best, best_count, best_cycle, best_j = c, count, latest, latest_j
+        if best >= 0:
+            out[i] = votes[i, best]
+        else:
+            out[i] = own
+
+
+@njit(cache=True, nogil=True)
+def _same(a: np.ndarray, b: np.ndarray) -> bool:  # pragma: no cover - compiled
+    """Whether two assignments are equal."""
+    for r in range(a.shape[0]):
+        if a[r] != b[r]:
+            return False
+    return True
 
 
 def role_conflicts(roles: np.ndarray, n_roles: int) -> tuple[int, int]:

@@ -67,62 +67,85 @@ def paced_dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, eff
     the budget. ``attacking``: 1 we attack, 0 we defend (play on), -1 neither (set plays);
     ``cycle``, ``half``: the view's."""
     cycles_left = cycles_left_in_half(cycle, half, k)
+    for i in range(pos.shape[0]):
+        paced_dash_player(i, pos, vel, targets, effort, stamina, capacity, urgent[i], ball[0], ball[1], goalie,
+                          attacking, cycles_left, k, out, budgets)
+
+
+@njit(cache=True, nogil=True)
+def paced_dash_rows(rows: np.ndarray, pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, effort: np.ndarray,
+                    stamina: np.ndarray, capacity: np.ndarray, urgent: np.ndarray, balls: np.ndarray, goalie: int,
+                    attacking: np.ndarray, cycle: int, half: int, k: np.ndarray, out: np.ndarray,
+                    budgets: np.ndarray) -> None:  # pragma: no cover - compiled
+    """:func:`paced_dash_kernel` for the players ``rows`` only, each with its own ball
+    (``balls`` (n, 2)) and phase (``attacking`` (n,)): players who each decide from what they
+    alone believe."""
+    cycles_left = cycles_left_in_half(cycle, half, k)
+    for i in rows:
+        paced_dash_player(i, pos, vel, targets, effort, stamina, capacity, urgent[i], balls[i, 0], balls[i, 1],
+                          goalie, attacking[i], cycles_left, k, out, budgets)
+
+
+@njit(cache=True, nogil=True)
+def paced_dash_player(i: int, pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, effort: np.ndarray,
+                      stamina: np.ndarray, capacity: np.ndarray, hurry: bool, bx: float, by: float, goalie: int,
+                      attacking: int, cycles_left: float, k: np.ndarray, out: np.ndarray,
+                      budgets: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Player ``i``'s row of :func:`paced_dash_kernel` (the ball at ``bx``, ``by``; ``hurry``
+    its urgent flag)."""
     accel_max, rate = k[K_ACCEL_MAX], k[K_POWER_RATE]
     side_rate, back_rate, heading_speed = k[K_SIDE_RATE], k[K_BACK_RATE], k[K_HEADING_SPEED]
     run = k[K_RUN_DISTANCE]
-    bx, by = ball[0], ball[1]
-    for i in range(pos.shape[0]):
-        px, py = pos[i, 0], pos[i, 1]
-        tx, ty = targets[i, 0], targets[i, 1]
-        dx, dy = tx - px, ty - py
-        vx, vy = vel[i, 0], vel[i, 1]
-        dist = math.sqrt(dx * dx + dy * dy)
-        out[i, 0] = 0.0
-        out[i, 1] = 0.0
-        budgets[i] = 0.0
-        if dist <= k[K_TOLERANCE] and vx * vx + vy * vy <= 1e-6:
-            continue
-        st = stamina[i]
-        ball_gap = math.sqrt((px - bx) ** 2 + (py - by) ** 2)
-        hurry = urgent[i]
-        if not hurry and attacking >= 0 and i != goalie:
-            if attacking == 1:  # an attacking run into the final third, the ball in their half
-                hurry = bx >= 0.0 and tx >= k[K_FINAL_THIRD_X] and tx - px >= run
-            else:  # a run back goal-side of the ball by a player caught in front of it
-                hurry = bx <= k[K_DANGER_X] and tx < bx < px and px - tx >= run
-        if not hurry and i != goalie and dist <= max(k[K_SETTLE], k[K_SETTLE_SHARE] * ball_gap) \
-                and not (tx > 0.0 and px > tx):
-            continue  # near enough: coast to a stop
-        # Away from the play: behind it when we attack (rest defence), ahead of it when they do.
-        rest = not hurry and i != goalie and ((attacking == 1 and tx < bx - k[K_REST_GAP])
-                                              or (attacking == 0 and tx > bx + k[K_REST_GAP]))
-        eff = effort[i]
-        budget = power_budget(st, capacity[i], hurry, i == goalie, rest, dist, ball_gap, cycles_left, k)
-        budgets[i] = budget
-        if budget <= 0.0 or eff <= 0.0:
-            continue
-        ax, ay, size = arrive_and_stop(dx, dy, vx, vy, dist, pace_speed(budget, hurry, eff, k), accel_max * eff)
-        if size <= 0.0:
-            continue
-        # The power the simulator will charge (soccer_sim.kinematics: the dash direction
-        # against the direction of motion, weighted by the speed).
-        dir_rate = 1.0
-        speed = math.sqrt(vx * vx + vy * vy)
-        if speed > 0.0 and size > budget * rate * eff * min(side_rate, back_rate, 1.0):
-            # (within budget even at the costliest direction: no need for the angle)
-            cos = min(1.0, max(-1.0, (ax * vx + ay * vy) / (size * speed)))
-            angle = math.degrees(math.acos(cos))
-            if angle > 90.0:
-                along = back_rate - (back_rate - side_rate) * (1.0 - (angle - 90.0) / 90.0)
-            else:
-                along = side_rate + (1.0 - side_rate) * (1.0 - angle / 90.0)
-            dir_rate = 1.0 - min(1.0, speed / heading_speed) * (1.0 - along)
-        power = size / (rate * eff * dir_rate)
-        if power > budget:
-            ax *= budget / power
-            ay *= budget / power
-        out[i, 0] = ax
-        out[i, 1] = ay
+    px, py = pos[i, 0], pos[i, 1]
+    tx, ty = targets[i, 0], targets[i, 1]
+    dx, dy = tx - px, ty - py
+    vx, vy = vel[i, 0], vel[i, 1]
+    dist = math.sqrt(dx * dx + dy * dy)
+    out[i, 0] = 0.0
+    out[i, 1] = 0.0
+    budgets[i] = 0.0
+    if dist <= k[K_TOLERANCE] and vx * vx + vy * vy <= 1e-6:
+        return
+    st = stamina[i]
+    ball_gap = math.sqrt((px - bx) ** 2 + (py - by) ** 2)
+    if not hurry and attacking >= 0 and i != goalie:
+        if attacking == 1:  # an attacking run into the final third, the ball in their half
+            hurry = bx >= 0.0 and tx >= k[K_FINAL_THIRD_X] and tx - px >= run
+        else:  # a run back goal-side of the ball by a player caught in front of it
+            hurry = bx <= k[K_DANGER_X] and tx < bx < px and px - tx >= run
+    if not hurry and i != goalie and dist <= max(k[K_SETTLE], k[K_SETTLE_SHARE] * ball_gap) \
+            and not (tx > 0.0 and px > tx):
+        return  # near enough: coast to a stop
+    # Away from the play: behind it when we attack (rest defence), ahead of it when they do.
+    rest = not hurry and i != goalie and ((attacking == 1 and tx < bx - k[K_REST_GAP])
+                                          or (attacking == 0 and tx > bx + k[K_REST_GAP]))
+    eff = effort[i]
+    budget = power_budget(st, capacity[i], hurry, i == goalie, rest, dist, ball_gap, cycles_left, k)
+    budgets[i] = budget
+    if budget <= 0.0 or eff <= 0.0:
+        return
+    ax, ay, size = arrive_and_stop(dx, dy, vx, vy, dist, pace_speed(budget, hurry, eff, k), accel_max * eff)
+    if size <= 0.0:
+        return
+    # The power the simulator will charge (soccer_sim.kinematics: the dash direction
+    # against the direction of motion, weighted by the speed).
+    dir_rate = 1.0
+    speed = math.sqrt(vx * vx + vy * vy)
+    if speed > 0.0 and size > budget * rate * eff * min(side_rate, back_rate, 1.0):
+        # (within budget even at the costliest direction: no need for the angle)
+        cos = min(1.0, max(-1.0, (ax * vx + ay * vy) / (size * speed)))
+        angle = math.degrees(math.acos(cos))
+        if angle > 90.0:
+            along = back_rate - (back_rate - side_rate) * (1.0 - (angle - 90.0) / 90.0)
+        else:
+            along = side_rate + (1.0 - side_rate) * (1.0 - angle / 90.0)
+        dir_rate = 1.0 - min(1.0, speed / heading_speed) * (1.0 - along)
+    power = size / (rate * eff * dir_rate)
+    if power > budget:
+        ax *= budget / power
+        ay *= budget / power
+    out[i, 0] = ax
+    out[i, 1] = ay
 
 
 @njit(cache=True, nogil=True)

@@ -143,3 +143,31 @@ def see_players(saw: np.ndarray, count: np.ndarray, at: np.ndarray, side: np.nda
             else:
                 opp_pos[i, best, 0], opp_pos[i, best, 1] = at[i, c, 0], at[i, c, 1]
                 opp_age[i, best] = 0
+
+
+@njit(cache=True, nogil=True)
+def hear_world(listener: np.ndarray, speaker: np.ndarray, kind: np.ndarray, world: np.ndarray, world_kind: int,
+               mate_pos: np.ndarray, mate_age: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray,
+               ball_age: np.ndarray, ball_decay: float) -> None:  # pragma: no cover - compiled
+    """Fold the team-mates' world messages heard this cycle into each listener's beliefs: rows
+    of (listener, speaker, kind, values (ball x, y, velocity x, y, age, sender x, y)); only
+    rows of ``world_kind`` from another team-mate count. The sender is where it said it was
+    (age 1) unless the listener knows fresher; the ball is taken when fresher than the
+    listener's, rolled on by the cycle the message took."""
+    n = ball.shape[0]
+    for p in range(listener.shape[0]):
+        i, j = listener[p], speaker[p]
+        if kind[p] != world_kind or j < 0 or j >= n or j == i:
+            continue
+        if mate_age[i, j] > 1:
+            mate_pos[i, j, 0] = world[p, 5]
+            mate_pos[i, j, 1] = world[p, 6]
+            mate_age[i, j] = 1
+        age = int(world[p, 4]) + 1
+        if age < ball_age[i]:
+            vx, vy = world[p, 2], world[p, 3]
+            ball[i, 0] = world[p, 0] + vx
+            ball[i, 1] = world[p, 1] + vy
+            ball_vel[i, 0] = vx * ball_decay
+            ball_vel[i, 1] = vy * ball_decay
+            ball_age[i] = age

@@ -1,28 +1,32 @@
 """The built-in team under partial observation: every player decides on its own.
 
-Each player ``i`` has its own copy of the team's brain (a :class:`FormationTeam` of the same
-assigner and style, with its own memory and random generator), its own world model (row ``i``
-of :class:`~agents.teams.world_model.TeamBeliefs`) and its own memory of the votes it heard
-(row ``i`` of :class:`~agents.roles.voting.VoteBook`). Per cycle:
+Each player ``i`` has its own world model (row ``i`` of
+:class:`~agents.teams.world_model.TeamBeliefs`), its own memory of the votes it heard (row
+``i`` of :class:`~agents.roles.voting.VoteBook`) and its own brain (a :class:`FormationTeam`
+of the same assigner and style, with its own memory and random generator). Per cycle:
 
 1. every player's world model takes in its own observation and the messages it heard;
-2. player ``i``'s brain acts (on cycles it sees, near the ball, or at set plays; otherwise
-   it goes on with its last dash) on a team view made from its beliefs alone (team-mates
-   and opponents where it believes them, their velocities unknown and taken as zero, everyone's
-   stamina its own), running the formation query and the role assigner on that model; the
-   assignment it computes is its *proposal*, and it follows the assignment most of the votes it
-   holds agree on (:meth:`VoteBook.follow_one`);
-3. the team's command takes from each player's brain only that player's own row (dash, kick,
-   tackle, placement; the catch from the goalkeeper's);
-4. players speak: on even cycles their world message (ball belief and own position), on odd
+2. a player on the ball (it believes the ball within :data:`BRAIN_DISTANCE`, or holds it),
+   the goalkeeper with the ball in our penalty area, and at our set plays the player who
+   believes it is the taker (re-chosen every cycle) or can kick the ball, decide with their
+   whole brain on a team view made from their beliefs alone (team-mates and opponents where
+   they believe them, their velocities unknown and taken as zero, everyone's stamina their
+   own): kicks, passes, dribbles, tackles, catches, set-play kicks;
+3. everybody else positions itself on its own model (:mod:`agents.teams.own_view`: its ball
+   race, the formation query, the role assigner -- its *proposal* -- and the assignment most
+   of the votes it holds agree on, its goal and its dash), the team's players in one compiled
+   call per step;
+4. the team's command takes from each player's decision only that player's own row;
+5. players speak: on even cycles their world message (ball belief and own position), on odd
    cycles their proposal as a vote (so each kind reaches every team-mate about every other
    cycle, as SCRAM's agents share world models and votes).
 
 Nothing player ``i`` does in a cycle depends on another player's observation of that cycle;
 team-mates' information reaches it only through the messages it hears the next cycle.
 
-Per-match figures (:meth:`DecentralisedPlay.statistics`): each brain's role figures averaged
-over the players, and the disagreement left: the share of play-on cycles with a role that two
+Per-match figures (:meth:`DecentralisedPlay.statistics`): the role figures of
+:class:`~agents.teams.reporting.RoleFigures` from each player's distance to the target of the
+role it follows, and the disagreement left: the share of play-on cycles with a role that two
 players both believe they hold, or a role nobody believes they hold.
 """
 
@@ -34,6 +38,9 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from agents.roles.voting import VoteBook, role_conflicts
+from agents.team_messages import heard_batch
+from agents.teams.own_view import OwnViewPositioning
+from agents.teams.positions import current_labels
 from agents.teams.world_model import TeamBeliefs
 from soccer_sim.config import MatchConfig
 from soccer_sim.perception.views import PlayerViews
@@ -46,12 +53,9 @@ if TYPE_CHECKING:
 _RECHOSEN = frozenset(SET_PLAYS - {PlayMode.KICK_OFF})
 """Our set plays whose taker each player re-chooses every cycle (a kick-off's taker is placed)."""
 
-THINK_DISTANCE = 30.0
-"""A player whose believed ball is nearer than this (m) decides every cycle, a see or not;
-farther away it decides on its see cycles and otherwise goes on with its last dash. Measured
-over 4 half matches of mmdr against counter-442 (shots per half, ball path): deciding every
-cycle 3.0, with 30 m 3.0, with 10 m 0.75: the players around the ball (support, follow-ups)
-need every cycle, those far from it do not."""
+BRAIN_DISTANCE = 3.0
+"""A player who believes the ball within this (m) decides with its whole brain (a kick, a
+dribble, a tackle: rcssserver's ``tackle_dist`` is 2 m, the kickable distance about 1 m)."""
 
 VOTE_HORIZON = 20
 """Cycles a heard vote counts (2 s: the assignment moves on with the ball)."""
@@ -74,22 +78,23 @@ class DecentralisedPlay:
             brain.reset(side_info, config, child)
         first = self.brains[0] if n else None
         self.outfield = first.outfield if first is not None else np.zeros(0, dtype=np.int64)
-        self._outfield_rank = {int(p): r for r, p in enumerate(self.outfield)}
         self.beliefs = TeamBeliefs(n, m, config)
         spots = first.kick_off_spots if first is not None else np.zeros((0, 2))
         self.beliefs.mate_pos[:] = spots[:n][None, :, :]          # where the team lines up
         self.beliefs.opp_pos[:] = -spots[:m][None, :, :] if m <= len(spots) else 0.0
         k = len(self.outfield)
         self.votes = VoteBook(n, VOTE_HORIZON, k) if k else None
-        self.proposals = np.tile(np.arange(k), (n, 1))
-        """(n, k): the assignment each player's brain computed last (its vote)."""
-        self.followed = np.tile(np.arange(k), (n, 1))
-        """(n, k): the assignment each player followed last."""
         self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
-        self._last_dash = np.zeros((n, 2))
         self._kickable = first.model.kickable_distance + 0.2 if first is not None else 0.0
         self._views = [_empty_view(n, m, side_info) for _ in range(n)]
-        self._cycle = 0
+        self.positioning = OwnViewPositioning(self.brains, config, self._views[0]) if n else None
+        """Every player's positioning on its own model (:mod:`agents.teams.own_view`)."""
+        self._goal_kick_keeper = first is not None and first.style.goalkeeper_goal_kicks and self.goalie >= 0
+        self._area = (first.model.half_length - first.model.penalty_area_length - 2.0,
+                      first.model.penalty_area_half_width + 2.0) if first is not None else (0.0, 0.0)
+        self._brain_cycle = np.full(n, -2, dtype=np.int64)
+        self._mode_key: tuple[int, bool] = (-1, False)
+        self._mode_since = 0
         self._play_on_cycles = 0
         self._conflict_cycles = 0
         self._unfilled_cycles = 0
@@ -97,73 +102,110 @@ class DecentralisedPlay:
     def _filter_for(self, i: int) -> Callable[[np.ndarray], np.ndarray]:
         """Player ``i``'s brain's hook from its computed assignment to the one it follows."""
         def follow(proposal: np.ndarray) -> np.ndarray:
-            self.proposals[i] = proposal
+            positioning = self.positioning
+            positioning.proposals[i] = proposal
             if self.votes is None:
                 return proposal
             followed = self.votes.follow_one(i, self._cycle, proposal)
-            self.followed[i] = followed
+            positioning.followed[i] = followed
             return followed.copy()
         return follow
 
     def act(self, views: PlayerViews) -> TeamCommand:
         """Every player's command from its own view and memory (module docstring)."""
         n, command = self.n, self.command
-        self._cycle = views.cycle
-        self.beliefs.update(views)
+        cycle = self._cycle = views.cycle
+        key = (int(views.play_mode), bool(views.mode_ours))
+        if key != self._mode_key:
+            self._mode_key, self._mode_since = key, cycle
+        heard = heard_batch(views.heard_mates)
+        self.beliefs.update(views, heard)
         if self.votes is not None:
-            self.votes.hear(views.cycle, views.heard_mates)
+            self.votes.hear(cycle, heard)
         command.dash[:] = 0.0
         command.kick[:] = 0.0
         command.catch = False
-        move = tackle = foul = None
-        # At our set plays each player picks the taker afresh every cycle from what it believes
-        # now: a choice made on stale beliefs (each player sure another is nearer) would leave
-        # the ball untaken, while beliefs about the players near the ball soon agree.
+        command.tackle = command.foul = None
+        if n == 0:
+            command.move, command.say = None, []
+            return command
+        on_ball = self._on_ball(views)
+        placed = self.positioning.step(views, self.beliefs, views.present & ~on_ball, self.votes, command.dash)
+        move = None
+        if placed is not None:  # players without a placement of their own stay where they believe they are
+            move = views.position.copy()
+            positioned = views.present & ~on_ball
+            move[positioned] = placed[positioned]
         rechoose = views.mode_ours and views.play_mode in _RECHOSEN
-        thinks = self._thinking(views)
-        for i in range(n):
-            if not views.present[i]:
-                continue
-            if not thinks[i]:  # nothing new seen, the ball far: the last dash goes on
-                command.dash[i] = self._last_dash[i]
-                continue
-            brain = self.brains[i]
-            taker = brain.set_plays.taker
-            if rechoose:
-                brain.set_plays.taker = -1
-            own = brain.act(self._view_of(i, views))
-            if rechoose and brain.set_plays.taker != taker:
-                brain.set_plays.routine = None  # the next cycle's routine is made around the new taker
-            command.dash[i] = self._last_dash[i] = own.dash[i]
-            command.kick[i] = own.kick[i]
-            if i == self.goalie:
-                command.catch = own.catch
-            if own.move is not None:
-                move = np.zeros((n, 2)) if move is None else move
-                move[i] = own.move[i]
-            if own.tackle is not None and np.isfinite(own.tackle[i]):
-                tackle = np.full(n, np.nan) if tackle is None else tackle
-                foul = np.zeros(n, dtype=bool) if foul is None else foul
-                tackle[i] = own.tackle[i]
-                foul[i] = bool(own.foul[i]) if own.foul is not None else False
-        if move is not None:  # players without a placement of their own stay where they believe they are
-            missing = ~move.any(axis=1)
-            move[missing] = views.position[missing]
-        command.move, command.tackle, command.foul = move, tackle, foul
+        for i in np.flatnonzero(on_ball).tolist():
+            move = self._brain_acts(i, views, rechoose, move)
+        command.move = move
         self.beliefs.kicked(command.kick, self._kickable)
         command.say = self._messages(views)
         self._count_conflicts(views)
         return command
 
-    def _thinking(self, views: PlayerViews) -> np.ndarray:
-        """(n,) which players' brains act this cycle: every player with a new see, and in play on
-        without one only those near where they believe the ball is (within
-        ``THINK_DISTANCE``) or holding it; everybody at set plays and restarts. The others go on
-        with their last dash: their decisions follow their sees (every 1 or 2 cycles)."""
-        if views.play_mode != PlayMode.PLAY_ON:
-            return np.ones(self.n, dtype=bool)
-        gap = self.beliefs.ball - views.position
-        return views.saw | views.holds_ball | (np.einsum("ij,ij->i", gap, gap) < THINK_DISTANCE ** 2)
+    def _on_ball(self, views: PlayerViews) -> np.ndarray:
+        """(n,) the players who decide with their whole brain this cycle (module docstring, step 2)."""
+        mode, beliefs = views.play_mode, self.beliefs
+        gap = beliefs.ball - views.position
+        near = np.einsum("ij,ij->i", gap, gap)
+        if mode == PlayMode.PLAY_ON:
+            rows = (near < BRAIN_DISTANCE ** 2) | views.holds_ball
+            g = self.goalie
+            if g >= 0:
+                bx, by = beliefs.ball[g]
+                rows[g] |= bx <= -self._area[0] and abs(by) <= self._area[1]
+            return rows & views.present
+        if not views.mode_ours:
+            return np.zeros(self.n, dtype=bool)
+        if mode == PlayMode.GOALIE_HOLDS:
+            rows = np.zeros(self.n, dtype=bool)
+            if self.goalie >= 0:
+                rows[self.goalie] = True
+            return rows & views.present
+        if mode not in SET_PLAYS:
+            return np.zeros(self.n, dtype=bool)
+        # each player's taker: the outfield player nearest its believed ball (our goalkeeper at goal kicks)
+        rows = near < (self._kickable + 1.0) ** 2
+        if mode == PlayMode.GOAL_KICK and self._goal_kick_keeper:
+            rows[self.goalie] = True
+        elif len(self.outfield):
+            mates = beliefs.mate_pos[:, self.outfield] - beliefs.ball[:, None, :]
+            nearest = self.outfield[np.argmin(np.einsum("ijk,ijk->ij", mates, mates), axis=1)]
+            rows |= nearest == np.arange(self.n)
+        return rows & views.present
+
+    def _brain_acts(self, i: int, views: PlayerViews, rechoose: bool, move: np.ndarray | None) -> np.ndarray | None:
+        """Player ``i`` decides with its whole brain on its beliefs; its own row of the brain's
+        command goes into the team's. Returns the placements (``move``, made when needed)."""
+        brain, command = self.brains[i], self.command
+        if self._brain_cycle[i] != views.cycle - 1:
+            brain.wake(self._mode_since)
+        self._brain_cycle[i] = views.cycle
+        taker = brain.set_plays.taker
+        # At our set plays each player picks the taker afresh every cycle from what it believes
+        # now: a choice made on stale beliefs (each player sure another is nearer) would leave
+        # the ball untaken, while beliefs about the players near the ball soon agree.
+        if rechoose:
+            brain.set_plays.taker = -1
+        own = brain.act(self._view_of(i, views))
+        if rechoose and brain.set_plays.taker != taker:
+            brain.set_plays.routine = None  # the next cycle's routine is made around the new taker
+        command.dash[i] = own.dash[i]
+        command.kick[i] = own.kick[i]
+        if i == self.goalie:
+            command.catch = own.catch
+        if own.move is not None:
+            move = views.position.copy() if move is None else move
+            move[i] = own.move[i]
+        if own.tackle is not None and np.isfinite(own.tackle[i]):
+            n = self.n
+            command.tackle = np.full(n, np.nan) if command.tackle is None else command.tackle
+            command.foul = np.zeros(n, dtype=bool) if command.foul is None else command.foul
+            command.tackle[i] = own.tackle[i]
+            command.foul[i] = bool(own.foul[i]) if own.foul is not None else False
+        return move
 
     def _view_of(self, i: int, views: PlayerViews) -> TeamView:
         """Player ``i``'s beliefs as a team view (its own rows from its own senses)."""
@@ -191,17 +233,17 @@ class DecentralisedPlay:
 
     def _messages(self, views: PlayerViews) -> list[str | None]:
         """What each player says: its world message on even cycles, its vote on odd ones."""
-        n = self.n
         if views.cycle % 2 == 0 or self.votes is None:
-            return [self.beliefs.world_message(i) if views.present[i] else None for i in range(n)]
-        return [VoteBook.message(self.proposals[i], views.cycle) if views.present[i] else None for i in range(n)]
+            return self.beliefs.world_messages(views.present)
+        return VoteBook.messages(self.positioning.proposals, views.cycle, views.present)
 
     def _count_conflicts(self, views: PlayerViews) -> None:
         """Count play-on cycles whose believed roles clash (two players on one role, or a role
         nobody holds)."""
         if views.play_mode != PlayMode.PLAY_ON or not len(self.outfield):
             return
-        roles = np.array([self.followed[i, r] for r, i in enumerate(self.outfield.tolist())])
+        followed = self.positioning.followed
+        roles = followed[self.outfield, self.positioning.rank[self.outfield]]
         shared, empty = role_conflicts(roles, len(self.outfield))
         self._play_on_cycles += 1
         self._conflict_cycles += shared > 0
@@ -209,17 +251,20 @@ class DecentralisedPlay:
 
     # ------------------------------------------------------------------ reporting
     def statistics(self) -> dict[str, float]:
-        """The brains' role figures averaged over the players, and the conflict shares."""
-        figures = [brain.statistics() for brain in self.brains]
-        merged = {key: float(np.mean([f[key] for f in figures])) for key in figures[0]} if figures else {}
+        """The players' role figures (module docstring) and the conflict shares."""
+        merged = self.positioning.figures.statistics() if self.positioning is not None else {}
         cycles = max(self._play_on_cycles, 1)
         merged["role_conflict_share"] = self._conflict_cycles / cycles
         merged["believed_unfilled_share"] = self._unfilled_cycles / cycles
         return merged
 
     def role_labels(self) -> list[str]:
-        """Each player's position as its own brain sees it."""
-        return [brain.role_labels()[i] for i, brain in enumerate(self.brains)]
+        """Each player's position as it believes it (the role it follows)."""
+        if not self.n:
+            return []
+        first, followed = self.brains[0], self.positioning.followed
+        return [current_labels(first._role_labels, self.n, self.outfield, self.positioning.match_roles[i],
+                               followed[i], first.goalie, first._goalie_role)[i] for i in range(self.n)]
 
 
 def _empty_view(n: int, m: int, side_info: SideInfo) -> TeamView:

@@ -167,6 +167,7 @@ class FormationTeam:
         self._situation = Situation.NORMAL
         self._dribble_dash: np.ndarray | None = None
         self._kicker_row = -1
+        self._woken_since: int | None = None
         self._eligible = np.ones(n, dtype=bool)
         self.set_plays = SetPlays(self.skills, config, self.style, self.outfield)
         """Our set plays: takers, retakes, kick-off placement, the goalkeeper's held ball."""
@@ -214,7 +215,8 @@ class FormationTeam:
         if key != self._mode_key or restarted:
             if mode != _PLAY_ON:
                 set_plays.begin(view)
-            self._mode_key, self._mode_since = key, view.cycle
+            self._mode_key, self._mode_since = key, view.cycle if self._woken_since is None else self._woken_since
+        self._woken_since = None
         ctx, model = self.skills, self.model
         race = skills.ball_race(ctx, view, able_players(view, self._eligible if self._our_pass_in_flight else None),
                                 their_first_only=True)
@@ -263,6 +265,17 @@ class FormationTeam:
         elif mode != _PLAY_ON:
             self._our_pass_in_flight = False
         return command
+
+    def wake(self, mode_since: int) -> None:
+        """This brain did not act last cycle (a player's own brain under partial observation
+        acts only on the ball and at set plays): forget what holds only from one cycle to the
+        next (our pass in flight, a dribble, the block's pace), and take the current play
+        mode as begun at ``mode_since``."""
+        self._our_pass_in_flight = False
+        self._dribble_dash = None
+        self.shape.restart()
+        self._mode_key = (-1, False)
+        self._woken_since = mode_since
 
     def _situation_and_ball(self, view: TeamView, race: skills.BallRace) -> tuple[Situation, np.ndarray]:
         """The formation situation and the ball position to query it at."""

@@ -196,6 +196,12 @@ class Shape:
         self._rows = np.zeros(max(params.support_players, 1), dtype=np.int64)
         self._spots = np.zeros((max(params.support_players, 1), 2))
 
+    def restart(self) -> None:
+        """Start the block and the targets afresh next cycle (no pace limit from stale ones):
+        for a brain that did not act last cycle."""
+        self._in_play = False
+        self._primed = False
+
     @property
     def shift(self) -> float:
         """The block's shift up the field (m, moved at the block's pace)."""

@@ -28,8 +28,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from agents.messages import HeardMessages, WorldMessage, encode_world_clipped
-from agents.teams.belief_kernels import AGE_NEVER, predict_beliefs, see_ball, see_players
+from agents.messages import WORLD
+from agents.team_messages import HeardBatch, heard_batch, world_texts
+from agents.teams.belief_kernels import AGE_NEVER, hear_world, predict_beliefs, see_ball, see_players
 from soccer_sim.config import MatchConfig
 from soccer_sim.perception.views import PlayerViews
 
@@ -80,10 +81,10 @@ class TeamBeliefs:
         self._last_seen = np.zeros((n, 2))
         self._last_seen_cycle = np.full(n, -AGE_NEVER, dtype=np.int64)
         self._rows = np.arange(n)
-        self._heard = HeardMessages()
 
-    def update(self, views: PlayerViews) -> None:
-        """One cycle of every player's model from its own row of ``views`` (module docstring)."""
+    def update(self, views: PlayerViews, heard: HeardBatch | None = None) -> None:
+        """One cycle of every player's model from its own row of ``views`` (module docstring);
+        ``heard``: the team-mates' messages of ``views`` already decoded (else decoded here)."""
         p = self.params
         predict_beliefs(self.ball, self.ball_vel, self.ball_age, self.mate_age, self.opp_age, self._ball_decay)
         see_ball(self.ball, self.ball_vel, self.ball_age, self._last_seen, self._last_seen_cycle, views.ball_seen,
@@ -95,22 +96,11 @@ class TeamBeliefs:
         rows = self._rows
         self.mate_pos[rows, rows] = views.position
         self.mate_age[rows, rows] = 0
-        self._hear(views.heard_mates)
-
-    def _hear(self, heard: tuple[tuple[tuple[int, str], ...], ...]) -> None:
-        """Fold the team-mates' world messages into each listener's model."""
-        for i, speaker, msg in self._heard.of_kind(heard, WorldMessage):
-            if not 0 <= speaker < self.n or speaker == i:
-                continue
-            if self.mate_age[i, speaker] > 1:
-                self.mate_pos[i, speaker] = msg.sender
-                self.mate_age[i, speaker] = 1
-            age = msg.ball_age + 1
-            if age < self.ball_age[i]:
-                vx, vy = msg.ball_velocity
-                self.ball[i] = (msg.ball[0] + vx, msg.ball[1] + vy)
-                self.ball_vel[i] = (vx * self._ball_decay, vy * self._ball_decay)
-                self.ball_age[i] = age
+        if heard is None:
+            heard = heard_batch(views.heard_mates)
+        if heard.listener.size:
+            hear_world(heard.listener, heard.speaker, heard.decoded.kind, heard.decoded.world, WORLD, self.mate_pos,
+                       self.mate_age, self.ball, self.ball_vel, self.ball_age, self._ball_decay)
 
     def kicked(self, kick: np.ndarray, kickable: float) -> None:
         """Each player's own kicks of this cycle (``kick`` (n, 2) m/cycle, team frame; zero rows
@@ -123,9 +113,8 @@ class TeamBeliefs:
             speed = np.hypot(self.ball_vel[mine, 0], self.ball_vel[mine, 1])
             self.ball_vel[mine] *= np.minimum(1.0, self._ball_speed_max / np.maximum(speed, 1e-9))[:, None]
 
-    def world_message(self, i: int) -> str:
-        """Player ``i``'s ball belief and own position as a 10-character message."""
-        bx, by = self.ball[i].tolist()
-        vx, vy = self.ball_vel[i].tolist()
-        sx, sy = self.mate_pos[i, i].tolist()
-        return encode_world_clipped((bx, by), (vx, vy), int(self.ball_age[i]), (sx, sy))
+    def world_messages(self, present: np.ndarray) -> list[str | None]:
+        """Each present player's ball belief and own position as a 10-character message
+        (:func:`agents.messages.encode_world_clipped`); None for the absent."""
+        rows = self._rows
+        return world_texts(self.ball, self.ball_vel, self.ball_age, self.mate_pos[rows, rows], present)

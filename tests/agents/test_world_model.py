@@ -131,7 +131,7 @@ class _Believer(ChaserTeam):
     def act(self, views):
         self.beliefs.update(views)
         command = super().act(views)
-        command.say = [self.beliefs.world_message(i) if views.ball_seen[i] else None for i in range(views.n)]
+        command.say = self.beliefs.world_messages(views.ball_seen)
         if not self.talk:
             command.say = None
         return command

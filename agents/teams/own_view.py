@@ -1,0 +1,294 @@
+"""The built-in team's positioning under partial observation, each player on its own world model.
+
+Every player of a :class:`~agents.teams.decentralised.DecentralisedPlay` team who is not on the
+ball decides here, with the steps of :class:`~agents.teams.formation_team.FormationTeam` run on
+what it alone believes (row ``i`` of :class:`~agents.teams.world_model.TeamBeliefs`):
+
+1. its ball race (who of ours and theirs reaches its believed ball first, and where);
+2. in play on, attack or defend with hysteresis and its block moved at the block's pace;
+   at set plays the set-play formation at its believed ball (at the centre after a goal);
+3. the formation queried at its block (or ball), the targets shifted and settled as the team's
+   are (rest defence, the block's pace);
+4. the role assigner run on its believed team-mates and targets (its *proposal*; on the
+   cycles it sees, at most every :data:`ASSIGN_EVERY` cycles, and at once when the play mode
+   changes), and the assignment most of the votes it holds agree on followed
+   (:func:`agents.roles.voting.follow_votes`);
+5. its goal: the followed role's target, pulled back onside; its interception point when it
+   believes it goes for the ball or presses; a steering assigner's field (bidding) where it
+   leads; the goalkeeper's guard point;
+6. its dash at the pace the stamina policy allows (:func:`agents.skills.player_kernels.paced_dash_rows`),
+   or its placement before a kick-off.
+
+Each step is one compiled call over the team's deciders (the assigner one call per player
+that assigns), which is what lets 22 world models and up to 22 assignments a cycle run in
+about the time of a full-observation match. Missing from the full team's open play, because
+they need the whole team's brain: the support spots around the carrier, the positions' own
+runs and the follow-ups of shots; the player on the ball, our set-play taker and the
+goalkeeper near its goal decide with a whole brain (:mod:`agents.teams.decentralised`).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from agents import skills
+from agents.roles import RoleContext, offensive_order
+from agents.roles.voting import VoteBook, follow_votes
+from agents.skills.movement import DEFAULT_PACING
+from agents.skills.pacing import pacing_constants
+from agents.skills.player_kernels import paced_dash_rows
+from agents.teams import mechanism
+from agents.teams.own_view_kernels import own_goals, read_play, settle_each
+from agents.teams.positions import nearest_roles
+from agents.teams.reporting import RoleFigures
+from agents.teams.role_kernels import steered_goals
+from agents.teams.world_model import TeamBeliefs
+from formations import Situation
+from soccer_sim.config import MatchConfig
+from soccer_sim.perception.views import PlayerViews
+from soccer_sim.state import SET_PLAYS, PlayMode
+from soccer_sim.team import TeamView
+
+if TYPE_CHECKING:
+    from agents.teams.formation_team import FormationTeam
+
+ASSIGN_EVERY = 2
+"""Cycles between a player's assignments at least (it assigns on the cycles it sees): its
+believed inputs move little in 0.2 s, and the held assignment is kept between."""
+
+_PLACED = (PlayMode.KICK_OFF, PlayMode.AFTER_GOAL)
+"""Play modes in which players are placed (``move``) rather than run."""
+
+
+class OwnViewPositioning:
+    """The positioning of a team's players, each on its own beliefs (module docstring).
+
+    ``brains``: the players' own brains (one :class:`FormationTeam` each, reset), whose
+    formation, style, assigner and context each player uses; ``view``: a team view with the
+    side's array shapes (for the skills' checked arrays)."""
+
+    def __init__(self, brains: list[FormationTeam], config: MatchConfig, view: TeamView) -> None:
+        first = brains[0]
+        self.brains = brains
+        self.n = n = first.n
+        self.goalie = first.goalie
+        self.outfield = first.outfield
+        self.model = model = first.model
+        self.formation_set = first.formation_set
+        self.style = style = first.style
+        k = len(self.outfield)
+        roles = len(self.formation_set.roles)
+        self.rank = np.full(n, -1, dtype=np.int64)
+        """(n,) each player's index among the outfield players (-1: the goalkeeper)."""
+        self.rank[self.outfield] = np.arange(k)
+        self.match_roles = np.tile(np.asarray(first._match_roles, dtype=np.int64), (n, 1))
+        """(n, k) the outfield roles each player believes the side fills (all of them for a full side)."""
+        self._choose_roles = first._choose_roles
+        shape = first.shape
+        self._shape = shape
+        self._knobs = shape._knobs.copy()
+        self._forwards = first._forward_roles
+        arrays = first.skills.arrays(view)
+        self._race_arrays = (arrays.ours.radius, arrays.ours.catch_radius, arrays.theirs.radius,
+                             arrays.theirs.catch_radius, model.reach, model.ball_travel, model.player_coast)
+        self._race_constants = np.array(tuple(first.skills.intercept_constants), dtype=np.float64)
+        self._pacing = pacing_constants(model, DEFAULT_PACING, 0.05)
+        self._goalie_margin = skills.GoalieParams().race_margin
+        self._area = (model.half_length - model.penalty_area_length, model.penalty_area_half_width)
+        # each player's memory
+        self.attacking = np.zeros(n, dtype=bool)
+        self._pending = np.zeros(n, dtype=np.int64)
+        self._in_play = np.zeros(n, dtype=bool)
+        self._block = np.zeros((n, 3))
+        self._primed = np.zeros(n, dtype=bool)
+        self.targets = np.zeros((n, roles, 2))
+        """(n, roles, 2) each player's role targets this cycle (its formation query, settled)."""
+        self._previous = np.zeros((n, roles, 2))
+        self._scratch = np.zeros((n, roles, 2))
+        self.proposals = np.tile(np.arange(k, dtype=np.int64), (n, 1))
+        """(n, k) the assignment each player computed last (its vote)."""
+        self.followed = self.proposals.copy()
+        """(n, k) the assignment each player follows."""
+        self._last_followed = self.followed.copy()
+        self._assigned_at = np.full(n, -(1 << 40), dtype=np.int64)
+        self._assigned_mode = np.full(n, -1, dtype=np.int64)
+        # this cycle's scratch
+        self.our_cycles = np.zeros((n, n), dtype=np.int64)
+        self.our_points = np.zeros((n, n, 2))
+        self.our_first = np.full(n, -1, dtype=np.int64)
+        self.their_cycle = np.zeros(n, dtype=np.int64)
+        self.win_point = np.zeros((n, 2))
+        self.goals = np.zeros((n, 2))
+        self.urgent = np.zeros(n, dtype=bool)
+        self._phase = np.zeros(n, dtype=np.int64)
+        self._budgets = np.zeros(n)
+        self.figures = RoleFigures(config, k)
+        """The team's role figures: each player's distance to the target of the role it follows."""
+
+    # ------------------------------------------------------------------ one cycle
+    def step(self, views: PlayerViews, beliefs: TeamBeliefs, deciding: np.ndarray, votes: VoteBook | None,
+             dash: np.ndarray) -> np.ndarray | None:
+        """Position the ``deciding`` players (n,) bool for this cycle: their dashes into
+        ``dash`` (n, 2); returns their placements (n, 2) in a play mode that places players,
+        else None. ``votes``: the team's :class:`~agents.roles.voting.VoteBook` (None: no
+        outfield roles)."""
+        rows = np.flatnonzero(deciding)
+        if not rows.size:
+            return None
+        mode = views.play_mode
+        play_on = mode == PlayMode.PLAY_ON
+        ball = beliefs.ball
+        if self._choose_roles:
+            self._pick_roles(rows, beliefs)
+        r = self._race_arrays
+        read_play(rows, ball, beliefs.ball_vel, beliefs.mate_pos, views.velocity, beliefs.opp_pos, views.effort,
+                  r[0], r[1], r[2], r[3], r[4], r[5], r[6], self._race_constants, play_on,
+                  self._shape.params.switch_margin, self._shape.params.switch_persist, self._shape.depth,
+                  self._shape.attack_push, self._knobs, self.attacking, self._pending, self._in_play, self._block,
+                  self.our_cycles, self.our_points, self.our_first, self.their_cycle, self.win_point)
+        self._query(rows, mode, views.mode_ours, ball)
+        narrowed = self.attacking & (self._block[:, 0] > self.model.half_length / 3.0) & play_on \
+            & bool(self.style.box_narrowing)
+        settle_each(rows, self.targets, self._previous, self._primed, self.match_roles, self._shape.outfield_roles,
+                    self._shape.back_roles, beliefs.opp_pos, ball, self._block, self.attacking, play_on,
+                    self.model.half_length - 2.0, self._forwards, 1.0 - self.style.box_narrowing, narrowed,
+                    self._knobs)
+        outfield_rows = rows[self.rank[rows] >= 0]
+        if outfield_rows.size:
+            self._assign(outfield_rows, views, beliefs, int(mode))
+            if votes is not None:
+                follow_votes(outfield_rows, votes.votes, votes.vote_cycle, self.proposals, views.cycle, votes.horizon,
+                             self.followed)
+            else:
+                self.followed[outfield_rows] = self.proposals[outfield_rows]
+        self._goals(rows, outfield_rows, play_on, beliefs)
+        phase = self._phase
+        phase[rows] = np.where(self.attacking[rows], 1, 0) if play_on else -1
+        paced_dash_rows(rows, views.position, views.velocity, self.goals, views.effort, views.stamina,
+                        views.capacity, self.urgent, ball, self.goalie, phase, views.cycle, views.half,
+                        self._pacing, dash, self._budgets)
+        if play_on:
+            self._measure(outfield_rows, views, beliefs)
+        if mode in _PLACED:
+            return self.goals
+        return None
+
+    def _pick_roles(self, rows: np.ndarray, beliefs: TeamBeliefs) -> None:
+        """A smaller side: each player takes, once, the outfield roles it believes nearest the
+        outfield players (as :meth:`FormationTeam._pick_roles` does for the whole team)."""
+        first = self.brains[0]
+        for i in rows.tolist():
+            self.match_roles[i] = nearest_roles(self.formation_set, first._outfield_roles, beliefs.ball[i],
+                                                beliefs.mate_pos[i][self.outfield])
+        self._choose_roles = False
+
+    def _query(self, rows: np.ndarray, mode: PlayMode, ours: bool, ball: np.ndarray) -> None:
+        """Each deciding player's formation targets before settling: in play on at its block
+        (attack or defend), at set plays the set-play formation at its ball (the centre after a
+        goal), otherwise the normal one."""
+        if mode == PlayMode.PLAY_ON:
+            for attacking in (True, False):
+                group = rows[self.attacking[rows] == attacking]
+                if group.size:
+                    self._positions(group, self._block[group, :2], Situation.ATTACK if attacking else Situation.DEFEND)
+            return
+        situation = Situation.NORMAL
+        if mode == PlayMode.AFTER_GOAL or mode in SET_PLAYS or mode == PlayMode.GOALIE_HOLDS:
+            situation = Situation.OUR_SET_PLAY if ours else Situation.THEIR_SET_PLAY
+        self._positions(rows, np.zeros((rows.size, 2)) if mode == PlayMode.AFTER_GOAL else ball[rows], situation)
+
+    def _positions(self, rows: np.ndarray, balls: np.ndarray, situation: Situation) -> None:
+        """The formation of ``situation`` queried at ``balls`` (one per row) into ``targets[rows]``."""
+        out = self._scratch[: rows.size]
+        self.formation_set.formation(situation).positions_each(np.ascontiguousarray(balls), out)
+        self.targets[rows] = out
+
+    def _assign(self, rows: np.ndarray, views: PlayerViews, beliefs: TeamBeliefs, mode: int) -> None:
+        """The role assigner on each due player's own model (module docstring, step 4)."""
+        cycle, saw = views.cycle, views.saw
+        play_on = mode == PlayMode.PLAY_ON
+        for i in rows.tolist():
+            if self._assigned_mode[i] == mode and (not saw[i] or cycle - self._assigned_at[i] < ASSIGN_EVERY):
+                continue
+            self._assigned_at[i], self._assigned_mode[i] = cycle, mode
+            brain = self.brains[i]
+            players = beliefs.mate_pos[i][self.outfield]
+            role_targets = self.targets[i][self.match_roles[i]]
+            context = self._context(i, brain, beliefs, play_on, cycle)
+            proposal = None
+            if brain._leave is not None and play_on:
+                proposal = brain._leave.assign(players, role_targets, int(self.our_first[i]), self.our_points[i],
+                                               self.followed[i], context)
+            if proposal is None:
+                order = offensive_order(role_targets) if brain.assigner.uses_role_order else None
+                proposal = brain.assigner.assign(players, role_targets, order, self.followed[i], context)
+            self.proposals[i] = proposal
+
+    def _context(self, i: int, brain: FormationTeam, beliefs: TeamBeliefs, play_on: bool, cycle: int) -> RoleContext:
+        """Player ``i``'s :class:`RoleContext` refreshed from its own beliefs."""
+        context = brain._context
+        context.ball = self.win_point[i] if play_on else beliefs.ball[i]
+        context.ball_reach = None
+        if brain.assigner.uses_ball_reach and play_on:
+            cycles = self.our_cycles[i][self.outfield].astype(np.float64)
+            cycles[cycles >= skills.UNREACHABLE] = np.inf
+            context.ball_reach = cycles * self.model.top_speed
+        context.opponents = beliefs.opp_pos[i]
+        context.cycle = cycle
+        context.attacking = bool(self.attacking[i])
+        return context
+
+    def _goals(self, rows: np.ndarray, outfield_rows: np.ndarray, play_on: bool, beliefs: TeamBeliefs) -> None:
+        """Each deciding player's goal point and hurry (module docstring, step 5)."""
+        style = self.style
+        if style.stationary:
+            goals = self.brains[0].kick_off_spots
+            for i in outfield_rows.tolist():
+                self.goals[i] = goals[self.match_roles[i, self.rank[i]]]
+            self.urgent[rows] = False
+        else:
+            own_goals(outfield_rows, self.rank, self.followed, self.targets, self.match_roles, self.outfield,
+                      self.goalie, play_on, self.our_cycles, self.our_points, self.our_first, self.their_cycle,
+                      beliefs.ball, beliefs.opp_pos, style.offside_margin, style.pressers, self._goalie_margin,
+                      self._area[0], self._area[1], self.goals, self.urgent)
+            self._steer(outfield_rows, beliefs, play_on)
+        if self.goalie >= 0 and self.rank[self.goalie] < 0 and np.any(rows == self.goalie):
+            self.goals[self.goalie] = skills.guard_position(self.model, beliefs.ball[self.goalie])
+            self.urgent[self.goalie] = False
+
+    def _steer(self, rows: np.ndarray, beliefs: TeamBeliefs, play_on: bool) -> None:
+        """A steering assigner (potential-field bidding) moves each player not going for the
+        ball along its own field rather than straight to its role's target."""
+        for i in rows.tolist():
+            brain = self.brains[i]
+            if not brain._steers or self.urgent[i]:
+                continue
+            players = beliefs.mate_pos[i][self.outfield]
+            role_targets = self.targets[i][self.match_roles[i]]
+            followed = self.followed[i]
+            context = self._context(i, brain, beliefs, play_on, int(brain._context.cycle))
+            steps = brain.assigner.steer(players, role_targets, followed, context)
+            r = self.rank[i]
+            self.goals[i] = steered_goals(players[r:r + 1], steps[r:r + 1], role_targets[followed[r:r + 1]])[0]
+
+    def _measure(self, rows: np.ndarray, views: PlayerViews, beliefs: TeamBeliefs) -> None:
+        """One play-on cycle of the role figures: switches of the followed role, each player's
+        distance to its role's target as it believes them, the roles farther than
+        ``unfilled_distance``; on sampled cycles the mechanism figures on the first player's model."""
+        if not rows.size:
+            return
+        ranks = self.rank[rows]
+        roles = self.followed[rows, ranks]
+        if mechanism.sampled(views.cycle):  # fixed and held roles v the minimal makespan, as the first player sees them
+            i = int(rows[0])
+            players = np.ascontiguousarray(beliefs.mate_pos[i][self.outfield])
+            role_targets = np.ascontiguousarray(self.targets[i][self.match_roles[i]])
+            self.figures.add_sample(*mechanism.makespans(players, role_targets, self._last_followed[i]))
+        switches = int(np.count_nonzero(roles != self._last_followed[rows, ranks]))
+        self._last_followed[rows] = self.followed[rows]
+        targets = self.targets[rows, self.match_roles[rows, roles]]
+        gaps = np.hypot(*(views.position[rows] - targets).T)
+        self.figures.add(switches, True, float(gaps.mean()), float(gaps.max()),
+                         int(np.count_nonzero(gaps > self.style.unfilled_distance)))

@@ -1,0 +1,158 @@
+"""Compiled kernels of :mod:`agents.teams.own_view`: the built-in team's positioning, done by
+each player on its own world model, for a whole team in one call per step.
+
+Every kernel loops over the deciding players ``rows``; row ``i`` of every output depends only
+on row ``i`` of the inputs (player ``i``'s beliefs and memory), so the team stays
+decentralised. The steps are those of :class:`agents.teams.formation_team.FormationTeam`
+(the ball race, the attack/defend switch and the block, the targets settled, the goal),
+reusing its kernels. Team frame (we attack +x), metres, m/cycle, cycles.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from agents.skills.interception_kernels import UNREACHABLE, race_kernel
+from agents.teams.role_kernels import offside_line, shape_targets
+from agents.teams.shape_kernels import ATTACKING, BALL_X, DEFENDING, LIMITED, MODE, OFF, advance_block, \
+    settle_targets
+
+
+@njit(cache=True, nogil=True)
+def read_play(rows: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, mate_pos: np.ndarray, own_vel: np.ndarray,
+              opp_pos: np.ndarray, effort: np.ndarray, radius: np.ndarray, catch_radius: np.ndarray,
+              opp_radius: np.ndarray, opp_catch_radius: np.ndarray, reach: np.ndarray, ball_travel: np.ndarray,
+              coast: np.ndarray, c: np.ndarray, play_on: bool, switch_margin: int, switch_persist: int,
+              depth: float, attack_push: float, knobs: np.ndarray, attacking: np.ndarray, pending: np.ndarray,
+              in_play: np.ndarray, block: np.ndarray, our_cycles: np.ndarray, our_points: np.ndarray,
+              our_first: np.ndarray, their_cycle: np.ndarray, win_point: np.ndarray) -> None:  # pragma: no cover
+    """Each deciding player's ball race on its own beliefs (team-mates where it believes them
+    and standing, itself at its sensed velocity, everyone at its own effort; the opponents
+    fresh), into ``our_cycles`` (n, n), ``our_points`` (n, n, 2), ``our_first`` (n,),
+    ``their_cycle`` (n,) and ``win_point`` (n, 2: where the ball will be controlled, the
+    winner's interception point or the ball). In play on, also its attack/defend switch with
+    hysteresis (:meth:`agents.teams.shape.Shape.play_on`) and its block moved at the block's
+    pace towards ``win_point`` (``block`` (n, 3): query x, y and the shift ``depth`` or
+    ``depth + attack_push``). ``c``: the race's constants (x_max, y_max, top_speed, area_x,
+    area_y, accel_max, speed_max, decay, body)."""
+    n, m = mate_pos.shape[1], opp_pos.shape[1]
+    vel = np.zeros((n, 2))
+    opp_vel = np.zeros((m, 2))
+    eff = np.empty(n)
+    opp_eff = np.ones(m)
+    oc = np.empty((1, n), dtype=np.int64)
+    op = np.empty((1, n, 2))
+    tc = np.empty((1, m), dtype=np.int64)
+    tp = np.empty((1, m, 2))
+    everyone = np.zeros(0, dtype=np.bool_)
+    for i in rows:
+        vel[:] = 0.0
+        vel[i, 0], vel[i, 1] = own_vel[i, 0], own_vel[i, 1]
+        eff[:] = effort[i]
+        first, first_cycle, their_first, their_first_cycle = race_kernel(
+            ball[i:i + 1], ball_vel[i:i + 1], mate_pos[i], vel, eff, radius, catch_radius, opp_pos[i], opp_vel, opp_eff,
+            opp_radius, opp_catch_radius, reach, ball_travel, coast, everyone, oc, op, tc, tp, c[0], c[1], c[2], c[3],
+            c[4], c[5], c[6], c[7], c[8], True)
+        our_cycles[i] = oc[0]
+        our_points[i] = op[0]
+        our_first[i] = first
+        their_cycle[i] = their_first_cycle
+        lead = their_first_cycle - first_cycle
+        winning = lead > 0
+        if winning and first >= 0:
+            win_point[i] = op[0, first]
+        elif their_first >= 0:
+            win_point[i] = tp[0, their_first]
+        else:
+            win_point[i] = ball[i]
+        if not play_on:
+            in_play[i] = False
+            continue
+        if not in_play[i]:
+            attacking[i], pending[i] = winning, 0
+        elif winning == attacking[i]:
+            pending[i] = 0
+        else:
+            pending[i] += 1
+            if abs(lead) >= switch_margin or pending[i] >= switch_persist:
+                attacking[i], pending[i] = winning, 0
+        advance_block(block[i], win_point[i], depth + attack_push if attacking[i] else depth, in_play[i], knobs)
+        in_play[i] = True
+
+
+@njit(cache=True, nogil=True)
+def settle_each(rows: np.ndarray, targets: np.ndarray, previous: np.ndarray, primed: np.ndarray,
+                match_roles: np.ndarray, outfield_roles: np.ndarray, back_roles: np.ndarray, opp_pos: np.ndarray,
+                ball: np.ndarray, block: np.ndarray, attacking: np.ndarray, play_on: bool, x_limit: float,
+                forwards: np.ndarray, narrowing: float, narrowed: np.ndarray,
+                knobs: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Each deciding player's role targets ``targets[i]`` (roles, 2; the formation's for its
+    query) changed as the team's are: in play on the outfield moved up by its block's shift and
+    the forwards narrowed where ``narrowed[i]`` (:func:`shape_targets`), then the back line held
+    behind its ball and every target moved at most the block's pace from its own last targets
+    ``previous[i]`` (:func:`settle_targets`)."""
+    own = knobs.copy()
+    for i in rows:
+        shift = block[i, 2]
+        shifted = play_on and shift != 0.0
+        if shifted or narrowed[i]:
+            shape_targets(targets[i], match_roles[i], shift, shifted, x_limit, forwards, narrowing, narrowed[i])
+        own[BALL_X] = ball[i, 0]
+        own[MODE] = (ATTACKING if attacking[i] else DEFENDING) if play_on else OFF
+        own[LIMITED] = 1.0 if play_on and primed[i] else 0.0
+        settle_targets(targets[i], previous[i], outfield_roles, back_roles, opp_pos[i], own)
+        primed[i] = True
+
+
+@njit(cache=True, nogil=True)
+def own_goals(rows: np.ndarray, rank: np.ndarray, followed: np.ndarray, targets: np.ndarray,
+              out_roles: np.ndarray, outfield: np.ndarray, goalie: int, play_on: bool, our_cycles: np.ndarray,
+              our_points: np.ndarray, our_first: np.ndarray, their_cycle: np.ndarray, ball: np.ndarray,
+              opp_pos: np.ndarray, offside_margin: float, pressers: int, keeper_margin: int, area_x: float,
+              area_y: float, goals: np.ndarray, urgent: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Each deciding outfield player's goal point (into ``goals[i]``) and hurry: its followed
+    role's target (``followed[i, rank[i]]``, an index into its ``out_roles[i]``); in play on pulled back
+    behind the offside line it believes in, its interception point when it believes it is the
+    one who goes for the ball (the first of ours, the goalkeeper only for a ball it wins by
+    ``keeper_margin`` cycles in our penalty area, ``|x| >= area_x``, ``|y| <= area_y``), and as
+    one of the first ``pressers`` when it believes they win the ball."""
+    for i in rows:
+        r = rank[i]
+        if r < 0:
+            continue
+        t = out_roles[i, followed[i, r]]
+        gx, gy = targets[i, t, 0], targets[i, t, 1]
+        urgent[i] = False
+        if play_on:
+            limit = offside_line(opp_pos[i], ball[i, 0]) - offside_margin
+            if gx > limit:
+                gx = max(limit, 0.0)
+            first = our_first[i]
+            if first == goalie and first >= 0:
+                mine = our_cycles[i, goalie]
+                px, py = our_points[i, goalie, 0], our_points[i, goalie, 1]
+                comes_out = (mine < UNREACHABLE and their_cycle[i] - mine >= keeper_margin
+                             and px <= -area_x and abs(py) <= area_y)
+                if not comes_out:  # an outfield player goes instead
+                    first, best = -1, UNREACHABLE
+                    for j in outfield:
+                        if our_cycles[i, j] < best:
+                            first, best = j, our_cycles[i, j]
+            if first == i:
+                gx, gy = our_points[i, i, 0], our_points[i, i, 1]
+                urgent[i] = True
+            elif pressers > 1 and not (our_first[i] >= 0 and our_cycles[i, our_first[i]] < their_cycle[i]):
+                ahead = 0  # our players nearer the ball than i (ties: lower row)
+                for j in outfield:
+                    if our_cycles[i, j] < our_cycles[i, i] or (our_cycles[i, j] == our_cycles[i, i] and j < i):
+                        ahead += 1
+                if ahead < pressers:
+                    if our_cycles[i, i] < UNREACHABLE:
+                        gx, gy = our_points[i, i, 0], our_points[i, i, 1]
+                    else:
+                        gx, gy = ball[i, 0], ball[i, 1]
+                    urgent[i] = True
+        goals[i, 0], goals[i, 1] = gx, gy
