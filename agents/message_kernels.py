@@ -93,13 +93,15 @@ def digits_number(digits: np.ndarray) -> int:  # pragma: no cover - compiled
 
 
 @njit(cache=True, nogil=True)
-def decode_digits(digits: np.ndarray, nx: int, ny: int, nv: int, nage: int, modulus: int, kind: np.ndarray,
-                  world: np.ndarray, vote: np.ndarray, vote_size: np.ndarray,
+def decode_digits(digits: np.ndarray, nx: int, ny: int, nv: int, nage: int, per_m: int, per_v: int, modulus: int,
+                  kind: np.ndarray, world: np.ndarray, values: np.ndarray, vote: np.ndarray, vote_size: np.ndarray,
                   vote_cycle: np.ndarray) -> None:  # pragma: no cover - compiled
     """Decode messages given as digits (p, LENGTH) (a digit -1: a character outside the
     alphabet, not a message): ``kind`` (p,) WORLD, VOTE or INVALID;
     a world message's grid indices into ``world`` (p, 7) (ball x, y, velocity x, y, age,
-    sender x, y); a vote's permutation into ``vote`` (p, MAX_PLAYERS), its size and cycle."""
+    sender x, y) and their values into ``values`` (p, 7: m, m/cycle, cycles; ``per_m`` and
+    ``per_v`` grid steps a unit); a vote's permutation into ``vote`` (p, MAX_PLAYERS), its
+    size and cycle."""
     lehmer = np.empty(MAX_PLAYERS, dtype=np.int64)
     left = np.empty(MAX_PLAYERS, dtype=np.int64)
     for p in range(digits.shape[0]):
@@ -116,6 +118,13 @@ def decode_digits(digits: np.ndarray, nx: int, ny: int, nv: int, nage: int, modu
             world[p, 0] = payload
             if payload < nx:
                 kind[p] = WORLD
+                for j in (0, 5):  # a division, so 0.1 m steps come out as 52.5, not 52.500000000000014
+                    values[p, j] = (world[p, j] - nx // 2) / per_m
+                for j in (1, 6):
+                    values[p, j] = (world[p, j] - ny // 2) / per_m
+                for j in (2, 3):
+                    values[p, j] = (world[p, j] - nv // 2) / per_v
+                values[p, 4] = world[p, 4]
             continue
         rank = payload % FACTORIAL_MAX
         payload //= FACTORIAL_MAX

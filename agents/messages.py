@@ -199,8 +199,11 @@ def decode(text: str) -> WorldMessage | VoteMessage:
         return decoded.world_message(0)
     if decoded.kind[0] == VOTE:
         return decoded.vote_message(0)
-    raise MessageError(f"message {text!r} is not a valid {'world' if decoded.number_kind[0] == WORLD else 'vote'} "
-                       "message")
+    number = 0
+    for c in text:
+        number = number * len(ALPHABET) + _CODE[c]
+    kind = "world" if number % KINDS == WORLD else "vote"
+    raise MessageError(f"message {text!r} is not a valid {kind} message")
 
 
 class Decoded:
@@ -211,24 +214,15 @@ class Decoded:
     def __init__(self, count: int) -> None:
         self.kind = np.full(count, -1, dtype=np.int64)
         """(p,) WORLD, VOTE or -1."""
-        self.number_kind = np.full(count, -1, dtype=np.int64)
-        """(p,) the kind digit of a message that is none of ours (-1: not even a number)."""
         self.grid = np.zeros((count, 7), dtype=np.int64)
+        self.world = np.zeros((count, 7))
+        """(p, 7) world messages' values: ball x, y (m), velocity x, y (m/cycle), age
+        (cycles), sender x, y (m)."""
         self.vote = np.zeros((count, MAX_PLAYERS), dtype=np.int64)
         """(p, 11) a vote's assignment (its first ``vote_size`` entries)."""
         self.vote_size = np.zeros(count, dtype=np.int64)
         self.vote_cycle = np.zeros(count, dtype=np.int64)
         """(p,) a vote's cycle modulo CYCLE_MODULUS."""
-
-    @property
-    def world(self) -> np.ndarray:
-        """(p, 7) world messages' values: ball x, y (m), velocity x, y (m/cycle), age
-        (cycles), sender x, y (m)."""
-        g = self.grid.astype(np.float64)
-        g[:, [0, 5]] = (g[:, [0, 5]] - _NX // 2) / _PER_M
-        g[:, [1, 6]] = (g[:, [1, 6]] - _NY // 2) / _PER_M
-        g[:, [2, 3]] = (g[:, [2, 3]] - _NV // 2) / _PER_V
-        return g
 
     def world_message(self, p: int) -> WorldMessage:
         """Message ``p`` as a :class:`WorldMessage` (it must be one)."""
@@ -258,10 +252,8 @@ def decode_texts(texts: Sequence[str]) -> Decoded:
     if fine:
         raw = np.frombuffer("".join(texts[p] for p in fine).encode("ascii"), dtype=np.uint8)
         digits[fine] = _DIGIT_OF_BYTE[raw].reshape(len(fine), MESSAGE_LENGTH)
-    decode_digits(digits, _NX, _NY, _NV, _NAGE, CYCLE_MODULUS, decoded.kind, decoded.grid, decoded.vote,
-                  decoded.vote_size, decoded.vote_cycle)
-    last = digits[:, -1]
-    decoded.number_kind = np.where((digits >= 0).all(axis=1), last % KINDS, -1)
+    decode_digits(digits, _NX, _NY, _NV, _NAGE, _PER_M, _PER_V, CYCLE_MODULUS, decoded.kind, decoded.grid,
+                  decoded.world, decoded.vote, decoded.vote_size, decoded.vote_cycle)
     return decoded
 
 

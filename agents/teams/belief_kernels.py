@@ -171,3 +171,27 @@ def hear_world(listener: np.ndarray, speaker: np.ndarray, kind: np.ndarray, worl
             ball_vel[i, 0] = vx * ball_decay
             ball_vel[i, 1] = vy * ball_decay
             ball_age[i] = age
+
+
+@njit(cache=True, nogil=True)
+def believe(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray, mate_pos: np.ndarray,
+            mate_age: np.ndarray, opp_pos: np.ndarray, opp_age: np.ndarray, last_seen: np.ndarray,
+            last_seen_cycle: np.ndarray, ball_seen: np.ndarray, ball_at: np.ndarray, ball_distance: np.ndarray,
+            saw: np.ndarray, count: np.ndarray, at: np.ndarray, side: np.ndarray, number: np.ndarray,
+            distance: np.ndarray, position: np.ndarray, listener: np.ndarray, speaker: np.ndarray,
+            kind: np.ndarray, world: np.ndarray, world_kind: int, cycle: int, p: np.ndarray, ball_decay: float,
+            speed_max: float) -> None:  # pragma: no cover - compiled
+    """One cycle of every observer's beliefs in one call: :func:`predict_beliefs`,
+    :func:`see_ball`, :func:`see_players`, each observer's own position (its
+    self-localisation, ``position``), then :func:`hear_world`. ``p``: the
+    :class:`~agents.teams.world_model.BeliefParams` (ball gain, velocity gain, noise share,
+    near, gate share, gate floor)."""
+    predict_beliefs(ball, ball_vel, ball_age, mate_age, opp_age, ball_decay)
+    see_ball(ball, ball_vel, ball_age, last_seen, last_seen_cycle, ball_seen, ball_at, ball_distance, cycle, p[0],
+             p[1], p[2], p[3], ball_decay, speed_max)
+    see_players(saw, count, at, side, number, distance, mate_pos, mate_age, opp_pos, opp_age, p[4], p[5])
+    for i in range(ball.shape[0]):
+        mate_pos[i, i, 0] = position[i, 0]
+        mate_pos[i, i, 1] = position[i, 1]
+        mate_age[i, i] = 0
+    hear_world(listener, speaker, kind, world, world_kind, mate_pos, mate_age, ball, ball_vel, ball_age, ball_decay)

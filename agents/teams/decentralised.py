@@ -41,11 +41,13 @@ from agents.roles.voting import VoteBook, role_conflicts
 from agents.team_messages import heard_batch
 from agents.teams.own_view import OwnViewPositioning
 from agents.teams.positions import current_labels
+from agents.teams.reporting import team_drawing
 from agents.teams.world_model import TeamBeliefs
 from soccer_sim.config import MatchConfig
 from soccer_sim.perception.views import PlayerViews
 from soccer_sim.state import NO_PLAYER, SET_PLAYS, PlayMode
 from soccer_sim.team import SideInfo, TeamCommand, TeamView
+from soccer_sim.team_hooks import Drawing
 
 if TYPE_CHECKING:
     from agents.teams.formation_team import FormationTeam
@@ -257,6 +259,18 @@ class DecentralisedPlay:
         merged["role_conflict_share"] = self._conflict_cycles / cycles
         merged["believed_unfilled_share"] = self._unfilled_cycles / cycles
         return merged
+
+    def drawing(self) -> Drawing:
+        """What a replay may draw: where each player is going (its own goal), and the role
+        targets, roles and formation as the first present outfield player believes them."""
+        positioning = self.positioning
+        if positioning is None:  # a side of no players
+            return Drawing(targets=np.zeros((0, 2)), goals=np.zeros((0, 2)), outfield=np.zeros(0, dtype=np.int64))
+        first = self.brains[0]
+        i = int(self.outfield[0]) if len(self.outfield) else 0
+        return team_drawing(first.formation_set.formation(positioning.situation[i]), positioning.targets[i],
+                            positioning.match_roles[i], positioning.goals, self.outfield,
+                            positioning.followed[i] if len(self.outfield) else None)
 
     def role_labels(self) -> list[str]:
         """Each player's position as it believes it (the role it follows)."""

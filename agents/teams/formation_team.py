@@ -412,9 +412,9 @@ class FormationTeam:
         """What a replay may draw (team frame): each role's target, where each player is
         going, the outfield players and their roles and role targets (None before the first
         assignment), and the current formation's sample balls and triangles (under partial
-        observation: as the goalkeeper's brain, else the first player's, sees them)."""
-        if self.players is not None and self.players.brains:
-            return self.players.brains[max(self.players.goalie, 0)].drawing()
+        observation: the roles as the first outfield player believes them)."""
+        if self.players is not None:
+            return self.players.drawing()
         return team_drawing(self.formation_set.formation(self._situation), self.targets, self._out_roles,
                             self.goals, self.outfield, self.role_of_player)
 

@@ -12,7 +12,8 @@ what it alone believes (row ``i`` of :class:`~agents.teams.world_model.TeamBelie
 4. the role assigner run on its believed team-mates and targets (its *proposal*; on the
    cycles it sees, at most every :data:`ASSIGN_EVERY` cycles, and at once when the play mode
    changes), and the assignment most of the votes it holds agree on followed
-   (:func:`agents.roles.voting.follow_votes`);
+   (:func:`agents.roles.voting.follow_votes`); before a kick-off everybody lines up in its own
+   role (by shirt number), which every player knows without a word;
 5. its goal: the followed role's target, pulled back onside; its interception point when it
    believes it goes for the ball or presses; a steering assigner's field (bidding) where it
    leads; the goalkeeper's guard point;
@@ -40,7 +41,7 @@ from agents.skills.movement import DEFAULT_PACING
 from agents.skills.pacing import pacing_constants
 from agents.skills.player_kernels import paced_dash_rows
 from agents.teams import mechanism
-from agents.teams.own_view_kernels import own_goals, read_play, settle_each
+from agents.teams.own_view_kernels import followed_role_gaps, own_goals, read_play, settle_each
 from agents.teams.positions import nearest_roles
 from agents.teams.reporting import RoleFigures
 from agents.teams.role_kernels import steered_goals
@@ -54,9 +55,16 @@ from soccer_sim.team import TeamView
 if TYPE_CHECKING:
     from agents.teams.formation_team import FormationTeam
 
-ASSIGN_EVERY = 2
+ASSIGN_EVERY = 4
 """Cycles between a player's assignments at least (it assigns on the cycles it sees): its
-believed inputs move little in 0.2 s, and the held assignment is kept between."""
+believed inputs move little in 0.4 s, and the held assignment is kept between."""
+
+RACE_NEAR = 20.0
+"""A player who believes the ball within this (m) runs its ball race again on every cycle it
+sees; farther away..."""
+RACE_EVERY = 2
+"""... on the cycles it sees at least this many cycles after its last race (and at the latest
+one cycle later): between sees its beliefs only roll forward, so the last race holds."""
 
 _PLACED = (PlayMode.KICK_OFF, PlayMode.AFTER_GOAL)
 """Play modes in which players are placed (``move``) rather than run."""
@@ -86,6 +94,7 @@ class OwnViewPositioning:
         self.match_roles = np.tile(np.asarray(first._match_roles, dtype=np.int64), (n, 1))
         """(n, k) the outfield roles each player believes the side fills (all of them for a full side)."""
         self._choose_roles = first._choose_roles
+        self._steers = first._steers
         shape = first.shape
         self._shape = shape
         self._knobs = shape._knobs.copy()
@@ -107,6 +116,8 @@ class OwnViewPositioning:
         """(n, roles, 2) each player's role targets this cycle (its formation query, settled)."""
         self._previous = np.zeros((n, roles, 2))
         self._scratch = np.zeros((n, roles, 2))
+        self.situation = [Situation.NORMAL] * n
+        """Each player's formation situation this cycle."""
         self.proposals = np.tile(np.arange(k, dtype=np.int64), (n, 1))
         """(n, k) the assignment each player computed last (its vote)."""
         self.followed = self.proposals.copy()
@@ -115,6 +126,7 @@ class OwnViewPositioning:
         self._assigned_at = np.full(n, -(1 << 40), dtype=np.int64)
         self._assigned_mode = np.full(n, -1, dtype=np.int64)
         # this cycle's scratch
+        self._raced = np.full(n, -(1 << 40), dtype=np.int64)
         self.our_cycles = np.zeros((n, n), dtype=np.int64)
         self.our_points = np.zeros((n, n, 2))
         self.our_first = np.full(n, -1, dtype=np.int64)
@@ -144,7 +156,8 @@ class OwnViewPositioning:
             self._pick_roles(rows, beliefs)
         r = self._race_arrays
         read_play(rows, ball, beliefs.ball_vel, beliefs.mate_pos, views.velocity, beliefs.opp_pos, views.effort,
-                  r[0], r[1], r[2], r[3], r[4], r[5], r[6], self._race_constants, play_on,
+                  r[0], r[1], r[2], r[3], r[4], r[5], r[6], self._race_constants, views.saw, views.cycle, self._raced,
+                  RACE_NEAR, RACE_EVERY, play_on,
                   self._shape.params.switch_margin, self._shape.params.switch_persist, self._shape.depth,
                   self._shape.attack_push, self._knobs, self.attacking, self._pending, self._in_play, self._block,
                   self.our_cycles, self.our_points, self.our_first, self.their_cycle, self.win_point)
@@ -156,7 +169,10 @@ class OwnViewPositioning:
                     self.model.half_length - 2.0, self._forwards, 1.0 - self.style.box_narrowing, narrowed,
                     self._knobs)
         outfield_rows = rows[self.rank[rows] >= 0]
-        if outfield_rows.size:
+        if mode in _PLACED:  # everybody lines up for a kick-off in its own role (by shirt number)
+            self.proposals[outfield_rows] = self.followed[outfield_rows] = np.arange(self.proposals.shape[1])
+            self._assigned_mode[outfield_rows] = -1
+        elif outfield_rows.size:
             self._assign(outfield_rows, views, beliefs, int(mode))
             if votes is not None:
                 follow_votes(outfield_rows, votes.votes, votes.vote_cycle, self.proposals, views.cycle, votes.horizon,
@@ -204,6 +220,8 @@ class OwnViewPositioning:
         out = self._scratch[: rows.size]
         self.formation_set.formation(situation).positions_each(np.ascontiguousarray(balls), out)
         self.targets[rows] = out
+        for i in rows.tolist():
+            self.situation[i] = situation
 
     def _assign(self, rows: np.ndarray, views: PlayerViews, beliefs: TeamBeliefs, mode: int) -> None:
         """The role assigner on each due player's own model (module docstring, step 4)."""
@@ -253,7 +271,8 @@ class OwnViewPositioning:
                       self.goalie, play_on, self.our_cycles, self.our_points, self.our_first, self.their_cycle,
                       beliefs.ball, beliefs.opp_pos, style.offside_margin, style.pressers, self._goalie_margin,
                       self._area[0], self._area[1], self.goals, self.urgent)
-            self._steer(outfield_rows, beliefs, play_on)
+            if self._steers:
+                self._steer(outfield_rows, beliefs, play_on)
         if self.goalie >= 0 and self.rank[self.goalie] < 0 and np.any(rows == self.goalie):
             self.goals[self.goalie] = skills.guard_position(self.model, beliefs.ball[self.goalie])
             self.urgent[self.goalie] = False
@@ -279,16 +298,12 @@ class OwnViewPositioning:
         ``unfilled_distance``; on sampled cycles the mechanism figures on the first player's model."""
         if not rows.size:
             return
-        ranks = self.rank[rows]
-        roles = self.followed[rows, ranks]
         if mechanism.sampled(views.cycle):  # fixed and held roles v the minimal makespan, as the first player sees them
             i = int(rows[0])
             players = np.ascontiguousarray(beliefs.mate_pos[i][self.outfield])
             role_targets = np.ascontiguousarray(self.targets[i][self.match_roles[i]])
             self.figures.add_sample(*mechanism.makespans(players, role_targets, self._last_followed[i]))
-        switches = int(np.count_nonzero(roles != self._last_followed[rows, ranks]))
-        self._last_followed[rows] = self.followed[rows]
-        targets = self.targets[rows, self.match_roles[rows, roles]]
-        gaps = np.hypot(*(views.position[rows] - targets).T)
-        self.figures.add(switches, True, float(gaps.mean()), float(gaps.max()),
-                         int(np.count_nonzero(gaps > self.style.unfilled_distance)))
+        switches, mean, largest, far = followed_role_gaps(rows, self.rank, self.followed, self._last_followed,
+                                                          self.targets, self.match_roles, views.position,
+                                                          self.style.unfilled_distance)
+        self.figures.add(switches, True, mean, largest, far)

@@ -25,7 +25,8 @@ from agents.teams.shape_kernels import ATTACKING, BALL_X, DEFENDING, LIMITED, MO
 def read_play(rows: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, mate_pos: np.ndarray, own_vel: np.ndarray,
               opp_pos: np.ndarray, effort: np.ndarray, radius: np.ndarray, catch_radius: np.ndarray,
               opp_radius: np.ndarray, opp_catch_radius: np.ndarray, reach: np.ndarray, ball_travel: np.ndarray,
-              coast: np.ndarray, c: np.ndarray, play_on: bool, switch_margin: int, switch_persist: int,
+              coast: np.ndarray, c: np.ndarray, saw: np.ndarray, cycle: int, raced: np.ndarray, near: float,
+              every: int, play_on: bool, switch_margin: int, switch_persist: int,
               depth: float, attack_push: float, knobs: np.ndarray, attacking: np.ndarray, pending: np.ndarray,
               in_play: np.ndarray, block: np.ndarray, our_cycles: np.ndarray, our_points: np.ndarray,
               our_first: np.ndarray, their_cycle: np.ndarray, win_point: np.ndarray) -> None:  # pragma: no cover
@@ -37,7 +38,12 @@ def read_play(rows: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, mate_pos
     hysteresis (:meth:`agents.teams.shape.Shape.play_on`) and its block moved at the block's
     pace towards ``win_point`` (``block`` (n, 3): query x, y and the shift ``depth`` or
     ``depth + attack_push``). ``c``: the race's constants (x_max, y_max, top_speed, area_x,
-    area_y, accel_max, speed_max, decay, body)."""
+    area_y, accel_max, speed_max, decay, body).
+
+    A player runs its race again on the cycles it sees when it believes the ball within
+    ``near`` m or raced ``every`` cycles ago or more, and at the latest ``every + 1`` cycles
+    after the last (``raced``: the cycle of each player's last race); in between its beliefs
+    only roll forward, so its last race holds, a cycle nearer."""
     n, m = mate_pos.shape[1], opp_pos.shape[1]
     vel = np.zeros((n, 2))
     opp_vel = np.zeros((m, 2))
@@ -49,6 +55,15 @@ def read_play(rows: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, mate_pos
     tp = np.empty((1, m, 2))
     everyone = np.zeros(0, dtype=np.bool_)
     for i in rows:
+        since = cycle - raced[i]
+        gap = math.hypot(ball[i, 0] - mate_pos[i, i, 0], ball[i, 1] - mate_pos[i, i, 1])
+        if since <= every and not (saw[i] and (gap < near or since >= every)):
+            _one_cycle_nearer(our_cycles[i], their_cycle, i)
+            _switch_and_block(i, their_cycle[i] - our_cycles[i, our_first[i]] if our_first[i] >= 0
+                              else their_cycle[i] - UNREACHABLE, play_on, switch_margin, switch_persist, depth,
+                              attack_push, knobs, attacking, pending, in_play, block, win_point)
+            continue
+        raced[i] = cycle
         vel[:] = 0.0
         vel[i, 0], vel[i, 1] = own_vel[i, 0], own_vel[i, 1]
         eff[:] = effort[i]
@@ -68,19 +83,41 @@ def read_play(rows: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, mate_pos
             win_point[i] = tp[0, their_first]
         else:
             win_point[i] = ball[i]
-        if not play_on:
-            in_play[i] = False
-            continue
-        if not in_play[i]:
+        _switch_and_block(i, lead, play_on, switch_margin, switch_persist, depth, attack_push, knobs, attacking,
+                          pending, in_play, block, win_point)
+
+
+@njit(cache=True, nogil=True)
+def _one_cycle_nearer(our_cycles: np.ndarray, their_cycle: np.ndarray, i: int) -> None:  # pragma: no cover
+    """A player's last race, one cycle on (cycles still to go one fewer)."""
+    for j in range(our_cycles.shape[0]):
+        if 0 < our_cycles[j] < UNREACHABLE:
+            our_cycles[j] -= 1
+    if 0 < their_cycle[i] < UNREACHABLE:
+        their_cycle[i] -= 1
+
+
+@njit(cache=True, nogil=True)
+def _switch_and_block(i: int, lead: int, play_on: bool, switch_margin: int, switch_persist: int, depth: float,
+                      attack_push: float, knobs: np.ndarray, attacking: np.ndarray, pending: np.ndarray,
+                      in_play: np.ndarray, block: np.ndarray, win_point: np.ndarray) -> None:  # pragma: no cover
+    """Player ``i``'s attack/defend switch for a race ``lead`` (cycles; positive: we are first)
+    and its block's move (:meth:`agents.teams.shape.Shape.play_on`); out of play on, only
+    noted."""
+    if not play_on:
+        in_play[i] = False
+        return
+    winning = lead > 0
+    if not in_play[i]:
+        attacking[i], pending[i] = winning, 0
+    elif winning == attacking[i]:
+        pending[i] = 0
+    else:
+        pending[i] += 1
+        if abs(lead) >= switch_margin or pending[i] >= switch_persist:
             attacking[i], pending[i] = winning, 0
-        elif winning == attacking[i]:
-            pending[i] = 0
-        else:
-            pending[i] += 1
-            if abs(lead) >= switch_margin or pending[i] >= switch_persist:
-                attacking[i], pending[i] = winning, 0
-        advance_block(block[i], win_point[i], depth + attack_push if attacking[i] else depth, in_play[i], knobs)
-        in_play[i] = True
+    advance_block(block[i], win_point[i], depth + attack_push if attacking[i] else depth, in_play[i], knobs)
+    in_play[i] = True
 
 
 @njit(cache=True, nogil=True)
@@ -156,3 +193,28 @@ def own_goals(rows: np.ndarray, rank: np.ndarray, followed: np.ndarray, targets:
                         gx, gy = ball[i, 0], ball[i, 1]
                     urgent[i] = True
         goals[i, 0], goals[i, 1] = gx, gy
+
+
+@njit(cache=True, nogil=True)
+def followed_role_gaps(rows: np.ndarray, rank: np.ndarray, followed: np.ndarray, last_followed: np.ndarray,
+                       targets: np.ndarray, out_roles: np.ndarray, position: np.ndarray,
+                       unfilled: float) -> tuple[int, float, float, int]:  # pragma: no cover - compiled
+    """One cycle's role figures of the deciding outfield players ``rows``: how many switched
+    role since ``last_followed`` (then set to ``followed``), and the mean and the largest
+    distance from a player (its ``position``) to its followed role's target as it believes
+    it, and how many are farther than ``unfilled`` (m)."""
+    switches, far = 0, 0
+    total, largest = 0.0, 0.0
+    for i in rows:
+        r = rank[i]
+        role = followed[i, r]
+        if role != last_followed[i, r]:
+            switches += 1
+        last_followed[i, :] = followed[i, :]
+        t = out_roles[i, role]
+        d = math.hypot(position[i, 0] - targets[i, t, 0], position[i, 1] - targets[i, t, 1])
+        total += d
+        largest = max(largest, d)
+        if d > unfilled:
+            far += 1
+    return switches, total / max(rows.shape[0], 1), largest, far

@@ -30,7 +30,7 @@ import numpy as np
 
 from agents.messages import WORLD
 from agents.team_messages import HeardBatch, heard_batch, world_texts
-from agents.teams.belief_kernels import AGE_NEVER, hear_world, predict_beliefs, see_ball, see_players
+from agents.teams.belief_kernels import AGE_NEVER, believe
 from soccer_sim.config import MatchConfig
 from soccer_sim.perception.views import PlayerViews
 
@@ -81,31 +81,27 @@ class TeamBeliefs:
         self._last_seen = np.zeros((n, 2))
         self._last_seen_cycle = np.full(n, -AGE_NEVER, dtype=np.int64)
         self._rows = np.arange(n)
+        self._params = np.array([params.ball_gain, params.ball_velocity_gain, params.ball_noise_share, params.near,
+                                 params.gate_share, params.gate_floor])
 
     def update(self, views: PlayerViews, heard: HeardBatch | None = None) -> None:
         """One cycle of every player's model from its own row of ``views`` (module docstring);
         ``heard``: the team-mates' messages of ``views`` already decoded (else decoded here)."""
-        p = self.params
-        predict_beliefs(self.ball, self.ball_vel, self.ball_age, self.mate_age, self.opp_age, self._ball_decay)
-        see_ball(self.ball, self.ball_vel, self.ball_age, self._last_seen, self._last_seen_cycle, views.ball_seen,
-                 views.ball, views.ball_distance, views.cycle, p.ball_gain, p.ball_velocity_gain,
-                 p.ball_noise_share, p.near, self._ball_decay, self._ball_speed_max)
-        see_players(views.saw, views.seen_count, views.seen_position, views.seen_side, views.seen_number,
-                    views.seen_distance, self.mate_pos, self.mate_age, self.opp_pos, self.opp_age, p.gate_share,
-                    p.gate_floor)
-        rows = self._rows
-        self.mate_pos[rows, rows] = views.position
-        self.mate_age[rows, rows] = 0
         if heard is None:
             heard = heard_batch(views.heard_mates)
-        if heard.listener.size:
-            hear_world(heard.listener, heard.speaker, heard.decoded.kind, heard.decoded.world, WORLD, self.mate_pos,
-                       self.mate_age, self.ball, self.ball_vel, self.ball_age, self._ball_decay)
+        d = heard.decoded
+        believe(self.ball, self.ball_vel, self.ball_age, self.mate_pos, self.mate_age, self.opp_pos, self.opp_age,
+                self._last_seen, self._last_seen_cycle, views.ball_seen, views.ball, views.ball_distance, views.saw,
+                views.seen_count, views.seen_position, views.seen_side, views.seen_number, views.seen_distance,
+                views.position, heard.listener, heard.speaker, d.kind, d.world, WORLD, views.cycle, self._params,
+                self._ball_decay, self._ball_speed_max)
 
     def kicked(self, kick: np.ndarray, kickable: float) -> None:
         """Each player's own kicks of this cycle (``kick`` (n, 2) m/cycle, team frame; zero rows
         for none) change the velocity it believes the ball has, when it believes the ball is
         within ``kickable`` m: a player knows what it just did."""
+        if not kick.any():
+            return
         gap = self.ball - self.mate_pos[self._rows, self._rows]
         mine = kick.any(axis=1) & (np.einsum("ij,ij->i", gap, gap) <= kickable * kickable)
         if mine.any():

@@ -44,6 +44,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from soccer_sim.config_checks import ConfigError
+from soccer_sim.perception.kernels import arrivals, choose_heard
 from soccer_sim.team import TeamError
 
 SAY_CHARACTERS: str = ("-0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
@@ -177,9 +178,6 @@ class AudioChannel:
         self.team_sizes = sizes
         self.team_names = tuple(team_names)
         self.team = np.repeat(np.array([0, 1], dtype=np.int64), sizes)
-        self._same = self.team[:, None] == self.team[None, :]
-        self._other = ~self._same
-        self._side_key = 2.0 * self._other  # sorts opponents' messages after team-mates'
         n = len(self.team)
         self._cap = np.full((n, 2), params.hear_max, dtype=np.int64)  # [:, 0] team-mates, [:, 1] opponents
         self._cap_cycle: int | None = None
@@ -218,10 +216,8 @@ class AudioChannel:
             self._arrived = np.zeros((self.players, self.players), dtype=bool)
             return
         spoke = np.array([m is not None for m in flat], dtype=bool)
-        diff = pos[:, None, :] - pos[None, :, :]
-        in_range = np.einsum("lsk,lsk->ls", diff, diff) <= self.params.audio_cut_dist ** 2
-        arrived = in_range & spoke[None, :]
-        np.fill_diagonal(arrived, False)
+        arrived = np.empty((self.players, self.players), dtype=bool)
+        arrivals(pos, spoke, float(self.params.audio_cut_dist), arrived)
         self._messages, self._arrived, self._said_cycle = tuple(flat), arrived, int(cycle)
 
     def hear(self, cycle: int, rng: np.random.Generator, attention: np.ndarray | None = None,
@@ -260,22 +256,11 @@ class AudioChannel:
                      direction=direction)
 
     def _choose(self, arrived: np.ndarray, key: np.ndarray) -> np.ndarray:
-        """Which arrived messages each listener hears in full, spending its capacities."""
-        p, n = self.params, self.players
-        # one sort ranks each listener's arrivals: team-mates first (keys in [-1, 1)), then
-        # opponents (keys + 2); the rank within a side is the place in the server's random order
-        same, other = self._same, self._other
-        order = np.argsort(np.where(arrived, key + self._side_key, np.inf), axis=1)
-        rank = np.argsort(order, axis=1)
-        mates_arrived = np.count_nonzero(arrived & same, axis=1)
-        rank -= np.where(same, 0, mates_arrived[:, None])
-        if p.hear_decay == 0:
-            allowed = np.full((n, 2), n, dtype=np.int64)
-        else:
-            allowed = self._cap // p.hear_decay
-        heard = arrived & (rank < np.where(same, allowed[:, :1], allowed[:, 1:]))
-        self._cap[:, 0] -= p.hear_decay * np.count_nonzero(heard & same, axis=1)
-        self._cap[:, 1] -= p.hear_decay * np.count_nonzero(heard & other, axis=1)
+        """Which arrived messages each listener hears in full, spending its capacities: per side
+        (team-mates, opponents) those first in the random order ``key``, as many as the
+        capacity pays for (:func:`~soccer_sim.perception.kernels.choose_heard`)."""
+        heard = np.zeros(arrived.shape, dtype=bool)
+        choose_heard(arrived, key, self.team, self._cap, self.params.hear_decay, heard)
         return heard
 
     def _directions(self, heard: np.ndarray, positions: np.ndarray | None,

@@ -311,3 +311,40 @@ def perceive(pos: np.ndarray, vel: np.ndarray, ball: np.ndarray, present: np.nda
                     s_num[p, c] = q - first[q]
                 s_obj[p, c] = q
         pos_out[p, 0], pos_out[p, 1] = belief[p, 0] * s, belief[p, 1] * s
+
+
+@njit(cache=True, nogil=True)
+def arrivals(pos: np.ndarray, spoke: np.ndarray, cut: float, out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """``out[l, s]``: speaker ``s`` said something (``spoke``) within ``cut`` m of listener
+    ``l`` (never the speaker itself); ``pos`` (players, 2) m."""
+    n = pos.shape[0]
+    cut2 = cut * cut
+    for l in range(n):
+        for s in range(n):
+            dx, dy = pos[l, 0] - pos[s, 0], pos[l, 1] - pos[s, 1]
+            out[l, s] = spoke[s] and l != s and dx * dx + dy * dy <= cut2
+
+
+@njit(cache=True, nogil=True)
+def choose_heard(arrived: np.ndarray, key: np.ndarray, team: np.ndarray, cap: np.ndarray, hear_decay: int,
+                 heard: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Which arrived messages each listener hears in full (into ``heard``), spending its
+    capacities ``cap`` (players, 2: team-mates, opponents): per side, the arrivals with the
+    smallest ``key`` (the server's random order), as many as the side's capacity pays for at
+    ``hear_decay`` each (all of them when that is 0)."""
+    n = arrived.shape[0]
+    for l in range(n):
+        for side in range(2):
+            allowed = cap[l, side] // hear_decay if hear_decay > 0 else n
+            taken = 0
+            while taken < allowed:
+                best, best_key = -1, 0.0
+                for s in range(n):
+                    if arrived[l, s] and not heard[l, s] and (team[s] == team[l]) == (side == 0) \
+                            and (best < 0 or key[l, s] < best_key):
+                        best, best_key = s, key[l, s]
+                if best < 0:
+                    break
+                heard[l, best] = True
+                taken += 1
+            cap[l, side] -= hear_decay * taken
