@@ -8,7 +8,8 @@ what it alone believes (row ``i`` of :class:`~agents.teams.world_model.TeamBelie
 2. in play on, attack or defend with hysteresis and its block moved at the block's pace;
    at set plays the set-play formation at its believed ball (at the centre after a goal);
 3. the formation queried at its block (or ball), the targets shifted and settled as the team's
-   are (rest defence, the block's pace);
+   are (rest defence, the block's pace), and when it believes we attack, support spots around
+   our carrier as role targets;
 4. the role assigner run on its believed team-mates and targets (its *proposal*; on the
    cycles it sees, at most every :data:`ASSIGN_EVERY` cycles, and at once when the play mode
    changes), and the assignment most of the votes it holds agree on followed
@@ -22,9 +23,8 @@ what it alone believes (row ``i`` of :class:`~agents.teams.world_model.TeamBelie
 
 Each step is one compiled call over the team's deciders (the assigner one call per player
 that assigns), which is what lets 22 world models and up to 22 assignments a cycle run in
-about the time of a full-observation match. Missing from the full team's open play, because
-they need the whole team's brain: the support spots around the carrier, the positions' own
-runs and the follow-ups of shots; the player on the ball, our set-play taker and the
+about the time of a full-observation match. Missing from the full team's open play: the
+positions' own runs and the follow-ups of shots (only the shooter knows it shot); the player on the ball, our set-play taker and the
 goalkeeper near its goal decide with a whole brain (:mod:`agents.teams.decentralised`).
 """
 
@@ -41,7 +41,7 @@ from agents.skills.movement import DEFAULT_PACING
 from agents.skills.pacing import pacing_constants
 from agents.skills.player_kernels import paced_dash_rows
 from agents.teams import mechanism
-from agents.teams.own_view_kernels import followed_role_gaps, own_goals, read_play, settle_each
+from agents.teams.own_view_kernels import followed_role_gaps, own_goals, read_play, settle_each, support_each
 from agents.teams.positions import nearest_roles
 from agents.teams.reporting import RoleFigures
 from agents.teams.role_kernels import steered_goals
@@ -168,6 +168,13 @@ class OwnViewPositioning:
                     self._shape.back_roles, beliefs.opp_pos, ball, self._block, self.attacking, play_on,
                     self.model.half_length - 2.0, self._forwards, 1.0 - self.style.box_narrowing, narrowed,
                     self._knobs)
+        shape = self._shape
+        if play_on and not self.style.stationary:
+            sp = shape.params
+            support_each(rows, self.attacking, self.our_first, self.our_cycles, self.our_points, self.their_cycle,
+                         self.targets, self.match_roles, self.followed, self.rank, shape.is_forward, shape.is_back,
+                         beliefs.opp_pos, ball, shape.offsets, sp.support_players, sp.support_pressure,
+                         sp.support_horizon, self.model.half_length / 3.0, shape._support_knobs)
         outfield_rows = rows[self.rank[rows] >= 0]
         if mode in _PLACED:  # everybody lines up for a kick-off in its own role (by shirt number)
             self.proposals[outfield_rows] = self.followed[outfield_rows] = np.arange(self.proposals.shape[1])

@@ -18,7 +18,7 @@ from numba import njit
 from agents.skills.interception_kernels import UNREACHABLE, race_kernel
 from agents.teams.role_kernels import offside_line, shape_targets
 from agents.teams.shape_kernels import ATTACKING, BALL_X, DEFENDING, LIMITED, MODE, OFF, advance_block, \
-    settle_targets
+    settle_targets, support_spots
 
 
 @njit(cache=True, nogil=True)
@@ -218,3 +218,43 @@ def followed_role_gaps(rows: np.ndarray, rank: np.ndarray, followed: np.ndarray,
         if d > unfilled:
             far += 1
     return switches, total / max(rows.shape[0], 1), largest, far
+
+
+@njit(cache=True, nogil=True)
+def support_each(rows: np.ndarray, attacking: np.ndarray, our_first: np.ndarray, our_cycles: np.ndarray,
+                 our_points: np.ndarray, their_cycle: np.ndarray, targets: np.ndarray, match_roles: np.ndarray,
+                 followed: np.ndarray, rank: np.ndarray, is_forward: np.ndarray, is_back: np.ndarray,
+                 opp_pos: np.ndarray, ball: np.ndarray, offsets: np.ndarray, players: int, pressure: int,
+                 horizon: int, third_x: float, knobs: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Each deciding player's support spots as role targets (in place, before its roles are
+    assigned), as :meth:`agents.teams.shape.Shape.support` does for the team: when it believes
+    we attack, our first player reaches the ball within ``horizon`` cycles and an opponent
+    could be there within ``pressure`` (a pressed carrier needs a pass), the targets of the ``players`` eligible roles nearest that carrier
+    (not forwards, not the back line unless the ball is in our third, ``x <= -third_x``, not
+    the carrier's own role) move to open spots around it (:func:`support_spots`)."""
+    k = match_roles.shape[1]
+    out_rows = np.zeros(max(players, 1), dtype=np.int64)
+    out_spots = np.zeros((max(players, 1), 2))
+    candidates = np.empty(k, dtype=np.int64)
+    for i in rows:
+        carrier_row = our_first[i]
+        if not attacking[i] or carrier_row < 0 or rank[carrier_row] < 0 or their_cycle[i] > pressure \
+                or our_cycles[i, carrier_row] > horizon or players == 0:
+            continue
+        cx, cy = our_points[i, carrier_row, 0], our_points[i, carrier_row, 1]
+        carrier_role = match_roles[i, followed[i, rank[carrier_row]]]
+        count = 0
+        for r in range(k):
+            role = match_roles[i, r]
+            if is_forward[role] or role == carrier_role or (cx > -third_x and is_back[role]):
+                continue
+            candidates[count] = role
+            count += 1
+        if count == 0:
+            continue
+        x_max = offside_line(opp_pos[i], ball[i, 0]) - 1.0
+        chosen = support_spots(our_points[i, carrier_row], targets[i], targets[i], candidates[:count], opp_pos[i],
+                               offsets, players, x_max, knobs, out_rows, out_spots)
+        for c in range(chosen):
+            targets[i, out_rows[c], 0] = out_spots[c, 0]
+            targets[i, out_rows[c], 1] = out_spots[c, 1]
