@@ -55,7 +55,7 @@ if TYPE_CHECKING:
 _RECHOSEN = frozenset(SET_PLAYS - {PlayMode.KICK_OFF})
 """Our set plays whose taker each player re-chooses every cycle (a kick-off's taker is placed)."""
 
-BRAIN_DISTANCE = 3.0
+BRAIN_DISTANCE = 2.2
 """A player who believes the ball within this (m) decides with its whole brain (a kick, a
 dribble, a tackle: rcssserver's ``tackle_dist`` is 2 m, the kickable distance about 1 m)."""
 

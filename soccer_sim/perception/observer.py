@@ -64,6 +64,7 @@ class Observer:
         self.channel = AudioChannel(sizes, team_names, config.audio)
         self._team = np.repeat(np.array([0, 1], dtype=np.int64), sizes)
         self._first = np.where(self._team == 0, 0, sizes[0]).astype(np.int64)
+        self._team_list, self._first_list = self._team.tolist(), self._first.tolist()
         self._sign = np.ones(total)
         self._belief = np.zeros((total, 2))
         self._started = False
@@ -143,10 +144,10 @@ class Observer:
             return ((),) * total, ((),) * total
         mates: list[list] = [[] for _ in range(total)]
         opponents: list[list] = [[] for _ in range(total)]
-        team, first = self._team, self._first
+        team, first = self._team_list, self._first_list
         for listener, speaker in zip(*(a.tolist() for a in np.nonzero(heard))):
             if team[speaker] == team[listener]:
-                mates[listener].append((speaker - int(first[speaker]), messages[speaker]))
+                mates[listener].append((speaker - first[speaker], messages[speaker]))
             else:
                 opponents[listener].append(messages[speaker])
-        return tuple(tuple(m) for m in mates), tuple(tuple(o) for o in opponents)
+        return tuple(map(tuple, mates)), tuple(map(tuple, opponents))
