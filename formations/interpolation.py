@@ -22,7 +22,7 @@ overhead per call, so single queries instead use
 * one precomputed affine map per triangle, values = A_t @ (x, y, 1), since
   barycentric interpolation is affine inside a triangle;
 
-all in one compiled call (:func:`_value_kernel`).
+all in one compiled call (:func:`formations.interpolation_kernels.value_kernel`).
 
 Many queries at once use ``find_simplex`` (which amortises its overhead) and
 gathers of the three corner values.
@@ -33,11 +33,11 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit, types
-from numba.extending import intrinsic
 from scipy.spatial import Delaunay
 
 from formations.errors import FormationInputError
+from formations.interpolation_kernels import find_triangle_kernel, grid_cell, nearest_edge_kernel, value_kernel, \
+    values_kernel
 
 GRID_CELLS_ALONG_LONG_SIDE = 64
 """Resolution of the triangle lookup grid (cells along the longer side of the
@@ -48,8 +48,6 @@ OUTSIDE_GRID_MARGIN = 0.25
 the hull's bounding box, so that balls somewhat outside the samples (out of
 play) are projected onto the hull as fast as balls inside are located."""
 
-INSIDE_TOLERANCE = 1e-12
-"""Barycentric coordinates down to minus this count as inside a triangle."""
 
 
 class TriangleInterpolator:
@@ -151,7 +149,7 @@ class TriangleInterpolator:
 
     def _build_flat_tables(self) -> None:
         """The grid's triangle and edge lists as flat arrays (offsets per cell), for the
-        compiled single query :func:`_value_kernel`."""
+        compiled single query :func:`value_kernel`."""
         def flat(lists: list[tuple[int, ...]]) -> tuple[np.ndarray, np.ndarray]:
             offsets = np.zeros(len(lists) + 1, dtype=np.int64)
             offsets[1:] = np.cumsum([len(items) for items in lists])
@@ -167,19 +165,23 @@ class TriangleInterpolator:
         self._edge_inv_length2 = np.ascontiguousarray(self._hull_inv_length2, dtype=np.float64)
         self._edge_values = np.ascontiguousarray(self._edge_start_values)
         self._edge_value_deltas = np.ascontiguousarray(self._edge_delta_values)
+        self._tables = (self._grid_table, *self._grid_shape, self._cell_offsets, self._cell_triangles,
+                        self._bary_table, self._affine, self._edge_offsets, self._cell_edge_items, self._edge_starts,
+                        self._edge_deltas, self._edge_inv_length2, self._edge_values, self._edge_value_deltas)
+        """The compiled queries' arguments after the point, in their order."""
 
     # ---------------------------------------------------------------- queries
     def find_triangle(self, x: float, y: float) -> int:
         """Index of a triangle containing (x, y), or -1 outside the hull."""
         nx, ny = self._grid_shape
-        return _find_triangle_kernel(x, y, self._grid_table, nx, ny, self._cell_offsets, self._cell_triangles,
+        return find_triangle_kernel(x, y, self._grid_table, nx, ny, self._cell_offsets, self._cell_triangles,
                                      self._bary_table)[1]
 
     def nearest_hull_point(self, x: float, y: float) -> tuple[int, float]:
         """Nearest hull edge to (x, y) and the position s in [0, 1] along it."""
         nx, ny = self._grid_shape
-        cell = _grid_cell(x, y, self._grid_table, nx, ny)
-        return _nearest_edge_kernel(x, y, cell, self._edge_offsets, self._cell_edge_items, self._edge_starts,
+        cell = grid_cell(x, y, self._grid_table, nx, ny)
+        return nearest_edge_kernel(x, y, cell, self._edge_offsets, self._cell_edge_items, self._edge_starts,
                                     self._edge_deltas, self._edge_inv_length2)
 
     def value(self, x: float, y: float) -> np.ndarray:
@@ -189,20 +191,14 @@ class TriangleInterpolator:
         if not (math.isfinite(x) and math.isfinite(y)):
             raise FormationInputError(f"query point must be finite, got ({x}, {y})")
         out = np.empty(self.values.shape[1])
-        nx, ny = self._grid_shape
-        _value_kernel(x, y, self._grid_table, nx, ny, self._cell_offsets, self._cell_triangles, self._bary_table,
-                      self._affine, self._edge_offsets, self._cell_edge_items, self._edge_starts, self._edge_deltas,
-                      self._edge_inv_length2, self._edge_values, self._edge_value_deltas, out)
+        value_kernel(x, y, *self._tables, out)
         return out
 
     def values_each(self, points: np.ndarray, out: np.ndarray) -> None:
         """:meth:`value` at each of ``points`` (k, 2) into ``out`` (k, m), in one compiled call
         (the same numbers as k calls of :meth:`value`, for a caller that queries a few points a
         cycle); the points must be finite."""
-        nx, ny = self._grid_shape
-        _values_kernel(points, self._grid_table, nx, ny, self._cell_offsets, self._cell_triangles, self._bary_table,
-                       self._affine, self._edge_offsets, self._cell_edge_items, self._edge_starts, self._edge_deltas,
-                       self._edge_inv_length2, self._edge_values, self._edge_value_deltas, out)
+        values_kernel(points, *self._tables, out)
 
     def values_many(self, points: np.ndarray) -> np.ndarray:
         """Interpolated values (k, m) at points (k, 2).
@@ -287,114 +283,6 @@ class TriangleInterpolator:
         edge, s = self.nearest_hull_point(x, y)
         (ax, ay), (dx, dy) = self._hull_start[edge].tolist(), self._hull_delta[edge].tolist()
         return ax + s * dx, ay + s * dy
-
-
-@intrinsic
-def _fma(typingctx, a, b, c):  # pragma: no cover - compiled
-    """a * b + c with one rounding (the processor's fused multiply-add)."""
-    signature = types.float64(types.float64, types.float64, types.float64)
-
-    def codegen(context, builder, sig, args):
-        return builder.fma(*args)
-
-    return signature, codegen
-
-
-@njit(cache=True, nogil=True)
-def _grid_cell(x: float, y: float, grid: np.ndarray, nx: int, ny: int) -> int:  # pragma: no cover - compiled
-    """The lookup grid's cell holding (x, y), or -1 beyond the grid (``grid``: origin x, y and
-    the inverse cell size)."""
-    fx = (x - grid[0]) * grid[2]
-    fy = (y - grid[1]) * grid[2]
-    if 0.0 <= fx < nx and 0.0 <= fy < ny:
-        return int(fy) * nx + int(fx)
-    return -1
-
-
-@njit(cache=True, nogil=True)
-def _find_triangle_kernel(x: float, y: float, grid: np.ndarray, nx: int, ny: int, cell_offsets: np.ndarray,
-                          cell_triangles: np.ndarray, bary: np.ndarray) -> tuple[int, int]:  # pragma: no cover
-    """(grid cell, triangle) of (x, y): the first of the cell's triangles whose barycentric
-    coordinates (``bary`` rows: the inverse transform's four entries and the reference
-    corner) are all at least ``-INSIDE_TOLERANCE``; triangle -1 when none is (outside the
-    hull), cell -1 beyond the grid."""
-    cell = _grid_cell(x, y, grid, nx, ny)
-    if cell < 0:
-        return cell, -1  # the grid reaches beyond the hull, so this point is outside
-    for k in range(cell_offsets[cell], cell_offsets[cell + 1]):
-        t = cell_triangles[k]
-        dx = x - bary[t, 4]
-        dy = y - bary[t, 5]
-        b0 = bary[t, 0] * dx + bary[t, 1] * dy
-        if b0 < -INSIDE_TOLERANCE:
-            continue
-        b1 = bary[t, 2] * dx + bary[t, 3] * dy
-        if b1 < -INSIDE_TOLERANCE or b0 + b1 > 1.0 + INSIDE_TOLERANCE:
-            continue
-        return cell, t
-    return cell, -1
-
-
-@njit(cache=True, nogil=True)
-def _nearest_edge_kernel(x: float, y: float, cell: int, edge_offsets: np.ndarray, cell_edges: np.ndarray,
-                         starts: np.ndarray, deltas: np.ndarray,
-                         inv_length2: np.ndarray) -> tuple[int, float]:  # pragma: no cover - compiled
-    """The hull edge nearest to (x, y) among the grid cell's candidates (every edge when
-    ``cell`` is -1) and the position s in [0, 1] of the nearest point along it (the first
-    edge among equally near ones)."""
-    first, last = (edge_offsets[cell], edge_offsets[cell + 1]) if cell >= 0 else (0, starts.shape[0])
-    best = math.inf
-    best_edge = 0
-    best_s = 0.0
-    for k in range(first, last):
-        e = cell_edges[k] if cell >= 0 else k
-        ax, ay, dx, dy = starts[e, 0], starts[e, 1], deltas[e, 0], deltas[e, 1]
-        s = ((x - ax) * dx + (y - ay) * dy) * inv_length2[e]
-        if s < 0.0:
-            s = 0.0
-        elif s > 1.0:
-            s = 1.0
-        ex = ax + s * dx - x
-        ey = ay + s * dy - y
-        dist2 = ex * ex + ey * ey
-        if dist2 < best:
-            best = dist2
-            best_edge = e
-            best_s = s
-    return best_edge, best_s
-
-
-@njit(cache=True, nogil=True)
-def _value_kernel(x: float, y: float, grid: np.ndarray, nx: int, ny: int, cell_offsets: np.ndarray,
-                  cell_triangles: np.ndarray, bary: np.ndarray, affine: np.ndarray, edge_offsets: np.ndarray,
-                  cell_edges: np.ndarray, starts: np.ndarray, deltas: np.ndarray, inv_length2: np.ndarray,
-                  edge_values: np.ndarray, edge_value_deltas: np.ndarray,
-                  out: np.ndarray) -> None:  # pragma: no cover - compiled
-    """:meth:`TriangleInterpolator.value` at (x, y) into ``out``: inside the hull the
-    triangle's affine map ``A @ (x, y, 1)``, evaluated as ``fma(A0, x, A1 * y) + A2`` (the
-    order and roundings of the BLAS matrix-vector kernel this query used before it was
-    compiled, on x86-64, so matches did not change); else the values interpolated along the
-    nearest hull edge."""
-    cell, t = _find_triangle_kernel(x, y, grid, nx, ny, cell_offsets, cell_triangles, bary)
-    if t >= 0:
-        for i in range(out.shape[0]):
-            out[i] = _fma(affine[t, i, 0], x, affine[t, i, 1] * y) + affine[t, i, 2]
-        return
-    edge, s = _nearest_edge_kernel(x, y, cell, edge_offsets, cell_edges, starts, deltas, inv_length2)
-    for i in range(out.shape[0]):
-        out[i] = edge_values[edge, i] + s * edge_value_deltas[edge, i]
-
-
-@njit(cache=True, nogil=True)
-def _values_kernel(points: np.ndarray, grid: np.ndarray, nx: int, ny: int, cell_offsets: np.ndarray,
-                   cell_triangles: np.ndarray, bary: np.ndarray, affine: np.ndarray, edge_offsets: np.ndarray,
-                   cell_edges: np.ndarray, starts: np.ndarray, deltas: np.ndarray, inv_length2: np.ndarray,
-                   edge_values: np.ndarray, edge_value_deltas: np.ndarray,
-                   out: np.ndarray) -> None:  # pragma: no cover - compiled
-    """:func:`_value_kernel` at each row of ``points`` into the same row of ``out``."""
-    for p in range(points.shape[0]):
-        _value_kernel(points[p, 0], points[p, 1], grid, nx, ny, cell_offsets, cell_triangles, bary, affine,
-                      edge_offsets, cell_edges, starts, deltas, inv_length2, edge_values, edge_value_deltas, out[p])
 
 
 def _affine_maps(simplices: np.ndarray, transform: np.ndarray, values: np.ndarray) -> np.ndarray:

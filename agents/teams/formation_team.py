@@ -102,8 +102,7 @@ class FormationTeam:
         self._leave = LeaveMatching(assigner, assigner_params) if leave else None  # (agents.teams.ball_role)
         self._brain = lambda: type(self)(assigner, style, name, **assigner_params)
         self.role_filter: Callable[[np.ndarray], np.ndarray] | None = None
-        """A hook from the assignment computed to the one followed (a player's votes, under
-        partial observation); None: the one computed."""
+        """A hook from the assignment computed to the one followed (a player's votes); None: it."""
         self.players: DecentralisedPlay | None = None
         """Under partial observation: the players deciding on their own (else None)."""
 
@@ -127,7 +126,6 @@ class FormationTeam:
                              f"{len(self._outfield_roles)} of them outfield (formation {self.style.system!r}), "
                              f"not {n} with {outfield_count} outfield")
         self.skills = skills.SkillContext.for_match(config, side_info)
-        """The skills' per-match context (motion model, tables, the view's checked arrays)."""
         self.model = model = self.skills.model
         self.config = config
         self.n = n
@@ -267,10 +265,8 @@ class FormationTeam:
         return command
 
     def wake(self, mode_since: int) -> None:
-        """This brain did not act last cycle (a player's own brain under partial observation
-        acts only on the ball and at set plays): forget what holds only from one cycle to the
-        next (our pass in flight, a dribble, the block's pace), and take the current play
-        mode as begun at ``mode_since``."""
+        """This brain did not act last cycle (a player's own, under partial observation): forget
+        what holds only from cycle to cycle; the play mode began at ``mode_since``."""
         self._our_pass_in_flight = False
         self._dribble_dash = None
         self.shape.restart()
@@ -400,9 +396,7 @@ class FormationTeam:
         return self.players.statistics() if self.players is not None else self.figures.statistics()
 
     def role_labels(self) -> list[str]:
-        """Each player's current position (row order; :mod:`agents.teams.positions`): the
-        goalkeeper's, then each outfield player's assigned role's (its own formation role's
-        before the first assignment)."""
+        """Each player's current position (row order; :func:`~agents.teams.positions.current_labels`)."""
         if self.players is not None:
             return self.players.role_labels()
         return current_labels(self._role_labels, self.n, self.outfield, self._match_roles, self.role_of_player,

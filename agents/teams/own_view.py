@@ -85,7 +85,7 @@ class OwnViewPositioning:
         self.outfield = first.outfield
         self.model = model = first.model
         self.formation_set = first.formation_set
-        self.style = style = first.style
+        self.style = first.style
         k = len(self.outfield)
         roles = len(self.formation_set.roles)
         self.rank = np.full(n, -1, dtype=np.int64)

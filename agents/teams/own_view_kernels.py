@@ -241,7 +241,7 @@ def support_each(rows: np.ndarray, attacking: np.ndarray, our_first: np.ndarray,
         if not attacking[i] or carrier_row < 0 or rank[carrier_row] < 0 or their_cycle[i] > pressure \
                 or our_cycles[i, carrier_row] > horizon or players == 0:
             continue
-        cx, cy = our_points[i, carrier_row, 0], our_points[i, carrier_row, 1]
+        cx = our_points[i, carrier_row, 0]
         carrier_role = match_roles[i, followed[i, rank[carrier_row]]]
         count = 0
         for r in range(k):
