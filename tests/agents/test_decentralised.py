@@ -10,6 +10,7 @@ import pytest
 from soccer_sim import MatchConfig, resolve_team, run_match
 from soccer_sim.match import Match
 from soccer_sim.perception.config import ObservationConfig
+from soccer_sim.state import PlayMode
 from soccer_sim.trivial_teams import ChaserTeam
 
 PARTIAL = MatchConfig(observation=ObservationConfig("partial"), max_cycles=120)
@@ -59,7 +60,6 @@ def test_changing_one_players_view_changes_no_other_players_command():
     assert not np.array_equal(first.dash[j], second.dash[j]) or first.say[j] != second.say[j]
 
 
-@pytest.mark.slow  # the default suite plays decentralised brains in the test above
 def test_a_decentralised_match_plays_reports_conflicts_and_is_deterministic():
     config = MatchConfig(observation=ObservationConfig("partial"), max_cycles=400)
     one = run_match("mmdr", "static", seed=2, config=config)
@@ -89,3 +89,43 @@ def test_a_decentralised_match_is_the_same_in_another_process():
     here = run_match("mmd+msd2", "counter-442", seed=6, config=config)
     out = subprocess.run([sys.executable, "-c", _SCRIPT], capture_output=True, text=True, check=True).stdout.split()
     assert out[-1] == here.state.pos.tobytes().hex()
+
+
+def test_before_a_kick_off_every_player_lines_up_in_its_own_role():
+    # No word is needed for a kick-off: each player takes its shirt-number role, so no two
+    # players are placed on one spot (they would be, each sure the role is its own).
+    match = Match("mmdr", "mmd+msd2", seed=3, config=PARTIAL)
+    match.start()
+    for _ in range(3):
+        match.step()
+        for team in match.teams:
+            positioning = team.players.positioning
+            outfield = team.players.outfield
+            roles = positioning.followed[outfield, positioning.rank[outfield]]
+            np.testing.assert_array_equal(roles, np.arange(len(outfield)))
+    for side in (slice(0, 11), slice(11, 22)):
+        spots = match.state.pos[side]
+        gaps = np.hypot(*(spots[:, None, :] - spots[None, :, :]).transpose(2, 0, 1))
+        assert gaps[~np.eye(11, dtype=bool)].min() > 2.0
+
+
+def test_only_players_near_the_ball_decide_with_a_whole_brain_in_play_on():
+    from agents.teams.decentralised import BRAIN_DISTANCE
+
+    match = Match("mmdr", "counter-442", seed=1, config=MatchConfig(observation=ObservationConfig("partial"),
+                                                                    max_cycles=400))
+    match.start()
+    acted = []
+    play = match.teams[0].players
+    original = play._brain_acts
+
+    def spy(i, views, *rest):
+        acted.append((i, views.play_mode, float(np.hypot(*(play.beliefs.ball[i] - views.position[i])))))
+        return original(i, views, *rest)
+
+    play._brain_acts = spy
+    for _ in range(399):
+        match.step()
+    in_play = [(i, gap) for i, mode, gap in acted if mode == PlayMode.PLAY_ON and i != play.goalie]
+    assert in_play, "somebody of ours must have played the ball"
+    assert all(gap < BRAIN_DISTANCE for _, gap in in_play)

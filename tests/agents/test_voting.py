@@ -69,3 +69,19 @@ def test_one_player_follows_as_the_team_call_says_and_votes_may_cover_fewer_role
         np.testing.assert_array_equal(book.follow_one(i, 6, own[i]), team[i])
     np.testing.assert_array_equal(team[0], SWAP)
     np.testing.assert_array_equal(team[1], IDENTITY)
+
+
+def test_between_tied_votes_of_others_the_most_recent_wins_then_the_lowest_team_mate():
+    other = np.array([0, 2, 1, 3])
+    own = np.stack([np.array([3, 2, 1, 0])] + [IDENTITY] * 4)
+
+    def book_with(swap_cycle: int, other_cycle: int) -> VoteBook:
+        book = VoteBook(5, k=4)  # player 0 holds SWAP from 3 and 4, `other` from 1 and 2: two each
+        for speaker, vote, cycle in ((3, SWAP, swap_cycle), (4, SWAP, swap_cycle), (1, other, other_cycle),
+                                     (2, other, other_cycle)):
+            book.hear(10, heard({0: [(speaker, VoteBook.message(vote, cycle))]}, n=5))
+        return book
+
+    np.testing.assert_array_equal(book_with(9, 8).follow(10, own)[0], SWAP)    # the newer
+    np.testing.assert_array_equal(book_with(8, 9).follow(10, own)[0], other)
+    np.testing.assert_array_equal(book_with(9, 9).follow_one(0, 10, own[0]), other)  # team-mate 1 before 3

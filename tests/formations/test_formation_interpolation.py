@@ -110,6 +110,9 @@ def test_vectorised_matches_single_on_a_large_batch():
     many = formation.positions_many(balls)
     single = np.array([formation.positions(b) for b in balls])
     np.testing.assert_allclose(single, many, rtol=0, atol=1e-9)
+    each = np.empty_like(single)
+    formation.positions_each(balls, each)
+    np.testing.assert_array_equal(each, single)  # the same compiled query, point by point: bit for bit
 
 
 def test_query_shapes_and_results_are_fresh_arrays(random_formation):
