@@ -16,8 +16,10 @@ behaviour table also carries the mechanism the built-in team measures
 (:mod:`agents.teams.mechanism`, every 10th play-on cycle): the share of cycles in which the
 fixed shirt-number roles, and the roles held at the previous cycle, already were a
 minimal-makespan assignment, the mean makespan gap of the fixed roles (m), and the share of
-role-cycles a role was unfilled (its player more than 10 m from its target). Teams that do
-not report a figure show "-".
+role-cycles a role was unfilled (its player more than 10 m from its target). Under partial
+observation (``--observation partial``) it adds the makespan the players believe in and the
+role conflicts their decentralised assignment leaves (:data:`PARTIAL_BEHAVIOUR`). Teams that
+do not report a figure show "-".
 """
 
 from __future__ import annotations
@@ -40,6 +42,17 @@ BEHAVIOUR = (("role switches / min", "role_switches_per_minute", 1.0),
              ("held roles optimal (share)", "held_roles_optimal_share", 1.0),
              ("role unfilled (share)", "role_unfilled_share", 1.0))
 """(column, statistic, scale) of the behaviour table."""
+PARTIAL_BEHAVIOUR = (("makespan (m)", "target_distance_max", 1.0),
+                     ("role conflicts (share)", "role_conflict_share", 1.0),
+                     ("roles nobody believes held (share)", "believed_unfilled_share", 1.0))
+"""The columns added under partial observation: the makespan as the players believe it (the
+largest distance from a player to the target of the role it follows, per cycle), and the
+shares of play-on cycles with a role two players believe they hold, or one nobody does."""
+
+
+def behaviour_columns(params: dict) -> tuple:
+    """The behaviour table's (column, statistic, scale) for a run's ``params``."""
+    return BEHAVIOUR + (PARTIAL_BEHAVIOUR if params.get("observation", "full") == "partial" else ())
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -105,11 +118,12 @@ def tables(records: Sequence, params: dict) -> tuple:
     references = [o for o in opponents if o not in teams]
     behaviour = Table(f"behaviour per match, mean (SE), all opponents; paired with {baseline} against "
                       f"{', '.join(references) or '(no common opponent)'}",
-                      ["team (assigner)", *(name for name, _, _ in BEHAVIOUR), f"GD minus {baseline} (SE)", "p"])
+                      ["team (assigner)", *(name for name, _, _ in behaviour_columns(params)),
+                       f"GD minus {baseline} (SE)", "p"])
     behaviour_rows = []
     for team in teams:
         cells, row = [team], [team]
-        for _, figure, scale in BEHAVIOUR:
+        for _, figure, scale in behaviour_columns(params):
             value = team_figure(records, team, figure)
             cells.append("-" if value.n == 0 else f"{value.mean * scale:.2f} ({value.se * scale:.2f})")
             row += [value.mean * scale, value.se * scale]
@@ -140,7 +154,8 @@ def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list
         write_csv(out_dir / "case-study.csv", ["team", "opponent", "games", "wins", "draws", "losses", "forfeits",
                                                "goals_for", "goals_against", *ESTIMATE_COLUMNS], goal_rows),
         write_csv(out_dir / "behaviour.csv",
-                  ["team", *(f"{figure}{suffix}" for _, figure, _ in BEHAVIOUR for suffix in ("", "_se")),
+                  ["team", *(f"{figure}{suffix}" for _, figure, _ in behaviour_columns(params)
+                             for suffix in ("", "_se")),
                    f"gd_minus_{params['baseline']}", "gd_difference_se", "p_value"], behaviour_rows),
         write_markdown(out_dir / "case-study.md", [goal_table, behaviour],
                        f"Case study: {len(records)} matches, seeds from {params['seed']}, cycles per match: {cycles}."),

@@ -3,6 +3,8 @@ clear refusal of teams that cannot play under it, before any match."""
 
 from __future__ import annotations
 
+import csv
+
 import pytest
 
 from experiments.cli import main
@@ -43,3 +45,17 @@ def test_a_partial_tournament_plays_and_play_takes_the_option(tmp_path, capsys):
     assert main(["play", "examples.formation_team:FormationTeam", "idle", "--cycles", "40", "--observation",
                  "partial"]) == 2
     assert "cannot play under --observation partial" in capsys.readouterr().err
+
+
+def test_a_partial_case_study_reports_the_decentralised_assignments_conflicts(tmp_path, capsys):
+    out, tables = tmp_path / "cs.sqlite", tmp_path / "tables"
+    assert main(["experiment", "case-study", "--teams", "mmdr,static", "--opponents", "idle", "--baseline", "static",
+                 "--games", "2", "--cycles", "150", "--observation", "partial", "--out", str(out), "--tables",
+                 str(tables), "--no-progress", "--workers", "1"]) == 0
+    with open(tables / "behaviour.csv") as handle:
+        rows = {row["team"]: row for row in csv.DictReader(handle)}
+    for team in ("mmdr", "static"):
+        assert 0.0 <= float(rows[team]["role_conflict_share"]) <= 1.0
+        assert 0.0 <= float(rows[team]["believed_unfilled_share"]) <= 1.0
+        assert float(rows[team]["target_distance_max"]) > 0.0
+    assert "role conflicts (share)" in (tables / "case-study.md").read_text()
