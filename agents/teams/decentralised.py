@@ -8,7 +8,8 @@ of the same assigner and style, with its own memory and random generator). Per c
 1. every player's world model takes in its own observation and the messages it heard;
 2. a player on the ball (it believes the ball within :data:`BRAIN_DISTANCE`, or holds it),
    the goalkeeper with the ball in our penalty area, and at our set plays the player who
-   believes it is the taker (re-chosen every cycle) or can kick the ball, decide with their
+   believes it is the taker (re-chosen every cycle; at kick-offs the player whose own spot
+   is nearest the centre) or can kick the ball, decide with their
    whole brain on a team view made from their beliefs alone (team-mates and opponents where
    they believe them, their velocities unknown and taken as zero, everyone's stamina their
    own): kicks, passes, dribbles, tackles, catches, set-play kicks;
@@ -94,6 +95,12 @@ class DecentralisedPlay:
         self._goal_kick_keeper = first is not None and first.style.goalkeeper_goal_kicks and self.goalie >= 0
         self._area = (first.model.half_length - first.model.penalty_area_length - 2.0,
                       first.model.penalty_area_half_width + 2.0) if first is not None else (0.0, 0.0)
+        self._kick_off_taker = -1
+        """Our kick-off taker: the outfield player whose own spot is nearest the centre (lowest
+        number on a tie), which every player knows without a word, as all line up by number."""
+        if len(self.outfield):
+            gaps = np.hypot(*spots[self.outfield].T)
+            self._kick_off_taker = int(self.outfield[int(np.argmin(gaps))])
         self._brain_cycle = np.full(n, -2, dtype=np.int64)
         self._mode_key: tuple[int, bool] = (-1, False)
         self._mode_since = 0
@@ -168,9 +175,13 @@ class DecentralisedPlay:
             return rows & views.present
         if mode not in SET_PLAYS:
             return np.zeros(self.n, dtype=bool)
-        # each player's taker: the outfield player nearest its believed ball (our goalkeeper at goal kicks)
+        # each player's taker: the outfield player nearest its believed ball (our goalkeeper at
+        # goal kicks, the known kick-off taker at kick-offs)
         rows = near < (self._kickable + 1.0) ** 2
-        if mode == PlayMode.GOAL_KICK and self._goal_kick_keeper:
+        if mode == PlayMode.KICK_OFF:
+            if self._kick_off_taker >= 0:
+                rows[self._kick_off_taker] = True
+        elif mode == PlayMode.GOAL_KICK and self._goal_kick_keeper:
             rows[self.goalie] = True
         elif len(self.outfield):
             mates = beliefs.mate_pos[:, self.outfield] - beliefs.ball[:, None, :]
@@ -191,6 +202,8 @@ class DecentralisedPlay:
         # the ball untaken, while beliefs about the players near the ball soon agree.
         if rechoose:
             brain.set_plays.taker = -1
+        elif views.play_mode == PlayMode.KICK_OFF and views.mode_ours and self._kick_off_taker >= 0:
+            brain.set_plays.taker = self._kick_off_taker
         own = brain.act(self._view_of(i, views))
         if rechoose and brain.set_plays.taker != taker:
             brain.set_plays.routine = None  # the next cycle's routine is made around the new taker
