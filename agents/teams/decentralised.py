@@ -40,7 +40,7 @@ import numpy as np
 
 from agents.roles.voting import VoteBook, role_conflicts
 from agents.team_messages import heard_batch
-from agents.teams.own_view import OwnViewPositioning
+from agents.teams.own_view import PLACED, OwnViewPositioning
 from agents.teams.positions import current_labels
 from agents.teams.reporting import team_drawing
 from agents.teams.world_model import TeamBeliefs
@@ -54,6 +54,7 @@ if TYPE_CHECKING:
     from agents.teams.formation_team import FormationTeam
 
 _RECHOSEN = frozenset(SET_PLAYS - {PlayMode.KICK_OFF})
+
 """Our set plays whose taker each player re-chooses every cycle (a kick-off's taker is placed)."""
 
 BRAIN_DISTANCE = 2.2
@@ -112,6 +113,9 @@ class DecentralisedPlay:
         """Player ``i``'s brain's hook from its computed assignment to the one it follows."""
         def follow(proposal: np.ndarray) -> np.ndarray:
             positioning = self.positioning
+            if self._mode_key[0] in PLACED:  # lined up by shirt number, as everybody else
+                positioning.proposals[i] = positioning.followed[i] = np.arange(len(proposal))
+                return positioning.followed[i].copy()
             positioning.proposals[i] = proposal
             if self.votes is None:
                 return proposal

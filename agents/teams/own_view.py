@@ -66,7 +66,7 @@ RACE_EVERY = 2
 """... on the cycles it sees at least this many cycles after its last race (and at the latest
 one cycle later): between sees its beliefs only roll forward, so the last race holds."""
 
-_PLACED = (PlayMode.KICK_OFF, PlayMode.AFTER_GOAL)
+PLACED = (PlayMode.KICK_OFF, PlayMode.AFTER_GOAL)
 """Play modes in which players are placed (``move``) rather than run."""
 
 
@@ -176,7 +176,7 @@ class OwnViewPositioning:
                          beliefs.opp_pos, ball, shape.offsets, sp.support_players, sp.support_pressure,
                          sp.support_horizon, self.model.half_length / 3.0, shape._support_knobs)
         outfield_rows = rows[self.rank[rows] >= 0]
-        if mode in _PLACED:  # everybody lines up for a kick-off in its own role (by shirt number)
+        if mode in PLACED:  # everybody lines up for a kick-off in its own role (by shirt number)
             self.proposals[outfield_rows] = self.followed[outfield_rows] = np.arange(self.proposals.shape[1])
             self._assigned_mode[outfield_rows] = -1
         elif outfield_rows.size:
@@ -194,7 +194,7 @@ class OwnViewPositioning:
                         self._pacing, dash, self._budgets)
         if play_on:
             self._measure(outfield_rows, views, beliefs)
-        if mode in _PLACED:
+        if mode in PLACED:
             return self.goals
         return None
 
