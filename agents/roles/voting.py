@@ -160,8 +160,19 @@ def _same(a: np.ndarray, b: np.ndarray) -> bool:  # pragma: no cover - compiled
     return True
 
 
-def role_conflicts(roles: np.ndarray, n_roles: int) -> tuple[int, int]:
-    """(roles claimed by two or more players, roles claimed by nobody) for ``roles`` (k,), the
-    role each player believes it holds (under one shared assignment both are 0)."""
-    counts = np.bincount(np.asarray(roles, dtype=np.int64), minlength=n_roles)[:n_roles]
-    return int(np.count_nonzero(counts > 1)), int(np.count_nonzero(counts == 0))
+@njit(cache=True, nogil=True)
+def role_conflicts(roles: np.ndarray, n_roles: int) -> tuple[int, int]:  # pragma: no cover - compiled
+    """(roles claimed by two or more players, roles claimed by nobody) for ``roles`` (k,) int64,
+    the role each player believes it holds (under one shared assignment both are 0); roles
+    outside ``0 .. n_roles - 1`` are not counted."""
+    counts = np.zeros(n_roles, dtype=np.int64)
+    for r in roles:
+        if 0 <= r < n_roles:
+            counts[r] += 1
+    shared, empty = 0, 0
+    for c in counts:
+        if c > 1:
+            shared += 1
+        elif c == 0:
+            empty += 1
+    return shared, empty

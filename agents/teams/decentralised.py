@@ -41,6 +41,7 @@ import numpy as np
 from agents.roles.voting import VoteBook, role_conflicts
 from agents.team_messages import heard_batch
 from agents.teams.own_view import PLACED, OwnViewPositioning
+from agents.teams.own_view_kernels import whole_brain_rows
 from agents.teams.positions import current_labels
 from agents.teams.reporting import team_drawing
 from agents.teams.world_model import TeamBeliefs
@@ -103,6 +104,7 @@ class DecentralisedPlay:
             gaps = np.hypot(*spots[self.outfield].T)
             self._kick_off_taker = int(self.outfield[int(np.argmin(gaps))])
         self._brain_cycle = np.full(n, -2, dtype=np.int64)
+        self._on_ball_rows = np.zeros(n, dtype=bool)
         self._mode_key: tuple[int, bool] = (-1, False)
         self._mode_since = 0
         self._play_on_cycles = 0
@@ -159,39 +161,30 @@ class DecentralisedPlay:
         return command
 
     def _on_ball(self, views: PlayerViews) -> np.ndarray:
-        """(n,) the players who decide with their whole brain this cycle (module docstring, step 2)."""
-        mode, beliefs = views.play_mode, self.beliefs
-        gap = beliefs.ball - views.position
-        near = np.einsum("ij,ij->i", gap, gap)
-        if mode == PlayMode.PLAY_ON:
-            rows = (near < BRAIN_DISTANCE ** 2) | views.holds_ball
-            g = self.goalie
-            if g >= 0:
-                bx, by = beliefs.ball[g]
-                rows[g] |= bx <= -self._area[0] and abs(by) <= self._area[1]
-            return rows & views.present
-        if not views.mode_ours:
-            return np.zeros(self.n, dtype=bool)
-        if mode == PlayMode.GOALIE_HOLDS:
-            rows = np.zeros(self.n, dtype=bool)
+        """(n,) the players who decide with their whole brain this cycle (module docstring,
+        step 2; :func:`~agents.teams.own_view_kernels.whole_brain_rows`)."""
+        rows, mode = self._on_ball_rows, views.play_mode
+        rows[:] = False
+        play_on = mode == PlayMode.PLAY_ON
+        if not play_on and not views.mode_ours:
+            return rows
+        if not play_on and mode == PlayMode.GOALIE_HOLDS:
             if self.goalie >= 0:
-                rows[self.goalie] = True
-            return rows & views.present
-        if mode not in SET_PLAYS:
-            return np.zeros(self.n, dtype=bool)
-        # each player's taker: the outfield player nearest its believed ball (our goalkeeper at
-        # goal kicks, the known kick-off taker at kick-offs)
-        rows = near < (self._kickable + 1.0) ** 2
+                rows[self.goalie] = views.present[self.goalie]
+            return rows
+        set_play = not play_on and mode in SET_PLAYS
+        if not play_on and not set_play:
+            return rows
+        taker = -1
         if mode == PlayMode.KICK_OFF:
-            if self._kick_off_taker >= 0:
-                rows[self._kick_off_taker] = True
+            taker = self._kick_off_taker
         elif mode == PlayMode.GOAL_KICK and self._goal_kick_keeper:
-            rows[self.goalie] = True
-        elif len(self.outfield):
-            mates = beliefs.mate_pos[:, self.outfield] - beliefs.ball[:, None, :]
-            nearest = self.outfield[np.argmin(np.einsum("ijk,ijk->ij", mates, mates), axis=1)]
-            rows |= nearest == np.arange(self.n)
-        return rows & views.present
+            taker = self.goalie
+        beliefs = self.beliefs
+        whole_brain_rows(play_on, set_play, beliefs.ball, views.position, views.holds_ball, views.present,
+                         beliefs.mate_pos, self.outfield, taker, set_play and mode != PlayMode.KICK_OFF and taker < 0,
+                         self.goalie, BRAIN_DISTANCE, self._kickable + 1.0, self._area[0], self._area[1], rows)
+        return rows
 
     def _brain_acts(self, i: int, views: PlayerViews, rechoose: bool, move: np.ndarray | None) -> np.ndarray | None:
         """Player ``i`` decides with its whole brain on its beliefs; its own row of the brain's

@@ -258,3 +258,35 @@ def support_each(rows: np.ndarray, attacking: np.ndarray, our_first: np.ndarray,
         for c in range(chosen):
             targets[i, out_rows[c], 0] = out_spots[c, 0]
             targets[i, out_rows[c], 1] = out_spots[c, 1]
+
+
+@njit(cache=True, nogil=True)
+def whole_brain_rows(play_on: bool, set_play: bool, ball: np.ndarray, position: np.ndarray, holds: np.ndarray,
+                     present: np.ndarray, mate_pos: np.ndarray, outfield: np.ndarray, taker: int, nearest_taker: bool,
+                     goalie: int, brain_distance: float, reach: float, area_x: float, area_y: float,
+                     out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Which present players decide with their whole brain this cycle (into ``out``), each by
+    its own beliefs: in play on those who believe the ball within ``brain_distance`` m or
+    hold it, and the goalkeeper who believes it in or near its penalty area (``x <= -area_x``,
+    ``|y| <= area_y``); at our set plays (``set_play``) those who believe the ball within
+    ``reach`` m, ``taker`` (>= 0) and, with ``nearest_taker``, each outfield player who
+    believes itself the nearest of the outfield to the ball."""
+    for i in range(out.shape[0]):
+        dx, dy = ball[i, 0] - position[i, 0], ball[i, 1] - position[i, 1]
+        near = dx * dx + dy * dy
+        row = False
+        if play_on:
+            row = near < brain_distance * brain_distance or holds[i]
+            if i == goalie:
+                row = row or (ball[i, 0] <= -area_x and abs(ball[i, 1]) <= area_y)
+        elif set_play:
+            row = near < reach * reach or i == taker
+            if nearest_taker and not row and outfield.shape[0] > 0:
+                best, best_d = -1, np.inf
+                for j in outfield:
+                    ex, ey = mate_pos[i, j, 0] - ball[i, 0], mate_pos[i, j, 1] - ball[i, 1]
+                    d = ex * ex + ey * ey
+                    if d < best_d:
+                        best, best_d = j, d
+                row = best == i
+        out[i] = row and present[i]
