@@ -116,6 +116,8 @@ class OwnViewPositioning:
         """(n, roles, 2) each player's role targets this cycle (its formation query, settled)."""
         self._previous = np.zeros((n, roles, 2))
         self._scratch = np.zeros((n, roles, 2))
+        self._formations: dict = {}
+        """The formation of each situation queried so far (a dictionary lookup a cycle)."""
         self.situation = [Situation.NORMAL] * n
         """Each player's formation situation this cycle."""
         self.proposals = np.tile(np.arange(k, dtype=np.int64), (n, 1))
@@ -212,10 +214,14 @@ class OwnViewPositioning:
         (attack or defend), at set plays the set-play formation at its ball (the centre after a
         goal), otherwise the normal one."""
         if mode == PlayMode.PLAY_ON:
-            for attacking in (True, False):
-                group = rows[self.attacking[rows] == attacking]
-                if group.size:
-                    self._positions(group, self._block[group, :2], Situation.ATTACK if attacking else Situation.DEFEND)
+            attacking = self.attacking[rows]
+            count = int(np.count_nonzero(attacking))
+            if count in (0, rows.size):  # (usually: all agree)
+                self._positions(rows, self._block[rows, :2], Situation.ATTACK if count else Situation.DEFEND)
+                return
+            for side, situation in ((attacking, Situation.ATTACK), (~attacking, Situation.DEFEND)):
+                group = rows[side]
+                self._positions(group, self._block[group, :2], situation)
             return
         situation = Situation.NORMAL
         if mode == PlayMode.AFTER_GOAL or mode in SET_PLAYS or mode == PlayMode.GOALIE_HOLDS:
@@ -225,19 +231,22 @@ class OwnViewPositioning:
     def _positions(self, rows: np.ndarray, balls: np.ndarray, situation: Situation) -> None:
         """The formation of ``situation`` queried at ``balls`` (one per row) into ``targets[rows]``."""
         out = self._scratch[: rows.size]
-        self.formation_set.formation(situation).positions_each(np.ascontiguousarray(balls), out)
+        formation = self._formations.get(situation)
+        if formation is None:
+            formation = self._formations[situation] = self.formation_set.formation(situation)
+        formation.positions_each(np.ascontiguousarray(balls), out)
         self.targets[rows] = out
         for i in rows.tolist():
             self.situation[i] = situation
 
     def _assign(self, rows: np.ndarray, views: PlayerViews, beliefs: TeamBeliefs, mode: int) -> None:
         """The role assigner on each due player's own model (module docstring, step 4)."""
-        cycle, saw = views.cycle, views.saw
+        cycle = views.cycle
         play_on = mode == PlayMode.PLAY_ON
+        due = (self._assigned_mode[rows] != mode) | (views.saw[rows] & (cycle - self._assigned_at[rows] >= ASSIGN_EVERY))
+        rows = rows[due]
+        self._assigned_at[rows], self._assigned_mode[rows] = cycle, mode
         for i in rows.tolist():
-            if self._assigned_mode[i] == mode and (not saw[i] or cycle - self._assigned_at[i] < ASSIGN_EVERY):
-                continue
-            self._assigned_at[i], self._assigned_mode[i] = cycle, mode
             brain = self.brains[i]
             players = beliefs.mate_pos[i][self.outfield]
             role_targets = self.targets[i][self.match_roles[i]]
