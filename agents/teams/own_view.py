@@ -91,8 +91,11 @@ class OwnViewPositioning:
         self.rank = np.full(n, -1, dtype=np.int64)
         """(n,) each player's index among the outfield players (-1: the goalkeeper)."""
         self.rank[self.outfield] = np.arange(k)
-        self.match_roles = np.tile(np.asarray(first._match_roles, dtype=np.int64), (n, 1))
-        """(n, k) the outfield roles each player believes the side fills (all of them for a full side)."""
+        self.match_roles = np.zeros((n, k), dtype=np.int64)
+        """(n, k) the outfield roles each player believes the side fills (all of them for a full
+        side; a smaller side's players each pick theirs on the first cycle)."""
+        if not first._choose_roles:
+            self.match_roles[:] = first._match_roles
         self._choose_roles = first._choose_roles
         self._steers = first._steers
         shape = first.shape
@@ -155,7 +158,7 @@ class OwnViewPositioning:
         play_on = mode == PlayMode.PLAY_ON
         ball = beliefs.ball
         if self._choose_roles:
-            self._pick_roles(rows, beliefs)
+            self._pick_roles(np.flatnonzero(views.present), beliefs)
         r = self._race_arrays
         read_play(rows, ball, beliefs.ball_vel, beliefs.mate_pos, views.velocity, beliefs.opp_pos, views.effort,
                   r[0], r[1], r[2], r[3], r[4], r[5], r[6], self._race_constants, views.saw, views.cycle, self._raced,

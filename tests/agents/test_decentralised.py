@@ -129,3 +129,10 @@ def test_only_players_near_the_ball_decide_with_a_whole_brain_in_play_on():
     in_play = [(i, gap) for i, mode, gap in acted if mode == PlayMode.PLAY_ON and i != play.goalie]
     assert in_play, "somebody of ours must have played the ball"
     assert all(gap < BRAIN_DISTANCE for _, gap in in_play)
+
+
+@pytest.mark.parametrize("scenario", ["3-vs-1-with-keeper", "empty-goal"])
+def test_smaller_sides_play_decentralised_each_player_picking_the_roles_it_believes_nearest(scenario):
+    config = MatchConfig(observation=ObservationConfig("partial"), max_cycles=200)
+    result = run_match("mmdr", "bidding", seed=1, config=config, scenario=scenario)
+    assert result.cycles > 0 and result.end_reason in ("goal", "lost", "out", "time_over")
