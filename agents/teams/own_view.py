@@ -130,7 +130,7 @@ class OwnViewPositioning:
         self._last_followed = self.followed.copy()
         self._assigned_at = np.full(n, -(1 << 40), dtype=np.int64)
         self._assigned_mode = np.full(n, -1, dtype=np.int64)
-        # this cycle's scratch
+        # each player's last ball race (kept between its races) and this cycle's goals
         self._raced = np.full(n, -(1 << 40), dtype=np.int64)
         self.our_cycles = np.zeros((n, n), dtype=np.int64)
         self.our_points = np.zeros((n, n, 2))
