@@ -138,6 +138,13 @@ class Formation:
         (k, roles, 2), C-contiguous, in one compiled call."""
         self._interpolator.values_each(balls, out.reshape(len(balls), self._n_roles * 2))
 
+    @property
+    def query_tables(self) -> tuple:
+        """The compiled query's tables (:func:`formations.interpolation_kernels.value_kernel`'s
+        arguments after the point, before ``out``), for callers that query inside their own
+        compiled loops."""
+        return self._interpolator.tables
+
     def nearest_covered_ball(self, ball_xy: ArrayLike) -> tuple[float, float]:
         """The ball position actually interpolated: *ball_xy* itself inside the
         samples' convex hull, else its projection onto the hull boundary."""

@@ -194,6 +194,11 @@ class TriangleInterpolator:
         value_kernel(x, y, *self._tables, out)
         return out
 
+    @property
+    def tables(self) -> tuple:
+        """:func:`~formations.interpolation_kernels.value_kernel`'s arguments after the point."""
+        return self._tables
+
     def values_each(self, points: np.ndarray, out: np.ndarray) -> None:
         """:meth:`value` at each of ``points`` (k, 2) into ``out`` (k, m), in one compiled call
         (the same numbers as k calls of :meth:`value`, for a caller that queries a few points a

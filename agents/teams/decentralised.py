@@ -278,7 +278,7 @@ class DecentralisedPlay:
             return Drawing(targets=np.zeros((0, 2)), goals=np.zeros((0, 2)), outfield=np.zeros(0, dtype=np.int64))
         first = self.brains[0]
         i = int(self.outfield[0]) if len(self.outfield) else 0
-        return team_drawing(first.formation_set.formation(positioning.situation[i]), positioning.targets[i],
+        return team_drawing(first.formation_set.formation(positioning.situation(i)), positioning.targets[i],
                             positioning.match_roles[i], positioning.goals, self.outfield,
                             positioning.followed[i] if len(self.outfield) else None)
 

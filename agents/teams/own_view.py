@@ -41,7 +41,7 @@ from agents.skills.movement import DEFAULT_PACING
 from agents.skills.pacing import pacing_constants
 from agents.skills.player_kernels import paced_dash_rows
 from agents.teams import mechanism
-from agents.teams.own_view_kernels import followed_role_gaps, own_goals, read_play, settle_each, support_each
+from agents.teams.own_view_kernels import before_roles, followed_role_gaps, own_goals
 from agents.teams.positions import nearest_roles
 from agents.teams.reporting import RoleFigures
 from agents.teams.role_kernels import steered_goals
@@ -118,16 +118,17 @@ class OwnViewPositioning:
         self.targets = np.zeros((n, roles, 2))
         """(n, roles, 2) each player's role targets this cycle (its formation query, settled)."""
         self._previous = np.zeros((n, roles, 2))
-        self._scratch = np.zeros((n, roles, 2))
-        self._formations: dict = {}
-        """The formation of each situation queried so far (a dictionary lookup a cycle)."""
-        self.situation = [Situation.NORMAL] * n
-        """Each player's formation situation this cycle."""
+        self._formation_tables: dict = {}
+        self._full = np.zeros(n, dtype=bool)
+        self._mode, self._ours = PlayMode.KICK_OFF, False
+        """The play mode of the last positioning, and whether it was ours (for :meth:`situation`)."""
         self.proposals = np.tile(np.arange(k, dtype=np.int64), (n, 1))
         """(n, k) the assignment each player computed last (its vote)."""
         self.followed = self.proposals.copy()
         """(n, k) the assignment each player follows."""
         self._last_followed = self.followed.copy()
+        self._next = self.followed.copy()
+        """(n, k) the assignment each player follows from this cycle on (made before it is followed)."""
         self._assigned_at = np.full(n, -(1 << 40), dtype=np.int64)
         self._assigned_mode = np.full(n, -1, dtype=np.int64)
         # each player's last ball race (kept between its races) and this cycle's goals
@@ -141,6 +142,16 @@ class OwnViewPositioning:
         self.urgent = np.zeros(n, dtype=bool)
         self._phase = np.zeros(n, dtype=np.int64)
         self._budgets = np.zeros(n)
+        # the compiled steps' other arguments (agents.teams.own_view_kernels.before_roles)
+        r, sp = self._race_arrays, shape.params
+        self._race = (*r, self._race_constants, self._raced, RACE_NEAR, RACE_EVERY)
+        self._shape_args = (sp.switch_margin, sp.switch_persist, shape.depth, shape.attack_push, self._knobs)
+        self._settle_args = (shape.outfield_roles, shape.back_roles, model.half_length - 2.0, self._forwards,
+                             1.0 - self.style.box_narrowing, model.half_length / 3.0, self._knobs)
+        self._support_args = (shape.is_forward, shape.is_back, shape.offsets, sp.support_players,
+                              sp.support_pressure, sp.support_horizon, model.half_length / 3.0, shape._support_knobs)
+        self._memory = (self.attacking, self._pending, self._in_play, self._block, self.our_cycles, self.our_points,
+                        self.our_first, self.their_cycle, self.win_point, self._previous, self._primed)
         self.figures = RoleFigures(config, k)
         """The team's role figures: each player's distance to the target of the role it follows."""
 
@@ -159,38 +170,33 @@ class OwnViewPositioning:
         ball = beliefs.ball
         if self._choose_roles:
             self._pick_roles(np.flatnonzero(views.present), beliefs)
-        r = self._race_arrays
-        read_play(rows, ball, beliefs.ball_vel, beliefs.mate_pos, views.velocity, beliefs.opp_pos, views.effort,
-                  r[0], r[1], r[2], r[3], r[4], r[5], r[6], self._race_constants, views.saw, views.cycle, self._raced,
-                  RACE_NEAR, RACE_EVERY, play_on,
-                  self._shape.params.switch_margin, self._shape.params.switch_persist, self._shape.depth,
-                  self._shape.attack_push, self._knobs, self.attacking, self._pending, self._in_play, self._block,
-                  self.our_cycles, self.our_points, self.our_first, self.their_cycle, self.win_point)
-        self._query(rows, mode, views.mode_ours, ball)
-        narrowed = self.attacking & (self._block[:, 0] > self.model.half_length / 3.0) & play_on \
-            & bool(self.style.box_narrowing)
-        settle_each(rows, self.targets, self._previous, self._primed, self.match_roles, self._shape.outfield_roles,
-                    self._shape.back_roles, beliefs.opp_pos, ball, self._block, self.attacking, play_on,
-                    self.model.half_length - 2.0, self._forwards, 1.0 - self.style.box_narrowing, narrowed,
-                    self._knobs)
-        shape = self._shape
-        if play_on and not self.style.stationary:
-            sp = shape.params
-            support_each(rows, self.attacking, self.our_first, self.our_cycles, self.our_points, self.their_cycle,
-                         self.targets, self.match_roles, self.followed, self.rank, shape.is_forward, shape.is_back,
-                         beliefs.opp_pos, ball, shape.offsets, sp.support_players, sp.support_pressure,
-                         sp.support_horizon, self.model.half_length / 3.0, shape._support_knobs)
+        self._mode, self._ours = mode, bool(views.mode_ours)
+        attack, defend = self._tables(Situation.ATTACK), self._tables(Situation.DEFEND)
+        other = attack if play_on else self._tables(self._situation_of(mode, self._ours))
         outfield_rows = rows[self.rank[rows] >= 0]
-        if mode in PLACED:  # everybody lines up for a kick-off in its own role (by shirt number)
+        is_due = self._due(outfield_rows, views, int(mode))
+        due, settled = outfield_rows[is_due], outfield_rows[~is_due]
+        placed = mode in PLACED
+        if not placed:  # who does not assign now follows what its votes say before its targets are made
+            self._follow(settled, votes, views.cycle)
+        full = self._full  # who needs every role's target this cycle: those who assign, and those drawn or sampled
+        full[:] = self._steers  # (a steering assigner's field needs them all)
+        full[due] = True
+        if self.outfield.size:
+            full[self.outfield[0]] = True
+        if outfield_rows.size and mechanism.sampled(views.cycle):
+            full[outfield_rows[0]] = True
+        before_roles(rows, play_on, mode == PlayMode.AFTER_GOAL, play_on and not self.style.stationary, ball,
+                     beliefs.ball_vel, beliefs.mate_pos, views.velocity, beliefs.opp_pos, views.effort, views.saw,
+                     views.cycle, self._race, self._shape_args, self._settle_args, self._support_args, attack, defend,
+                     other, self._memory, self.followed, self._next, self.rank, self.match_roles, full, self.targets)
+        if placed:  # everybody lines up for a kick-off in its own role (by shirt number)
             self.proposals[outfield_rows] = self.followed[outfield_rows] = np.arange(self.proposals.shape[1])
             self._assigned_mode[outfield_rows] = -1
         elif outfield_rows.size:
-            self._assign(outfield_rows, views, beliefs, int(mode))
-            if votes is not None:
-                follow_votes(outfield_rows, votes.votes, votes.vote_cycle, self.proposals, views.cycle, votes.horizon,
-                             self.followed)
-            else:
-                self.followed[outfield_rows] = self.proposals[outfield_rows]
+            self._assign(due, views, beliefs, int(mode))
+            self._follow(due, votes, views.cycle)
+            self.followed[outfield_rows] = self._next[outfield_rows]
         self._goals(rows, outfield_rows, play_on, beliefs)
         phase = self._phase
         phase[rows] = np.where(self.attacking[rows], 1, 0) if play_on else -1
@@ -212,42 +218,46 @@ class OwnViewPositioning:
                                                 beliefs.mate_pos[i][self.outfield])
         self._choose_roles = False
 
-    def _query(self, rows: np.ndarray, mode: PlayMode, ours: bool, ball: np.ndarray) -> None:
-        """Each deciding player's formation targets before settling: in play on at its block
-        (attack or defend), at set plays the set-play formation at its ball (the centre after a
-        goal), otherwise the normal one."""
-        if mode == PlayMode.PLAY_ON:
-            attacking = self.attacking[rows]
-            count = int(np.count_nonzero(attacking))
-            if count in (0, rows.size):  # (usually: all agree)
-                self._positions(rows, self._block[rows, :2], Situation.ATTACK if count else Situation.DEFEND)
-                return
-            for side, situation in ((attacking, Situation.ATTACK), (~attacking, Situation.DEFEND)):
-                group = rows[side]
-                self._positions(group, self._block[group, :2], situation)
-            return
-        situation = Situation.NORMAL
+    @staticmethod
+    def _situation_of(mode: PlayMode, ours: bool) -> Situation:
+        """The formation situation of a play mode other than play on: the set-play formations
+        at set plays, a held ball and the pause after a goal; else the normal one."""
         if mode == PlayMode.AFTER_GOAL or mode in SET_PLAYS or mode == PlayMode.GOALIE_HOLDS:
-            situation = Situation.OUR_SET_PLAY if ours else Situation.THEIR_SET_PLAY
-        self._positions(rows, np.zeros((rows.size, 2)) if mode == PlayMode.AFTER_GOAL else ball[rows], situation)
+            return Situation.OUR_SET_PLAY if ours else Situation.THEIR_SET_PLAY
+        return Situation.NORMAL
 
-    def _positions(self, rows: np.ndarray, balls: np.ndarray, situation: Situation) -> None:
-        """The formation of ``situation`` queried at ``balls`` (one per row) into ``targets[rows]``."""
-        out = self._scratch[: rows.size]
-        formation = self._formations.get(situation)
-        if formation is None:
-            formation = self._formations[situation] = self.formation_set.formation(situation)
-        formation.positions_each(np.ascontiguousarray(balls), out)
-        self.targets[rows] = out
-        for i in rows.tolist():
-            self.situation[i] = situation
+    def situation(self, i: int) -> Situation:
+        """Player ``i``'s formation situation at its last positioning."""
+        if self._mode == PlayMode.PLAY_ON:
+            return Situation.ATTACK if self.attacking[i] else Situation.DEFEND
+        return self._situation_of(self._mode, self._ours)
+
+    def _tables(self, situation: Situation) -> tuple:
+        """The compiled query tables of ``situation``'s formation (looked up once)."""
+        tables = self._formation_tables.get(situation)
+        if tables is None:
+            tables = self._formation_tables[situation] = self.formation_set.formation(situation).query_tables
+        return tables
+
+    def _follow(self, rows: np.ndarray, votes: VoteBook | None, cycle: int) -> None:
+        """Into ``_next[rows]``, the assignment each of ``rows`` follows: the one most of the
+        votes it holds agree on (:func:`~agents.roles.voting.follow_votes`), else its own."""
+        if votes is not None:
+            follow_votes(rows, votes.votes, votes.vote_cycle, self.proposals, cycle, votes.horizon, self._next)
+        else:
+            self._next[rows] = self.proposals[rows]
+
+    def _due(self, rows: np.ndarray, views: PlayerViews, mode: int) -> np.ndarray:
+        """(len(rows),) which of the outfield ``rows`` assign this cycle: at once when the play
+        mode changed since their last assignment, else on a cycle they see, at least
+        ``ASSIGN_EVERY`` cycles after it."""
+        return (self._assigned_mode[rows] != mode) | (views.saw[rows]
+                                                      & (views.cycle - self._assigned_at[rows] >= ASSIGN_EVERY))
 
     def _assign(self, rows: np.ndarray, views: PlayerViews, beliefs: TeamBeliefs, mode: int) -> None:
-        """The role assigner on each due player's own model (module docstring, step 4)."""
+        """The role assigner on each of the due players ``rows``' own model (module docstring, step 4)."""
         cycle = views.cycle
         play_on = mode == PlayMode.PLAY_ON
-        due = (self._assigned_mode[rows] != mode) | (views.saw[rows] & (cycle - self._assigned_at[rows] >= ASSIGN_EVERY))
-        rows = rows[due]
         self._assigned_at[rows], self._assigned_mode[rows] = cycle, mode
         for i in rows.tolist():
             brain = self.brains[i]

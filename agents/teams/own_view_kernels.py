@@ -16,6 +16,7 @@ import numpy as np
 from numba import njit
 
 from agents.skills.interception_kernels import UNREACHABLE, race_kernel
+from formations.interpolation_kernels import value_kernel
 from agents.teams.role_kernels import offside_line, shape_targets
 from agents.teams.shape_kernels import ATTACKING, BALL_X, DEFENDING, LIMITED, MODE, OFF, advance_block, \
     settle_targets, support_spots
@@ -124,24 +125,81 @@ def _switch_and_block(i: int, lead: int, play_on: bool, switch_margin: int, swit
 def settle_each(rows: np.ndarray, targets: np.ndarray, previous: np.ndarray, primed: np.ndarray,
                 match_roles: np.ndarray, outfield_roles: np.ndarray, back_roles: np.ndarray, opp_pos: np.ndarray,
                 ball: np.ndarray, block: np.ndarray, attacking: np.ndarray, play_on: bool, x_limit: float,
-                forwards: np.ndarray, narrowing: float, narrowed: np.ndarray,
+                forwards: np.ndarray, narrowing: float, narrow_x: float,
                 knobs: np.ndarray) -> None:  # pragma: no cover - compiled
     """Each deciding player's role targets ``targets[i]`` (roles, 2; the formation's for its
-    query) changed as the team's are: in play on the outfield moved up by its block's shift and
-    the forwards narrowed where ``narrowed[i]`` (:func:`shape_targets`), then the back line held
-    behind its ball and every target moved at most the block's pace from its own last targets
-    ``previous[i]`` (:func:`settle_targets`)."""
+    query) changed as the team's are: in play on the outfield moved up by its block's shift and,
+    when it attacks with its block beyond ``narrow_x`` and ``narrowing`` is not 1, the forwards'
+    y scaled by it (:func:`shape_targets`), then the back line held behind its ball and every
+    target moved at most the block's pace from its own last targets ``previous[i]``
+    (:func:`settle_targets`)."""
     own = knobs.copy()
     for i in rows:
         shift = block[i, 2]
         shifted = play_on and shift != 0.0
-        if shifted or narrowed[i]:
-            shape_targets(targets[i], match_roles[i], shift, shifted, x_limit, forwards, narrowing, narrowed[i])
+        narrowed = play_on and attacking[i] and block[i, 0] > narrow_x and narrowing != 1.0
+        if shifted or narrowed:
+            shape_targets(targets[i], match_roles[i], shift, shifted, x_limit, forwards, narrowing, narrowed)
         own[BALL_X] = ball[i, 0]
         own[MODE] = (ATTACKING if attacking[i] else DEFENDING) if play_on else OFF
         own[LIMITED] = 1.0 if play_on and primed[i] else 0.0
         settle_targets(targets[i], previous[i], outfield_roles, back_roles, opp_pos[i], own)
         primed[i] = True
+
+
+@njit(cache=True, nogil=True)
+def query_each(rows: np.ndarray, play_on: bool, after_goal: bool, block: np.ndarray, ball: np.ndarray,
+               attacking: np.ndarray, tables_attack: tuple, tables_defend: tuple, tables_other: tuple,
+               targets: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Each deciding player's formation targets (into ``targets[i]``, roles x 2): in play on the
+    attacking or the defending formation at its block's query point, otherwise the one
+    formation of the play mode (``tables_other``) at its ball, or at the centre spot after a
+    goal. ``tables_*``: a formation's compiled query tables
+    (:attr:`formations.Formation.query_tables`)."""
+    width = targets.shape[1] * targets.shape[2]
+    for i in rows:
+        out = targets[i].reshape(width)
+        if play_on:
+            if attacking[i]:
+                value_kernel(block[i, 0], block[i, 1], *tables_attack, out)
+            else:
+                value_kernel(block[i, 0], block[i, 1], *tables_defend, out)
+        elif after_goal:
+            value_kernel(0.0, 0.0, *tables_other, out)
+        else:
+            value_kernel(ball[i, 0], ball[i, 1], *tables_other, out)
+
+
+@njit(cache=True, nogil=True)
+def before_roles(rows: np.ndarray, play_on: bool, after_goal: bool, support: bool, ball: np.ndarray,
+                 ball_vel: np.ndarray, mate_pos: np.ndarray, own_vel: np.ndarray, opp_pos: np.ndarray,
+                 effort: np.ndarray, saw: np.ndarray, cycle: int, race: tuple, shape: tuple, settle: tuple,
+                 supporting: tuple, tables_attack: tuple, tables_defend: tuple, tables_other: tuple,
+                 memory: tuple, followed: np.ndarray, following: np.ndarray, rank: np.ndarray,
+                 match_roles: np.ndarray, full: np.ndarray, targets: np.ndarray) -> None:  # pragma: no cover
+    """A team's deciding players' steps before the role assigner, in one call: each one's ball
+    race, switch and block (:func:`read_play`), its formation query (:func:`query_each`), its
+    targets settled (:func:`settle_each`) and, with ``support``, its support spots
+    (:func:`support_each`; in full for the players marked ``full``). The tuples hold those kernels' other arguments in their order:
+    ``race`` (radius ... race constants, raced, near, every), ``shape`` (switch margin, persist,
+    depth, attack push, knobs), ``settle`` (outfield roles, back roles, x limit, forwards,
+    narrowing, narrow x, knobs), ``supporting`` (is_forward ... support knobs) and ``memory``
+    (attacking, pending, in play, block, our cycles, our points, our first, their cycle, win
+    point, previous, primed)."""
+    attacking, pending, in_play, block, our_cycles, our_points, our_first, their_cycle, win_point, previous, \
+        primed = memory
+    read_play(rows, ball, ball_vel, mate_pos, own_vel, opp_pos, effort, race[0], race[1], race[2], race[3],
+              race[4], race[5], race[6], race[7], saw, cycle, race[8], race[9], race[10], play_on, shape[0], shape[1],
+              shape[2], shape[3], shape[4], attacking, pending, in_play, block, our_cycles, our_points, our_first,
+              their_cycle, win_point)
+    query_each(rows, play_on, after_goal, block, ball, attacking, tables_attack, tables_defend, tables_other,
+               targets)
+    settle_each(rows, targets, previous, primed, match_roles, settle[0], settle[1], opp_pos, ball, block, attacking,
+                play_on, settle[2], settle[3], settle[4], settle[5], settle[6])
+    if support:
+        support_each(rows, attacking, our_first, our_cycles, our_points, their_cycle, targets, match_roles, followed,
+                     following, rank, full, supporting[0], supporting[1], opp_pos, ball, supporting[2], supporting[3],
+                     supporting[4], supporting[5], supporting[6], supporting[7])
 
 
 @njit(cache=True, nogil=True)
@@ -196,6 +254,31 @@ def own_goals(rows: np.ndarray, rank: np.ndarray, followed: np.ndarray, targets:
 
 
 @njit(cache=True, nogil=True)
+def _supports(i: int, rank: np.ndarray, followed: np.ndarray, match_roles: np.ndarray, targets: np.ndarray,
+              candidates: np.ndarray, carrier: np.ndarray, players: int) -> bool:  # pragma: no cover - compiled
+    """Whether player ``i``'s own role is among the ``players`` candidates whose targets are
+    nearest the carrier (ties: the earlier candidate), the ones :func:`support_spots` sends."""
+    if rank[i] < 0:
+        return False
+    own = match_roles[i, followed[i, rank[i]]]
+    place = -1
+    for c in range(candidates.shape[0]):
+        if candidates[c] == own:
+            place = c
+    if place < 0:
+        return False
+    cx, cy = carrier[0], carrier[1]
+    d_own = math.hypot(targets[i, own, 0] - cx, targets[i, own, 1] - cy)
+    nearer = 0
+    for c in range(candidates.shape[0]):
+        r = candidates[c]
+        d = math.hypot(targets[i, r, 0] - cx, targets[i, r, 1] - cy)
+        if d < d_own or (d == d_own and c < place):
+            nearer += 1
+    return nearer < players
+
+
+@njit(cache=True, nogil=True)
 def followed_role_gaps(rows: np.ndarray, rank: np.ndarray, followed: np.ndarray, last_followed: np.ndarray,
                        targets: np.ndarray, out_roles: np.ndarray, position: np.ndarray,
                        unfilled: float) -> tuple[int, float, float, int]:  # pragma: no cover - compiled
@@ -223,15 +306,19 @@ def followed_role_gaps(rows: np.ndarray, rank: np.ndarray, followed: np.ndarray,
 @njit(cache=True, nogil=True)
 def support_each(rows: np.ndarray, attacking: np.ndarray, our_first: np.ndarray, our_cycles: np.ndarray,
                  our_points: np.ndarray, their_cycle: np.ndarray, targets: np.ndarray, match_roles: np.ndarray,
-                 followed: np.ndarray, rank: np.ndarray, is_forward: np.ndarray, is_back: np.ndarray,
-                 opp_pos: np.ndarray, ball: np.ndarray, offsets: np.ndarray, players: int, pressure: int,
-                 horizon: int, third_x: float, knobs: np.ndarray) -> None:  # pragma: no cover - compiled
+                 followed: np.ndarray, following: np.ndarray, rank: np.ndarray, full: np.ndarray,
+                 is_forward: np.ndarray,
+                 is_back: np.ndarray, opp_pos: np.ndarray, ball: np.ndarray, offsets: np.ndarray, players: int,
+                 pressure: int, horizon: int, third_x: float, knobs: np.ndarray) -> None:  # pragma: no cover
     """Each deciding player's support spots as role targets (in place, before its roles are
     assigned), as :meth:`agents.teams.shape.Shape.support` does for the team: when it believes
     we attack, our first player reaches the ball within ``horizon`` cycles and an opponent
     could be there within ``pressure`` (a pressed carrier needs a pass), the targets of the ``players`` eligible roles nearest that carrier
     (not forwards, not the back line unless the ball is in our third, ``x <= -third_x``, not
-    the carrier's own role) move to open spots around it (:func:`support_spots`)."""
+    the carrier's own role) move to open spots around it (:func:`support_spots`). A player
+    not marked ``full`` (who does not assign this cycle) only needs the target of its own role
+    (in ``following``: what it follows from this cycle on; the carrier's role is as it was,
+    in ``followed``): it looks for spots only when its own role is one of those supporters."""
     k = match_roles.shape[1]
     out_rows = np.zeros(max(players, 1), dtype=np.int64)
     out_spots = np.zeros((max(players, 1), 2))
@@ -250,7 +337,8 @@ def support_each(rows: np.ndarray, attacking: np.ndarray, our_first: np.ndarray,
                 continue
             candidates[count] = role
             count += 1
-        if count == 0:
+        if count == 0 or not (full[i] or _supports(i, rank, following, match_roles, targets, candidates[:count],
+                                                   our_points[i, carrier_row], players)):
             continue
         x_max = offside_line(opp_pos[i], ball[i, 0]) - 1.0
         chosen = support_spots(our_points[i, carrier_row], targets[i], targets[i], candidates[:count], opp_pos[i],

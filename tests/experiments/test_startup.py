@@ -144,7 +144,7 @@ def test_partial_observation_adds_the_see_model_and_the_world_models() -> None:
     added = {k.name for k in partial - full}
     assert "soccer_sim.perception.kernels:perceive" in added
     assert "agents.teams.belief_kernels:believe" in added
-    assert "agents.teams.own_view_kernels:read_play" in added
+    assert "agents.teams.own_view_kernels:before_roles" in added
     assert partial - full == {Kernel(*KERNELS[i]) for i in TEAMS[PARTIAL_ENTRY]} - full
     assert observation_of(paired_specs("mmdr", "chaser", 2, 0, 100, "partial")) == "partial"
     assert observation_of(paired_specs("mmdr", "chaser", 2, 0, 100)) == "full"
