@@ -2,7 +2,8 @@
 base-71 number of 10 digits (below ``71 ** 10``, which fits a signed 64-bit integer), whose
 last base-2 digit is its kind. One message or a whole team's messages per cycle go through the
 same functions: :mod:`agents.messages` encodes and decodes single messages with them, and
-:mod:`agents.team_messages` a team's ten or eleven at a time (a plain-Python big-number loop
+:func:`agents.messages.world_texts`, :func:`~agents.messages.vote_texts` and
+:func:`~agents.messages.decode_texts` a team's ten or eleven at a time (a plain-Python big-number loop
 costs about 15 us a message, ten times a compiled one).
 
 Digits are the indices of the characters in :data:`agents.messages.ALPHABET`; grid indices and
@@ -150,3 +151,25 @@ def decode_digits(digits: np.ndarray, nx: int, ny: int, nv: int, nage: int, per_
         vote_size[p] = n
         vote_cycle[p] = cycle
         kind[p] = VOTE
+
+
+@njit(cache=True, nogil=True)
+def world_digits_rows(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray, sender: np.ndarray,
+                      out: np.ndarray, x_range: float, y_range: float, v_range: float, per_m: int, per_v: int,
+                      max_age: int, nx: int, ny: int, nv: int, nage: int) -> None:  # pragma: no cover - compiled
+    """Rows of world messages' digits into ``out`` (n, LENGTH): ball (n, 2), its velocity
+    (n, 2), ages (n,) and senders (n, 2), each clipped into its range."""
+    for i in range(ball.shape[0]):
+        number = world_number(grid_index(ball[i, 0], x_range, per_m), grid_index(ball[i, 1], y_range, per_m),
+                              grid_index(ball_vel[i, 0], v_range, per_v), grid_index(ball_vel[i, 1], v_range, per_v),
+                              min(max(ball_age[i], 0), max_age), grid_index(sender[i, 0], x_range, per_m),
+                              grid_index(sender[i, 1], y_range, per_m), nx, ny, nv, nage)
+        number_digits(number, out[i])
+
+
+@njit(cache=True, nogil=True)
+def vote_digits_rows(assignments: np.ndarray, cycle: int, modulus: int,
+                     out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Rows of votes' digits into ``out`` (n, LENGTH), one per row of ``assignments`` (n, k)."""
+    for i in range(assignments.shape[0]):
+        number_digits(vote_number(assignments[i], cycle, modulus), out[i])

@@ -26,13 +26,14 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
-from agents.errors import AgentsError
 from agents import message_kernels
-from agents.message_kernels import (decode_digits, grid_index, number_digits, vote_number,
-                                    world_number)
+from agents.errors import AgentsError
+from agents.message_kernels import (decode_digits, grid_index, number_digits, vote_digits_rows, vote_number,
+                                    world_digits_rows, world_number)
 from soccer_sim.perception.audio import SAY_CHARACTERS
 
 ALPHABET: str = "".join(c for c in SAY_CHARACTERS if c not in " ()")
@@ -215,6 +216,7 @@ class Decoded:
         self.kind = np.full(count, -1, dtype=np.int64)
         """(p,) WORLD, VOTE or -1."""
         self.grid = np.zeros((count, 7), dtype=np.int64)
+        """(p, 7) a world message's grid indices (the encoder's digits)."""
         self.world = np.zeros((count, 7))
         """(p, 7) world messages' values: ball x, y (m), velocity x, y (m/cycle), age
         (cycles), sender x, y (m)."""
@@ -226,14 +228,8 @@ class Decoded:
 
     def world_message(self, p: int) -> WorldMessage:
         """Message ``p`` as a :class:`WorldMessage` (it must be one)."""
-        bx, by, vx, vy, age, sx, sy = self.grid[p].tolist()
-
-        def pos(ix: int, iy: int) -> tuple[float, float]:
-            """Grid indices to metres (a division, so 0.1 m steps come out as 52.5, not 52.500000000000014)."""
-            return (ix - _NX // 2) / _PER_M, (iy - _NY // 2) / _PER_M
-
-        return WorldMessage(ball=pos(bx, by), ball_velocity=((vx - _NV // 2) / _PER_V, (vy - _NV // 2) / _PER_V),
-                            ball_age=age, sender=pos(sx, sy))
+        bx, by, vx, vy, age, sx, sy = self.world[p].tolist()
+        return WorldMessage(ball=(bx, by), ball_velocity=(vx, vy), ball_age=int(age), sender=(sx, sy))
 
     def vote_message(self, p: int) -> VoteMessage:
         """Message ``p`` as a :class:`VoteMessage` (it must be one)."""
@@ -261,6 +257,55 @@ def decode_texts(texts: Sequence[str]) -> Decoded:
     decode_digits(digits, _NX, _NY, _NV, _NAGE, _PER_M, _PER_V, CYCLE_MODULUS, decoded.kind, decoded.grid,
                   decoded.world, decoded.vote, decoded.vote_size, decoded.vote_cycle)
     return decoded
+
+
+class HeardBatch(NamedTuple):
+    """The team-mates' messages a team's players heard in one cycle, one row per message."""
+
+    listener: np.ndarray
+    """(p,) the player who heard it."""
+    speaker: np.ndarray
+    """(p,) the team-mate who said it."""
+    decoded: Decoded
+    """What each one says (kind -1: none of ours)."""
+
+
+def heard_batch(heard_mates: tuple[tuple[tuple[int, str], ...], ...]) -> HeardBatch:
+    """Every (listener, speaker, message) of ``heard_mates`` (per listener its (team-mate
+    index, text) pairs), decoded in one call."""
+    listeners, speakers, texts = [], [], []
+    for listener, pairs in enumerate(heard_mates):
+        for speaker, text in pairs:
+            listeners.append(listener)
+            speakers.append(speaker)
+            texts.append(text)
+    return HeardBatch(np.array(listeners, dtype=np.int64), np.array(speakers, dtype=np.int64),
+                      decode_texts(texts))
+
+
+def world_texts(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray, sender: np.ndarray,
+                present: np.ndarray) -> list[str | None]:
+    """A team's world messages in one call: :func:`encode_world_clipped` for each row of (n, 2)
+    balls, velocities and senders and (n,) ball ages; None for players not ``present``."""
+    digits = np.empty((ball.shape[0], MESSAGE_LENGTH), dtype=np.int64)
+    world_digits_rows(ball, ball_vel, ball_age, sender, digits, X_RANGE, Y_RANGE, V_RANGE, _PER_M, _PER_V, MAX_AGE,
+                      _NX, _NY, _NV, _NAGE)
+    return _texts(digits, present)
+
+
+def vote_texts(assignments: np.ndarray, cycle: int, present: np.ndarray) -> list[str | None]:
+    """A team's votes in one call: each present player's for its row of ``assignments`` (n, k)
+    int64, computed at ``cycle``."""
+    digits = np.empty((assignments.shape[0], MESSAGE_LENGTH), dtype=np.int64)
+    vote_digits_rows(assignments, cycle, CYCLE_MODULUS, digits)
+    return _texts(digits, present)
+
+
+def _texts(digits: np.ndarray, present: np.ndarray) -> list[str | None]:
+    """Rows of digits as message texts (None where not ``present``)."""
+    raw = ALPHABET_BYTES[digits].tobytes().decode("ascii")
+    return [raw[i * MESSAGE_LENGTH:(i + 1) * MESSAGE_LENGTH] if there else None
+            for i, there in enumerate(present.tolist())]
 
 
 assert len(ALPHABET) == message_kernels.BASE and MESSAGE_LENGTH == message_kernels.LENGTH

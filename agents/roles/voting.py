@@ -23,8 +23,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from agents.messages import CYCLE_MODULUS, VOTE, VoteMessage, encode
-from agents.team_messages import HeardBatch, heard_batch, vote_texts
+from agents.messages import CYCLE_MODULUS, VOTE, HeardBatch, VoteMessage, encode, heard_batch, vote_texts
 
 NO_VOTE = -(1 << 40)
 """The cycle of a vote never heard."""
@@ -58,7 +57,7 @@ class VoteBook:
 
     def hear(self, cycle: int, heard: HeardBatch | tuple) -> None:
         """Store the votes among the team-mates' messages each player heard at ``cycle``
-        (``heard``: a :class:`~agents.team_messages.HeardBatch`, or per listener its
+        (``heard``: a :class:`~agents.messages.HeardBatch`, or per listener its
         (team-mate index, text) pairs); other messages are left alone, and a vote of the
         wrong size or from no team-mate is ignored."""
         if not isinstance(heard, HeardBatch):

@@ -38,8 +38,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from agents.messages import heard_batch
 from agents.roles.voting import VoteBook, role_conflicts
-from agents.team_messages import heard_batch
 from agents.teams.own_view import PLACED, OwnViewPositioning
 from agents.teams.own_view_kernels import whole_brain_rows
 from agents.teams.positions import current_labels

@@ -28,8 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from agents.messages import WORLD
-from agents.team_messages import HeardBatch, heard_batch, world_texts
+from agents.messages import WORLD, HeardBatch, heard_batch, world_texts
 from agents.teams.belief_kernels import AGE_NEVER, believe
 from soccer_sim.config import MatchConfig
 from soccer_sim.perception.views import PlayerViews

@@ -1,4 +1,4 @@
-"""A team's messages encoded and decoded in batches agree with the one-message functions."""
+"""A team's messages encoded and decoded in batches (agents.messages) agree with the one-message functions."""
 
 from __future__ import annotations
 
@@ -6,8 +6,8 @@ import numpy as np
 
 from agents.messages import (MAX_AGE, VOTE, WORLD, MessageError, VoteMessage, WorldMessage, decode, decode_texts,
                              encode, encode_world_clipped)
+from agents.messages import heard_batch, vote_texts, world_texts
 from agents.roles.voting import VoteBook
-from agents.team_messages import heard_batch, vote_texts, world_texts
 
 
 def test_a_teams_world_messages_are_the_single_encoders_ones_row_by_row():
