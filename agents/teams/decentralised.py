@@ -55,7 +55,6 @@ if TYPE_CHECKING:
     from agents.teams.formation_team import FormationTeam
 
 _RECHOSEN = frozenset(SET_PLAYS - {PlayMode.KICK_OFF})
-
 """Our set plays whose taker each player re-chooses every cycle (a kick-off's taker is placed)."""
 
 BRAIN_DISTANCE = 2.2
@@ -103,6 +102,7 @@ class DecentralisedPlay:
         if len(self.outfield):
             gaps = np.hypot(*spots[self.outfield].T)
             self._kick_off_taker = int(self.outfield[int(np.argmin(gaps))])
+        self._cycle = 0
         self._brain_cycle = np.full(n, -2, dtype=np.int64)
         self._on_ball_rows = np.zeros(n, dtype=bool)
         self._mode_key: tuple[int, bool] = (-1, False)
@@ -166,15 +166,14 @@ class DecentralisedPlay:
         rows, mode = self._on_ball_rows, views.play_mode
         rows[:] = False
         play_on = mode == PlayMode.PLAY_ON
-        if not play_on and not views.mode_ours:
-            return rows
-        if not play_on and mode == PlayMode.GOALIE_HOLDS:
-            if self.goalie >= 0:
-                rows[self.goalie] = views.present[self.goalie]
-            return rows
-        set_play = not play_on and mode in SET_PLAYS
-        if not play_on and not set_play:
-            return rows
+        if not play_on:
+            if not views.mode_ours or (mode not in SET_PLAYS and mode != PlayMode.GOALIE_HOLDS):
+                return rows
+            if mode == PlayMode.GOALIE_HOLDS:
+                if self.goalie >= 0:
+                    rows[self.goalie] = views.present[self.goalie]
+                return rows
+        set_play = not play_on
         taker = -1
         if mode == PlayMode.KICK_OFF:
             taker = self._kick_off_taker
@@ -272,7 +271,7 @@ class DecentralisedPlay:
 
     def drawing(self) -> Drawing:
         """What a replay may draw: where each player is going (its own goal), and the role
-        targets, roles and formation as the first present outfield player believes them."""
+        targets, roles and formation as the first outfield player believes them."""
         positioning = self.positioning
         if positioning is None:  # a side of no players
             return Drawing(targets=np.zeros((0, 2)), goals=np.zeros((0, 2)), outfield=np.zeros(0, dtype=np.int64))

@@ -21,11 +21,14 @@ what it alone believes (row ``i`` of :class:`~agents.teams.world_model.TeamBelie
 6. its dash at the pace the stamina policy allows (:func:`agents.skills.player_kernels.paced_dash_rows`),
    or its placement before a kick-off.
 
-Each step is one compiled call over the team's deciders (the assigner one call per player
-that assigns), which is what lets 22 world models and up to 22 assignments a cycle run in
-about the time of a full-observation match. Missing from the full team's open play: the
-positions' own runs and the follow-ups of shots (only the shooter knows it shot); the player on the ball, our set-play taker and the
-goalkeeper near its goal decide with a whole brain (:mod:`agents.teams.decentralised`).
+The steps before the assigner are one compiled call for the whole team
+(:func:`~agents.teams.own_view_kernels.before_roles`), the assigner one call per player that
+assigns, the goals and dashes a compiled call each: a match of two such teams costs about three
+and a half full-observation matches. Missing from the full team's open play: the positions'
+own runs and the follow-ups of shots (only the shooter knows it shot), and an assigner's own
+choice of the player who goes for the ball (bidding's ball role): each player takes the first
+of ours in its ball race. The player on the ball, our set-play taker and the goalkeeper near
+its goal decide with a whole brain (:mod:`agents.teams.decentralised`).
 """
 
 from __future__ import annotations
@@ -197,9 +200,9 @@ class OwnViewPositioning:
             self._assign(due, views, beliefs, int(mode))
             self._follow(due, votes, views.cycle)
             self.followed[outfield_rows] = self._next[outfield_rows]
-        self._goals(rows, outfield_rows, play_on, beliefs)
-        phase = self._phase
-        phase[rows] = np.where(self.attacking[rows], 1, 0) if play_on else -1
+        self._goals(rows, outfield_rows, play_on, beliefs, views.cycle)
+        phase = self._phase  # the pacing's: 1 we attack, 0 we defend, -1 not in play
+        phase[rows] = self.attacking[rows] if play_on else -1
         paced_dash_rows(rows, views.position, views.velocity, self.goals, views.effort, views.stamina,
                         views.capacity, self.urgent, ball, self.goalie, phase, views.cycle, views.half,
                         self._pacing, dash, self._budgets)
@@ -287,7 +290,8 @@ class OwnViewPositioning:
         context.attacking = bool(self.attacking[i])
         return context
 
-    def _goals(self, rows: np.ndarray, outfield_rows: np.ndarray, play_on: bool, beliefs: TeamBeliefs) -> None:
+    def _goals(self, rows: np.ndarray, outfield_rows: np.ndarray, play_on: bool, beliefs: TeamBeliefs,
+               cycle: int) -> None:
         """Each deciding player's goal point and hurry (module docstring, step 5)."""
         style = self.style
         if style.stationary:
@@ -301,12 +305,12 @@ class OwnViewPositioning:
                       beliefs.ball, beliefs.opp_pos, style.offside_margin, style.pressers, self._goalie_margin,
                       self._area[0], self._area[1], self.goals, self.urgent)
             if self._steers:
-                self._steer(outfield_rows, beliefs, play_on)
-        if self.goalie >= 0 and self.rank[self.goalie] < 0 and np.any(rows == self.goalie):
+                self._steer(outfield_rows, beliefs, play_on, cycle)
+        if self.goalie >= 0 and self.goalie in rows:
             self.goals[self.goalie] = skills.guard_position(self.model, beliefs.ball[self.goalie])
             self.urgent[self.goalie] = False
 
-    def _steer(self, rows: np.ndarray, beliefs: TeamBeliefs, play_on: bool) -> None:
+    def _steer(self, rows: np.ndarray, beliefs: TeamBeliefs, play_on: bool, cycle: int) -> None:
         """A steering assigner (potential-field bidding) moves each player not going for the
         ball along its own field rather than straight to its role's target."""
         for i in rows.tolist():
@@ -316,7 +320,7 @@ class OwnViewPositioning:
             players = beliefs.mate_pos[i][self.outfield]
             role_targets = self.targets[i][self.match_roles[i]]
             followed = self.followed[i]
-            context = self._context(i, brain, beliefs, play_on, int(brain._context.cycle))
+            context = self._context(i, brain, beliefs, play_on, cycle)
             steps = brain.assigner.steer(players, role_targets, followed, context)
             r = self.rank[i]
             self.goals[i] = steered_goals(players[r:r + 1], steps[r:r + 1], role_targets[followed[r:r + 1]])[0]
