@@ -109,6 +109,23 @@ def _perturb(vx: float, vy: float, rand: float, length_draw: float,
 
 
 @njit(cache=True, nogil=True)
+def dash_direction_rate(ax: float, ay: float, size: float, vx: float, vy: float, speed: float, side_rate: float,
+                        back_rate: float, heading_speed: float) -> float:  # pragma: no cover - compiled
+    """The share of a dash's power that counts, for a dash (ax, ay) of length ``size`` by a
+    player moving at (vx, vy), ``speed`` > 0 (rcssserver's ``dash_angle`` rates:
+    ``side_rate`` at 90 degrees from the motion, ``back_rate`` against it, interpolated
+    linearly in the angle, and weighted by the speed up to ``heading_speed``)."""
+    cos = min(1.0, max(-1.0, (ax * vx + ay * vy) / (size * speed)))
+    angle = math.degrees(math.acos(cos))
+    if angle > 90.0:
+        dir_rate = back_rate - (back_rate - side_rate) * (1.0 - (angle - 90.0) / 90.0)
+    else:
+        dir_rate = side_rate + (1.0 - side_rate) * (1.0 - angle / 90.0)
+    weight = min(1.0, speed / heading_speed)
+    return 1.0 - weight * (1.0 - dir_rate)
+
+
+@njit(cache=True, nogil=True)
 def _capped_request(x: float, y: float) -> tuple[float, float, float]:  # pragma: no cover - compiled
     """A dash or kick request (x, y) and its length, shortened to :data:`REQUEST_CAP` in the same
     direction when longer (or overflowing)."""
@@ -148,14 +165,7 @@ def dash_players(vel: np.ndarray, ball_vel: np.ndarray, stamina: np.ndarray, eff
             rate = 1.0
             speed = math.sqrt(vx * vx + vy * vy)
             if speed > 0.0:
-                cos = min(1.0, max(-1.0, (ax * vx + ay * vy) / (size * speed)))
-                angle = math.degrees(math.acos(cos))
-                if angle > 90.0:
-                    dir_rate = back_rate - (back_rate - side_rate) * (1.0 - (angle - 90.0) / 90.0)
-                else:
-                    dir_rate = side_rate + (1.0 - side_rate) * (1.0 - angle / 90.0)
-                weight = min(1.0, speed / heading_speed)
-                rate = 1.0 - weight * (1.0 - dir_rate)
+                rate = dash_direction_rate(ax, ay, size, vx, vy, speed, side_rate, back_rate, heading_speed)
             per_power = power_rate * effort[i] * rate
             power = size / per_power if per_power > 0.0 else 0.0
             power = max(0.0, min(power, power_max, stamina[i] + extra))

@@ -10,6 +10,8 @@ import math
 import numpy as np
 from numba import njit
 
+from soccer_sim.kernels import dash_direction_rate
+
 from agents.skills.pacing import (K_ACCEL_MAX, K_BACK_RATE, K_CRUISE, K_DANGER_X, K_DECAY, K_EXTRA, K_FAR,
                                   K_FINAL_THIRD_X, K_FLOOR, K_FRESH, K_HALF_CYCLES, K_HEADING_SPEED, K_INCOME, K_PLAY_DISTANCE,
                                   K_POWER_MAX, K_POWER_RATE, K_RECOVER_SHARE, K_REST_GAP, K_REST_SHARE,
@@ -133,13 +135,7 @@ def paced_dash_player(i: int, pos: np.ndarray, vel: np.ndarray, targets: np.ndar
     speed = math.sqrt(vx * vx + vy * vy)
     if speed > 0.0 and size > budget * rate * eff * min(side_rate, back_rate, 1.0):
         # (within budget even at the costliest direction: no need for the angle)
-        cos = min(1.0, max(-1.0, (ax * vx + ay * vy) / (size * speed)))
-        angle = math.degrees(math.acos(cos))
-        if angle > 90.0:
-            along = back_rate - (back_rate - side_rate) * (1.0 - (angle - 90.0) / 90.0)
-        else:
-            along = side_rate + (1.0 - side_rate) * (1.0 - angle / 90.0)
-        dir_rate = 1.0 - min(1.0, speed / heading_speed) * (1.0 - along)
+        dir_rate = dash_direction_rate(ax, ay, size, vx, vy, speed, side_rate, back_rate, heading_speed)
     power = size / (rate * eff * dir_rate)
     if power > budget:
         ax *= budget / power
