@@ -176,6 +176,10 @@ def _culprit(exc: BaseException, spec: MatchSpec, deciding: MutableSequence[int]
     return FORFEIT_NONE
 
 
+TIMER_RESTRIKE_SECONDS = 0.2
+"""Seconds after a timeout's raise when the timer strikes again, in case that raise was swallowed."""
+
+
 def arm_timer(timeout: float | None):
     """Start a timer that raises MatchTimeout in this (main) thread after ``timeout`` seconds;
     None where signals are unavailable (another thread, or no SIGALRM on this platform)."""
@@ -183,6 +187,10 @@ def arm_timer(timeout: float | None):
         return None
 
     def _expired(signum, frame):
+        # Strike again soon: a raise inside a callback the interpreter guards (a garbage
+        # collector's finaliser, e.g. pymunk freeing a space) is printed and swallowed, and the
+        # match would play on. The disarm that follows a raise that lands comes well before this.
+        signal.setitimer(signal.ITIMER_REAL, TIMER_RESTRIKE_SECONDS)
         raise MatchTimeout(timeout)
 
     previous = signal.signal(signal.SIGALRM, _expired)
