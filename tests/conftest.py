@@ -2,7 +2,21 @@
 
 from __future__ import annotations
 
+import io
+
 import pytest
+
+
+def pytest_sessionstart(session: pytest.Session) -> None:
+    """Fill a cold numba cache with every kernel of the built-in teams' matches (full and
+    partial observation) on every core before the first test, as ``soccer-sim`` does before a
+    tournament: on a fresh clone the kernels are then compiled side by side rather than one at
+    a time inside whichever tests call them first. It only saves time: no test needs it, and a
+    kernel it misses is compiled on first use as always."""
+    from experiments.kernel_manifest import KERNELS
+    from experiments.warmup import Kernel, ensure_cached
+
+    ensure_cached([Kernel(*entry) for entry in KERNELS], stream=io.StringIO())
 
 
 @pytest.fixture

@@ -10,6 +10,7 @@ from experiments.results.store import ResultStore
 from tests.experiments.helpers import outcome
 
 pytest.importorskip("ray")
+pytestmark = pytest.mark.xdist_group("ray")  # one Ray instance at a time on the machine
 
 
 @pytest.mark.slow  # the Ray cluster tests keep a Ray run in the default suite

@@ -179,6 +179,7 @@ def test_a_node_failing_three_tasks_in_a_row_is_taken_out_and_retries_are_bounde
 # ---- a cluster in this process ------------------------------------------------------------------
 
 ray = pytest.importorskip("ray")
+pytestmark = pytest.mark.xdist_group("ray")  # one Ray instance at a time on the machine
 
 
 @pytest.fixture

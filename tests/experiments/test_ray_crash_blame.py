@@ -64,6 +64,7 @@ def test_a_slot_token_must_be_hex() -> None:
 # ---- on a local Ray instance ---------------------------------------------------------------------
 
 pytest.importorskip("ray")
+pytestmark = pytest.mark.xdist_group("ray")  # one Ray instance at a time on the machine
 
 
 @pytest.mark.slow  # the local backend's crash blame stays in the default run (test_run_exit_codes)

@@ -22,6 +22,7 @@ from experiments.results.store import ResultsError, ResultStore
 from tests.experiments.helpers import outcome
 
 pytest.importorskip("ray")
+pytestmark = pytest.mark.xdist_group("ray")  # one Ray instance at a time on the machine
 
 TEAMS = "chaser,idle,tests.experiments.scripted_teams:Forward"
 GAMES = 8
