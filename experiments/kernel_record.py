@@ -33,8 +33,9 @@ from pathlib import Path
 MANIFEST_PATH = Path(__file__).with_name("kernel_manifest.py")
 """The generated module :func:`write_manifest` writes."""
 
-PARTIAL_TEAM = "mmdr"
-"""The built-in team whose partially observed self-play records the partial-observation kernels."""
+PARTIAL_TEAMS = ("mmdr", "mmd+msd2")
+"""The built-in teams (home, away) whose partially observed match records the partial-observation
+kernels (the benchmark's pairing: MMDR's and MMD+MSD²'s many-views assignment kernels both)."""
 
 PARTIAL_CYCLES = 600
 """Cycles of that recording (a partially observed match of built-in teams is slow; every
@@ -93,7 +94,7 @@ def builtin_teams() -> list[str]:
 def record_teams(teams: list[str], cycles: int = RECORD_CYCLES) -> dict[str, list[dict]]:
     """Each team's self-play recording, each in a fresh process, all sharing one new numba cache;
     then, under :data:`~experiments.warmup.PARTIAL_ENTRY`, the kernels a partially observed
-    self-play of :data:`PARTIAL_TEAM` adds (over :data:`PARTIAL_CYCLES` cycles)."""
+    match of :data:`PARTIAL_TEAMS` adds (over :data:`PARTIAL_CYCLES` cycles)."""
     from experiments.warmup import PARTIAL_ENTRY
 
     recordings: dict[str, list[dict]] = {}
@@ -104,7 +105,8 @@ def record_teams(teams: list[str], cycles: int = RECORD_CYCLES) -> dict[str, lis
                                   "--cycles", str(cycles)], env=env, capture_output=True, text=True, check=True)
             recordings[team] = json.loads(out.stdout)
             print(f"{team}: {len(recordings[team])} kernels", file=sys.stderr)
-        out = subprocess.run([sys.executable, "-m", "experiments.kernel_record", "--team", PARTIAL_TEAM,
+        home, away = PARTIAL_TEAMS
+        out = subprocess.run([sys.executable, "-m", "experiments.kernel_record", "--team", home, "--away", away,
                               "--cycles", str(PARTIAL_CYCLES), "--observation", "partial"], env=env,
                              capture_output=True, text=True, check=True)
         recordings[PARTIAL_ENTRY] = json.loads(out.stdout)
@@ -141,6 +143,7 @@ def manifest_text(recordings: dict[str, list[dict]]) -> str:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m experiments.kernel_record", description=__doc__.split("\n\n")[0])
     parser.add_argument("--team", help="record this team's self-play in this process and print it as JSON")
+    parser.add_argument("--away", help="with --team: the away team (default: the same team, a self-play)")
     parser.add_argument("--cycles", type=int, default=RECORD_CYCLES,
                         help=f"cycles per match (default: {RECORD_CYCLES})")
     parser.add_argument("--observation", choices=("full", "partial"), default="full",
@@ -149,7 +152,7 @@ def main(argv: list[str] | None = None) -> int:
                         help=f"record every built-in team and rewrite {MANIFEST_PATH.name}")
     args = parser.parse_args(argv)
     if args.team:
-        print(json.dumps(record_match(args.team, args.team, cycles=args.cycles, observation=args.observation)))
+        print(json.dumps(record_match(args.team, args.away or args.team, cycles=args.cycles, observation=args.observation)))
         return 0
     if not args.write:
         parser.error("give --team NAME or --write")

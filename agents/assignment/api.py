@@ -19,7 +19,8 @@ from .lexicographic_reference import bitvector_assignment, brute_force_assignmen
 from .matching import maximum_matching
 from .result import AssignmentResult
 from .validation import MAX_COORDINATE, as_costs, as_points, check_point_pair, check_squares
-from .scram import bottleneck_assignment, mmd_msd2_assignment, mmd_msd2_points, mmdr_assignment, mmdr_points
+from .scram import bottleneck_assignment, mmd_msd2_assignment, mmd_msd2_points, mmd_msd2_rows, mmdr_assignment, \
+    mmdr_points, mmdr_rows
 
 #: Method names accepted by :func:`assign` and :func:`assign_costs`.
 METHODS: tuple[str, ...] = ("mmdr", "mmd+msd2", "msd", "msd2", "bottleneck", "greedy", "random")
@@ -222,6 +223,26 @@ def dense_target_of(robots: np.ndarray, targets: np.ndarray, method: str,
         lengths = lengths * scale[:, None]
         squared = lengths * lengths
     return _solve_dense(_DENSE_KEYS[method], lengths, squared, None)
+
+
+def dense_targets_of_rows(robots: np.ndarray, targets: np.ndarray, method: str,
+                          scale: np.ndarray | None = None) -> np.ndarray:
+    """:func:`dense_target_of` of many independent problems of one size: ``robots`` (problems,
+    n, d) and ``targets`` (problems, m, d), C-contiguous, each pair as :func:`dense_target_of`
+    takes it; returns (problems, n) target indices, row ``r`` bit for bit
+    ``dense_target_of(robots[r], targets[r], method, scale)``. MMDR and MMD+MSD² solve all
+    problems in one compiled call (e.g. every player of a team assigning roles on its own view)."""
+    plain = _NO_SCALE if scale is None else scale
+    if method == "mmdr":
+        out = np.empty(robots.shape[:2], dtype=np.int64)
+        mmdr_rows(robots, targets, plain, out)
+        return out
+    if method == "mmd+msd2":
+        return mmd_msd2_rows(robots, targets, plain)
+    out = np.empty(robots.shape[:2], dtype=np.int64)
+    for r in range(robots.shape[0]):
+        out[r] = dense_target_of(robots[r], targets[r], method, scale)
+    return out
 
 
 _NO_SCALE = np.empty(0)

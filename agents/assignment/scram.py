@@ -125,3 +125,29 @@ def mmd_msd2_points(robots: np.ndarray, targets: np.ndarray, scale: np.ndarray) 
     """:func:`mmd_msd2_assignment` of the Euclidean distances between ``robots`` and ``targets``
     (scaled as :func:`mmdr_points`)."""
     return linear_sum_assignment(bottleneck_squares(robots, targets, scale))[1].astype(np.int64, copy=False)
+
+
+@njit(cache=True, nogil=True)
+def mmdr_rows(robots: np.ndarray, targets: np.ndarray, scale: np.ndarray, out: np.ndarray) -> None:
+    """:func:`mmdr_points` of many independent problems in one call: ``robots[r]`` (n, d) to
+    ``targets[r]`` (m, d) into ``out[r]`` (n,), every problem with the same ``scale``."""
+    for r in range(robots.shape[0]):
+        out[r] = mmdr_points(robots[r], targets[r], scale)
+
+
+@njit(cache=True, nogil=True)
+def bottleneck_squares_rows(robots: np.ndarray, targets: np.ndarray, scale: np.ndarray,
+                            out: np.ndarray) -> None:
+    """:func:`bottleneck_squares` of many independent problems in one call (into ``out[r]``)."""
+    for r in range(robots.shape[0]):
+        out[r] = bottleneck_squares(robots[r], targets[r], scale)
+
+
+def mmd_msd2_rows(robots: np.ndarray, targets: np.ndarray, scale: np.ndarray) -> np.ndarray:
+    """:func:`mmd_msd2_points` of many independent problems: (problems, n) target indices."""
+    squares = np.empty((robots.shape[0], robots.shape[1], targets.shape[1]))
+    bottleneck_squares_rows(robots, targets, scale, squares)
+    out = np.empty(robots.shape[:2], dtype=np.int64)
+    for r in range(squares.shape[0]):
+        out[r] = linear_sum_assignment(squares[r])[1]
+    return out

@@ -120,6 +120,15 @@ class RoleAssigner(ABC):
             ``role_of_player`` (k,) int64, a permutation of ``range(k)``.
         """
 
+    def assign_rows(self, players: np.ndarray, targets: np.ndarray, context: RoleContext) -> np.ndarray | None:
+        """Many independent assignments in one call, for an assigner whose answer depends on the
+        positions and ``context.time_scale`` alone (no memory, no role order, no other context):
+        ``players`` and ``targets`` (problems, k, 2), each problem one player's own view of the
+        team (partial observation); returns (problems, k), row ``r`` what :meth:`assign` returns
+        for problem ``r``. None (the default): this assigner has no such form; call
+        :meth:`assign` per problem."""
+        return None
+
     def ball_player(self) -> int | None:
         """The player (row of the last ``assign``'s ``players``) this assigner sends to the ball,
         or None to let the team choose."""

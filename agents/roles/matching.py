@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from agents.assignment.api import dense_target_of
+from agents.assignment.api import dense_target_of, dense_targets_of_rows
 from agents.roles.base import RoleAssigner, RoleContext
 from agents.roles.errors import RoleError
 from agents.roles.kernels import all_finite, greedy_in_order
@@ -57,6 +57,19 @@ class MethodAssigner(RoleAssigner):
         if not all_finite(players, targets):
             raise RoleError(f"role assigner {self.name!r}: players and targets must be finite")
         return dense_target_of(players, targets, self.method, self.time_scale(context, players.shape[0]))
+
+    def assign_rows(self, players: np.ndarray, targets: np.ndarray, context: RoleContext) -> np.ndarray:
+        k = self.n_roles
+        if k is None:
+            raise RoleError(f"role assigner {self.name!r}: call reset(n_roles, rng) before assign")
+        if players.ndim != 3 or players.shape[1:] != (k, 2) or targets.shape != players.shape:
+            raise RoleError(f"role assigner {self.name!r} was reset for {k} roles: players and targets must be "
+                            f"(problems, {k}, 2) arrays, got players {players.shape} and targets {targets.shape}")
+        players = np.ascontiguousarray(players, dtype=np.float64)
+        targets = np.ascontiguousarray(targets, dtype=np.float64)
+        if not all_finite(players, targets):
+            raise RoleError(f"role assigner {self.name!r}: players and targets must be finite")
+        return dense_targets_of_rows(players, targets, self.method, self.time_scale(context, k))
 
 
 class GreedyOffenseAssigner(RoleAssigner):

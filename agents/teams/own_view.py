@@ -22,8 +22,9 @@ what it alone believes (row ``i`` of :class:`~agents.teams.world_model.TeamBelie
    or its placement before a kick-off.
 
 The steps before the assigner are one compiled call for the whole team
-(:func:`~agents.teams.own_view_kernels.before_roles`), the assigner one call per player that
-assigns, the goals and dashes a compiled call each: a match of two such teams costs about three
+(:func:`~agents.teams.own_view_kernels.before_roles`), the assigner one call for all the players
+that assign when it has a batch form (:meth:`~agents.roles.RoleAssigner.assign_rows`: the
+distance-only ones) and one per player otherwise, the goals and dashes a compiled call each: a match of two such teams costs about three
 and a half full-observation matches. Missing from the full team's open play: the positions'
 own runs and the follow-ups of shots (only the shooter knows it shot), and an assigner's own
 choice of the player who goes for the ball (bidding's ball role): each player takes the first
@@ -262,6 +263,14 @@ class OwnViewPositioning:
         cycle = views.cycle
         play_on = mode == PlayMode.PLAY_ON
         self._assigned_at[rows], self._assigned_mode[rows] = cycle, mode
+        first = self.brains[0]
+        if rows.size and not (first._leave is not None and play_on):  # all in one call if the assigner can
+            players = beliefs.mate_pos[rows[:, None], self.outfield]
+            role_targets = self.targets[rows[:, None], self.match_roles[rows]]
+            proposals = first.assigner.assign_rows(players, role_targets, first._context)
+            if proposals is not None:
+                self.proposals[rows] = proposals
+                return
         for i in rows.tolist():
             brain = self.brains[i]
             players = beliefs.mate_pos[i][self.outfield]
