@@ -21,15 +21,17 @@ what it alone believes (row ``i`` of :class:`~agents.teams.world_model.TeamBelie
 6. its dash at the pace the stamina policy allows (:func:`agents.skills.player_kernels.paced_dash_rows`),
    or its placement before a kick-off.
 
-The steps before the assigner are one compiled call for the whole team
-(:func:`~agents.teams.own_view_kernels.before_roles`), the assigner one call for all the players
-that assign when it has a batch form (:meth:`~agents.roles.RoleAssigner.assign_rows`: the
-distance-only ones) and one per player otherwise, the goals and dashes a compiled call each: a match of two such teams costs about three
-and a half full-observation matches. Missing from the full team's open play: the positions'
-own runs and the follow-ups of shots (only the shooter knows it shot), and an assigner's own
-choice of the player who goes for the ball (bidding's ball role): each player takes the first
-of ours in its ball race. The player on the ball, our set-play taker and the goalkeeper near
-its goal decide with a whole brain (:mod:`agents.teams.decentralised`).
+Who decides and who assigns, and the steps before the assigner, are one compiled call for the
+whole team (:func:`~agents.teams.own_view_kernels.before_roles`); the assigner one call for all
+the players that assign when it has a batch form (:meth:`~agents.roles.RoleAssigner.assign_rows`:
+the distance-only ones) and one per player otherwise; following the votes and the goals one
+more call, the dashes and the role figures another (:mod:`agents.teams.own_view_after`): a
+match of two such teams costs about three full-observation matches. Missing from the full
+team's open play: the positions' own runs and the follow-ups of shots (only the shooter
+knows it shot), and an assigner's own choice of the player who goes for the ball (bidding's
+ball role): each player takes the first of ours in its ball race. The player on the ball,
+our set-play taker and the goalkeeper near its goal decide with a whole brain
+(:mod:`agents.teams.decentralised`).
 """
 
 from __future__ import annotations
@@ -45,7 +47,8 @@ from agents.skills.movement import DEFAULT_PACING
 from agents.skills.pacing import pacing_constants
 from agents.skills.player_kernels import paced_dash_rows
 from agents.teams import mechanism
-from agents.teams.own_view_kernels import before_roles, followed_role_gaps, own_goals
+from agents.teams.own_view_after import dash_and_gaps, follow_and_goals
+from agents.teams.own_view_kernels import before_roles
 from agents.teams.positions import nearest_roles
 from agents.teams.reporting import RoleFigures
 from agents.teams.role_kernels import steered_goals
@@ -133,8 +136,6 @@ class OwnViewPositioning:
         self._last_followed = self.followed.copy()
         self._next = self.followed.copy()
         """(n, k) the assignment each player follows from this cycle on (made before it is followed)."""
-        self._assigned_at = np.full(n, -(1 << 40), dtype=np.int64)
-        self._assigned_mode = np.full(n, -1, dtype=np.int64)
         # each player's last ball race (kept between its races) and this cycle's goals
         self._raced = np.full(n, -(1 << 40), dtype=np.int64)
         self.our_cycles = np.zeros((n, n), dtype=np.int64)
@@ -156,6 +157,16 @@ class OwnViewPositioning:
                               sp.support_pressure, sp.support_horizon, model.half_length / 3.0, shape._support_knobs)
         self._memory = (self.attacking, self._pending, self._in_play, self._block, self.our_cycles, self.our_points,
                         self.our_first, self.their_cycle, self.win_point, self._previous, self._primed)
+        self._assigned_at = np.full(n, -(1 << 40), dtype=np.int64)
+        self._assigned_mode = np.full(n, -1, dtype=np.int64)
+        self._planning = (self._assigned_at, self._assigned_mode, ASSIGN_EVERY, self._steers,
+                          int(self.outfield[0]) if self.outfield.size else -1)
+        self._no_votes, self._no_vote_cycles = np.zeros((n, n, 0), dtype=np.int64), np.zeros((n, n), dtype=np.int64)
+        self._rows, self._outfield_rows, self._due_rows = (np.zeros(n, dtype=np.int64) for _ in range(3))
+        """This cycle's deciding rows, their outfield ones and who of those assigns (filled by before_roles)."""
+        self._spots = first.kick_off_spots
+        self._measuring = (self.rank, self.followed, self._last_followed, self.targets, self.match_roles,
+                           self.style.unfilled_distance)
         self.figures = RoleFigures(config, k)
         """The team's role figures: each player's distance to the target of the role it follows."""
 
@@ -166,52 +177,57 @@ class OwnViewPositioning:
         ``dash`` (n, 2); returns their placements (n, 2) in a play mode that places players,
         else None. ``votes``: the team's :class:`~agents.roles.voting.VoteBook` (None: no
         outfield roles)."""
-        rows = np.flatnonzero(deciding)
-        if not rows.size:
+        if not deciding.any():
             return None
         mode = views.play_mode
         play_on = mode == PlayMode.PLAY_ON
+        placed = mode in PLACED
+        cycle = views.cycle
         ball = beliefs.ball
         if self._choose_roles:
             self._pick_roles(np.flatnonzero(views.present), beliefs)
         self._mode, self._ours = mode, bool(views.mode_ours)
         attack, defend = self._tables(Situation.ATTACK), self._tables(Situation.DEFEND)
         other = attack if play_on else self._tables(self._situation_of(mode, self._ours))
-        outfield_rows = rows[self.rank[rows] >= 0]
-        is_due = self._due(outfield_rows, views, int(mode))
-        due, settled = outfield_rows[is_due], outfield_rows[~is_due]
-        placed = mode in PLACED
-        if not placed:  # who does not assign now follows what its votes say before its targets are made
-            self._follow(settled, votes, views.cycle)
-        full = self._full  # who needs every role's target this cycle: those who assign, and those drawn or sampled
-        full[:] = self._steers  # (a steering assigner's field needs them all)
-        full[due] = True
-        if self.outfield.size:
-            full[self.outfield[0]] = True
-        if outfield_rows.size and mechanism.sampled(views.cycle):
-            full[outfield_rows[0]] = True
-        before_roles(rows, play_on, mode == PlayMode.AFTER_GOAL, play_on and not self.style.stationary, ball,
-                     beliefs.ball_vel, beliefs.mate_pos, views.velocity, beliefs.opp_pos, views.effort, views.saw,
-                     views.cycle, self._race, self._shape_args, self._settle_args, self._support_args, attack, defend,
-                     other, self._memory, self.followed, self._next, self.rank, self.match_roles, full, self.targets)
+        voting = (self._no_votes, self._no_vote_cycles, 0, cycle) if votes is None else \
+            (votes.votes, votes.vote_cycle, votes.horizon, cycle)
+        sampled = mechanism.sampled(cycle)
+        n_rows, n_out, n_due = before_roles(
+            deciding, int(mode), play_on, mode == PlayMode.AFTER_GOAL, placed, play_on and not self.style.stationary,
+            sampled, ball, beliefs.ball_vel, beliefs.mate_pos, views.velocity, beliefs.opp_pos, views.effort,
+            views.saw, cycle, self._planning, voting, self._race, self._shape_args, self._settle_args,
+            self._support_args, attack, defend, other, self._memory, self.proposals, self.followed, self._next,
+            self.rank, self.match_roles, self._full, self.targets, self._rows, self._outfield_rows, self._due_rows)
+        rows, outfield_rows = self._rows[:n_rows], self._outfield_rows[:n_out]
         if placed:  # everybody lines up for a kick-off in its own role (by shirt number)
             self.proposals[outfield_rows] = self.followed[outfield_rows] = np.arange(self.proposals.shape[1])
             self._assigned_mode[outfield_rows] = -1
-        elif outfield_rows.size:
-            self._assign(due, views, beliefs, int(mode))
-            self._follow(due, votes, views.cycle)
-            self.followed[outfield_rows] = self._next[outfield_rows]
-        self._goals(rows, outfield_rows, play_on, beliefs, views.cycle)
-        phase = self._phase  # the pacing's: 1 we attack, 0 we defend, -1 not in play
-        phase[rows] = self.attacking[rows] if play_on else -1
-        paced_dash_rows(rows, views.position, views.velocity, self.goals, views.effort, views.stamina,
-                        views.capacity, self.urgent, ball, self.goalie, phase, views.cycle, views.half,
-                        self._pacing, dash, self._budgets)
-        if play_on:
-            self._measure(outfield_rows, views, beliefs)
-        if mode in PLACED:
-            return self.goals
-        return None
+        elif n_out:
+            self._assign(self._due_rows[:n_due], beliefs, int(mode), cycle)
+        style = self.style
+        goals_args = (self.targets, self.match_roles, self.outfield, self.goalie, play_on, self.our_cycles,
+                      self.our_points, self.our_first, self.their_cycle, ball, beliefs.opp_pos, style.offside_margin,
+                      style.pressers, self._goalie_margin, self._area[0], self._area[1], self.rank)
+        follow_and_goals(rows, outfield_rows, self._due_rows[:n_due], placed, voting, self.proposals, self._next,
+                         self.followed, style.stationary, self._spots, goals_args, self.goals, self.urgent)
+        if self._steers and not style.stationary:
+            self._steer(outfield_rows, beliefs, play_on, cycle)
+        goalie = self.goalie
+        if goalie >= 0 and deciding[goalie]:
+            self.goals[goalie] = skills.guard_position(self.model, ball[goalie])
+            self.urgent[goalie] = False
+        if play_on and n_out and sampled:  # fixed and held roles v the minimal makespan, as the first player sees them
+            i = int(outfield_rows[0])
+            players = np.ascontiguousarray(beliefs.mate_pos[i][self.outfield])
+            role_targets = np.ascontiguousarray(self.targets[i][self.match_roles[i]])
+            self.figures.add_sample(*mechanism.makespans(players, role_targets, self._last_followed[i]))
+        switches, mean, largest, far = dash_and_gaps(
+            rows, outfield_rows, play_on, self.attacking, self._phase,
+            (views.position, views.velocity, views.effort, views.stamina, views.capacity, ball, goalie, cycle,
+             views.half, self._pacing), self.goals, self.urgent, dash, self._budgets, self._measuring)
+        if play_on and n_out:
+            self.figures.add(switches, True, mean, largest, far)
+        return self.goals if placed else None
 
     def _pick_roles(self, rows: np.ndarray, beliefs: TeamBeliefs) -> None:
         """A smaller side: each player takes, once, the outfield roles it believes nearest the
@@ -243,24 +259,8 @@ class OwnViewPositioning:
             tables = self._formation_tables[situation] = self.formation_set.formation(situation).query_tables
         return tables
 
-    def _follow(self, rows: np.ndarray, votes: VoteBook | None, cycle: int) -> None:
-        """Into ``_next[rows]``, the assignment each of ``rows`` follows: the one most of the
-        votes it holds agree on (:func:`~agents.roles.voting.follow_votes`), else its own."""
-        if votes is not None:
-            follow_votes(rows, votes.votes, votes.vote_cycle, self.proposals, cycle, votes.horizon, self._next)
-        else:
-            self._next[rows] = self.proposals[rows]
-
-    def _due(self, rows: np.ndarray, views: PlayerViews, mode: int) -> np.ndarray:
-        """(len(rows),) which of the outfield ``rows`` assign this cycle: at once when the play
-        mode changed since their last assignment, else on a cycle they see, at least
-        ``ASSIGN_EVERY`` cycles after it."""
-        return (self._assigned_mode[rows] != mode) | (views.saw[rows]
-                                                      & (views.cycle - self._assigned_at[rows] >= ASSIGN_EVERY))
-
-    def _assign(self, rows: np.ndarray, views: PlayerViews, beliefs: TeamBeliefs, mode: int) -> None:
+    def _assign(self, rows: np.ndarray, beliefs: TeamBeliefs, mode: int, cycle: int) -> None:
         """The role assigner on each of the due players ``rows``' own model (module docstring, step 4)."""
-        cycle = views.cycle
         play_on = mode == PlayMode.PLAY_ON
         self._assigned_at[rows], self._assigned_mode[rows] = cycle, mode
         first = self.brains[0]
@@ -299,26 +299,6 @@ class OwnViewPositioning:
         context.attacking = bool(self.attacking[i])
         return context
 
-    def _goals(self, rows: np.ndarray, outfield_rows: np.ndarray, play_on: bool, beliefs: TeamBeliefs,
-               cycle: int) -> None:
-        """Each deciding player's goal point and hurry (module docstring, step 5)."""
-        style = self.style
-        if style.stationary:
-            goals = self.brains[0].kick_off_spots
-            for i in outfield_rows.tolist():
-                self.goals[i] = goals[self.match_roles[i, self.rank[i]]]
-            self.urgent[rows] = False
-        else:
-            own_goals(outfield_rows, self.rank, self.followed, self.targets, self.match_roles, self.outfield,
-                      self.goalie, play_on, self.our_cycles, self.our_points, self.our_first, self.their_cycle,
-                      beliefs.ball, beliefs.opp_pos, style.offside_margin, style.pressers, self._goalie_margin,
-                      self._area[0], self._area[1], self.goals, self.urgent)
-            if self._steers:
-                self._steer(outfield_rows, beliefs, play_on, cycle)
-        if self.goalie >= 0 and self.goalie in rows:
-            self.goals[self.goalie] = skills.guard_position(self.model, beliefs.ball[self.goalie])
-            self.urgent[self.goalie] = False
-
     def _steer(self, rows: np.ndarray, beliefs: TeamBeliefs, play_on: bool, cycle: int) -> None:
         """A steering assigner (potential-field bidding) moves each player not going for the
         ball along its own field rather than straight to its role's target."""
@@ -333,19 +313,3 @@ class OwnViewPositioning:
             steps = brain.assigner.steer(players, role_targets, followed, context)
             r = self.rank[i]
             self.goals[i] = steered_goals(players[r:r + 1], steps[r:r + 1], role_targets[followed[r:r + 1]])[0]
-
-    def _measure(self, rows: np.ndarray, views: PlayerViews, beliefs: TeamBeliefs) -> None:
-        """One play-on cycle of the role figures: switches of the followed role, each player's
-        distance to its role's target as it believes them, the roles farther than
-        ``unfilled_distance``; on sampled cycles the mechanism figures on the first player's model."""
-        if not rows.size:
-            return
-        if mechanism.sampled(views.cycle):  # fixed and held roles v the minimal makespan, as the first player sees them
-            i = int(rows[0])
-            players = np.ascontiguousarray(beliefs.mate_pos[i][self.outfield])
-            role_targets = np.ascontiguousarray(self.targets[i][self.match_roles[i]])
-            self.figures.add_sample(*mechanism.makespans(players, role_targets, self._last_followed[i]))
-        switches, mean, largest, far = followed_role_gaps(rows, self.rank, self.followed, self._last_followed,
-                                                          self.targets, self.match_roles, views.position,
-                                                          self.style.unfilled_distance)
-        self.figures.add(switches, True, mean, largest, far)

@@ -1,5 +1,6 @@
-"""Compiled kernels of :mod:`agents.teams.own_view`: the built-in team's positioning, done by
-each player on its own world model, for a whole team in one call per step.
+"""Compiled kernels of :mod:`agents.teams.own_view` before the role assigner: the built-in
+team's positioning, done by each player on its own world model, for a whole team in one call
+(:func:`before_roles`; the steps after the assigner are in :mod:`agents.teams.own_view_after`).
 
 Every kernel loops over the deciding players ``rows``; row ``i`` of every output depends only
 on row ``i`` of the inputs (player ``i``'s beliefs and memory), so the team stays
@@ -15,6 +16,7 @@ import math
 import numpy as np
 from numba import njit
 
+from agents.roles.voting import follow_votes
 from agents.skills.interception_kernels import UNREACHABLE, race_kernel
 from formations.interpolation_kernels import value_kernel
 from agents.teams.role_kernels import offside_line, shape_targets
@@ -171,86 +173,88 @@ def query_each(rows: np.ndarray, play_on: bool, after_goal: bool, block: np.ndar
 
 
 @njit(cache=True, nogil=True)
-def before_roles(rows: np.ndarray, play_on: bool, after_goal: bool, support: bool, ball: np.ndarray,
-                 ball_vel: np.ndarray, mate_pos: np.ndarray, own_vel: np.ndarray, opp_pos: np.ndarray,
-                 effort: np.ndarray, saw: np.ndarray, cycle: int, race: tuple, shape: tuple, settle: tuple,
-                 supporting: tuple, tables_attack: tuple, tables_defend: tuple, tables_other: tuple,
-                 memory: tuple, followed: np.ndarray, following: np.ndarray, rank: np.ndarray,
-                 match_roles: np.ndarray, full: np.ndarray, targets: np.ndarray) -> None:  # pragma: no cover
-    """A team's deciding players' steps before the role assigner, in one call: each one's ball
-    race, switch and block (:func:`read_play`), its formation query (:func:`query_each`), its
-    targets settled (:func:`settle_each`) and, with ``support``, its support spots
-    (:func:`support_each`; in full for the players marked ``full``). The tuples hold those kernels' other arguments in their order:
-    ``race`` (radius ... race constants, raced, near, every), ``shape`` (switch margin, persist,
-    depth, attack push, knobs), ``settle`` (outfield roles, back roles, x limit, forwards,
-    narrowing, narrow x, knobs), ``supporting`` (is_forward ... support knobs) and ``memory``
-    (attacking, pending, in play, block, our cycles, our points, our first, their cycle, win
-    point, previous, primed)."""
-    attacking, pending, in_play, block, our_cycles, our_points, our_first, their_cycle, win_point, previous, \
-        primed = memory
-    read_play(rows, ball, ball_vel, mate_pos, own_vel, opp_pos, effort, race[0], race[1], race[2], race[3],
-              race[4], race[5], race[6], race[7], saw, cycle, race[8], race[9], race[10], play_on, shape[0], shape[1],
-              shape[2], shape[3], shape[4], attacking, pending, in_play, block, our_cycles, our_points, our_first,
-              their_cycle, win_point)
-    query_each(rows, play_on, after_goal, block, ball, attacking, tables_attack, tables_defend, tables_other,
-               targets)
-    settle_each(rows, targets, previous, primed, match_roles, settle[0], settle[1], opp_pos, ball, block, attacking,
-                play_on, settle[2], settle[3], settle[4], settle[5], settle[6])
-    if support:
-        support_each(rows, attacking, our_first, our_cycles, our_points, their_cycle, targets, match_roles, followed,
-                     following, rank, full, supporting[0], supporting[1], opp_pos, ball, supporting[2], supporting[3],
-                     supporting[4], supporting[5], supporting[6], supporting[7])
+def plan_rows(deciding: np.ndarray, rank: np.ndarray, saw: np.ndarray, cycle: int, mode: int, placed: bool,
+              sampled: bool, planning: tuple, voting: tuple, proposals: np.ndarray, following: np.ndarray,
+              full: np.ndarray, rows: np.ndarray, outfield_rows: np.ndarray,
+              due: np.ndarray) -> tuple[int, int, int]:  # pragma: no cover - compiled
+    """Who decides this cycle and who of them assigns roles: the ``deciding`` players into
+    ``rows``, the outfield ones among them into ``outfield_rows``, and into ``due`` those who
+    assign (at once when the play mode changed since their last assignment, else on a cycle
+    they see at least ``every`` cycles after it; ``planning``: last assignment cycles, their
+    modes, every, whether the assigner steers, our first outfield row or -1). Out of the play
+    modes that place players, the others find the assignment their votes agree on
+    (``voting``: votes, vote cycles, horizon, cycle; into ``following``). ``full`` marks who
+    needs every role's target: those who assign, all of a steering assigner, our first outfield
+    player (drawn) and on ``sampled`` cycles the first deciding one. Returns the three counts."""
+    assigned_at, assigned_mode, every, steers, first_outfield = planning
+    votes, vote_cycle, horizon, _ = voting
+    settled = np.empty(deciding.shape[0], dtype=np.int64)
+    n_rows = n_out = n_due = n_settled = 0
+    for i in range(deciding.shape[0]):
+        if not deciding[i]:
+            continue
+        rows[n_rows] = i
+        n_rows += 1
+        if rank[i] < 0:
+            continue
+        outfield_rows[n_out] = i
+        n_out += 1
+        if assigned_mode[i] != mode or (saw[i] and cycle - assigned_at[i] >= every):
+            due[n_due] = i
+            n_due += 1
+        else:
+            settled[n_settled] = i
+            n_settled += 1
+    if not placed and votes.shape[2] > 0:
+        follow_votes(settled[:n_settled], votes, vote_cycle, proposals, cycle, horizon, following)
+    full[:] = steers
+    for d in range(n_due):
+        full[due[d]] = True
+    if first_outfield >= 0:
+        full[first_outfield] = True
+    if n_out > 0 and sampled:
+        full[outfield_rows[0]] = True
+    return n_rows, n_out, n_due
 
 
 @njit(cache=True, nogil=True)
-def own_goals(rows: np.ndarray, rank: np.ndarray, followed: np.ndarray, targets: np.ndarray,
-              out_roles: np.ndarray, outfield: np.ndarray, goalie: int, play_on: bool, our_cycles: np.ndarray,
-              our_points: np.ndarray, our_first: np.ndarray, their_cycle: np.ndarray, ball: np.ndarray,
-              opp_pos: np.ndarray, offside_margin: float, pressers: int, keeper_margin: int, area_x: float,
-              area_y: float, goals: np.ndarray, urgent: np.ndarray) -> None:  # pragma: no cover - compiled
-    """Each deciding outfield player's goal point (into ``goals[i]``) and hurry: its followed
-    role's target (``followed[i, rank[i]]``, an index into its ``out_roles[i]``); in play on pulled back
-    behind the offside line it believes in, its interception point when it believes it is the
-    one who goes for the ball (the first of ours, the goalkeeper only for a ball it wins by
-    ``keeper_margin`` cycles in our penalty area, ``|x| >= area_x``, ``|y| <= area_y``), and as
-    one of the first ``pressers`` when it believes they win the ball."""
-    for i in rows:
-        r = rank[i]
-        if r < 0:
-            continue
-        t = out_roles[i, followed[i, r]]
-        gx, gy = targets[i, t, 0], targets[i, t, 1]
-        urgent[i] = False
-        if play_on:
-            limit = offside_line(opp_pos[i], ball[i, 0]) - offside_margin
-            if gx > limit:
-                gx = max(limit, 0.0)
-            first = our_first[i]
-            if first == goalie and first >= 0:
-                mine = our_cycles[i, goalie]
-                px, py = our_points[i, goalie, 0], our_points[i, goalie, 1]
-                comes_out = (mine < UNREACHABLE and their_cycle[i] - mine >= keeper_margin
-                             and px <= -area_x and abs(py) <= area_y)
-                if not comes_out:  # an outfield player goes instead
-                    first, best = -1, UNREACHABLE
-                    for j in outfield:
-                        if our_cycles[i, j] < best:
-                            first, best = j, our_cycles[i, j]
-            if first == i:
-                gx, gy = our_points[i, i, 0], our_points[i, i, 1]
-                urgent[i] = True
-            elif pressers > 1 and not (our_first[i] >= 0 and our_cycles[i, our_first[i]] < their_cycle[i]):
-                ahead = 0  # our players nearer the ball than i (ties: lower row)
-                for j in outfield:
-                    if our_cycles[i, j] < our_cycles[i, i] or (our_cycles[i, j] == our_cycles[i, i] and j < i):
-                        ahead += 1
-                if ahead < pressers:
-                    if our_cycles[i, i] < UNREACHABLE:
-                        gx, gy = our_points[i, i, 0], our_points[i, i, 1]
-                    else:
-                        gx, gy = ball[i, 0], ball[i, 1]
-                    urgent[i] = True
-        goals[i, 0], goals[i, 1] = gx, gy
+def before_roles(deciding: np.ndarray, mode: int, play_on: bool, after_goal: bool, placed: bool, support: bool,
+                 sampled: bool, ball: np.ndarray, ball_vel: np.ndarray, mate_pos: np.ndarray, own_vel: np.ndarray,
+                 opp_pos: np.ndarray, effort: np.ndarray, saw: np.ndarray, cycle: int, planning: tuple,
+                 voting: tuple, race: tuple, shape: tuple, settle: tuple, supporting: tuple, tables_attack: tuple,
+                 tables_defend: tuple, tables_other: tuple, memory: tuple, proposals: np.ndarray,
+                 followed: np.ndarray, following: np.ndarray, rank: np.ndarray, match_roles: np.ndarray,
+                 full: np.ndarray, targets: np.ndarray, rows: np.ndarray, outfield_rows: np.ndarray,
+                 due: np.ndarray) -> tuple[int, int, int]:  # pragma: no cover - compiled
+    """A team's steps before the role assigner, in one call: who decides and who assigns
+    (:func:`plan_rows`, whose counts it returns), then for each deciding player its ball
+    race, switch and block (:func:`read_play`), its formation query (:func:`query_each`), its
+    targets settled (:func:`settle_each`) and, with ``support``, its support spots
+    (:func:`support_each`; in full for the players marked ``full``). The tuples hold those
+    kernels' other arguments in their order: ``planning`` and ``voting`` (:func:`plan_rows`),
+    ``race`` (radius ... race constants, raced, near, every), ``shape`` (switch margin,
+    persist, depth, attack push, knobs), ``settle`` (outfield roles, back roles, x limit,
+    forwards, narrowing, narrow x, knobs), ``supporting`` (is_forward ... support knobs) and
+    ``memory`` (attacking, pending, in play, block, our cycles, our points, our first, their
+    cycle, win point, previous, primed)."""
+    counts = plan_rows(deciding, rank, saw, cycle, mode, placed, sampled, planning, voting, proposals, following,
+                       full, rows, outfield_rows, due)
+    active = rows[:counts[0]]
+    attacking, pending, in_play, block, our_cycles, our_points, our_first, their_cycle, win_point, previous, \
+        primed = memory
+    read_play(active, ball, ball_vel, mate_pos, own_vel, opp_pos, effort, race[0], race[1], race[2], race[3],
+              race[4], race[5], race[6], race[7], saw, cycle, race[8], race[9], race[10], play_on, shape[0], shape[1],
+              shape[2], shape[3], shape[4], attacking, pending, in_play, block, our_cycles, our_points, our_first,
+              their_cycle, win_point)
+    query_each(active, play_on, after_goal, block, ball, attacking, tables_attack, tables_defend, tables_other,
+               targets)
+    settle_each(active, targets, previous, primed, match_roles, settle[0], settle[1], opp_pos, ball, block, attacking,
+                play_on, settle[2], settle[3], settle[4], settle[5], settle[6])
+    if support:
+        support_each(active, attacking, our_first, our_cycles, our_points, their_cycle, targets, match_roles, followed,
+                     following, rank, full, supporting[0], supporting[1], opp_pos, ball, supporting[2], supporting[3],
+                     supporting[4], supporting[5], supporting[6], supporting[7])
+    return counts
 
 
 @njit(cache=True, nogil=True)
@@ -279,31 +283,6 @@ def _supports(i: int, rank: np.ndarray, followed: np.ndarray, match_roles: np.nd
 
 
 @njit(cache=True, nogil=True)
-def followed_role_gaps(rows: np.ndarray, rank: np.ndarray, followed: np.ndarray, last_followed: np.ndarray,
-                       targets: np.ndarray, out_roles: np.ndarray, position: np.ndarray,
-                       unfilled: float) -> tuple[int, float, float, int]:  # pragma: no cover - compiled
-    """One cycle's role figures of the deciding outfield players ``rows``: how many switched
-    role since ``last_followed`` (then set to ``followed``), and the mean and the largest
-    distance from a player (its ``position``) to its followed role's target as it believes
-    it, and how many are farther than ``unfilled`` (m)."""
-    switches, far = 0, 0
-    total, largest = 0.0, 0.0
-    for i in rows:
-        r = rank[i]
-        role = followed[i, r]
-        if role != last_followed[i, r]:
-            switches += 1
-        last_followed[i, :] = followed[i, :]
-        t = out_roles[i, role]
-        d = math.hypot(position[i, 0] - targets[i, t, 0], position[i, 1] - targets[i, t, 1])
-        total += d
-        largest = max(largest, d)
-        if d > unfilled:
-            far += 1
-    return switches, total / max(rows.shape[0], 1), largest, far
-
-
-@njit(cache=True, nogil=True)
 def support_each(rows: np.ndarray, attacking: np.ndarray, our_first: np.ndarray, our_cycles: np.ndarray,
                  our_points: np.ndarray, their_cycle: np.ndarray, targets: np.ndarray, match_roles: np.ndarray,
                  followed: np.ndarray, following: np.ndarray, rank: np.ndarray, full: np.ndarray,
@@ -313,10 +292,11 @@ def support_each(rows: np.ndarray, attacking: np.ndarray, our_first: np.ndarray,
     """Each deciding player's support spots as role targets (in place, before its roles are
     assigned), as :meth:`agents.teams.shape.Shape.support` does for the team: when it believes
     we attack, our first player reaches the ball within ``horizon`` cycles and an opponent
-    could be there within ``pressure`` (a pressed carrier needs a pass), the targets of the ``players`` eligible roles nearest that carrier
-    (not forwards, not the back line unless the ball is in our third, ``x <= -third_x``, not
-    the carrier's own role) move to open spots around it (:func:`support_spots`). A player
-    not marked ``full`` (who does not assign this cycle) only needs the target of its own role
+    could be there within ``pressure`` (a pressed carrier needs a pass), the targets of the
+    ``players`` eligible roles nearest that carrier (not forwards, not the back line unless
+    the ball is in our third, ``x <= -third_x``, not the carrier's own role) move to open
+    spots around it (:func:`support_spots`). A player not marked ``full`` (who does not
+    assign this cycle) only needs the target of its own role
     (in ``following``: what it follows from this cycle on; the carrier's role is as it was,
     in ``followed``): it looks for spots only when its own role is one of those supporters."""
     k = match_roles.shape[1]
