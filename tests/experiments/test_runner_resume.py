@@ -16,8 +16,11 @@ from experiments.results.store import ResultStore
 from experiments.runner import paired_specs, run_matches
 from tests.experiments.helpers import outcome
 
-COMMAND = ["tournament", "--teams", "chaser,idle,tests.experiments.scripted_teams:Forward", "--games", "12",
-           "--cycles", "400", "--workers", "2", "--no-progress"]
+
+def _command(cycles: int) -> list[str]:
+    """The interrupted tournament, with matches of ``cycles`` cycles."""
+    return ["tournament", "--teams", "chaser,idle,tests.experiments.scripted_teams:Forward", "--games", "12",
+            "--cycles", str(cycles), "--workers", "2", "--no-progress"]
 
 
 def test_one_and_two_workers_give_identical_records(tmp_path) -> None:
@@ -62,20 +65,23 @@ def test_a_stopped_run_resumes_without_loss_or_duplicates(tmp_path, capsys, sig)
     from experiments.cli import main
 
     total = 3 * 12
+    # Ctrl-C lets the matches under way finish: longer matches keep the run going well past the
+    # moment the test sees its first rows, even on a loaded machine.
+    command = _command(400 if sig == signal.SIGKILL else 1200)
     reference = tmp_path / "reference.sqlite"
-    assert main([*COMMAND, "--out", str(reference)]) == 0
+    assert main([*command, "--out", str(reference)]) == 0
     out = capsys.readouterr().out
     assert "mean goal difference" in out
 
     name = "stopped"
     path = tmp_path / f"{name}.sqlite"
-    stopped = _interrupt_midway([*COMMAND, "--out", str(path)], path, sig, os.getcwd())
+    stopped = _interrupt_midway([*command, "--out", str(path)], path, sig, os.getcwd())
     kept = _rows(path)
     assert 3 <= kept < total
     if sig == signal.SIGINT:
         assert stopped.returncode == 130
         assert "run the same command again" in stopped.stderr.read()
-    assert main([*COMMAND, "--out", str(path)]) == 0
+    assert main([*command, "--out", str(path)]) == 0
     out_resumed = capsys.readouterr().out
     assert f"({kept} already stored)" in out_resumed
     assert _rows(path) == total
