@@ -3,8 +3,28 @@
 from __future__ import annotations
 
 import io
+import os
+from pathlib import Path
 
 import pytest
+
+
+MAX_TEST_WORKERS = 8
+"""At most this many test processes with ``-n auto`` (each imports numpy, numba and pymunk:
+a many-core machine would otherwise start one per core)."""
+
+
+def pytest_xdist_auto_num_workers(config: pytest.Config) -> int:
+    """``-n auto``: one test process per core this process may use (its CPU affinity, and a
+    container's CPU quota where cgroup v2 sets one), at most :data:`MAX_TEST_WORKERS`."""
+    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+    try:
+        quota, period = Path("/sys/fs/cgroup/cpu.max").read_text().split()
+        if quota != "max":
+            cores = min(cores, max(1, int(int(quota) / int(period))))
+    except (OSError, ValueError):
+        pass
+    return max(1, min(cores, MAX_TEST_WORKERS))
 
 
 def pytest_sessionstart(session: pytest.Session) -> None:
