@@ -23,6 +23,7 @@ import contextlib
 import json
 import os
 import sqlite3
+import time
 from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 
@@ -273,23 +274,46 @@ class ResultStore:
 
 def _check_existing(path: Path, kind: str, config_hash: str, config: str) -> None:
     """Refuse (ResultsError) to run into ``path`` unless it is an empty database or holds the
-    results of the same command and configuration; read-only, so a refused file is left as it was."""
-    try:
-        connection, cleanup = connect_read_only(path)
-    except sqlite3.DatabaseError as exc:
-        raise ResultsError(_UNUSABLE.format(path=path, why=exc)) from None
-    store = ResultStore(path, connection, cleanup=cleanup)
-    try:
+    results of the same command and configuration; read-only, so a refused file is left as it
+    was. A file another run is creating at this moment can read as damaged (its first pages
+    are being written): while the file changes, or a writer's log is beside it, it is read
+    again, for up to :data:`CREATION_WAIT` seconds."""
+    deadline = time.monotonic() + CREATION_WAIT
+    while True:
+        before = _file_state(path)
         try:
-            meta, tables = store.meta(), _tables(store._db)
+            refusal = _existing_refusal(path, kind, config_hash, config)
+            break
         except sqlite3.DatabaseError as exc:
-            raise ResultsError(_UNUSABLE.format(path=path, why=exc)) from None
-        refusal = _refusal(path, meta, tables, kind, config_hash, config,
-                           lambda: _contents(path, store))
-    finally:
-        store.close()
+            being_written = _file_state(path) != before or any(
+                Path(f"{path}{suffix}").exists() for suffix in ("-wal", "-journal"))
+            if not being_written or time.monotonic() > deadline:
+                raise ResultsError(_UNUSABLE.format(path=path, why=exc)) from None
+            time.sleep(0.02)
     if refusal is not None:
         raise ResultsError(refusal)
+
+
+CREATION_WAIT = 2.0
+"""Seconds :func:`_check_existing` reads again a file that another run is creating."""
+
+
+def _file_state(path: Path) -> tuple[int, int]:
+    """(size, modification time in ns) of ``path``: whether someone is writing it."""
+    stat = path.stat()
+    return stat.st_size, stat.st_mtime_ns
+
+
+def _existing_refusal(path: Path, kind: str, config_hash: str, config: str) -> str | None:
+    """:func:`_refusal` for the database at ``path``, read read-only; sqlite3.DatabaseError
+    when it cannot be read."""
+    connection, cleanup = connect_read_only(path)
+    store = ResultStore(path, connection, cleanup=cleanup)
+    try:
+        meta, tables = store.meta(), _tables(store._db)
+        return _refusal(path, meta, tables, kind, config_hash, config, lambda: _contents(path, store))
+    finally:
+        store.close()
 
 
 _UNUSABLE = "{path}: cannot be used as a results file ({why}); delete it or use another results file"

@@ -57,6 +57,38 @@ def test_of_two_runs_creating_one_file_with_different_configurations_one_is_refu
             assert store.config_hash == winners[0]
 
 
+def test_a_file_that_reads_as_damaged_while_another_run_writes_it_is_read_again(tmp_path, monkeypatch) -> None:
+    """The creation race's rare turn: the other run's first pages are being written while this
+    run looks, so the file reads as damaged once; it is read again and the run is refused for
+    the configuration, not for a damaged file. A damaged file nobody writes is refused at once."""
+    import experiments.results.store as store_module
+
+    path = tmp_path / "r.sqlite"
+    ResultStore.create(path, "tournament", "aaaa1111", "{}", {}).close()
+    real = store_module.connect_read_only
+    reads = []
+
+    def half_written(at):
+        reads.append(at)
+        if len(reads) == 1:  # the writer is at work: the file changes while it is read
+            at.write_bytes(at.read_bytes() + b"\0" * 4096)
+            raise sqlite3.DatabaseError("database disk image is malformed")
+        return real(at)
+
+    monkeypatch.setattr(store_module, "connect_read_only", half_written)
+    with pytest.raises(ResultsError, match="different match configuration"):
+        ResultStore.create(path, "tournament", "bbbb2222", "{}", {})
+    assert len(reads) == 2
+
+    reads.clear()
+    still = tmp_path / "still.sqlite"
+    still.write_bytes(b"SQLite format 3\0" + b"\1" * 4000)
+    monkeypatch.setattr(store_module, "connect_read_only", real)
+    with pytest.raises(ResultsError, match="cannot be used as a results file"):
+        ResultStore.create(still, "tournament", "bbbb2222", "{}", {})
+    assert still.read_bytes() == b"SQLite format 3\0" + b"\1" * 4000
+
+
 def test_the_refusal_names_the_parameters_that_differ(tmp_path) -> None:
     path = tmp_path / "r.sqlite"
     first, second = config_for(30), config_for(40)
