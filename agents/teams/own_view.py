@@ -42,10 +42,9 @@ import numpy as np
 
 from agents import skills
 from agents.roles import RoleContext, offensive_order
-from agents.roles.voting import VoteBook, follow_votes
+from agents.roles.voting import VoteBook
 from agents.skills.movement import DEFAULT_PACING
 from agents.skills.pacing import pacing_constants
-from agents.skills.player_kernels import paced_dash_rows
 from agents.teams import mechanism
 from agents.teams.own_view_after import dash_and_gaps, follow_and_goals
 from agents.teams.own_view_kernels import before_roles
