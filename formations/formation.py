@@ -133,11 +133,6 @@ class Formation:
         values = self._interpolator.values_many(points)
         return values.reshape(len(points), self._n_roles, 2)
 
-    def positions_each(self, balls: np.ndarray, out: np.ndarray) -> None:
-        """:meth:`positions` for each of ``balls`` (k, 2) (finite, float64) into ``out``
-        (k, roles, 2), C-contiguous, in one compiled call."""
-        self._interpolator.values_each(balls, out.reshape(len(balls), self._n_roles * 2))
-
     @property
     def query_tables(self) -> tuple:
         """The compiled query's tables (:func:`formations.interpolation_kernels.value_kernel`'s

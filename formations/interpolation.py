@@ -36,8 +36,7 @@ import numpy as np
 from scipy.spatial import Delaunay
 
 from formations.errors import FormationInputError
-from formations.interpolation_kernels import find_triangle_kernel, grid_cell, nearest_edge_kernel, value_kernel, \
-    values_kernel
+from formations.interpolation_kernels import find_triangle_kernel, grid_cell, nearest_edge_kernel, value_kernel
 
 GRID_CELLS_ALONG_LONG_SIDE = 64
 """Resolution of the triangle lookup grid (cells along the longer side of the
@@ -47,7 +46,6 @@ OUTSIDE_GRID_MARGIN = 0.25
 """The lookup grid reaches this fraction of the hull's larger extent beyond
 the hull's bounding box, so that balls somewhat outside the samples (out of
 play) are projected onto the hull as fast as balls inside are located."""
-
 
 
 class TriangleInterpolator:
@@ -175,14 +173,14 @@ class TriangleInterpolator:
         """Index of a triangle containing (x, y), or -1 outside the hull."""
         nx, ny = self._grid_shape
         return find_triangle_kernel(x, y, self._grid_table, nx, ny, self._cell_offsets, self._cell_triangles,
-                                     self._bary_table)[1]
+                                    self._bary_table)[1]
 
     def nearest_hull_point(self, x: float, y: float) -> tuple[int, float]:
         """Nearest hull edge to (x, y) and the position s in [0, 1] along it."""
         nx, ny = self._grid_shape
         cell = grid_cell(x, y, self._grid_table, nx, ny)
         return nearest_edge_kernel(x, y, cell, self._edge_offsets, self._cell_edge_items, self._edge_starts,
-                                    self._edge_deltas, self._edge_inv_length2)
+                                   self._edge_deltas, self._edge_inv_length2)
 
     def value(self, x: float, y: float) -> np.ndarray:
         """Interpolated (m,) value at one point (a new array): one compiled call doing what
@@ -198,12 +196,6 @@ class TriangleInterpolator:
     def tables(self) -> tuple:
         """:func:`~formations.interpolation_kernels.value_kernel`'s arguments after the point."""
         return self._tables
-
-    def values_each(self, points: np.ndarray, out: np.ndarray) -> None:
-        """:meth:`value` at each of ``points`` (k, 2) into ``out`` (k, m), in one compiled call
-        (the same numbers as k calls of :meth:`value`, for a caller that queries a few points a
-        cycle); the points must be finite."""
-        values_kernel(points, *self._tables, out)
 
     def values_many(self, points: np.ndarray) -> np.ndarray:
         """Interpolated values (k, m) at points (k, 2).

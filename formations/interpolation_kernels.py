@@ -108,15 +108,3 @@ def value_kernel(x: float, y: float, grid: np.ndarray, nx: int, ny: int, cell_of
     edge, s = nearest_edge_kernel(x, y, cell, edge_offsets, cell_edges, starts, deltas, inv_length2)
     for i in range(out.shape[0]):
         out[i] = edge_values[edge, i] + s * edge_value_deltas[edge, i]
-
-
-@njit(cache=True, nogil=True)
-def values_kernel(points: np.ndarray, grid: np.ndarray, nx: int, ny: int, cell_offsets: np.ndarray,
-                   cell_triangles: np.ndarray, bary: np.ndarray, affine: np.ndarray, edge_offsets: np.ndarray,
-                   cell_edges: np.ndarray, starts: np.ndarray, deltas: np.ndarray, inv_length2: np.ndarray,
-                   edge_values: np.ndarray, edge_value_deltas: np.ndarray,
-                   out: np.ndarray) -> None:  # pragma: no cover - compiled
-    """:func:`value_kernel` at each row of ``points`` into the same row of ``out``."""
-    for p in range(points.shape[0]):
-        value_kernel(points[p, 0], points[p, 1], grid, nx, ny, cell_offsets, cell_triangles, bary, affine,
-                      edge_offsets, cell_edges, starts, deltas, inv_length2, edge_values, edge_value_deltas, out[p])

@@ -139,15 +139,18 @@ class RoleAssigner(ABC):
         """(k, 2) where each player should move this cycle; by default its role's target."""
         return targets[role_of_player]
 
-    def check_inputs(self, players: np.ndarray, targets: np.ndarray) -> int:
+    def check_inputs(self, players: np.ndarray, targets: np.ndarray, problems: bool = False) -> int:
         """The number of players k, after checking that :meth:`reset` was called and that
-        ``players`` and ``targets`` are (n_roles, 2) arrays; RoleError naming the problem."""
+        ``players`` and ``targets`` are (n_roles, 2) arrays (with ``problems``: (problems,
+        n_roles, 2), as :meth:`assign_rows` takes them); RoleError naming the problem."""
         k = self.n_roles
         if k is None:
             raise RoleError(f"role assigner {self.name!r}: call reset(n_roles, rng) before assign")
-        if players.shape != (k, 2) or targets.shape != (k, 2):
+        shape = ((players.shape[0] if players.ndim == 3 else -1), k, 2) if problems else (k, 2)
+        if players.shape != shape or targets.shape != shape:
+            wanted = f"(problems, {k}, 2)" if problems else f"({k}, 2)"
             raise RoleError(f"role assigner {self.name!r} was reset for {k} roles: players and targets must "
-                             f"be ({k}, 2) arrays, got players {players.shape} and targets {targets.shape}")
+                             f"be {wanted} arrays, got players {players.shape} and targets {targets.shape}")
         return k
 
     _checked_scale: np.ndarray | None = None

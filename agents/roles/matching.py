@@ -51,25 +51,23 @@ class MethodAssigner(RoleAssigner):
 
     def assign(self, players: np.ndarray, targets: np.ndarray, role_order: np.ndarray,
                previous: np.ndarray | None, context: RoleContext) -> np.ndarray:
-        self.check_inputs(players, targets)
-        players = np.ascontiguousarray(players, dtype=np.float64)
-        targets = np.ascontiguousarray(targets, dtype=np.float64)
-        if not all_finite(players, targets):
-            raise RoleError(f"role assigner {self.name!r}: players and targets must be finite")
-        return dense_target_of(players, targets, self.method, self.time_scale(context, players.shape[0]))
+        k = self.check_inputs(players, targets)
+        players, targets = self._clean(players, targets)
+        return dense_target_of(players, targets, self.method, self.time_scale(context, k))
 
     def assign_rows(self, players: np.ndarray, targets: np.ndarray, context: RoleContext) -> np.ndarray:
-        k = self.n_roles
-        if k is None:
-            raise RoleError(f"role assigner {self.name!r}: call reset(n_roles, rng) before assign")
-        if players.ndim != 3 or players.shape[1:] != (k, 2) or targets.shape != players.shape:
-            raise RoleError(f"role assigner {self.name!r} was reset for {k} roles: players and targets must be "
-                            f"(problems, {k}, 2) arrays, got players {players.shape} and targets {targets.shape}")
+        k = self.check_inputs(players, targets, problems=True)
+        players, targets = self._clean(players, targets)
+        return dense_targets_of_rows(players, targets, self.method, self.time_scale(context, k))
+
+    def _clean(self, players: np.ndarray, targets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``players`` and ``targets`` as C-contiguous float64 arrays; RoleError if any entry is
+        not finite."""
         players = np.ascontiguousarray(players, dtype=np.float64)
         targets = np.ascontiguousarray(targets, dtype=np.float64)
         if not all_finite(players, targets):
             raise RoleError(f"role assigner {self.name!r}: players and targets must be finite")
-        return dense_targets_of_rows(players, targets, self.method, self.time_scale(context, k))
+        return players, targets
 
 
 class GreedyOffenseAssigner(RoleAssigner):

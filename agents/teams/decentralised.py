@@ -87,6 +87,8 @@ class DecentralisedPlay:
         self.beliefs.mate_pos[:] = spots[:n][None, :, :]          # where the team lines up
         self.beliefs.opp_pos[:] = -spots[:m][None, :, :] if m <= len(spots) else 0.0
         k = len(self.outfield)
+        self._outfield_ranks = np.arange(k)
+        """Each outfield player's index among the outfield (its column of an assignment)."""
         self.votes = VoteBook(n, VOTE_HORIZON, k) if k else None
         self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
         self._kickable = first.model.kickable_distance + 0.2 if first is not None else 0.0
@@ -116,7 +118,7 @@ class DecentralisedPlay:
         def follow(proposal: np.ndarray) -> np.ndarray:
             positioning = self.positioning
             if self._mode_key[0] in PLACED:  # lined up by shirt number, as everybody else
-                positioning.proposals[i] = positioning.followed[i] = np.arange(len(proposal))
+                positioning.line_up(np.array([i]))
                 return positioning.followed[i].copy()
             positioning.proposals[i] = proposal
             if self.votes is None:
@@ -254,7 +256,7 @@ class DecentralisedPlay:
         if views.play_mode != PlayMode.PLAY_ON or not len(self.outfield):
             return
         followed = self.positioning.followed
-        roles = followed[self.outfield, self.positioning.rank[self.outfield]]
+        roles = followed[self.outfield, self._outfield_ranks]
         shared, empty = role_conflicts(roles, len(self.outfield))
         self._play_on_cycles += 1
         self._conflict_cycles += shared > 0

@@ -129,13 +129,14 @@ def wing_kick(model: skills.MotionModel, view: TeamView, kicker: int) -> np.ndar
     return kick
 
 
-def ball_reach(race: skills.BallRace, outfield: np.ndarray, model: skills.MotionModel) -> np.ndarray:
+def ball_reach(our_cycles: np.ndarray, outfield: np.ndarray, model: skills.MotionModel) -> np.ndarray:
     """How far (m) each outfield player effectively is from controlling the ball: the cycles
-    its interception takes (the race) times the top speed, inf for a player who cannot
-    intercept (:attr:`agents.roles.RoleContext.ball_reach`, what bidding's ball role bids
-    with instead of the straight distance to the formation's query point)."""
-    cycles = race.ours.cycles[outfield].astype(np.float64)
-    cycles[race.ours.cycles[outfield] >= skills.UNREACHABLE] = np.inf
+    its interception takes (``our_cycles``, a ball race's per player) times the top speed, inf
+    for a player who cannot intercept (:attr:`agents.roles.RoleContext.ball_reach`, what
+    bidding's ball role bids with instead of the straight distance to the formation's query
+    point)."""
+    cycles = our_cycles[outfield].astype(np.float64)
+    cycles[our_cycles[outfield] >= skills.UNREACHABLE] = np.inf
     return cycles * model.top_speed
 
 

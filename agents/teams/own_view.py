@@ -41,11 +41,12 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from agents import skills
-from agents.roles import RoleContext, offensive_order
+from agents.roles import RoleAssigner, RoleContext, offensive_order
 from agents.roles.voting import VoteBook
 from agents.skills.movement import DEFAULT_PACING
 from agents.skills.pacing import pacing_constants
 from agents.teams import mechanism
+from agents.teams.on_ball import ball_reach
 from agents.teams.own_view_after import dash_and_gaps, follow_and_goals
 from agents.teams.own_view_kernels import before_roles
 from agents.teams.positions import nearest_roles
@@ -104,8 +105,9 @@ class OwnViewPositioning:
             self.match_roles[:] = first._match_roles
         self._choose_roles = first._choose_roles
         self._steers = first._steers
+        self._batches = type(first.assigner).assign_rows is not RoleAssigner.assign_rows
+        """Whether the assigner answers many views in one call (:meth:`RoleAssigner.assign_rows`)."""
         shape = first.shape
-        self._shape = shape
         self._knobs = shape._knobs.copy()
         self._forwards = first._forward_roles
         arrays = first.skills.arrays(view)
@@ -198,9 +200,8 @@ class OwnViewPositioning:
             self._support_args, attack, defend, other, self._memory, self.proposals, self.followed, self._next,
             self.rank, self.match_roles, self._full, self.targets, self._rows, self._outfield_rows, self._due_rows)
         rows, outfield_rows = self._rows[:n_rows], self._outfield_rows[:n_out]
-        if placed:  # everybody lines up for a kick-off in its own role (by shirt number)
-            self.proposals[outfield_rows] = self.followed[outfield_rows] = np.arange(self.proposals.shape[1])
-            self._assigned_mode[outfield_rows] = -1
+        if placed:
+            self.line_up(outfield_rows)
         elif n_out:
             self._assign(self._due_rows[:n_due], beliefs, int(mode), cycle)
         style = self.style
@@ -227,6 +228,12 @@ class OwnViewPositioning:
         if play_on and n_out:
             self.figures.add(switches, True, mean, largest, far)
         return self.goals if placed else None
+
+    def line_up(self, rows: np.ndarray) -> None:
+        """Before a kick-off the outfield ``rows`` each take their own role (by shirt number),
+        which every player knows without a word; they assign afresh once play starts."""
+        self.proposals[rows] = self.followed[rows] = np.arange(self.proposals.shape[1])
+        self._assigned_mode[rows] = -1
 
     def _pick_roles(self, rows: np.ndarray, beliefs: TeamBeliefs) -> None:
         """A smaller side: each player takes, once, the outfield roles it believes nearest the
@@ -263,7 +270,7 @@ class OwnViewPositioning:
         play_on = mode == PlayMode.PLAY_ON
         self._assigned_at[rows], self._assigned_mode[rows] = cycle, mode
         first = self.brains[0]
-        if rows.size and not (first._leave is not None and play_on):  # all in one call if the assigner can
+        if rows.size and self._batches and not (first._leave is not None and play_on):  # all in one call
             players = beliefs.mate_pos[rows[:, None], self.outfield]
             role_targets = self.targets[rows[:, None], self.match_roles[rows]]
             proposals = first.assigner.assign_rows(players, role_targets, first._context)
@@ -290,9 +297,7 @@ class OwnViewPositioning:
         context.ball = self.win_point[i] if play_on else beliefs.ball[i]
         context.ball_reach = None
         if brain.assigner.uses_ball_reach and play_on:
-            cycles = self.our_cycles[i][self.outfield].astype(np.float64)
-            cycles[cycles >= skills.UNREACHABLE] = np.inf
-            context.ball_reach = cycles * self.model.top_speed
+            context.ball_reach = ball_reach(self.our_cycles[i], self.outfield, self.model)
         context.opponents = beliefs.opp_pos[i]
         context.cycle = cycle
         context.attacking = bool(self.attacking[i])

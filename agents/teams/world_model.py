@@ -18,7 +18,7 @@ m/cycle, cycles. Per cycle (:meth:`TeamBeliefs.update`):
    listener takes the ball from it when that is fresher than its own belief, rolled on by the
    cycle the message took.
 
-What a player says (:meth:`TeamBeliefs.world_message`) is its own ball belief and position,
+What a player says (:meth:`TeamBeliefs.world_messages`) is its own ball belief and position,
 which team-mates far from the ball use to keep theirs fresh.
 """
 

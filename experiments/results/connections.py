@@ -38,6 +38,11 @@ def connect_writable(path: Path) -> sqlite3.Connection:
     return db
 
 
+def pending_logs(path: Path) -> list[Path]:
+    """The ``-wal`` and ``-journal`` files beside ``path``: a writer at work, or one killed."""
+    return [Path(f"{path}{suffix}") for suffix in ("-wal", "-journal") if Path(f"{path}{suffix}").exists()]
+
+
 def connect_read_only(path: Path) -> tuple[sqlite3.Connection, Callable[[], None] | None]:
     """A read-only connection to ``path`` that changes nothing on disk, and its clean-up.
 
@@ -47,7 +52,7 @@ def connect_read_only(path: Path) -> tuple[sqlite3.Connection, Callable[[], None
     ``mode=ro`` reads the file and its log through the shared ``-shm`` index, as a reader next
     to a writer must (``immutable`` would ignore the log's rows); where that index cannot be
     created (read-only media), the files are read from a private copy instead."""
-    pending = [Path(f"{path}{suffix}") for suffix in ("-wal", "-journal") if Path(f"{path}{suffix}").exists()]
+    pending = pending_logs(path)
     uri = path.resolve().as_uri() + ("?mode=ro" if pending else "?mode=ro&immutable=1")
     db = None
     try:

@@ -28,7 +28,7 @@ from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 
 from experiments.errors import ExperimentError
-from experiments.results.connections import connect_read_only, connect_writable
+from experiments.results.connections import connect_read_only, connect_writable, pending_logs
 from experiments.results.record import FORFEIT_NONE, MatchRecord
 
 SCHEMA_VERSION = "1"
@@ -285,8 +285,7 @@ def _check_existing(path: Path, kind: str, config_hash: str, config: str) -> Non
             refusal = _existing_refusal(path, kind, config_hash, config)
             break
         except sqlite3.DatabaseError as exc:
-            being_written = _file_state(path) != before or any(
-                Path(f"{path}{suffix}").exists() for suffix in ("-wal", "-journal"))
+            being_written = _file_state(path) != before or bool(pending_logs(path))
             if not being_written or time.monotonic() > deadline:
                 raise ResultsError(_UNUSABLE.format(path=path, why=exc)) from None
             time.sleep(0.02)

@@ -50,7 +50,7 @@ def test_bidding_is_told_each_players_reach_from_the_race_and_only_bidding() -> 
     model = skills.MotionModel(MatchConfig(), players=11, goalie=0, opponents=11, opponent_goalie=0)
     ours = Interception(np.array([0, 4, skills.UNREACHABLE, 10]), np.zeros((4, 2)), 0, 0)
     race = BallRace(ours, Interception(np.array([3]), np.zeros((1, 2)), 0, 3))
-    reach = ball_reach(race, np.array([1, 2, 3]), model)
+    reach = ball_reach(race.ours.cycles, np.array([1, 2, 3]), model)
     np.testing.assert_allclose(reach, [4 * model.top_speed, np.inf, 10 * model.top_speed])
     assert make_assigner("bidding").uses_ball_reach
     assert not any(make_assigner(name).uses_ball_reach for name in ("mmdr", "mmd+msd2", "static", "greedy", "random"))
