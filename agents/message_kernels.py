@@ -30,20 +30,9 @@ INVALID = -1
 
 
 @njit(cache=True, nogil=True)
-def round_half_even(value: float) -> int:  # pragma: no cover - compiled
-    """``value`` to the nearest whole number, halves to the even one (Python's ``round``)."""
-    low = math.floor(value)
-    rest = value - low
-    whole = int(low)
-    if rest > 0.5 or (rest == 0.5 and whole % 2 != 0):
-        whole += 1
-    return whole
-
-
-@njit(cache=True, nogil=True)
 def grid_index(value: float, half_range: float, per_unit: int) -> int:  # pragma: no cover - compiled
     """``value`` clipped into [-half_range, half_range] as its grid index (``per_unit`` steps a unit)."""
-    return round_half_even((min(max(value, -half_range), half_range) + half_range) * per_unit)
+    return round((min(max(value, -half_range), half_range) + half_range) * per_unit)  # halves to even, as Python
 
 
 @njit(cache=True, nogil=True)
