@@ -300,8 +300,8 @@ class FormationTeam:
         else:
             context, assigner, play_on = self._context, self.assigner, view.play_mode == _PLAY_ON
             context.ball = self.shape.ball_point if play_on else ball_ref  # (not the block's paced query point)
-            context.ball_reach = ball_reach(race.ours.cycles, self.outfield, self.model) if assigner.uses_ball_reach and play_on \
-                else None
+            context.ball_reach = ball_reach(race.ours.cycles, self.outfield, self.model) \
+                if assigner.uses_ball_reach and play_on else None
             context.opponents = view.opp_pos
             context.cycle = view.cycle
             context.attacking = self._situation == Situation.ATTACK
