@@ -21,7 +21,7 @@ from agents.skills.interception_kernels import UNREACHABLE, race_kernel
 from formations.interpolation_kernels import value_kernel
 from agents.teams.role_kernels import offside_line, shape_targets
 from agents.teams.shape_kernels import ATTACKING, BALL_X, DEFENDING, LIMITED, MODE, OFF, advance_block, \
-    settle_targets, support_spots
+    settle_targets, support_spots, switch_side
 
 
 @njit(cache=True, nogil=True)
@@ -110,15 +110,7 @@ def _switch_and_block(i: int, lead: int, play_on: bool, switch_margin: int, swit
     if not play_on:
         in_play[i] = False
         return
-    winning = lead > 0
-    if not in_play[i]:
-        attacking[i], pending[i] = winning, 0
-    elif winning == attacking[i]:
-        pending[i] = 0
-    else:
-        pending[i] += 1
-        if abs(lead) >= switch_margin or pending[i] >= switch_persist:
-            attacking[i], pending[i] = winning, 0
+    attacking[i], pending[i] = switch_side(lead, in_play[i], attacking[i], pending[i], switch_margin, switch_persist)
     advance_block(block[i], win_point[i], depth + attack_push if attacking[i] else depth, in_play[i], knobs)
     in_play[i] = True
 

@@ -39,7 +39,7 @@ from agents import skills
 from agents.skills.ball_kernels import offside_line
 from agents.teams.shape_kernels import (
     ATTACKING, BACK_FLOOR, BALL_X, DEFEND_BALL_GAP, DEFENDING, DROP, KNOBS, LIMITED, MODE, OFF, PUSH, REST_BALL_GAP,
-    REST_FORWARD_MARGIN, REST_MAX_GAP, advance_block, settle_targets, support_spots)
+    REST_FORWARD_MARGIN, REST_MAX_GAP, advance_block, settle_targets, support_spots, switch_side)
 from formations.formation_set import Situation
 from soccer_sim.team import TeamView
 
@@ -212,16 +212,9 @@ class Shape:
         """The formation situation (attack or defend, with hysteresis) and where to query it
         (the race winner's interception point, moved at the block's pace)."""
         p = self.params
-        lead = race.lead
-        winning = lead > 0
-        if not self._in_play:
-            self.attacking, self._pending = winning, 0
-        elif winning == self.attacking:
-            self._pending = 0
-        else:
-            self._pending += 1
-            if abs(lead) >= p.switch_margin or self._pending >= p.switch_persist:
-                self.attacking, self._pending = winning, 0
+        winning = race.lead > 0
+        self.attacking, self._pending = switch_side(int(race.lead), self._in_play, self.attacking, self._pending,
+                                                    p.switch_margin, p.switch_persist)
         ours, theirs = race
         if winning and ours.first >= 0:
             point = ours.points[ours.first]

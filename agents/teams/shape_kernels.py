@@ -20,6 +20,24 @@ OFF, ATTACKING, DEFENDING = 0.0, 1.0, 2.0
 
 
 @njit(cache=True, nogil=True)
+def switch_side(lead: int, in_play: bool, attacking: bool, pending: int, margin: int,
+                persist: int) -> tuple[bool, int]:  # pragma: no cover - compiled
+    """Attack or defend with hysteresis: (attacking, pending) after a ball race whose ``lead``
+    (cycles; positive: we are first) says who wins the ball. Out of play (not ``in_play``
+    before) the side follows the race at once; a change of side waits until the race has said
+    so ``persist`` cycles in a row (``pending`` counts them) or by ``margin`` cycles or more."""
+    winning = lead > 0
+    if not in_play:
+        return winning, 0
+    if winning == attacking:
+        return attacking, 0
+    pending += 1
+    if abs(lead) >= margin or pending >= persist:
+        return winning, 0
+    return attacking, pending
+
+
+@njit(cache=True, nogil=True)
 def advance_block(block: np.ndarray, point: np.ndarray, shift: float, in_play: bool,
                   knobs: np.ndarray) -> None:  # pragma: no cover - compiled
     """Move the block (in place: ``block`` = (query x, query y, shift)) towards the query
