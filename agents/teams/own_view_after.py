@@ -82,11 +82,12 @@ def own_goals(rows: np.ndarray, rank: np.ndarray, followed: np.ndarray, targets:
               opp_pos: np.ndarray, offside_margin: float, pressers: int, keeper_margin: int, area_x: float,
               area_y: float, goals: np.ndarray, urgent: np.ndarray) -> None:  # pragma: no cover - compiled
     """Each deciding outfield player's goal point (into ``goals[i]``) and hurry: its followed
-    role's target (``followed[i, rank[i]]``, an index into its ``out_roles[i]``); in play on pulled back
-    behind the offside line it believes in, its interception point when it believes it is the
-    one who goes for the ball (the first of ours, the goalkeeper only for a ball it wins by
-    ``keeper_margin`` cycles in our penalty area, ``|x| >= area_x``, ``|y| <= area_y``), and as
-    one of the first ``pressers`` when it believes they win the ball."""
+    role's target (``followed[i, rank[i]]``, an index into its ``out_roles[i]``); in play on
+    pulled back behind the offside line it believes in, its interception point when it believes
+    it is the one who goes for the ball (the first of ours, the goalkeeper only for a ball it
+    wins by ``keeper_margin`` cycles in our penalty area, ``x <= -area_x``, ``|y| <= area_y``:
+    :func:`agents.teams.on_ball.ball_player` on its own race), and as one of the first
+    ``pressers`` when it believes they win the ball."""
     for i in rows:
         r = rank[i]
         if r < 0:

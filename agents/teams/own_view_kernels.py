@@ -341,6 +341,9 @@ def whole_brain_rows(play_on: bool, set_play: bool, ball: np.ndarray, position: 
                 row = row or (ball[i, 0] <= -area_x and abs(ball[i, 1]) <= area_y)
         elif set_play:
             row = near < reach * reach or i == taker
+            # Each player's guess at the taker: the outfield player nearest the ball as it
+            # believes them (SetPlays._choose_taker's rule without the retaken set play's
+            # tried takers, which only the brain that took it knows).
             if nearest_taker and not row and outfield.shape[0] > 0:
                 best, best_d = -1, np.inf
                 for j in outfield:
