@@ -20,6 +20,7 @@ from numba import njit
 from scipy.optimize import linear_sum_assignment
 
 from .bottleneck import bottleneck_matching
+from .deletion import delete_longest_first
 from .geometry import dense_distances
 from .graphs import dense_to_graph, square_up
 from .lexicographic import lexicographic_refine
@@ -68,26 +69,33 @@ def refine_to_lexicographic(
 
 
 # Point-to-point forms for per-cycle callers (the soccer role assigners solve a 10 x 10
-# problem every cycle): the same steps as above in one compiled call, so the answer is the
-# same bit for bit while the several calls' dispatch costs are paid once (and the graph's
-# short rows are sorted without allocations, see :func:`.graphs.dense_to_graph`).
+# problem every cycle): one compiled call each. Without ties the answer is the unique optimum,
+# found by deleting pairs longest first (:mod:`.deletion`); with ties, the same steps as above
+# (whose graph's short rows are sorted without allocations, see :func:`.graphs.dense_to_graph`),
+# so the answer is the same bit for bit either way.
 
 
 @njit(cache=True, nogil=True)
-def _bottleneck_of_points(robots: np.ndarray, targets: np.ndarray, scale: np.ndarray):
-    """The Euclidean problem's matrices, its graph and a bottleneck matching:
-    ``(lengths, squared, indptr, indices, pair_lengths, value, col_of_row, row_of_col)``. A
-    non-empty ``scale`` (n,) multiplies robot i's lengths by ``scale[i]`` first (travel times
-    of robots of different speeds, in the unit of a reference speed)."""
+def _scaled_distances(robots: np.ndarray, targets: np.ndarray, scale: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The Euclidean problem's lengths and squared lengths; a non-empty ``scale`` (n,)
+    multiplies robot i's lengths by ``scale[i]`` first (travel times of robots of different
+    speeds, in the unit of a reference speed)."""
     lengths, squared = dense_distances(robots, targets)
     if scale.shape[0]:
         for i in range(lengths.shape[0]):
             for j in range(lengths.shape[1]):
                 lengths[i, j] *= scale[i]
                 squared[i, j] = lengths[i, j] * lengths[i, j]
+    return lengths, squared
+
+
+@njit(cache=True, nogil=True)
+def _bottleneck_value(lengths: np.ndarray) -> float:
+    """The smallest makespan of ``lengths`` (n, m), ``n <= m``, all finite."""
+    if lengths.shape[0] > 0:
+        return delete_longest_first(lengths, False)[1]
     indptr, indices, pair_lengths = dense_to_graph(lengths)
-    value, col_of_row, row_of_col = bottleneck_matching(indptr, indices, pair_lengths, lengths.shape[1])
-    return lengths, squared, indptr, indices, pair_lengths, value, col_of_row, row_of_col
+    return bottleneck_matching(indptr, indices, pair_lengths, lengths.shape[1])[0]
 
 
 @njit(cache=True, nogil=True)
@@ -95,8 +103,8 @@ def bottleneck_of_points(robots: np.ndarray, targets: np.ndarray) -> tuple[float
     """``(b, lengths)``: the smallest makespan ``b`` of any assignment of ``robots`` (n, d) to
     ``targets`` (m, d), ``n <= m``, all finite, and the Euclidean distance matrix it was found
     on (so a caller compares other assignments' lengths with ``b`` bit for bit)."""
-    lengths, _, _, _, _, value, _, _ = _bottleneck_of_points(robots, targets, np.empty(0))
-    return value, lengths
+    lengths, _ = dense_distances(robots, targets)
+    return _bottleneck_value(lengths), lengths
 
 
 @njit(cache=True, nogil=True)
@@ -104,8 +112,13 @@ def mmdr_points(robots: np.ndarray, targets: np.ndarray, scale: np.ndarray) -> n
     """:func:`mmdr_assignment` of the Euclidean distances between ``robots`` (n, d) and
     ``targets`` (m, d), ``n <= m``, all finite (robot i's times ``scale[i]`` when ``scale``
     is not empty): the target index of every robot."""
-    _, _, indptr, indices, pair_lengths, value, col_of_row, row_of_col = _bottleneck_of_points(robots, targets,
-                                                                                                scale)
+    lengths, _ = _scaled_distances(robots, targets, scale)
+    if lengths.shape[0] > 0:
+        col_of_row, _, tied = delete_longest_first(lengths, True)
+        if not tied:
+            return col_of_row
+    indptr, indices, pair_lengths = dense_to_graph(lengths)
+    value, col_of_row, row_of_col = bottleneck_matching(indptr, indices, pair_lengths, lengths.shape[1])
     return refine_to_lexicographic(indptr, indices, pair_lengths, value, col_of_row, row_of_col)
 
 
@@ -113,7 +126,8 @@ def mmdr_points(robots: np.ndarray, targets: np.ndarray, scale: np.ndarray) -> n
 def bottleneck_squares(robots: np.ndarray, targets: np.ndarray, scale: np.ndarray) -> np.ndarray:
     """The squared distances between ``robots`` and ``targets`` (scaled as :func:`mmdr_points`),
     ``inf`` for pairs longer than the bottleneck value: MMD+MSD²'s second-stage costs."""
-    lengths, squared, _, _, _, value, _, _ = _bottleneck_of_points(robots, targets, scale)
+    lengths, squared = _scaled_distances(robots, targets, scale)
+    value = _bottleneck_value(lengths)
     for i in range(lengths.shape[0]):
         for j in range(lengths.shape[1]):
             if not lengths[i, j] <= value:
