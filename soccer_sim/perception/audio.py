@@ -187,6 +187,8 @@ class AudioChannel:
         self._said_cycle: int | None = None
         self._messages: tuple[str | None, ...] = (None,) * n
         self._arrived = np.zeros((n, n), dtype=bool)
+        self._spoke = False
+        """Whether anybody said anything in the last say."""
         self._allowed = frozenset(params.characters)
 
     @property
@@ -214,14 +216,14 @@ class AudioChannel:
         pos = np.asarray(positions, dtype=np.float64)
         if pos.shape != (self.players, 2) or not np.all(np.isfinite(pos)):
             raise ValueError(f"AudioChannel.say: positions must be finite, shape ({self.players}, 2); got {pos.shape}")
-        if flat.count(None) == len(flat):  # a silent cycle: nothing arrives anywhere
-            self._messages, self._said_cycle = tuple(flat), int(cycle)
+        self._messages, self._said_cycle = tuple(flat), int(cycle)
+        self._spoke = flat.count(None) < len(flat)
+        if not self._spoke:  # a silent cycle: nothing arrives anywhere
             self._arrived = np.zeros((self.players, self.players), dtype=bool)
             return
         spoke = np.array([m is not None for m in flat], dtype=bool)
-        arrived = np.empty((self.players, self.players), dtype=bool)
-        arrivals(pos, spoke, float(self.params.audio_cut_dist), arrived)
-        self._messages, self._arrived, self._said_cycle = tuple(flat), arrived, int(cycle)
+        self._arrived = np.empty((self.players, self.players), dtype=bool)
+        arrivals(pos, spoke, float(self.params.audio_cut_dist), self._arrived)
 
     def hear(self, cycle: int, rng: np.random.Generator, attention: np.ndarray | None = None,
              positions: np.ndarray | None = None, body_dirs: np.ndarray | None = None) -> Heard:
@@ -233,11 +235,12 @@ class AudioChannel:
         (listener, speaker) from ``rng``."""
         p = self.params
         n = self.players
+        cap = self._cap
         if self._cap_cycle is not None:
             if cycle <= self._cap_cycle:
                 raise ValueError(f"AudioChannel.hear: cycle {cycle} is not after the last hear cycle {self._cap_cycle}")
-            gained = p.hear_inc * (cycle - self._cap_cycle)
-            self._cap = np.minimum(self._cap + gained, p.hear_max)
+            cap += p.hear_inc * (cycle - self._cap_cycle)
+            np.minimum(cap, p.hear_max, out=cap)
         self._cap_cycle = int(cycle)
         key = rng.random((n, n))
         current = self._said_cycle == cycle - 1
@@ -250,21 +253,13 @@ class AudioChannel:
             rows = np.flatnonzero(att >= 0)
             key[rows, att[rows]] = -1.0  # taken before every other message
         heard = np.zeros((n, n), dtype=bool)
-        if arrived.any():
-            heard = self._choose(arrived, key)
+        if current and self._spoke:
+            choose_heard(arrived, key, self.team, cap, p.hear_decay, heard)
         direction = None
         if positions is not None or body_dirs is not None:
             direction = self._directions(heard, positions, body_dirs)
         return Heard(cycle=int(cycle), messages=messages, arrived=arrived, heard=heard, team=self.team,
                      direction=direction)
-
-    def _choose(self, arrived: np.ndarray, key: np.ndarray) -> np.ndarray:
-        """Which arrived messages each listener hears in full, spending its capacities: per side
-        (team-mates, opponents) those first in the random order ``key``, as many as the
-        capacity pays for (:func:`~soccer_sim.perception.kernels.choose_heard`)."""
-        heard = np.zeros(arrived.shape, dtype=bool)
-        choose_heard(arrived, key, self.team, self._cap, self.params.hear_decay, heard)
-        return heard
 
     def _directions(self, heard: np.ndarray, positions: np.ndarray | None,
                     body_dirs: np.ndarray | None) -> np.ndarray:

@@ -142,12 +142,12 @@ class Observer:
         total = self._total
         if not heard.any():
             return ((),) * total, ((),) * total
-        mates: list[list] = [[] for _ in range(total)]
-        opponents: list[list] = [[] for _ in range(total)]
+        mates: list[tuple] = [()] * total
+        opponents: list[tuple] = [()] * total
         team, first = self._team_list, self._first_list
-        for listener, speaker in zip(*(a.tolist() for a in np.nonzero(heard))):
+        for listener, speaker in zip(*(a.tolist() for a in np.nonzero(heard))):  # (one or two a listener)
             if team[speaker] == team[listener]:
-                mates[listener].append((speaker - first[speaker], messages[speaker]))
+                mates[listener] += ((speaker - first[speaker], messages[speaker]),)
             else:
-                opponents[listener].append(messages[speaker])
-        return tuple(map(tuple, mates)), tuple(map(tuple, opponents))
+                opponents[listener] += (messages[speaker],)
+        return tuple(mates), tuple(opponents)
