@@ -25,8 +25,9 @@ import os
 import signal
 import sys
 import time
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
+from types import SimpleNamespace
 from typing import TextIO
 
 COMPILING_LINE = "compiling kernels (first run only)"
@@ -154,10 +155,28 @@ def dispatcher_of(kernel: Kernel):
 
 
 def signature_of(kernel: Kernel) -> tuple:
-    """The kernel's argument types as numba types."""
+    """The kernel's argument types as numba types. A compiled structure's type (a numba
+    ``StructRef``, written ``numba.NameType((field, type), ...)``) is one its module defines;
+    importing the kernel's module (:func:`dispatcher_of`) registers it."""
     from numba.core import types
 
-    return tuple(eval(kernel.signature, {"__builtins__": {}}, vars(types)))  # noqa: S307 - text from the manifest
+    dispatcher_of(kernel)
+    structures = SimpleNamespace(**{cls.__name__: _structure_maker(cls) for cls in _subclasses(types.StructRef)})
+    namespace = {**vars(types), "numba": structures}
+    return tuple(eval(kernel.signature, {"__builtins__": {}}, namespace))  # noqa: S307 - text from the manifest
+
+
+def _structure_maker(cls: type) -> Callable[..., object]:
+    """``cls`` made from its fields as the signature's text lists them."""
+    return lambda *fields: cls(list(fields))
+
+
+def _subclasses(cls: type) -> list[type]:
+    """Every subclass of ``cls`` defined so far, at any depth."""
+    found = []
+    for sub in cls.__subclasses__():
+        found += [sub, *_subclasses(sub)]
+    return found
 
 
 def compile_kernels(kernels: Sequence[Kernel], processes: int) -> int:

@@ -25,8 +25,10 @@ Who decides and who assigns, and the steps before the assigner, are one compiled
 whole team (:func:`~agents.teams.own_view_kernels.before_roles`); the assigner one call for all
 the players that assign when it has a batch form (:meth:`~agents.roles.RoleAssigner.assign_rows`:
 the distance-only ones) and one per player otherwise; following the votes and the goals one
-more call, the dashes and the role figures another (:mod:`agents.teams.own_view_after`): a
-match of two such teams costs about three full-observation matches. Missing from the full
+more call, the dashes and the role figures another (:mod:`agents.teams.own_view_after`). The
+three compiled calls take the team's arrays as one compiled record made on the first cycle
+(:mod:`agents.teams.own_view_state`), so each call hands over little more than the players'
+senses of the cycle. Missing from the full
 team's open play: the positions' own runs and the follow-ups of shots (only the shooter
 knows it shot), and an assigner's own choice of the player who goes for the ball (bidding's
 ball role): each player takes the first of ours in its ball race. The player on the ball,
@@ -47,8 +49,8 @@ from agents.skills.movement import DEFAULT_PACING
 from agents.skills.pacing import pacing_constants
 from agents.teams import mechanism
 from agents.teams.on_ball import ball_reach
-from agents.teams.own_view_after import dash_and_gaps, follow_and_goals
-from agents.teams.own_view_kernels import before_roles
+from agents.teams.own_view_state import (FIELDS, OTHER_TABLES, PositioningState, before_roles_of, dash_and_gaps_of,
+                                         follow_and_goals_of, new_state)
 from agents.teams.positions import nearest_roles
 from agents.teams.reporting import RoleFigures
 from agents.teams.role_kernels import steered_goals
@@ -126,7 +128,8 @@ class OwnViewPositioning:
         self.targets = np.zeros((n, roles, 2))
         """(n, roles, 2) each player's role targets this cycle (its formation query, settled)."""
         self._previous = np.zeros((n, roles, 2))
-        self._formation_tables: dict = {}
+        self._state: PositioningState | None = None
+        self._state_of: tuple = ()
         self._full = np.zeros(n, dtype=bool)
         self._mode, self._ours = PlayMode.KICK_OFF, False
         """The play mode of the last positioning, and whether it was ours (for :meth:`situation`)."""
@@ -150,8 +153,8 @@ class OwnViewPositioning:
         self._budgets = np.zeros(n)
         # the compiled steps' other arguments (agents.teams.own_view_kernels.before_roles)
         r, sp = self._race_arrays, shape.params
-        self._race = (*r, self._race_constants, self._raced, RACE_NEAR, RACE_EVERY)
-        self._shape_args = (sp.switch_margin, sp.switch_persist, shape.depth, shape.attack_push, self._knobs)
+        self._race = (*r, self._race_constants, self._raced, float(RACE_NEAR), int(RACE_EVERY))
+        self._shape_args = (sp.switch_margin, sp.switch_persist, float(shape.depth), float(shape.attack_push), self._knobs)
         self._settle_args = (shape.outfield_roles, shape.back_roles, model.half_length - 2.0, self._forwards,
                              1.0 - self.style.box_narrowing, model.half_length / 3.0, self._knobs)
         self._support_args = (shape.is_forward, shape.is_back, shape.offsets, sp.support_players,
@@ -160,7 +163,7 @@ class OwnViewPositioning:
                         self.our_first, self.their_cycle, self.win_point, self._previous, self._primed)
         self._assigned_at = np.full(n, -(1 << 40), dtype=np.int64)
         self._assigned_mode = np.full(n, -1, dtype=np.int64)
-        self._planning = (self._assigned_at, self._assigned_mode, ASSIGN_EVERY, self._steers,
+        self._planning = (self._assigned_at, self._assigned_mode, int(ASSIGN_EVERY), bool(self._steers),
                           int(self.outfield[0]) if self.outfield.size else -1)
         self._no_votes, self._no_vote_cycles = np.zeros((n, n, 0), dtype=np.int64), np.zeros((n, n), dtype=np.int64)
         self._rows, self._outfield_rows, self._due_rows = (np.zeros(n, dtype=np.int64) for _ in range(3))
@@ -188,28 +191,19 @@ class OwnViewPositioning:
         if self._choose_roles:
             self._pick_roles(np.flatnonzero(views.present), beliefs)
         self._mode, self._ours = mode, bool(views.mode_ours)
-        attack, defend = self._tables(Situation.ATTACK), self._tables(Situation.DEFEND)
-        other = attack if play_on else self._tables(self._situation_of(mode, self._ours))
-        voting = (self._no_votes, self._no_vote_cycles, 0, cycle) if votes is None else \
-            (votes.votes, votes.vote_cycle, votes.horizon, cycle)
+        state = self._state_for(beliefs, votes)
         sampled = mechanism.sampled(cycle)
-        n_rows, n_out, n_due = before_roles(
-            deciding, int(mode), play_on, mode == PlayMode.AFTER_GOAL, placed, play_on and not self.style.stationary,
-            sampled, ball, beliefs.ball_vel, beliefs.mate_pos, views.velocity, beliefs.opp_pos, views.effort,
-            views.saw, cycle, self._planning, voting, self._race, self._shape_args, self._settle_args,
-            self._support_args, attack, defend, other, self._memory, self.proposals, self.followed, self._next,
-            self.rank, self.match_roles, self._full, self.targets, self._rows, self._outfield_rows, self._due_rows)
-        rows, outfield_rows = self._rows[:n_rows], self._outfield_rows[:n_out]
+        other = OTHER_TABLES[self._situation_of(mode, self._ours).value] if not play_on else 0
+        n_rows, n_out, n_due = before_roles_of(
+            state, deciding, int(mode), play_on, mode == PlayMode.AFTER_GOAL, placed,
+            play_on and not self.style.stationary, sampled, other, views.velocity, views.effort, views.saw, cycle)
+        outfield_rows = self._outfield_rows[:n_out]
         if placed:
             self.line_up(outfield_rows)
         elif n_out:
             self._assign(self._due_rows[:n_due], beliefs, int(mode), cycle)
         style = self.style
-        goals_args = (self.targets, self.match_roles, self.outfield, self.goalie, play_on, self.our_cycles,
-                      self.our_points, self.our_first, self.their_cycle, ball, beliefs.opp_pos, style.offside_margin,
-                      style.pressers, self._goalie_margin, self._area[0], self._area[1], self.rank)
-        follow_and_goals(rows, outfield_rows, self._due_rows[:n_due], placed, voting, self.proposals, self._next,
-                         self.followed, style.stationary, self._spots, goals_args, self.goals, self.urgent)
+        follow_and_goals_of(state, n_rows, n_out, n_due, placed, play_on, cycle)
         if self._steers and not style.stationary:
             self._steer(outfield_rows, beliefs, play_on, cycle)
         goalie = self.goalie
@@ -221,10 +215,9 @@ class OwnViewPositioning:
             players = np.ascontiguousarray(beliefs.mate_pos[i][self.outfield])
             role_targets = np.ascontiguousarray(self.targets[i][self.match_roles[i]])
             self.figures.add_sample(*mechanism.makespans(players, role_targets, self._last_followed[i]))
-        switches, mean, largest, far = dash_and_gaps(
-            rows, outfield_rows, play_on, self.attacking, self._phase,
-            (views.position, views.velocity, views.effort, views.stamina, views.capacity, ball, goalie, cycle,
-             views.half, self._pacing), self.goals, self.urgent, dash, self._budgets, self._measuring)
+        switches, mean, largest, far = dash_and_gaps_of(
+            state, n_rows, n_out, play_on, views.position, views.velocity, views.effort, views.stamina,
+            views.capacity, cycle, views.half, dash)
         if play_on and n_out:
             self.figures.add(switches, True, mean, largest, far)
         return self.goals if placed else None
@@ -258,12 +251,27 @@ class OwnViewPositioning:
             return Situation.ATTACK if self.attacking[i] else Situation.DEFEND
         return self._situation_of(self._mode, self._ours)
 
-    def _tables(self, situation: Situation) -> tuple:
-        """The compiled query tables of ``situation``'s formation (looked up once)."""
-        tables = self._formation_tables.get(situation)
-        if tables is None:
-            tables = self._formation_tables[situation] = self.formation_set.formation(situation).query_tables
-        return tables
+    def _state_for(self, beliefs: TeamBeliefs, votes: VoteBook | None) -> PositioningState:
+        """The compiled record of this positioning's arrays (:mod:`agents.teams.own_view_state`)
+        with ``beliefs``' and ``votes``' arrays, made on the first cycle (again if either changes)."""
+        if self._state is not None and self._state_of == (beliefs, votes):
+            return self._state
+        tables = {situation: self.formation_set.formation(situation).query_tables for situation in Situation}
+        voting = (self._no_votes, self._no_vote_cycles, 0) if votes is None else \
+            (votes.votes, votes.vote_cycle, int(votes.horizon))
+        style = self.style
+        values = (beliefs.ball, beliefs.ball_vel, beliefs.mate_pos, beliefs.opp_pos, *self._planning, *voting,
+                  *self._race, *self._shape_args, *self._settle_args[:6], *self._support_args,
+                  tables[Situation.ATTACK], tables[Situation.DEFEND], tables[Situation.OUR_SET_PLAY],
+                  tables[Situation.THEIR_SET_PLAY], tables[Situation.NORMAL], *self._memory, self.proposals,
+                  self.followed, self._next, self.rank, self.match_roles, self._full, self.targets, self._rows,
+                  self._outfield_rows, self._due_rows, bool(style.stationary), self._spots, self.outfield,
+                  int(self.goalie), float(style.offside_margin), int(style.pressers), int(self._goalie_margin),
+                  float(self._area[0]), float(self._area[1]), self.goals, self.urgent, self._phase, self._pacing,
+                  self._budgets, self._last_followed, float(style.unfilled_distance))
+        assert len(values) == len(FIELDS)
+        self._state, self._state_of = new_state(values), (beliefs, votes)
+        return self._state
 
     def _assign(self, rows: np.ndarray, beliefs: TeamBeliefs, mode: int, cycle: int) -> None:
         """The role assigner on each of the due players ``rows``' own model (module docstring, step 4)."""

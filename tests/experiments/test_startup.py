@@ -118,7 +118,10 @@ def test_manifest_names_existing_kernels_with_the_right_number_of_arguments() ->
         kernel = Kernel(*entry)
         dispatcher = dispatcher_of(kernel)
         assert dispatcher is not None, f"{kernel.name} is not a numba kernel"
-        assert len(signature_of(kernel)) == len(inspect.signature(dispatcher.py_func).parameters), kernel.name
+        signature = signature_of(kernel)
+        assert len(signature) == len(inspect.signature(dispatcher.py_func).parameters), kernel.name
+        # the types read back exactly (a compiled structure's too), or the cache index never matches
+        assert repr(signature) == kernel.signature, kernel.name
 
 
 def test_kernels_for_takes_the_union_of_the_teams_and_of_mixed_members() -> None:
@@ -144,7 +147,7 @@ def test_partial_observation_adds_the_see_model_and_the_world_models() -> None:
     added = {k.name for k in partial - full}
     assert "soccer_sim.perception.kernels:perceive" in added
     assert "agents.teams.belief_kernels:believe" in added
-    assert "agents.teams.own_view_kernels:before_roles" in added
+    assert "agents.teams.own_view_state:before_roles_of" in added
     assert partial - full == {Kernel(*KERNELS[i]) for i in TEAMS[PARTIAL_ENTRY]} - full
     assert observation_of(paired_specs("mmdr", "chaser", 2, 0, 100, "partial")) == "partial"
     assert observation_of(paired_specs("mmdr", "chaser", 2, 0, 100)) == "full"
