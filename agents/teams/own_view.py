@@ -151,10 +151,11 @@ class OwnViewPositioning:
         self.urgent = np.zeros(n, dtype=bool)
         self._phase = np.zeros(n, dtype=np.int64)
         self._budgets = np.zeros(n)
-        # the compiled steps' other arguments (agents.teams.own_view_kernels.before_roles)
+        # the compiled steps' other arguments, in the compiled record's order (agents.teams.own_view_state)
         r, sp = self._race_arrays, shape.params
         self._race = (*r, self._race_constants, self._raced, float(RACE_NEAR), int(RACE_EVERY))
-        self._shape_args = (sp.switch_margin, sp.switch_persist, float(shape.depth), float(shape.attack_push), self._knobs)
+        self._shape_args = (sp.switch_margin, sp.switch_persist, float(shape.depth), float(shape.attack_push),
+                            self._knobs)
         self._settle_args = (shape.outfield_roles, shape.back_roles, model.half_length - 2.0, self._forwards,
                              1.0 - self.style.box_narrowing, model.half_length / 3.0, self._knobs)
         self._support_args = (shape.is_forward, shape.is_back, shape.offsets, sp.support_players,
@@ -169,8 +170,6 @@ class OwnViewPositioning:
         self._rows, self._outfield_rows, self._due_rows = (np.zeros(n, dtype=np.int64) for _ in range(3))
         """This cycle's deciding rows, their outfield ones and who of those assigns (filled by before_roles)."""
         self._spots = first.kick_off_spots
-        self._measuring = (self.rank, self.followed, self._last_followed, self.targets, self.match_roles,
-                           self.style.unfilled_distance)
         self.figures = RoleFigures(config, k)
         """The team's role figures: each player's distance to the target of the role it follows."""
 
@@ -254,7 +253,7 @@ class OwnViewPositioning:
     def _state_for(self, beliefs: TeamBeliefs, votes: VoteBook | None) -> PositioningState:
         """The compiled record of this positioning's arrays (:mod:`agents.teams.own_view_state`)
         with ``beliefs``' and ``votes``' arrays, made on the first cycle (again if either changes)."""
-        if self._state is not None and self._state_of == (beliefs, votes):
+        if self._state is not None and self._state_of[0] is beliefs and self._state_of[1] is votes:
             return self._state
         tables = {situation: self.formation_set.formation(situation).query_tables for situation in Situation}
         voting = (self._no_votes, self._no_vote_cycles, 0) if votes is None else \
