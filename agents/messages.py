@@ -243,20 +243,32 @@ def decode_texts(texts: Sequence[str]) -> Decoded:
     decoded = Decoded(len(texts))
     if not texts:
         return decoded
+    decode_digits(text_digits(texts), *DECODING, decoded.kind, decoded.grid, decoded.world, decoded.vote,
+                  decoded.vote_size, decoded.vote_cycle)
+    return decoded
+
+
+DECODING = (_NX, _NY, _NV, _NAGE, _PER_M, _PER_V, CYCLE_MODULUS)
+"""The grid sizes, steps and cycle modulus :func:`~agents.message_kernels.decode_digits` takes
+after the digits."""
+CODES = (WORLD, VOTE, MAX_PLAYERS)
+"""The kinds' codes and the most players a vote covers, for compiled callers of the decoder."""
+
+
+def text_digits(texts: Sequence[str]) -> np.ndarray:
+    """(p, MESSAGE_LENGTH) int64 the alphabet digits of each text, a row of -1 for a text that
+    cannot be a message (wrong length, not ASCII) and -1 for a character outside the alphabet."""
     joined = "".join(texts)
     if len(joined) == MESSAGE_LENGTH * len(texts) and joined.isascii() \
             and all(len(t) == MESSAGE_LENGTH for t in texts):  # (the usual case: all of ours)
-        digits = _DIGIT_OF_BYTE[np.frombuffer(joined.encode("ascii"), dtype=np.uint8)].reshape(len(texts),
-                                                                                                 MESSAGE_LENGTH)
-    else:
-        digits = np.full((len(texts), MESSAGE_LENGTH), -1, dtype=np.int64)
-        fine = [p for p, t in enumerate(texts) if len(t) == MESSAGE_LENGTH and t.isascii()]
-        if fine:
-            raw = np.frombuffer("".join(texts[p] for p in fine).encode("ascii"), dtype=np.uint8)
-            digits[fine] = _DIGIT_OF_BYTE[raw].reshape(len(fine), MESSAGE_LENGTH)
-    decode_digits(digits, _NX, _NY, _NV, _NAGE, _PER_M, _PER_V, CYCLE_MODULUS, decoded.kind, decoded.grid,
-                  decoded.world, decoded.vote, decoded.vote_size, decoded.vote_cycle)
-    return decoded
+        return _DIGIT_OF_BYTE[np.frombuffer(joined.encode("ascii"), dtype=np.uint8)].reshape(len(texts),
+                                                                                               MESSAGE_LENGTH)
+    digits = np.full((len(texts), MESSAGE_LENGTH), -1, dtype=np.int64)
+    fine = [p for p, t in enumerate(texts) if len(t) == MESSAGE_LENGTH and t.isascii()]
+    if fine:
+        raw = np.frombuffer("".join(texts[p] for p in fine).encode("ascii"), dtype=np.uint8)
+        digits[fine] = _DIGIT_OF_BYTE[raw].reshape(len(fine), MESSAGE_LENGTH)
+    return digits
 
 
 class HeardBatch(NamedTuple):
@@ -273,14 +285,20 @@ class HeardBatch(NamedTuple):
 def heard_batch(heard_mates: tuple[tuple[tuple[int, str], ...], ...]) -> HeardBatch:
     """Every (listener, speaker, message) of ``heard_mates`` (per listener its (team-mate
     index, text) pairs), decoded in one call."""
+    listeners, speakers, texts = heard_pairs(heard_mates)
+    return HeardBatch(listeners, speakers, decode_texts(texts))
+
+
+def heard_pairs(heard_mates: tuple[tuple[tuple[int, str], ...], ...]) -> tuple[np.ndarray, np.ndarray, list[str]]:
+    """``heard_mates`` (per listener its (team-mate index, text) pairs) as one row per message:
+    (p,) int64 listeners, (p,) int64 speakers and the p texts."""
     listeners, speakers, texts = [], [], []
     for listener, pairs in enumerate(heard_mates):
         for speaker, text in pairs:
             listeners.append(listener)
             speakers.append(speaker)
             texts.append(text)
-    return HeardBatch(np.array(listeners, dtype=np.int64), np.array(speakers, dtype=np.int64),
-                      decode_texts(texts))
+    return np.array(listeners, dtype=np.int64), np.array(speakers, dtype=np.int64), texts
 
 
 def world_texts(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray, sender: np.ndarray,

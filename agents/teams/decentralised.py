@@ -5,7 +5,9 @@ Each player ``i`` has its own world model (row ``i`` of
 ``i`` of :class:`~agents.roles.voting.VoteBook`) and its own brain (a :class:`FormationTeam`
 of the same assigner and style, with its own memory and random generator). Per cycle:
 
-1. every player's world model takes in its own observation and the messages it heard;
+1. every player's world model takes in its own observation and the messages it heard, and
+   its vote book the votes among them (one compiled call for the team,
+   :func:`~agents.teams.belief_record.hear_and_believe`);
 2. a player on the ball (it believes the ball within :data:`BRAIN_DISTANCE`, or holds it),
    the goalkeeper with the ball in our penalty area, and at our set plays the player who
    believes it is the taker (re-chosen every cycle; at kick-offs the player whose own spot
@@ -38,8 +40,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from agents.messages import heard_batch
+from agents.messages import CODES, DECODING, heard_pairs, text_digits
 from agents.roles.voting import VoteBook, role_conflicts
+from agents.teams.belief_record import hear_and_believe
 from agents.teams.own_view import PLACED, OwnViewPositioning
 from agents.teams.own_view_kernels import whole_brain_rows
 from agents.teams.positions import current_labels
@@ -90,6 +93,9 @@ class DecentralisedPlay:
         self._outfield_ranks = np.arange(k)
         """Each outfield player's index among the outfield (its column of an assignment)."""
         self.votes = VoteBook(n, VOTE_HORIZON, k) if k else None
+        self._vote_arrays = (self.votes.votes, self.votes.vote_cycle) if self.votes is not None else \
+            (np.zeros((n, n, 0), dtype=np.int64), np.zeros((n, n), dtype=np.int64))
+        """The vote book's arrays (empty ones for a side without outfield roles) for the intake call."""
         self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
         self._kickable = first.model.kickable_distance + 0.2 if first is not None else 0.0
         self._views = [_empty_view(n, m, side_info) for _ in range(n)]
@@ -135,10 +141,9 @@ class DecentralisedPlay:
         key = (int(views.play_mode), bool(views.mode_ours))
         if key != self._mode_key:
             self._mode_key, self._mode_since = key, cycle
-        heard = heard_batch(views.heard_mates)
-        self.beliefs.update(views, heard)
-        if self.votes is not None:
-            self.votes.hear(cycle, heard)
+        listeners, speakers, texts = heard_pairs(views.heard_mates)
+        hear_and_believe(self.beliefs.record, *TeamBeliefs.senses(views), listeners, speakers, text_digits(texts),
+                         DECODING, CODES, *self._vote_arrays, cycle)
         command.dash[:] = 0.0
         command.kick[:] = 0.0
         command.catch = False

@@ -29,7 +29,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from agents.messages import WORLD, HeardBatch, heard_batch, world_texts
-from agents.teams.belief_kernels import AGE_NEVER, believe
+from agents.teams.belief_kernels import AGE_NEVER
+from agents.teams.belief_record import believe_of, new_record
 from soccer_sim.config import MatchConfig
 from soccer_sim.perception.views import PlayerViews
 
@@ -82,18 +83,24 @@ class TeamBeliefs:
         self._rows = np.arange(n)
         self._params = np.array([params.ball_gain, params.ball_velocity_gain, params.ball_noise_share, params.near,
                                  params.gate_share, params.gate_floor])
+        self.record = new_record((self.ball, self.ball_vel, self.ball_age, self.mate_pos, self.mate_age, self.opp_pos,
+                                  self.opp_age, self._last_seen, self._last_seen_cycle, self._params,
+                                  self._ball_decay, self._ball_speed_max))
+        """These arrays as one compiled record (:mod:`agents.teams.belief_record`)."""
 
     def update(self, views: PlayerViews, heard: HeardBatch | None = None) -> None:
         """One cycle of every player's model from its own row of ``views`` (module docstring);
         ``heard``: the team-mates' messages of ``views`` already decoded (else decoded here)."""
         if heard is None:
             heard = heard_batch(views.heard_mates)
-        d = heard.decoded
-        believe(self.ball, self.ball_vel, self.ball_age, self.mate_pos, self.mate_age, self.opp_pos, self.opp_age,
-                self._last_seen, self._last_seen_cycle, views.ball_seen, views.ball, views.ball_distance, views.saw,
-                views.seen_count, views.seen_position, views.seen_side, views.seen_number, views.seen_distance,
-                views.position, heard.listener, heard.speaker, d.kind, d.world, WORLD, views.cycle, self._params,
-                self._ball_decay, self._ball_speed_max)
+        believe_of(self.record, *self.senses(views), heard.listener, heard.speaker, heard.decoded.kind,
+                   heard.decoded.world, WORLD, views.cycle)
+
+    @staticmethod
+    def senses(views: PlayerViews) -> tuple:
+        """The arrays of ``views`` the world models read, in :func:`~agents.teams.belief_kernels.believe`'s order."""
+        return (views.ball_seen, views.ball, views.ball_distance, views.saw, views.seen_count, views.seen_position,
+                views.seen_side, views.seen_number, views.seen_distance, views.position)
 
     def kicked(self, kick: np.ndarray, kickable: float) -> None:
         """Each player's own kicks of this cycle (``kick`` (n, 2) m/cycle, team frame; zero rows

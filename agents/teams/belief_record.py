@@ -1,0 +1,87 @@
+"""A team's world models as one compiled record, and a cycle's hearing and seeing in one call.
+
+:class:`~agents.teams.world_model.TeamBeliefs` keeps every player's model in a dozen arrays
+that :func:`~agents.teams.belief_kernels.believe` updates in place. Handing them to numba one
+by one each cycle costs its dispatcher about 0.2 µs apiece, so they live in one numba
+structure (:class:`BeliefRecord`, a ``StructRef`` sharing the arrays, made with the model).
+:func:`hear_and_believe` then does a decentralised team's whole intake of a cycle in one
+compiled call: decode the team-mates' messages (:func:`~agents.message_kernels.decode_digits`),
+update the world models (:func:`believe_of`) and store the votes heard
+(:func:`agents.roles.voting._store_votes`), as :func:`~agents.messages.heard_batch`,
+:meth:`TeamBeliefs.update` and :meth:`~agents.roles.voting.VoteBook.hear` do one after the
+other.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+from numba.core import types
+from numba.experimental import structref
+
+from agents.message_kernels import decode_digits
+from agents.roles.voting import _store_votes
+from agents.teams.belief_kernels import believe
+
+FIELDS = ("ball", "ball_vel", "ball_age", "mate_pos", "mate_age", "opp_pos", "opp_age", "last_seen",
+          "last_seen_cycle", "params", "ball_decay", "speed_max")
+"""The fields of :class:`BeliefRecord`: :func:`believe`'s arguments that stay from cycle to cycle."""
+
+
+@structref.register
+class BeliefRecordType(types.StructRef):
+    """The numba type of :class:`BeliefRecord`."""
+
+    def preprocess_fields(self, fields):
+        return tuple((name, types.unliteral(typ)) for name, typ in fields)
+
+
+class BeliefRecord(structref.StructRefProxy):
+    """A team's world-model arrays and constants as one compiled structure (module docstring)."""
+
+
+structref.define_proxy(BeliefRecord, BeliefRecordType, list(FIELDS))
+
+
+@njit(cache=True)
+def new_record(values: tuple) -> BeliefRecord:  # pragma: no cover - compiled
+    """A :class:`BeliefRecord` of ``values``, the values of :data:`FIELDS` in that order (arrays
+    are shared, not copied); compiled and cached like the kernels."""
+    return BeliefRecord(*values)
+
+
+@njit(cache=True, nogil=True)
+def believe_of(r: BeliefRecord, ball_seen, ball_at, ball_distance, saw, count, at, side, number, distance, position,
+               listener, speaker, kind, world, world_kind: int, cycle: int) -> None:  # pragma: no cover - compiled
+    """:func:`~agents.teams.belief_kernels.believe` on the record ``r`` with a cycle's senses
+    (the views' arrays, in :func:`believe`'s order) and decoded messages."""
+    believe(r.ball, r.ball_vel, r.ball_age, r.mate_pos, r.mate_age, r.opp_pos, r.opp_age, r.last_seen,
+            r.last_seen_cycle, ball_seen, ball_at, ball_distance, saw, count, at, side, number, distance, position,
+            listener, speaker, kind, world, world_kind, cycle, r.params, r.ball_decay, r.speed_max)
+
+
+@njit(cache=True, nogil=True)
+def hear_and_believe(r: BeliefRecord, ball_seen, ball_at, ball_distance, saw, count, at, side, number, distance,
+                     position, listener, speaker, digits, decoding: tuple, codes: tuple, votes, vote_cycle,
+                     cycle: int) -> None:  # pragma: no cover - compiled
+    """A cycle's intake (module docstring): the messages ``digits`` (p, 10) that ``listener``
+    (p,) heard from ``speaker`` (p,) decoded (``decoding``: :data:`agents.messages.DECODING`),
+    the world models updated with the senses and the world messages, the votes of the right
+    size stored in ``votes`` (n, n, k) and ``vote_cycle`` (n, n) (k = 0: none kept).
+    ``codes``: the world and vote kinds' codes and the most players a vote covers
+    (:data:`agents.messages.CODES`)."""
+    p = digits.shape[0]
+    kind = np.full(p, -1, dtype=np.int64)
+    grid = np.zeros((p, 7), dtype=np.int64)
+    world = np.zeros((p, 7))
+    vote = np.zeros((p, codes[2]), dtype=np.int64)
+    vote_size = np.zeros(p, dtype=np.int64)
+    vote_cycle_sent = np.zeros(p, dtype=np.int64)
+    if p > 0:
+        decode_digits(digits, decoding[0], decoding[1], decoding[2], decoding[3], decoding[4], decoding[5],
+                      decoding[6], kind, grid, world, vote, vote_size, vote_cycle_sent)
+    believe_of(r, ball_seen, ball_at, ball_distance, saw, count, at, side, number, distance, position, listener,
+               speaker, kind, world, codes[0], cycle)
+    if p > 0 and votes.shape[2] > 0:
+        _store_votes(listener, speaker, kind, vote, vote_size, vote_cycle_sent, codes[1], cycle, decoding[6], votes,
+                     vote_cycle)
