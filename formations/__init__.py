@@ -8,7 +8,8 @@ team-relative frame: origin at the centre spot, attacking towards +x, y to the
 left (see :mod:`formations.field`).
 
 This package is pure: it imports only numpy and scipy (matplotlib lazily, for
-pictures), never the simulator. It reads helios-base / agent2d formation files
+pictures) and the project's numba cache stamps (:mod:`kernel_cache`), never the
+simulator. It reads helios-base / agent2d formation files
 (their JSON layout and agent2d's text layouts) and whole agent2d
 ``formations-dt`` directories (:func:`import_helios_directory`).
 
@@ -17,6 +18,8 @@ pictures), never the simulator. It reads helios-base / agent2d formation files
 >>> team.positions((10.0, -5.0), "attack").shape
 (11, 2)
 """
+
+import kernel_cache  # noqa: F401 - first of all: numba's cache stamps for the kernels below (see kernel_cache)
 
 from formations.builtin import builtin_names, load_builtin
 from formations.errors import FormationError, FormationInputError, UnknownRoleError

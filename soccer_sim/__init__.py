@@ -8,6 +8,8 @@ deterministic match loop, the Team interface and the team registry. Play a match
     result.score  # (home goals, away goals)
 """
 
+import kernel_cache  # noqa: F401 - first of all: numba's cache stamps for the kernels below (see kernel_cache)
+
 from soccer_sim.config import (ConfigError, FieldConfig, MatchConfig, PhysicsConfig, RuleConfig, StaminaConfig,
                                TackleConfig)
 from soccer_sim.errors import SoccerSimError

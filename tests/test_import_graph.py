@@ -23,7 +23,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
-PACKAGES = ("soccer_sim", "agents", "formations", "experiments")
+PACKAGES = ("soccer_sim", "agents", "formations", "experiments", "kernel_cache")
 
 
 @dataclass(frozen=True)
