@@ -3,7 +3,7 @@
 A stored result says which code played it. A package version or a git commit says what the
 driver was built from, not what a worker on another machine imported; so the version is
 computed in every process that plays a match, from the files of the packages it imported:
-SHA-256 over the sorted relative paths and bytes of every ``.py`` file of the four packages
+SHA-256 over the sorted relative paths and bytes of every ``.py`` file of the project's packages
 and of the package data that changes play (formations and scenarios). Two processes print
 the same version exactly when they run the same code.
 """
@@ -16,7 +16,7 @@ import importlib
 from collections.abc import Mapping
 from pathlib import Path
 
-PACKAGES = ("soccer_sim", "agents", "formations", "experiments")
+PACKAGES = ("soccer_sim", "agents", "formations", "experiments", "kernel_cache")
 """The project's packages: what a node must import, what the Ray backend ships."""
 
 DATA_FILES: Mapping[str, tuple[str, ...]] = {
