@@ -4,13 +4,11 @@ while a change to an unrelated file keeps its cache; the project's kernels get t
 
 from __future__ import annotations
 
-import os
-import subprocess
-import sys
-import textwrap
+import json
 from pathlib import Path
 
 import kernel_cache
+from tests.fresh_python import run_python
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -45,14 +43,7 @@ print(json.dumps([a.f(1), len(a.f.stats.cache_hits)]))
 def _play(tmp_path: Path, cache: Path | None) -> list[int]:
     """f(1) in a fresh Python (numba's cache beside the sources, or in ``cache``), and whether
     it came from the cache."""
-    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(ROOT), str(tmp_path)]))
-    env.pop("NUMBA_CACHE_DIR", None)
-    if cache is not None:
-        env["NUMBA_CACHE_DIR"] = str(cache)
-    done = subprocess.run([sys.executable, "-c", textwrap.dedent(SCRIPT)], env=env, cwd=tmp_path,
-                          capture_output=True, text=True, timeout=300)
-    assert done.returncode == 0, done.stderr
-    return [int(v) for v in done.stdout.strip().strip("[]").split(",")]
+    return json.loads(run_python(SCRIPT, tmp_path, cache).stdout)
 
 
 def _package(tmp_path: Path) -> Path:

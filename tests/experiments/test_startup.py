@@ -6,16 +6,13 @@ from __future__ import annotations
 import inspect
 import json
 import os
-import subprocess
-import sys
-import textwrap
 from pathlib import Path
 
 import pytest
 
 from experiments.warmup import COMPILING_LINE, PARTIAL_ENTRY, Kernel
+from tests.fresh_python import run_python
 
-ROOT = Path(__file__).resolve().parents[2]
 
 TINY_MODULE = """
 from numba import njit
@@ -30,19 +27,6 @@ def add(a, b):
 def scale(x, k):
     return x * k
 """
-
-
-def _run(script: str, tmp_path: Path, cache: Path | None = None) -> subprocess.CompletedProcess:
-    """Run ``script`` in a fresh Python with this checkout and ``tmp_path`` importable and the
-    numba cache in ``cache``; fails the test if it fails."""
-    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(ROOT), str(tmp_path)]))
-    env.pop("NUMBA_CACHE_DIR", None)
-    if cache is not None:
-        env["NUMBA_CACHE_DIR"] = str(cache)
-    done = subprocess.run([sys.executable, "-c", textwrap.dedent(script)], env=env, cwd=tmp_path,
-                          capture_output=True, text=True, timeout=300)
-    assert done.returncode == 0, done.stderr
-    return done
 
 
 @pytest.fixture
@@ -61,7 +45,7 @@ KERNELS = [Kernel("tinykernels", "add", "(int64, int64)", 1.0),
 
 def test_warm_up_compiles_into_the_cache_dir_and_a_later_process_loads_without_compiling(tiny: Path) -> None:
     cache = tiny / "cache"
-    first = _run(TINY_KERNELS + """
+    first = run_python(TINY_KERNELS + """
 import sys
 from experiments.warmup import ensure_cached, is_cached
 assert not any(is_cached(k) for k in KERNELS)
@@ -72,7 +56,7 @@ print(done.compiled, done.processes)
     assert first.stdout.split() == ["2", str(min(2, os.cpu_count() or 1))]
     assert first.stderr.splitlines()[0] == COMPILING_LINE
     assert sorted(p.name.split("-")[0] for p in cache.rglob("*.nbi")) == ["tinykernels.add", "tinykernels.scale"]
-    second = _run(TINY_KERNELS + """
+    second = run_python(TINY_KERNELS + """
 import json
 from experiments.warmup import dispatcher_of, ensure_cached, is_cached, load_kernels
 assert all(is_cached(k) for k in KERNELS)
@@ -91,15 +75,15 @@ def test_a_changed_kernel_counts_as_cold_again(tiny: Path) -> None:
 from experiments.warmup import ensure_cached
 print(ensure_cached(KERNELS[:1], processes=1).compiled)
 """
-    assert _run(script, tiny, cache).stdout.split() == ["1"]
-    assert _run(script, tiny, cache).stdout.split() == ["0"]
+    assert run_python(script, tiny, cache).stdout.split() == ["1"]
+    assert run_python(script, tiny, cache).stdout.split() == ["0"]
     (tiny / "tinykernels.py").write_text(TINY_MODULE.replace("a + b", "b + a"))
-    again = _run(script, tiny, cache)
+    again = run_python(script, tiny, cache)
     assert again.stdout.split() == ["1"] and COMPILING_LINE in again.stderr
 
 
 def test_a_stale_manifest_entry_is_skipped(tiny: Path) -> None:
-    done = _run(TINY_KERNELS + """
+    done = run_python(TINY_KERNELS + """
 from experiments.warmup import Kernel, ensure_cached, is_cached
 stale = [Kernel("tinykernels", "gone", "(int64,)"), Kernel("tinykernels", "add", "(unicode_type, int64)")]
 print(ensure_cached(stale + KERNELS[:1], processes=1).compiled, is_cached(KERNELS[0]))
@@ -154,7 +138,7 @@ def test_partial_observation_adds_the_see_model_and_the_world_models() -> None:
 
 
 def test_help_imports_no_numpy_numba_rich_or_simulator(tmp_path: Path) -> None:
-    done = _run("""
+    done = run_python("""
 import sys
 from experiments.cli import main
 try:
@@ -253,7 +237,7 @@ def test_manifest_matches_a_fresh_recording_of_the_default_teams(tmp_path: Path)
     from experiments.kernel_manifest import KERNELS, TEAMS
 
     for team in ("mmd+msd2", "press-433"):
-        done = _run(f"""
+        done = run_python(f"""
 from experiments.kernel_record import main
 main(["--team", {team!r}])
 """, tmp_path)
@@ -264,12 +248,12 @@ main(["--team", {team!r}])
 @pytest.mark.slow
 def test_after_the_warm_up_a_match_compiles_nothing(tmp_path: Path) -> None:
     cache = tmp_path / "cache"
-    first = _run("""
+    first = run_python("""
 from experiments.warmup import warm_kernels
 warm_kernels(["mmd+msd2", "press-433"])
 """, tmp_path, cache)
     assert first.stderr.splitlines()[0] == COMPILING_LINE
-    second = _run("""
+    second = run_python("""
 import gc, json
 from numba.core.dispatcher import Dispatcher
 from experiments.warmup import warm_kernels
@@ -297,7 +281,7 @@ def test_a_worker_is_not_timed_until_it_is_ready() -> None:
 
 @pytest.mark.slow
 def test_compile_time_is_not_charged_to_a_tight_match_timeout(tmp_path: Path) -> None:
-    done = _run(f"""
+    done = run_python(f"""
 from experiments.runner import MatchSpec, run_matches
 if __name__ == "__main__":
     specs = [MatchSpec("chaser", "idle", seed, 20) for seed in range(3)]
