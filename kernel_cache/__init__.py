@@ -119,13 +119,13 @@ def dependencies(path: Path) -> dict[str, bytes]:
         if name in texts:
             continue
         texts[name], imported = _read(root, current)
-        if current == path or b"njit" in texts[name]:  # a plain module: its values count, its imports do not
-            waiting += imported
+        waiting += imported
     return texts
 
 
 def _read(root: Path, path: Path) -> tuple[bytes, list[Path]]:
-    """``path``'s contents and the files of the project modules it imports (read once)."""
+    """``path``'s contents and the files of the project modules it imports, read once; none
+    for a plain module (no kernels): its values count, its own imports do not."""
     if path not in _files:
         text = path.read_bytes()
         module = _module_of(path)

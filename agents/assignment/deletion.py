@@ -67,9 +67,9 @@ def _rematch_below(start: int, lengths: np.ndarray, limit: float, needed: np.nda
 def delete_longest_first(lengths: np.ndarray, whole: bool) -> tuple[np.ndarray, float, bool]:  # pragma: no cover
     """``(col_of_row, bottleneck, tied)`` of the finite ``lengths`` (n, m), ``0 < n <= m``, by
     the method of the module docstring. With ``whole`` False it stops at the bottleneck
-    (``col_of_row`` is then only some complete matching). ``tied``: a visited pair's length is
-    another pair's too, so ``col_of_row`` may be one optimum of several (the bottleneck is
-    right either way)."""
+    (``col_of_row`` is then only some complete matching, and ties are not looked for).
+    ``tied``: a visited pair's length is another pair's too, so ``col_of_row`` may be one
+    optimum of several (the bottleneck is right either way)."""
     n, m = lengths.shape
     col_of_row = np.full(n, -1, dtype=np.int64)
     row_of_col = np.full(m, -1, dtype=np.int64)
@@ -91,7 +91,7 @@ def delete_longest_first(lengths: np.ndarray, whole: bool) -> tuple[np.ndarray, 
         for r in range(n):
             if not needed[r] and (i < 0 or lengths[r, col_of_row[r]] > t):
                 i, t = r, lengths[r, col_of_row[r]]
-        if not tied:
+        if whole and not tied:  # (the bottleneck alone is right whatever the ties)
             same = 0
             for r in range(n):
                 for c in range(m):

@@ -145,7 +145,7 @@ class Observer:
         mates: list[tuple] = [()] * total
         opponents: list[tuple] = [()] * total
         team, first = self._team_list, self._first_list
-        for listener, speaker in zip(*(a.tolist() for a in np.nonzero(heard))):  # (one or two a listener)
+        for listener, speaker in zip(*(a.tolist() for a in np.nonzero(heard))):  # (one or two a listener by default)
             if team[speaker] == team[listener]:
                 mates[listener] += ((speaker - first[speaker], messages[speaker]),)
             else:
