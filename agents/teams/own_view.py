@@ -49,8 +49,8 @@ from agents.skills.movement import DEFAULT_PACING
 from agents.skills.pacing import pacing_constants
 from agents.teams import mechanism
 from agents.teams.on_ball import ball_reach
-from agents.teams.own_view_state import (FIELDS, OTHER_TABLES, PositioningState, before_roles_of, dash_and_gaps_of,
-                                         follow_and_goals_of, new_state)
+from agents.teams.own_view_state import (OTHER_TABLES, PositioningState, before_roles_of, dash_and_gaps_of,
+                                         follow_and_goals_of, state_of)
 from agents.teams.positions import nearest_roles
 from agents.teams.reporting import RoleFigures
 from agents.teams.role_kernels import steered_goals
@@ -110,15 +110,7 @@ class OwnViewPositioning:
         self._batches = type(first.assigner).assign_rows is not RoleAssigner.assign_rows
         """Whether the assigner answers many views in one call (:meth:`RoleAssigner.assign_rows`)."""
         shape = first.shape
-        self._knobs = shape._knobs.copy()
-        self._forwards = first._forward_roles
         arrays = first.skills.arrays(view)
-        self._race_arrays = (arrays.ours.radius, arrays.ours.catch_radius, arrays.theirs.radius,
-                             arrays.theirs.catch_radius, model.reach, model.ball_travel, model.player_coast)
-        self._race_constants = np.array(tuple(first.skills.intercept_constants), dtype=np.float64)
-        self._pacing = pacing_constants(model, DEFAULT_PACING, 0.05)
-        self._goalie_margin = skills.GoalieParams().race_margin
-        self._area = (model.half_length - model.penalty_area_length, model.penalty_area_half_width)
         # each player's memory
         self.attacking = np.zeros(n, dtype=bool)
         self._pending = np.zeros(n, dtype=np.int64)
@@ -151,25 +143,48 @@ class OwnViewPositioning:
         self.urgent = np.zeros(n, dtype=bool)
         self._phase = np.zeros(n, dtype=np.int64)
         self._budgets = np.zeros(n)
-        # the compiled steps' other arguments, in the compiled record's order (agents.teams.own_view_state)
-        r, sp = self._race_arrays, shape.params
-        self._race = (*r, self._race_constants, self._raced, float(RACE_NEAR), int(RACE_EVERY))
-        self._shape_args = (sp.switch_margin, sp.switch_persist, float(shape.depth), float(shape.attack_push),
-                            self._knobs)
-        self._settle_args = (shape.outfield_roles, shape.back_roles, model.half_length - 2.0, self._forwards,
-                             1.0 - self.style.box_narrowing, model.half_length / 3.0, self._knobs)
-        self._support_args = (shape.is_forward, shape.is_back, shape.offsets, sp.support_players,
-                              sp.support_pressure, sp.support_horizon, model.half_length / 3.0, shape._support_knobs)
-        self._memory = (self.attacking, self._pending, self._in_play, self._block, self.our_cycles, self.our_points,
-                        self.our_first, self.their_cycle, self.win_point, self._previous, self._primed)
         self._assigned_at = np.full(n, -(1 << 40), dtype=np.int64)
         self._assigned_mode = np.full(n, -1, dtype=np.int64)
-        self._planning = (self._assigned_at, self._assigned_mode, int(ASSIGN_EVERY), bool(self._steers),
-                          int(self.outfield[0]) if self.outfield.size else -1)
-        self._no_votes, self._no_vote_cycles = np.zeros((n, n, 0), dtype=np.int64), np.zeros((n, n), dtype=np.int64)
         self._rows, self._outfield_rows, self._due_rows = (np.zeros(n, dtype=np.int64) for _ in range(3))
         """This cycle's deciding rows, their outfield ones and who of those assigns (filled by before_roles)."""
-        self._spots = first.kick_off_spots
+        sp, style, third = shape.params, self.style, model.half_length / 3.0
+        self._record = dict(
+            # who assigns
+            assigned_at=self._assigned_at, assigned_mode=self._assigned_mode, assign_every=int(ASSIGN_EVERY),
+            steers=bool(self._steers), first_outfield=int(self.outfield[0]) if self.outfield.size else -1,
+            # the ball race
+            radius=arrays.ours.radius, catch_radius=arrays.ours.catch_radius, opp_radius=arrays.theirs.radius,
+            opp_catch_radius=arrays.theirs.catch_radius, reach=model.reach, ball_travel=model.ball_travel,
+            coast=model.player_coast, raced=self._raced,
+            race_constants=np.array(tuple(first.skills.intercept_constants), dtype=np.float64),
+            race_near=float(RACE_NEAR), race_every=int(RACE_EVERY),
+            # the switch, the block and the settled targets
+            switch_margin=sp.switch_margin, switch_persist=sp.switch_persist, depth=float(shape.depth),
+            attack_push=float(shape.attack_push), knobs=shape._knobs.copy(), outfield_roles=shape.outfield_roles,
+            back_roles=shape.back_roles, x_limit=model.half_length - 2.0, forwards=first._forward_roles,
+            narrowing=1.0 - style.box_narrowing, narrow_x=third,
+            # the support spots
+            is_forward=shape.is_forward, is_back=shape.is_back, offsets=shape.offsets,
+            support_players=sp.support_players, support_pressure=sp.support_pressure,
+            support_horizon=sp.support_horizon, third_x=third, support_knobs=shape._support_knobs,
+            # each player's memory, assignments, targets and rows
+            attacking=self.attacking, pending=self._pending, in_play=self._in_play, block=self._block,
+            our_cycles=self.our_cycles, our_points=self.our_points, our_first=self.our_first,
+            their_cycle=self.their_cycle, win_point=self.win_point, previous=self._previous, primed=self._primed,
+            proposals=self.proposals, followed=self.followed, following=self._next, rank=self.rank,
+            match_roles=self.match_roles, full=self._full, targets=self.targets, rows=self._rows,
+            outfield_rows=self._outfield_rows, due=self._due_rows,
+            # goals, dashes and the role figures
+            stationary=bool(style.stationary), spots=first.kick_off_spots, outfield=self.outfield,
+            goalie=int(self.goalie), offside_margin=float(style.offside_margin), pressers=int(style.pressers),
+            keeper_margin=int(skills.GoalieParams().race_margin),
+            area_x=float(model.half_length - model.penalty_area_length),
+            area_y=float(model.penalty_area_half_width), goals=self.goals, urgent=self.urgent, phase=self._phase,
+            pacing=pacing_constants(model, DEFAULT_PACING, 0.05), budgets=self._budgets,
+            last_followed=self._last_followed, unfilled=float(style.unfilled_distance))
+        """The compiled record's fields but the world models', the votes' and the formations'
+        (:mod:`agents.teams.own_view_state`; made on the first cycle, :meth:`_state_for`)."""
+        self._no_votes, self._no_vote_cycles = np.zeros((n, n, 0), dtype=np.int64), np.zeros((n, n), dtype=np.int64)
         self.figures = RoleFigures(config, k)
         """The team's role figures: each player's distance to the target of the role it follows."""
 
@@ -256,20 +271,14 @@ class OwnViewPositioning:
         if self._state is not None and self._state_of[0] is beliefs and self._state_of[1] is votes:
             return self._state
         tables = {situation: self.formation_set.formation(situation).query_tables for situation in Situation}
-        voting = (self._no_votes, self._no_vote_cycles, 0) if votes is None else \
+        votes_of = (self._no_votes, self._no_vote_cycles, 0) if votes is None else \
             (votes.votes, votes.vote_cycle, int(votes.horizon))
-        style = self.style
-        values = (beliefs.ball, beliefs.ball_vel, beliefs.mate_pos, beliefs.opp_pos, *self._planning, *voting,
-                  *self._race, *self._shape_args, *self._settle_args[:6], *self._support_args,
-                  tables[Situation.ATTACK], tables[Situation.DEFEND], tables[Situation.OUR_SET_PLAY],
-                  tables[Situation.THEIR_SET_PLAY], tables[Situation.NORMAL], *self._memory, self.proposals,
-                  self.followed, self._next, self.rank, self.match_roles, self._full, self.targets, self._rows,
-                  self._outfield_rows, self._due_rows, bool(style.stationary), self._spots, self.outfield,
-                  int(self.goalie), float(style.offside_margin), int(style.pressers), int(self._goalie_margin),
-                  float(self._area[0]), float(self._area[1]), self.goals, self.urgent, self._phase, self._pacing,
-                  self._budgets, self._last_followed, float(style.unfilled_distance))
-        assert len(values) == len(FIELDS)
-        self._state, self._state_of = new_state(values), (beliefs, votes)
+        values = dict(self._record, ball=beliefs.ball, ball_vel=beliefs.ball_vel, mate_pos=beliefs.mate_pos,
+                      opp_pos=beliefs.opp_pos, votes=votes_of[0], vote_cycle=votes_of[1], vote_horizon=votes_of[2],
+                      tables_attack=tables[Situation.ATTACK], tables_defend=tables[Situation.DEFEND],
+                      tables_our_set_play=tables[Situation.OUR_SET_PLAY],
+                      tables_their_set_play=tables[Situation.THEIR_SET_PLAY], tables_normal=tables[Situation.NORMAL])
+        self._state, self._state_of = state_of(values), (beliefs, votes)
         return self._state
 
     def _assign(self, rows: np.ndarray, beliefs: TeamBeliefs, mode: int, cycle: int) -> None:

@@ -17,6 +17,8 @@ and the normal one as well as attack and defend, chosen by :data:`OTHER_TABLES` 
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
 from numba import njit
 from numba.core import types
 from numba.experimental import structref
@@ -50,7 +52,8 @@ FIELDS = (
     "stationary", "spots", "outfield", "goalie", "offside_margin", "pressers", "keeper_margin", "area_x", "area_y",
     "goals", "urgent", "phase", "pacing", "budgets", "last_followed", "unfilled",
 )
-"""The fields of :class:`PositioningState`, in the order :func:`new_state` takes them."""
+"""The fields of :class:`PositioningState`, in the order :func:`new_state` takes them (:func:`state_of`
+takes them by name)."""
 
 OTHER_TABLES = {"our_set_play": 0, "their_set_play": 1, "normal": 2}
 """Codes of the formation a play mode other than play on uses (``other`` of :func:`before_roles_of`)."""
@@ -77,6 +80,16 @@ def new_state(values: tuple) -> PositioningState:  # pragma: no cover - compiled
     (arrays are shared, not copied). Compiled and cached, so a new process does not compile the
     structure's constructor again."""
     return PositioningState(*values)
+
+
+def state_of(values: Mapping[str, object]) -> PositioningState:
+    """A :class:`PositioningState` of ``values`` by field name (every name of :data:`FIELDS`,
+    no other; arrays shared, not copied); ValueError naming the names that are missing or
+    unknown."""
+    missing, unknown = sorted(set(FIELDS) - set(values)), sorted(set(values) - set(FIELDS))
+    if missing or unknown:
+        raise ValueError(f"PositioningState: fields missing {missing}, unknown {unknown}")
+    return new_state(tuple(values[name] for name in FIELDS))
 
 
 @njit(cache=True, nogil=True)

@@ -5,9 +5,10 @@ team reads, and a new world model or vote book gets a new record."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from numba import njit
 
-from agents.teams.own_view_state import PositioningState
+from agents.teams.own_view_state import FIELDS, PositioningState, state_of
 from soccer_sim import MatchConfig
 from soccer_sim.match import Match
 from soccer_sim.perception.config import ObservationConfig
@@ -47,3 +48,9 @@ def test_a_new_world_model_or_vote_book_gets_a_new_record() -> None:
     assert positioning._state_for(play.beliefs, play.votes) is state
     other = positioning._state_for(play.beliefs, None)
     assert other is not state and _fields(other)[6].shape[2] == 0  # no votes: an empty vote book
+
+
+def test_a_record_of_missing_or_unknown_fields_is_refused_by_name() -> None:
+    values = {name: 0 for name in FIELDS if name != "goals"}
+    with pytest.raises(ValueError, match=r"missing \['goals'\], unknown \['goal'\]"):
+        state_of({**values, "goal": 0})
