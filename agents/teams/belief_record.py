@@ -4,12 +4,12 @@
 that :func:`~agents.teams.belief_kernels.believe` updates in place. Handing them to numba one
 by one each cycle costs its dispatcher about 0.2 µs apiece, so they live in one numba
 structure (:class:`BeliefRecord`, a ``StructRef`` sharing the arrays, made with the model).
-:func:`hear_and_believe` then does a decentralised team's whole intake of a cycle in one
-compiled call: decode the team-mates' messages (:func:`~agents.message_kernels.decode_digits`),
-update the world models (:func:`believe_of`) and store the votes heard
-(:func:`agents.roles.voting._store_votes`), as :func:`~agents.messages.heard_batch`,
-:meth:`TeamBeliefs.update` and :meth:`~agents.roles.voting.VoteBook.hear` do one after the
-other.
+:func:`hear_and_believe` then does a team's whole intake of a cycle in one compiled call:
+decode the team-mates' messages (:func:`~agents.message_kernels.decode_digits`), update the
+world models (:func:`~agents.teams.belief_kernels.believe`) and store the votes heard
+(:func:`agents.roles.voting._store_votes`), what :func:`~agents.messages.heard_batch`, the
+world-model kernel and :meth:`~agents.roles.voting.VoteBook.hear` would do one after the other.
+:meth:`~agents.teams.world_model.TeamBeliefs.update` makes the call.
 """
 
 from __future__ import annotations
@@ -51,16 +51,6 @@ def new_record(values: tuple) -> BeliefRecord:  # pragma: no cover - compiled
 
 
 @njit(cache=True, nogil=True)
-def believe_of(r: BeliefRecord, ball_seen, ball_at, ball_distance, saw, count, at, side, number, distance, position,
-               listener, speaker, kind, world, world_kind: int, cycle: int) -> None:  # pragma: no cover - compiled
-    """:func:`~agents.teams.belief_kernels.believe` on the record ``r`` with a cycle's senses
-    (the views' arrays, in :func:`believe`'s order) and decoded messages."""
-    believe(r.ball, r.ball_vel, r.ball_age, r.mate_pos, r.mate_age, r.opp_pos, r.opp_age, r.last_seen,
-            r.last_seen_cycle, ball_seen, ball_at, ball_distance, saw, count, at, side, number, distance, position,
-            listener, speaker, kind, world, world_kind, cycle, r.params, r.ball_decay, r.speed_max)
-
-
-@njit(cache=True, nogil=True)
 def hear_and_believe(r: BeliefRecord, ball_seen, ball_at, ball_distance, saw, count, at, side, number, distance,
                      position, listener, speaker, digits, decoding: tuple, codes: tuple, votes, vote_cycle,
                      cycle: int) -> None:  # pragma: no cover - compiled
@@ -69,7 +59,8 @@ def hear_and_believe(r: BeliefRecord, ball_seen, ball_at, ball_distance, saw, co
     the world models updated with the senses and the world messages, the votes of the right
     size stored in ``votes`` (n, n, k) and ``vote_cycle`` (n, n) (k = 0: none kept).
     ``codes``: the world and vote kinds' codes and the most players a vote covers
-    (:data:`agents.messages.CODES`)."""
+    (:data:`agents.messages.CODES`). The senses are the views' arrays in
+    :func:`~agents.teams.belief_kernels.believe`'s order."""
     p = digits.shape[0]
     kind = np.full(p, -1, dtype=np.int64)
     grid = np.zeros((p, 7), dtype=np.int64)
@@ -80,8 +71,9 @@ def hear_and_believe(r: BeliefRecord, ball_seen, ball_at, ball_distance, saw, co
     if p > 0:
         decode_digits(digits, decoding[0], decoding[1], decoding[2], decoding[3], decoding[4], decoding[5],
                       decoding[6], kind, grid, world, vote, vote_size, vote_cycle_sent)
-    believe_of(r, ball_seen, ball_at, ball_distance, saw, count, at, side, number, distance, position, listener,
-               speaker, kind, world, codes[0], cycle)
+    believe(r.ball, r.ball_vel, r.ball_age, r.mate_pos, r.mate_age, r.opp_pos, r.opp_age, r.last_seen,
+            r.last_seen_cycle, ball_seen, ball_at, ball_distance, saw, count, at, side, number, distance, position,
+            listener, speaker, kind, world, codes[0], cycle, r.params, r.ball_decay, r.speed_max)
     if p > 0 and votes.shape[2] > 0:
         _store_votes(listener, speaker, kind, vote, vote_size, vote_cycle_sent, codes[1], cycle, decoding[6], votes,
                      vote_cycle)

@@ -7,7 +7,7 @@ of the same assigner and style, with its own memory and random generator). Per c
 
 1. every player's world model takes in its own observation and the messages it heard, and
    its vote book the votes among them (one compiled call for the team,
-   :func:`~agents.teams.belief_record.hear_and_believe`);
+   :meth:`~agents.teams.world_model.TeamBeliefs.update`);
 2. a player on the ball (it believes the ball within :data:`BRAIN_DISTANCE`, or holds it),
    the goalkeeper with the ball in our penalty area, and at our set plays the player who
    believes it is the taker (re-chosen every cycle; at kick-offs the player whose own spot
@@ -40,9 +40,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from agents.messages import CODES, DECODING, heard_pairs, text_digits
 from agents.roles.voting import VoteBook, role_conflicts
-from agents.teams.belief_record import hear_and_believe
 from agents.teams.own_view import PLACED, OwnViewPositioning
 from agents.teams.own_view_kernels import whole_brain_rows
 from agents.teams.positions import current_labels
@@ -93,9 +91,8 @@ class DecentralisedPlay:
         self._outfield_ranks = np.arange(k)
         """Each outfield player's index among the outfield (its column of an assignment)."""
         self.votes = VoteBook(n, VOTE_HORIZON, k) if k else None
-        self._vote_arrays = (self.votes.votes, self.votes.vote_cycle) if self.votes is not None else \
-            (np.zeros((n, n, 0), dtype=np.int64), np.zeros((n, n), dtype=np.int64))
-        """The vote book's arrays (empty ones for a side without outfield roles) for the intake call."""
+        self._vote_arrays = (self.votes.votes, self.votes.vote_cycle) if self.votes is not None else None
+        """The vote book's arrays, which the world models' update fills (None: no outfield roles)."""
         self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
         self._kickable = first.model.kickable_distance + 0.2 if first is not None else 0.0
         self._views = [_empty_view(n, m, side_info) for _ in range(n)]
@@ -141,9 +138,7 @@ class DecentralisedPlay:
         key = (int(views.play_mode), bool(views.mode_ours))
         if key != self._mode_key:
             self._mode_key, self._mode_since = key, cycle
-        listeners, speakers, texts = heard_pairs(views.heard_mates)
-        hear_and_believe(self.beliefs.record, *TeamBeliefs.senses(views), listeners, speakers, text_digits(texts),
-                         DECODING, CODES, *self._vote_arrays, cycle)
+        self.beliefs.update(views, self._vote_arrays)
         command.dash[:] = 0.0
         command.kick[:] = 0.0
         command.catch = False

@@ -28,9 +28,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from agents.messages import WORLD, HeardBatch, heard_batch, world_texts
+from agents.messages import CODES, DECODING, heard_pairs, text_digits, world_texts
 from agents.teams.belief_kernels import AGE_NEVER
-from agents.teams.belief_record import believe_of, new_record
+from agents.teams.belief_record import hear_and_believe, new_record
 from soccer_sim.config import MatchConfig
 from soccer_sim.perception.views import PlayerViews
 
@@ -87,20 +87,20 @@ class TeamBeliefs:
                                   self.opp_age, self._last_seen, self._last_seen_cycle, self._params,
                                   self._ball_decay, self._ball_speed_max))
         """These arrays as one compiled record (:mod:`agents.teams.belief_record`)."""
+        self._no_votes = (np.zeros((n, n, 0), dtype=np.int64), np.zeros((n, n), dtype=np.int64))
+        """An empty vote book's arrays, for an update that keeps no votes."""
 
-    def update(self, views: PlayerViews, heard: HeardBatch | None = None) -> None:
-        """One cycle of every player's model from its own row of ``views`` (module docstring);
-        ``heard``: the team-mates' messages of ``views`` already decoded (else decoded here)."""
-        if heard is None:
-            heard = heard_batch(views.heard_mates)
-        believe_of(self.record, *self.senses(views), heard.listener, heard.speaker, heard.decoded.kind,
-                   heard.decoded.world, WORLD, views.cycle)
-
-    @staticmethod
-    def senses(views: PlayerViews) -> tuple:
-        """The arrays of ``views`` the world models read, in :func:`~agents.teams.belief_kernels.believe`'s order."""
-        return (views.ball_seen, views.ball, views.ball_distance, views.saw, views.seen_count, views.seen_position,
-                views.seen_side, views.seen_number, views.seen_distance, views.position)
+    def update(self, views: PlayerViews, votes: tuple[np.ndarray, np.ndarray] | None = None) -> None:
+        """One cycle of every player's model from its own row of ``views`` and the team-mates'
+        messages it heard (module docstring). With ``votes`` (a
+        :class:`~agents.roles.voting.VoteBook`'s ``votes`` and ``vote_cycle``) the votes among
+        those messages are stored there too: one compiled call
+        (:func:`~agents.teams.belief_record.hear_and_believe`)."""
+        listeners, speakers, texts = heard_pairs(views.heard_mates)
+        hear_and_believe(self.record, views.ball_seen, views.ball, views.ball_distance, views.saw, views.seen_count,
+                         views.seen_position, views.seen_side, views.seen_number, views.seen_distance,
+                         views.position, listeners, speakers, text_digits(texts), DECODING, CODES,
+                         *(votes if votes is not None else self._no_votes), views.cycle)
 
     def kicked(self, kick: np.ndarray, kickable: float) -> None:
         """Each player's own kicks of this cycle (``kick`` (n, 2) m/cycle, team frame; zero rows

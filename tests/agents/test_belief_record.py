@@ -1,15 +1,16 @@
-"""A decentralised team's intake in one compiled call (:mod:`agents.teams.belief_record`): the
-same world models and votes as decoding the messages, updating the models and storing the
-votes one after the other, bad messages and a side without votes included."""
+"""A team's intake in one compiled call (:mod:`agents.teams.belief_record`, made by
+:meth:`TeamBeliefs.update`): the same world models and votes as decoding the messages,
+updating the models and storing the votes one after the other, bad messages and a side
+without votes included."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from agents.messages import CODES, DECODING, WorldMessage, encode, heard_pairs, text_digits, vote_texts
+from agents.messages import WORLD, WorldMessage, encode, heard_batch, vote_texts
 from agents.roles.voting import VoteBook
-from agents.teams.belief_record import hear_and_believe
+from agents.teams.belief_kernels import believe
 from agents.teams.world_model import TeamBeliefs
 from tests.agents.test_world_model import CONFIG, M, N, see_ball_at
 
@@ -22,22 +23,30 @@ def _heard(cycle: int) -> tuple:
     return (((1, votes[1]), (2, votes[2])), ((0, world), (2, "not a msg!")), ((0, votes[0]), (1, "(bad)")))
 
 
+def _three_steps(beliefs: TeamBeliefs, book: VoteBook | None, views) -> None:
+    """The intake one step after another: decode, the world-model kernel, the vote book."""
+    heard = heard_batch(views.heard_mates)
+    believe(beliefs.ball, beliefs.ball_vel, beliefs.ball_age, beliefs.mate_pos, beliefs.mate_age, beliefs.opp_pos,
+            beliefs.opp_age, beliefs._last_seen, beliefs._last_seen_cycle, views.ball_seen, views.ball,
+            views.ball_distance, views.saw, views.seen_count, views.seen_position, views.seen_side,
+            views.seen_number, views.seen_distance, views.position, heard.listener, heard.speaker,
+            heard.decoded.kind, heard.decoded.world, WORLD, views.cycle, beliefs._params, beliefs._ball_decay,
+            beliefs._ball_speed_max)
+    if book is not None:
+        book.hear(views.cycle, heard)
+
+
 @pytest.mark.parametrize("with_votes", [True, False])
 def test_one_call_gives_what_the_three_steps_give(with_votes: bool) -> None:
     apart, together = TeamBeliefs(N, M, CONFIG), TeamBeliefs(N, M, CONFIG)
     book_apart = VoteBook(N, 20, N) if with_votes else None
     book_together = VoteBook(N, 20, N) if with_votes else None
-    arrays = (book_together.votes, book_together.vote_cycle) if with_votes else \
-        (np.zeros((N, N, 0), np.int64), np.zeros((N, N), np.int64))
+    arrays = (book_together.votes, book_together.vote_cycle) if with_votes else None
     for cycle in range(1, 9):
         views = see_ball_at({0: (1.0 * cycle, 0.5), 2: (1.1 * cycle, 0.4)} if cycle < 4 else {}, cycle)
         views.heard_mates = _heard(cycle) if cycle % 3 else ((),) * N  # some silent cycles
-        apart.update(views)
-        if book_apart is not None:
-            book_apart.hear(cycle, views.heard_mates)
-        listeners, speakers, texts = heard_pairs(views.heard_mates)
-        hear_and_believe(together.record, *TeamBeliefs.senses(views), listeners, speakers, text_digits(texts),
-                         DECODING, CODES, *arrays, cycle)
+        _three_steps(apart, book_apart, views)
+        together.update(views, arrays)
     for name in ("ball", "ball_vel", "ball_age", "mate_pos", "mate_age", "opp_pos", "opp_age"):
         np.testing.assert_array_equal(getattr(together, name), getattr(apart, name), err_msg=name)
     assert together.ball_age[1] <= 5  # player 1 saw nothing: the ball came from a message
