@@ -22,6 +22,8 @@ NO_LIMITS = np.full(0, -1, dtype=np.int64)
 """Empty cycle limits: the search goes to the horizon."""
 EVERYONE = np.zeros(0, dtype=np.int64)
 """Empty ``only``: every player is searched on every trajectory."""
+_MARGIN = 1e-6
+"""Slack (m) of the run bound that skips hopeless hit tests, far above any rounding error."""
 
 
 @njit(cache=True, nogil=True)
@@ -41,6 +43,7 @@ def intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, ve
     n = pos.shape[0]
     run = np.empty(n)  # furthest straight-line run so far, per player
     speed = np.empty(n)
+    short = np.empty(n)  # the run below which a player cannot reach the ball's path
     for p in range(ball_vel.shape[0]):
         b = 0 if ball.shape[0] == 1 else p
         bx0, by0, vx, vy = ball[b, 0], ball[b, 1], ball_vel[p, 0], ball_vel[p, 1]
@@ -59,10 +62,14 @@ def intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, ve
             if alone < 0 or i == alone:
                 cycles_out[p, i] = -1
                 remaining += 1
+                qx, qy = pos[i, 0] - bx0, pos[i, 1] - by0
+                t = min(max((qx * wx + qy * wy) / whole, 0.0), 1.0) if whole > 0.0 else 0.0
+                gap = math.sqrt((qx - t * wx) ** 2 + (qy - t * wy) ** 2)
+                widest = max(radius[i], catch_radius[i], body)
+                # Every ball point searched lies on the path, at least `gap` from the player: no
+                # hit while its run falls short of that (less a margin for rounding).
+                short[i] = gap - widest - _MARGIN
                 if prune:
-                    qx, qy = pos[i, 0] - bx0, pos[i, 1] - by0
-                    t = min(max((qx * wx + qy * wy) / whole, 0.0), 1.0) if whole > 0.0 else 0.0
-                    gap = math.sqrt((qx - t * wx) ** 2 + (qy - t * wy) ** 2)
                     grow = reach[last - delay] * effort[i] if last > delay else 0.0
                     if gap > coast[last] * speed[i] + grow + max(radius[i], catch_radius[i]):
                         cycles_out[p, i] = -2
@@ -97,6 +104,8 @@ def intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, ve
                     speed[i] = min(speed[i] + boost, speed_max)
                     run[i] += speed[i]
                     speed[i] *= decay
+                if run[i] < short[i]:
+                    continue
                 cx = pos[i, 0] + coast[k] * vel[i, 0]
                 cy = pos[i, 1] + coast[k] * vel[i, 1]
                 r = radius[i]

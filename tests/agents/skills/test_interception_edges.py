@@ -38,3 +38,38 @@ def test_checked_entry_is_the_same_search() -> None:
         got = intercept_checked(ctx, ball, vels, players, 1.0, *checked)
         assert np.array_equal(want[0], got[0]) and np.array_equal(want[1], got[1])
         assert (got[0] < skills.UNREACHABLE).any()
+
+
+def test_the_run_bound_skips_no_interception(monkeypatch) -> None:
+    """The search skips a player's hit tests while its run cannot yet reach the ball's path; a
+    copy of the kernel compiled without that bound (``_MARGIN`` infinite) finds the same
+    cycles and points, bit for bit, on many scenes: standing and moving players, slow and fast
+    balls, catches in a penalty area, reaction delays, first-only searches and limits."""
+    from numba import njit
+
+    from agents.skills import interception_kernels as kernels
+
+    monkeypatch.setattr(kernels, "_MARGIN", np.inf)
+    unbounded = njit(kernels.intercept_kernel.py_func)  # compiled now, with the bound off
+    model = skills.MotionModel.even_sides(MatchConfig())
+    ctx = skills.SkillContext(model)
+    rng = np.random.default_rng(11)
+    skipped = 0
+    for scene in range(60):
+        pos = rng.uniform((-52.0, -34.0), (52.0, 34.0), (11, 2))
+        vel = rng.uniform(-0.6, 0.6, (11, 2)) * (scene % 2)
+        players = skills.Players(model, pos, vel, effort=rng.uniform(0.6, 1.0, 11))
+        ball = rng.uniform((-50.0, -30.0), (50.0, 30.0), (1, 2))
+        vels = rng.uniform(-3.0, 3.0, (6, 2)) * rng.uniform(0.0, 1.0, (6, 1))
+        limits = rng.integers(-1, 60, 6).astype(np.int64)
+        delay, first_only, side = int(scene % 3), bool(scene % 4 == 0), (-1.0, 1.0)[scene % 2]
+        args = (ball, vels, players.pos, players.vel, players.effort, players.radius, players.catch_radius,
+                model.reach, model.ball_travel, model.player_coast, limits, kernels.EVERYONE)
+        got = np.empty((6, 11), dtype=np.int64), np.empty((6, 11, 2))
+        want = np.empty((6, 11), dtype=np.int64), np.empty((6, 11, 2))
+        tail = (*ctx.intercept_constants, side, delay, first_only)
+        kernels.intercept_kernel(*args, *got, *tail)
+        unbounded(*args, *want, *tail)
+        assert np.array_equal(got[0], want[0]) and np.array_equal(got[1], want[1]), scene
+        skipped += int(((got[0] > 5) & (got[0] < skills.UNREACHABLE)).sum())
+    assert skipped > 50  # far players who reach the ball late: the bound had hit tests to skip
