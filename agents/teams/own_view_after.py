@@ -40,7 +40,7 @@ def follow_and_goals(rows: np.ndarray, outfield_rows: np.ndarray, due: np.ndarra
         for i in outfield_rows:
             followed[i, :] = following[i, :]
     targets, out_roles, outfield, goalie, play_on, our_cycles, our_points, our_first, their_cycle, ball, opp_pos, \
-        offside_margin, pressers, keeper_margin, area_x, area_y, rank = goals_args
+        offside_margin, pressers, keeper_margin, area_x, area_y, half_length, rank = goals_args
     if stationary:
         for i in outfield_rows:
             role = out_roles[i, rank[i]]
@@ -49,8 +49,8 @@ def follow_and_goals(rows: np.ndarray, outfield_rows: np.ndarray, due: np.ndarra
             urgent[i] = False
         return
     own_goals(outfield_rows, rank, followed, targets, out_roles, outfield, goalie, play_on, our_cycles, our_points,
-              our_first, their_cycle, ball, opp_pos, offside_margin, pressers, keeper_margin, area_x, area_y, goals,
-              urgent)
+              our_first, their_cycle, ball, opp_pos, offside_margin, pressers, keeper_margin, area_x, area_y,
+              half_length, goals, urgent)
 
 
 @njit(cache=True, nogil=True)
@@ -80,12 +80,13 @@ def own_goals(rows: np.ndarray, rank: np.ndarray, followed: np.ndarray, targets:
               out_roles: np.ndarray, outfield: np.ndarray, goalie: int, play_on: bool, our_cycles: np.ndarray,
               our_points: np.ndarray, our_first: np.ndarray, their_cycle: np.ndarray, ball: np.ndarray,
               opp_pos: np.ndarray, offside_margin: float, pressers: int, keeper_margin: int, area_x: float,
-              area_y: float, goals: np.ndarray, urgent: np.ndarray) -> None:  # pragma: no cover - compiled
+              area_y: float, half_length: float, goals: np.ndarray, urgent: np.ndarray) -> None:  # pragma: no cover - compiled
     """Each deciding outfield player's goal point (into ``goals[i]``) and hurry: its followed
     role's target (``followed[i, rank[i]]``, an index into its ``out_roles[i]``); in play on
     pulled back behind the offside line it believes in, its interception point when it believes
     it is the one who goes for the ball (the first of ours, the goalkeeper only for a ball it
-    wins by ``keeper_margin`` cycles in our penalty area, ``x <= -area_x``, ``|y| <= area_y``:
+    wins by ``keeper_margin`` cycles in our penalty area, ``-half_length <= x <= -area_x``,
+    ``|y| <= area_y``, as :func:`agents.skills.comes_out` has it:
     :func:`agents.teams.on_ball.ball_player` on its own race), and as one of the first
     ``pressers`` when it believes they win the ball."""
     for i in rows:
@@ -104,7 +105,7 @@ def own_goals(rows: np.ndarray, rank: np.ndarray, followed: np.ndarray, targets:
                 mine = our_cycles[i, goalie]
                 px, py = our_points[i, goalie, 0], our_points[i, goalie, 1]
                 comes_out = (mine < UNREACHABLE and their_cycle[i] - mine >= keeper_margin
-                             and px <= -area_x and abs(py) <= area_y)
+                             and -half_length <= px <= -area_x and abs(py) <= area_y)
                 if not comes_out:  # an outfield player goes instead
                     first, best = -1, UNREACHABLE
                     for j in outfield:

@@ -50,7 +50,7 @@ FIELDS = (
     "proposals", "followed", "following", "rank", "match_roles", "full", "targets", "rows", "outfield_rows", "due",
     # goals, dashes and the role figures
     "stationary", "spots", "outfield", "goalie", "offside_margin", "pressers", "keeper_margin", "area_x", "area_y",
-    "goals", "urgent", "phase", "pacing", "budgets", "last_followed", "unfilled",
+    "half_length", "goals", "urgent", "phase", "pacing", "budgets", "last_followed", "unfilled",
 )
 """The fields of :class:`PositioningState`, in the order :func:`new_state` takes them (:func:`state_of`
 takes them by name)."""
@@ -128,7 +128,7 @@ def follow_and_goals_of(s: PositioningState, n_rows: int, n_out: int, n_due: int
     voting = (s.votes, s.vote_cycle, s.vote_horizon, cycle)
     goals_args = (s.targets, s.match_roles, s.outfield, s.goalie, play_on, s.our_cycles, s.our_points, s.our_first,
                   s.their_cycle, s.ball, s.opp_pos, s.offside_margin, s.pressers, s.keeper_margin, s.area_x,
-                  s.area_y, s.rank)
+                  s.area_y, s.half_length, s.rank)
     follow_and_goals(s.rows[:n_rows], s.outfield_rows[:n_out], s.due[:n_due], placed, voting, s.proposals,
                      s.following, s.followed, s.stationary, s.spots, goals_args, s.goals, s.urgent)
 
