@@ -152,7 +152,8 @@ def main(argv: list[str] | None = None) -> int:
                         help=f"record every built-in team and rewrite {MANIFEST_PATH.name}")
     args = parser.parse_args(argv)
     if args.team:
-        print(json.dumps(record_match(args.team, args.away or args.team, cycles=args.cycles, observation=args.observation)))
+        print(json.dumps(record_match(args.team, args.away or args.team, cycles=args.cycles,
+                                      observation=args.observation)))
         return 0
     if not args.write:
         parser.error("give --team NAME or --write")

@@ -179,7 +179,8 @@ class OwnViewPositioning:
             goalie=int(self.goalie), offside_margin=float(style.offside_margin), pressers=int(style.pressers),
             keeper_margin=int(skills.GoalieParams().race_margin),
             area_x=float(model.half_length - model.penalty_area_length),
-            area_y=float(model.penalty_area_half_width), half_length=float(model.half_length), goals=self.goals, urgent=self.urgent, phase=self._phase,
+            area_y=float(model.penalty_area_half_width), half_length=float(model.half_length), goals=self.goals,
+            urgent=self.urgent, phase=self._phase,
             pacing=pacing_constants(model, DEFAULT_PACING, 0.05), budgets=self._budgets,
             last_followed=self._last_followed, unfilled=float(style.unfilled_distance))
         """The compiled record's fields but the world models', the votes' and the formations'

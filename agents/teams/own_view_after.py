@@ -80,7 +80,8 @@ def own_goals(rows: np.ndarray, rank: np.ndarray, followed: np.ndarray, targets:
               out_roles: np.ndarray, outfield: np.ndarray, goalie: int, play_on: bool, our_cycles: np.ndarray,
               our_points: np.ndarray, our_first: np.ndarray, their_cycle: np.ndarray, ball: np.ndarray,
               opp_pos: np.ndarray, offside_margin: float, pressers: int, keeper_margin: int, area_x: float,
-              area_y: float, half_length: float, goals: np.ndarray, urgent: np.ndarray) -> None:  # pragma: no cover - compiled
+              area_y: float, half_length: float, goals: np.ndarray,
+              urgent: np.ndarray) -> None:  # pragma: no cover - compiled
     """Each deciding outfield player's goal point (into ``goals[i]``) and hurry: its followed
     role's target (``followed[i, rank[i]]``, an index into its ``out_roles[i]``); in play on
     pulled back behind the offside line it believes in, its interception point when it believes
