@@ -35,6 +35,7 @@ from agents.errors import AgentsError
 from agents.message_kernels import (decode_digits, grid_index, number_digits, vote_digits_rows, vote_number,
                                     world_digits_rows, world_number)
 from soccer_sim.perception.audio import SAY_CHARACTERS
+from soccer_sim.perception.views import HeardLog
 
 ALPHABET: str = "".join(c for c in SAY_CHARACTERS if c not in " ()")
 """The 71 characters a message uses: rcssserver's ``say`` set without space and parentheses."""
@@ -282,16 +283,18 @@ class HeardBatch(NamedTuple):
     """What each one says (kind -1: none of ours)."""
 
 
-def heard_batch(heard_mates: tuple[tuple[tuple[int, str], ...], ...]) -> HeardBatch:
+def heard_batch(heard_mates: Sequence[tuple[tuple[int, str], ...]]) -> HeardBatch:
     """Every (listener, speaker, message) of ``heard_mates`` (per listener its (team-mate
     index, text) pairs), decoded in one call."""
     listeners, speakers, texts = heard_pairs(heard_mates)
     return HeardBatch(listeners, speakers, decode_texts(texts))
 
 
-def heard_pairs(heard_mates: tuple[tuple[tuple[int, str], ...], ...]) -> tuple[np.ndarray, np.ndarray, list[str]]:
+def heard_pairs(heard_mates: Sequence[tuple[tuple[int, str], ...]]) -> tuple[np.ndarray, np.ndarray, list[str]]:
     """``heard_mates`` (per listener its (team-mate index, text) pairs) as one row per message:
     (p,) int64 listeners, (p,) int64 speakers and the p texts."""
+    if isinstance(heard_mates, HeardLog):  # (a match's: its arrays at once)
+        return heard_mates.pairs()
     listeners, speakers, texts = [], [], []
     for listener, pairs in enumerate(heard_mates):
         for speaker, text in pairs:

@@ -347,7 +347,8 @@ class Match:
             self._catch[team], moves[team] = frame.read_command(command, sign)
             sign = -sign
         if observer is not None:
-            observer.say(state.cycle, [f.said if f.said is not None else (None,) * f.n for f in self.frames], state.pos)
+            said = [f.said if f.said is not None else (None,) * f.n for f in self.frames]
+            observer.say(state.cycle, said, state.pos, checked=True)  # (read_command checked the messages)
         return moves
 
     def _resolve_tackles(self, tackling: bool) -> TackleOutcome | None:

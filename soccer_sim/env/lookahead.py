@@ -42,9 +42,10 @@ class LookaheadObserver:
             self._cycle = state.cycle
         return self._views
 
-    def say(self, cycle: int, messages: Sequence[Sequence[str | None]], positions: np.ndarray) -> None:
+    def say(self, cycle: int, messages: Sequence[Sequence[str | None]], positions: np.ndarray,
+            checked: bool = False) -> None:
         """The teams' messages of ``cycle`` into the channel (the observer's :meth:`~Observer.say`)."""
-        self.observer.say(cycle, messages, positions)
+        self.observer.say(cycle, messages, positions, checked)
 
     def __getattr__(self, name: str) -> Any:
         return getattr(self.observer, name)

@@ -201,20 +201,24 @@ class AudioChannel:
         half time)."""
         self._cap[:] = self.params.hear_max
 
-    def say(self, cycle: int, messages: Sequence[Sequence[str | None]], positions: np.ndarray) -> None:
+    def say(self, cycle: int, messages: Sequence[Sequence[str | None]], positions: np.ndarray,
+            checked: bool = False) -> None:
         """Record what the players say at ``cycle``: ``messages[k][i]`` is player ``i`` of team
         ``k``'s message or None; ``positions`` (players, 2) m at ``cycle``. A bad message is a
-        :class:`TeamError` naming its team and player."""
+        :class:`TeamError` naming its team and player. ``checked``: the caller has checked the
+        messages (:func:`check_team_messages`) and that the positions are finite (a match does,
+        as it reads the commands), so that is not done twice."""
         if self._said_cycle is not None and cycle <= self._said_cycle:
             raise ValueError(f"AudioChannel.say: cycle {cycle} is not after the last say cycle {self._said_cycle}")
         if len(messages) != 2:
             raise ValueError(f"AudioChannel.say: messages must hold one sequence per team (2), got {len(messages)}")
         flat: list[str | None] = []
         for k, (team_msgs, size) in enumerate(zip(messages, self.team_sizes)):
-            check_team_messages(team_msgs, size, self.params, self.team_names[k], self._allowed)
+            if not checked:
+                check_team_messages(team_msgs, size, self.params, self.team_names[k], self._allowed)
             flat.extend(team_msgs)
         pos = np.asarray(positions, dtype=np.float64)
-        if pos.shape != (self.players, 2) or not np.all(np.isfinite(pos)):
+        if pos.shape != (self.players, 2) or not (checked or np.all(np.isfinite(pos))):
             raise ValueError(f"AudioChannel.say: positions must be finite, shape ({self.players}, 2); got {pos.shape}")
         self._messages, self._said_cycle = tuple(flat), int(cycle)
         self._spoke = flat.count(None) < len(flat)
@@ -233,6 +237,18 @@ class AudioChannel:
         (-1: none). With ``positions`` (players, 2) m and ``body_dirs`` (players,) degrees at
         ``cycle``, :attr:`Heard.direction` says where each heard speaker is. Draws one uniform per
         (listener, speaker) from ``rng``."""
+        arrived, heard, messages = self.deliver(cycle, rng, attention)
+        direction = None
+        if positions is not None or body_dirs is not None:
+            direction = self._directions(heard, positions, body_dirs)
+        return Heard(cycle=int(cycle), messages=messages, arrived=arrived, heard=heard, team=self.team,
+                     direction=direction)
+
+    def deliver(self, cycle: int, rng: np.random.Generator,
+                attention: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, tuple[str | None, ...]]:
+        """:meth:`hear`'s delivery without its :class:`Heard` record (a match's every-cycle
+        path): the ``arrived`` and ``heard`` (listeners, speakers) bool arrays and the messages
+        said at ``cycle - 1``, one per player (None: said nothing)."""
         p = self.params
         n = self.players
         cap = self._cap
@@ -255,11 +271,7 @@ class AudioChannel:
         heard = np.zeros((n, n), dtype=bool)
         if current and self._spoke:
             choose_heard(arrived, key, self.team, cap, p.hear_decay, heard)
-        direction = None
-        if positions is not None or body_dirs is not None:
-            direction = self._directions(heard, positions, body_dirs)
-        return Heard(cycle=int(cycle), messages=messages, arrived=arrived, heard=heard, team=self.team,
-                     direction=direction)
+        return arrived, heard, messages
 
     def _directions(self, heard: np.ndarray, positions: np.ndarray | None,
                     body_dirs: np.ndarray | None) -> np.ndarray:

@@ -35,7 +35,7 @@ from soccer_sim.perception.config import ObservationConfig
 from soccer_sim.perception.kernels import params_array, perceive
 from soccer_sim.perception.localise import DEFAULT_FLAGS
 from soccer_sim.perception.params import see_cycles
-from soccer_sim.perception.views import PlayerViews
+from soccer_sim.perception.views import HeardLog, PlayerViews
 from soccer_sim.state import WorldState
 
 
@@ -64,7 +64,6 @@ class Observer:
         self.channel = AudioChannel(sizes, team_names, config.audio)
         self._team = np.repeat(np.array([0, 1], dtype=np.int64), sizes)
         self._first = np.where(self._team == 0, 0, sizes[0]).astype(np.int64)
-        self._team_list, self._first_list = self._team.tolist(), self._first.tolist()
         self._sign = np.ones(total)
         self._belief = np.zeros((total, 2))
         self._started = False
@@ -84,7 +83,8 @@ class Observer:
         self.seen_rows = np.empty((total, k), dtype=np.int64)
         """(P, K) the player row of each player seen in the last cycle's lists (-1 padding): the
         truth behind the views, for tests and statistics."""
-        rows = (slice(0, sizes[0]), slice(sizes[0], total))
+        rows = self._rows = (slice(0, sizes[0]), slice(sizes[0], total))
+        """Each team's rows (home, away)."""
         self.views = tuple(PlayerViews(player_types=np.asarray(type_ids[r]).copy(),
                                        **{name: array[r] for name, array in out.items()}) for r in rows)
         """(home, away) views; :meth:`observe` refreshes them."""
@@ -121,33 +121,20 @@ class Observer:
         holds[:] = False
         if state.ball_holder >= 0:
             holds[state.ball_holder] = True
-        heard = self.channel.hear(state.cycle, self._rng)
-        mates, opponents = self._heard_by_player(heard.heard, heard.messages)
+        _, heard, messages = self.channel.deliver(state.cycle, self._rng)
         score = state.score.tolist()
         for team, view in enumerate(self.views):
-            r = slice(0, home_n) if team == 0 else slice(home_n, self._total)
+            r, other = self._rows[team], self._rows[1 - team]
             view.cycle, view.half, view.play_mode = state.cycle, state.half, state.play_mode
             view.mode_ours = state.mode_team == team
             view.score = (score[team], score[1 - team])
-            view.heard_mates, view.heard_opponents = mates[r], opponents[r]
+            view.heard_mates = HeardLog(heard[r, r], messages[r], named=True)
+            view.heard_opponents = HeardLog(heard[r, other], messages[other], named=False)
         return self.views
 
-    def say(self, cycle: int, messages: Sequence[Sequence[str | None]], positions: np.ndarray) -> None:
+    def say(self, cycle: int, messages: Sequence[Sequence[str | None]], positions: np.ndarray,
+            checked: bool = False) -> None:
         """Record the messages both teams say at ``cycle`` (``messages[team][i]``, str or None),
-        with the players' ``positions`` (P, 2) m at ``cycle``; a bad one is a ``TeamError``."""
-        self.channel.say(cycle, messages, positions)
-
-    def _heard_by_player(self, heard: np.ndarray, messages: tuple[str | None, ...]) -> tuple[tuple, tuple]:
-        """Per player, the (team-mate index, message) pairs and the opponents' messages it hears."""
-        total = self._total
-        if not heard.any():
-            return ((),) * total, ((),) * total
-        mates: list[tuple] = [()] * total
-        opponents: list[tuple] = [()] * total
-        team, first = self._team_list, self._first_list
-        for listener, speaker in zip(*(a.tolist() for a in np.nonzero(heard))):  # (one or two a listener by default)
-            if team[speaker] == team[listener]:
-                mates[listener] += ((speaker - first[speaker], messages[speaker]),)
-            else:
-                opponents[listener] += (messages[speaker],)
-        return tuple(mates), tuple(opponents)
+        with the players' ``positions`` (P, 2) m at ``cycle``; a bad one is a ``TeamError``
+        (``checked``: :meth:`AudioChannel.say`'s, the caller checked them)."""
+        self.channel.say(cycle, messages, positions, checked)

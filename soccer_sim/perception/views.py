@@ -26,6 +26,7 @@ they are. The arrays are overwritten every cycle: a team copies what it keeps.
 
 from __future__ import annotations
 
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -84,6 +85,60 @@ class PlayerObservation:
     """(team-mate index, message) pairs heard this cycle (said last cycle)."""
     heard_opponents: tuple[str, ...]
     """Opponents' messages heard this cycle (the speaker is not named)."""
+
+
+class HeardLog(Sequence):
+    """What each of a team's players heard from one side in one cycle, as
+    :attr:`PlayerViews.heard_mates` (``named``: per listener its (team-mate index, message)
+    pairs) or :attr:`PlayerViews.heard_opponents` (per listener the messages, speakers not
+    named): a sequence of one tuple per listener, made on first use from the delivery's
+    arrays (a team that decodes whole batches, :meth:`pairs`, never makes them).
+
+    ``heard`` (listeners, speakers) bool: who heard whom, listeners the team's players in
+    order, speakers the side's players in order; ``messages``: what each speaker said. Both
+    are the match's and never change after the cycle."""
+
+    __slots__ = ("_heard", "_messages", "_named", "_rows")
+
+    def __init__(self, heard: np.ndarray, messages: Sequence[str | None], named: bool) -> None:
+        self._heard, self._messages, self._named = heard, messages, named
+        self._rows: tuple[tuple, ...] | None = None
+
+    def pairs(self) -> tuple[np.ndarray, np.ndarray, list[str]]:
+        """Every message heard, one row each in listener then speaker order: (p,) listeners,
+        (p,) speakers (the speaker's index within its side) and the p messages."""
+        listeners, speakers = np.nonzero(self._heard)
+        messages = self._messages
+        return listeners, speakers, [messages[s] for s in speakers.tolist()]
+
+    def _made(self) -> tuple[tuple, ...]:
+        """The per-listener tuples, made once."""
+        if self._rows is None:
+            rows: list[tuple] = [()] * len(self._heard)
+            listeners, speakers, texts = self.pairs()
+            for listener, speaker, text in zip(listeners.tolist(), speakers.tolist(), texts):
+                rows[listener] += ((speaker, text),) if self._named else (text,)
+            self._rows = tuple(rows)
+        return self._rows
+
+    def __len__(self) -> int:
+        return len(self._heard)
+
+    def __getitem__(self, index):  # type: ignore[override]
+        return self._made()[index]
+
+    def __iter__(self) -> Iterator[tuple]:
+        return iter(self._made())
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, (HeardLog, tuple)):
+            return self._made() == tuple(other)
+        return NotImplemented
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        return f"HeardLog({self._made()!r})"
 
 
 @dataclass(eq=False)
@@ -150,10 +205,12 @@ class PlayerViews:
     """True when the current set play (or the goalkeeper's hold) belongs to this team."""
     score: tuple[int, int] = (0, 0)
     """(ours, theirs)."""
-    heard_mates: tuple[tuple[tuple[int, str], ...], ...] = ()
-    """Per player, the (team-mate index, message) pairs heard this cycle (said last cycle)."""
-    heard_opponents: tuple[tuple[str, ...], ...] = ()
-    """Per player, the opponents' messages heard this cycle (speakers not named)."""
+    heard_mates: Sequence[tuple[tuple[int, str], ...]] = ()
+    """Per player, the (team-mate index, message) pairs heard this cycle (said last cycle): a
+    tuple per player (a match gives a :class:`HeardLog`, which makes them on first use)."""
+    heard_opponents: Sequence[tuple[str, ...]] = ()
+    """Per player, the opponents' messages heard this cycle (speakers not named; a
+    :class:`HeardLog` too)."""
 
     def __post_init__(self) -> None:
         n = len(self.stamina)
