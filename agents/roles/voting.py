@@ -175,3 +175,15 @@ def role_conflicts(roles: np.ndarray, n_roles: int) -> tuple[int, int]:  # pragm
         elif c == 0:
             empty += 1
     return shared, empty
+
+
+@njit(cache=True, nogil=True)
+def believed_conflicts(followed: np.ndarray, outfield: np.ndarray) -> tuple[int, int]:  # pragma: no cover
+    """:func:`role_conflicts` of the roles the ``outfield`` players (k,) believe they hold:
+    player ``outfield[j]``'s own entry ``followed[outfield[j], j]`` of the assignment it
+    follows (``followed`` (n, k))."""
+    k = outfield.shape[0]
+    roles = np.empty(k, dtype=np.int64)
+    for j in range(k):
+        roles[j] = followed[outfield[j], j]
+    return role_conflicts(roles, k)

@@ -40,7 +40,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from agents.roles.voting import VoteBook, role_conflicts
+from agents.roles.voting import VoteBook, believed_conflicts
 from agents.teams.own_view import PLACED, OwnViewPositioning
 from agents.teams.own_view_kernels import whole_brain_rows
 from agents.teams.positions import current_labels
@@ -88,8 +88,6 @@ class DecentralisedPlay:
         self.beliefs.mate_pos[:] = spots[:n][None, :, :]          # where the team lines up
         self.beliefs.opp_pos[:] = -spots[:m][None, :, :] if m <= len(spots) else 0.0
         k = len(self.outfield)
-        self._outfield_ranks = np.arange(k)
-        """Each outfield player's index among the outfield (its column of an assignment)."""
         self.votes = VoteBook(n, VOTE_HORIZON, k) if k else None
         self._vote_arrays = (self.votes.votes, self.votes.vote_cycle) if self.votes is not None else None
         """The vote book's arrays, which the world models' update fills (None: no outfield roles)."""
@@ -154,10 +152,12 @@ class DecentralisedPlay:
             positioned = views.present & ~on_ball
             move[positioned] = placed[positioned]
         rechoose = views.mode_ours and views.play_mode in _RECHOSEN
-        for i in np.flatnonzero(on_ball).tolist():
+        deciders = np.flatnonzero(on_ball).tolist()
+        for i in deciders:
             move = self._brain_acts(i, views, rechoose, move)
         command.move = move
-        self.beliefs.kicked(command.kick, self._kickable)
+        if deciders:  # (only a whole brain kicks)
+            self.beliefs.kicked(command.kick, self._kickable)
         command.say = self._messages(views)
         self._count_conflicts(views)
         return command
@@ -255,9 +255,7 @@ class DecentralisedPlay:
         nobody holds)."""
         if views.play_mode != PlayMode.PLAY_ON or not len(self.outfield):
             return
-        followed = self.positioning.followed
-        roles = followed[self.outfield, self._outfield_ranks]
-        shared, empty = role_conflicts(roles, len(self.outfield))
+        shared, empty = believed_conflicts(self.positioning.followed, self.outfield)
         self._play_on_cycles += 1
         self._conflict_cycles += shared > 0
         self._unfilled_cycles += empty > 0

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from agents.messages import WorldMessage, encode
-from agents.roles.voting import VoteBook, role_conflicts
+from agents.roles.voting import VoteBook, believed_conflicts, role_conflicts
 
 IDENTITY = np.arange(4)
 SWAP = np.array([1, 0, 2, 3])
@@ -57,6 +57,21 @@ def test_role_conflicts_count_shared_and_empty_roles():
     assert role_conflicts(np.array([0, 1, 2, 3]), 4) == (0, 0)
     assert role_conflicts(np.array([0, 0, 2, 2]), 4) == (2, 2)
     assert role_conflicts(np.array([1, 1, 1, 3]), 4) == (1, 2)
+
+
+def test_believed_conflicts_read_each_players_own_entry():
+    rng = np.random.default_rng(3)
+    outfield = np.array([1, 2, 4, 5])  # (row 0 the goalkeeper, row 3 absent from the outfield)
+    for _ in range(50):
+        followed = np.array([rng.permutation(4) for _ in range(6)])
+        followed[rng.integers(0, 6)] = rng.integers(0, 4, 4)  # one player's odd belief
+        own = followed[outfield, np.arange(4)]
+        assert believed_conflicts(followed, outfield) == role_conflicts(own, 4)
+    same = np.tile(np.array([2, 0, 3, 1]), (6, 1))
+    assert believed_conflicts(same, outfield) == (0, 0)
+    clash = same.copy()
+    clash[2, 1] = 2  # player 2 (column 1) believes it holds player 1's role 2
+    assert believed_conflicts(clash, outfield) == (1, 1)
 
 
 def test_one_player_follows_as_the_team_call_says_and_votes_may_cover_fewer_roles():
