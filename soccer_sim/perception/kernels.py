@@ -314,6 +314,22 @@ def perceive(pos: np.ndarray, vel: np.ndarray, ball: np.ndarray, present: np.nda
 
 
 @njit(cache=True, nogil=True)
+def senses_into(stamina: np.ndarray, effort: np.ndarray, capacity: np.ndarray, frozen: np.ndarray,
+                present: np.ndarray, holder: int, stamina_out: np.ndarray, effort_out: np.ndarray,
+                capacity_out: np.ndarray, frozen_out: np.ndarray, present_out: np.ndarray,
+                holds_out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """The views' every-cycle senses (sense_body's stamina, effort, capacity and frozen cycles,
+    who is on the pitch, who holds the ball: ``holder`` a player row or -1) copied in one call."""
+    for p in range(stamina.shape[0]):
+        stamina_out[p] = stamina[p]
+        effort_out[p] = effort[p]
+        capacity_out[p] = capacity[p]
+        frozen_out[p] = frozen[p]
+        present_out[p] = present[p]
+        holds_out[p] = p == holder
+
+
+@njit(cache=True, nogil=True)
 def arrivals(pos: np.ndarray, spoke: np.ndarray, cut: float, out: np.ndarray) -> None:  # pragma: no cover - compiled
     """``out[l, s]``: speaker ``s`` said something (``spoke``) within ``cut`` m of listener
     ``l`` (never the speaker itself); ``pos`` (players, 2) m."""

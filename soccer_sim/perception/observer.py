@@ -32,7 +32,7 @@ import numpy as np
 
 from soccer_sim.perception.audio import AudioChannel
 from soccer_sim.perception.config import ObservationConfig
-from soccer_sim.perception.kernels import params_array, perceive
+from soccer_sim.perception.kernels import params_array, perceive, senses_into
 from soccer_sim.perception.localise import DEFAULT_FLAGS
 from soccer_sim.perception.params import see_cycles
 from soccer_sim.perception.views import HeardLog, PlayerViews
@@ -112,15 +112,8 @@ class Observer:
                  out["seen_distance"], out["seen_direction"], out["seen_position"], out["seen_side"],
                  out["seen_number"], self.seen_rows)
         self._started = True
-        out["stamina"][:] = state.stamina
-        out["effort"][:] = state.effort
-        out["capacity"][:] = state.capacity
-        out["frozen"][:] = state.frozen
-        out["present"][:] = present
-        holds = out["holds_ball"]
-        holds[:] = False
-        if state.ball_holder >= 0:
-            holds[state.ball_holder] = True
+        senses_into(state.stamina, state.effort, state.capacity, state.frozen, present, int(state.ball_holder),
+                    out["stamina"], out["effort"], out["capacity"], out["frozen"], out["present"], out["holds_ball"])
         _, heard, messages = self.channel.deliver(state.cycle, self._rng)
         score = state.score.tolist()
         for team, view in enumerate(self.views):
