@@ -73,6 +73,10 @@ ALPHABET_BYTES = np.frombuffer(ALPHABET.encode("ascii"), dtype=np.uint8)
 """The alphabet's characters as bytes, indexed by digit."""
 _DIGIT_OF_BYTE = np.full(256, -1, dtype=np.int64)
 _DIGIT_OF_BYTE[ALPHABET_BYTES] = np.arange(len(ALPHABET))
+DIGIT_OF_BYTE = _DIGIT_OF_BYTE
+"""(256,) each character byte's alphabet digit, -1 for a character outside the alphabet."""
+_SILENT = " " * MESSAGE_LENGTH
+"""Characters standing for a message not said (a space is outside the alphabet)."""
 
 
 class MessageError(AgentsError, ValueError):
@@ -270,6 +274,19 @@ def text_digits(texts: Sequence[str]) -> np.ndarray:
         raw = np.frombuffer("".join(texts[p] for p in fine).encode("ascii"), dtype=np.uint8)
         digits[fine] = _DIGIT_OF_BYTE[raw].reshape(len(fine), MESSAGE_LENGTH)
     return digits
+
+
+def said_bytes(messages: Sequence[str | None]) -> np.ndarray | None:
+    """(n, MESSAGE_LENGTH) uint8 the characters of each of ``messages`` (spaces for None, which
+    no digit reads as a message), for a compiled decoder of whole deliveries; None when one is
+    not MESSAGE_LENGTH ASCII characters (decode such texts with :func:`text_digits`)."""
+    parts = [_SILENT if m is None else m for m in messages]
+    if not parts:
+        return np.empty((0, MESSAGE_LENGTH), dtype=np.uint8)
+    joined = "".join(parts)
+    if len(joined) != MESSAGE_LENGTH * len(parts) or not joined.isascii() or max(map(len, parts)) > MESSAGE_LENGTH:
+        return None
+    return np.frombuffer(joined.encode("ascii"), dtype=np.uint8).reshape(len(parts), MESSAGE_LENGTH)
 
 
 class HeardBatch(NamedTuple):

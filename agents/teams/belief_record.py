@@ -77,3 +77,33 @@ def hear_and_believe(r: BeliefRecord, ball_seen, ball_at, ball_distance, saw, co
     if p > 0 and votes.shape[2] > 0:
         _store_votes(listener, speaker, kind, vote, vote_size, vote_cycle_sent, codes[1], cycle, decoding[6], votes,
                      vote_cycle)
+
+
+@njit(cache=True, nogil=True)
+def hear_block_and_believe(r: BeliefRecord, ball_seen, ball_at, ball_distance, saw, count, at, side, number, distance,
+                           position, heard, said, digit_of_byte, decoding: tuple, codes: tuple, votes, vote_cycle,
+                           cycle: int) -> None:  # pragma: no cover - compiled
+    """:func:`hear_and_believe` with the messages as the delivery has them: ``heard`` (n, n)
+    bool, listener ``l`` heard team-mate ``s``; ``said`` (n, 10) uint8 the characters each
+    team-mate said (any row for one that said nothing: it is never heard); ``digit_of_byte``
+    (256,) each character's alphabet digit (-1 outside it). The messages go in listener then
+    speaker order, as :meth:`~soccer_sim.perception.views.HeardLog.pairs` lists them."""
+    n = heard.shape[0]
+    p = 0
+    for listener in range(n):
+        for speaker in range(heard.shape[1]):
+            p += heard[listener, speaker]
+    listeners = np.empty(p, dtype=np.int64)
+    speakers = np.empty(p, dtype=np.int64)
+    digits = np.empty((p, said.shape[1]), dtype=np.int64)
+    k = 0
+    for listener in range(n):
+        for speaker in range(heard.shape[1]):
+            if heard[listener, speaker]:
+                listeners[k] = listener
+                speakers[k] = speaker
+                for d in range(said.shape[1]):
+                    digits[k, d] = digit_of_byte[said[speaker, d]]
+                k += 1
+    hear_and_believe(r, ball_seen, ball_at, ball_distance, saw, count, at, side, number, distance, position, listeners,
+                     speakers, digits, decoding, codes, votes, vote_cycle, cycle)

@@ -28,11 +28,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from agents.messages import CODES, DECODING, heard_pairs, text_digits, world_texts
+from agents.messages import CODES, DECODING, DIGIT_OF_BYTE, heard_pairs, said_bytes, text_digits, world_texts
 from agents.teams.belief_kernels import AGE_NEVER
-from agents.teams.belief_record import hear_and_believe, new_record
+from agents.teams.belief_record import hear_and_believe, hear_block_and_believe, new_record
 from soccer_sim.config import MatchConfig
-from soccer_sim.perception.views import PlayerViews
+from soccer_sim.perception.views import HeardLog, PlayerViews
 
 
 @dataclass(frozen=True)
@@ -95,12 +95,23 @@ class TeamBeliefs:
         messages it heard (module docstring). With ``votes`` (a
         :class:`~agents.roles.voting.VoteBook`'s ``votes`` and ``vote_cycle``) the votes among
         those messages are stored there too: one compiled call
-        (:func:`~agents.teams.belief_record.hear_and_believe`)."""
-        listeners, speakers, texts = heard_pairs(views.heard_mates)
+        (:func:`~agents.teams.belief_record.hear_and_believe`; for a match's
+        :class:`~soccer_sim.perception.views.HeardLog` of messages all of our length,
+        :func:`~agents.teams.belief_record.hear_block_and_believe` on the delivery itself)."""
+        log = views.heard_mates
+        votes_of = votes if votes is not None else self._no_votes
+        said = said_bytes(log.messages) if isinstance(log, HeardLog) else None
+        if said is not None:  # (a match's delivery, decoded as it stands)
+            hear_block_and_believe(self.record, views.ball_seen, views.ball, views.ball_distance, views.saw,
+                                   views.seen_count, views.seen_position, views.seen_side, views.seen_number,
+                                   views.seen_distance, views.position, log.heard, said, DIGIT_OF_BYTE, DECODING,
+                                   CODES, *votes_of, views.cycle)
+            return
+        listeners, speakers, texts = heard_pairs(log)
         hear_and_believe(self.record, views.ball_seen, views.ball, views.ball_distance, views.saw, views.seen_count,
                          views.seen_position, views.seen_side, views.seen_number, views.seen_distance,
                          views.position, listeners, speakers, text_digits(texts), DECODING, CODES,
-                         *(votes if votes is not None else self._no_votes), views.cycle)
+                         *votes_of, views.cycle)
 
     def kicked(self, kick: np.ndarray, kickable: float) -> None:
         """Each player's own kicks of this cycle (``kick`` (n, 2) m/cycle, team frame; zero rows

@@ -104,6 +104,16 @@ class HeardLog(Sequence):
         self._heard, self._messages, self._named = heard, messages, named
         self._rows: tuple[tuple, ...] | None = None
 
+    @property
+    def heard(self) -> np.ndarray:
+        """(listeners, speakers) bool: who heard whom (read only: the match's)."""
+        return self._heard
+
+    @property
+    def messages(self) -> Sequence[str | None]:
+        """What each speaker said (None: nothing)."""
+        return self._messages
+
     def pairs(self) -> tuple[np.ndarray, np.ndarray, list[str]]:
         """Every message heard, one row each in listener then speaker order: (p,) listeners,
         (p,) speakers (the speaker's index within its side) and the p messages."""

@@ -157,3 +157,52 @@ def test_in_a_match_beliefs_follow_the_truth_and_messages_keep_team_mates_known(
     ball_talk, mates_talk = _errors(True)
     assert ball_quiet < 1.0 and ball_talk < 1.0
     assert mates_talk < 5.0 < mates_quiet  # without messages players behind stay unknown
+
+
+def test_a_matchs_delivery_is_believed_as_the_same_messages_given_as_tuples():
+    """The compiled path for a match's HeardLog and the general one for plain tuples (and for
+    texts that are not all ours) leave every world model and vote bit for bit the same."""
+    from dataclasses import replace
+
+    from agents.messages import said_bytes
+    from agents.roles.voting import VoteBook
+    from soccer_sim.perception.views import HeardLog
+    from soccer_sim.registry import resolve_team
+
+    class Twin:
+        """A built-in decentralised team whose views also feed three more world models: one
+        from the delivery, one from the same messages as tuples, one with a stranger's text."""
+
+        observation_modes = ("partial",)
+
+        def __init__(self) -> None:
+            self.inner = resolve_team("mmdr")[0]
+            self.compared = self.heard = 0
+
+        def reset(self, side_info, config, rng):
+            self.inner.reset(side_info, config, rng)
+            n, m = side_info.players_per_team, side_info.opponents
+            self.models = [TeamBeliefs(n, m, config) for _ in range(3)]
+            self.books = [VoteBook(n, 20, n - 1) for _ in range(3)]
+
+        def act(self, views):
+            assert isinstance(views.heard_mates, HeardLog)
+            assert said_bytes(views.heard_mates.messages) is not None  # (the compiled path is the one taken)
+            plain = replace(views, heard_mates=tuple(views.heard_mates))
+            odd = tuple(tuple((s, "not ours!") if s == 1 else (s, t) for s, t in row) for row in views.heard_mates)
+            for model, book, given in zip(self.models, self.books, (views, plain, replace(views, heard_mates=odd))):
+                model.update(given, (book.votes, book.vote_cycle))
+            first, second, third = self.models
+            for name in ("ball", "ball_vel", "ball_age", "mate_pos", "mate_age", "opp_pos", "opp_age"):
+                assert np.array_equal(getattr(first, name), getattr(second, name), equal_nan=True), name
+            assert np.array_equal(self.books[0].votes, self.books[1].votes)
+            assert np.array_equal(self.books[0].vote_cycle, self.books[1].vote_cycle)
+            self.heard += sum(len(row) for row in views.heard_mates)
+            self.compared += 1
+            return self.inner.act(views)
+
+    twin = Twin()
+    Match(twin, "static", seed=5, config=MatchConfig(observation=ObservationConfig("partial"), max_cycles=200)).run()
+    assert twin.compared == 200 and twin.heard > 1000
+    assert (twin.books[0].vote_cycle >= 0).any()  # votes were heard and stored
+    assert not np.array_equal(twin.models[0].mate_age, twin.models[2].mate_age)  # the stranger's text was ignored
