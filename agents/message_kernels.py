@@ -148,12 +148,9 @@ def world_digits_rows(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarr
                       max_age: int, nx: int, ny: int, nv: int, nage: int) -> None:  # pragma: no cover - compiled
     """Rows of world messages' digits into ``out`` (n, LENGTH): ball (n, 2), its velocity
     (n, 2), ages (n,) and senders (n, 2), each clipped into its range."""
+    grid = (x_range, y_range, v_range, per_m, per_v, max_age, nx, ny, nv, nage)
     for i in range(ball.shape[0]):
-        number = world_number(grid_index(ball[i, 0], x_range, per_m), grid_index(ball[i, 1], y_range, per_m),
-                              grid_index(ball_vel[i, 0], v_range, per_v), grid_index(ball_vel[i, 1], v_range, per_v),
-                              min(max(ball_age[i], 0), max_age), grid_index(sender[i, 0], x_range, per_m),
-                              grid_index(sender[i, 1], y_range, per_m), nx, ny, nv, nage)
-        number_digits(number, out[i])
+        number_digits(world_message_number(ball[i], ball_vel[i], ball_age[i], sender[i], grid), out[i])
 
 
 @njit(cache=True, nogil=True)
@@ -162,3 +159,25 @@ def vote_digits_rows(assignments: np.ndarray, cycle: int, modulus: int,
     """Rows of votes' digits into ``out`` (n, LENGTH), one per row of ``assignments`` (n, k)."""
     for i in range(assignments.shape[0]):
         number_digits(vote_number(assignments[i], cycle, modulus), out[i])
+
+
+@njit(cache=True, nogil=True)
+def number_chars(number: int, alphabet: np.ndarray, out: np.ndarray) -> None:  # pragma: no cover - compiled
+    """``number`` as its LENGTH message characters into ``out`` (uint8; ``alphabet`` each
+    digit's character), most significant first: :func:`number_digits` through the alphabet."""
+    for d in range(LENGTH - 1, -1, -1):
+        out[d] = alphabet[number % BASE]
+        number //= BASE
+
+
+@njit(cache=True, nogil=True)
+def world_message_number(ball: np.ndarray, ball_vel: np.ndarray, ball_age: int, sender: np.ndarray,
+                         grid: tuple) -> int:  # pragma: no cover - compiled
+    """The number of one world message of ball (2,), velocity (2,), age and sender (2,), each
+    clipped into its range (``grid``: :data:`agents.messages.WORLD_GRID`), as
+    :func:`world_digits_rows` makes it."""
+    x_range, y_range, v_range, per_m, per_v, max_age, nx, ny, nv, nage = grid
+    return world_number(grid_index(ball[0], x_range, per_m), grid_index(ball[1], y_range, per_m),
+                        grid_index(ball_vel[0], v_range, per_v), grid_index(ball_vel[1], v_range, per_v),
+                        min(max(ball_age, 0), max_age), grid_index(sender[0], x_range, per_m),
+                        grid_index(sender[1], y_range, per_m), nx, ny, nv, nage)

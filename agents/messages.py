@@ -341,9 +341,19 @@ def vote_texts(assignments: np.ndarray, cycle: int, present: np.ndarray) -> list
 
 def _texts(digits: np.ndarray, present: np.ndarray) -> list[str | None]:
     """Rows of digits as message texts (None where not ``present``)."""
-    raw = ALPHABET_BYTES[digits].tobytes().decode("ascii")
+    return texts_of(ALPHABET_BYTES[digits], present)
+
+
+def texts_of(chars: np.ndarray, present: np.ndarray) -> list[str | None]:
+    """Rows of message characters (n, MESSAGE_LENGTH) uint8 as texts (None where not ``present``)."""
+    raw = chars.tobytes().decode("ascii")
     return [raw[i * MESSAGE_LENGTH:(i + 1) * MESSAGE_LENGTH] if there else None
             for i, there in enumerate(present.tolist())]
+
+
+WORLD_GRID = (X_RANGE, Y_RANGE, V_RANGE, _PER_M, _PER_V, MAX_AGE, _NX, _NY, _NV, _NAGE)
+"""A world message's ranges, steps and grid sizes, as compiled encoders take them
+(:func:`~agents.message_kernels.world_message_number`)."""
 
 
 assert len(ALPHABET) == message_kernels.BASE and MESSAGE_LENGTH == message_kernels.LENGTH

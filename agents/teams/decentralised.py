@@ -24,6 +24,9 @@ of the same assigner and style, with its own memory and random generator). Per c
    cycles their proposal as a vote (so each kind reaches every team-mate about every other
    cycle, as SCRAM's agents share world models and votes).
 
+The positioned players' dashes, the messages and the count of believed role conflicts are made
+in one compiled call after the whole brains acted (:meth:`OwnViewPositioning.finish`).
+
 Nothing player ``i`` does in a cycle depends on another player's observation of that cycle;
 team-mates' information reaches it only through the messages it hears the next cycle.
 
@@ -40,7 +43,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from agents.roles.voting import VoteBook, believed_conflicts
+from agents.messages import MESSAGE_LENGTH, texts_of
+from agents.roles.voting import VoteBook
 from agents.teams.own_view import PLACED, OwnViewPositioning
 from agents.teams.own_view_kernels import whole_brain_rows
 from agents.teams.positions import current_labels
@@ -92,6 +96,8 @@ class DecentralisedPlay:
         self._vote_arrays = (self.votes.votes, self.votes.vote_cycle) if self.votes is not None else None
         """The vote book's arrays, which the world models' update fills (None: no outfield roles)."""
         self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
+        self._chars = np.zeros((n, MESSAGE_LENGTH), dtype=np.uint8)
+        """What each player says this cycle, as message characters (filled by the positioning's finish)."""
         self._kickable = first.model.kickable_distance + 0.2 if first is not None else 0.0
         self._views = [_empty_view(n, m, side_info) for _ in range(n)]
         self.positioning = OwnViewPositioning(self.brains, config, self._views[0]) if n else None
@@ -145,7 +151,7 @@ class DecentralisedPlay:
             command.move, command.say = None, []
             return command
         on_ball = self._on_ball(views)
-        placed = self.positioning.step(views, self.beliefs, views.present & ~on_ball, self.votes, command.dash)
+        placed = self.positioning.step(views, self.beliefs, views.present & ~on_ball, self.votes)
         move = None
         if placed is not None:  # players without a placement of their own stay where they believe they are
             move = views.position.copy()
@@ -158,8 +164,10 @@ class DecentralisedPlay:
         command.move = move
         if deciders:  # (only a whole brain kicks)
             self.beliefs.kicked(command.kick, self._kickable)
-        command.say = self._messages(views)
-        self._count_conflicts(views)
+        say_world = views.cycle % 2 == 0 or self.votes is None
+        shared, empty = self.positioning.finish(views, self.beliefs, self.votes, command.dash, say_world, self._chars)
+        command.say = texts_of(self._chars, views.present)
+        self._count_conflicts(views, shared, empty)
         return command
 
     def _on_ball(self, views: PlayerViews) -> np.ndarray:
@@ -244,18 +252,11 @@ class DecentralisedPlay:
             view.ball_holder = NO_PLAYER
         return view
 
-    def _messages(self, views: PlayerViews) -> list[str | None]:
-        """What each player says: its world message on even cycles, its vote on odd ones."""
-        if views.cycle % 2 == 0 or self.votes is None:
-            return self.beliefs.world_messages(views.present)
-        return VoteBook.messages(self.positioning.proposals, views.cycle, views.present)
-
-    def _count_conflicts(self, views: PlayerViews) -> None:
-        """Count play-on cycles whose believed roles clash (two players on one role, or a role
-        nobody holds)."""
+    def _count_conflicts(self, views: PlayerViews, shared: int, empty: int) -> None:
+        """Count the play-on cycles whose believed roles clash: ``shared`` roles two players both
+        believe they hold, ``empty`` roles nobody believes they hold (:meth:`OwnViewPositioning.finish`)."""
         if views.play_mode != PlayMode.PLAY_ON or not len(self.outfield):
             return
-        shared, empty = believed_conflicts(self.positioning.followed, self.outfield)
         self._play_on_cycles += 1
         self._conflict_cycles += shared > 0
         self._unfilled_cycles += empty > 0

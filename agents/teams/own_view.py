@@ -49,7 +49,8 @@ from agents.skills.movement import DEFAULT_PACING
 from agents.skills.pacing import pacing_constants
 from agents.teams import mechanism
 from agents.teams.on_ball import ball_reach
-from agents.teams.own_view_state import (OTHER_TABLES, PositioningState, before_roles_of, dash_and_gaps_of,
+from agents.messages import ALPHABET_BYTES, CYCLE_MODULUS, WORLD_GRID
+from agents.teams.own_view_state import (OTHER_TABLES, PositioningState, before_roles_of, dash_and_say_of,
                                          follow_and_goals_of, state_of)
 from agents.teams.positions import nearest_roles
 from agents.teams.reporting import RoleFigures
@@ -147,6 +148,8 @@ class OwnViewPositioning:
         self._assigned_mode = np.full(n, -1, dtype=np.int64)
         self._rows, self._outfield_rows, self._due_rows = (np.zeros(n, dtype=np.int64) for _ in range(3))
         """This cycle's deciding rows, their outfield ones and who of those assigns (filled by before_roles)."""
+        self._counts = (0, 0)
+        """How many of those rows and outfield rows there are (:meth:`step` for :meth:`finish`)."""
         sp, style, third = shape.params, self.style, model.half_length / 3.0
         self._record = dict(
             # who assigns
@@ -190,12 +193,13 @@ class OwnViewPositioning:
         """The team's role figures: each player's distance to the target of the role it follows."""
 
     # ------------------------------------------------------------------ one cycle
-    def step(self, views: PlayerViews, beliefs: TeamBeliefs, deciding: np.ndarray, votes: VoteBook | None,
-             dash: np.ndarray) -> np.ndarray | None:
-        """Position the ``deciding`` players (n,) bool for this cycle: their dashes into
-        ``dash`` (n, 2); returns their placements (n, 2) in a play mode that places players,
-        else None. ``votes``: the team's :class:`~agents.roles.voting.VoteBook` (None: no
-        outfield roles)."""
+    def step(self, views: PlayerViews, beliefs: TeamBeliefs, deciding: np.ndarray,
+             votes: VoteBook | None) -> np.ndarray | None:
+        """Position the ``deciding`` players (n,) bool for this cycle up to their goals (their
+        dashes follow in :meth:`finish`); returns their placements (n, 2) in a play mode that
+        places players, else None. ``votes``: the team's :class:`~agents.roles.voting.VoteBook`
+        (None: no outfield roles)."""
+        self._counts = (0, 0)
         if not deciding.any():
             return None
         mode = views.play_mode
@@ -230,12 +234,26 @@ class OwnViewPositioning:
             players = np.ascontiguousarray(beliefs.mate_pos[i][self.outfield])
             role_targets = np.ascontiguousarray(self.targets[i][self.match_roles[i]])
             self.figures.add_sample(*mechanism.makespans(players, role_targets, self._last_followed[i]))
-        switches, mean, largest, far = dash_and_gaps_of(
-            state, n_rows, n_out, play_on, views.position, views.velocity, views.effort, views.stamina,
-            views.capacity, cycle, views.half, dash)
+        self._counts = (n_rows, n_out)
+        return self.goals if placed else None
+
+    def finish(self, views: PlayerViews, beliefs: TeamBeliefs, votes: VoteBook | None, dash: np.ndarray,
+               say_world: bool, chars: np.ndarray) -> tuple[int, int]:
+        """The end of the cycle, after the whole brains acted, in one compiled call
+        (:func:`~agents.teams.own_view_state.dash_and_say_of`): the dashes of the players
+        :meth:`step` positioned into ``dash`` (n, 2) and the role figures; what every player
+        says into ``chars`` (n, 10) uint8, its world message (``say_world``) or its vote; and
+        the believed role conflicts in play on, returned as (roles two players hold, roles
+        nobody holds)."""
+        n_rows, n_out = self._counts
+        play_on = views.play_mode == PlayMode.PLAY_ON
+        switches, mean, largest, far, shared, empty = dash_and_say_of(
+            self._state_for(beliefs, votes), n_rows, n_out, play_on, views.position, views.velocity, views.effort,
+            views.stamina, views.capacity, views.cycle, views.half, dash, say_world, beliefs.ball_age, WORLD_GRID,
+            CYCLE_MODULUS, ALPHABET_BYTES, chars)
         if play_on and n_out:
             self.figures.add(switches, True, mean, largest, far)
-        return self.goals if placed else None
+        return shared, empty
 
     def line_up(self, rows: np.ndarray) -> None:
         """Before a kick-off the outfield ``rows`` each take their own role (by shirt number),

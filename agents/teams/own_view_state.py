@@ -23,6 +23,8 @@ from numba import njit
 from numba.core import types
 from numba.experimental import structref
 
+from agents.message_kernels import number_chars, vote_number, world_message_number
+from agents.roles.voting import believed_conflicts
 from agents.teams.own_view_after import dash_and_gaps, follow_and_goals
 from agents.teams.own_view_kernels import before_roles
 
@@ -142,3 +144,28 @@ def dash_and_gaps_of(s: PositioningState, n_rows: int, n_out: int, play_on: bool
     measuring = (s.rank, s.followed, s.last_followed, s.targets, s.match_roles, s.unfilled)
     return dash_and_gaps(s.rows[:n_rows], s.outfield_rows[:n_out], play_on, s.attacking, s.phase, dashing, s.goals,
                          s.urgent, dash, s.budgets, measuring)
+
+
+@njit(cache=True, nogil=True)
+def dash_and_say_of(s: PositioningState, n_rows: int, n_out: int, play_on: bool, position, velocity, effort, stamina,
+                    capacity, cycle: int, half: int, dash, say_world: bool, ball_age, grid: tuple, modulus: int,
+                    alphabet, chars) -> tuple[int, float, float, int, int, int]:  # pragma: no cover - compiled
+    """The end of a team's cycle in one call, after its whole brains acted: :func:`dash_and_gaps_of`
+    (its figures are the first four numbers returned), then what every player says into
+    ``chars`` (n, 10) uint8: with ``say_world`` its world message (its believed ball, the
+    ball's ``ball_age`` (n,) and its own position; ``grid``: :data:`agents.messages.WORLD_GRID`),
+    else its proposal as a vote computed at ``cycle`` (``modulus``: the vote cycle's), each
+    through ``alphabet``; and in play on the believed role conflicts
+    (:func:`~agents.roles.voting.believed_conflicts`, the last two numbers; zeros otherwise)."""
+    switches, mean, largest, far = dash_and_gaps_of(s, n_rows, n_out, play_on, position, velocity, effort, stamina,
+                                                    capacity, cycle, half, dash)
+    for i in range(chars.shape[0]):
+        if say_world:
+            number = world_message_number(s.ball[i], s.ball_vel[i], ball_age[i], s.mate_pos[i, i], grid)
+        else:
+            number = vote_number(s.proposals[i], cycle, modulus)
+        number_chars(number, alphabet, chars[i])
+    shared, empty = 0, 0
+    if play_on and s.outfield.shape[0] > 0:
+        shared, empty = believed_conflicts(s.followed, s.outfield)
+    return switches, mean, largest, far, shared, empty

@@ -136,3 +136,28 @@ def test_smaller_sides_play_decentralised_each_player_picking_the_roles_it_belie
     config = MatchConfig(observation=ObservationConfig("partial"), max_cycles=200)
     result = run_match("mmdr", "bidding", seed=1, config=config, scenario=scenario)
     assert result.cycles > 0 and result.end_reason in ("goal", "lost", "out", "time_over")
+
+
+def test_what_the_players_say_is_what_the_general_encoders_make(monkeypatch):
+    """The messages made in the positioning's last compiled call are the world messages and
+    votes that TeamBeliefs.world_messages and VoteBook.messages encode (alternate cycles)."""
+    from agents.roles.voting import VoteBook
+    from agents.teams.decentralised import DecentralisedPlay
+
+    said = {"world": 0, "vote": 0}
+    original = DecentralisedPlay.act
+
+    def act(players, views):
+        command = original(players, views)
+        if views.cycle % 2 == 0:
+            expected = players.beliefs.world_messages(views.present)
+            said["world"] += 1
+        else:
+            expected = VoteBook.messages(players.positioning.proposals, views.cycle, views.present)
+            said["vote"] += 1
+        assert list(command.say) == expected
+        return command
+
+    monkeypatch.setattr(DecentralisedPlay, "act", act)
+    Match("mmdr", "static", seed=6, config=PARTIAL).run()
+    assert said["world"] > 100 and said["vote"] > 100  # (both teams)
