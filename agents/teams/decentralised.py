@@ -114,6 +114,8 @@ class DecentralisedPlay:
         self._cycle = 0
         self._brain_cycle = np.full(n, -2, dtype=np.int64)
         self._on_ball_rows = np.zeros(n, dtype=bool)
+        self._deciding = np.zeros(n, dtype=bool)
+        """(n,) the players who position themselves this cycle (present, not on the ball)."""
         self._mode_key: tuple[int, bool] = (-1, False)
         self._mode_since = 0
         self._play_on_cycles = 0
@@ -143,22 +145,20 @@ class DecentralisedPlay:
         if key != self._mode_key:
             self._mode_key, self._mode_since = key, cycle
         self.beliefs.update(views, self._vote_arrays)
-        command.dash[:] = 0.0
-        command.kick[:] = 0.0
         command.catch = False
         command.tackle = command.foul = None
         if n == 0:
             command.move, command.say = None, []
             return command
-        on_ball = self._on_ball(views)
-        placed = self.positioning.step(views, self.beliefs, views.present & ~on_ball, self.votes)
+        n_brains, n_deciding = self._on_ball(views)
+        deciding = self._deciding
+        placed = self.positioning.step(views, self.beliefs, deciding, self.votes, n_deciding)
         move = None
         if placed is not None:  # players without a placement of their own stay where they believe they are
             move = views.position.copy()
-            positioned = views.present & ~on_ball
-            move[positioned] = placed[positioned]
+            move[deciding] = placed[deciding]
         rechoose = views.mode_ours and views.play_mode in _RECHOSEN
-        deciders = np.flatnonzero(on_ball).tolist()
+        deciders = np.flatnonzero(self._on_ball_rows).tolist() if n_brains else []
         for i in deciders:
             move = self._brain_acts(i, views, rechoose, move)
         command.move = move
@@ -170,30 +170,28 @@ class DecentralisedPlay:
         self._count_conflicts(views, shared, empty)
         return command
 
-    def _on_ball(self, views: PlayerViews) -> np.ndarray:
-        """(n,) the players who decide with their whole brain this cycle (module docstring,
-        step 2; :func:`~agents.teams.own_view_kernels.whole_brain_rows`)."""
-        rows, mode = self._on_ball_rows, views.play_mode
-        rows[:] = False
+    def _on_ball(self, views: PlayerViews) -> tuple[int, int]:
+        """Who decides with the whole brain this cycle (module docstring, step 2) into
+        ``self._on_ball_rows`` and who positions itself into ``self._deciding``, with the
+        command's dashes and kicks cleared (one compiled call,
+        :func:`~agents.teams.own_view_kernels.whole_brain_rows`); returns how many of each."""
+        mode = views.play_mode
         play_on = mode == PlayMode.PLAY_ON
-        if not play_on:
-            if not views.mode_ours or (mode not in SET_PLAYS and mode != PlayMode.GOALIE_HOLDS):
-                return rows
-            if mode == PlayMode.GOALIE_HOLDS:
-                if self.goalie >= 0:
-                    rows[self.goalie] = views.present[self.goalie]
-                return rows
-        set_play = not play_on
-        taker = -1
-        if mode == PlayMode.KICK_OFF:
-            taker = self._kick_off_taker
-        elif mode == PlayMode.GOAL_KICK and self._goal_kick_keeper:
-            taker = self.goalie
-        beliefs = self.beliefs
-        whole_brain_rows(play_on, set_play, beliefs.ball, views.position, views.holds_ball, views.present,
-                         beliefs.mate_pos, self.outfield, taker, set_play and mode != PlayMode.KICK_OFF and taker < 0,
-                         self.goalie, BRAIN_DISTANCE, self._kickable + 1.0, self._area[0], self._area[1], rows)
-        return rows
+        set_play = not play_on and views.mode_ours and mode in SET_PLAYS
+        taker, reach, nearest = -1, self._kickable + 1.0, False
+        if not play_on and views.mode_ours and mode == PlayMode.GOALIE_HOLDS:  # the goalkeeper alone
+            set_play, taker, reach = True, self.goalie, 0.0
+        elif set_play:
+            if mode == PlayMode.KICK_OFF:
+                taker = self._kick_off_taker
+            elif mode == PlayMode.GOAL_KICK and self._goal_kick_keeper:
+                taker = self.goalie
+            nearest = mode != PlayMode.KICK_OFF and taker < 0
+        beliefs, command = self.beliefs, self.command
+        return whole_brain_rows(play_on, set_play, beliefs.ball, views.position, views.holds_ball, views.present,
+                                beliefs.mate_pos, self.outfield, taker, nearest, self.goalie, BRAIN_DISTANCE, reach,
+                                self._area[0], self._area[1], self._on_ball_rows, self._deciding, command.dash,
+                                command.kick)
 
     def _brain_acts(self, i: int, views: PlayerViews, rechoose: bool, move: np.ndarray | None) -> np.ndarray | None:
         """Player ``i`` decides with its whole brain on its beliefs; its own row of the brain's

@@ -50,6 +50,7 @@ from agents.skills.pacing import pacing_constants
 from agents.teams import mechanism
 from agents.teams.on_ball import ball_reach
 from agents.messages import ALPHABET_BYTES, CYCLE_MODULUS, WORLD_GRID
+from agents.teams.own_view_kernels import assignment_problems
 from agents.teams.own_view_state import (OTHER_TABLES, PositioningState, before_roles_of, dash_and_say_of,
                                          follow_and_goals_of, state_of)
 from agents.teams.positions import nearest_roles
@@ -150,6 +151,9 @@ class OwnViewPositioning:
         """This cycle's deciding rows, their outfield ones and who of those assigns (filled by before_roles)."""
         self._counts = (0, 0)
         """How many of those rows and outfield rows there are (:meth:`step` for :meth:`finish`)."""
+        self._problems = (np.zeros((n, k, 2)), np.zeros((n, self.match_roles.shape[1], 2)))
+        """Room for the assignment problems of the players who assign in one cycle (their
+        believed outfield players and their roles' targets)."""
         sp, style, third = shape.params, self.style, model.half_length / 3.0
         self._record = dict(
             # who assigns
@@ -193,14 +197,14 @@ class OwnViewPositioning:
         """The team's role figures: each player's distance to the target of the role it follows."""
 
     # ------------------------------------------------------------------ one cycle
-    def step(self, views: PlayerViews, beliefs: TeamBeliefs, deciding: np.ndarray,
-             votes: VoteBook | None) -> np.ndarray | None:
+    def step(self, views: PlayerViews, beliefs: TeamBeliefs, deciding: np.ndarray, votes: VoteBook | None,
+             count: int | None = None) -> np.ndarray | None:
         """Position the ``deciding`` players (n,) bool for this cycle up to their goals (their
         dashes follow in :meth:`finish`); returns their placements (n, 2) in a play mode that
         places players, else None. ``votes``: the team's :class:`~agents.roles.voting.VoteBook`
-        (None: no outfield roles)."""
+        (None: no outfield roles); ``count``: how many players decide, when the caller knows."""
         self._counts = (0, 0)
-        if not deciding.any():
+        if not (deciding.any() if count is None else count):
             return None
         mode = views.play_mode
         play_on = mode == PlayMode.PLAY_ON
@@ -306,8 +310,9 @@ class OwnViewPositioning:
         self._assigned_at[rows], self._assigned_mode[rows] = cycle, mode
         first = self.brains[0]
         if rows.size and self._batches and not (first._leave is not None and play_on):  # all in one call
-            players = beliefs.mate_pos[rows[:, None], self.outfield]
-            role_targets = self.targets[rows[:, None], self.match_roles[rows]]
+            players, role_targets = self._problems[0][:rows.size], self._problems[1][:rows.size]
+            assignment_problems(rows, self.outfield, beliefs.mate_pos, self.targets, self.match_roles, players,
+                                role_targets)
             proposals = first.assigner.assign_rows(players, role_targets, first._context)
             if proposals is not None:
                 self.proposals[rows] = proposals

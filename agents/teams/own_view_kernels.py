@@ -324,14 +324,19 @@ def support_each(rows: np.ndarray, attacking: np.ndarray, our_first: np.ndarray,
 def whole_brain_rows(play_on: bool, set_play: bool, ball: np.ndarray, position: np.ndarray, holds: np.ndarray,
                      present: np.ndarray, mate_pos: np.ndarray, outfield: np.ndarray, taker: int, nearest_taker: bool,
                      goalie: int, brain_distance: float, reach: float, area_x: float, area_y: float,
-                     out: np.ndarray) -> None:  # pragma: no cover - compiled
-    """Which present players decide with their whole brain this cycle (into ``out``), each by
-    its own beliefs: in play on those who believe the ball within ``brain_distance`` m or
-    hold it, and the goalkeeper who believes it in or near its penalty area (``x <= -area_x``,
+                     out: np.ndarray, deciding: np.ndarray, dash: np.ndarray,
+                     kick: np.ndarray) -> tuple[int, int]:  # pragma: no cover - compiled
+    """A team's cycle begins: its command's ``dash`` and ``kick`` (n, 2) cleared, and which
+    present players decide with their whole brain this cycle (into ``out``), each by its own
+    beliefs: in play on those who believe the ball within ``brain_distance`` m or hold it, and
+    the goalkeeper who believes it in or near its penalty area (``x <= -area_x``,
     ``|y| <= area_y``); at our set plays (``set_play``) those who believe the ball within
     ``reach`` m, ``taker`` (>= 0) and, with ``nearest_taker``, each outfield player who
-    believes itself the nearest of the outfield to the ball."""
+    believes itself the nearest of the outfield to the ball. The other present players go
+    into ``deciding`` (they position themselves). Returns how many there are of each."""
+    n_brains, n_deciding = 0, 0
     for i in range(out.shape[0]):
+        dash[i, 0], dash[i, 1], kick[i, 0], kick[i, 1] = 0.0, 0.0, 0.0, 0.0
         dx, dy = ball[i, 0] - position[i, 0], ball[i, 1] - position[i, 1]
         near = dx * dx + dy * dy
         row = False
@@ -353,3 +358,23 @@ def whole_brain_rows(play_on: bool, set_play: bool, ball: np.ndarray, position: 
                         best, best_d = j, d
                 row = best == i
         out[i] = row and present[i]
+        deciding[i] = present[i] and not out[i]
+        n_brains += out[i]
+        n_deciding += deciding[i]
+    return n_brains, n_deciding
+
+
+@njit(cache=True, nogil=True)
+def assignment_problems(rows: np.ndarray, outfield: np.ndarray, mate_pos: np.ndarray, targets: np.ndarray,
+                        match_roles: np.ndarray, players: np.ndarray,
+                        role_targets: np.ndarray) -> None:  # pragma: no cover - compiled
+    """The role assignment problem of each player of ``rows`` (p,) on its own beliefs: where it
+    believes the ``outfield`` players are (``mate_pos[i, outfield]`` into ``players[c]``) and its
+    outfield roles' targets (``targets[i, match_roles[i]]`` into ``role_targets[c]``)."""
+    for c in range(rows.shape[0]):
+        i = rows[c]
+        for j in range(outfield.shape[0]):
+            players[c, j, 0], players[c, j, 1] = mate_pos[i, outfield[j], 0], mate_pos[i, outfield[j], 1]
+        for r in range(match_roles.shape[1]):
+            t = match_roles[i, r]
+            role_targets[c, r, 0], role_targets[c, r, 1] = targets[i, t, 0], targets[i, t, 1]
