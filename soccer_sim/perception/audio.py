@@ -252,11 +252,11 @@ class AudioChannel:
         p = self.params
         n = self.players
         cap = self._cap
+        regained = 0
         if self._cap_cycle is not None:
             if cycle <= self._cap_cycle:
                 raise ValueError(f"AudioChannel.hear: cycle {cycle} is not after the last hear cycle {self._cap_cycle}")
-            cap += p.hear_inc * (cycle - self._cap_cycle)
-            np.minimum(cap, p.hear_max, out=cap)
+            regained = p.hear_inc * (cycle - self._cap_cycle)
         self._cap_cycle = int(cycle)
         key = rng.random((n, n))
         current = self._said_cycle == cycle - 1
@@ -269,8 +269,7 @@ class AudioChannel:
             rows = np.flatnonzero(att >= 0)
             key[rows, att[rows]] = -1.0  # taken before every other message
         heard = np.zeros((n, n), dtype=bool)
-        if current and self._spoke:
-            choose_heard(arrived, key, self.team, cap, p.hear_decay, heard)
+        choose_heard(arrived, key, self.team, cap, regained, p.hear_max, p.hear_decay, current and self._spoke, heard)
         return arrived, heard, messages
 
     def _directions(self, heard: np.ndarray, positions: np.ndarray | None,

@@ -205,7 +205,7 @@ def see_into(obs: np.ndarray, body: np.ndarray, objects: np.ndarray, self_index:
 @njit(cache=True, nogil=True)
 def perceive(pos: np.ndarray, vel: np.ndarray, ball: np.ndarray, present: np.ndarray, seeing: np.ndarray,
              inertia: np.ndarray, decay: np.ndarray, flags: np.ndarray, prm: np.ndarray, exact_self: bool,
-             advance: bool, uniforms: np.ndarray, team: np.ndarray, first: np.ndarray, sign: np.ndarray,
+             advance: bool, uniforms: np.ndarray, team: np.ndarray, first: np.ndarray, home_attacks: float,
              belief: np.ndarray, body_out: np.ndarray, pos_out: np.ndarray, vel_out: np.ndarray,
              localised: np.ndarray, ball_seen: np.ndarray, ball_dist: np.ndarray, ball_dir: np.ndarray,
              ball_at: np.ndarray, count: np.ndarray, s_dist: np.ndarray, s_dir: np.ndarray, s_at: np.ndarray,
@@ -216,7 +216,8 @@ def perceive(pos: np.ndarray, vel: np.ndarray, ball: np.ndarray, present: np.nda
     place (advanced by the sensed velocity over ``decay`` when ``advance``, replaced by the flag
     estimate on cycles with a see; the true position with ``exact_self``). ``seeing`` (P,): who
     gets a see; ``uniforms`` (2, k, P + 1): the identity draws of the k seeing players in row
-    order. Outputs are in each player's team frame (``sign[p]`` its attack direction):
+    order. Outputs are in each player's team frame (``home_attacks`` for the first team's
+    players, its negative for the other's: each team's attack direction):
     ``body_out`` degrees, ``pos_out`` / ``vel_out`` the believed position and sensed velocity, the
     ball's polar coordinates and position, and the seen players nearest first (ties in row order)
     with position, side (+1 team-mate, -1 opponent, 0 unknown), number (-1 unknown) and row
@@ -249,7 +250,7 @@ def perceive(pos: np.ndarray, vel: np.ndarray, ball: np.ndarray, present: np.nda
             if advance:
                 belief[p, 0] += vx / decay[p]
                 belief[p, 1] += vy / decay[p]
-        s = sign[p]
+        s = home_attacks if team[p] == 0 else -home_attacks
         body_out[p] = _wrap(body + (0.0 if s > 0 else 180.0))
         vel_out[p, 0], vel_out[p, 1] = vx * s, vy * s
         localised[p] = False
@@ -342,13 +343,20 @@ def arrivals(pos: np.ndarray, spoke: np.ndarray, cut: float, out: np.ndarray) ->
 
 
 @njit(cache=True, nogil=True)
-def choose_heard(arrived: np.ndarray, key: np.ndarray, team: np.ndarray, cap: np.ndarray, hear_decay: int,
-                 heard: np.ndarray) -> None:  # pragma: no cover - compiled
-    """Which arrived messages each listener hears in full (into ``heard``), spending its
-    capacities ``cap`` (players, 2: team-mates, opponents): per side, the arrivals with the
-    smallest ``key`` (the server's random order), as many as the side's capacity pays for at
-    ``hear_decay`` each (all of them when that is 0)."""
+def choose_heard(arrived: np.ndarray, key: np.ndarray, team: np.ndarray, cap: np.ndarray, regained: int,
+                 hear_max: int, hear_decay: int, spoken: bool, heard: np.ndarray) -> None:  # pragma: no cover
+    """Each listener's capacities ``cap`` (players, 2: team-mates, opponents) first regain
+    ``regained`` up to ``hear_max``; then, when anything was ``spoken``, which arrived messages
+    each listener hears in full (into ``heard``), spending those capacities: per side, the
+    arrivals with the smallest ``key`` (the server's random order), as many as the side's
+    capacity pays for at ``hear_decay`` each (all of them when that is 0)."""
     n = arrived.shape[0]
+    if regained:
+        for l in range(cap.shape[0]):
+            for side in range(2):
+                cap[l, side] = min(cap[l, side] + regained, hear_max)
+    if not spoken:
+        return
     for l in range(n):
         for side in range(2):
             allowed = cap[l, side] // hear_decay if hear_decay > 0 else n

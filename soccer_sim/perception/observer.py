@@ -64,7 +64,6 @@ class Observer:
         self.channel = AudioChannel(sizes, team_names, config.audio)
         self._team = np.repeat(np.array([0, 1], dtype=np.int64), sizes)
         self._first = np.where(self._team == 0, 0, sizes[0]).astype(np.int64)
-        self._sign = np.ones(total)
         self._belief = np.zeros((total, 2))
         self._started = False
         self._half = 0
@@ -92,13 +91,10 @@ class Observer:
     # ------------------------------------------------------------------------------------
     def observe(self, state: WorldState) -> tuple[PlayerViews, PlayerViews]:
         """Every player's perception at ``state.cycle`` (module docstring), as (home, away) views."""
-        out, home_n = self._out, self.sizes[0]
+        out = self._out
         if state.half != self._half:
             self._half = state.half
             self.channel.reset_capacity()
-        sign = self._sign
-        sign[:home_n] = state.home_attacks
-        sign[home_n:] = -state.home_attacks
         present = state.present
         seeing = out["saw"]
         np.logical_and(self._see_table[state.cycle % len(self._see_table)], present, out=seeing)
@@ -106,7 +102,8 @@ class Observer:
             self._belief[:] = state.pos  # a player knows where it starts
         uniforms = self._rng.random((2, int(np.count_nonzero(seeing)), self._total + 1))
         perceive(state.pos, state.vel, state.ball, present, seeing, self._inertia, self._decay, DEFAULT_FLAGS,
-                 self._prm, self.params.exact_self, self._started, uniforms, self._team, self._first, sign,
+                 self._prm, self.params.exact_self, self._started, uniforms, self._team, self._first,
+                 float(state.home_attacks),
                  self._belief, out["body_direction"], out["position"], out["velocity"], out["localised"],
                  out["ball_seen"], out["ball_distance"], out["ball_direction"], out["ball"], out["seen_count"],
                  out["seen_distance"], out["seen_direction"], out["seen_position"], out["seen_side"],
