@@ -195,3 +195,20 @@ def believe(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray, mate_p
         mate_pos[i, i, 1] = position[i, 1]
         mate_age[i, i] = 0
     hear_world(listener, speaker, kind, world, world_kind, mate_pos, mate_age, ball, ball_vel, ball_age, ball_decay)
+
+
+@njit(cache=True, nogil=True)
+def own_kicks(kick: np.ndarray, kickable: float, ball: np.ndarray, ball_vel: np.ndarray, mate_pos: np.ndarray,
+              speed_max: float) -> None:  # pragma: no cover - compiled
+    """Each player's own kick of this cycle (``kick`` (n, 2) m/cycle; a zero row for none) added
+    to the ball velocity it believes, when it believes the ball within ``kickable`` m of itself
+    (``mate_pos[i, i]``), the sum capped at ``speed_max`` m/cycle."""
+    for i in range(kick.shape[0]):
+        if kick[i, 0] == 0.0 and kick[i, 1] == 0.0:
+            continue
+        gx, gy = ball[i, 0] - mate_pos[i, i, 0], ball[i, 1] - mate_pos[i, i, 1]
+        if not gx * gx + gy * gy <= kickable * kickable:
+            continue
+        vx, vy = ball_vel[i, 0] + kick[i, 0], ball_vel[i, 1] + kick[i, 1]
+        scale = min(1.0, speed_max / max(math.hypot(vx, vy), 1e-9))
+        ball_vel[i, 0], ball_vel[i, 1] = vx * scale, vy * scale

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from agents.messages import CODES, DECODING, DIGIT_OF_BYTE, heard_pairs, said_bytes, text_digits, world_texts
-from agents.teams.belief_kernels import AGE_NEVER
+from agents.teams.belief_kernels import AGE_NEVER, own_kicks
 from agents.teams.belief_record import hear_and_believe, hear_block_and_believe, new_record
 from soccer_sim.config import MatchConfig
 from soccer_sim.perception.views import HeardLog, PlayerViews
@@ -117,14 +117,7 @@ class TeamBeliefs:
         """Each player's own kicks of this cycle (``kick`` (n, 2) m/cycle, team frame; zero rows
         for none) change the velocity it believes the ball has, when it believes the ball is
         within ``kickable`` m: a player knows what it just did."""
-        if not kick.any():
-            return
-        gap = self.ball - self.mate_pos[self._rows, self._rows]
-        mine = kick.any(axis=1) & (np.einsum("ij,ij->i", gap, gap) <= kickable * kickable)
-        if mine.any():
-            self.ball_vel[mine] += kick[mine]
-            speed = np.hypot(self.ball_vel[mine, 0], self.ball_vel[mine, 1])
-            self.ball_vel[mine] *= np.minimum(1.0, self._ball_speed_max / np.maximum(speed, 1e-9))[:, None]
+        own_kicks(kick, float(kickable), self.ball, self.ball_vel, self.mate_pos, self._ball_speed_max)
 
     def world_messages(self, present: np.ndarray) -> list[str | None]:
         """Each present player's ball belief and own position as a 10-character message

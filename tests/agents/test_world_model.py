@@ -206,3 +206,24 @@ def test_a_matchs_delivery_is_believed_as_the_same_messages_given_as_tuples():
     assert twin.compared == 200 and twin.heard > 1000
     assert (twin.books[0].vote_cycle >= 0).any()  # votes were heard and stored
     assert not np.array_equal(twin.models[0].mate_age, twin.models[2].mate_age)  # the stranger's text was ignored
+
+
+def test_a_players_own_kick_changes_the_ball_velocity_it_believes():
+    """TeamBeliefs.kicked against the numpy it stands for: only kicks of players who believe
+    the ball within reach count, and the believed velocity is capped at ball_speed_max."""
+    rng = np.random.default_rng(8)
+    speed_max = CONFIG.physics.ball_speed_max
+    for _ in range(40):
+        beliefs = TeamBeliefs(N, M, CONFIG)
+        beliefs.mate_pos[:] = rng.uniform(-3, 3, (N, N, 2))
+        beliefs.ball[:] = beliefs.mate_pos[np.arange(N), np.arange(N)] + rng.uniform(-1.5, 1.5, (N, 2))
+        beliefs.ball_vel[:] = rng.uniform(-2, 2, (N, 2))
+        kick = rng.uniform(-2.5, 2.5, (N, 2)) * (rng.random((N, 1)) < 0.7)
+        expected = beliefs.ball_vel.copy()
+        gap = beliefs.ball - beliefs.mate_pos[np.arange(N), np.arange(N)]
+        mine = kick.any(axis=1) & (np.einsum("ij,ij->i", gap, gap) <= 1.2 ** 2)
+        expected[mine] += kick[mine]
+        speed = np.hypot(expected[mine, 0], expected[mine, 1])
+        expected[mine] *= np.minimum(1.0, speed_max / np.maximum(speed, 1e-9))[:, None]
+        beliefs.kicked(kick, 1.2)
+        np.testing.assert_array_equal(beliefs.ball_vel, expected)
