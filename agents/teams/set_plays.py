@@ -164,10 +164,11 @@ class SetPlays:
         if (view.play_mode == PlayMode.GOAL_KICK and self.style.goalkeeper_goal_kicks and self.goalie >= 0
                 and self.goalie not in self.tried_takers):
             return self.goalie
-        candidates = self.outfield if len(self.outfield) else np.arange(self.n)
-        fresh = np.setdiff1d(candidates, self.tried_takers)
-        if fresh.size:
-            candidates = fresh
+        candidates = self.outfield if len(self.outfield) else np.arange(self.n)  # (rows in order)
+        if self.tried_takers:
+            fresh = [c for c in candidates.tolist() if c not in self.tried_takers]
+            if fresh:
+                candidates = np.array(fresh, dtype=np.int64)
         gaps = np.hypot(*(view.own_pos[candidates] - view.ball).T)
         return int(candidates[int(np.argmin(gaps))])
 

@@ -245,3 +245,19 @@ def test_a_taker_at_the_stamina_floor_still_runs_to_the_ball() -> None:
     assert team.set_plays.taker == 4
     # It runs at full power (a dash of 100 accelerates 0.6 m/cycle^2), not stands.
     assert np.hypot(*command.dash[4]) == pytest.approx(100.0 * CONFIG.physics.dash_power_rate, rel=0.05)
+
+
+def test_a_retaken_set_play_goes_to_the_nearest_player_who_has_not_tried_it() -> None:
+    team = ready("mmdr")
+    own = np.array([[-30.0 + 3.0 * (i % 5), -20.0 + 4.0 * i] for i in range(11)])
+    ball = own[6] + (0.5, 0.0)
+    v = view(own, their_half(), ball, PlayMode.KICK_IN)
+    set_plays = team.set_plays
+    order = np.argsort(np.hypot(*(own[1:] - ball).T), kind="stable") + 1  # the outfield, nearest first
+    assert set_plays._choose_taker(v) == order[0]
+    set_plays.tried_takers[:] = [int(order[0])]
+    assert set_plays._choose_taker(v) == order[1]
+    set_plays.tried_takers[:] = [int(order[1]), int(order[0]), 0]
+    assert set_plays._choose_taker(v) == order[2]
+    set_plays.tried_takers[:] = list(range(11))  # everybody tried: the nearest again
+    assert set_plays._choose_taker(v) == order[0]
