@@ -53,8 +53,8 @@ from soccer_sim.referee import Referee
 from soccer_sim.rules.fouls import FoulJudge
 from soccer_sim.registry import resolve_team
 from soccer_sim.scenarios.scenario import Scenario, line_up
-from soccer_sim.setup import MatchSetup, resolve_scenario
-from soccer_sim.state import AWAY, HOME, NO_PLAYER, NO_TEAM, EventLog, PlayMode, WorldState
+from soccer_sim.setup import MatchSetup
+from soccer_sim.state import AWAY, HOME, NO_PLAYER, EventLog, PlayMode, WorldState
 from soccer_sim.statistics import StatisticsRecorder, TeamStatistics
 from soccer_sim.tackles import TackleOutcome, Tackles
 from soccer_sim.team import SideInfo, Team, team_failure
