@@ -112,6 +112,27 @@ def _in_cone(dx: float, dy: float, dist: float, bx: float, by: float, cos_half: 
     return dx * bx + dy * by > dist * cos_half
 
 
+_SLACK = 1.0e-9
+"""Relative slack of :func:`_surely_unseen`'s tests on squares, far above their rounding errors."""
+
+
+@njit(cache=True, nogil=True)
+def _surely_unseen(dx: float, dy: float, bx: float, by: float, cos_half: float, close: float,
+                   prm: np.ndarray) -> bool:  # pragma: no cover - compiled
+    """Whether an object at offset ``(dx, dy)`` is certainly outside the view cone of a player
+    facing ``(bx, by)`` and farther than ``close`` m, judged on squared lengths with
+    :data:`_SLACK` to spare, so most objects out of view need no distance (a square root):
+    when this says True, :func:`_in_cone` and ``dist <= close`` would both say False (False
+    here decides nothing). Only for a cone narrower than a half-plane, not omnidirectional."""
+    if prm[P_OMNIDIRECTIONAL] != 0.0 or cos_half <= 0.0:
+        return False
+    d2 = dx * dx + dy * dy
+    if not d2 > close * close * (1.0 + _SLACK):
+        return False
+    dot = dx * bx + dy * by
+    return dot <= 0.0 or dot * dot < d2 * (cos_half * cos_half) * (1.0 - _SLACK)
+
+
 @njit(cache=True, nogil=True)
 def _localise_one(px: float, py: float, body: float, flags: np.ndarray,
                   prm: np.ndarray) -> tuple[float, float, int]:  # pragma: no cover - compiled
@@ -125,6 +146,8 @@ def _localise_one(px: float, py: float, body: float, flags: np.ndarray,
     k = 0
     for f in range(flags.shape[0]):
         dx, dy = flags[f, 0] - px, flags[f, 1] - py
+        if _surely_unseen(dx, dy, bx, by, cos_half, close, prm):
+            continue
         dist = math.hypot(dx, dy)
         if not (_in_cone(dx, dy, dist, bx, by, cos_half, prm) or dist <= close):
             continue
@@ -161,9 +184,10 @@ def _see_one(ox: float, oy: float, body: float, objects: np.ndarray, me: int, vi
     bx, by, cos_half = math.cos(b), math.sin(b), math.cos(math.radians(prm[P_HALF_ANGLE]))
     for j in range(objects.shape[0]):
         dx, dy = objects[j, 0] - ox, objects[j, 1] - oy
-        dist = math.hypot(dx, dy)
-        cone = _in_cone(dx, dy, dist, bx, by, cos_half, prm)
-        near = (not cone) and dist <= close
+        unseen = _surely_unseen(dx, dy, bx, by, cos_half, close, prm)
+        dist = 0.0 if unseen else math.hypot(dx, dy)
+        cone = (not unseen) and _in_cone(dx, dy, dist, bx, by, cos_half, prm)
+        near = (not unseen) and (not cone) and dist <= close
         if (not (cone or near)) or j == me or not visible[j]:
             seen[j] = False
             in_cone[j] = False

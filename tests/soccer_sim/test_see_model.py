@@ -197,3 +197,55 @@ def test_bad_shapes_are_a_clear_error():
         see(np.zeros(3), [0.0], (0, 0), np.zeros((3, 2)), rng)
     with pytest.raises(ValueError, match="self_index"):
         see(np.zeros((1, 2)), [0.0], (0, 0), np.zeros((3, 2)), rng, self_index=[3])
+
+
+@pytest.mark.parametrize("angle, omni", [(90.0, False), (150.0, False), (180.0, False), (200.0, False),
+                                         (90.0, True)])
+def test_the_square_shortcut_changes_no_sighting_and_no_localisation(monkeypatch, angle, omni):
+    """Objects and flags surely out of view are skipped before their distance is taken
+    (``_surely_unseen``); copies of the kernels compiled without that shortcut see and localise
+    the same, bit for bit, on random scenes with objects on the cone's edges and at exactly
+    ``visible_distance``."""
+    from numba import njit
+
+    from soccer_sim.perception import kernels
+    from soccer_sim.perception.localise import DEFAULT_FLAGS
+
+    prm = kernels.params_array(SeeParams(visible_angle=angle, omnidirectional=omni))
+    monkeypatch.setattr(kernels, "_surely_unseen", njit(lambda dx, dy, bx, by, cos_half, close, prm: False))
+    monkeypatch.setattr(kernels, "_see_one", njit(kernels._see_one.py_func))
+    monkeypatch.setattr(kernels, "_localise_one", njit(kernels._localise_one.py_func))
+    plain_see, plain_localise = njit(kernels.see_into.py_func), njit(kernels.localise_into.py_func)
+    # (numba reads the globals when it compiles: compile the copies now, while they are patched)
+    plain_see(np.zeros((1, 2)), np.zeros(1), np.ones((2, 2)), np.zeros(1, dtype=np.int64), np.ones(2, dtype=bool),
+              np.zeros((2, 1, 2)), prm, *(np.empty((1, 2), dtype=t) for t in (bool, float, float, np.int8, bool)))
+    plain_localise(np.zeros((1, 2)), np.zeros(1), DEFAULT_FLAGS, prm, np.empty((1, 2)), np.empty(1, dtype=np.int64))
+    monkeypatch.undo()
+    rng = np.random.default_rng(21)
+    close, half = prm[kernels.P_VISIBLE_DISTANCE], prm[kernels.P_HALF_ANGLE]
+    skipped = 0
+    for scene in range(40):
+        obs = rng.uniform([-50, -30], [50, 30], (11, 2))
+        body = rng.uniform(-180, 180, 11)
+        objects = rng.uniform([-55, -35], [55, 35], (23, 2))
+        for k in range(10):  # on the cone's edges and about the visible distance, for observer 0
+            a = math.radians(body[0] + (half if k % 2 else -half)) if k < 4 else rng.uniform(-math.pi, math.pi)
+            r = close * (1.0, 0.9999, 1.0001)[k % 3] if k >= 4 else rng.uniform(1.0, 40.0)
+            objects[1 + k] = obs[0] + r * np.array([math.cos(a), math.sin(a)])
+        args = (obs, body, objects, np.arange(11), np.ones(23, dtype=bool), rng.random((2, 11, 23)), prm)
+        outs = [tuple(np.empty((11, 23), dtype=t) for t in (bool, float, float, np.int8, bool)) for _ in range(2)]
+        kernels.see_into(*args, *outs[0])
+        plain_see(*args, *outs[1])
+        for mine, theirs in zip(*outs):
+            np.testing.assert_array_equal(mine, theirs)
+        flags = np.vstack([DEFAULT_FLAGS, obs[0] + close * np.array([[1.0, 0.0], [0.0, -1.0]])])
+        estimates = [(np.empty((11, 2)), np.empty(11, dtype=np.int64)) for _ in range(2)]
+        kernels.localise_into(obs, body, flags, prm, *estimates[0])
+        plain_localise(obs, body, flags, prm, *estimates[1])
+        np.testing.assert_array_equal(estimates[0][0], estimates[1][0])
+        np.testing.assert_array_equal(estimates[0][1], estimates[1][1])
+        b = math.radians(body[0])
+        cos_half = math.cos(math.radians(half))
+        skipped += sum(kernels._surely_unseen(*(o - obs[0]), math.cos(b), math.sin(b), cos_half, close, prm)
+                       for o in objects)
+    assert (skipped > 0) == (cos_half > 0.0 and not omni)  # the shortcut ran where it may
