@@ -162,15 +162,6 @@ def vote_digits_rows(assignments: np.ndarray, cycle: int, modulus: int,
 
 
 @njit(cache=True, nogil=True)
-def number_chars(number: int, alphabet: np.ndarray, out: np.ndarray) -> None:  # pragma: no cover - compiled
-    """``number`` as its LENGTH message characters into ``out`` (uint8; ``alphabet`` each
-    digit's character), most significant first: :func:`number_digits` through the alphabet."""
-    for d in range(LENGTH - 1, -1, -1):
-        out[d] = alphabet[number % BASE]
-        number //= BASE
-
-
-@njit(cache=True, nogil=True)
 def world_message_number(ball: np.ndarray, ball_vel: np.ndarray, ball_age: int, sender: np.ndarray,
                          grid: tuple) -> int:  # pragma: no cover - compiled
     """The number of one world message of ball (2,), velocity (2,), age and sender (2,), each

@@ -328,7 +328,7 @@ def world_texts(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray, se
     digits = np.empty((ball.shape[0], MESSAGE_LENGTH), dtype=np.int64)
     world_digits_rows(ball, ball_vel, ball_age, sender, digits, X_RANGE, Y_RANGE, V_RANGE, _PER_M, _PER_V, MAX_AGE,
                       _NX, _NY, _NV, _NAGE)
-    return _texts(digits, present)
+    return digit_texts(digits, present)
 
 
 def vote_texts(assignments: np.ndarray, cycle: int, present: np.ndarray) -> list[str | None]:
@@ -336,17 +336,12 @@ def vote_texts(assignments: np.ndarray, cycle: int, present: np.ndarray) -> list
     int64, computed at ``cycle``."""
     digits = np.empty((assignments.shape[0], MESSAGE_LENGTH), dtype=np.int64)
     vote_digits_rows(assignments, cycle, CYCLE_MODULUS, digits)
-    return _texts(digits, present)
+    return digit_texts(digits, present)
 
 
-def _texts(digits: np.ndarray, present: np.ndarray) -> list[str | None]:
-    """Rows of digits as message texts (None where not ``present``)."""
-    return texts_of(ALPHABET_BYTES[digits], present)
-
-
-def texts_of(chars: np.ndarray, present: np.ndarray) -> list[str | None]:
-    """Rows of message characters (n, MESSAGE_LENGTH) uint8 as texts (None where not ``present``)."""
-    raw = chars.tobytes().decode("ascii")
+def digit_texts(digits: np.ndarray, present: np.ndarray) -> list[str | None]:
+    """Rows of digits (n, MESSAGE_LENGTH) as message texts (None where not ``present``)."""
+    raw = ALPHABET_BYTES[digits].tobytes().decode("ascii")
     return [raw[i * MESSAGE_LENGTH:(i + 1) * MESSAGE_LENGTH] if there else None
             for i, there in enumerate(present.tolist())]
 

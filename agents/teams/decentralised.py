@@ -43,7 +43,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from agents.messages import MESSAGE_LENGTH, texts_of
+from agents.messages import MESSAGE_LENGTH, digit_texts
 from agents.roles.voting import VoteBook
 from agents.teams.own_view import PLACED, OwnViewPositioning
 from agents.teams.own_view_kernels import whole_brain_rows
@@ -96,8 +96,8 @@ class DecentralisedPlay:
         self._vote_arrays = (self.votes.votes, self.votes.vote_cycle) if self.votes is not None else None
         """The vote book's arrays, which the world models' update fills (None: no outfield roles)."""
         self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
-        self._chars = np.zeros((n, MESSAGE_LENGTH), dtype=np.uint8)
-        """What each player says this cycle, as message characters (filled by the positioning's finish)."""
+        self._said = np.zeros((n, MESSAGE_LENGTH), dtype=np.int64)
+        """The digits of what each player says this cycle (filled by the positioning's finish)."""
         self._kickable = first.model.kickable_distance + 0.2 if first is not None else 0.0
         self._views = [_empty_view(n, m, side_info) for _ in range(n)]
         self.positioning = OwnViewPositioning(self.brains, config, self._views[0]) if n else None
@@ -165,8 +165,8 @@ class DecentralisedPlay:
         if deciders:  # (only a whole brain kicks)
             self.beliefs.kicked(command.kick, self._kickable)
         say_world = views.cycle % 2 == 0 or self.votes is None
-        shared, empty = self.positioning.finish(views, self.beliefs, self.votes, command.dash, say_world, self._chars)
-        command.say = texts_of(self._chars, views.present)
+        shared, empty = self.positioning.finish(views, self.beliefs, self.votes, command.dash, say_world, self._said)
+        command.say = digit_texts(self._said, views.present)
         self._count_conflicts(views, shared, empty)
         return command
 

@@ -25,8 +25,9 @@ Who decides and who assigns, and the steps before the assigner, are one compiled
 whole team (:func:`~agents.teams.own_view_kernels.before_roles`); the assigner one call for all
 the players that assign when it has a batch form (:meth:`~agents.roles.RoleAssigner.assign_rows`:
 the distance-only ones) and one per player otherwise; following the votes and the goals one
-more call, the dashes and the role figures another (:mod:`agents.teams.own_view_after`). The
-three compiled calls take the team's arrays as one compiled record made on the first cycle
+more call (:mod:`agents.teams.own_view_after`); the dashes and the role figures, after the whole
+brains acted, a last one that also makes what the players say (:meth:`OwnViewPositioning.finish`).
+The three compiled calls take the team's arrays as one compiled record made on the first cycle
 (:mod:`agents.teams.own_view_state`), so each call hands over little more than the players'
 senses of the cycle. Missing from the full
 team's open play: the positions' own runs and the follow-ups of shots (only the shooter
@@ -43,13 +44,13 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from agents import skills
+from agents.messages import CYCLE_MODULUS, WORLD_GRID
 from agents.roles import RoleAssigner, RoleContext, offensive_order
 from agents.roles.voting import VoteBook
 from agents.skills.movement import DEFAULT_PACING
 from agents.skills.pacing import pacing_constants
 from agents.teams import mechanism
 from agents.teams.on_ball import ball_reach
-from agents.messages import ALPHABET_BYTES, CYCLE_MODULUS, WORLD_GRID
 from agents.teams.own_view_kernels import assignment_problems
 from agents.teams.own_view_state import (OTHER_TABLES, PositioningState, before_roles_of, dash_and_say_of,
                                          follow_and_goals_of, state_of)
@@ -189,7 +190,9 @@ class OwnViewPositioning:
             area_y=float(model.penalty_area_half_width), half_length=float(model.half_length), goals=self.goals,
             urgent=self.urgent, phase=self._phase,
             pacing=pacing_constants(model, DEFAULT_PACING, 0.05), budgets=self._budgets,
-            last_followed=self._last_followed, unfilled=float(style.unfilled_distance))
+            last_followed=self._last_followed, unfilled=float(style.unfilled_distance),
+            # what the players say
+            world_grid=WORLD_GRID, vote_modulus=int(CYCLE_MODULUS))
         """The compiled record's fields but the world models', the votes' and the formations'
         (:mod:`agents.teams.own_view_state`; made on the first cycle, :meth:`_state_for`)."""
         self._no_votes, self._no_vote_cycles = np.zeros((n, n, 0), dtype=np.int64), np.zeros((n, n), dtype=np.int64)
@@ -242,19 +245,18 @@ class OwnViewPositioning:
         return self.goals if placed else None
 
     def finish(self, views: PlayerViews, beliefs: TeamBeliefs, votes: VoteBook | None, dash: np.ndarray,
-               say_world: bool, chars: np.ndarray) -> tuple[int, int]:
+               say_world: bool, digits: np.ndarray) -> tuple[int, int]:
         """The end of the cycle, after the whole brains acted, in one compiled call
         (:func:`~agents.teams.own_view_state.dash_and_say_of`): the dashes of the players
-        :meth:`step` positioned into ``dash`` (n, 2) and the role figures; what every player
-        says into ``chars`` (n, 10) uint8, its world message (``say_world``) or its vote; and
-        the believed role conflicts in play on, returned as (roles two players hold, roles
-        nobody holds)."""
+        :meth:`step` positioned into ``dash`` (n, 2) and the role figures; the digits of what
+        every player says into ``digits`` (n, 10), its world message (``say_world``) or its
+        vote; and the believed role conflicts in play on, returned as (roles two players hold,
+        roles nobody holds)."""
         n_rows, n_out = self._counts
         play_on = views.play_mode == PlayMode.PLAY_ON
         switches, mean, largest, far, shared, empty = dash_and_say_of(
             self._state_for(beliefs, votes), n_rows, n_out, play_on, views.position, views.velocity, views.effort,
-            views.stamina, views.capacity, views.cycle, views.half, dash, say_world, beliefs.ball_age, WORLD_GRID,
-            CYCLE_MODULUS, ALPHABET_BYTES, chars)
+            views.stamina, views.capacity, views.cycle, views.half, dash, say_world, digits)
         if play_on and n_out:
             self.figures.add(switches, True, mean, largest, far)
         return shared, empty
@@ -296,7 +298,8 @@ class OwnViewPositioning:
         tables = {situation: self.formation_set.formation(situation).query_tables for situation in Situation}
         votes_of = (self._no_votes, self._no_vote_cycles, 0) if votes is None else \
             (votes.votes, votes.vote_cycle, int(votes.horizon))
-        values = dict(self._record, ball=beliefs.ball, ball_vel=beliefs.ball_vel, mate_pos=beliefs.mate_pos,
+        values = dict(self._record, ball=beliefs.ball, ball_vel=beliefs.ball_vel, ball_age=beliefs.ball_age,
+                      mate_pos=beliefs.mate_pos,
                       opp_pos=beliefs.opp_pos, votes=votes_of[0], vote_cycle=votes_of[1], vote_horizon=votes_of[2],
                       tables_attack=tables[Situation.ATTACK], tables_defend=tables[Situation.DEFEND],
                       tables_our_set_play=tables[Situation.OUR_SET_PLAY],

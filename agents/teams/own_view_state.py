@@ -23,14 +23,14 @@ from numba import njit
 from numba.core import types
 from numba.experimental import structref
 
-from agents.message_kernels import number_chars, vote_number, world_message_number
+from agents.message_kernels import number_digits, vote_number, world_message_number
 from agents.roles.voting import believed_conflicts
 from agents.teams.own_view_after import dash_and_gaps, follow_and_goals
 from agents.teams.own_view_kernels import before_roles
 
 FIELDS = (
     # the world models (TeamBeliefs)
-    "ball", "ball_vel", "mate_pos", "opp_pos",
+    "ball", "ball_vel", "ball_age", "mate_pos", "opp_pos",
     # who assigns (plan_rows' planning) and the votes (its voting)
     "assigned_at", "assigned_mode", "assign_every", "steers", "first_outfield", "votes", "vote_cycle", "vote_horizon",
     # the ball race (read_play)
@@ -53,6 +53,8 @@ FIELDS = (
     # goals, dashes and the role figures
     "stationary", "spots", "outfield", "goalie", "offside_margin", "pressers", "keeper_margin", "area_x", "area_y",
     "half_length", "goals", "urgent", "phase", "pacing", "budgets", "last_followed", "unfilled",
+    # what the players say
+    "world_grid", "vote_modulus",
 )
 """The fields of :class:`PositioningState`, in the order :func:`new_state` takes them (:func:`state_of`
 takes them by name)."""
@@ -148,23 +150,22 @@ def dash_and_gaps_of(s: PositioningState, n_rows: int, n_out: int, play_on: bool
 
 @njit(cache=True, nogil=True)
 def dash_and_say_of(s: PositioningState, n_rows: int, n_out: int, play_on: bool, position, velocity, effort, stamina,
-                    capacity, cycle: int, half: int, dash, say_world: bool, ball_age, grid: tuple, modulus: int,
-                    alphabet, chars) -> tuple[int, float, float, int, int, int]:  # pragma: no cover - compiled
+                    capacity, cycle: int, half: int, dash, say_world: bool,
+                    digits) -> tuple[int, float, float, int, int, int]:  # pragma: no cover - compiled
     """The end of a team's cycle in one call, after its whole brains acted: :func:`dash_and_gaps_of`
-    (its figures are the first four numbers returned), then what every player says into
-    ``chars`` (n, 10) uint8: with ``say_world`` its world message (its believed ball, the
-    ball's ``ball_age`` (n,) and its own position; ``grid``: :data:`agents.messages.WORLD_GRID`),
-    else its proposal as a vote computed at ``cycle`` (``modulus``: the vote cycle's), each
-    through ``alphabet``; and in play on the believed role conflicts
-    (:func:`~agents.roles.voting.believed_conflicts`, the last two numbers; zeros otherwise)."""
+    (its figures are the first four numbers returned), then the digits of what every player
+    says into ``digits`` (n, 10): with ``say_world`` its world message (its believed ball, the
+    ball's age and its own position), else its proposal as a vote computed at ``cycle``; and in
+    play on the believed role conflicts (:func:`~agents.roles.voting.believed_conflicts`, the
+    last two numbers; zeros otherwise)."""
     switches, mean, largest, far = dash_and_gaps_of(s, n_rows, n_out, play_on, position, velocity, effort, stamina,
                                                     capacity, cycle, half, dash)
-    for i in range(chars.shape[0]):
+    for i in range(digits.shape[0]):
         if say_world:
-            number = world_message_number(s.ball[i], s.ball_vel[i], ball_age[i], s.mate_pos[i, i], grid)
+            number = world_message_number(s.ball[i], s.ball_vel[i], s.ball_age[i], s.mate_pos[i, i], s.world_grid)
         else:
-            number = vote_number(s.proposals[i], cycle, modulus)
-        number_chars(number, alphabet, chars[i])
+            number = vote_number(s.proposals[i], cycle, s.vote_modulus)
+        number_digits(number, digits[i])
     shared, empty = 0, 0
     if play_on and s.outfield.shape[0] > 0:
         shared, empty = believed_conflicts(s.followed, s.outfield)

@@ -206,8 +206,9 @@ class AudioChannel:
         """Record what the players say at ``cycle``: ``messages[k][i]`` is player ``i`` of team
         ``k``'s message or None; ``positions`` (players, 2) m at ``cycle``. A bad message is a
         :class:`TeamError` naming its team and player. ``checked``: the caller has checked the
-        messages (:func:`check_team_messages`) and that the positions are finite (a match does,
-        as it reads the commands), so that is not done twice."""
+        messages (:func:`check_team_messages`) and vouches for the positions (a match checks the
+        messages as it reads the commands, and the positions are its own state), so neither is
+        checked twice."""
         if self._said_cycle is not None and cycle <= self._said_cycle:
             raise ValueError(f"AudioChannel.say: cycle {cycle} is not after the last say cycle {self._said_cycle}")
         if len(messages) != 2:

@@ -117,20 +117,28 @@ _SLACK = 1.0e-9
 
 
 @njit(cache=True, nogil=True)
-def _surely_unseen(dx: float, dy: float, bx: float, by: float, cos_half: float, close: float,
-                   prm: np.ndarray) -> bool:  # pragma: no cover - compiled
-    """Whether an object at offset ``(dx, dy)`` is certainly outside the view cone of a player
-    facing ``(bx, by)`` and farther than ``close`` m, judged on squared lengths with
-    :data:`_SLACK` to spare, so most objects out of view need no distance (a square root):
-    when this says True, :func:`_in_cone` and ``dist <= close`` would both say False (False
-    here decides nothing). Only for a cone narrower than a half-plane, not omnidirectional."""
+def _unseen_bounds(cos_half: float, close: float, prm: np.ndarray) -> tuple[float, float]:  # pragma: no cover
+    """:func:`_surely_unseen`'s bounds for one observer: the squared ``close`` distance and the
+    squared cosine of the half view angle, each with :data:`_SLACK` to spare; (inf, 0) -- the
+    shortcut off -- when omnidirectional or for a cone as wide as a half-plane or wider."""
     if prm[P_OMNIDIRECTIONAL] != 0.0 or cos_half <= 0.0:
-        return False
+        return math.inf, 0.0
+    return close * close * (1.0 + _SLACK), cos_half * cos_half * (1.0 - _SLACK)
+
+
+@njit(cache=True, nogil=True)
+def _surely_unseen(dx: float, dy: float, bx: float, by: float, close2: float,
+                   cos2: float) -> bool:  # pragma: no cover - compiled
+    """Whether an object at offset ``(dx, dy)`` is certainly outside the view cone of a player
+    facing ``(bx, by)`` and farther than its close distance, judged on squared lengths with the
+    bounds of :func:`_unseen_bounds`, so most objects out of view need no distance (a square
+    root): when this says True, :func:`_in_cone` and ``dist <= close`` would both say False
+    (False here decides nothing)."""
     d2 = dx * dx + dy * dy
-    if not d2 > close * close * (1.0 + _SLACK):
+    if not d2 > close2:
         return False
     dot = dx * bx + dy * by
-    return dot <= 0.0 or dot * dot < d2 * (cos_half * cos_half) * (1.0 - _SLACK)
+    return dot <= 0.0 or dot * dot < d2 * cos2
 
 
 @njit(cache=True, nogil=True)
@@ -141,12 +149,13 @@ def _localise_one(px: float, py: float, body: float, flags: np.ndarray,
         prm[P_DIRECTION_STEP]
     b = math.radians(body)
     bx, by, cos_half = math.cos(b), math.sin(b), math.cos(math.radians(prm[P_HALF_ANGLE]))
+    close2, cos2 = _unseen_bounds(cos_half, close, prm)
     sx = 0.0
     sy = 0.0
     k = 0
     for f in range(flags.shape[0]):
         dx, dy = flags[f, 0] - px, flags[f, 1] - py
-        if _surely_unseen(dx, dy, bx, by, cos_half, close, prm):
+        if _surely_unseen(dx, dy, bx, by, close2, cos2):
             continue
         dist = math.hypot(dx, dy)
         if not (_in_cone(dx, dy, dist, bx, by, cos_half, prm) or dist <= close):
@@ -182,9 +191,10 @@ def _see_one(ox: float, oy: float, body: float, objects: np.ndarray, me: int, vi
         prm[P_DIRECTION_STEP]
     b = math.radians(body)
     bx, by, cos_half = math.cos(b), math.sin(b), math.cos(math.radians(prm[P_HALF_ANGLE]))
+    close2, cos2 = _unseen_bounds(cos_half, close, prm)
     for j in range(objects.shape[0]):
         dx, dy = objects[j, 0] - ox, objects[j, 1] - oy
-        unseen = _surely_unseen(dx, dy, bx, by, cos_half, close, prm)
+        unseen = _surely_unseen(dx, dy, bx, by, close2, cos2)
         dist = 0.0 if unseen else math.hypot(dx, dy)
         cone = (not unseen) and _in_cone(dx, dy, dist, bx, by, cos_half, prm)
         near = (not unseen) and (not cone) and dist <= close

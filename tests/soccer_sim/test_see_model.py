@@ -212,7 +212,7 @@ def test_the_square_shortcut_changes_no_sighting_and_no_localisation(monkeypatch
     from soccer_sim.perception.localise import DEFAULT_FLAGS
 
     prm = kernels.params_array(SeeParams(visible_angle=angle, omnidirectional=omni))
-    monkeypatch.setattr(kernels, "_surely_unseen", njit(lambda dx, dy, bx, by, cos_half, close, prm: False))
+    monkeypatch.setattr(kernels, "_surely_unseen", njit(lambda dx, dy, bx, by, close2, cos2: False))
     monkeypatch.setattr(kernels, "_see_one", njit(kernels._see_one.py_func))
     monkeypatch.setattr(kernels, "_localise_one", njit(kernels._localise_one.py_func))
     plain_see, plain_localise = njit(kernels.see_into.py_func), njit(kernels.localise_into.py_func)
@@ -246,6 +246,6 @@ def test_the_square_shortcut_changes_no_sighting_and_no_localisation(monkeypatch
         np.testing.assert_array_equal(estimates[0][1], estimates[1][1])
         b = math.radians(body[0])
         cos_half = math.cos(math.radians(half))
-        skipped += sum(kernels._surely_unseen(*(o - obs[0]), math.cos(b), math.sin(b), cos_half, close, prm)
-                       for o in objects)
+        bounds = kernels._unseen_bounds(cos_half, close, prm)
+        skipped += sum(kernels._surely_unseen(*(o - obs[0]), math.cos(b), math.sin(b), *bounds) for o in objects)
     assert (skipped > 0) == (cos_half > 0.0 and not omni)  # the shortcut ran where it may
