@@ -35,6 +35,7 @@ from agents.errors import AgentsError
 from agents.message_kernels import (decode_digits, grid_index, number_digits, vote_digits_rows, vote_number,
                                     world_digits_rows, world_number)
 from soccer_sim.perception.audio import SAY_CHARACTERS
+from soccer_sim.perception.coded import CodedMessages
 from soccer_sim.perception.views import HeardLog
 
 ALPHABET: str = "".join(c for c in SAY_CHARACTERS if c not in " ()")
@@ -280,6 +281,8 @@ def said_bytes(messages: Sequence[str | None]) -> np.ndarray | None:
     """(n, MESSAGE_LENGTH) uint8 the characters of each of ``messages`` (spaces for None, which
     no digit reads as a message), for a compiled decoder of whole deliveries; None when one is
     not MESSAGE_LENGTH ASCII characters (decode such texts with :func:`text_digits`)."""
+    if type(messages) is CodedMessages:  # (a match's delivery of coded messages: as it stands)
+        return messages.silent_spaces() if messages.width == MESSAGE_LENGTH else None
     parts = [_SILENT if m is None else m for m in messages]
     if not parts:
         return np.empty((0, MESSAGE_LENGTH), dtype=np.uint8)
@@ -337,6 +340,13 @@ def vote_texts(assignments: np.ndarray, cycle: int, present: np.ndarray) -> list
     digits = np.empty((assignments.shape[0], MESSAGE_LENGTH), dtype=np.int64)
     vote_digits_rows(assignments, cycle, CYCLE_MODULUS, digits)
     return digit_texts(digits, present)
+
+
+def digit_messages(digits: np.ndarray, present: np.ndarray) -> CodedMessages:
+    """Rows of digits (n, MESSAGE_LENGTH) as a team's messages held as codes, what a command
+    may say (:class:`~soccer_sim.perception.coded.CodedMessages`: no text is made unless read;
+    silent where not ``present``)."""
+    return CodedMessages.of_arrays(ALPHABET_BYTES[digits], np.array(present, dtype=bool))
 
 
 def digit_texts(digits: np.ndarray, present: np.ndarray) -> list[str | None]:

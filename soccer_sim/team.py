@@ -199,7 +199,8 @@ class TeamCommand:
     message said now is heard next cycle by the players within ``audio_cut_dist``
     (:class:`~soccer_sim.perception.views.PlayerViews` ``heard_mates`` / ``heard_opponents``).
     Under full observation messages are checked but reach nobody. A bad message is a TeamError
-    naming the player."""
+    naming the player. Messages of one width may come as a
+    :class:`~soccer_sim.perception.coded.CodedMessages` (their characters as codes)."""
 
 
 @runtime_checkable

@@ -12,10 +12,13 @@ cycle (one numpy call for all positions and velocities); teams must copy what th
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
 
 from soccer_sim.kernels import mirror_bodies, store_command
-from soccer_sim.perception.audio import AudioParams, check_team_messages
+from soccer_sim.perception.audio import AudioParams, check_coded_messages, check_team_messages
+from soccer_sim.perception.coded import CodedMessages, allowed_codes
 from soccer_sim.state import NO_PLAYER, StateError, WorldState
 from soccer_sim.team import TeamCommand, TeamError, TeamView
 
@@ -72,10 +75,12 @@ class TeamFrame:
         """(n,) the last command's tackle directions, absolute frame, radians (NaN: none)."""
         self.foul = np.zeros(n, dtype=bool)
         """(n,) the last command's foul flags."""
-        self.said: tuple[str | None, ...] | None = None
-        """The last command's messages (one per player, None: silent), or None if nobody spoke."""
+        self.said: Sequence[str | None] | None = None
+        """The last command's messages (one per player, None: silent; a tuple, or the team's
+        :class:`~soccer_sim.perception.coded.CodedMessages`), or None if nobody spoke."""
         self._audio = audio
         self._allowed = frozenset(audio.characters)
+        self._allowed_codes = allowed_codes(audio.characters)
         self._commands = commands[self.rows]
         self._dash = self._commands[:, 0:2]
         self._kick = self._commands[:, 2:4]
@@ -135,9 +140,13 @@ class TeamFrame:
         self.said = None if said is None else self._read_say(said)
         return catch, move
 
-    def _read_say(self, said: object) -> tuple[str | None, ...]:
+    def _read_say(self, said: object) -> Sequence[str | None]:
         """The messages of ``command.say`` (one per player, str or None), each checked against
-        the channel's rules (:func:`~soccer_sim.perception.audio.check_team_messages`)."""
+        the channel's rules (:func:`~soccer_sim.perception.audio.check_team_messages`; codes
+        by :func:`~soccer_sim.perception.audio.check_coded_messages`)."""
+        if type(said) is CodedMessages:
+            check_coded_messages(said, self.n, self._audio, self.name, self._allowed_codes)
+            return said
         if isinstance(said, (str, bytes)) or not hasattr(said, "__len__") or not hasattr(said, "__iter__"):
             raise TeamError(self.name, f"command.say must be a sequence of {self.n} messages (str or None), "
                                        f"got {type(said).__name__}")

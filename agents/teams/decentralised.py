@@ -43,7 +43,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from agents.messages import MESSAGE_LENGTH, digit_texts
+from agents.messages import MESSAGE_LENGTH, digit_messages
 from agents.roles.voting import VoteBook
 from agents.teams.own_view import PLACED, OwnViewPositioning
 from agents.teams.own_view_kernels import whole_brain_rows
@@ -166,7 +166,7 @@ class DecentralisedPlay:
             self.beliefs.kicked(command.kick, self._kickable)
         say_world = views.cycle % 2 == 0 or self.votes is None
         shared, empty = self.positioning.finish(views, self.beliefs, self.votes, command.dash, say_world, self._said)
-        command.say = digit_texts(self._said, views.present)
+        command.say = digit_messages(self._said, views.present)
         self._count_conflicts(views, shared, empty)
         return command
 

@@ -44,6 +44,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from soccer_sim.config_checks import ConfigError
+from soccer_sim.perception.coded import SILENT_CODE, CodedMessages, allowed_codes, first_bad_row
 from soccer_sim.perception.kernels import arrivals, choose_heard
 from soccer_sim.team import TeamError
 
@@ -125,6 +126,25 @@ def check_team_messages(messages: Sequence[str | None], size: int, params: Audio
             check_message(msg, params, team_name, i)
 
 
+def check_coded_messages(messages: CodedMessages, size: int, params: AudioParams = AudioParams(),
+                         team_name: str = "?", allowed: np.ndarray | None = None) -> None:
+    """:func:`check_team_messages` for messages held as codes (``allowed``: (256,) bool, the
+    codes of ``params.characters`` (:func:`~soccer_sim.perception.coded.allowed_codes`), given
+    by callers that check every cycle): one table look-up per character."""
+    if len(messages) != size:
+        raise TeamError(team_name, f"{len(messages)} say messages for {size} players")
+    speaks = messages.speaks
+    if not speaks.any():
+        return
+    if 0 < messages.width <= params.say_msg_size:
+        table = allowed_codes(params.characters) if allowed is None else allowed
+        bad = first_bad_row(messages.codes, speaks, table)
+    else:
+        bad = int(np.argmax(speaks))
+    if bad >= 0:
+        check_message(messages[bad], params, team_name, bad)  # (raises, saying what is wrong)
+
+
 @dataclass(frozen=True)
 class Heard:
     """What every player hears at ``cycle`` (messages said at ``cycle - 1``). Players are
@@ -185,11 +205,12 @@ class AudioChannel:
         self._cap = np.full((n, 2), params.hear_max, dtype=np.int64)  # [:, 0] team-mates, [:, 1] opponents
         self._cap_cycle: int | None = None
         self._said_cycle: int | None = None
-        self._messages: tuple[str | None, ...] = (None,) * n
+        self._messages: Sequence[str | None] = (None,) * n
         self._arrived = np.zeros((n, n), dtype=bool)
         self._spoke = False
         """Whether anybody said anything in the last say."""
         self._allowed = frozenset(params.characters)
+        self._allowed_codes = allowed_codes(params.characters)
 
     @property
     def players(self) -> int:
@@ -213,20 +234,29 @@ class AudioChannel:
             raise ValueError(f"AudioChannel.say: cycle {cycle} is not after the last say cycle {self._said_cycle}")
         if len(messages) != 2:
             raise ValueError(f"AudioChannel.say: messages must hold one sequence per team (2), got {len(messages)}")
-        flat: list[str | None] = []
-        for k, (team_msgs, size) in enumerate(zip(messages, self.team_sizes)):
-            if not checked:
-                check_team_messages(team_msgs, size, self.params, self.team_names[k], self._allowed)
-            flat.extend(team_msgs)
+        if not checked:
+            for k, (team_msgs, size) in enumerate(zip(messages, self.team_sizes)):
+                if type(team_msgs) is CodedMessages:
+                    check_coded_messages(team_msgs, size, self.params, self.team_names[k], self._allowed_codes)
+                else:
+                    check_team_messages(team_msgs, size, self.params, self.team_names[k], self._allowed)
         pos = np.asarray(positions, dtype=np.float64)
         if pos.shape != (self.players, 2) or not (checked or np.all(np.isfinite(pos))):
             raise ValueError(f"AudioChannel.say: positions must be finite, shape ({self.players}, 2); got {pos.shape}")
-        self._messages, self._said_cycle = tuple(flat), int(cycle)
-        self._spoke = flat.count(None) < len(flat)
+        said = _coded_together(messages)
+        if said is None:
+            flat: list[str | None] = []
+            for team_msgs in messages:
+                flat.extend(team_msgs)
+            self._messages = tuple(flat)
+            spoke = np.array([m is not None for m in flat], dtype=bool)
+        else:
+            self._messages, spoke = said, said.speaks
+        self._said_cycle = int(cycle)
+        self._spoke = bool(np.count_nonzero(spoke))
         if not self._spoke:  # a silent cycle: nothing arrives anywhere
             self._arrived = np.zeros((self.players, self.players), dtype=bool)
             return
-        spoke = np.array([m is not None for m in flat], dtype=bool)
         self._arrived = np.empty((self.players, self.players), dtype=bool)
         arrivals(pos, spoke, float(self.params.audio_cut_dist), self._arrived)
 
@@ -242,14 +272,15 @@ class AudioChannel:
         direction = None
         if positions is not None or body_dirs is not None:
             direction = self._directions(heard, positions, body_dirs)
-        return Heard(cycle=int(cycle), messages=messages, arrived=arrived, heard=heard, team=self.team,
+        return Heard(cycle=int(cycle), messages=tuple(messages), arrived=arrived, heard=heard, team=self.team,
                      direction=direction)
 
     def deliver(self, cycle: int, rng: np.random.Generator,
-                attention: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, tuple[str | None, ...]]:
+                attention: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, Sequence[str | None]]:
         """:meth:`hear`'s delivery without its :class:`Heard` record (a match's every-cycle
         path): the ``arrived`` and ``heard`` (listeners, speakers) bool arrays and the messages
-        said at ``cycle - 1``, one per player (None: said nothing)."""
+        said at ``cycle - 1``, one per player (None: said nothing; a
+        :class:`~soccer_sim.perception.coded.CodedMessages` when both teams said theirs so)."""
         p = self.params
         n = self.players
         cap = self._cap
@@ -287,3 +318,23 @@ class AudioChannel:
         rel = np.degrees(np.arctan2(diff[..., 1], diff[..., 0])) - body[:, None]
         rel = 180.0 - (180.0 - rel) % 360.0  # folded into (-180, 180]
         return np.where(heard, np.trunc(rel), np.nan)
+
+
+def _coded_together(messages: Sequence[Sequence[str | None]]) -> CodedMessages | None:
+    """Both teams' messages as one :class:`CodedMessages` (silent rows spaces) when each team
+    gave one of a common width, or one gives one and the other says nothing; else None."""
+    parts = list(messages)
+    coded = [m for m in parts if type(m) is CodedMessages]
+    if not coded or coded[-1].width != coded[0].width:
+        return None
+    for k, team_msgs in enumerate(parts):
+        if type(team_msgs) is not CodedMessages:
+            if any(m is not None for m in team_msgs):
+                return None
+            parts[k] = CodedMessages.of_arrays(np.empty((len(team_msgs), coded[0].width), dtype=np.uint8),
+                                               np.zeros(len(team_msgs), dtype=bool))
+    speaks = np.concatenate((parts[0].speaks, parts[1].speaks))
+    codes = np.concatenate((parts[0].codes, parts[1].codes))
+    if np.count_nonzero(speaks) < speaks.shape[0]:
+        codes[~speaks] = SILENT_CODE
+    return CodedMessages.of_arrays(codes, speaks)
