@@ -26,13 +26,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from agents.skills.ball_kernels import (LEAD_CAP, beyond_line, deciding_cycles, lane_arrivals, offside_line,
-                                        pass_scores, pass_targets)
+from agents.skills.ball_kernels import LEAD_CAP, beyond_line, offside_line
 from agents.skills.context import SkillContext
-from agents.skills.interception import UNREACHABLE, intercept_checked
-from agents.skills.interception_kernels import EVERYONE
-from agents.skills.kicking import kick_for_velocity
 from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, float_array
+from agents.skills.pass_search import PLAN_FLOATS, PLAN_INTS, best_pass_search, pass_receivers
 from soccer_sim.team import TeamView
 
 __all__ = ["LEAD_CAP", "PassParams", "PassPlan", "best_pass", "offside_line", "offside_positions", "pass_candidates"]
@@ -140,56 +137,44 @@ def best_pass(ctx: SkillContext, view: TeamView, passer: int, params: PassParams
     """The best safe pass for ``passer`` (who must be able to kick the ball), or None.
 
     ``holder``: the passer is our goalkeeper holding the ball (kicks at full effectiveness).
+    The search is one compiled call (:func:`agents.skills.pass_search.best_pass_search`).
     """
     model = ctx.model
-    receivers = pass_candidates(ctx, view, passer, params)
+    passer = check_player(passer, model.players_per_team, "passer")
+    arrays = ctx.arrays(view)
+    ours, theirs = arrays.ours, arrays.theirs
+    goalie = model.goalie_index if not params.allow_goalie else -1
+    receivers = pass_receivers(ours.pos, theirs.pos, float(arrays.ball[0, 0]),
+                               model.offside and theirs.pos.shape[0] >= 2, passer, goalie)
     if receivers.size == 0:
         return None
-    ball = np.asarray(view.ball, np.float64)
-    size = receivers.size * len(params.leads) * len(params.arrival_speeds)
-    targets, wanted = np.empty((size, 2)), np.empty((size, 2))
-    owners = np.empty(size, dtype=np.int64)
+    leads, speeds, lanes, kicking, search, scoring = ctx.table(("best_pass", params), lambda: _constants(ctx, params))
+    radius, catch = ctx.opponent_radii(params.opponent_margin)
+    plan_f, plan_i = np.empty(PLAN_FLOATS), np.empty(PLAN_INTS, dtype=np.int64)
+    if not best_pass_search(ours.pos, ours.vel, theirs.pos, arrays.ball, arrays.ball_vel, receivers, passer,
+                            bool(holder), leads, speeds, lanes, kicking,
+                            (ours.pos, ours.vel, ours.effort, ours.radius, ours.catch_radius),
+                            (theirs.pos, theirs.vel, theirs.effort, radius, catch), search, scoring, plan_f, plan_i):
+        return None
+    return PassPlan(receiver=int(plan_i[0]), target=plan_f[0:2].copy(), receive_point=plan_f[2:4].copy(),
+                    kick=plan_f[4:6].copy(), ball_vel=plan_f[6:8].copy(), arrival_cycle=int(plan_i[1]),
+                    receive_cycle=int(plan_i[2]), opponent_cycle=int(plan_i[3]), score=float(plan_f[8]))
+
+
+def _constants(ctx: SkillContext, params: PassParams) -> tuple:
+    """:func:`best_pass_search`'s arguments that hold for a match and ``params``: the leads
+    and arrival speeds, and its ``lanes``, ``kicking``, ``search`` and ``scoring`` tuples."""
+    model = ctx.model
     leads = np.asarray(params.leads, dtype=np.float64).reshape(-1, 2)
-    count = pass_targets(view.own_pos, receivers, leads, np.asarray(params.arrival_speeds, dtype=np.float64), ball,
-                          model.half_length - params.field_margin, model.half_width - params.field_margin,
-                          params.min_distance, params.max_distance, model.ball_decay, targets, owners, wanted)
-    if count == 0:
-        return None
-    targets, owners, wanted = targets[:count], owners[:count], wanted[:count]
-    kicks, velocities = kick_for_velocity(model, view.own_pos[passer], ball, view.ball_vel, wanted, holder,
-                                          view.own_vel[passer])
-    arrival = np.empty(count, dtype=np.int64)
-    limit = np.empty(count, dtype=np.int64)
-    usable = lane_arrivals(targets, wanted, velocities, ball, model.ball_decay, model.horizon, params.extra_cycles,
-                           arrival, limit)
-    if usable.size == 0:
-        return None
-    vel_u, own_u, lim_u, arrival_u = velocities[usable], owners[usable], limit[usable], arrival[usable]
-    # The lanes' searches (as teammate_cycles and opponent_cycles make them): the receiver
-    # alone on each lane, then every opponent up to the cycle that can still decide (all
-    # arrays made here, in the search's form: no checks needed).
-    arrays = ctx.arrays(view)
-    ours, our_points = intercept_checked(ctx, arrays.ball, vel_u, arrays.ours, -1.0, lim_u, 0, False, own_u)
-    rows = np.arange(usable.size)
-    receive, received_at = ours[rows, own_u], our_points[rows, own_u]
-    opponents = arrays.theirs.with_radii(*ctx.opponent_radii(params.opponent_margin))
-    theirs = intercept_checked(ctx, arrays.ball, vel_u, opponents, 1.0,
-                               deciding_cycles(receive, arrival_u, lim_u, params.min_lead), 1, True,
-                               EVERYONE)[0].min(axis=1, initial=UNREACHABLE)
-    effort = arrays.ours.effort
-    score = np.empty(usable.size)
-    points = np.empty((usable.size, 2))
-    best = pass_scores(targets[usable], received_at, receive, theirs, arrival_u, own_u, view.own_pos,
-                       view.own_vel, effort, view.opp_pos, ball, model.reach, float(model.player_coast[-1]),
-                       model.kickable_distance, model.half_length, params.min_lead, score, points,
-                       params.weight_forward, params.weight_goal, params.weight_space, params.weight_lead)
-    if best < 0:
-        return None
-    j = int(usable[best])
-    return PassPlan(receiver=int(owners[j]), target=targets[j].copy(), receive_point=points[best].copy(),
-                    kick=kicks[j].copy(), ball_vel=velocities[j].copy(), arrival_cycle=int(arrival[j]),
-                    receive_cycle=int(receive[best]), opponent_cycle=int(theirs[best]), score=float(score[best]))
-
-
-
-
+    speeds = np.asarray(params.arrival_speeds, dtype=np.float64)
+    lanes = (float(model.half_length - params.field_margin), float(model.half_width - params.field_margin),
+             float(params.min_distance), float(params.max_distance), float(model.ball_decay), int(model.horizon),
+             int(params.extra_cycles), int(params.min_lead))
+    kicking = (float(model.kick_speed_max), float(model.ball_speed_max), float(model.kick_distance_penalty),
+               float(model.kick_angle_penalty), float(model.kickable_margin), float(model.touch_distance),
+               float(model.inertia_moment))
+    search = (model.reach, model.ball_travel, model.player_coast, tuple(float(c) for c in ctx.intercept_constants))
+    scoring = (model.reach, float(model.player_coast[-1]), float(model.kickable_distance), float(model.half_length),
+               float(params.weight_forward), float(params.weight_goal), float(params.weight_space),
+               float(params.weight_lead))
+    return leads, speeds, lanes, kicking, search, scoring
