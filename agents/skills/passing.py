@@ -123,13 +123,12 @@ def pass_candidates(ctx: SkillContext, view: TeamView, passer: int, params: Pass
     """Indices of the team-mates the ``passer`` may pass to (not itself, not offside, the
     goalkeeper only when ``params.allow_goalie``)."""
     model = ctx.model
-    n = model.players_per_team
-    passer = check_player(passer, n, "passer")
-    ok = ~offside_positions(model, view.own_pos, view.opp_pos, view.ball)
-    ok[passer] = False
-    if not params.allow_goalie and model.goalie_index >= 0:
-        ok[model.goalie_index] = False
-    return np.flatnonzero(ok)
+    passer = check_player(passer, model.players_per_team, "passer")
+    arrays = ctx.arrays(view)
+    ours, theirs = arrays.ours, arrays.theirs
+    goalie = model.goalie_index if not params.allow_goalie else -1
+    return pass_receivers(ours.pos, theirs.pos, float(arrays.ball[0, 0]), model.offside and theirs.pos.shape[0] >= 2,
+                          passer, goalie)
 
 
 def best_pass(ctx: SkillContext, view: TeamView, passer: int, params: PassParams = PassParams(),
@@ -139,15 +138,12 @@ def best_pass(ctx: SkillContext, view: TeamView, passer: int, params: PassParams
     ``holder``: the passer is our goalkeeper holding the ball (kicks at full effectiveness).
     The search is one compiled call (:func:`agents.skills.pass_search.best_pass_search`).
     """
-    model = ctx.model
-    passer = check_player(passer, model.players_per_team, "passer")
-    arrays = ctx.arrays(view)
-    ours, theirs = arrays.ours, arrays.theirs
-    goalie = model.goalie_index if not params.allow_goalie else -1
-    receivers = pass_receivers(ours.pos, theirs.pos, float(arrays.ball[0, 0]),
-                               model.offside and theirs.pos.shape[0] >= 2, passer, goalie)
+    receivers = pass_candidates(ctx, view, passer, params)
     if receivers.size == 0:
         return None
+    arrays = ctx.arrays(view)
+    ours, theirs = arrays.ours, arrays.theirs
+    passer = int(passer)
     leads, speeds, lanes, kicking, search, scoring = ctx.table(("best_pass", params), lambda: _constants(ctx, params))
     radius, catch = ctx.opponent_radii(params.opponent_margin)
     plan_f, plan_i = np.empty(PLAN_FLOATS), np.empty(PLAN_INTS, dtype=np.int64)
