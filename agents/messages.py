@@ -351,9 +351,7 @@ def digit_messages(digits: np.ndarray, present: np.ndarray) -> CodedMessages:
 
 def digit_texts(digits: np.ndarray, present: np.ndarray) -> list[str | None]:
     """Rows of digits (n, MESSAGE_LENGTH) as message texts (None where not ``present``)."""
-    raw = ALPHABET_BYTES[digits].tobytes().decode("ascii")
-    return [raw[i * MESSAGE_LENGTH:(i + 1) * MESSAGE_LENGTH] if there else None
-            for i, there in enumerate(present.tolist())]
+    return list(digit_messages(digits, present))
 
 
 WORLD_GRID = (X_RANGE, Y_RANGE, V_RANGE, _PER_M, _PER_V, MAX_AGE, _NX, _NY, _NV, _NAGE)

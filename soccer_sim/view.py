@@ -17,8 +17,8 @@ from collections.abc import Sequence
 import numpy as np
 
 from soccer_sim.kernels import mirror_bodies, store_command
-from soccer_sim.perception.audio import AudioParams, check_coded_messages, check_team_messages
-from soccer_sim.perception.coded import CodedMessages, allowed_codes
+from soccer_sim.perception.audio import AudioParams, check_team_messages
+from soccer_sim.perception.coded import CodedMessages
 from soccer_sim.state import NO_PLAYER, StateError, WorldState
 from soccer_sim.team import TeamCommand, TeamError, TeamView
 
@@ -80,7 +80,6 @@ class TeamFrame:
         :class:`~soccer_sim.perception.coded.CodedMessages`), or None if nobody spoke."""
         self._audio = audio
         self._allowed = frozenset(audio.characters)
-        self._allowed_codes = allowed_codes(audio.characters)
         self._commands = commands[self.rows]
         self._dash = self._commands[:, 0:2]
         self._kick = self._commands[:, 2:4]
@@ -142,10 +141,10 @@ class TeamFrame:
 
     def _read_say(self, said: object) -> Sequence[str | None]:
         """The messages of ``command.say`` (one per player, str or None), each checked against
-        the channel's rules (:func:`~soccer_sim.perception.audio.check_team_messages`; codes
-        by :func:`~soccer_sim.perception.audio.check_coded_messages`)."""
+        the channel's rules (:func:`~soccer_sim.perception.audio.check_team_messages`); messages
+        held as codes are kept as they are (a ``CodedMessages``), others as a tuple."""
         if type(said) is CodedMessages:
-            check_coded_messages(said, self.n, self._audio, self.name, self._allowed_codes)
+            check_team_messages(said, self.n, self._audio, self.name)
             return said
         if isinstance(said, (str, bytes)) or not hasattr(said, "__len__") or not hasattr(said, "__iter__"):
             raise TeamError(self.name, f"command.say must be a sequence of {self.n} messages (str or None), "

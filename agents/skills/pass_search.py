@@ -42,21 +42,21 @@ def pass_receivers(own_pos: np.ndarray, opp_pos: np.ndarray, ball_x: float, offs
 
 
 @njit(cache=True, nogil=True)
-def best_pass_search(own_pos: np.ndarray, own_vel: np.ndarray, opp_pos: np.ndarray, ball: np.ndarray,
-                     ball_vel: np.ndarray, receivers: np.ndarray, passer: int, holder: bool, leads: np.ndarray,
-                     speeds: np.ndarray, lanes: tuple, kicking: tuple, ours: tuple, theirs: tuple, search: tuple,
-                     scoring: tuple, plan_f: np.ndarray, plan_i: np.ndarray) -> bool:  # pragma: no cover
+def best_pass_search(ball: np.ndarray, ball_vel: np.ndarray, receivers: np.ndarray, passer: int, holder: bool,
+                     leads: np.ndarray, speeds: np.ndarray, lanes: tuple, kicking: tuple, ours: tuple, theirs: tuple,
+                     search: tuple, scoring: tuple, plan_f: np.ndarray, plan_i: np.ndarray) -> bool:  # pragma: no cover
     """The best safe pass of ``passer`` to one of ``receivers`` into ``plan_f`` (:data:`PLAN_FLOATS`)
     and ``plan_i`` (:data:`PLAN_INTS`); False when there is none.
 
     ``ball`` and ``ball_vel`` are (1, 2) rows; the tuples hold the kernels' other arguments:
     ``lanes`` (x_max, y_max, min_distance, max_distance, decay, horizon, extra_cycles, min_lead),
     ``kicking`` (:func:`~agents.skills.ball_kernels.kick_kernel`'s model constants),
-    ``ours`` and ``theirs`` (positions, velocities, efforts, radii, catch radii of the
-    searches: ours as the view's checked arrays, theirs with the opponent margin), ``search``
+    ``ours`` and ``theirs`` (the view's checked positions, velocities and efforts, and the
+    searches' radii and catch radii: theirs with the opponent margin), ``search``
     (reach, ball travel, player coast, the nine interception constants) and ``scoring``
     (reach, coast, kickable, half length, the four weights)."""
     x_max, y_max, min_distance, max_distance, decay, horizon, extra, min_lead = lanes
+    own_pos, own_vel, opp_pos = ours[0], ours[1], theirs[0]
     size = receivers.shape[0] * leads.shape[0] * speeds.shape[0]
     targets, wanted = np.empty((size, 2)), np.empty((size, 2))
     owners = np.empty(size, dtype=np.int64)

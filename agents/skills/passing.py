@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from agents.skills.ball_kernels import LEAD_CAP, beyond_line, offside_line
-from agents.skills.context import SkillContext
+from agents.skills.context import SkillContext, ViewArrays
 from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, float_array
 from agents.skills.pass_search import PLAN_FLOATS, PLAN_INTS, best_pass_search, pass_receivers
 from soccer_sim.team import TeamView
@@ -122,13 +122,17 @@ def offside_positions(model: MotionModel, own_pos: np.ndarray, opp_pos: np.ndarr
 def pass_candidates(ctx: SkillContext, view: TeamView, passer: int, params: PassParams = PassParams()) -> np.ndarray:
     """Indices of the team-mates the ``passer`` may pass to (not itself, not offside, the
     goalkeeper only when ``params.allow_goalie``)."""
+    passer = check_player(passer, ctx.model.players_per_team, "passer")
+    return _receivers(ctx, ctx.arrays(view), passer, params)
+
+
+def _receivers(ctx: SkillContext, arrays: ViewArrays, passer: int, params: PassParams) -> np.ndarray:
+    """:func:`pass_candidates` on the view's checked ``arrays``."""
     model = ctx.model
-    passer = check_player(passer, model.players_per_team, "passer")
-    arrays = ctx.arrays(view)
-    ours, theirs = arrays.ours, arrays.theirs
-    goalie = model.goalie_index if not params.allow_goalie else -1
-    return pass_receivers(ours.pos, theirs.pos, float(arrays.ball[0, 0]), model.offside and theirs.pos.shape[0] >= 2,
-                          passer, goalie)
+    theirs = arrays.theirs
+    return pass_receivers(arrays.ours.pos, theirs.pos, float(arrays.ball[0, 0]),
+                          model.offside and theirs.pos.shape[0] >= 2, passer,
+                          model.goalie_index if not params.allow_goalie else -1)
 
 
 def best_pass(ctx: SkillContext, view: TeamView, passer: int, params: PassParams = PassParams(),
@@ -138,18 +142,17 @@ def best_pass(ctx: SkillContext, view: TeamView, passer: int, params: PassParams
     ``holder``: the passer is our goalkeeper holding the ball (kicks at full effectiveness).
     The search is one compiled call (:func:`agents.skills.pass_search.best_pass_search`).
     """
-    receivers = pass_candidates(ctx, view, passer, params)
+    passer = check_player(passer, ctx.model.players_per_team, "passer")
+    arrays = ctx.arrays(view)
+    receivers = _receivers(ctx, arrays, passer, params)
     if receivers.size == 0:
         return None
-    arrays = ctx.arrays(view)
     ours, theirs = arrays.ours, arrays.theirs
-    passer = int(passer)
     leads, speeds, lanes, kicking, search, scoring = ctx.table(("best_pass", params), lambda: _constants(ctx, params))
     radius, catch = ctx.opponent_radii(params.opponent_margin)
     plan_f, plan_i = np.empty(PLAN_FLOATS), np.empty(PLAN_INTS, dtype=np.int64)
-    if not best_pass_search(ours.pos, ours.vel, theirs.pos, arrays.ball, arrays.ball_vel, receivers, passer,
-                            bool(holder), leads, speeds, lanes, kicking,
-                            (ours.pos, ours.vel, ours.effort, ours.radius, ours.catch_radius),
+    if not best_pass_search(arrays.ball, arrays.ball_vel, receivers, passer, bool(holder), leads, speeds, lanes,
+                            kicking, (ours.pos, ours.vel, ours.effort, ours.radius, ours.catch_radius),
                             (theirs.pos, theirs.vel, theirs.effort, radius, catch), search, scoring, plan_f, plan_i):
         return None
     return PassPlan(receiver=int(plan_i[0]), target=plan_f[0:2].copy(), receive_point=plan_f[2:4].copy(),

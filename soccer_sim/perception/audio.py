@@ -113,7 +113,11 @@ def check_team_messages(messages: Sequence[str | None], size: int, params: Audio
                         team_name: str = "?", allowed: frozenset[str] | None = None) -> None:
     """Raise :class:`TeamError` unless ``messages`` holds ``size`` entries, each None or a
     message :func:`check_message` accepts (the usual good message passes a fast test first;
-    ``allowed``: ``frozenset(params.characters)``, given by callers that check every cycle)."""
+    ``allowed``: ``frozenset(params.characters)``, given by callers that check every cycle;
+    a :class:`~soccer_sim.perception.coded.CodedMessages` goes to :func:`check_coded_messages`)."""
+    if type(messages) is CodedMessages:
+        check_coded_messages(messages, size, params, team_name)
+        return
     if len(messages) != size:
         raise TeamError(team_name, f"{len(messages)} say messages for {size} players")
     limit = params.say_msg_size
@@ -127,18 +131,16 @@ def check_team_messages(messages: Sequence[str | None], size: int, params: Audio
 
 
 def check_coded_messages(messages: CodedMessages, size: int, params: AudioParams = AudioParams(),
-                         team_name: str = "?", allowed: np.ndarray | None = None) -> None:
-    """:func:`check_team_messages` for messages held as codes (``allowed``: (256,) bool, the
-    codes of ``params.characters`` (:func:`~soccer_sim.perception.coded.allowed_codes`), given
-    by callers that check every cycle): one table look-up per character."""
+                         team_name: str = "?") -> None:
+    """:func:`check_team_messages` for messages held as codes: one look-up per character in the
+    table of ``params.characters`` (:func:`~soccer_sim.perception.coded.allowed_codes`)."""
     if len(messages) != size:
         raise TeamError(team_name, f"{len(messages)} say messages for {size} players")
     speaks = messages.speaks
     if not speaks.any():
         return
     if 0 < messages.width <= params.say_msg_size:
-        table = allowed_codes(params.characters) if allowed is None else allowed
-        bad = first_bad_row(messages.codes, speaks, table)
+        bad = first_bad_row(messages.codes, speaks, allowed_codes(params.characters))
     else:
         bad = int(np.argmax(speaks))
     if bad >= 0:
@@ -210,7 +212,6 @@ class AudioChannel:
         self._spoke = False
         """Whether anybody said anything in the last say."""
         self._allowed = frozenset(params.characters)
-        self._allowed_codes = allowed_codes(params.characters)
 
     @property
     def players(self) -> int:
@@ -236,10 +237,7 @@ class AudioChannel:
             raise ValueError(f"AudioChannel.say: messages must hold one sequence per team (2), got {len(messages)}")
         if not checked:
             for k, (team_msgs, size) in enumerate(zip(messages, self.team_sizes)):
-                if type(team_msgs) is CodedMessages:
-                    check_coded_messages(team_msgs, size, self.params, self.team_names[k], self._allowed_codes)
-                else:
-                    check_team_messages(team_msgs, size, self.params, self.team_names[k], self._allowed)
+                check_team_messages(team_msgs, size, self.params, self.team_names[k], self._allowed)
         pos = np.asarray(positions, dtype=np.float64)
         if pos.shape != (self.players, 2) or not (checked or np.all(np.isfinite(pos))):
             raise ValueError(f"AudioChannel.say: positions must be finite, shape ({self.players}, 2); got {pos.shape}")

@@ -11,6 +11,7 @@ string ever being made. A text is made only when somebody reads an item.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Iterator, Sequence
 
 import numpy as np
@@ -98,10 +99,13 @@ class CodedMessages(Sequence):
         return f"CodedMessages({tuple(self)!r})"
 
 
+@functools.lru_cache(maxsize=8)
 def allowed_codes(characters: str) -> np.ndarray:
-    """(256,) bool: the codes of ``characters`` (the channel's allowed set)."""
+    """(256,) bool, read only: the codes of ``characters`` (the channel's allowed set), made once
+    per set."""
     table = np.zeros(256, dtype=bool)
     table[[ord(c) for c in characters if ord(c) < 256]] = True
+    table.setflags(write=False)
     return table
 
 
