@@ -45,7 +45,7 @@ import numpy as np
 
 from soccer_sim.config_checks import ConfigError
 from soccer_sim.perception.coded import SILENT_CODE, CodedMessages, allowed_codes, first_bad_row
-from soccer_sim.perception.kernels import arrivals, choose_heard
+from soccer_sim.perception.kernels import arrivals, choose_heard, join_said
 from soccer_sim.team import TeamError
 
 SAY_CHARACTERS: str = ("-0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
@@ -137,12 +137,10 @@ def check_coded_messages(messages: CodedMessages, size: int, params: AudioParams
     if len(messages) != size:
         raise TeamError(team_name, f"{len(messages)} say messages for {size} players")
     speaks = messages.speaks
-    if not speaks.any():
-        return
     if 0 < messages.width <= params.say_msg_size:
         bad = first_bad_row(messages.codes, speaks, allowed_codes(params.characters))
-    else:
-        bad = int(np.argmax(speaks))
+    else:  # (every message of this width is refused: the first speaker's)
+        bad = int(np.argmax(speaks)) if speaks.any() else -1
     if bad >= 0:
         check_message(messages[bad], params, team_name, bad)  # (raises, saying what is wrong)
 
@@ -241,16 +239,22 @@ class AudioChannel:
         pos = np.asarray(positions, dtype=np.float64)
         if pos.shape != (self.players, 2) or not (checked or np.all(np.isfinite(pos))):
             raise ValueError(f"AudioChannel.say: positions must be finite, shape ({self.players}, 2); got {pos.shape}")
-        said = _coded_together(messages)
-        if said is None:
-            flat: list[str | None] = []
-            for team_msgs in messages:
-                flat.extend(team_msgs)
-            self._messages = tuple(flat)
-            spoke = np.array([m is not None for m in flat], dtype=bool)
-        else:
-            self._messages, spoke = said, said.speaks
         self._said_cycle = int(cycle)
+        coded = _as_coded_pair(messages)
+        if coded is not None:  # (the usual case: one compiled call)
+            first, second = coded
+            n = self.players
+            codes, speaks = np.empty((n, first.width), dtype=np.uint8), np.empty(n, dtype=bool)
+            self._arrived = np.empty((n, n), dtype=bool)
+            self._spoke = join_said(first.codes, first.speaks, second.codes, second.speaks, pos,
+                                    float(self.params.audio_cut_dist), SILENT_CODE, codes, speaks, self._arrived)
+            self._messages = CodedMessages.of_arrays(codes, speaks)
+            return
+        flat: list[str | None] = []
+        for team_msgs in messages:
+            flat.extend(team_msgs)
+        self._messages = tuple(flat)
+        spoke = np.array([m is not None for m in flat], dtype=bool)
         self._spoke = bool(np.count_nonzero(spoke))
         if not self._spoke:  # a silent cycle: nothing arrives anywhere
             self._arrived = np.zeros((self.players, self.players), dtype=bool)
@@ -318,21 +322,16 @@ class AudioChannel:
         return np.where(heard, np.trunc(rel), np.nan)
 
 
-def _coded_together(messages: Sequence[Sequence[str | None]]) -> CodedMessages | None:
-    """Both teams' messages as one :class:`CodedMessages` (silent rows spaces) when each team
-    gave one of a common width, or one gives one and the other says nothing; else None."""
-    parts = list(messages)
-    coded = [m for m in parts if type(m) is CodedMessages]
-    if not coded or coded[-1].width != coded[0].width:
+def _as_coded_pair(messages: Sequence[Sequence[str | None]]) -> tuple[CodedMessages, CodedMessages] | None:
+    """Both teams' messages as two :class:`CodedMessages` of one width, the channel's stored
+    form, when each team gave one of a common width, or one gave one and the other says
+    nothing; else None (the messages are kept as texts)."""
+    first, second = messages
+    if type(first) is CodedMessages and type(second) is CodedMessages:
+        return (first, second) if first.width == second.width else None
+    coded, other = (first, second) if type(first) is CodedMessages else (second, first)
+    if type(coded) is not CodedMessages or any(m is not None for m in other):
         return None
-    for k, team_msgs in enumerate(parts):
-        if type(team_msgs) is not CodedMessages:
-            if any(m is not None for m in team_msgs):
-                return None
-            parts[k] = CodedMessages.of_arrays(np.empty((len(team_msgs), coded[0].width), dtype=np.uint8),
-                                               np.zeros(len(team_msgs), dtype=bool))
-    speaks = np.concatenate((parts[0].speaks, parts[1].speaks))
-    codes = np.concatenate((parts[0].codes, parts[1].codes))
-    if np.count_nonzero(speaks) < speaks.shape[0]:
-        codes[~speaks] = SILENT_CODE
-    return CodedMessages.of_arrays(codes, speaks)
+    silent = CodedMessages.of_arrays(np.empty((len(other), coded.width), dtype=np.uint8),
+                                     np.zeros(len(other), dtype=bool))
+    return (coded, silent) if coded is first else (silent, coded)

@@ -377,6 +377,26 @@ def arrivals(pos: np.ndarray, spoke: np.ndarray, cut: float, out: np.ndarray) ->
 
 
 @njit(cache=True, nogil=True)
+def join_said(codes0: np.ndarray, speaks0: np.ndarray, codes1: np.ndarray, speaks1: np.ndarray, pos: np.ndarray,
+              cut: float, silent: int, codes: np.ndarray, speaks: np.ndarray,
+              arrived: np.ndarray) -> bool:  # pragma: no cover - compiled
+    """Both teams' coded messages of one width as one block (``codes`` (players, width): the
+    first team's rows, then the second's, a silent player's row all ``silent``; ``speaks``
+    (players,)) and their :func:`arrivals` into ``arrived``; returns whether anybody spoke."""
+    n0 = codes0.shape[0]
+    spoke = False
+    for i in range(codes.shape[0]):
+        src, row = (codes0, i) if i < n0 else (codes1, i - n0)
+        says = speaks0[row] if i < n0 else speaks1[row]
+        speaks[i] = says
+        spoke = spoke or says
+        for j in range(codes.shape[1]):
+            codes[i, j] = src[row, j] if says else silent
+    arrivals(pos, speaks, cut, arrived)
+    return spoke
+
+
+@njit(cache=True, nogil=True)
 def choose_heard(arrived: np.ndarray, key: np.ndarray, team: np.ndarray, cap: np.ndarray, regained: int,
                  hear_max: int, hear_decay: int, spoken: bool, heard: np.ndarray) -> None:  # pragma: no cover
     """Each listener's capacities ``cap`` (players, 2: team-mates, opponents) first regain
