@@ -110,44 +110,65 @@ def follow_votes(rows: np.ndarray, votes: np.ndarray, vote_cycle: np.ndarray, pr
     """For each player ``i`` of ``rows``, into ``out[i]``: among its own ``proposals[i]`` and
     the votes it holds at most ``horizon`` cycles old, the assignment with the most identical
     votes; on a tie its own if that is among them, else the most recent (then the lowest
-    team-mate index). ``out`` may be ``proposals``."""
+    team-mate index). ``out`` may be ``proposals``.
+
+    The votes are grouped first (each fresh vote joins its own proposal's group or the group of
+    the first earlier identical vote, found by a hash of the assignment and then compared in
+    full), so a player's tally costs one pass over its team-mates' votes."""
     n, k = votes.shape[0], votes.shape[2]
     fresh = np.empty(n, dtype=np.bool_)
+    keys = np.empty(n, dtype=np.int64)
+    group = np.empty(n, dtype=np.int64)  # -1: the own proposal's, else the group's first voter
+    count = np.empty(n, dtype=np.int64)
+    latest = np.empty(n, dtype=np.int64)
+    latest_j = np.empty(n, dtype=np.int64)
     own = np.empty(k, dtype=np.int64)
     for i in rows:
         own[:] = proposals[i]
+        own_key = _assignment_key(own)
+        own_count = 1
         for j in range(n):
             fresh[j] = j != i and cycle - vote_cycle[i, j] <= horizon
-        best, best_count, best_cycle, best_j = -1, 0, 0, 0   # -1: the own proposal
-        for c in range(-1, n):
-            if c >= 0 and not fresh[c]:
+            if not fresh[j]:
                 continue
-            candidate = own if c < 0 else votes[i, c]
-            if c >= 0 and _same(candidate, own):
-                continue  # counted with the own proposal
-            count = 1 if c < 0 else 0
-            latest, latest_j = NO_VOTE, 0
-            seen_before = False
-            for j in range(n):
-                if fresh[j] and _same(votes[i, j], candidate):
-                    if c >= 0 and j < c:
-                        seen_before = True
-                        break
-                    count += 1
-                    if vote_cycle[i, j] > latest or (vote_cycle[i, j] == latest and j < latest_j):
-                        latest, latest_j = vote_cycle[i, j], j
-            if seen_before:
-                continue  # tallied at its first voter
-            if c < 0:
-                best, best_count = -1, count
+            keys[j] = _assignment_key(votes[i, j])
+            if keys[j] == own_key and _same(votes[i, j], own):
+                group[j] = -1
+                own_count += 1
                 continue
-            if count > best_count or (count == best_count and best >= 0
-                                      and (latest > best_cycle or (latest == best_cycle and latest_j < best_j))):
-                best, best_count, best_cycle, best_j = c, count, latest, latest_j
+            group[j] = j
+            for c in range(j):
+                if fresh[c] and group[c] == c and keys[c] == keys[j] and _same(votes[i, c], votes[i, j]):
+                    group[j] = c
+                    break
+            g = group[j]
+            if g == j:
+                count[j], latest[j], latest_j[j] = 1, vote_cycle[i, j], j
+            else:
+                count[g] += 1
+                if vote_cycle[i, j] > latest[g]:
+                    latest[g], latest_j[g] = vote_cycle[i, j], j
+        best, best_count, best_cycle, best_j = -1, own_count, 0, 0   # -1: the own proposal
+        for c in range(n):
+            if not fresh[c] or group[c] != c:
+                continue
+            if count[c] > best_count or (count[c] == best_count and best >= 0
+                                         and (latest[c] > best_cycle
+                                              or (latest[c] == best_cycle and latest_j[c] < best_j))):
+                best, best_count, best_cycle, best_j = c, count[c], latest[c], latest_j[c]
         if best >= 0:
             out[i] = votes[i, best]
         else:
             out[i] = own
+
+
+@njit(cache=True, nogil=True)
+def _assignment_key(a: np.ndarray) -> int:  # pragma: no cover - compiled
+    """A hash of an assignment (equal assignments have equal keys; wraps around int64)."""
+    key = 0
+    for r in range(a.shape[0]):
+        key = key * 1_000_003 + a[r] + 1
+    return key
 
 
 @njit(cache=True, nogil=True)

@@ -100,3 +100,36 @@ def test_between_tied_votes_of_others_the_most_recent_wins_then_the_lowest_team_
     np.testing.assert_array_equal(book_with(9, 8).follow(10, own)[0], SWAP)    # the newer
     np.testing.assert_array_equal(book_with(8, 9).follow(10, own)[0], other)
     np.testing.assert_array_equal(book_with(9, 9).follow_one(0, 10, own[0]), other)  # team-mate 1 before 3
+
+
+def _followed_by_the_rule(votes, vote_cycle, proposal, i, cycle, horizon):
+    """The docstring's rule, spelt out: the most identical votes; ties to the own proposal,
+    then the most recent vote, then the lowest team-mate index."""
+    n = votes.shape[0]
+    fresh = [j for j in range(n) if j != i and cycle - vote_cycle[i, j] <= horizon]
+    tally: dict[tuple, list] = {tuple(proposal): [1, None, None]}
+    for j in fresh:
+        entry = tally.setdefault(tuple(votes[i, j]), [0, None, None])
+        entry[0] += 1
+        if entry[1] is None or vote_cycle[i, j] > entry[1]:
+            entry[1], entry[2] = int(vote_cycle[i, j]), j
+    own = tally.pop(tuple(proposal))
+    best, best_key = tuple(proposal), (own[0], 1, 0, 0)
+    for assignment, (count, latest, first_j) in tally.items():
+        key = (count, 0, latest, -first_j)
+        if key[0] > best_key[0] or (key[0] == best_key[0] and best_key[1] == 0 and key[2:] > best_key[2:]):
+            best, best_key = assignment, key
+    return np.array(best)
+
+
+def test_following_matches_the_rule_over_many_random_vote_books():
+    rng = np.random.default_rng(7)
+    pool = np.array([rng.permutation(4) for _ in range(3)])  # few distinct assignments: many ties
+    for _ in range(300):
+        book = VoteBook(6, horizon=5, k=4)
+        book.votes[:] = pool[rng.integers(0, 3, size=(6, 6))]
+        book.vote_cycle[:] = rng.integers(90, 101, size=(6, 6))
+        i = int(rng.integers(0, 6))
+        proposal = pool[int(rng.integers(0, 3))]
+        expected = _followed_by_the_rule(book.votes, book.vote_cycle, proposal, i, 100, 5)
+        np.testing.assert_array_equal(book.follow_one(i, 100, proposal), expected)
