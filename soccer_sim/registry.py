@@ -10,6 +10,7 @@ are not installed.
 
 from __future__ import annotations
 
+import functools
 import importlib
 from importlib import metadata
 from typing import Any
@@ -30,12 +31,22 @@ class TeamNotFoundError(SoccerSimError, LookupError):
     """A team name or path could not be resolved; the message lists the available names."""
 
 
-def available_teams() -> dict[str, str]:
-    """Registered team names -> ``module:attribute`` targets (entry points override built-ins)."""
+def available_teams(refresh: bool = False) -> dict[str, str]:
+    """Registered team names -> ``module:attribute`` targets (entry points override built-ins).
+    The installed packages' entry points are read once per process (reading them scans every
+    installed distribution, some 10 ms); ``refresh`` reads them again."""
+    if refresh:
+        _registered.cache_clear()
+    return dict(_registered())
+
+
+@functools.lru_cache(maxsize=1)
+def _registered() -> tuple[tuple[str, str], ...]:
+    """The registered names and targets, sorted by name (made once, see :func:`available_teams`)."""
     teams = dict(BUILTIN_TEAMS)
     for entry_point in metadata.entry_points(group=ENTRY_POINT_GROUP):
         teams[entry_point.name] = entry_point.value
-    return dict(sorted(teams.items()))
+    return tuple(sorted(teams.items()))
 
 
 def _load_path(path: str, name: str | None = None) -> Any:
@@ -112,6 +123,8 @@ def resolve_team(spec: Team | str | type) -> tuple[Team, str]:
         if ":" in spec:
             return _instantiate(_load_path(spec), spec), spec
         teams = available_teams()
+        if spec not in teams:  # (perhaps installed since the names were read)
+            teams = available_teams(refresh=True)
         if spec not in teams:
             raise TeamNotFoundError(
                 f"unknown team {spec!r}; registered teams: {', '.join(teams) or '(none)'}; "

@@ -25,6 +25,7 @@ at ``x = -half_length``). Units: metres, cycles, m/cycle, m/cycle².
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -117,7 +118,7 @@ class MotionModel:
         """(horizon + 1,) factor of the ball's velocity travelled in k cycles: (1 - d^k) / (1 - d)."""
         self.player_coast = _geometric_sums(self.player_decay, k)
         """(horizon + 1,) the same factor for a player's velocity (coasting without dashes)."""
-        self.ball_noise_gain = self._ball_noise_table(self.horizon)
+        self.ball_noise_gain = _ball_noise_table(self.ball_decay, self.horizon)
         """(horizon + 1,) ``sqrt(sum_j (d^j travel(k - j))^2)`` over ``j < k``: how the ball noise
         of the ``k`` cycles after a kick adds up in the ball's position (per unit of noise at the
         launch speed)."""
@@ -151,13 +152,6 @@ class MotionModel:
             dist += speed
             speed *= self.player_decay
             table[k] = dist
-        return table
-
-    def _ball_noise_table(self, horizon: int) -> np.ndarray:
-        table = np.zeros(horizon + 1)
-        for k in range(1, horizon + 1):
-            j = np.arange(k)
-            table[k] = math.sqrt(float(np.sum((self.ball_decay ** j * self.ball_travel[k - j]) ** 2)))
         return table
 
     # --- ball ------------------------------------------------------------------------------
@@ -259,6 +253,19 @@ class MotionModel:
 def _check_config(config: object) -> None:
     if not isinstance(config, MatchConfig):
         raise SkillInputError(f"MotionModel needs a MatchConfig, got {type(config).__name__}")
+
+
+@functools.lru_cache(maxsize=16)
+def _ball_noise_table(ball_decay: float, horizon: int) -> np.ndarray:
+    """:attr:`MotionModel.ball_noise_gain` for a ball decay and horizon (read only: made once per
+    process for each pair, as every team of every match asks for the same one)."""
+    travel = _geometric_sums(ball_decay, np.arange(horizon + 1, dtype=np.float64))
+    table = np.zeros(horizon + 1)
+    for k in range(1, horizon + 1):
+        j = np.arange(k)
+        table[k] = math.sqrt(float(np.sum((ball_decay ** j * travel[k - j]) ** 2)))
+    table.setflags(write=False)
+    return table
 
 
 def _geometric_sums(decay: float, k: np.ndarray) -> np.ndarray:

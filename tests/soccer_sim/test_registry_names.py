@@ -55,3 +55,26 @@ def test_non_teams_are_rejected() -> None:
         resolve_team(42)
     with pytest.raises(TeamNotFoundError, match="lacks reset"):
         resolve_team(dict)
+
+
+def test_names_are_read_once_and_a_package_installed_later_is_still_found(monkeypatch) -> None:
+    from importlib import metadata
+
+    from soccer_sim import registry
+
+    calls = []
+    late = [metadata.EntryPoint("late-team", "soccer_sim.trivial_teams:IdleTeam", registry.ENTRY_POINT_GROUP)]
+
+    def entry_points(group: str):
+        calls.append(group)
+        return late if len(calls) > 1 else []
+
+    monkeypatch.setattr(registry.metadata, "entry_points", entry_points)
+    registry.available_teams(refresh=True)
+    registry.available_teams()
+    resolve_team("chaser")
+    assert len(calls) == 1  # read once
+    team, name = resolve_team("late-team")  # unknown: the names are read again
+    assert isinstance(team, IdleTeam) and name == "late-team" and len(calls) == 2
+    monkeypatch.undo()
+    registry.available_teams(refresh=True)  # (the real names again for later tests)
