@@ -45,7 +45,7 @@ import numpy as np
 
 from soccer_sim.config_checks import ConfigError
 from soccer_sim.perception.coded import SILENT_CODE, CodedMessages, allowed_codes, first_bad_row
-from soccer_sim.perception.kernels import arrivals, choose_heard, join_said
+from soccer_sim.perception.audio_kernels import arrivals, choose_heard, join_said
 from soccer_sim.team import TeamError
 
 SAY_CHARACTERS: str = ("-0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
