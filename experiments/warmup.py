@@ -103,16 +103,18 @@ def _member_names(team: str) -> list[str]:
 
 
 def warm_kernels(teams: Iterable[str], processes: int | None = None, stream: TextIO | None = None,
-                 observation: str = "full") -> WarmUp:
+                 observation: str = "full", here: bool = True) -> WarmUp:
     """Make sure every kernel the matches of ``teams`` under ``observation`` need is in the
     on-disk cache (see :func:`ensure_cached`)."""
-    return ensure_cached(kernels_for(teams, observation), processes, stream)
+    return ensure_cached(kernels_for(teams, observation), processes, stream, here)
 
 
-def ensure_cached(kernels: Sequence[Kernel], processes: int | None = None, stream: TextIO | None = None) -> WarmUp:
+def ensure_cached(kernels: Sequence[Kernel], processes: int | None = None, stream: TextIO | None = None,
+                  here: bool = True) -> WarmUp:
     """Make sure every one of ``kernels`` is in the on-disk cache, compiling the missing ones on
-    ``processes`` processes (default and at most: every core; this one included), with one line on
-    ``stream`` (default stderr) before and one after when anything had to be compiled."""
+    ``processes`` processes (default and at most: every core; this one included unless ``here``
+    is False, see :func:`compile_kernels`), with one line on ``stream`` (default stderr) before
+    and one after when anything had to be compiled."""
     start = time.perf_counter()
     kernels = tuple(kernels)
     missing = [kernel for kernel in kernels if not is_cached(kernel)]
@@ -121,7 +123,7 @@ def ensure_cached(kernels: Sequence[Kernel], processes: int | None = None, strea
     stream = stream if stream is not None else sys.stderr
     print(COMPILING_LINE, file=stream, flush=True)
     cores = os.cpu_count() or 1
-    used = compile_kernels(missing, min(processes or cores, cores))
+    used = compile_kernels(missing, min(processes or cores, cores), here)
     seconds = time.perf_counter() - start
     print(f"compiled {len(missing)} kernels in {seconds:.1f} s on {used} process(es)", file=stream, flush=True)
     return WarmUp(kernels, len(missing), used, seconds)
@@ -179,18 +181,22 @@ def _subclasses(cls: type) -> list[type]:
     return found
 
 
-def compile_kernels(kernels: Sequence[Kernel], processes: int) -> int:
+def compile_kernels(kernels: Sequence[Kernel], processes: int, here: bool = True) -> int:
     """Compile ``kernels`` into the on-disk cache on up to ``processes`` processes, this one
-    included; returns how many took part. The kernels of one function stay together (they
-    share its cache index), the costliest first, each process taking the next when it is free."""
+    included unless ``here`` is False (then helper processes do it all: a process that compiled
+    kernels runs its matches some 5 % slower than one that loaded them from the cache, which a
+    benchmark must not measure); returns how many took part. The kernels of one function stay
+    together (they share its cache index), the costliest first, each process taking the next
+    when it is free."""
     groups: dict[str, list[Kernel]] = {}
     for kernel in kernels:
         groups.setdefault(kernel.name, []).append(kernel)
     work = sorted(groups.values(), key=lambda group: -sum(k.seconds for k in group))
-    helpers_count = min(processes, len(work)) - 1
-    if helpers_count <= 0:
+    helpers_count = min(processes, len(work)) - (1 if here else 0)
+    if here and helpers_count <= 0:
         _compile_share(work, None)
         return 1
+    helpers_count = max(helpers_count, 1)
     context = multiprocessing.get_context("spawn")
     counter = context.Value("i", 0)
     helpers = [context.Process(target=_helper_main, args=(work, counter), daemon=True,
@@ -198,15 +204,17 @@ def compile_kernels(kernels: Sequence[Kernel], processes: int) -> int:
     for helper in helpers:
         helper.start()
     try:
-        _compile_share(work, counter)
+        if here:
+            _compile_share(work, counter)
+        for helper in helpers:
+            helper.join()
     except BaseException:  # Ctrl-C: do not wait for the helpers (each cache file is written atomically)
         for helper in helpers:
             helper.terminate()
-        raise
-    finally:
         for helper in helpers:
             helper.join()
-    return helpers_count + 1
+        raise
+    return helpers_count + (1 if here else 0)
 
 
 def _helper_main(work: list[list[Kernel]], counter) -> None:

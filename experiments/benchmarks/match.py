@@ -2,8 +2,10 @@
 
 Reports the median and fastest time per match and the microseconds per cycle (everything
 included: both teams, views, commands, motion rules, pymunk, referee, statistics), after
-one warm-up match that pays for imports and for loading the compiled kernels. ``--profile``
-adds a cProfile top list of one more match.
+the kernel warm-up (:mod:`experiments.warmup`: kernels missing from the cache are compiled
+by helper processes, then loaded here) and one warm-up match that pays for imports and for
+anything else loaded on first use. ``--profile`` adds a cProfile top list of one more
+match.
 """
 
 from __future__ import annotations
@@ -30,12 +32,16 @@ def run(args: argparse.Namespace) -> int:
 
     from experiments.commands.errors import fail
     from experiments.reporting import Table
+    from experiments.warmup import load_kernels, warm_kernels
     from soccer_sim import ConfigError, MatchConfig, TeamError, TeamNotFoundError, run_match
 
     from soccer_sim.perception.config import ObservationConfig
 
     observation = ObservationConfig(args.observation)
     config = MatchConfig(max_cycles=args.cycles, observation=observation)
+    # Kernels missing from the cache are compiled by other processes and this one loads them,
+    # as a tournament's workers do (a process that compiled them runs some 5 % slower).
+    load_kernels(warm_kernels((args.home, args.away), observation=args.observation, here=False).kernels)
     try:  # the warm-up match also checks the teams and the seed
         run_match(args.home, args.away, seed=args.seed, config=MatchConfig(max_cycles=200, observation=observation))
     except (TeamNotFoundError, TeamError, ConfigError, ValueError) as exc:

@@ -43,6 +43,22 @@ KERNELS = [Kernel("tinykernels", "add", "(int64, int64)", 1.0),
 """
 
 
+def test_a_warm_up_elsewhere_leaves_this_process_only_loading(tiny: Path) -> None:
+    cache = tiny / "cache"
+    out = run_python(TINY_KERNELS + """
+import json
+from experiments.warmup import dispatcher_of, ensure_cached, is_cached, load_kernels
+done = ensure_cached(KERNELS, processes=1, here=False)
+compiled_here = [len(dispatcher_of(k).overloads) for k in KERNELS]
+load_kernels(KERNELS)
+stats = [dispatcher_of(k).stats for k in KERNELS]
+print(json.dumps([done.compiled, done.processes, compiled_here, all(is_cached(k) for k in KERNELS),
+                  [len(s.cache_hits) for s in stats], [len(s.cache_misses) for s in stats]]))
+""", tiny, cache)
+    # one helper compiled both into the cache; this process compiled nothing and loaded both
+    assert json.loads(out.stdout) == [2, 1, [0, 0], True, [1, 1], [0, 0]]
+
+
 def test_warm_up_compiles_into_the_cache_dir_and_a_later_process_loads_without_compiling(tiny: Path) -> None:
     cache = tiny / "cache"
     first = run_python(TINY_KERNELS + """
