@@ -73,6 +73,10 @@ def test_the_channel_delivers_coded_messages_as_their_texts() -> None:
     # one team coded and the other in texts: the general path, the same delivery
     mixed = [[CodedMessages.of_texts(h, 10), a] for h, a in says]
     assert _deliveries(mixed) == expected
+    # a silent first team beside a coded second one: the coded path, the same delivery
+    silent_first = [[[None, None, None], a] for _, a in says]
+    assert _deliveries([[h, CodedMessages.of_texts(a, 10) if a[0] else a] for h, a in silent_first]) \
+        == _deliveries(silent_first)
     # widths that differ: the general path too
     short = [[CodedMessages.of_texts(h, 10), CodedMessages.of_texts(["x1", "y2"], 2)] for h, _ in says]
     assert _deliveries(short)[0][0] == ("aaaaaaaaaa", None, "cccccccccc", "x1", "y2")
