@@ -72,10 +72,9 @@ _CAPACITY = len(ALPHABET) ** MESSAGE_LENGTH
 _CODE = {c: i for i, c in enumerate(ALPHABET)}
 ALPHABET_BYTES = np.frombuffer(ALPHABET.encode("ascii"), dtype=np.uint8)
 """The alphabet's characters as bytes, indexed by digit."""
-_DIGIT_OF_BYTE = np.full(256, -1, dtype=np.int64)
-_DIGIT_OF_BYTE[ALPHABET_BYTES] = np.arange(len(ALPHABET))
-DIGIT_OF_BYTE = _DIGIT_OF_BYTE
+DIGIT_OF_BYTE = np.full(256, -1, dtype=np.int64)
 """(256,) each character byte's alphabet digit, -1 for a character outside the alphabet."""
+DIGIT_OF_BYTE[ALPHABET_BYTES] = np.arange(len(ALPHABET))
 _SILENT = " " * MESSAGE_LENGTH
 """Characters standing for a message not said (a space is outside the alphabet)."""
 
@@ -264,16 +263,13 @@ CODES = (WORLD, VOTE, MAX_PLAYERS)
 def text_digits(texts: Sequence[str]) -> np.ndarray:
     """(p, MESSAGE_LENGTH) int64 the alphabet digits of each text, a row of -1 for a text that
     cannot be a message (wrong length, not ASCII) and -1 for a character outside the alphabet."""
-    joined = "".join(texts)
-    if len(joined) == MESSAGE_LENGTH * len(texts) and joined.isascii() \
-            and all(len(t) == MESSAGE_LENGTH for t in texts):  # (the usual case: all of ours)
-        return _DIGIT_OF_BYTE[np.frombuffer(joined.encode("ascii"), dtype=np.uint8)].reshape(len(texts),
-                                                                                               MESSAGE_LENGTH)
+    raw = said_bytes(texts)
+    if raw is not None:  # (the usual case: all of ours)
+        return DIGIT_OF_BYTE[raw]
     digits = np.full((len(texts), MESSAGE_LENGTH), -1, dtype=np.int64)
     fine = [p for p, t in enumerate(texts) if len(t) == MESSAGE_LENGTH and t.isascii()]
     if fine:
-        raw = np.frombuffer("".join(texts[p] for p in fine).encode("ascii"), dtype=np.uint8)
-        digits[fine] = _DIGIT_OF_BYTE[raw].reshape(len(fine), MESSAGE_LENGTH)
+        digits[fine] = DIGIT_OF_BYTE[said_bytes([texts[p] for p in fine])]
     return digits
 
 

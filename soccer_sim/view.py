@@ -17,7 +17,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from soccer_sim.kernels import mirror_bodies, store_command
-from soccer_sim.perception.audio import AudioParams, check_team_messages
+from soccer_sim.perception.audio import AudioParams, check_coded_messages, check_team_messages
 from soccer_sim.perception.coded import CodedMessages
 from soccer_sim.state import NO_PLAYER, StateError, WorldState
 from soccer_sim.team import TeamCommand, TeamError, TeamView
@@ -144,7 +144,7 @@ class TeamFrame:
         the channel's rules (:func:`~soccer_sim.perception.audio.check_team_messages`); messages
         held as codes are kept as they are (a ``CodedMessages``), others as a tuple."""
         if type(said) is CodedMessages:
-            check_team_messages(said, self.n, self._audio, self.name)
+            check_coded_messages(said, self.n, self._audio, self.name)
             return said
         if isinstance(said, (str, bytes)) or not hasattr(said, "__len__") or not hasattr(said, "__iter__"):
             raise TeamError(self.name, f"command.say must be a sequence of {self.n} messages (str or None), "
