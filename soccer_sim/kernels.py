@@ -20,6 +20,7 @@ import numpy as np
 from numba import njit
 
 from soccer_sim.body import ball_angle_to_body
+from soccer_sim.kick_rate import kick_angle_rate, kick_distance_rate, kick_effectiveness
 
 REQUEST_CAP = 1e100
 """Longest dash or kick request the rules work with: a longer one is shortened to this length in
@@ -34,7 +35,8 @@ def _fields(*names: str, kind: type = np.float64) -> list[tuple[str, type]]:
 
 PT_DASH_POWER_RATE, PT_EXTRA_STAMINA, PT_SPEED_MAX, PT_STAMINA_INC, PT_EFFORT_MIN, PT_EFFORT_MAX = 0, 1, 2, 3, 4, 5
 PT_DECAY, PT_KICKABLE, PT_KICKABLE_MARGIN, PT_KICK_RAND, PT_INERTIA_MOMENT = 6, 7, 8, 9, 10
-PT_COLUMNS = 11
+PT_CATCH_STRETCH = 11
+PT_COLUMNS = 12
 """Columns of the per-player parameter table (one float64 row per player row): each player's
 type's ``dash_power_rate``, ``extra_stamina``, ``player_speed_max``, ``stamina_inc_max``,
 ``effort_min``, ``effort_max``, ``player_decay``, kickable distance (centre to centre:
@@ -252,10 +254,10 @@ def apply_kicks(kickers: np.ndarray, pos: np.ndarray, vel: np.ndarray, ball: np.
         angle_rate = 0.0  # dir_diff / 180°
         distance_rate = 0.0  # dist_ball / kickable_margin
         if row != holder:
-            distance_rate = (dist[row] - touch) / margin
-            angle_rate = ball_angle_to_body(vel[row, 0], vel[row, 1], bx - pos[row, 0], by - pos[row, 1],
-                                            types[row, PT_INERTIA_MOMENT]) / math.pi
-        effect = 1.0 - p.angle_penalty * angle_rate - p.distance_penalty * distance_rate
+            distance_rate = kick_distance_rate(dist[row], touch, margin)
+            angle_rate = kick_angle_rate(ball_angle_to_body(vel[row, 0], vel[row, 1], bx - pos[row, 0],
+                                                            by - pos[row, 1], types[row, PT_INERTIA_MOMENT]))
+        effect = kick_effectiveness(distance_rate, angle_rate, p.distance_penalty, p.angle_penalty)
         kx *= effect
         ky *= effect
         # rcssserver's kick noise: largest length kick_rand * power / max_power * (pos_rate +

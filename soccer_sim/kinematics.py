@@ -61,6 +61,7 @@ import numpy as np
 from soccer_sim.config import MatchConfig
 from soccer_sim.kernels import (DASH_PARAMS, DECAY_PARAMS, KICK_PARAMS, PT_COLUMNS, PT_DASH_POWER_RATE, PT_DECAY,
                                 PT_EFFORT_MAX, PT_EFFORT_MIN, PT_EXTRA_STAMINA, PT_INERTIA_MOMENT, PT_KICK_RAND,
+                                PT_CATCH_STRETCH,
                                 PT_KICKABLE, PT_KICKABLE_MARGIN, PT_SPEED_MAX, PT_STAMINA_INC, apply_kicks,
                                 dash_players, decay_velocities, find_kickers, make_record)
 from soccer_sim.player_types import PlayerType, default_type
@@ -134,6 +135,7 @@ class Kinematics:
         row[PT_STAMINA_INC], row[PT_EFFORT_MIN], row[PT_EFFORT_MAX] = t.stamina_inc_max, t.effort_min, t.effort_max
         row[PT_DECAY], row[PT_KICKABLE], row[PT_KICKABLE_MARGIN] = t.player_decay, kickable, t.kickable_margin
         row[PT_KICK_RAND], row[PT_INERTIA_MOMENT] = t.kick_rand, t.inertia_moment
+        row[PT_CATCH_STRETCH] = t.catchable_area_l_stretch
         return row
 
     # --- kicks ------------------------------------------------------------------------------

@@ -50,7 +50,6 @@ from soccer_sim.physics import Physics, SubstepPlanner
 from soccer_sim.player_types import check_choice, draw_player_types
 from soccer_sim.recorder import Recorder
 from soccer_sim.referee import Referee
-from soccer_sim.rules.fouls import FoulJudge
 from soccer_sim.registry import resolve_team
 from soccer_sim.scenarios.scenario import Scenario, line_up
 from soccer_sim.setup import MatchSetup
@@ -158,15 +157,11 @@ class Match:
         """The state's arrays, looked up once (the state never replaces them)."""
         self.events = EventLog()
         tackle_rng = np.random.default_rng(tackle_seq)
-        self.referee = Referee(setup, self.events, tackle_rng)
-        self.tackles = Tackles(config, state, setup.goalie_rows, tackle_rng)
-        self.physics = Physics(config, state)
         self.kinematics = Kinematics(config, n2)
-        self.tackles.types = self.kinematics.types
-        self.referee.goalkeeper.rng = tackle_rng
-        for judge in self.referee.judges:
-            if isinstance(judge, FoulJudge):
-                judge.types = self.kinematics.types
+        types = self.kinematics.types  # (kept up to date in place when the teams choose their types)
+        self.referee = Referee(setup, self.events, tackle_rng, types)
+        self.tackles = Tackles(config, state, setup.goalie_rows, tackle_rng, types)
+        self.physics = Physics(config, state)
         self.player_types = draw_player_types(config, types_seq)
         """The match's heterogeneous player types (type 0 the default; :mod:`soccer_sim.player_types`)."""
         self.type_ids = np.zeros(n2, dtype=np.intp)
@@ -392,8 +387,6 @@ class Match:
             self.type_ids[first[team]:first[team] + self.sizes[team]] = ids
         if self.type_ids.any():
             self.kinematics.set_types([self.player_types[i] for i in self.type_ids])
-            self.referee.goalkeeper.catch_stretch = np.array(
-                [self.player_types[i].catchable_area_l_stretch for i in self.type_ids])
             self._restore_players()
         rows = [tuple(int(i) for i in self.type_ids[first[t]:first[t] + self.sizes[t]]) for t in (HOME, AWAY)]
         return tuple(replace(bare[t], player_types=self.player_types, own_types=rows[t], opponent_types=rows[1 - t])

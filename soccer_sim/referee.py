@@ -83,11 +83,15 @@ class Referee:
     rules in the order they hear every hook.
     """
 
-    def __init__(self, setup: MatchSetup, events: EventLog, rng: np.random.Generator | None = None) -> None:
+    def __init__(self, setup: MatchSetup, events: EventLog, rng: np.random.Generator | None = None,
+                 types: np.ndarray | None = None) -> None:
         """``setup``: the match's sides, goalkeepers, rules on/off and end
         (:meth:`MatchSetup.resolve`; ``MatchSetup.resolve(config)`` for the regular match).
-        ``rng``: the generator of the foul decisions (the match's tackle generator; a fixed
-        seed, 0, when none is given)."""
+        ``rng``: the generator of the foul decisions and of the goalkeepers' catches in a
+        stretched catchable area (the match's tackle generator; without one, fouls draw from
+        a fixed seed, 0, and no catch is stretched). ``types``: each player row's type
+        parameters (:attr:`soccer_sim.kinematics.Kinematics.types`; None: the configuration's
+        default type for all)."""
         if not isinstance(setup, MatchSetup):
             raise TypeError(f"setup must be a MatchSetup (MatchSetup.resolve(config, scenario)), "
                             f"got {type(setup).__name__}")
@@ -101,7 +105,7 @@ class Referee:
         self.hooks = Hooks()
         self.modes = modes = PlayModes(setup, events, self.hooks)
         self.plays = PlayAnalysis(config, events, home)
-        self.goalkeeper = GoalkeeperJudge(modes, self.plays.passer)
+        self.goalkeeper = GoalkeeperJudge(modes, self.plays.passer, rng, types)
         judges: list[Judge] = [BallOutJudge(modes)]
         if setup.offside:
             judges.append(OffsideJudge(modes))
@@ -111,7 +115,7 @@ class Referee:
         if r.stuck_ball_cycles is not None:
             judges.append(BallStuckJudge(modes))
         if config.tackles.enabled:
-            judges.append(FoulJudge(modes, np.random.default_rng(0) if rng is None else rng))
+            judges.append(FoulJudge(modes, np.random.default_rng(0) if rng is None else rng, types))
         self.hooks.set(judges)
         self.kick_mask = modes.kick_mask
         """(2n,) bool: which players may kick now (:meth:`PlayModes.kick_mask`; a cached read-only

@@ -105,7 +105,7 @@ class Tackles:
     foul decisions share it), so a match without tackles never draws from it."""
 
     def __init__(self, config: MatchConfig, state: WorldState, goalie_rows: Sequence[int],
-                 rng: np.random.Generator) -> None:
+                 rng: np.random.Generator, types: np.ndarray | None = None) -> None:
         self.config = config.tackles
         self._physics = config.physics
         self._inertia = config.physics.inertia_moment
@@ -114,10 +114,10 @@ class Tackles:
         self._home = state.sizes[0]
         self._parking_field = config.field
         self._pushes: list[tuple[float, float]] = []
-        self.types: np.ndarray | None = None
-        """Each player row's type parameters (:attr:`soccer_sim.kinematics.Kinematics.types`),
-        set by the match: the tackler's ``inertia_moment`` and ``kick_rand``; None: the
-        physics config's."""
+        self.types = types
+        """Each player row's type parameters (:attr:`soccer_sim.kinematics.Kinematics.types`,
+        which the match's kinematics keep up to date): the tackler's ``inertia_moment`` and
+        ``kick_rand``; None: the physics config's."""
         self.rng = rng
         self.busy = False
         """Whether any player is frozen or sent off (then every cycle has work to do)."""

@@ -13,6 +13,8 @@ from numba import njit
 
 from agents.skills.interception_kernels import UNREACHABLE
 from soccer_sim.body import ball_angle_to_body
+from soccer_sim.kick_rate import kick_angle_rate, kick_distance_rate, kick_effectiveness
+from soccer_sim.rules.offside import offside_line
 
 LEAD_CAP = 10
 """Cycles of lead over the opponents beyond which a pass scores no better (the score's lead
@@ -20,22 +22,16 @@ term is ``min(lead, LEAD_CAP) / LEAD_CAP``)."""
 
 
 @njit(cache=True, nogil=True)
-def distance_effect(rnorm: float, distance_penalty: float, kickable_margin: float,
-                    touch: float) -> float:  # pragma: no cover - compiled
-    """Effectiveness left after the distance penalty, for a ball ``rnorm`` from the kicker's centre."""
-    return 1.0 - distance_penalty * min(1.0, max(0.0, rnorm - touch) / kickable_margin)
-
-
-@njit(cache=True, nogil=True)
 def body_effect(rx: float, ry: float, rnorm: float, pvx: float, pvy: float, distance_penalty: float,
                 angle_penalty: float, kickable_margin: float, touch: float,
                 inertia_moment: float) -> float:  # pragma: no cover - compiled
     """Effectiveness of any kick by a player moving at (``pvx``, ``pvy``) on the ball lying at
-    (``rx``, ``ry``) from it (``rnorm`` away): the simulator's kick rule (rcssserver's), the
-    distance penalty and the angle penalty for where the ball lies relative to the body, whose
-    direction is :mod:`soccer_sim.body`'s (a player at rest or slow faces the ball)."""
+    (``rx``, ``ry``) from it (``rnorm`` away): the simulator's kick rate
+    (:mod:`soccer_sim.kick_rate`, rcssserver's), with the body direction of
+    :mod:`soccer_sim.body` (a player at rest or slow faces the ball)."""
     angle = ball_angle_to_body(pvx, pvy, rx, ry, inertia_moment)
-    return distance_effect(rnorm, distance_penalty, kickable_margin, touch) - angle_penalty * angle / math.pi
+    return kick_effectiveness(kick_distance_rate(rnorm, touch, kickable_margin), kick_angle_rate(angle),
+                              distance_penalty, angle_penalty)
 
 
 @njit(cache=True, nogil=True)
@@ -203,23 +199,10 @@ def lane_arrivals(targets: np.ndarray, wanted: np.ndarray, velocities: np.ndarra
 
 
 @njit(cache=True, nogil=True)
-def offside_line(opp_pos: np.ndarray, ball_x: float) -> float:  # pragma: no cover - compiled
-    """The offside line's x (team frame): the second-last opponent's x (duplicates counted),
-    the ball's, or the halfway line, whichever is furthest forward."""
-    last = second = -math.inf
-    for i in range(opp_pos.shape[0]):
-        x = opp_pos[i, 0]
-        if x > last:
-            last, second = x, last
-        elif x > second:
-            second = x
-    return max(second, ball_x, 0.0)
-
-
-@njit(cache=True, nogil=True)
 def beyond_line(own_pos: np.ndarray, opp_pos: np.ndarray, ball_x: float) -> np.ndarray:  # pragma: no cover
-    """Whether each of ``own_pos`` is beyond :func:`offside_line`."""
-    line = offside_line(opp_pos, ball_x)
+    """Whether each of ``own_pos`` is beyond the offside line
+    (:func:`soccer_sim.rules.offside.offside_line`)."""
+    line = offside_line(opp_pos[:, 0], ball_x)
     out = np.empty(own_pos.shape[0], dtype=np.bool_)
     for i in range(own_pos.shape[0]):
         out[i] = own_pos[i, 0] > line

@@ -26,7 +26,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from agents.skills.ball_kernels import LEAD_CAP, beyond_line, offside_line
+from agents.skills.ball_kernels import LEAD_CAP, beyond_line
+from soccer_sim.rules.offside import offside_line
 from agents.skills.context import SkillContext, ViewArrays
 from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, float_array
 from agents.skills.pass_search import PLAN_FLOATS, PLAN_INTS, best_pass_search, pass_receivers

@@ -18,7 +18,7 @@ from numba import njit
 from agents.roles.voting import follow_votes
 from agents.skills.interception_kernels import UNREACHABLE
 from agents.skills.player_kernels import paced_dash_rows
-from agents.teams.role_kernels import offside_line
+from soccer_sim.rules.offside import offside_line
 
 
 @njit(cache=True, nogil=True)
@@ -98,7 +98,7 @@ def own_goals(rows: np.ndarray, rank: np.ndarray, followed: np.ndarray, targets:
         gx, gy = targets[i, t, 0], targets[i, t, 1]
         urgent[i] = False
         if play_on:
-            limit = offside_line(opp_pos[i], ball[i, 0]) - offside_margin
+            limit = offside_line(opp_pos[i, :, 0], ball[i, 0]) - offside_margin
             if gx > limit:
                 gx = max(limit, 0.0)
             first = our_first[i]

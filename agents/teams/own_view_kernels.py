@@ -19,7 +19,8 @@ from numba import njit
 from agents.roles.voting import follow_votes
 from agents.skills.interception_kernels import UNREACHABLE, race_kernel
 from formations.interpolation_kernels import value_kernel
-from agents.teams.role_kernels import offside_line, shape_targets
+from agents.teams.role_kernels import shape_targets
+from soccer_sim.rules.offside import offside_line
 from agents.teams.shape_kernels import ATTACKING, BALL_X, DEFENDING, LIMITED, MODE, OFF, advance_block, \
     settle_targets, support_spots, switch_side
 
@@ -312,7 +313,7 @@ def support_each(rows: np.ndarray, attacking: np.ndarray, our_first: np.ndarray,
         if count == 0 or not (full[i] or _supports(i, rank, following, match_roles, targets, candidates[:count],
                                                    our_points[i, carrier_row], players)):
             continue
-        x_max = offside_line(opp_pos[i], ball[i, 0]) - 1.0
+        x_max = offside_line(opp_pos[i, :, 0], ball[i, 0]) - 1.0
         chosen = support_spots(our_points[i, carrier_row], targets[i], targets[i], candidates[:count], opp_pos[i],
                                offsets, players, x_max, knobs, out_rows, out_spots)
         for c in range(chosen):

@@ -38,7 +38,7 @@ from dataclasses import astuple, dataclass
 import numpy as np
 from numba import njit
 
-from agents.skills.ball_kernels import offside_line
+from soccer_sim.rules.offside import offside_line
 from agents.teams import positions
 from formations import FormationSet
 
@@ -133,7 +133,7 @@ def adjust_role_targets(targets: np.ndarray, codes: np.ndarray, opp_pos: np.ndar
      half_length, half_width) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11],
                                  p[12], p[13], p[14], p[15], p[16])
     n = targets.shape[0]
-    line = offside_line(opp_pos, ball_x) - behind_line
+    line = offside_line(opp_pos[:, 0], ball_x) - behind_line
     final_third = ball_x > half_length / 3.0
     # Attacking full-backs stay inside the narrowest wide attacker (who keep the touchline).
     wide_floor = 1.0

@@ -9,7 +9,7 @@ import math
 import numpy as np
 from numba import njit
 
-from agents.skills.ball_kernels import offside_line
+from soccer_sim.rules.offside import offside_line
 
 
 @njit(cache=True, nogil=True)
@@ -62,7 +62,7 @@ def pull_onside(goals: np.ndarray, rows: np.ndarray, opp_pos: np.ndarray, ball_x
                 margin: float) -> None:  # pragma: no cover - compiled
     """Goals of ``rows`` beyond the offside line (the second-last opponent or the ball, never
     in our half) are pulled back to ``margin`` behind it (but not into our half)."""
-    limit = offside_line(opp_pos, ball_x) - margin
+    limit = offside_line(opp_pos[:, 0], ball_x) - margin
     for r in rows:
         if goals[r, 0] > limit:
             goals[r, 0] = max(limit, 0.0)

@@ -36,7 +36,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from agents import skills
-from agents.skills.ball_kernels import offside_line
+from soccer_sim.rules.offside import offside_line
 from agents.teams.shape_kernels import (
     ATTACKING, BACK_FLOOR, BALL_X, DEFEND_BALL_GAP, DEFENDING, DROP, KNOBS, LIMITED, MODE, OFF, PUSH, REST_BALL_GAP,
     REST_FORWARD_MARGIN, REST_MAX_GAP, advance_block, settle_targets, support_spots, switch_side)
@@ -280,7 +280,7 @@ class Shape:
         candidates = match_roles[eligible]
         if not candidates.size or p.support_players == 0:
             return
-        x_max = offside_line(view.opp_pos, float(view.ball[0])) - 1.0
+        x_max = offside_line(view.opp_pos[:, 0], float(view.ball[0])) - 1.0
         count = support_spots(carrier, targets, targets, candidates, view.opp_pos, self.offsets,
                               p.support_players, x_max, self._support_knobs, self._rows, self._spots)
         self._chosen, self._chosen_spots = self._rows[:count].copy(), self._spots[:count].copy()

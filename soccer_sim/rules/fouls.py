@@ -65,7 +65,7 @@ class FoulJudge(Judge):
 
     name = "fouls"
 
-    def __init__(self, modes: PlayModes, rng: np.random.Generator) -> None:
+    def __init__(self, modes: PlayModes, rng: np.random.Generator, types: np.ndarray | None = None) -> None:
         self.modes = modes
         self.rng = rng
         config = modes.config
@@ -73,10 +73,10 @@ class FoulJudge(Judge):
         self._kickable = config.physics.kickable_distance
         self._inertia = config.physics.inertia_moment
         self._sizes = 2.0 * config.physics.player_radius
-        self.types: np.ndarray | None = None
-        """Each player row's type parameters (:attr:`soccer_sim.kinematics.Kinematics.types`),
-        set by the match: a fouled player's kickable distance and ``inertia_moment``; None: the
-        physics config's."""
+        self.types = types
+        """Each player row's type parameters (:attr:`soccer_sim.kinematics.Kinematics.types`,
+        which the match's kinematics keep up to date): a fouled player's kickable distance and
+        ``inertia_moment``; None: the physics config's."""
 
     def tackle_taken(self, state: WorldState, row: int, foul: bool, dashed: np.ndarray) -> None:
         """``row``'s tackle pushed the ball; ``foul``: it was a foul tackle; ``dashed``: (P,)

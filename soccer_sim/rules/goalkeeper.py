@@ -33,6 +33,7 @@ from collections.abc import Callable
 
 import numpy as np
 
+from soccer_sim.kernels import PT_CATCH_STRETCH
 from soccer_sim.rules.judge import Judge
 from soccer_sim.rules.play_modes import GOALIE_HOLDS, PLAY_ON, PlayModes
 from soccer_sim.rules.spots import clamp_into_penalty_area, in_penalty_area, out_of_goal_area, penalty_area_edge_spot
@@ -50,14 +51,18 @@ class GoalkeeperJudge(Judge):
 
     name = "goalkeeper"
 
-    def __init__(self, modes: PlayModes, passer: Callable[[], int]) -> None:
+    def __init__(self, modes: PlayModes, passer: Callable[[], int], rng: np.random.Generator | None = None,
+                 types: np.ndarray | None = None) -> None:
         self.modes = modes
         self._passer = passer
         self._last_attempt = [_NEVER, _NEVER]
-        self.catch_stretch: np.ndarray | None = None
-        """Each player row's ``catchable_area_l_stretch`` (set by the match); None: 1 for all."""
-        self.rng: np.random.Generator | None = None
-        """The generator of the stretched area's catch draws (set by the match)."""
+        self.types = types
+        """Each player row's type parameters (:attr:`soccer_sim.kinematics.Kinematics.types`,
+        which the match's kinematics keep up to date): the goalkeeper's
+        ``catchable_area_l_stretch``; None: 1 for all."""
+        self.rng = rng
+        """The generator of the stretched area's catch draws (the match's tackle generator);
+        None: no catch in the stretched area."""
 
     def catch_requested(self, state: WorldState, team: int, kickers: np.ndarray) -> None:
         """A catch request by ``team``'s goalkeeper (see the module docstring)."""
@@ -79,7 +84,7 @@ class GoalkeeperJudge(Judge):
         self._last_attempt[team] = state.cycle
         distance = math.hypot(bx - gx, by - gy)
         if distance > rules.catch_length:
-            stretch = 1.0 if self.catch_stretch is None else float(self.catch_stretch[row])
+            stretch = 1.0 if self.types is None else float(self.types[row, PT_CATCH_STRETCH])
             reach = rules.catch_length * stretch
             if distance > reach or self.rng is None:
                 return

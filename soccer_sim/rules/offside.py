@@ -17,9 +17,11 @@ when the ball was played, level with the offender.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 
 import numpy as np
+from numba import njit
 
 from soccer_sim.rules.judge import Judge
 from soccer_sim.rules.play_modes import PlayModes
@@ -46,19 +48,11 @@ def mark_offside_positions(pos: np.ndarray, n: int | tuple[int, int], team: int,
     total = home + away
     own = slice(0, home) if team == 0 else slice(home, total)
     opp = slice(home, total) if team == 0 else slice(0, home)
-    m = away if team == 0 else home
     opp_x = pos[opp, 0]
     if present is not None:
         opp_x = opp_x[present[opp]]
-        m = len(opp_x)
-    if m >= 2:
-        # Second-last opponent: the second-largest depth among the opponents.
-        second_last = (float(np.partition(opp_x, m - 2)[m - 2]) if direction > 0
-                       else -float(np.partition(opp_x, 1)[1]))
-    else:
-        second_last = float("inf")
-    # The offside line: the halfway line, the ball or the second-last opponent, whichever is deepest.
-    line = max(0.0, direction * ball_x, second_last)
+    # In the kicking team's direction of attack (depth = direction * x).
+    line = offside_line(direction * opp_x, direction * ball_x)
     out[:] = False
     marks = out[own]
     np.greater(pos[own, 0] * direction, line, out=marks)
@@ -66,6 +60,31 @@ def mark_offside_positions(pos: np.ndarray, n: int | tuple[int, int], team: int,
     if present is not None:
         out &= present
     return direction * line if np.count_nonzero(marks) > 0 else None
+
+
+@njit(cache=True, nogil=True)
+def offside_line(opp_x: np.ndarray, ball_x: float) -> float:  # pragma: no cover - compiled
+    """The offside line's x for a team attacking towards +x (the team frame; the referee passes
+    depths, ``direction * x``): the halfway line, the ball or the second-last opponent,
+    whichever is deepest (duplicates count: two opponents level are last and second-last).
+    With fewer than two opponents in ``opp_x`` there is no second-last opponent and the line
+    is +inf: nobody is offside. The one definition of the line, for the referee and for every
+    team that keeps its players onside."""
+    last = second = -math.inf
+    for i in range(opp_x.shape[0]):
+        x = opp_x[i]
+        if x > last:
+            last, second = x, last
+        elif x > second:
+            second = x
+    if opp_x.shape[0] < 2:
+        return math.inf
+    line = 0.0
+    if ball_x > line:
+        line = ball_x
+    if second > line:
+        line = second
+    return line
 
 
 class OffsideJudge(Judge):

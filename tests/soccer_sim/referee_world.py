@@ -37,8 +37,10 @@ def default_positions(n: int = N, home_attacks: int = 1) -> np.ndarray:
 def make_world(*, ball=(0.0, 0.0), ball_vel=(0.0, 0.0), mode: PlayMode = PlayMode.PLAY_ON,
                mode_team: int = NO_TEAM, cycle: int = 100, home_attacks: int = 1,
                last_touch: int = NO_PLAYER, config: MatchConfig | None = None,
-               moves: dict[int, tuple[float, float]] | None = None):
-    """A referee, a world state and its event log. ``moves`` maps player rows to positions."""
+               moves: dict[int, tuple[float, float]] | None = None, rng: np.random.Generator | None = None,
+               types: np.ndarray | None = None):
+    """A referee, a world state and its event log. ``moves`` maps player rows to positions;
+    ``rng`` and ``types`` go to the referee (:class:`~soccer_sim.referee.Referee`)."""
     config = config or MatchConfig()
     n = config.players_per_team
     pos = default_positions(n, home_attacks)
@@ -52,7 +54,7 @@ def make_world(*, ball=(0.0, 0.0), ball_vel=(0.0, 0.0), mode: PlayMode = PlayMod
         mode_start=cycle, last_touch=last_touch,
     )
     events = EventLog()
-    return Referee(MatchSetup.resolve(config), events), state, events
+    return Referee(MatchSetup.resolve(config), events, rng, types), state, events
 
 
 def step(referee: Referee, state: WorldState, touchers=NO_TOUCH) -> None:

@@ -171,8 +171,7 @@ def test_a_tacklers_type_sets_its_tackle_noise():
         rng, speeds = np.random.default_rng(5), []
         for _ in range(60):
             state = WorldState((1, 1), pos=[(0.0, 0.0), (30.0, 0.0)], ball=(0.5, 0.0))
-            tackles = Tackles(config, state, (-1, -1), rng)
-            tackles.types = kin.types
+            tackles = Tackles(config, state, (-1, -1), rng, kin.types)
             outcome = tackles.resolve(state, np.array([0.0, np.nan]), np.zeros(2, dtype=bool), True,
                                       np.zeros((2, 4)), np.zeros(2, dtype=bool), np.ones(2, dtype=bool))
             tackles.push(state, outcome, kicked=False)
@@ -213,7 +212,6 @@ def test_the_foul_judge_uses_the_fouled_players_kickable_margin():
     from soccer_sim.config import TackleConfig
     from soccer_sim.kinematics import Kinematics
     from soccer_sim.player_types import default_type
-    from soccer_sim.rules.fouls import FoulJudge
     from soccer_sim.state import EventKind
     from soccer_sim.tackles import TackleOutcome
     from tests.soccer_sim.referee_world import N, NO_TOUCH, kinds, make_world
@@ -223,14 +221,14 @@ def test_the_foul_judge_uses_the_fouled_players_kickable_margin():
     gap = config.physics.kickable_distance + 0.05  # the ball just beyond a default player's reach
 
     def fouls(margin: float | None) -> bool:
-        ref, state, events = make_world(ball=(gap, 0.0), config=config,
-                                        moves={tackler: (-1.1, 0.0), fouled: (0.0, 0.0)})
+        types = None
         if margin is not None:
             kin = Kinematics(config, 2 * N)
             base = default_type(config)
             kin.set_types([replace(base, kickable_margin=margin) if row == fouled else base for row in range(2 * N)])
-            judge = next(j for j in ref.judges if isinstance(j, FoulJudge))
-            judge.types = kin.types
+            types = kin.types
+        ref, state, events = make_world(ball=(gap, 0.0), config=config, types=types,
+                                        moves={tackler: (-1.1, 0.0), fouled: (0.0, 0.0)})
         dashed = np.zeros(2 * N, dtype=bool)
         outcome = TackleOutcome(rows=[tackler], reached=[True], fouls=[True], pushers=[tackler], dashed=dashed)
         ref.on_commands(state, NO_TOUCH, np.zeros(2, dtype=bool), outcome)
@@ -241,18 +239,25 @@ def test_the_foul_judge_uses_the_fouled_players_kickable_margin():
 
 
 def test_a_goalkeeper_with_a_stretched_catch_area_reaches_further_with_falling_chance():
+    from dataclasses import replace
+
+    from soccer_sim.kinematics import Kinematics
+    from soccer_sim.player_types import default_type
     from soccer_sim.state import HOME, PlayMode
     from tests.soccer_sim.referee_world import N, catch, make_world
 
     length = CONFIG.rules.catch_length
 
     def caught(distance: float, stretch: float | None, seed: int = 0) -> bool:
-        ref, state, _ = make_world(ball=(-45.0 + distance, 0.0), ball_vel=(-1.0, 0.0), moves={0: (-45.0, 0.0)},
-                                   last_touch=N + 9)
+        rng = types = None
         if stretch is not None:
-            ref.goalkeeper.catch_stretch = np.full(2 * N, 1.0)
-            ref.goalkeeper.catch_stretch[0] = stretch
-            ref.goalkeeper.rng = np.random.default_rng(seed)
+            kin = Kinematics(CONFIG, 2 * N)
+            base = default_type(CONFIG)
+            kin.set_types([replace(base, catchable_area_l_stretch=stretch) if row == 0 else base
+                           for row in range(2 * N)])
+            rng, types = np.random.default_rng(seed), kin.types
+        ref, state, _ = make_world(ball=(-45.0 + distance, 0.0), ball_vel=(-1.0, 0.0), moves={0: (-45.0, 0.0)},
+                                   last_touch=N + 9, rng=rng, types=types)
         catch(ref, state, HOME)
         return state.play_mode == PlayMode.GOALIE_HOLDS
 
