@@ -1,3 +1,4 @@
+"""The benchmarks behind ``soccer-sim bench``: one module per benchmark, and the options the match benchmarks share."""
 
 
 def add_match_arguments(parser, matches: int) -> None:
