@@ -60,8 +60,9 @@ The API, by module:
   :class:`CrossParams`, :class:`CrossPlan`.
 * :mod:`~agents.skills.saving`: :func:`parry_kick`, :func:`parry_direction`,
   :func:`goalkeeper_kick`, :class:`SaveParams`.
-* :mod:`~agents.skills.decision`: :func:`decide_on_ball`, :class:`DecisionParams`,
-  :class:`BallDecision`, :class:`OnBallAction`.
+* :mod:`~agents.skills.decision`: :func:`decide_on_ball` (the one place the player on the
+  ball decides), :class:`DecisionParams` with :class:`FinishParams`, :class:`CarryParams` and
+  :class:`SafetyParams`, :class:`BallDecision`, :class:`OnBallAction`.
 
 The compiled kernels live in three modules: :mod:`~agents.skills.interception_kernels`,
 :mod:`~agents.skills.ball_kernels` (kicks, lanes, passes) and
@@ -82,7 +83,8 @@ Timings of every call for a team of 11: ``python -m agents.skills.timing``
 from agents.skills.clearing import ClearParams, ClearPlan, best_clearance, goal_kick_clearance
 from agents.skills.context import Players, SkillContext, ViewArrays
 from agents.skills.crossing import CrossParams, CrossPlan, best_cross, in_crossing_zone
-from agents.skills.decision import BallDecision, DecisionParams, OnBallAction, decide_on_ball
+from agents.skills.decision import (BallDecision, CarryParams, DecisionParams, FinishParams, OnBallAction, SafetyParams,
+                                    decide_on_ball)
 from agents.skills.dribbling import DribbleParams, DribblePlan, dribble, dribble_directions
 from agents.skills.goalkeeping import (Distribution, GoalieParams, comes_out, distribute, guard_position,
                                       should_catch)
@@ -97,7 +99,7 @@ from agents.skills.saving import SaveParams, goalkeeper_kick, parry_direction, p
 from agents.skills.shooting import ShotParams, ShotPlan, aim_points, best_shot
 
 __all__ = [
-    "UNREACHABLE", "BallDecision", "BallRace", "ClearParams", "ClearPlan", "CrossParams", "CrossPlan",
+    "UNREACHABLE", "BallDecision", "BallRace", "CarryParams", "FinishParams", "SafetyParams", "ClearParams", "ClearPlan", "CrossParams", "CrossPlan",
     "best_cross", "in_crossing_zone", "DecisionParams", "Distribution", "DribbleParams", "DribblePlan",
     "GoalieParams", "Interception", "MotionModel", "OnBallAction", "PassParams", "PacingParams", "PassPlan",
     "Players", "ShotParams", "ShotPlan", "SkillContext", "SkillInputError", "ViewArrays", "aim_points",

@@ -1,6 +1,9 @@
-"""The on-ball decision: shoot, pass, dribble or clear, for the player who can kick the ball.
+"""The on-ball decision, whole: what the player who can kick the ball does with it (team
+frame: we attack +x). :func:`decide_on_ball` is the one place where a player decides to shoot,
+cross, pass, dribble, clear or put the ball out of danger; the other skills only make the
+plans it chooses between.
 
-The order and thresholds (:class:`DecisionParams`):
+**The first choice**, in this order (:class:`DecisionParams`):
 
 1. **Shoot** when the best shot's probability-like score clears ``ShotParams.threshold``
    (:mod:`agents.skills.shooting`; out of range means no shot).
@@ -19,6 +22,19 @@ The order and thresholds (:class:`DecisionParams`):
 
 Under pressure means an opponent's interception of the ball (rolled with its current
 velocity) comes within ``pressure_cycles`` cycles.
+
+**In play on** (``in_play=True``: the built-in team's player on the ball, not a set-play
+taker) three refinements follow the first choice, the first that applies:
+
+a. **Finish** (:class:`FinishParams`): a dribble or clearance within ``shot_range`` of the
+   opponents' goal, with an opponent on the ball or about to win it, becomes a full-power
+   shot (:func:`finishing_shot`).
+b. **Carry** (:class:`CarryParams`): near the opponents' goal a pass back or square, or a
+   clearance, becomes a dribble on towards the goal, unless an opponent is on the ball
+   (:func:`carry_kick`).
+c. **Keep safe** (:class:`SafetyParams`): a dribble or clearance with an opponent on the ball,
+   or pressed deep in our half, goes behind, wide of our post, near our goal (``BLOCK``), and
+   towards the nearer touchline elsewhere (``WING``; :func:`safe_kick`).
 """
 
 from __future__ import annotations
@@ -33,8 +49,10 @@ from agents.skills.context import SkillContext
 from agents.skills.crossing import CrossParams, CrossPlan, best_cross, in_crossing_zone
 from agents.skills.dribbling import DribbleParams, DribblePlan, dribble
 from agents.skills.interception import intercept
-from agents.skills.model import SkillInputError, check_params, check_player
+from agents.skills.kicking import kick_for_velocity
+from agents.skills.model import MotionModel, SkillInputError, check_params, check_player
 from agents.skills.passing import PassParams, PassPlan, best_pass
+from agents.skills.saving import SaveParams, parry_kick
 from agents.skills.shooting import ShotParams, ShotPlan, best_shot
 from soccer_sim.team import TeamView
 
@@ -47,6 +65,89 @@ class OnBallAction(str, Enum):
     PASS = "pass"
     DRIBBLE = "dribble"
     CLEAR = "clear"
+    BLOCK = "block"
+    """Put the ball behind, wide of our post, near our goal (a corner rather than a chance)."""
+    WING = "wing"
+    """Kick the ball hard towards the nearer touchline, a little forwards."""
+
+
+@dataclass(frozen=True)
+class FinishParams:
+    """When a pressed player near the opponents' goal shoots (metres, cycles).
+
+    Near the goal the first choice dribbles or clears when no shot clears its threshold. With
+    a defender on the ball as well, both kicks add up and the defender's (wide of its post and
+    behind: :mod:`agents.skills.saving`) then decides where the ball goes; a dribble is lost and
+    a clearance meets the defender's mirror image. A real forward closed down at the edge of
+    the box shoots at once: the ball goes in, the goalkeeper must save, or a block sends it
+    behind for a corner."""
+
+    shot_range: float = 25.0
+    """Within this distance of the opponents' goal centre (m) a pressed or contested ball is
+    shot: about the penalty area's depth plus a few metres, where real forwards still shoot and
+    about as far as a full-power shot keeps enough pace to beat a goalkeeper's reach (0: never)."""
+    pressure_cycles: int = 3
+    """An opponent controlling the ball within this many cycles counts as pressing (the
+    decision's own pressure horizon, shorter than the open-lane shot's): the dribble would be
+    lost before it gets closer."""
+
+    def __post_init__(self) -> None:
+        check_params(self, non_negative=("shot_range",), whole=("pressure_cycles",))
+
+
+@dataclass(frozen=True)
+class CarryParams:
+    """When the player on the ball near the opponents' goal dribbles on (metres).
+
+    Measured in built-in matches (on-ball decisions with the ball 17-35 m from the opponents'
+    goal centre): about half of the passes went back or square (reception point more than 3 m
+    further from the goal than the ball, or within 3 m of the ball's distance) and only a fifth
+    towards the goal, and a pressed player with no safe pass cleared the ball long, usually
+    into the goalkeeper's hands; decisions with the ball within 17 m were rare, so few shots
+    came from where shots score (helios-base, real server: median shot 11 m from the goal
+    centre, 61 % of those from under 11 m scored; ours 25 m). A real forward there carries the
+    ball on towards the goal and shoots from close."""
+
+    carry_range: float = 32.0
+    """Within this distance of the opponents' goal centre (m) a pass back or a clearance
+    becomes a dribble: the final third's width of play around the box, beyond which passing
+    back to build up is what real teams do (0: never). In 48 built-in matches 38 m scored a
+    little more (goals 3.98 against 3.83) but sent more balls out (corners 1.75 -> 1.48,
+    kick-ins 15.7 -> 17.7)."""
+    clear_range: float = 42.0
+    """Within this distance of the opponents' goal centre (m) a clearance becomes a dribble
+    (at least ``carry_range``): from there a long clearance mostly rolls to their goalkeeper.
+    In 48 built-in matches (seeds 0..2) 42 m against 32 m: goalkeeper catches 8.8 -> 7.0,
+    goal kicks 3.7 -> 2.8 (real server 5.4 and 2.8), goals unchanged (3.8), kick-ins 15.7 ->
+    20.3 (dribbles lost over the touchline); the whole opponents' half: catches 5.2,
+    kick-ins 21.2, shots 14.6 -> 12.6."""
+    pass_gain: float = 3.0
+    """A pass stands when its reception point is at least this much closer to the goal centre
+    than the ball (m): a pass forward into the box beats carrying it there."""
+
+    def __post_init__(self) -> None:
+        check_params(self, non_negative=("carry_range", "clear_range", "pass_gain"))
+
+
+@dataclass(frozen=True)
+class SafetyParams:
+    """Where a contested or pressed ball is put out of danger instead of dribbled or cleared."""
+
+    block: SaveParams = field(default_factory=lambda: SaveParams(behind_depth=20.0))
+    """The block: within ``block.behind_depth`` (20 m: the penalty area and a few metres
+    beyond) of our goal line, wide of the post and over our goal line (a corner rather than a
+    chance). With the area's 16.5 m alone, 1.5 corners a match between built-in teams; with
+    20 m, 1.75. Also an outfield player's block of a shot at our goal."""
+    deep_pressure: int = 4
+    """Cycles until an opponent controls the ball within which a player of ours within the
+    block's depth counts as pressed (and so puts the ball behind or wide instead of dribbling
+    or clearing across our goal): a defender closed down near its goal line plays safe, as
+    real ones do."""
+
+    def __post_init__(self) -> None:
+        check_params(self, whole=("deep_pressure",))
+        if not isinstance(self.block, SaveParams):
+            raise SkillInputError("SafetyParams.block must be a SaveParams")
 
 
 @dataclass(frozen=True)
@@ -67,12 +168,19 @@ class DecisionParams:
     clearing: ClearParams = field(default_factory=ClearParams)
     crossing: CrossParams | None = field(default_factory=CrossParams)
     """Where and how crosses are tried (None: never cross)."""
+    finishing: FinishParams = field(default_factory=FinishParams)
+    """In play on: when a pressed player near the opponents' goal shoots (refinement a)."""
+    carrying: CarryParams = field(default_factory=CarryParams)
+    """In play on: when the player on the ball near the opponents' goal dribbles on (refinement b)."""
+    safety: SafetyParams = field(default_factory=SafetyParams)
+    """In play on: where a contested or pressed ball is put out of danger (refinement c)."""
 
     def __post_init__(self) -> None:
         check_params(self, non_negative=("dribble_clearance",), finite=("pass_good", "clear_line"),
                      whole=("pressure_cycles",))
         for name, kind in (("shot", ShotParams), ("passing", PassParams), ("dribbling", DribbleParams),
-                           ("clearing", ClearParams), ("crossing", CrossParams)):
+                           ("clearing", ClearParams), ("crossing", CrossParams), ("finishing", FinishParams),
+                           ("carrying", CarryParams), ("safety", SafetyParams)):
             if name == "crossing" and self.crossing is None:
                 continue
             if not isinstance(getattr(self, name), kind):
@@ -88,25 +196,41 @@ class BallDecision:
     action: OnBallAction
     kick: np.ndarray
     dash: np.ndarray | None
-    plan: ShotPlan | CrossPlan | PassPlan | DribblePlan | ClearPlan
+    plan: ShotPlan | CrossPlan | PassPlan | DribblePlan | ClearPlan | None
+    """None for ``BLOCK`` and ``WING`` (a kick in a fixed direction, no plan)."""
     pressure: int
     """Cycles until the fastest opponent controls the ball."""
 
 
 def decide_on_ball(ctx: SkillContext, view: TeamView, player: int,
-                   params: DecisionParams = DecisionParams(), pressure: int | None = None) -> BallDecision:
-    """Choose what ``player`` (who can kick the ball) does with it this cycle.
+                   params: DecisionParams = DecisionParams(), pressure: int | None = None, *,
+                   in_play: bool = False, contested: bool = False) -> BallDecision:
+    """What ``player`` (who can kick the ball) does with it this cycle: the first choice and,
+    ``in_play``, its refinements (module docstring).
 
     ``pressure``: the cycles until the fastest opponent controls the ball, when the caller
     already knows it (``ball_race(ctx, view).theirs.first_cycle`` of this very view); None:
-    worked out here."""
+    worked out here. ``contested``: an opponent can kick the ball this cycle too (in play on)."""
     model = ctx.model
     player = check_player(player, model.players_per_team)
-    holder = view.ball_holder == player
-    goalie = player == model.goalie_index
     if pressure is None:
         arrays = ctx.arrays(view)
         pressure = intercept(ctx, arrays.ball, arrays.ball_vel, arrays.theirs, 1.0).first_cycle
+    choice = _first_choice(ctx, view, player, params, pressure)
+    if not in_play:
+        return choice
+    return (finishing_shot(ctx, view, player, choice, contested, params)
+            or (None if contested else carry_kick(ctx, view, player, choice, params))
+            or safe_kick(ctx, view, player, choice, contested, params.safety)
+            or choice)
+
+
+def _first_choice(ctx: SkillContext, view: TeamView, player: int, params: DecisionParams,
+                  pressure: int) -> BallDecision:
+    """Steps 1-7 of the module docstring."""
+    model = ctx.model
+    holder = view.ball_holder == player
+    goalie = player == model.goalie_index
     under_pressure = pressure <= params.pressure_cycles
 
     shot = best_shot(ctx, view, player, params.shot, holder, pressure)
@@ -130,3 +254,80 @@ def decide_on_ball(ctx: SkillContext, view: TeamView, player: int,
         clear = best_clearance(ctx, view, player, params.clearing, holder)
         return BallDecision(OnBallAction.CLEAR, clear.kick, None, clear, pressure)
     return BallDecision(OnBallAction.DRIBBLE, dribble_plan.kick, dribble_plan.dash, dribble_plan, pressure)
+
+
+def goal_distance(half_length: float, point: np.ndarray) -> float:
+    """Distance (m) from ``point`` (team frame) to the opponents' goal centre (half_length, 0)."""
+    return float(np.hypot(half_length - float(point[0]), float(point[1])))
+
+
+def finishing_shot(ctx: SkillContext, view: TeamView, player: int, choice: BallDecision, contested: bool,
+                   params: DecisionParams = DecisionParams()) -> BallDecision | None:
+    """Refinement a: ``player`` shoots at full power (the best aim of :func:`best_shot`, whatever
+    its score) because it is pressed near the opponents' goal, or None when ``choice`` stands:
+    the choice is to dribble or clear (a shot or a pass stands), and the ball is within
+    ``finishing.shot_range`` of the goal centre with an opponent on it (``contested``) or
+    controlling it within ``finishing.pressure_cycles`` (``choice.pressure``)."""
+    finish = params.finishing
+    if finish.shot_range <= 0.0 or choice.action not in (OnBallAction.DRIBBLE, OnBallAction.CLEAR):
+        return None
+    if not contested and choice.pressure > finish.pressure_cycles:
+        return None
+    if goal_distance(ctx.model.half_length, view.ball) > finish.shot_range:
+        return None
+    plan = best_shot(ctx, view, player, params.shot, pressure=int(choice.pressure))
+    return None if plan is None else BallDecision(OnBallAction.SHOOT, plan.kick, None, plan, choice.pressure)
+
+
+def carry_kick(ctx: SkillContext, view: TeamView, player: int, choice: BallDecision,
+               params: DecisionParams = DecisionParams()) -> BallDecision | None:
+    """Refinement b: ``player`` (outfield) carries the ball on towards the opponents' goal, or
+    None when ``choice`` stands: within ``carrying.carry_range`` of the goal centre a pass whose
+    reception point is not at least ``carrying.pass_gain`` metres closer to the goal, when the
+    best dribbling direction keeps at least ``dribble_clearance``; within
+    ``carrying.clear_range`` (further out), a clearance always."""
+    carry = params.carrying
+    if carry.carry_range <= 0.0 or choice.action not in (OnBallAction.PASS, OnBallAction.CLEAR):
+        return None
+    gx = ctx.model.half_length
+    dist = goal_distance(gx, view.ball)
+    if dist > (carry.carry_range if choice.action == OnBallAction.PASS
+               else max(carry.carry_range, carry.clear_range)):
+        return None
+    if choice.action == OnBallAction.PASS:
+        point = choice.plan.receive_point
+        if goal_distance(gx, point) <= dist - carry.pass_gain:
+            return None
+    plan = dribble(ctx, view, player, params.dribbling)
+    if choice.action == OnBallAction.PASS and plan.clearance < params.dribble_clearance:
+        return None
+    return BallDecision(OnBallAction.DRIBBLE, plan.kick, plan.dash, plan, choice.pressure)
+
+
+def safe_kick(ctx: SkillContext, view: TeamView, player: int, choice: BallDecision, contested: bool,
+              params: SafetyParams = SafetyParams()) -> BallDecision | None:
+    """Refinement c: a dribble or clearance that an opponent contests (against its mirror
+    image the two kicks cancel), or that is pressed within ``params.deep_pressure`` cycles
+    within the block's depth of our goal line, goes behind wide of our post there (``BLOCK``)
+    and towards the nearer touchline elsewhere (``WING``; both teams doing so add up); None
+    when ``choice`` stands."""
+    model = ctx.model
+    if choice.action not in (OnBallAction.DRIBBLE, OnBallAction.CLEAR):
+        return None
+    deep = float(view.ball[0]) < params.block.behind_depth - model.half_length
+    pressed = choice.pressure <= params.deep_pressure and deep
+    if not (contested or pressed):
+        return None
+    if deep:
+        return BallDecision(OnBallAction.BLOCK, parry_kick(ctx, view, player, params.block), None, None,
+                            choice.pressure)
+    return BallDecision(OnBallAction.WING, wing_kick(model, view, player), None, None, choice.pressure)
+
+
+def wing_kick(model: MotionModel, view: TeamView, player: int) -> np.ndarray:
+    """The kick sending the ball hard towards the nearer touchline, a little forwards."""
+    side = 1.0 if view.ball[1] >= 0.0 else -1.0
+    direction = np.array([0.3, side]) / np.hypot(0.3, 1.0)
+    kick, _ = kick_for_velocity(model, view.own_pos[player], view.ball, view.ball_vel,
+                                direction * model.kick_speed_max, player_vel=view.own_vel[player])
+    return kick

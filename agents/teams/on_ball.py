@@ -8,22 +8,8 @@ import numpy as np
 
 from agents import skills
 from agents.skills.tackling import TackleParams, Tackling, player_inertia
-from agents.teams.carrying import carry_kick
-from agents.teams.finishing import finishing_shot
 from soccer_sim.config import MatchConfig
 from soccer_sim.team import SideInfo, TeamCommand, TeamView
-
-_SAVE = skills.SaveParams()
-_BLOCK = skills.SaveParams(behind_depth=20.0)
-"""An outfield player's block of a shot at our goal, or its clearance within ``behind_depth``
-(20 m: the penalty area and a few metres beyond) of our goal line with an opponent about to
-win the ball: wide of the post and over our goal line (a corner rather than a chance). With
-the area's 16.5 m alone, 1.5 corners a match between built-in teams; with 20 m, 1.75."""
-_DEEP_PRESSURE = 4
-"""Cycles until an opponent controls the ball within which a player of ours deep in our half
-counts as pressed (and so puts the ball behind or wide instead of dribbling or clearing across
-our goal): a defender closed down near its goal line plays safe, as real ones do."""
-
 
 def able_players(view: TeamView, eligible: np.ndarray | None) -> np.ndarray | None:
     """(n,) bool: our players who may play the ball (None: all): those of ``eligible`` (None:
@@ -87,46 +73,22 @@ def choose_kicker(view: TeamView, race: skills.BallRace, ball_player: int, kicka
 def on_ball_kick(ctx: skills.SkillContext, view: TeamView, kicker: int, goalie: int,
                  decision_params: skills.DecisionParams, race: skills.BallRace,
                  contested: bool, shot_at_us: bool = False) -> tuple[np.ndarray, np.ndarray | None, bool]:
-    """``kicker``'s kick: (kick, the dribbler's dash or None, whether it is a shot).
+    """``kicker``'s kick in play on: (kick, the dribbler's dash or None, whether it is a shot).
 
     The goalkeeper, which may kick but not catch here, parries when pressed and otherwise
-    distributes. An outfield player decides with :func:`agents.skills.decide_on_ball`; against
-    an opponent who kicks the ball too, a dribble or a clearance up the field would meet its
-    mirror image and the two kicks cancel, so it kicks towards the nearer touchline instead
-    (both teams doing so add up); pressed in our box, it kicks wide of the goal and behind
-    (a corner rather than a chance); pressed near their goal, it shoots
-    (:mod:`agents.teams.finishing`), and there it carries the ball on rather than passing back
-    or clearing (:mod:`agents.teams.carrying`). ``shot_at_us``: the ball is the opponents' shot heading into our
-    goal; an outfield player blocks it wide (:data:`_BLOCK`)."""
-    model = ctx.model
+    distributes (:func:`agents.skills.goalkeeper_kick`); an outfield player blocks the
+    opponents' shot heading into our goal (``shot_at_us``) wide of the post
+    (``decision_params.safety.block``), and otherwise decides with
+    :func:`agents.skills.decide_on_ball` in play on (``contested``: an opponent can kick the
+    ball too), the one place where the team shoots, crosses, passes, dribbles, clears or puts
+    the ball out of danger."""
     if kicker == goalie:
         return skills.goalkeeper_kick(ctx, view, kicker, race.theirs.first_cycle), None, False
     if shot_at_us:
-        return skills.parry_kick(ctx, view, kicker, _BLOCK), None, False
-    decision = skills.decide_on_ball(ctx, view, kicker, decision_params, pressure=race.theirs.first_cycle)
-    finish = finishing_shot(ctx, view, kicker, decision, contested, decision_params.shot)
-    if finish is not None:  # pressed near their goal: shoot (agents.teams.finishing)
-        return finish, None, True
-    carry = None if contested else carry_kick(ctx, view, kicker, decision, decision_params)
-    if carry is not None:  # near their goal: dribble on rather than pass back or clear
-        return carry[0], carry[1], False
-    # Within the block's depth of our goal line (any width), a pressed player puts the ball
-    # behind or wide rather than across our goal.
-    deep = float(view.ball[0]) < _BLOCK.behind_depth - model.half_length
-    pressed = race.theirs.first_cycle <= _DEEP_PRESSURE and deep
-    if (contested or pressed) and decision.action in (skills.OnBallAction.DRIBBLE, skills.OnBallAction.CLEAR):
-        kick = skills.parry_kick(ctx, view, kicker, _BLOCK) if deep else wing_kick(model, view, kicker)
-        return kick, None, False
+        return skills.parry_kick(ctx, view, kicker, decision_params.safety.block), None, False
+    decision = skills.decide_on_ball(ctx, view, kicker, decision_params, pressure=race.theirs.first_cycle,
+                                     in_play=True, contested=contested)
     return decision.kick, decision.dash, decision.action == skills.OnBallAction.SHOOT
-
-
-def wing_kick(model: skills.MotionModel, view: TeamView, kicker: int) -> np.ndarray:
-    """The kick sending the ball hard towards the nearer touchline, a little forwards."""
-    side = 1.0 if view.ball[1] >= 0.0 else -1.0
-    direction = np.array([0.3, side]) / np.hypot(0.3, 1.0)
-    kick, _ = skills.kick_for_velocity(model, view.own_pos[kicker], view.ball, view.ball_vel,
-                                       direction * model.kick_speed_max, player_vel=view.own_vel[kicker])
-    return kick
 
 
 def ball_reach(our_cycles: np.ndarray, outfield: np.ndarray, model: skills.MotionModel) -> np.ndarray:

@@ -1,4 +1,4 @@
-"""Carrying the ball into the box (agents.teams.carrying): near the opponents' goal a free
+"""Carrying the ball into the box (agents.skills.decision, refinement b): near the opponents' goal a free
 player dribbles on instead of passing back, and a pressed one instead of clearing long."""
 
 from __future__ import annotations
@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from agents import skills
-from agents.teams.carrying import CarryParams, carry_kick
+from agents.skills.decision import CarryParams, carry_kick
 from agents.teams.on_ball import on_ball_kick
 from agents.teams.style import ATTACKING_DECISIONS
 from tests.agents.skills.skill_views import CONFIG, HL, make_view
@@ -38,8 +38,8 @@ def test_near_their_goal_a_free_player_dribbles_on_instead_of_passing_back() -> 
     decision = skills.decide_on_ball(CTX, view, P, passing)
     assert decision.action == skills.OnBallAction.PASS and decision.plan.receiver == 7
     carried = carry_kick(CTX, view, P, decision, passing)
-    assert carried is not None
-    kick, dash = carried
+    assert carried is not None and carried.action == skills.OnBallAction.DRIBBLE
+    kick, dash = carried.kick, carried.dash
     assert kick[0] > 0.0 and dash[0] > 0.0  # ball and player go on towards the goal
     plan = skills.dribble(CTX, view, P, passing.dribbling)
     np.testing.assert_allclose(kick, plan.kick)
@@ -59,7 +59,7 @@ def test_far_from_goal_or_forwards_the_pass_stands() -> None:
     decision = skills.decide_on_ball(CTX, near, P, passing)
     forward = replace(decision.plan, receive_point=np.array([HL - 15.0, 3.0]))  # 13 m closer to the goal
     assert carry_kick(CTX, near, P, replace(decision, plan=forward), passing) is None
-    assert carry_kick(CTX, near, P, decision, passing, CarryParams(carry_range=0.0)) is None
+    assert carry_kick(CTX, near, P, decision, replace(passing, carrying=CarryParams(carry_range=0.0))) is None
     shoot = replace(decision, action=skills.OnBallAction.SHOOT)
     assert carry_kick(CTX, near, P, shoot, passing) is None
 
@@ -83,14 +83,14 @@ def test_a_pressed_player_in_the_attacking_zone_dribbles_rather_than_clears() ->
     decision = skills.decide_on_ball(CTX, mid, P, DECISIONS)
     assert decision.action == skills.OnBallAction.CLEAR
     assert carry_kick(CTX, mid, P, decision, DECISIONS) is not None
-    assert carry_kick(CTX, mid, P, decision, DECISIONS, CarryParams(clear_range=0.0)) is None
+    assert carry_kick(CTX, mid, P, decision, replace(DECISIONS, carrying=CarryParams(clear_range=0.0))) is None
     view = pressed_view(29.0)
     decision = skills.decide_on_ball(CTX, view, P, DECISIONS)
     assert decision.action == skills.OnBallAction.CLEAR  # pressed, no pass: the decision clears
     carried = carry_kick(CTX, view, P, decision, DECISIONS)
     assert carried is not None
-    np.testing.assert_allclose(carried[0], skills.dribble(CTX, view, P, DECISIONS.dribbling).kick)
-    assert float(np.hypot(*carried[0])) < 0.5 * float(np.hypot(*decision.kick))  # a touch, not a long ball
+    np.testing.assert_allclose(carried.kick, skills.dribble(CTX, view, P, DECISIONS.dribbling).kick)
+    assert float(np.hypot(*carried.kick)) < 0.5 * float(np.hypot(*decision.kick))  # a touch, not a long ball
 
 
 def test_carry_params_reject_bad_values() -> None:

@@ -1,4 +1,4 @@
-"""Finishing under pressure (agents.teams.finishing): a pressed player near the opponents'
+"""Finishing under pressure (agents.skills.decision, refinement a): a pressed player near the opponents'
 goal shoots instead of dribbling into the defender or clearing blind."""
 
 from __future__ import annotations
@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from agents import skills
-from agents.teams.finishing import FinishParams, finishing_shot
+from agents.skills.decision import FinishParams, finishing_shot
 from agents.teams.on_ball import on_ball_kick
 from agents.teams.style import ATTACKING_DECISIONS
 from tests.agents.skills.skill_views import CONFIG, HL, make_view
@@ -38,7 +38,7 @@ def test_pressed_at_the_edge_of_the_box_without_a_shot_it_shoots_instead() -> No
     decision = skills.decide_on_ball(CTX, view, P, DECISIONS)
     assert decision.action in (skills.OnBallAction.DRIBBLE, skills.OnBallAction.CLEAR)
     assert decision.pressure <= FinishParams().pressure_cycles
-    kick = finishing_shot(CTX, view, P, decision, contested=False, shot_params=SHOT)
+    kick = finishing_shot(CTX, view, P, decision, False, DECISIONS).kick
     plan = skills.best_shot(CTX, view, P, SHOT, pressure=decision.pressure)
     assert kick is not None and plan is not None
     np.testing.assert_allclose(kick, plan.kick)
@@ -53,16 +53,16 @@ def test_out_of_range_free_or_with_a_pass_it_does_what_the_decision_says() -> No
     far = pressed_view(30.0)
     decision = skills.decide_on_ball(CTX, far, P, DECISIONS)
     assert decision.action in (skills.OnBallAction.DRIBBLE, skills.OnBallAction.CLEAR)
-    assert finishing_shot(CTX, far, P, decision, contested=True, shot_params=SHOT) is None
+    assert finishing_shot(CTX, far, P, decision, True, DECISIONS) is None
     near = pressed_view(18.0)
     decision = skills.decide_on_ball(CTX, near, P, DECISIONS)
     free = replace(decision, pressure=FinishParams().pressure_cycles + 1)
-    assert finishing_shot(CTX, near, P, free, contested=False, shot_params=SHOT) is None
-    assert finishing_shot(CTX, near, P, free, contested=True, shot_params=SHOT) is not None  # a defender on it
+    assert finishing_shot(CTX, near, P, free, False, DECISIONS) is None
+    assert finishing_shot(CTX, near, P, free, True, DECISIONS) is not None  # a defender on it
     passing = replace(decision, action=skills.OnBallAction.PASS)
-    assert finishing_shot(CTX, near, P, passing, contested=True, shot_params=SHOT) is None
-    off = FinishParams(shot_range=0.0)
-    assert finishing_shot(CTX, near, P, decision, contested=True, shot_params=SHOT, params=off) is None
+    assert finishing_shot(CTX, near, P, passing, True, DECISIONS) is None
+    off = replace(DECISIONS, finishing=FinishParams(shot_range=0.0))
+    assert finishing_shot(CTX, near, P, decision, True, off) is None
 
 
 def test_finish_params_reject_bad_values() -> None:
