@@ -15,7 +15,7 @@ class RuleConfig:
     """The referee's rules and time limits (cycles)."""
 
     half_cycles: int = 3000
-    """Length of one half; a match is two halves and the teams swap ends at half time."""
+    """Length of one half; a match is two halves, the teams keeping their ends (as rcssserver 19)."""
     offside: bool = True
     """Whether the offside rule is enforced."""
     offside_active_distance: float | None = None

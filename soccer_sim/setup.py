@@ -39,7 +39,8 @@ class MatchSetup:
     """Whether restarts are set plays; False: every restart but the opening one is a dropped
     ball on its spot."""
     half_time: bool
-    """Whether the teams change ends at ``config.rules.half_cycles``; False: one period."""
+    """Whether the match has a half-time break at ``config.rules.half_cycles`` (away kicks off the
+    second half; the ends stay); False: one period."""
     start_mode: PlayMode
     """The play mode play opens in."""
     start_side: int

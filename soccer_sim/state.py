@@ -4,7 +4,8 @@ Frames: the *absolute* frame has the origin at the centre spot, +x towards the
 goal on the right. Player rows 0..h-1 are the home team, h..h+a-1 the away
 team (h, a = players of each side; h = a = players per team in a full match,
 ``WorldState.sizes``). ``home_attacks`` tells which way home plays in the
-current half (+1: towards +x, the first half; -1 after the half-time swap).
+whole match (+1: towards +x; -1 only when a scenario starts it so: the teams keep their ends
+at half time, as in rcssserver 19).
 Teams never see this frame: :mod:`soccer_sim.view` mirrors it for them.
 
 Units follow :mod:`soccer_sim.config`: metres, cycles, metres per cycle.
@@ -213,7 +214,7 @@ class WorldState:
         self.half = half
         """0 for the first half, 1 for the second."""
         self.home_attacks = home_attacks
-        """+1 when home attacks towards +x (first half), -1 after the half-time swap."""
+        """+1 when home attacks towards +x, -1 towards -x (for the whole match: no change of ends)."""
         self.play_mode = play_mode
         self.mode_team = mode_team
         """Team the current set play belongs to (NO_TEAM in play on)."""

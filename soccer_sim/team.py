@@ -113,7 +113,7 @@ class TeamView:
     """(ours, theirs)."""
     cycle: int = 0
     half: int = 0
-    """0 for the first half, 1 for the second (the match swaps ends; the view never changes side)."""
+    """0 for the first half, 1 for the second (the teams keep their ends, as in rcssserver 19)."""
     ball_holder: int = NO_PLAYER
     """Index (within this team) of our goalkeeper if it holds the ball, else NO_PLAYER (-1)."""
     effort: np.ndarray | None = None

@@ -5,11 +5,11 @@ player state flags.
 team attacks +x in both halves. Its y axis points down the monitor's screen (+y is to the
 right of a left-team player facing the opponents' goal) and its angles, in degrees, turn
 from +x towards +y. soccer-sim's home team is the left team; its absolute frame has +y up
-the pictures, and home changes ends at half time. A position (x, y) in soccer-sim's frame is
-(s x, -s y) in the log, with s = ``WorldState.home_attacks`` (+1 in the first half, -1 in the
-second): the y flip keeps the picture as soccer-sim draws it, and in the second half the
-field is turned by 180 degrees so that home still attacks +x, as the tools expect of the
-left team. Velocities and directions turn the same way.
+the pictures, and, as in rcssserver 19, no team changes ends at half time. A position (x, y)
+in soccer-sim's frame is (s x, -s y) in the log, with s = ``WorldState.home_attacks`` (+1
+unless a scenario starts home attacking -x, when the field is turned by 180 degrees so that
+home still attacks +x, as the tools expect of the left team): the y flip keeps the picture
+as soccer-sim draws it. Velocities and directions turn the same way.
 
 **Play modes.** See :func:`play_mode_name`; the referee's calls that rcssserver shows as a
 play mode of their own before the restart (offside, back pass, foul charge, drop ball) come

@@ -21,7 +21,7 @@ play_mode_change   ``playModeChange``    after every play-mode switch
 ball_placed        (``award*`` helpers)  a restart put the ball on its spot
 ball_dropped       (``awardDropBall``)   a stuck ball was dropped where it lies (play goes on)
 goal_scored        (``TouchRef`` goal)   a goal, before its GOAL event
-half_time          (``TimeRef``)         the ends are changed
+half_time          (``TimeRef``)         the second half begins (same ends)
 tackle_taken       ``tackleTaken``       a tackle pushed the ball (after the kick judges)
 ================== ===================== =====================================================
 
@@ -85,7 +85,7 @@ class Judge:
         nobody). Called before the score changes and the GOAL event is recorded."""
 
     def half_time(self, state: WorldState) -> None:
-        """Half time: the teams have changed ends."""
+        """Half time: the second half is about to start (the teams keep their ends)."""
 
     def tackle_taken(self, state: WorldState, row: int, foul: bool, dashed: np.ndarray) -> None:
         """``row``'s tackle pushed the ball (``foul``: a foul tackle); ``dashed``: (P,) bool,

@@ -294,13 +294,12 @@ class PlayModes:
             self.kick_off(state, state.mode_team, after_pause=True)
 
     def half_time(self, state: WorldState) -> None:
-        """Swap ends: every player position rotated by 180° about the centre spot; away kicks off
-        (the kick-off stops the ball and the players)."""
+        """Half time as rcssserver 19 has it: the teams keep their ends (no change of sides) and
+        away, the right-hand team at the start, kicks off the second half (the kick-off stops
+        the ball and the players and puts everybody in their own half)."""
         self.events.add(state.cycle, EventKind.HALF_TIME, NO_TEAM, NO_PLAYER,
                         float(state.ball[0]), float(state.ball[1]), 0)
         state.half = 1
-        state.home_attacks = -state.home_attacks
-        np.negative(state.pos, out=state.pos)
         self.hooks.half_time(state)
         self.kick_off(state, AWAY)
 

@@ -163,19 +163,22 @@ def test_kicks_by_the_mode_team_take_the_set_play():
     assert kinds(ev) == [EventKind.KICK, EventKind.SET_PLAY]
 
 
-def test_half_time_swaps_ends_and_the_away_team_kicks_off():
+def test_half_time_keeps_the_ends_and_the_away_team_kicks_off():
+    """rcssserver 19 changes no sides at half time: the right-hand team kicks off the second half."""
     ref, st, ev = make_world(cycle=49, ball=(20.0, 5.0), ball_vel=(1.0, 0.0), config=config_with(half_cycles=50),
                              last_touch=4)
     st.pos[4] = (-10.0, 5.0)
+    st.pos[N + 4] = (-12.0, 3.0)  # an away player in home's half
     step(ref, st)
-    assert (st.half, st.home_attacks, st.cycle) == (1, -1, 50)
-    assert st.pos[4].tolist() == [10.0, -5.0]  # rotated by 180 degrees: now in home's new half
-    assert (st.pos[:N, 0] >= 0).all() and (st.pos[N:, 0] <= 0).all()
+    assert (st.half, st.home_attacks, st.cycle) == (1, 1, 50)
+    assert st.pos[4].tolist() == [-10.0, 5.0]  # home keeps its end: nobody is moved who stands in their half
+    assert st.pos[N + 4].tolist() == [12.0, 3.0]  # reflected across the halfway line into its own half
+    assert (st.pos[:N, 0] <= 0).all() and (st.pos[N:, 0] >= 0).all()
     assert (st.play_mode, st.mode_team, st.mode_start) == (PlayMode.KICK_OFF, AWAY, 50)
     assert st.ball.tolist() == [0.0, 0.0] and not st.ball_vel.any()
     assert np.hypot(*st.pos[:N].T).min() >= CFG.field.centre_circle_radius - 1e-9
     assert kinds(ev) == [EventKind.HALF_TIME, EventKind.SET_PLAY]
-    assert st.attack_direction(AWAY) == 1 and st.last_touch == NO_PLAYER
+    assert st.attack_direction(HOME) == 1 and st.attack_direction(AWAY) == -1 and st.last_touch == NO_PLAYER
 
 
 def test_time_over_after_the_last_cycle():

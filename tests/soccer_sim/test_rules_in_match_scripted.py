@@ -157,16 +157,16 @@ def test_kicking_the_ball_over_the_touchline_gives_the_opponents_a_kick_in():
     assert by == 34.0 and bx == pytest.approx(x)
 
 
-def test_kicking_wide_over_the_goal_line_gives_a_goal_kick_and_ends_swap_at_half_time():
+def test_kicking_wide_over_the_goal_line_gives_a_goal_kick_and_the_ends_stay_at_half_time():
     log = ModeLog()
     result = run_match(Striker(target=(60.0, 20.0)), Idle(), seed=3, config=config(600, half_cycles=300), recorders=[log])
     kicks = [row for row in log.rows if row[1] == PlayMode.GOAL_KICK]
     assert kicks, "the ball never went out over the goal line"
     first_half = [row for row in kicks if row[0] < 300]
     second_half = [row for row in kicks if row[0] >= 300]
-    # Away defends +x in the first half and -x in the second: goal kicks at its goal-area corner.
+    # Away defends +x in both halves (rcssserver changes no ends): goal kicks at its goal-area corner.
     assert first_half and all(row[2] == AWAY and (row[3], row[4]) == (47.0, 9.16) for row in first_half)
-    assert second_half and all(row[2] == AWAY and (row[3], row[4]) == (-47.0, -9.16) for row in second_half)
+    assert second_half and all(row[2] == AWAY and (row[3], row[4]) == (47.0, 9.16) for row in second_half)
     [half_time] = events_of(result, EventKind.HALF_TIME)
     assert half_time[0] == 299
     assert log.rows[299][1:3] == (PlayMode.KICK_OFF, AWAY)
