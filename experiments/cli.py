@@ -25,6 +25,7 @@ from experiments.lazy_parser import LazyParser
 #: Modules that each contribute one top-level sub-command.
 COMMAND_MODULES: tuple[str, ...] = (
     "experiments.commands.play",
+    "experiments.commands.teams",
     "experiments.commands.scenarios",
     "experiments.commands.formation",
     "experiments.commands.bench",
@@ -46,6 +47,25 @@ def build_parser() -> argparse.ArgumentParser:
     for module_name in COMMAND_MODULES:
         importlib.import_module(module_name).register(subparsers)
     return parser
+
+
+def command_paths(parser: argparse.ArgumentParser | None = None) -> list[tuple[str, ...]]:
+    """Every command and sub-command of ``parser`` (default: :func:`build_parser`'s), as the
+    words that choose it: ``()`` for ``soccer-sim`` itself, ``("play",)``,
+    ``("bench", "match")``, ... in the order ``--help`` lists them. Read without building any
+    command's deferred arguments (what ``soccer-sim bench startup`` times and the tests check)."""
+    parser = parser if parser is not None else build_parser()
+    paths: list[tuple[str, ...]] = []
+
+    def walk(node: argparse.ArgumentParser, path: tuple[str, ...]) -> None:
+        paths.append(path)
+        for action in node._actions:  # (argparse keeps its sub-parsers only there)
+            if isinstance(action, argparse._SubParsersAction):
+                for name, child in action.choices.items():
+                    walk(child, (*path, name))
+
+    walk(parser, ())
+    return paths
 
 
 def main(argv: Sequence[str] | None = None) -> int:
