@@ -42,7 +42,7 @@ def build_parser() -> argparse.ArgumentParser:
         prog="soccer-sim",
         description="2D 11v11 soccer simulator for point robots and a lab for multi-robot role assignment.",
     )
-    parser.add_argument("--version", action="version", version=f"%(prog)s {installed_version()}")
+    parser.add_argument("--version", action=_VersionAction)
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=LazyParser)
     for module_name in COMMAND_MODULES:
         importlib.import_module(module_name).register(subparsers)
@@ -80,6 +80,20 @@ def main(argv: Sequence[str] | None = None) -> int:
         parser.print_help()
         return 2
     return call(args.func, args)
+
+
+class _VersionAction(argparse.Action):
+    """``--version``: print ``soccer-sim VERSION`` and exit. The version is read from the
+    installed distribution only when asked (reading it imports importlib.metadata, which every
+    ``--help`` would otherwise pay for)."""
+
+    def __init__(self, option_strings, dest=argparse.SUPPRESS, default=argparse.SUPPRESS, help=None) -> None:
+        super().__init__(option_strings, dest=dest, default=default, nargs=0,
+                         help=help or "show the program's version number and exit")
+
+    def __call__(self, parser, namespace, values, option_string=None) -> None:
+        print(f"{parser.prog} {installed_version()}")
+        parser.exit()
 
 
 def installed_version() -> str:
