@@ -25,6 +25,7 @@ from experiments.lazy_parser import LazyParser
 #: Modules that each contribute one top-level sub-command.
 COMMAND_MODULES: tuple[str, ...] = (
     "experiments.commands.play",
+    "experiments.commands.teams",
     "experiments.commands.scenarios",
     "experiments.commands.formation",
     "experiments.commands.bench",
@@ -41,11 +42,30 @@ def build_parser() -> argparse.ArgumentParser:
         prog="soccer-sim",
         description="2D 11v11 soccer simulator for point robots and a lab for multi-robot role assignment.",
     )
-    parser.add_argument("--version", action="version", version=f"%(prog)s {installed_version()}")
+    parser.add_argument("--version", action=_VersionAction)
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=LazyParser)
     for module_name in COMMAND_MODULES:
         importlib.import_module(module_name).register(subparsers)
     return parser
+
+
+def command_paths(parser: argparse.ArgumentParser | None = None) -> list[tuple[str, ...]]:
+    """Every command and sub-command of ``parser`` (default: :func:`build_parser`'s), as the
+    words that choose it: ``()`` for ``soccer-sim`` itself, ``("play",)``,
+    ``("bench", "match")``, ... in the order ``--help`` lists them. Read without building any
+    command's deferred arguments (what ``soccer-sim bench startup`` times and the tests check)."""
+    parser = parser if parser is not None else build_parser()
+    paths: list[tuple[str, ...]] = []
+
+    def walk(node: argparse.ArgumentParser, path: tuple[str, ...]) -> None:
+        paths.append(path)
+        for action in node._actions:  # (argparse keeps its sub-parsers only there)
+            if isinstance(action, argparse._SubParsersAction):
+                for name, child in action.choices.items():
+                    walk(child, (*path, name))
+
+    walk(parser, ())
+    return paths
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -60,6 +80,20 @@ def main(argv: Sequence[str] | None = None) -> int:
         parser.print_help()
         return 2
     return call(args.func, args)
+
+
+class _VersionAction(argparse.Action):
+    """``--version``: print ``soccer-sim VERSION`` and exit. The version is read from the
+    installed distribution only when asked (reading it imports importlib.metadata, which every
+    ``--help`` would otherwise pay for)."""
+
+    def __init__(self, option_strings, dest=argparse.SUPPRESS, default=argparse.SUPPRESS, help=None) -> None:
+        super().__init__(option_strings, dest=dest, default=default, nargs=0,
+                         help=help or "show the program's version number and exit")
+
+    def __call__(self, parser, namespace, values, option_string=None) -> None:
+        print(f"{parser.prog} {installed_version()}")
+        parser.exit()
 
 
 def installed_version() -> str:

@@ -50,16 +50,31 @@ class Table:
 
         console = console or Console()
         if console.is_terminal or console.is_jupyter:
-            console.print(self.rich())
+            console.print(self._fitting(console))
         else:
             console.file.write(self.plain())
 
-    def rich(self):
-        """The table as a rich renderable (labels fold rather than lose their end to "…")."""
+    def _fitting(self, console):
+        """The boxed table, or the compact one where only that fits the console's width
+        without wrapping a cell (where neither fits, the boxed one, whose labels fold)."""
+        unlimited = console.options.update(max_width=1_000_000)
+        boxed = self.rich()
+        if console.measure(boxed, options=unlimited).maximum <= console.width:
+            return boxed
+        compact = self.rich(compact=True)
+        return compact if console.measure(compact, options=unlimited).maximum <= console.width else boxed
+
+    def rich(self, compact: bool = False):
+        """The table as a rich renderable (labels fold rather than lose their end to "…");
+        ``compact``: without vertical rules or outer edge, a rule under the header only (some
+        20 columns narrower for a table of ten columns: what a terminal of 80 columns gets
+        when the boxed table would not fit)."""
+        from rich import box
         from rich.markup import escape
         from rich.table import Table as RichTable
 
-        table = RichTable(title=escape(self.title), caption=escape(self.caption) or None)
+        layout = dict(box=box.SIMPLE_HEAD, show_edge=False, pad_edge=False, collapse_padding=True) if compact else {}
+        table = RichTable(title=escape(self.title), caption=escape(self.caption) or None, **layout)
         for i, name in enumerate(self.header):
             table.add_column(escape(name), justify="left" if i < self.labels else "right",
                              overflow="fold" if i < self.labels else "ellipsis")
@@ -91,8 +106,9 @@ class Table:
         def line(cells: Sequence[str]) -> str:
             return "| " + " | ".join(cell.replace("|", "\\|") for cell in cells) + " |"
 
+        caption = [f"{self.caption}", ""] if self.caption else []
         return "\n".join([f"**{self.title}**", "", line(self.header),
-                          line(["---"] * len(self.header)), *(line(row) for row in self.rows), ""])
+                          line(["---"] * len(self.header)), *(line(row) for row in self.rows), "", *caption])
 
 
 def _flat(text: str) -> str:

@@ -11,7 +11,10 @@ teams' kernels up in :mod:`experiments.kernel_manifest` (recorded by
 :mod:`experiments.kernel_record`), checks the on-disk cache for each, and when any is missing
 prints ``compiling kernels (first run only)`` to stderr and compiles them in this process and
 one helper process per further core, each taking the next kernel from one shared list (the
-costliest first), all saving into the same cache. Processes started afterwards (the match,
+costliest first), all saving into the same cache. While they compile, the kernels done of the
+total and the seconds elapsed are shown (:class:`~experiments.runner.progress.CountProgress`:
+one line kept up to date on a terminal, a line every few seconds in a log), so a first run
+never sits silent for the minutes a loaded machine may take. Processes started afterwards (the match,
 the workers) load them from there; :func:`load_kernels` does it up front in a worker.
 
 The warm-up only saves time: a kernel it misses (a team not in the manifest, a manifest gone
@@ -20,15 +23,17 @@ stale) is compiled on first use as before, and a match's results never depend on
 
 from __future__ import annotations
 
+import contextlib
 import multiprocessing
 import os
 import signal
 import sys
+import threading
 import time
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from types import SimpleNamespace
-from typing import TextIO
+from typing import Protocol, TextIO
 
 COMPILING_LINE = "compiling kernels (first run only)"
 
@@ -120,10 +125,13 @@ def ensure_cached(kernels: Sequence[Kernel], processes: int | None = None, strea
     missing = [kernel for kernel in kernels if not is_cached(kernel)]
     if not missing:
         return WarmUp(kernels, 0, 0, time.perf_counter() - start)
+    from experiments.runner.progress import CountProgress
+
     stream = stream if stream is not None else sys.stderr
     print(COMPILING_LINE, file=stream, flush=True)
     cores = os.cpu_count() or 1
-    used = compile_kernels(missing, min(processes or cores, cores), here)
+    progress = CountProgress(len(missing), "compiling kernels", "done", stream)
+    used = compile_kernels(missing, min(processes or cores, cores), here, progress)
     seconds = time.perf_counter() - start
     print(f"compiled {len(missing)} kernels in {seconds:.1f} s on {used} process(es)", file=stream, flush=True)
     return WarmUp(kernels, len(missing), used, seconds)
@@ -181,50 +189,89 @@ def _subclasses(cls: type) -> list[type]:
     return found
 
 
-def compile_kernels(kernels: Sequence[Kernel], processes: int, here: bool = True) -> int:
+PROGRESS_EVERY_SECONDS = 1.0
+"""How often the progress of a compilation is looked at (and, on a terminal, redrawn)."""
+
+
+class _Progress(Protocol):
+    def show(self, done: int) -> None: ...
+
+    def close(self, done: int) -> None: ...
+
+
+def compile_kernels(kernels: Sequence[Kernel], processes: int, here: bool = True,
+                    progress: _Progress | None = None) -> int:
     """Compile ``kernels`` into the on-disk cache on up to ``processes`` processes, this one
     included unless ``here`` is False (then helper processes do it all: a process that compiled
     kernels runs its matches some 5 % slower than one that loaded them from the cache, which a
     benchmark must not measure); returns how many took part. The kernels of one function stay
     together (they share its cache index), the costliest first, each process taking the next
-    when it is free."""
+    when it is free. ``progress`` (e.g. a :class:`~experiments.runner.progress.CountProgress`)
+    is shown the number of kernels done every :data:`PROGRESS_EVERY_SECONDS` by a thread of
+    this process, and closed with the final count."""
     groups: dict[str, list[Kernel]] = {}
     for kernel in kernels:
         groups.setdefault(kernel.name, []).append(kernel)
     work = sorted(groups.values(), key=lambda group: -sum(k.seconds for k in group))
-    helpers_count = min(processes, len(work)) - (1 if here else 0)
-    if here and helpers_count <= 0:
-        _compile_share(work, None)
-        return 1
-    helpers_count = max(helpers_count, 1)
     context = multiprocessing.get_context("spawn")
-    counter = context.Value("i", 0)
-    helpers = [context.Process(target=_helper_main, args=(work, counter), daemon=True,
-                               name="soccer-sim-compile") for _ in range(helpers_count)]
-    for helper in helpers:
-        helper.start()
-    try:
-        if here:
-            _compile_share(work, counter)
+    finished = context.Value("i", 0)
+    with _showing(progress, finished):
+        helpers_count = min(processes, len(work)) - (1 if here else 0)
+        if here and helpers_count <= 0:
+            _compile_share(work, None, finished)
+            return 1
+        helpers_count = max(helpers_count, 1)
+        counter = context.Value("i", 0)
+        helpers = [context.Process(target=_helper_main, args=(work, counter, finished), daemon=True,
+                                   name="soccer-sim-compile") for _ in range(helpers_count)]
         for helper in helpers:
-            helper.join()
-    except BaseException:  # Ctrl-C: do not wait for the helpers (each cache file is written atomically)
-        for helper in helpers:
-            helper.terminate()
-        for helper in helpers:
-            helper.join()
-        raise
+            helper.start()
+        try:
+            if here:
+                _compile_share(work, counter, finished)
+            for helper in helpers:
+                helper.join()
+        except BaseException:  # Ctrl-C: do not wait for the helpers (each cache file is written atomically)
+            for helper in helpers:
+                helper.terminate()
+            for helper in helpers:
+                helper.join()
+            raise
     return helpers_count + (1 if here else 0)
 
 
-def _helper_main(work: list[list[Kernel]], counter) -> None:
+@contextlib.contextmanager
+def _showing(progress: _Progress | None, finished) -> Iterator[None]:
+    """Within the block, a daemon thread shows ``progress`` the count in ``finished`` every
+    :data:`PROGRESS_EVERY_SECONDS`; at the end it is closed with the final count (also after
+    Ctrl-C: the line it drew is ended)."""
+    if progress is None:
+        yield
+        return
+    stop = threading.Event()
+
+    def watch() -> None:
+        while not stop.wait(PROGRESS_EVERY_SECONDS):
+            progress.show(finished.value)
+
+    watcher = threading.Thread(target=watch, name="soccer-sim-compile-progress", daemon=True)
+    watcher.start()
+    try:
+        yield
+    finally:
+        stop.set()
+        watcher.join()
+        progress.close(finished.value)
+
+
+def _helper_main(work: list[list[Kernel]], counter, finished) -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
-    _compile_share(work, counter)
+    _compile_share(work, counter, finished)
 
 
-def _compile_share(work: list[list[Kernel]], counter) -> None:
+def _compile_share(work: list[list[Kernel]], counter, finished) -> None:
     """Compile groups of ``work`` in turn: all of them, or with a shared ``counter`` the next
-    one no other process has taken."""
+    one no other process has taken; each kernel done adds one to the shared ``finished``."""
     position = 0
     while True:
         if counter is not None:
@@ -235,6 +282,8 @@ def _compile_share(work: list[list[Kernel]], counter) -> None:
             return
         for kernel in work[position]:
             _compile(kernel)
+            with finished.get_lock():
+                finished.value += 1
         position += 1
 
 

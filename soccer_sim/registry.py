@@ -10,9 +10,11 @@ are not installed.
 
 from __future__ import annotations
 
+import difflib
 import functools
 import importlib
 from importlib import metadata
+from collections.abc import Iterable
 from typing import Any
 
 from soccer_sim.errors import SoccerSimError
@@ -28,7 +30,8 @@ BUILTIN_TEAMS: dict[str, str] = {
 
 
 class TeamNotFoundError(SoccerSimError, LookupError):
-    """A team name or path could not be resolved; the message lists the available names."""
+    """A team name or path could not be resolved; the message says why (for an unknown name: the
+    closest registered names, see :func:`unknown_team_message`)."""
 
 
 def available_teams(refresh: bool = False) -> dict[str, str]:
@@ -47,6 +50,25 @@ def _registered() -> tuple[tuple[str, str], ...]:
     for entry_point in metadata.entry_points(group=ENTRY_POINT_GROUP):
         teams[entry_point.name] = entry_point.value
     return tuple(sorted(teams.items()))
+
+
+LISTED_IN_FULL = 8
+"""An unknown-team message lists every registered name when there are at most this many;
+otherwise only the names closest to the one given, and where to see them all."""
+
+
+def unknown_team_message(name: str, known: Iterable[str]) -> str:
+    """One line saying that ``name`` is not one of the registered teams ``known``: all of them
+    when few, else the closest ones (by spelling) and ``soccer-sim teams``, which lists them,
+    so the line stays short however many teams are installed."""
+    known = sorted(known)
+    if len(known) <= LISTED_IN_FULL:
+        names = f"registered teams: {', '.join(known) or '(none)'}"
+    else:
+        closest = difflib.get_close_matches(name, known, n=3, cutoff=0.6)
+        names = f"did you mean {' or '.join(closest)}? " if closest else ""
+        names += f"`soccer-sim teams` lists the {len(known)} registered teams"
+    return f"unknown team {name!r}; {names}; or give a path 'package.module:Attribute'"
 
 
 def _load_path(path: str, name: str | None = None) -> Any:
@@ -117,8 +139,8 @@ def _instantiate(target: Any, name: str) -> Team:
 
 def resolve_team(spec: Team | str | type) -> tuple[Team, str]:
     """Return (team instance, display name) for a Team object, a class, a registered name or a
-    ``package.module:Attribute`` path. Unknown names raise :class:`TeamNotFoundError` listing
-    the registered ones."""
+    ``package.module:Attribute`` path. Unknown names raise :class:`TeamNotFoundError` naming
+    the closest registered ones (:func:`unknown_team_message`)."""
     if isinstance(spec, str):
         if ":" in spec:
             return _instantiate(_load_path(spec), spec), spec
@@ -126,10 +148,7 @@ def resolve_team(spec: Team | str | type) -> tuple[Team, str]:
         if spec not in teams:  # (perhaps installed since the names were read)
             teams = available_teams(refresh=True)
         if spec not in teams:
-            raise TeamNotFoundError(
-                f"unknown team {spec!r}; registered teams: {', '.join(teams) or '(none)'}; "
-                "or give a path 'package.module:Attribute'"
-            )
+            raise TeamNotFoundError(unknown_team_message(spec, teams))
         return _instantiate(_load_path(teams[spec], spec), spec), spec
     if isinstance(spec, type):
         return _instantiate(spec, spec.__name__), spec.__name__

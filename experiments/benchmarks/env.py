@@ -22,7 +22,6 @@ import argparse
 import statistics
 import time
 
-import numpy as np
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -50,6 +49,8 @@ class _ReplayedPolicy:
 
 
 def _action_table(action_mode: str) -> np.ndarray:
+    import numpy as np
+
     rng = np.random.default_rng(0)
     if action_mode == "high_level":
         return rng.integers(0, 13, size=(997,))
@@ -73,6 +74,7 @@ def _dict_run(args: argparse.Namespace, table: np.ndarray, seed: int) -> float:
 def _arrays_run(args: argparse.Namespace, table: np.ndarray, seed: int) -> float | None:
     """Seconds per step of one run of the batched ``step_arrays`` (None where the environment lacks it)."""
     from soccer_sim.env import parallel_env
+    import numpy as np
 
     environment = parallel_env(controlled="both", max_cycles=args.cycles, action_mode=args.action_mode)
     if not hasattr(environment, "step_arrays"):
@@ -89,6 +91,8 @@ def _arrays_run(args: argparse.Namespace, table: np.ndarray, seed: int) -> float
 
 def _vector_run(args: argparse.Namespace, table: np.ndarray, vector, seed: int) -> float:
     """Seconds per match step of one run of ``--cycles`` steps of a vector environment."""
+    import numpy as np
+
     shape = (vector.num_envs, vector.num_agents)
     rows = [table[(np.arange(np.prod(shape)) + k) % len(table)].reshape(*shape, *table.shape[1:]) for k in range(97)]
     vector.reset(seed=seed)
@@ -139,6 +143,7 @@ def run(args: argparse.Namespace) -> int:
     from experiments.reporting import Table
     from soccer_sim import MatchConfig, run_match
     from soccer_sim.env import PolicyTeam, parallel_env
+    import numpy as np
 
     table = _action_table(args.action_mode)
     config = MatchConfig(max_cycles=args.cycles)

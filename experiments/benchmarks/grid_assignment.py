@@ -16,7 +16,8 @@ at the smallest size and the first robot count (the paper's density block); and 
 
 The command prints the table; with ``--out DIR`` it also writes ``trials.csv`` (one line per
 instance), ``table.csv`` (one per row) and ``speedup.png`` there. Without ``--out`` nothing
-is written.
+is written. The command's options are in :mod:`experiments.benchmarks.lazy_assignment`, which
+``--help`` reads without importing the assignment code.
 """
 
 from __future__ import annotations
@@ -86,22 +87,6 @@ class Trial:
     seconds_lazy: float
     seconds_all: float
     total: float
-
-
-def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--sizes", default="100,200,400", help="sides of the square 2-D workspaces (default: %(default)s)")
-    parser.add_argument("--robots", default="100,200", help="robot counts, as many goals (default: %(default)s)")
-    parser.add_argument("--densities", default="0.2,0.1,0.15,0.25",
-                        help="obstacle densities; the first for every size, the others at the smallest size "
-                             "and the first robot count (default: %(default)s)")
-    parser.add_argument("--sizes-3d", default="40,60",
-                        help="sides of cubic 3-D workspaces (26-connected), at the first density and robot count; "
-                             "'' for none (default: %(default)s)")
-    parser.add_argument("--repeats", type=int, default=3, help="random instances per row (default: %(default)s)")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the instances (default: %(default)s)")
-    parser.add_argument("--out", default=None, metavar="DIR",
-                        help="also write the CSV files and the PNG plot into DIR (created if missing; "
-                             "default: print the table only)")
 
 
 def _numbers(text: str, kind: type, name: str) -> list:

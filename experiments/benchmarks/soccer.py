@@ -23,7 +23,6 @@ import math
 from collections.abc import Iterable, Sequence
 from pathlib import Path
 
-import numpy as np
 
 
 REAL_SERVER_FIGURES = Path(__file__).resolve().parents[2] / "tests" / "data" / "rcssserver" / "helios_matches.json"
@@ -93,6 +92,8 @@ def measure(home: str, away: str, matches: int, seed: int = 0, cycles: int | Non
 
 def by_figure(rows: Iterable[Figures]) -> dict[str, np.ndarray]:
     """Per figure name (in first-seen order), its values over the matches (NaN: undefined)."""
+    import numpy as np
+
     rows = list(rows)
     names: dict[str, None] = {}
     for row in rows:
@@ -103,6 +104,8 @@ def by_figure(rows: Iterable[Figures]) -> dict[str, np.ndarray]:
 
 def mean_and_error(values: np.ndarray) -> tuple[float, float]:
     """Mean and standard error of the defined (non-NaN) values; NaN for what cannot be had."""
+    import numpy as np
+
     defined = values[~np.isnan(values)]
     if defined.size == 0:
         return math.nan, math.nan
@@ -127,6 +130,7 @@ def _cell(value: float, digits: int = 2) -> str:
 def figure_table(title: str, ours: dict[str, np.ndarray], real: dict[str, np.ndarray] | None = None):
     """The table of means and standard errors (and the real server's beside them)."""
     from experiments.reporting import Table
+    import numpy as np
 
     columns = ["per match (both teams)", "mean", "std. error"]
     if real is not None:

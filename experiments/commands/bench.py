@@ -20,7 +20,7 @@ BENCHMARKS: dict[str, tuple[str, str]] = {
     "assignment": ("experiments.benchmarks.assignment", "runtime and quality of the role-assignment methods"),
     "env": ("experiments.benchmarks.env", "steps per second of the PettingZoo environment against a plain match"),
     "formation": ("experiments.benchmarks.formation", "speed of formation queries"),
-    "lazy-assignment": ("experiments.benchmarks.grid_assignment",
+    "lazy-assignment": ("experiments.benchmarks.lazy_assignment",
                         "lazy path-cost goal assignment vs all pairs on random grids (Table 1's shape)"),
     "match": ("experiments.benchmarks.match", "speed of whole matches between two teams"),
     "replay": ("experiments.benchmarks.replay", "time and file size of recording a rerun replay of a match"),

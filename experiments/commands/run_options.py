@@ -23,13 +23,6 @@ class RunInputError(ExperimentError):
     """Bad input to a command that runs matches; the message says what and how to fix it."""
 
 
-def registered_teams_text() -> str:
-    """The registered team names, for --help and error messages."""
-    from soccer_sim import available_teams
-
-    return ", ".join(available_teams())
-
-
 def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None:
     """--games, --seed, --cycles, --workers, --backend, --address, --out, --tables,
     --match-timeout, --retry-errors, --record-dir, --rcg-dir, --record-every, --no-progress, --same-code."""
@@ -92,8 +85,8 @@ def check_observation(teams: list[str], observation: str) -> None:
 def add_team_option(parser: argparse.ArgumentParser, option: str, defaults: tuple[str, ...], what: str) -> None:
     """A comma-separated team-list option whose help names the defaults and the registered teams."""
     parser.add_argument(option, default=",".join(defaults),
-                        help=f"{what}, comma-separated (default: {','.join(defaults)}); registered: "
-                             f"{registered_teams_text()}; or package.module:Attribute paths")
+                        help=f"{what}, comma-separated (default: {','.join(defaults)}): registered names "
+                             "(`soccer-sim teams` lists them) or package.module:Attribute paths")
 
 
 def run_command(args: argparse.Namespace, kind: str, params_of, build_specs, report, figures=None) -> int:
@@ -147,8 +140,10 @@ def incomplete(summary: RunSummary) -> int:
 
 def team_list(text: str, option: str, minimum: int = 1) -> list[str]:
     """Comma-separated team names, each resolvable (a registered name or an importable
-    ``module:Attribute`` path); a RunInputError listing the registered names otherwise."""
+    ``module:Attribute`` path); a RunInputError naming the closest registered names otherwise
+    (:func:`soccer_sim.registry.unknown_team_message`)."""
     from soccer_sim import TeamNotFoundError, available_teams, resolve_team
+    from soccer_sim.registry import unknown_team_message
 
     names = [name.strip() for name in text.split(",") if name.strip()]
     if len(names) != len(set(names)):
@@ -167,8 +162,7 @@ def team_list(text: str, option: str, minimum: int = 1) -> list[str]:
                             "soccer-sim runs in (examples.* paths: run from the checkout)")
                 raise RunInputError(f"{option}: {exc}{hint}") from None
         elif name not in known:
-            raise RunInputError(f"{option}: unknown team {name!r}; registered teams: {', '.join(known)}; "
-                                "or give a path 'package.module:Attribute'")
+            raise RunInputError(f"{option}: {unknown_team_message(name, known)}")
     return names
 
 

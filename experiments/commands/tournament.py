@@ -71,6 +71,14 @@ def _params(args: argparse.Namespace) -> dict:
             "observation": args.observation}
 
 
+LEAGUE_COLUMNS = ["#", "team", "P", "Pts", "W", "D", "L", "FF", "GF", "GA", "mean GD (SE)"]
+"""The league table's columns, short enough for the table to fit 80 columns of a terminal."""
+LEAGUE_LEGEND = ("P played, Pts points (3 a win, 1 a draw), W/D/L won/drawn/lost, FF forfeits (a match the team "
+                 "lost by its own failure, counted as lost without goals), GF/GA goals for/against, mean GD (SE): "
+                 "mean goal difference per match and its standard error")
+"""What the league table's short column names mean (printed under it)."""
+
+
 def tables(records: Sequence, teams: Sequence[str]) -> tuple:
     """(league table, pairwise matrix) as :class:`experiments.reporting.Table`, and the CSV rows
     of both."""
@@ -78,8 +86,8 @@ def tables(records: Sequence, teams: Sequence[str]) -> tuple:
     from experiments.stats import league_table, pairing_summary
 
     league = league_table(records, teams)
-    league_table_text = Table(f"league: {len(teams)} teams, {len(records)} matches",
-                              ["#", "team", "games", "points", "W", "D", "L", "forfeits", "GF", "GA", "mean GD (SE)"], labels=2)
+    league_table_text = Table(f"league: {len(teams)} teams, {len(records)} matches", LEAGUE_COLUMNS, labels=2,
+                              caption=LEAGUE_LEGEND)
     league_rows = []
     for rank, row in enumerate(league, 1):
         league_table_text.rows.append([str(rank), row.team, str(row.games), str(row.points), str(row.wins),

@@ -9,6 +9,10 @@ from typing import TextIO
 QUIET_EVERY_SECONDS = 30.0
 """When not on a terminal, a line at least this often (and at every tenth of the run)."""
 
+COUNT_EVERY_SECONDS = 10.0
+"""When not on a terminal, a line of :class:`CountProgress` at least this often (and at every
+tenth of the count)."""
+
 
 class RunProgress:
     """Counts finished matches and failures; shows done/total, rate, ETA and errors (and how
@@ -67,3 +71,53 @@ class RunProgress:
     def __exit__(self, *exc) -> None:
         if self._live is not None:
             self._live.stop()
+
+
+class CountProgress:
+    """Progress of work counted in like pieces that is done out of sight (compiling kernels in
+    helper processes): ``label: done/total unit, S s``. On a terminal one line rewritten in
+    place at every :meth:`show`; elsewhere (a log, a pipe) a line at every tenth of the count,
+    at least every :data:`COUNT_EVERY_SECONDS` while nothing changes, and at the end."""
+
+    def __init__(self, total: int, label: str, unit: str, stream: TextIO | None = None) -> None:
+        self.total, self.label, self.unit = total, label, unit
+        self.stream = stream if stream is not None else sys.stderr
+        self._live = _is_terminal(self.stream)
+        self._start = self._last_line = time.monotonic()
+        self._last_tenth = 0
+        self._shown = -1
+
+    def text(self, done: int) -> str:
+        """The progress line for ``done`` pieces, with the seconds elapsed since the start."""
+        return f"{self.label}: {done}/{self.total} {self.unit}, {time.monotonic() - self._start:.0f} s"
+
+    def show(self, done: int) -> None:
+        """Report that ``done`` of the pieces are finished (called as often as wanted)."""
+        now = time.monotonic()
+        if self._live:
+            self.stream.write("\r" + self.text(done))
+            self.stream.flush()
+            self._shown = done
+            return
+        tenth = 10 * done // max(self.total, 1)
+        if tenth > self._last_tenth or now - self._last_line >= COUNT_EVERY_SECONDS:
+            self._last_tenth, self._last_line, self._shown = tenth, now, done
+            print(self.text(done), file=self.stream, flush=True)
+
+    def close(self, done: int) -> None:
+        """The last report: the final count (unless just shown), and the end of the live line."""
+        if self._live:
+            self.show(done)
+            self.stream.write("\n")
+            self.stream.flush()
+        elif done != self._shown:
+            self._shown = done
+            print(self.text(done), file=self.stream, flush=True)
+
+
+def _is_terminal(stream: TextIO) -> bool:
+    isatty = getattr(stream, "isatty", None)
+    try:
+        return bool(isatty and isatty())
+    except ValueError:  # a closed stream
+        return False

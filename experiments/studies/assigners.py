@@ -33,8 +33,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-import numpy as np
-
 from experiments.arguments import positive_int
 
 if TYPE_CHECKING:
@@ -88,6 +86,8 @@ class StudyFigures:
     :class:`~experiments.runner.worker.MatchFigures`)."""
 
     def on_start(self, match) -> None:
+        import numpy as np
+
         self.anchor: np.ndarray | None = None
         self.since = 0
         self.longest = 0
@@ -119,6 +119,8 @@ class StudyFigures:
 
 def goal_differences(summaries: list[MatchSummary], team: str) -> np.ndarray:
     """Goal difference of ``team`` in each of its matches."""
+    import numpy as np
+
     return np.array([(s.score[0] - s.score[1]) * (1 if s.home == team else -1) for s in summaries
                      if team in (s.home, s.away)], dtype=float)
 
@@ -138,6 +140,8 @@ def mean_interval(values: np.ndarray, level: float = 0.95) -> tuple[float, float
 
 def team_figure(summaries: list[MatchSummary], team: str, figure: str) -> np.ndarray:
     """Per match, one of ``team``'s figures: a reported one or ``contacts``."""
+    import numpy as np
+
     values = []
     for s in summaries:
         for side, name in enumerate((s.home, s.away)):
@@ -252,6 +256,8 @@ def _table(tables: dict[str, Table], part: str, title: str, header: list[str]) -
 
 def _league(done: list[MatchSummary], params: dict, tables: dict[str, Table]) -> list[str]:
     """The league table (added to ``tables``) and its two lines of text."""
+    import numpy as np
+
     if not done:
         return ["league: no match was played to its end"]
     goals = np.array([sum(s.score) for s in done], float)

@@ -32,8 +32,6 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-import numpy as np
-
 from experiments.errors import StudyArgumentError
 from experiments.results.files import make_output_directory
 
@@ -119,6 +117,7 @@ def _check_args(args: argparse.Namespace) -> dict:
 def _empty_cells(targets: np.ndarray, side: float, r_comm: float) -> int:
     """Cells of GRID ASSGMT's partition that hold no target."""
     from agents.assignment.distributed import cells_per_side
+    import numpy as np
 
     b = cells_per_side(side, r_comm)
     cells = np.minimum((targets / (side / b)).astype(np.int64), b - 1)
@@ -140,6 +139,8 @@ def _simulate(series: str, algorithm: str, agents: np.ndarray, targets: np.ndarr
 
 
 def _uniform_runs(series: str, algorithm: str, n: int, side: float, trials: int, args, code: int) -> list[Run]:
+    import numpy as np
+
     runs = []
     for trial in range(trials):
         rng = np.random.default_rng([args.seed, code, n, trial])
@@ -158,6 +159,7 @@ def worst_case_instance(n: int, r_comm: float) -> tuple[np.ndarray, np.ndarray, 
     target is the last of the tour, so the searching agent walks the whole ring.
     """
     from agents.assignment.etsp import etsp_tour
+    import numpy as np
 
     k = math.isqrt(n - 1) + 1
     spacing = WORST_CASE_SPACING * r_comm
@@ -203,6 +205,8 @@ def _scale(series: str, n: int, area: float) -> float:
 
 def summarise(runs: list[Run], r_comm: float) -> list[dict]:
     """One row per (series, algorithm, n, side): means, standard deviations and normalised time."""
+    import numpy as np
+
     rows = []
     for (series, algorithm, n, side), group in _groups(runs).items():
         times = np.array([run.completion_time for run in group])
@@ -224,12 +228,16 @@ def summarise(runs: list[Run], r_comm: float) -> list[dict]:
 
 def fit_power_law(x: np.ndarray, y: np.ndarray) -> tuple[float, float]:
     """``(slope, factor)`` of the least-squares line ``log y = slope log x + log factor``."""
+    import numpy as np
+
     slope, intercept = np.polyfit(np.log(x), np.log(y), 1)
     return float(slope), float(math.exp(intercept))
 
 
 def _fits(summary: list[dict]) -> dict[str, tuple[float, float]]:
     """Power-law fit of the mean completion time against the bound's quantity, per scaling series."""
+    import numpy as np
+
     fits = {}
     for series in ("grid-dense", "etsp-uniform", "etsp-worst"):
         rows = [row for row in summary if row["series"] == series]
@@ -293,6 +301,7 @@ def _trial_rows(runs: list[Run]) -> list[dict]:
 
 def _plot_scaling(summary: list[dict], fits: dict, path: Path, r_comm: float) -> None:
     import matplotlib
+    import numpy as np
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -335,6 +344,7 @@ def _plot_scaling(summary: list[dict], fits: dict, path: Path, r_comm: float) ->
 
 def _plot_sweep(summary: list[dict], path: Path) -> None:
     import matplotlib
+    import numpy as np
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt

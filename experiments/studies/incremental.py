@@ -27,11 +27,13 @@ import time
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
-import numpy as np
+from typing import TYPE_CHECKING
 
-from agents.assignment import AssignmentError, IncrementalAssignment
 from experiments.errors import StudyArgumentError
 from experiments.results.files import make_output_directory
+
+if TYPE_CHECKING:  # the assignment code compiles kernels: imported when the study runs, not for --help
+    from agents.assignment import IncrementalAssignment
 
 
 @dataclass(frozen=True)
@@ -95,11 +97,15 @@ def _check_args(args: argparse.Namespace) -> tuple[list[float], int | None]:
 
 def corners(side: float) -> tuple[np.ndarray, np.ndarray]:
     """The new robot's start (bottom-left corner) and the new target (top-right corner)."""
+    import numpy as np
+
     return np.array([0.0, 0.0]), np.array([side, side])
 
 
 def route(sites: np.ndarray, lam: float, degree: int | None, side: float) -> tuple[IncrementalAssignment, object, float]:
     """Deploy robots on ``sites``, insert the corner pair; the team, the Reassignment and the stage's ms."""
+    from agents.assignment import IncrementalAssignment
+
     team = IncrementalAssignment(sites, sites, lam=lam, degree=degree)
     start = time.perf_counter()
     step = team.add(*corners(side))
@@ -107,6 +113,9 @@ def route(sites: np.ndarray, lam: float, degree: int | None, side: float) -> tup
 
 
 def collect(lambdas: list[float], degree: int | None, args: argparse.Namespace) -> list[Trial]:
+    from agents.assignment import IncrementalAssignment
+    import numpy as np
+
     rng = np.random.default_rng(args.seed)
     trials = []
     for trial in range(args.trials):
@@ -123,6 +132,8 @@ def collect(lambdas: list[float], degree: int | None, args: argparse.Namespace) 
 
 
 def summarise(trials: list[Trial]) -> list[dict]:
+    import numpy as np
+
     rows = []
     for lam in sorted({t.lam for t in trials}):
         group = [t for t in trials if t.lam == lam]
@@ -168,6 +179,7 @@ def _write_csv(path: Path, rows: list[dict]) -> None:
 
 def _plot(summary: list[dict], degree: int | None, args, path: Path) -> None:
     import matplotlib
+    import numpy as np
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -202,6 +214,7 @@ def _plot(summary: list[dict], degree: int | None, args, path: Path) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from agents.assignment import AssignmentError
     from experiments.commands.errors import FAILED, fail
 
     try:

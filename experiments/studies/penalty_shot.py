@@ -42,8 +42,6 @@ from collections.abc import Sequence
 from dataclasses import astuple, fields
 from pathlib import Path
 
-import numpy as np
-
 from experiments.commands import doc_summary
 from experiments.studies.penalty_trials import (CONDITIONS, KEEPER_START, MARKER_INSET, SETTINGS, Trial, Uncoordinated,
                                                 first_positions, markers, run_chain, settle, trial_scenario)
@@ -150,6 +148,8 @@ def stored_trials(records: Sequence, params: dict) -> list[Trial]:
 # ---------------------------------------------------------------------------------- statistics
 def times(trials: Sequence[Trial], setting: str, condition: str) -> np.ndarray:
     """The seconds to score of one chain, in marker order."""
+    import numpy as np
+
     rows = sorted((t for t in trials if t.setting == setting and t.condition == condition), key=lambda t: t.trial)
     return np.array([t.seconds for t in rows])
 
@@ -158,6 +158,7 @@ def signed_rank_p(a: np.ndarray, b: np.ndarray) -> float:
     """Two-sided p-value of the Wilcoxon signed-rank test on the paired times; 1.0 when every
     pair is equal, NaN with fewer than two pairs (or unpaired times: a forfeited chain)."""
     from scipy.stats import wilcoxon
+    import numpy as np
 
     if len(a) < 2 or len(a) != len(b):
         return math.nan
@@ -169,6 +170,8 @@ def signed_rank_p(a: np.ndarray, b: np.ndarray) -> float:
 def summarise(trials: Sequence[Trial]) -> tuple[list[dict], list[dict]]:
     """(per setting and condition: trials, mean, sd, median, timeouts; per setting and pair:
     the mean paired difference and the signed-rank p-value)."""
+    import numpy as np
+
     summary, tests = [], []
     for setting in SETTINGS:
         for condition in CONDITIONS:
@@ -217,6 +220,7 @@ def _p(value: float) -> str:
 
 def _plot(trials: Sequence[Trial], params: dict, path: Path) -> Path:
     import matplotlib
+    import numpy as np
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt

@@ -10,7 +10,6 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
-import numpy as np
 
 CONDITIONS = ("one", "uncoordinated", "coordinated")
 SETTINGS = ("empty goal", "goalkeeper")
@@ -41,6 +40,8 @@ def markers(count: int, seed: int, half_length: float = 52.5, half_width: float 
     """(count, 2) the fixed marker sequence (absolute frame, the attackers attack +x):
     alternately in the attackers' own half and in the opponents' half, uniform within
     ``MARKER_INSET`` of the lines, none in or next to the goal area they attack."""
+    import numpy as np
+
     rng = np.random.default_rng([seed, 0x5E7])
     out = np.empty((count, 2))
     x_max, y_max = half_length - MARKER_INSET, half_width - MARKER_INSET
@@ -57,6 +58,8 @@ def markers(count: int, seed: int, half_length: float = 52.5, half_width: float 
 
 def first_positions(robots: int, half_length: float = 52.5) -> np.ndarray:
     """(robots, 2) the attackers on their own goal line at the first trial, ``ROBOT_SPACING`` apart."""
+    import numpy as np
+
     y = (np.arange(robots) - (robots - 1) / 2.0) * ROBOT_SPACING
     return np.column_stack([np.full(robots, -half_length + 0.5), y])
 
@@ -68,6 +71,8 @@ def settle(positions: np.ndarray, half_length: float, half_width: float, gap: fl
     next trial: each overlapping pair is pushed apart symmetrically until none is left. An
     attacker closer than ``gap`` to one of the ``fixed`` players (the goalkeeper's start on its
     line) is moved sideways off it."""
+    import numpy as np
+
     pos = positions.astype(float).copy()
     x_max, y_max = half_length - 0.5, half_width - 0.5
     for _ in range(100):
@@ -123,6 +128,7 @@ class Uncoordinated:
 
     def reset(self, side_info, config, rng: np.random.Generator) -> None:
         from soccer_sim import SideInfo, TeamCommand, TeamError, TeamView
+        import numpy as np
 
         n = side_info.players_per_team
         if n != self.robots:

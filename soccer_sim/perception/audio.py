@@ -101,12 +101,25 @@ def check_message(message: object, params: AudioParams = AudioParams(), team_nam
     if not message:
         raise TeamError(team_name, "say message is empty (say None to say nothing)", player)
     if len(message) > params.say_msg_size:
-        raise TeamError(team_name, f"say message {message!r} has {len(message)} characters, more than "
+        raise TeamError(team_name, f"say message {_echo(message)} has {len(message)} characters, more than "
                                    f"say_msg_size {params.say_msg_size}", player)
     bad = sorted(set(message) - set(params.characters))
     if bad:
-        raise TeamError(team_name, f"say message {message!r} has characters the server refuses: "
-                                   f"{''.join(bad)!r} (allowed: {params.characters!r})", player)
+        raise TeamError(team_name, f"say message {_echo(message)} has characters the server refuses: "
+                                   f"{_echo(''.join(bad))} (allowed: {params.characters!r})", player)
+
+
+ECHOED_CHARACTERS = 20
+"""How much of a refused message its error repeats: enough to recognise it, never a screenful
+(a message of a thousand escape characters would print four thousand)."""
+
+
+def _echo(text: str) -> str:
+    """``text`` quoted as Python writes it (control characters escaped: one line), cut to its
+    first :data:`ECHOED_CHARACTERS` characters with the count of the rest."""
+    if len(text) <= ECHOED_CHARACTERS:
+        return repr(text)
+    return f"{text[:ECHOED_CHARACTERS]!r}... (+{len(text) - ECHOED_CHARACTERS} more)"
 
 
 def check_team_messages(messages: Sequence[str | None], size: int, params: AudioParams = AudioParams(),

@@ -18,7 +18,7 @@ def test_play_prints_score_and_statistics(capsys) -> None:
 def test_play_defaults_and_bad_team(capsys) -> None:
     assert main(["play", "nobody", "--cycles", "5"]) == 2
     captured = capsys.readouterr()
-    assert "unknown team 'nobody'" in captured.err and "chaser" in captured.err and captured.out == ""
+    assert "unknown team 'nobody'" in captured.err and "soccer-sim teams" in captured.err and captured.out == ""
 
 
 def test_bench_match_reports_times(capsys) -> None:

@@ -31,11 +31,23 @@ def test_module_paths_classes_and_objects() -> None:
     assert resolve_team(existing)[1] == "my chaser"
 
 
-def test_unknown_name_lists_the_available_ones() -> None:
+def test_unknown_name_names_the_closest_registered_ones() -> None:
     with pytest.raises(TeamNotFoundError) as info:
         resolve_team("chasr")
     message = str(info.value)
-    assert "'chasr'" in message and "chaser" in message and "idle" in message
+    assert "'chasr'" in message and "chaser" in message and "\n" not in message
+
+
+def test_unknown_name_message_lists_few_teams_and_points_to_the_list_of_many() -> None:
+    from soccer_sim.registry import unknown_team_message
+
+    few = unknown_team_message("chasr", ["idle", "chaser"])
+    assert "registered teams: chaser, idle;" in few
+    many = [f"team-{i:02d}" for i in range(23)] + ["mmdr", "mmdr-leave", "mmd+msd2"]
+    message = unknown_team_message("mmdrr", many)
+    assert "did you mean mmdr" in message and "`soccer-sim teams` lists the 26 registered teams" in message
+    assert "team-05" not in message and len(message) < 200
+    assert "did you mean" not in unknown_team_message("zzz", many)
 
 
 @pytest.mark.parametrize("path, fragment", [
