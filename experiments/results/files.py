@@ -35,7 +35,7 @@ import os
 import stat
 import sys
 import tempfile
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 from typing import TextIO
 
@@ -130,6 +130,9 @@ def write_problem(path: str | os.PathLike) -> str | None:
 def make_output_directory(directory: str | os.PathLike) -> str | None:
     """Create ``directory`` (and its parents) for a command's output files; why it cannot be
     made (one line), or None."""
+    problem = name_problem(directory)
+    if problem:
+        return problem
     try:
         Path(directory).mkdir(parents=True, exist_ok=True)
     except OSError as exc:
@@ -143,6 +146,23 @@ def name_problem(path: str | os.PathLike) -> str | None:
     if not text.strip():
         return "an empty file name; give a file name"
     return None
+
+
+def output_path(text: str) -> Path:
+    """An argparse ``type`` for an output file or directory option: the path, refusing an empty
+    name (``Path('')`` would quietly be ``.``)."""
+    problem = name_problem(text)
+    if problem:
+        import argparse
+
+        raise argparse.ArgumentTypeError(problem)
+    return Path(text)
+
+
+def is_directory_name(path: str | os.PathLike) -> bool:
+    """True when ``path`` names an existing directory (an empty name, which ``Path`` reads as
+    ``.``, names none)."""
+    return name_problem(path) is None and os.path.isdir(path)
 
 
 def directory_problem(directory: str | os.PathLike, used: Iterable[str | os.PathLike] = ()) -> str | None:
@@ -265,6 +285,14 @@ def atomic_output(path: str | os.PathLike) -> Iterator[Path]:
     except BaseException:
         temporary.unlink(missing_ok=True)
         raise
+
+
+def write_file(path: str | os.PathLike, write: Callable[[Path], object]) -> Path:
+    """``write(temporary)`` under :func:`atomic_output`: ``path`` written whole or not at all
+    (a figure's ``savefig``, a CSV writer); returns ``path``."""
+    with atomic_output(path) as temporary:
+        write(temporary)
+    return Path(path)
 
 
 @contextlib.contextmanager
