@@ -92,7 +92,11 @@ def run_show(args: argparse.Namespace) -> int:
     if kind not in REPORTERS:
         return _fail(f"{args.file}: made by an unknown command {kind!r}; known: {', '.join(REPORTERS)}")
     module = importlib.import_module(REPORTERS[kind])
-    wanted = {spec.key for spec in module.build_specs(params)}
+    try:
+        wanted = {spec.key for spec in module.build_specs(params)}
+    except (KeyError, TypeError, ValueError, AttributeError) as exc:  # parameters edited by hand or damaged
+        return _fail(f"{args.file}: damaged results file, its stored parameters do not describe a {kind} run "
+                     f"({type(exc).__name__}: {exc})")
     mine = [r for r in records if r.key in wanted]
     failed = sum(not r.played for r in mine)
     print(f"{args.file}: {kind}, {len(mine)} of {len(wanted)} matches stored ({failed} failed), "

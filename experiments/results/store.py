@@ -178,7 +178,14 @@ class ResultStore:
 
     @property
     def params(self) -> dict[str, object]:
-        return json.loads(self.meta().get("params", "{}"))
+        """The parameters of the command that made the file; ResultsError if they are damaged."""
+        try:
+            params = json.loads(self.meta().get("params", "{}"))
+        except ValueError as exc:
+            raise ResultsError(f"{self.path}: damaged results file, its stored parameters are not JSON ({exc})") from None
+        if not isinstance(params, dict):
+            raise ResultsError(f"{self.path}: damaged results file, its stored parameters are not a JSON object")
+        return params
 
     def keys(self) -> set[tuple[str, str, int]]:
         """(home, away, seed) of every stored match of the file's configuration."""
