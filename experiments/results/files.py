@@ -301,15 +301,8 @@ def text_output(path: str | os.PathLike, newline: str | None = None) -> Iterator
     is standard output (:func:`is_standard_output`; flushed at the end, so a full disk or a
     closed pipe shows here), else a file written through :func:`atomic_output`."""
     if is_standard_output(path):
+        yield sys.stdout
         sys.stdout.flush()
-        stream = open(sys.stdout.fileno(), "w", newline=newline, closefd=False,
-                      encoding=sys.stdout.encoding, errors="strict")
-        try:
-            yield stream
-            stream.flush()
-        finally:
-            with contextlib.suppress(OSError):
-                stream.close()             # what could not be flushed is dropped with it
         return
     with atomic_output(path) as temporary, open(temporary, "w", newline=newline) as stream:
         yield stream
