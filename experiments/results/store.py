@@ -29,7 +29,7 @@ from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 
 from experiments.errors import ExperimentError
-from experiments.results.connections import connect_read_only, connect_writable, pending_logs
+from experiments.results.connections import connect_read_only, connect_writable, damaged_pages, pending_logs
 from experiments.results.record import FORFEIT_NONE, MatchRecord
 
 SCHEMA_VERSION = "1"
@@ -325,13 +325,9 @@ def _existing_refusal(path: Path, kind: str, config_hash: str, config: str) -> s
     try:
         meta, tables = store.meta(), _tables(store._db)
         refusal = _refusal(path, meta, tables, kind, config_hash, config, lambda: _contents(path, store))
-        if refusal is None and tables:
-            # A damaged page shows only when it is read: look at every page now, read-only, so a
-            # damaged file is refused before the writer touches it (its journal mode included).
-            verdict = connection.execute("PRAGMA quick_check(1)").fetchone()[0]
-            if verdict != "ok":
-                refusal = (f"{path}: damaged results file ({verdict}); it is left untouched: use another results "
-                           "file")
+        if refusal is None and tables and (damage := damaged_pages(connection)):
+            # refused read-only, before the writer touches it (its journal mode included)
+            refusal = f"{path}: damaged results file ({damage}); it is left untouched: use another results file"
         return refusal
     finally:
         store.close()
