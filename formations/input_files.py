@@ -33,11 +33,6 @@ _KINDS = (
 )
 
 
-class InputFileError(OSError):
-    """A file a reader was given that is not one it may read: not a regular file, or too large.
-    An ``OSError`` (errno ``EINVAL``, ``EISDIR`` or ``EFBIG``) whose ``filename`` is the path."""
-
-
 def kind_of(mode: int) -> str:
     """What a file of ``st_mode`` ``mode`` is, for messages: "a FIFO", "a directory", ..."""
     for test, name in _KINDS:
@@ -46,15 +41,17 @@ def kind_of(mode: int) -> str:
     return "a regular file" if stat.S_ISREG(mode) else "a special file"
 
 
-def not_regular(path: str | os.PathLike, mode: int) -> InputFileError:
-    """The error for ``path`` (of ``st_mode`` ``mode``) that is not a regular file."""
+def not_regular(path: str | os.PathLike, mode: int) -> OSError:
+    """The error for ``path`` (of ``st_mode`` ``mode``) that is not a regular file: an
+    ``OSError`` with errno ``EINVAL`` (``IsADirectoryError`` for a directory)."""
     code = errno.EISDIR if stat.S_ISDIR(mode) else errno.EINVAL
-    return InputFileError(code, f"not a regular file ({kind_of(mode)})", os.fspath(path))
+    return OSError(code, f"not a regular file ({kind_of(mode)})", os.fspath(path))
 
 
-def too_large(path: str | os.PathLike, limit: int, what: str) -> InputFileError:
-    """The error for ``path`` holding more than ``limit`` bytes, the most ``what`` may hold."""
-    return InputFileError(errno.EFBIG, f"larger than the {_size(limit)} {what} may hold", os.fspath(path))
+def too_large(path: str | os.PathLike, limit: int, what: str) -> OSError:
+    """The error (errno ``EFBIG``) for ``path`` holding more than ``limit`` bytes, the most
+    ``what`` may hold."""
+    return OSError(errno.EFBIG, f"larger than the {_size(limit)} {what} may hold", os.fspath(path))
 
 
 def check_input(path: str | os.PathLike, *, limit: int | None = None, what: str = "this file",
