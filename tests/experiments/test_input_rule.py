@@ -86,3 +86,23 @@ def test_a_scenario_file_larger_than_its_limit_is_refused(tmp_path, capsys) -> N
     assert main(["play", "idle", "chaser", "--cycles", "5", "--scenario", str(scenario)]) == 2
     assert "larger than the 1 MiB a scenario file may hold" in one_error_line(capsys.readouterr().err)
     assert os.path.getsize(scenario) == SCENARIO_FILE_LIMIT + 1
+
+
+@pytest.mark.parametrize("change", [
+    "UPDATE meta SET value = '{not json' WHERE key = 'params'",
+    "UPDATE meta SET value = '[1, 2]' WHERE key = 'params'",
+    "UPDATE meta SET value = '{}' WHERE key = 'params'",
+    "UPDATE matches SET home_goals = 'many'",
+    "UPDATE matches SET home_goals = NULL",
+])
+def test_tampered_results_are_one_line(tmp_path, change, capsys) -> None:
+    import sqlite3
+
+    from tests.experiments.test_output_rule import played
+    from tests.experiments.test_results_safety import stored
+
+    path = stored(tmp_path / "r.sqlite", played(2))
+    with sqlite3.connect(path) as db:
+        db.execute(change)
+    assert main(["results", "show", str(path)]) == 2
+    assert "damaged results file" in one_error_line(capsys.readouterr().err)
