@@ -11,9 +11,15 @@ can be made there) when the block is entered, before the match. Used by ``play -
 from __future__ import annotations
 
 import contextlib
+import errno
+import os
 import sys
 from collections.abc import Callable, Iterator
 from pathlib import Path
+
+
+RERUN_LOG_FILTER = "warn,re_log_encoding=off,re_sdk=off"
+"""rerun's log filter (``RUST_LOG``) while a replay is written, unless the user set one."""
 
 
 @contextlib.contextmanager
@@ -25,6 +31,9 @@ def replay_recording(path: str | None, option: str) -> Iterator[list]:
     if path is None:
         yield []
         return
+    # rerun's own log lines (its file writer's "No space left on device", ...) would come beside
+    # ours: every failure they report reaches us as an exception, worded in one line.
+    os.environ.setdefault("RUST_LOG", RERUN_LOG_FILTER)
     from soccer_sim.replay import ReplayError, RerunRecorder
 
     with _atomic_recording(path, option, ".rrd", "a replay file", RerunRecorder, ReplayError) as recorders:
@@ -51,13 +60,14 @@ def _atomic_recording(path: str, option: str, suffix: str, what: str, recorder: 
                       error: type[Exception]) -> Iterator[list]:
     """One ``recorder(temporary)`` writing a temporary file that replaces ``path`` at the end
     of the block; ``error`` naming ``option`` and ``path`` when the file cannot be written."""
-    from experiments.results.files import atomic_output, describe
+    from experiments.results.files import atomic_output, describe, file_problem, write_failure
 
     target = Path(path)
     if target.suffix != suffix:
         raise error(f"{option} {path}: {what} must end in {suffix}")
-    if not target.parent.is_dir():
-        raise error(f"{option} {path}: directory {target.parent} does not exist")
+    problem = file_problem(path)             # the rule for every file a command writes
+    if problem:
+        raise error(f"{option} {path}: {problem}")
     output = atomic_output(target)
     try:
         temporary = output.__enter__()
@@ -67,15 +77,36 @@ def _atomic_recording(path: str, option: str, suffix: str, what: str, recorder: 
     try:
         made = recorder(temporary)
         yield [made]
-    except BaseException:
         _close(made)
-        output.__exit__(*sys.exc_info())    # removes the temporary file; the exception goes on
+    except BaseException as exc:
+        failed = _failed_write(exc, temporary)
+        with contextlib.suppress(Exception):
+            _close(made)                     # a full disk fails the close again: already said
+        output.__exit__(*sys.exc_info())    # removes the temporary file
+        if failed is not None:              # one line naming the file, exit 1 (a write that failed)
+            raise OSError(failed.errno, failed.strerror, str(path)) from None
         raise
-    _close(made)
     try:
         output.__exit__(None, None, None)
     except OSError as exc:
+        if write_failure(exc):
+            raise
         raise error(f"{option} {path}: cannot write it ({describe(exc)})") from None
+
+
+def _failed_write(exc: BaseException, temporary: Path) -> OSError | None:
+    """The OSError of a recording's failed write behind ``exc``, or None: an OSError of a full
+    disk or an I/O error (a game log's own write), or the RuntimeError rerun raises when its
+    file writer stopped, on a file system with no space left."""
+    from experiments.results.files import write_failure
+
+    if isinstance(exc, OSError) and write_failure(exc):
+        return exc
+    if isinstance(exc, RuntimeError):
+        with contextlib.suppress(OSError):
+            if os.statvfs(temporary.parent).f_bavail == 0:
+                return OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+    return None
 
 
 def _close(recorder: object) -> None:

@@ -40,6 +40,7 @@ from formations.formation import Formation
 from formations.formation_set import FormationSet
 from formations.helios import formation_from_helios, is_helios_layout
 from formations.helios_text import formation_from_helios_text
+from formations.input_files import MiB, read_input
 from formations.roles import Role, check_roles
 from formations.validation import check_role_count
 from formations.writing import (
@@ -58,9 +59,16 @@ _SAMPLE_KEYS = {"ball", "positions"}
 
 
 # ----------------------------------------------------------------- reading
+FORMATION_FILE_LIMIT = 16 * MiB
+"""The largest formation file read (an agent2d file of a few hundred samples is about 100 KiB):
+a device or a runaway file is refused instead of filling memory."""
+
+
 def read_text(path: str | os.PathLike[str]) -> str:
-    """The text of the file at *path*; FormationError (naming the file) if it is not UTF-8 text."""
-    data = Path(path).read_bytes()
+    """The text of the file at *path*; FormationError (naming the file) if it is not UTF-8 text,
+    OSError if it is not a regular file of at most :data:`FORMATION_FILE_LIMIT` bytes
+    (:mod:`formations.input_files`)."""
+    data = read_input(path, limit=FORMATION_FILE_LIMIT, what="a formation file")
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError as error:

@@ -33,7 +33,7 @@ import numpy as np
 from agents.assignment import AssignmentError, assign_on_grid
 from agents.assignment.grid import random_instance
 from experiments.errors import ExperimentError, StudyArgumentError
-from experiments.results.files import make_output_directory
+from experiments.results.files import make_output_directory, write_file
 
 #: Table 1 of the paper: (side, density %, robots) -> (pairs explored, baseline s, lazy s, speed-up).
 #: Where the paper lists a row twice, the first is kept.
@@ -172,19 +172,27 @@ def write_outputs(trials: list[Trial], summaries: list[dict[str, object]], out: 
     """``trials.csv`` (one line per instance), ``table.csv`` (one per row) and ``speedup.png``."""
     out.mkdir(parents=True, exist_ok=True)
     trial_path, table_path, plot_path = out / "trials.csv", out / "table.csv", out / "speedup.png"
-    with trial_path.open("w", newline="") as handle:
+    write_file(trial_path, lambda path: _write_trials(path, trials))
+    write_file(table_path, lambda path: _write_table(path, summaries))
+    write_file(plot_path, lambda path: _plot(summaries, path))    # each whole or not at all
+    return [trial_path, table_path, plot_path]
+
+
+def _write_trials(path: Path, trials: list[Trial]) -> None:
+    with path.open("w", newline="") as handle:
         writer = csv.writer(handle)
         writer.writerow(["workspace", "density", "robots", "instance", "pairs_lazy", "pairs_all", "rounds",
                          "seconds_lazy", "seconds_all", "total"])
         for t in trials:
             writer.writerow([t.row.label, t.row.density, t.row.robots, t.instance, t.pairs_lazy, t.pairs_all,
                              t.rounds, f"{t.seconds_lazy:.6f}", f"{t.seconds_all:.6f}", t.total])
-    with table_path.open("w", newline="") as handle:
+
+
+def _write_table(path: Path, summaries: list[dict[str, object]]) -> None:
+    with path.open("w", newline="") as handle:
         writer = csv.DictWriter(handle, fieldnames=list(summaries[0]))
         writer.writeheader()
         writer.writerows(summaries)
-    _plot(summaries, plot_path)
-    return [trial_path, table_path, plot_path]
 
 
 def _plot(summaries: list[dict[str, object]], path: Path) -> None:
@@ -234,9 +242,9 @@ def run(args: argparse.Namespace) -> int:
         rows = rows_of(args)
     except ValueError as exc:
         return fail(str(exc))
+    if args.out is not None and (problem := make_output_directory(args.out)):
+        return fail(f"--out {args.out!r}: {problem}")
     out = Path(args.out) if args.out is not None else None
-    if out is not None and (problem := make_output_directory(out)):
-        return fail(f"--out {out}: {problem}")
     rng = np.random.default_rng(args.seed)
     _warm_up()
     started = time.perf_counter()

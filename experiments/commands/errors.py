@@ -66,22 +66,42 @@ def call(func: Callable[[argparse.Namespace], int | None], args: argparse.Namesp
     * Ctrl-C: ``interrupted`` on stderr, 130;
     * the reader of stdout went away (``soccer-sim ... | head``): 0, without a second error
       when Python flushes stdout at exit;
+    * a write that started and failed (a full disk, stdout included: it is flushed here): one
+      line naming the file, status 1;
     * an exception the command did not expect: one line naming it, status 1 (with
       ``SOCCER_SIM_TRACEBACK=1`` in the environment it is raised, traceback and all).
     """
+    from experiments.results.files import write_failure
+
     try:
-        return int(func(args) or 0)
+        status = int(func(args) or 0)
+        sys.stdout.flush()                   # a full disk under stdout shows here, not at exit
+        return status
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return INTERRUPTED
     except BrokenPipeError:
         _silence_stdout()
         return 0
+    except OSError as exc:
+        failed = write_failure(exc)          # a full disk: the same one line and status everywhere
+        if failed is None:
+            return _unexpected(exc)
+        if exc.filename is not None:         # written through a temporary file: nothing is left
+            return fail(failed, FAILED)
+        _silence_stdout()
+        return fail(f"{failed}; the output is incomplete", FAILED)
     except Exception as exc:  # noqa: BLE001 - the last line of defence: one line, never a bare traceback
-        if os.environ.get(TRACEBACK_VARIABLE, "") not in ("", "0"):
-            raise
-        return fail(f"unexpected {type(exc).__name__}: {exc} (run with {TRACEBACK_VARIABLE}=1 for the traceback)",
-                    FAILED)
+        return _unexpected(exc)
+
+
+def _unexpected(exc: Exception) -> int:
+    """One line naming an exception no command expected, status 1 (raised again, traceback and
+    all, with ``SOCCER_SIM_TRACEBACK=1``)."""
+    if os.environ.get(TRACEBACK_VARIABLE, "") not in ("", "0"):
+        raise exc
+    return fail(f"unexpected {type(exc).__name__}: {exc} (run with {TRACEBACK_VARIABLE}=1 for the traceback)",
+                FAILED)
 
 
 def guarded(func: Callable[[argparse.Namespace], int | None]) -> Callable[[argparse.Namespace], int]:

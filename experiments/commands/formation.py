@@ -132,6 +132,7 @@ def run_show(args: argparse.Namespace) -> int:
 
     from experiments.reporting import Table
     from formations import Formation, FormationError
+    from experiments.results.files import atomic_output, describe, file_problem, is_directory_name
     from formations.validation import check_ball_position
     from formations.plotting import save_picture
 
@@ -153,11 +154,20 @@ def run_show(args: argparse.Namespace) -> int:
     except FormationError as error:
         return _fail(str(error))
     label = (formation.name if isinstance(item, Formation) else item.name) or Path(args.file).stem
+    given = file_problem(args.out) if not is_directory_name(args.out) else None
+    if given and not given.startswith("directory"):    # an empty name, a device, a FIFO: refused as given
+        return _fail(f"--out {args.out!r}: {given}")
     out = _picture_path(args.out, label, args.situation, isinstance(item, Formation))
+    problem = file_problem(out, inputs=[args.file])
+    if problem:
+        return _fail(f"--out {out}: {problem}")
     try:
-        positions = save_picture(formation, ball, out)
-    except (OSError, ValueError) as error:
-        return _fail(_os_message(str(out), error) if isinstance(error, OSError) else f"{out}: {error}")
+        with atomic_output(out) as temporary:
+            positions = save_picture(formation, ball, temporary)
+    except OSError as error:                 # a write that started and failed (a full disk): exit 1
+        return _fail(f"--out: cannot write {describe(error)}; nothing was written", FAILED)
+    except ValueError as error:              # a format matplotlib does not know
+        return _fail(f"{out}: {error}")
     rows = [(role.number, role.name, float(x), float(y)) for role, (x, y) in zip(formation.roles, positions)]
     if args.json:
         print(json.dumps({"file": args.file, "situation": None if isinstance(item, Formation) else args.situation,
@@ -174,30 +184,33 @@ def run_show(args: argparse.Namespace) -> int:
 
 
 def run_import(args: argparse.Namespace) -> int:
+    from experiments.results.files import file_problem
     from formations import FormationError
-    from formations.files import load_helios, save
+    from formations.files import load_helios
 
     if os.path.isdir(args.file):
         return _import_directory(args)
     if args.map or args.name is not None:
         return _fail("--map and --name apply to a directory import only")
+    problem = file_problem(args.out, inputs=[args.file])
+    if problem:
+        return _fail(f"{args.out}: {problem}")
     try:
         formation = load_helios(args.file)
     except FormationError as error:
         return _fail(str(error))
     except OSError as error:
         return _fail(_os_message(args.file, error))
-    try:
-        save(formation, args.out)
-    except OSError as error:
-        return _fail(_os_message(args.out, error))
+    status = _save(formation, args.out)
+    if status:
+        return status
     print(f"wrote {args.out}: {len(formation.roles)} roles, {formation.n_samples} samples")
     return 0
 
 
 def _import_directory(args: argparse.Namespace) -> int:
+    from experiments.results.files import file_problem, is_directory_name
     from formations import FormationError
-    from formations.files import save
     from formations.formation_set import Situation
     from formations.helios_dir import import_helios_directory
 
@@ -207,6 +220,9 @@ def _import_directory(args: argparse.Namespace) -> int:
         if not sep or not key or not value:
             return _fail(f"--map takes FILE=SITUATION (e.g. before-kick-off=our_set_play), got {entry!r}")
         mapping[key] = value
+    problem = file_problem(args.out, inputs=[args.file]) if not is_directory_name(args.out) else None
+    if problem:
+        return _fail(f"{args.out}: {problem}")
     try:
         result = import_helios_directory(args.file, name=args.name, mapping=mapping)
     except FormationError as error:
@@ -214,12 +230,14 @@ def _import_directory(args: argparse.Namespace) -> int:
     except OSError as error:
         return _fail(_os_message(args.file, error))
     out = Path(args.out)
-    if out.is_dir():
+    if is_directory_name(args.out):
         out = out / f"{result.formation_set.name}.json"
-    try:
-        save(result.formation_set, out)
-    except OSError as error:
-        return _fail(_os_message(str(out), error))
+        problem = file_problem(out, inputs=[args.file])
+        if problem:
+            return _fail(f"{out}: {problem}")
+    status = _save(result.formation_set, out)
+    if status:
+        return status
     print(f"wrote {out}: formation set {result.formation_set.name!r}")
     for situation in Situation:
         if situation not in result.placed:
@@ -240,11 +258,27 @@ def _import_directory(args: argparse.Namespace) -> int:
     return 0
 
 
+def _save(item, out: str | Path) -> int:
+    """Write a formation or set to ``out`` whole or not at all; 0, or the exit status after
+    saying why it could not be written (1: the write started and failed, e.g. a full disk)."""
+    from experiments.results.files import atomic_output, describe
+    from formations.files import save
+
+    try:
+        with atomic_output(out) as temporary:
+            save(item, temporary)
+    except OSError as error:
+        return _fail(f"cannot write {describe(error)}; nothing was written", FAILED)
+    return 0
+
+
 def _picture_path(out: str, name: str, situation: str, single: bool) -> Path:
     """Where ``show --out`` writes: into an existing directory as NAME[-SITUATION].png, and
     with ``.png`` added to a name without extension (what matplotlib would write anyway)."""
+    from experiments.results.files import is_directory_name
+
     path = Path(out)
-    if path.is_dir():
+    if is_directory_name(out):
         stem = name if single else f"{name}-{situation}"
         return path / f"{stem}.png"
     return path if path.suffix else path.with_name(path.name + ".png")

@@ -58,8 +58,14 @@ def _open_viewer(path: str) -> int:
     import shutil
     import subprocess
 
-    if not os.path.isfile(path):
+    from formations.input_files import check_input  # the project's one rule for files it reads
+
+    try:
+        check_input(path)
+    except FileNotFoundError:
         return _fail(f"{path}: no such replay file")
+    except OSError as exc:
+        return _fail(f"{path}: cannot read it ({exc.strerror or exc})")
     if _is_game_log(path):
         return _fail(f"{path} is an rcssserver game log, not a rerun replay: open it with rcssmonitor or "
                      f"soccerwindow2 (soccer-sim play --record writes rerun replays)")
@@ -76,7 +82,9 @@ def _open_viewer(path: str) -> int:
 
 def _is_game_log(path: str) -> bool:
     """Whether ``path`` starts like an rcssserver game log (``ULG`` and its version)."""
-    with open(path, "rb") as file:
+    from formations.input_files import open_input
+
+    with open_input(path) as file:
         return file.read(3) == b"ULG"
 
 
@@ -86,15 +94,27 @@ def _draw(path: str, png: str, cycle: int | None) -> int:
 
     from pathlib import Path
 
+    from experiments.commands.errors import FAILED
+    from experiments.results.files import atomic_output, describe, file_problem
+
+    problem = file_problem(png, inputs=[path])
+    if problem:
+        return _fail(f"--png {png!r}: {problem}")
     target = Path(png)
-    if not target.parent.is_dir():
-        return _fail(f"--png {png}: directory {target.parent} does not exist")
+    if not target.suffix:                    # what matplotlib would write: say so, and write it whole
+        target = target.with_name(target.name + ".png")
+        problem = file_problem(target, inputs=[path])
+        if problem:
+            return _fail(f"--png {target}: {problem}")
     replay = read_replay(path)
     try:
-        written, shown = draw_replay(replay, png, cycle)
-    except (OSError, ValueError) as exc:  # unwritable file, or a format matplotlib does not know
-        return _fail(f"--png {png}: cannot write the picture ({getattr(exc, 'strerror', None) or exc})")
-    print(f"wrote {written} (cycle {shown})")
+        with atomic_output(target) as temporary:
+            _, shown = draw_replay(replay, temporary, cycle)
+    except OSError as exc:                   # a write that started and failed (a full disk): exit 1
+        return _fail(f"--png: cannot write {describe(exc)}; nothing was written", FAILED)
+    except ValueError as exc:                # a format matplotlib does not know
+        return _fail(f"--png {png}: cannot write the picture ({exc})")
+    print(f"wrote {target} (cycle {shown})")
     return 0
 
 

@@ -34,7 +34,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     export = sub.add_parser("export", help="write one row per match as CSV or Parquet")
     export.add_argument("file", metavar="FILE", help="results file (e.g. results.sqlite)")
     target = export.add_mutually_exclusive_group(required=True)
-    target.add_argument("--csv", metavar="OUT.csv", help="write CSV")
+    target.add_argument("--csv", metavar="OUT.csv", help="write CSV (- for standard output)")
     target.add_argument("--parquet", metavar="OUT.parquet", help="write Parquet (needs pyarrow: the 'parquet' extra)")
     export.set_defaults(func=run_export)
     show = sub.add_parser("show", help="print the tables of a stored run")
@@ -48,11 +48,11 @@ def run_export(args: argparse.Namespace) -> int:
     from pathlib import Path
 
     from experiments.results.export import ExportError, export_csv, export_parquet, parquet_library
-    from experiments.results.files import describe, file_problem
+    from experiments.results.files import describe, file_problem, is_standard_output
     from experiments.results.store import ResultsError, ResultStore
 
-    option, out = ("--csv", Path(args.csv)) if args.csv else ("--parquet", Path(args.parquet))
-    problem = file_problem(out, inputs=[args.file])
+    option, out = ("--csv", args.csv) if args.csv is not None else ("--parquet", args.parquet)
+    problem = file_problem(out, inputs=[args.file], standard_output=option == "--csv")
     if problem:
         return _fail(f"{option} {out}: {problem}")
     try:
@@ -63,10 +63,13 @@ def run_export(args: argparse.Namespace) -> int:
     except (ResultsError, ExportError) as exc:
         return _fail(str(exc))
     try:
-        path = export_csv(records, out) if args.csv else export_parquet(records, out)
+        path = export_csv(records, Path(out)) if option == "--csv" else export_parquet(records, Path(out))
+    except BrokenPipeError:
+        raise                                # the reader of stdout went away: not an error
     except OSError as exc:
         return _fail(f"{option}: cannot write {describe(exc)}; nothing was written", 1)
-    print(f"wrote {path}: {len(records)} matches")
+    if not is_standard_output(out):          # standard output carries the CSV alone
+        print(f"wrote {path}: {len(records)} matches")
     return 0
 
 
@@ -89,7 +92,11 @@ def run_show(args: argparse.Namespace) -> int:
     if kind not in REPORTERS:
         return _fail(f"{args.file}: made by an unknown command {kind!r}; known: {', '.join(REPORTERS)}")
     module = importlib.import_module(REPORTERS[kind])
-    wanted = {spec.key for spec in module.build_specs(params)}
+    try:
+        wanted = {spec.key for spec in module.build_specs(params)}
+    except (KeyError, TypeError, ValueError, AttributeError) as exc:  # parameters edited by hand or damaged
+        return _fail(f"{args.file}: damaged results file, its stored parameters do not describe a {kind} run "
+                     f"({type(exc).__name__}: {exc})")
     mine = [r for r in records if r.key in wanted]
     failed = sum(not r.played for r in mine)
     print(f"{args.file}: {kind}, {len(mine)} of {len(wanted)} matches stored ({failed} failed), "

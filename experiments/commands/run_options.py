@@ -170,12 +170,15 @@ def tables_dir(args: argparse.Namespace) -> Path:
     """The directory for the tables and figures, checked (not created: nothing is left behind
     by a run refused later) before any match is played; a RunInputError if it is a file or
     cannot be written in."""
-    from experiments.results.files import directory_problem
+    from experiments.results.files import directory_problem, name_problem
 
-    path = Path(args.tables) if args.tables else Path(args.out).with_name(Path(args.out).stem + "-tables")
-    problem = directory_problem(path)
+    problem = name_problem(args.out)
     if problem:
-        raise RunInputError(f"--tables {path}: {problem}")
+        raise RunInputError(f"--out {args.out!r}: {problem}")
+    path = Path(args.tables) if args.tables is not None else Path(args.out).with_name(Path(args.out).stem + "-tables")
+    problem = directory_problem(args.tables if args.tables is not None else path, used=[args.out])
+    if problem:
+        raise RunInputError(f"--tables {args.tables if args.tables is not None else path}: {problem}")
     return path
 
 

@@ -38,6 +38,14 @@ def connect_writable(path: Path) -> sqlite3.Connection:
     return db
 
 
+def damaged_pages(db: sqlite3.Connection) -> str | None:
+    """SQLite's first complaint about the database's pages (``PRAGMA quick_check``, which reads
+    every page and changes nothing), or None when they are sound. A damaged page otherwise shows
+    only when a query reaches it, after a writer may already have changed the file."""
+    verdict = db.execute("PRAGMA quick_check(1)").fetchone()[0]
+    return None if verdict == "ok" else str(verdict)
+
+
 def pending_logs(path: Path) -> list[Path]:
     """The ``-wal`` and ``-journal`` files beside ``path``: a writer at work, or one killed."""
     return [Path(f"{path}{suffix}") for suffix in ("-wal", "-journal") if Path(f"{path}{suffix}").exists()]

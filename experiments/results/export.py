@@ -7,7 +7,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from experiments.errors import ExperimentError
-from experiments.results.files import atomic_output
+from experiments.results.files import atomic_output, text_output
 from experiments.results.record import MatchRecord
 
 BASE_COLUMNS = ("home", "away", "seed", "config_hash", "code_version", "home_goals", "away_goals", "cycles",
@@ -34,11 +34,12 @@ def flat_rows(records: Sequence[MatchRecord]) -> tuple[list[str], list[dict[str,
 
 
 def export_csv(records: Sequence[MatchRecord], path: Path) -> Path:
-    """Write ``records`` to ``path`` as CSV, whole or not at all (OSError naming ``path``)."""
+    """Write ``records`` to ``path`` as CSV, whole or not at all (OSError naming ``path``);
+    ``-`` (or ``/dev/stdout``) writes it to standard output."""
     import csv
 
     columns, rows = flat_rows(records)
-    with atomic_output(path) as temporary, open(temporary, "w", newline="") as handle:
+    with text_output(path, newline="") as handle:
         writer = csv.DictWriter(handle, fieldnames=columns)
         writer.writeheader()
         writer.writerows(rows)

@@ -66,7 +66,37 @@ class MatchRecord:
 
     @classmethod
     def from_row(cls, row: dict[str, object]) -> MatchRecord:
+        """The record of a stored row; ValueError naming the field when a value is not what the
+        runner stores (a row edited by hand or damaged: goals that are no integer, a played
+        match without a score, statistics that are not a JSON object)."""
         values = dict(row)
-        values["home_stats"] = json.loads(values.get("home_stats") or "{}")
-        values["away_stats"] = json.loads(values.get("away_stats") or "{}")
-        return cls(**{name: values[name] for name in cls.__dataclass_fields__ if name in values})
+        for side in ("home_stats", "away_stats"):
+            values[side] = json.loads(values.get(side) or "{}")
+            if not isinstance(values[side], dict):
+                raise ValueError(f"{side} of {_key(values)} is not a JSON object")
+        record = cls(**{name: values[name] for name in cls.__dataclass_fields__ if name in values})
+        record._check()
+        return record
+
+    def _check(self) -> None:
+        """ValueError naming the first field of this record that no run would store."""
+        for name in ("home", "away", "config_hash"):
+            if not isinstance(getattr(self, name), str):
+                raise ValueError(f"{name} of {self.key} is {getattr(self, name)!r}, not text")
+        for name in ("seed", "cycles", "forfeit"):
+            if not _is_integer(getattr(self, name)):
+                raise ValueError(f"{name} of {self.key} is {getattr(self, name)!r}, not an integer")
+        for name in ("home_goals", "away_goals"):
+            value = getattr(self, name)
+            if value is None and self.played:
+                raise ValueError(f"{name} of {self.key} is missing, though the match was played to its end")
+            if value is not None and not (_is_integer(value) and value >= 0):
+                raise ValueError(f"{name} of {self.key} is {value!r}, not a number of goals")
+
+
+def _is_integer(value: object) -> bool:
+    return isinstance(value, int) and not isinstance(value, bool)
+
+
+def _key(values: dict[str, object]) -> tuple[object, object, object]:
+    return (values.get("home"), values.get("away"), values.get("seed"))

@@ -20,6 +20,7 @@ close, so the ``.sqlite`` file alone holds every stored row even after ``kill -9
 from __future__ import annotations
 
 import contextlib
+import errno
 import json
 import os
 import sqlite3
@@ -28,7 +29,7 @@ from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 
 from experiments.errors import ExperimentError
-from experiments.results.connections import connect_read_only, connect_writable, pending_logs
+from experiments.results.connections import connect_read_only, connect_writable, damaged_pages, pending_logs
 from experiments.results.record import FORFEIT_NONE, MatchRecord
 
 SCHEMA_VERSION = "1"
@@ -82,11 +83,17 @@ class ResultStore:
     def open(cls, path: str | os.PathLike) -> ResultStore:
         """Open an existing results file read-only (it is never changed, even when it is not a
         results file); ResultsError naming the file if it is missing or not a results file."""
+        from formations.input_files import check_input  # the project's one rule for files it reads
+
         path = Path(path)
-        if path.is_dir():
-            raise ResultsError(f"{path}: is a directory, not a results file")
-        if not path.is_file():
-            raise ResultsError(f"{path}: no such results file")
+        try:
+            check_input(path)                  # a regular file: a FIFO or a device is never opened
+        except FileNotFoundError:
+            raise ResultsError(f"{path}: no such results file") from None
+        except OSError as exc:
+            if exc.errno == errno.EISDIR:
+                raise ResultsError(f"{path}: is a directory, not a results file") from None
+            raise ResultsError(f"{path}: cannot be read ({exc.strerror or exc})") from None
         try:
             connection, cleanup = connect_read_only(path)
         except sqlite3.OperationalError as exc:                  # e.g. no permission to read it
@@ -115,14 +122,14 @@ class ResultStore:
         written: another program's database is refused untouched); ``params`` (the command's
         parameters) replace the stored ones, so ``results show`` repeats the latest run's tables.
         StorageError when the file cannot be written (disk full)."""
+        from experiments.results.files import file_problem
+
+        problem = file_problem(path, database=True)     # the rule for every file a command writes
         path = Path(path)
-        parent = path.parent if str(path.parent) else Path(".")
-        if path.is_dir():
+        if problem and path.is_dir():
             raise ResultsError(f"{path}: is a directory; give a file name for the results (e.g. {path / 'results.sqlite'})")
-        if not parent.is_dir():
-            raise ResultsError(f"{path}: directory {parent} does not exist")
-        if not os.access(parent, os.W_OK) or (path.exists() and not os.access(path, os.W_OK)):
-            raise ResultsError(f"{path}: not writable (permission denied)")
+        if problem:
+            raise ResultsError(f"{path}: {problem}")
         if path.exists() and path.stat().st_size > 0:
             _check_existing(path, kind, config_hash, config)
         try:
@@ -171,7 +178,14 @@ class ResultStore:
 
     @property
     def params(self) -> dict[str, object]:
-        return json.loads(self.meta().get("params", "{}"))
+        """The parameters of the command that made the file; ResultsError if they are damaged."""
+        try:
+            params = json.loads(self.meta().get("params", "{}"))
+        except ValueError as exc:
+            raise ResultsError(f"{self.path}: damaged results file, its stored parameters are not JSON ({exc})") from None
+        if not isinstance(params, dict):
+            raise ResultsError(f"{self.path}: damaged results file, its stored parameters are not a JSON object")
+        return params
 
     def keys(self) -> set[tuple[str, str, int]]:
         """(home, away, seed) of every stored match of the file's configuration."""
@@ -310,7 +324,11 @@ def _existing_refusal(path: Path, kind: str, config_hash: str, config: str) -> s
     store = ResultStore(path, connection, cleanup=cleanup)
     try:
         meta, tables = store.meta(), _tables(store._db)
-        return _refusal(path, meta, tables, kind, config_hash, config, lambda: _contents(path, store))
+        refusal = _refusal(path, meta, tables, kind, config_hash, config, lambda: _contents(path, store))
+        if refusal is None and tables and (damage := damaged_pages(connection)):
+            # refused read-only, before the writer touches it (its journal mode included)
+            refusal = f"{path}: damaged results file ({damage}); it is left untouched: use another results file"
+        return refusal
     finally:
         store.close()
 

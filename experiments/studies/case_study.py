@@ -143,6 +143,7 @@ def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list
     """Print both tables; with ``out_dir`` write case-study.csv, behaviour.csv, case-study.md
     and case-study.png there. Returns the files written."""
     from experiments.reporting import ESTIMATE_COLUMNS, write_csv, write_markdown
+    from experiments.results.files import write_file
 
     goal_table, behaviour, goal_rows, behaviour_rows = tables(records, params)
     goal_table.print()
@@ -159,7 +160,7 @@ def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list
                    f"gd_minus_{params['baseline']}", "gd_difference_se", "p_value"], behaviour_rows),
         write_markdown(out_dir / "case-study.md", [goal_table, behaviour],
                        f"Case study: {len(records)} matches, seeds from {params['seed']}, cycles per match: {cycles}."),
-        _figure(out_dir / "case-study.png", params, goal_rows, behaviour_rows),
+        write_file(out_dir / "case-study.png", lambda path: _figure(path, params, goal_rows, behaviour_rows)),
     ]
     print("wrote " + ", ".join(str(path) for path in written))
     return written

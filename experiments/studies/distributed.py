@@ -33,7 +33,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from experiments.errors import StudyArgumentError
-from experiments.results.files import make_output_directory
+from experiments.results.files import make_output_directory, output_path, write_file
 
 #: Side of the squares of the worst-case construction, in units of r_comm (> 2: isolated targets).
 WORST_CASE_SPACING = 2.5
@@ -77,7 +77,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--round-fraction", type=float, default=0.1,
                         help="time between rounds as a fraction of r_comm / v_max (default: %(default)s)")
     parser.add_argument("--seed", type=int, default=0, help="seed of the random instances (default: %(default)s)")
-    parser.add_argument("--out", type=Path, default=None,
+    parser.add_argument("--out", type=output_path, default=None,
                         help="directory for the CSV files and the PNG figures (created if missing)")
 
 
@@ -392,14 +392,15 @@ def run(args: argparse.Namespace) -> int:
     _print_tables(summary, fits)
     print(f"{len(runs)} runs in {time.perf_counter() - start:.1f} s")
     if args.out is not None and runs:
-        _write_csv(args.out / "distributed_trials.csv", _trial_rows(runs))
-        _write_csv(args.out / "distributed_summary.csv", summary)
+        # each file whole or not at all: a full disk leaves no partial CSV or 0-byte PNG
+        write_file(args.out / "distributed_trials.csv", lambda path: _write_csv(path, _trial_rows(runs)))
+        write_file(args.out / "distributed_summary.csv", lambda path: _write_csv(path, summary))
         written = ["distributed_trials.csv", "distributed_summary.csv"]
         if any(row["series"] != "sweep" for row in summary):
-            _plot_scaling(summary, fits, args.out / "distributed_scaling.png", args.r_comm)
+            write_file(args.out / "distributed_scaling.png", lambda path: _plot_scaling(summary, fits, path, args.r_comm))
             written.append("distributed_scaling.png")
         if any(row["series"] == "sweep" for row in summary):
-            _plot_sweep(summary, args.out / "distributed_environment.png")
+            write_file(args.out / "distributed_environment.png", lambda path: _plot_sweep(summary, path))
             written.append("distributed_environment.png")
         print(f"wrote {', '.join(str(args.out / name) for name in written)}")
     elif args.out is None:

@@ -30,7 +30,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from experiments.errors import StudyArgumentError
-from experiments.results.files import make_output_directory
+from experiments.results.files import make_output_directory, output_path, write_file
 
 if TYPE_CHECKING:  # the assignment code compiles kernels: imported when the study runs, not for --help
     from agents.assignment import IncrementalAssignment
@@ -60,7 +60,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--trials", type=int, default=10, help="random deployments (default: %(default)s, as the paper)")
     parser.add_argument("--side", type=float, default=100.0, help="side of the square, metres (default: %(default)s)")
     parser.add_argument("--seed", type=int, default=0, help="seed of the deployments (default: %(default)s)")
-    parser.add_argument("--out", type=Path, default=None,
+    parser.add_argument("--out", type=output_path, default=None,
                         help="directory for the CSV files and the PNG figure (created if missing)")
 
 
@@ -237,9 +237,10 @@ def run(args: argparse.Namespace) -> int:
         print(f"{skipped} of {args.trials} deployments skipped: their graph does not join the corners")
     print(f"{len(trials)} routes in {time.perf_counter() - start:.1f} s")
     if args.out is not None:
-        _write_csv(args.out / "incremental_trials.csv", [asdict(t) for t in trials])
-        _write_csv(args.out / "incremental_summary.csv", summary)
-        _plot(summary, degree, args, args.out / "incremental.png")
+        # each file whole or not at all: a full disk leaves no partial CSV or 0-byte PNG
+        write_file(args.out / "incremental_trials.csv", lambda path: _write_csv(path, [asdict(t) for t in trials]))
+        write_file(args.out / "incremental_summary.csv", lambda path: _write_csv(path, summary))
+        write_file(args.out / "incremental.png", lambda path: _plot(summary, degree, args, path))
         names = ("incremental_trials.csv", "incremental_summary.csv", "incremental.png")
         print(f"wrote {', '.join(str(args.out / name) for name in names)}")
     else:

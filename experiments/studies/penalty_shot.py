@@ -277,6 +277,7 @@ def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list
     its tests ``-``); with ``out_dir`` write the trials, the summary and the tests as CSV, the
     tables as Markdown and the box plot there. Returns the files written."""
     from experiments.reporting import write_csv, write_markdown
+    from experiments.results.files import write_file
 
     trials = stored_trials(records, params)
     summary, tests = summarise(trials)
@@ -294,7 +295,7 @@ def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list
         write_markdown(out_dir / "penalty_shot.md", list(tables),
                        f"Penalty shot: {params['trials']} markers, team {params['team']}, keeper {params['keeper']}, "
                        f"limit {params['limit']} cycles, seed {params['seed']}."),
-        _plot(trials, params, out_dir / "penalty_shot.png"),
+        write_file(out_dir / "penalty_shot.png", lambda path: _plot(trials, params, path)),
     ]
     print("wrote " + ", ".join(str(path) for path in written))
     return written

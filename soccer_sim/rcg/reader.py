@@ -119,9 +119,11 @@ def read_rcg(path: str | os.PathLike) -> GameLog:
     anything that is not a version 6 text log."""
     path = os.fspath(path)
     log = GameLog()
+    from formations.input_files import open_input  # the project's one rule for files it reads
+
     try:
-        with open(path, encoding="utf-8") as f:
-            lines = f.read().split("\n")
+        with open_input(path) as f:
+            lines = f.read().decode("utf-8").split("\n")
     except (OSError, UnicodeDecodeError) as exc:
         raise RcgError(f"{path}: cannot read the game log ({getattr(exc, 'strerror', None) or exc})") from None
     if not lines or lines[0] != HEADER:

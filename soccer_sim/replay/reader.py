@@ -61,9 +61,15 @@ def _open(path: str | os.PathLike):
     import_rerun()
     from rerun.chunk import RrdReader
 
+    from formations.input_files import check_input  # the project's one rule for files it reads
+
     name = os.fspath(path)
-    if not os.path.isfile(name):
-        raise ReplayError(f"{name}: no such replay file")
+    try:
+        check_input(name)
+    except FileNotFoundError:
+        raise ReplayError(f"{name}: no such replay file") from None
+    except OSError as exc:
+        raise ReplayError(f"{name}: cannot read it ({exc.strerror or exc})") from None
     try:
         reader = RrdReader(name)
         reader.recordings()

@@ -85,6 +85,11 @@ def scenario_to_dict(scenario: Scenario) -> dict[str, Any]:
     return out
 
 
+SCENARIO_FILE_LIMIT = 1 << 20
+"""The largest scenario file read, in bytes (1 MiB; a scenario is a few hundred bytes): a device
+or a runaway file is refused instead of filling memory."""
+
+
 def load_scenario(path: str | Path) -> Scenario:
     """Read a scenario from a ``.json`` or ``.toml`` file; ScenarioError for a bad file."""
     path = Path(path)
@@ -92,8 +97,10 @@ def load_scenario(path: str | Path) -> Scenario:
     if suffix not in (".json", ".toml"):
         raise ScenarioError("Scenario", f"{path}: expected a .json or .toml file")
     kind = suffix[1:].upper()
+    from formations.input_files import read_input  # the project's one rule for files it reads
+
     try:
-        text = path.read_text(encoding="utf-8")
+        text = read_input(path, limit=SCENARIO_FILE_LIMIT, what="a scenario file").decode("utf-8")
         data = json.loads(text) if suffix == ".json" else tomllib.loads(text)
     except OSError as exc:
         raise ScenarioError("Scenario", f"cannot read {path}: {exc.strerror or exc}") from None
