@@ -112,3 +112,34 @@ class Forward(Constant):
 
 class Sideways(Constant):
     dash, kick, catch = (0.0, 0.02), (0.0, 0.0), False
+
+
+class RaisingBaseException(_Still):
+    """Raises a BaseException that is not an Exception (as a bare ``raise BaseException``)."""
+
+    def misbehave(self) -> None:
+        raise BaseException("scripted base exception")
+
+
+class QuietlyExitingTeam(_Still):
+    """Ends its process at once with status 0 (``os._exit(0)``): no exception, no report."""
+
+    def misbehave(self) -> None:
+        os._exit(0)
+
+
+class SelfKillingTeam(_Still):
+    """Kills its own process with SIGKILL."""
+
+    def misbehave(self) -> None:
+        os.kill(os.getpid(), signal.SIGKILL)
+
+
+class PrintingTeam(_Still):
+    """Prints on stdout every cycle (Python's print and the process's file descriptor 1)."""
+
+    fail_at = 0
+
+    def misbehave(self) -> None:
+        print("team says hello")
+        os.write(1, b"team writes to fd 1\n")
