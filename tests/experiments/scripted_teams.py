@@ -59,6 +59,13 @@ class DeafHangingTeam(_Still):
             time.sleep(0.05)
 
 
+class DeafAtOnceTeam(DeafHangingTeam):
+    """Hangs deaf to the timer from its first act() (nothing else is under way when the timer
+    is due, so the team is surely the one whose code runs)."""
+
+    fail_at = 0
+
+
 class CrashingTeam(_Still):
     """Ends its worker process abruptly (as a crash in native code would)."""
 
@@ -143,3 +150,29 @@ class PrintingTeam(_Still):
     def misbehave(self) -> None:
         print("team says hello")
         os.write(1, b"team writes to fd 1\n")
+
+
+class SelfAlarmingTeam(_Still):
+    """Restores SIGALRM's default action (end the process) and sets a timer of its own."""
+
+    def misbehave(self) -> None:
+        signal.signal(signal.SIGALRM, signal.SIG_DFL)
+        signal.setitimer(signal.ITIMER_REAL, 0.01)
+        time.sleep(5)
+
+
+MARKER_VARIABLE = "SOCCER_SIM_TEST_MARKER"
+"""The environment variable naming the file :class:`MarkingHangingTeam` creates."""
+
+
+class MarkingHangingTeam(_Still):
+    """Creates the file the environment variable MARKER_VARIABLE names, then sleeps for ever in
+    act() (a test knows the match is under way once the file exists)."""
+
+    fail_at = 0
+
+    def misbehave(self) -> None:
+        with open(os.environ[MARKER_VARIABLE], "w"):
+            pass
+        while True:
+            time.sleep(0.05)
