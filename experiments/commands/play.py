@@ -76,7 +76,7 @@ def run(args: argparse.Namespace) -> int:
     from experiments.commands.run_options import RunInputError, check_observation
     from experiments.match_report import match_report
     from experiments.recording import rcg_destination, replay_destination
-    from experiments.runner.local import play_in_worker
+    from experiments.runner.local import MatchFailed, play_in_worker
     from experiments.runner.spec import MatchSpec
     from soccer_sim import ConfigError, TeamNotFoundError
     from soccer_sim.rcg import RcgError
@@ -96,14 +96,12 @@ def run(args: argparse.Namespace) -> int:
                              record=None if replay is None else str(replay), rcg=None if log is None else str(log))
             # played in a worker process of its own, as in a tournament, so --match-timeout holds
             # whatever the teams' code does; kernels are compiled first, off the match's clock
-            record = play_in_worker(spec, timeout, report=match_report)
-            if record.error is not None:
-                raise _MatchStopped(record.error)  # (the recordings' temporary files are removed)
+            record = play_in_worker(spec, timeout, report=match_report)  # MatchFailed: no recording is kept
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return 130
-    except _MatchStopped as stopped:
-        return _fail(stopped.line(), 1)
+    except MatchFailed as failed:
+        return _fail(_stopped_line(failed.error), 1)
     except (TeamNotFoundError, ConfigError, ValueError, ReplayError, RcgError, RunInputError) as exc:  # bad input
         return _fail(str(exc), 2)
     report, elapsed = record.report, record.wall_time
@@ -132,25 +130,19 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-class _MatchStopped(Exception):
-    """The match failed in its worker; ``error`` is its record's ``Kind: what happened``."""
-
-    def __init__(self, error: str) -> None:
-        super().__init__(error)
-        self.error = error
-
-    def line(self) -> str:
-        """The error line: a team's failure as the TeamError words it (naming the team and its
-        method); a timeout or a worker that ended as the runner words it (naming the team whose
-        code was running); any other exception with its kind."""
-        kind, _, text = self.error.partition(": ")
-        if kind == "TeamError":
-            return text
-        if kind == "MatchTimeout":
-            return f"match stopped (--match-timeout): {text}"
-        if kind == "WorkerDied":
-            return f"match stopped: {text}"
-        return f"match stopped: {self.error}"
+def _stopped_line(error: str) -> str:
+    """The error line of a match that did not finish (``error``: its record's ``Kind: what
+    happened``): a team's failure as the TeamError words it (naming the team and its method);
+    a timeout or a worker that ended as the runner words it (naming the team whose code was
+    running); any other exception with its kind."""
+    kind, _, text = error.partition(": ")
+    if kind == "TeamError":
+        return text
+    if kind == "MatchTimeout":
+        return f"match stopped (--match-timeout): {text}"
+    if kind == "WorkerDied":
+        return f"match stopped: {text}"
+    return f"match stopped: {error}"
 
 
 def _fail(message: str, status: int) -> int:

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 from multiprocessing.connection import Connection, wait
 from typing import Any
 
+from experiments.errors import ExperimentError
 from experiments.results.record import FORFEIT_NONE, MatchRecord
 from experiments.runner.spec import MatchSpec
 from experiments.runner.worker import failed_record, play_spec
@@ -259,16 +260,32 @@ def process_end(exitcode: int | None) -> str:
     return f"ended with exit code {exitcode}"
 
 
+class MatchFailed(ExperimentError):
+    """The match of :func:`play_in_worker` did not finish: ``error`` is its record's
+    ``Kind: what happened`` (naming the team whose code was running, if any), ``forfeit`` the
+    side at fault (FORFEIT_NONE: nobody)."""
+
+    def __init__(self, error: str, forfeit: int = FORFEIT_NONE) -> None:
+        super().__init__(error)
+        self.error, self.forfeit = error, forfeit
+
+    def __reduce__(self):
+        return type(self), (self.error, self.forfeit)
+
+
 def play_in_worker(spec: MatchSpec, timeout: float | None, report: Callable | None = None) -> MatchRecord:
     """Play one spec in a worker process of its own, as a tournament plays each of its
-    matches, and return its record: whatever the teams' code does (hangs deaf to the timer,
-    raises anything, ends or kills its process), this process stays in control and the record
-    says what happened and whose code was running. Kernels missing from the cache are compiled
-    first on every core, off the match's clock; ``report`` as for :func:`play_spec`."""
+    matches, and return its record; MatchFailed when the match did not finish. Whatever the
+    teams' code does (hangs deaf to the timer, raises anything, ends or kills its process),
+    this process stays in control and the error says what happened and whose code was running.
+    Kernels missing from the cache are compiled first on every core, off the match's clock;
+    ``report`` as for :func:`play_spec`."""
     from experiments.runner.spec import code_version, config_hash
 
     pool = LocalPool(1, config_hash(spec.config(), spec.scenario), code_version(), timeout, report=report,
                      start_method=QUICK_START, kill_grace=SINGLE_MATCH_KILL_GRACE)
     pool.warm_up([spec], processes=os.cpu_count() or 1)
     (record,) = pool.run([spec])  # run stops its worker before it returns
+    if record.error is not None:
+        raise MatchFailed(record.error, record.forfeit)
     return record
