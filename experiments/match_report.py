@@ -54,9 +54,14 @@ class MatchReport:
     drop_balls: int = 0
     """Set plays not taken in time, restarted by dropping the ball."""
     statistics: tuple[dict[str, float], dict[str, float]] = field(default_factory=lambda: ({}, {}))
+    scenario: str = "full-match"
+    """The scenario played (:attr:`soccer_sim.MatchResult.scenario`)."""
+    end_reason: str = "time_over"
+    """Why the match ended (:attr:`soccer_sim.MatchResult.end_reason`)."""
 
     def as_dict(self) -> dict[str, Any]:
-        """JSON-ready dictionary (shirt numbers 1..11; teams named "home" and "away")."""
+        """JSON-ready dictionary (shirt numbers 1..11; teams named "home" and "away"); the
+        scenario and the end reason are left to the caller (``play`` adds them for a scenario)."""
         pair = lambda values: dict(zip(SIDES, values))  # noqa: E731
         return {
             "teams": pair(self.team_names),
@@ -120,4 +125,6 @@ def match_report(result: MatchResult) -> MatchReport:
         offsides=(offsides[0], offsides[1]),
         drop_balls=drop_balls,
         statistics=(result.statistics[0].as_dict(), result.statistics[1].as_dict()),
+        scenario=result.scenario,
+        end_reason=result.end_reason,
     )

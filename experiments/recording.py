@@ -5,7 +5,9 @@ Each recording is written into a temporary file beside the target and renamed on
 end, so a match that fails or is interrupted leaves no partial file, and an earlier file of
 that name stays as it was. The destination is checked (its suffix, its directory, that a file
 can be made there) when the block is entered, before the match. Used by ``play --record``,
-``play --rcg``, ``replay --results ... --out`` and the runner's ``--rcg-dir``.
+``play --rcg`` (whose match's worker writes into the temporary files of
+:func:`replay_destination` and :func:`rcg_destination`), ``replay --results ... --out`` and the
+runner's ``--rcg-dir``.
 """
 
 from __future__ import annotations
@@ -56,10 +58,53 @@ def rcg_recording(path: str | None, option: str) -> Iterator[list]:
 
 
 @contextlib.contextmanager
+def replay_destination(path: str | None, option: str) -> Iterator[Path | None]:
+    """The temporary file into which another process (a match's worker) writes the rerun replay
+    for ``path``, checked as :func:`replay_recording` checks it; it replaces ``path`` when the
+    block ends without an exception and is removed otherwise. None when ``path`` is None."""
+    if path is None:
+        yield None
+        return
+    from soccer_sim.replay import ReplayError
+
+    with _atomic_destination(path, option, ".rrd", "a replay file", ReplayError) as temporary:
+        yield temporary
+
+
+@contextlib.contextmanager
+def rcg_destination(path: str | None, option: str) -> Iterator[Path | None]:
+    """The same as :func:`replay_destination` for an rcssserver game log."""
+    if path is None:
+        yield None
+        return
+    from soccer_sim.rcg import RcgError
+
+    with _atomic_destination(path, option, ".rcg", "a game log", RcgError) as temporary:
+        yield temporary
+
+
+@contextlib.contextmanager
 def _atomic_recording(path: str, option: str, suffix: str, what: str, recorder: Callable[[Path], object],
                       error: type[Exception]) -> Iterator[list]:
     """One ``recorder(temporary)`` writing a temporary file that replaces ``path`` at the end
     of the block; ``error`` naming ``option`` and ``path`` when the file cannot be written."""
+    with _atomic_destination(path, option, suffix, what, error) as temporary:
+        made = None
+        try:
+            made = recorder(temporary)
+            yield [made]
+            _close(made)
+        except BaseException:
+            with contextlib.suppress(Exception):
+                _close(made)                 # a full disk fails the close again: already said
+            raise
+
+
+@contextlib.contextmanager
+def _atomic_destination(path: str, option: str, suffix: str, what: str, error: type[Exception]) -> Iterator[Path]:
+    """A temporary file beside ``path`` that replaces it at the end of the block (and is removed
+    if the block raises); ``error`` naming ``option`` and ``path`` when it cannot be written, an
+    OSError naming ``path`` when a write failed (a full disk: exit 1)."""
     from experiments.results.files import atomic_output, describe, file_problem, write_failure
 
     target = Path(path)
@@ -73,15 +118,10 @@ def _atomic_recording(path: str, option: str, suffix: str, what: str, recorder: 
         temporary = output.__enter__()
     except OSError as exc:
         raise error(f"{option} {path}: cannot write it ({describe(exc)})") from None
-    made = None
     try:
-        made = recorder(temporary)
-        yield [made]
-        _close(made)
+        yield temporary
     except BaseException as exc:
         failed = _failed_write(exc, temporary)
-        with contextlib.suppress(Exception):
-            _close(made)                     # a full disk fails the close again: already said
         output.__exit__(*sys.exc_info())    # removes the temporary file
         if failed is not None:              # one line naming the file, exit 1 (a write that failed)
             raise OSError(failed.errno, failed.strerror, str(path)) from None

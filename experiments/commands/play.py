@@ -13,14 +13,16 @@ Stdout carries only the report; every error is one line on stderr. Exit status: 
 played (also when the reader of stdout went away, ``play --json | head -1``), 2 for bad input
 (an unknown or unimportable team, a bad scenario file, an unwritable replay or game log,
 checked before the match), 1 for a match that
-failed (a team raised, returned a malformed command or called ``sys.exit`` in its code, or the
-match overran ``--match-timeout``), 130 after Ctrl-C ("interrupted").
+failed (a team raised anything, returned a malformed command, called ``sys.exit`` or ended or
+killed its process, or the match overran ``--match-timeout``; the line names the team whose
+code was running and what happened), 130 after Ctrl-C ("interrupted").
 
-``--match-timeout`` has the tournament's meaning and default (600 s) and its mechanism: a timer
-signal that stops the match where it hangs (in a team's ``act`` or anywhere else in Python
-code); the match is played in this process as without the option, so output and speed do not
-change. Code that never returns to the interpreter (a compiled loop) cannot be stopped this way;
-a tournament also kills its worker process in that case.
+The match is played as a tournament plays each of its matches: in a worker process
+(:func:`experiments.runner.local.play_in_worker`), started once the kernels are in the cache,
+whose record (and report, and recordings) comes back to this process. So ``--match-timeout``
+(the tournament's meaning and default, 600 s) holds against any team code: the worker's timer
+stops a match where it hangs, and a worker that does not answer a moment later is killed.
+What a team prints goes to stderr, never into the report on stdout.
 """
 
 from __future__ import annotations
@@ -65,69 +67,60 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    import contextlib
     import json
     import sys
-    import time
 
     from rich.markup import escape
 
     from experiments.commands.run_options import RunInputError, check_observation
     from experiments.match_report import match_report
-    from experiments.recording import rcg_recording, replay_recording
-    from experiments.runner.worker import MatchTimeout, arm_timer, disarm_timer
-    from experiments.warmup import warm_kernels
-    from soccer_sim import ConfigError, TeamError, TeamNotFoundError, run_match
+    from experiments.recording import rcg_destination, replay_destination
+    from experiments.runner.local import MatchFailed, play_in_worker
+    from experiments.runner.spec import MatchSpec
+    from soccer_sim import ConfigError, TeamNotFoundError
     from soccer_sim.rcg import RcgError
     from soccer_sim.replay import ReplayError
+    from soccer_sim.setup import MatchSetup
 
     timeout = getattr(args, "match_timeout", None)
     try:
         config = match_config(args.cycles, getattr(args, "observation", "full"))
         scenario = _scenario(getattr(args, "scenario", None))
-        with replay_recording(getattr(args, "record", None), "--record") as replays, \
-                rcg_recording(getattr(args, "rcg", None), "--rcg") as logs:
-            recorders = [*replays, *logs]
-            check_observation([args.home, args.away], config.observation.mode)
-            # a cold cache is filled here, not on the match's clock
-            warm_kernels((args.home, args.away), observation=config.observation.mode)
-            start = time.perf_counter()
-            alarm = arm_timer(timeout)  # the tournament's timer: MatchTimeout where the match hangs
-            try:
-                result = run_match(args.home, args.away, seed=args.seed, config=config, scenario=scenario,
-                                   recorders=recorders)
-            finally:
-                disarm_timer(alarm)
-            elapsed = time.perf_counter() - start
+        MatchSetup.resolve(config, scenario)  # a scenario that does not fit the field is bad input, found here
+        with replay_destination(getattr(args, "record", None), "--record") as replay, \
+                rcg_destination(getattr(args, "rcg", None), "--rcg") as log:
+            with contextlib.redirect_stdout(sys.stderr):  # what a team prints while it loads is not the report
+                check_observation([args.home, args.away], config.observation.mode)
+            spec = MatchSpec(args.home, args.away, args.seed, configuration=config, scenario=scenario,
+                             record=None if replay is None else str(replay), rcg=None if log is None else str(log))
+            # played in a worker process of its own, as in a tournament, so --match-timeout holds
+            # whatever the teams' code does; kernels are compiled first, off the match's clock
+            record = play_in_worker(spec, timeout, report=match_report)  # MatchFailed: no recording is kept
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return 130
-    except MatchTimeout as exc:
-        return _fail(f"match stopped: it exceeded its time budget of {exc.seconds:g} s (--match-timeout)", 1)
-    except TeamError as exc:  # a team failed during the match: a failed run
-        if isinstance(exc.__cause__, MatchTimeout):
-            method = exc.message.split("(", 1)[0]
-            return _fail(f"match stopped: it exceeded its time budget of {exc.__cause__.seconds:g} s "
-                         f"(--match-timeout) while team {exc.team_name!r} was in {method}()", 1)
-        return _fail(str(exc), 1)
+    except MatchFailed as failed:
+        return _fail(_stopped_line(failed.error), 1)
     except (TeamNotFoundError, ConfigError, ValueError, ReplayError, RcgError, RunInputError) as exc:  # bad input
         return _fail(str(exc), 2)
-    report = match_report(result)
+    report, elapsed = record.report, record.wall_time
     try:
         if args.json:
             data = report.as_dict()
             if scenario is not None:
-                data.update(scenario=result.scenario, end_reason=result.end_reason)
+                data.update(scenario=report.scenario, end_reason=report.end_reason)
             print(json.dumps(data, indent=2))
         else:
             console = _report_console()
             _print_report(console, report, elapsed)
             if scenario is not None:
-                console.print(f"scenario {escape(result.scenario)}: ended by {result.end_reason} after "
-                              f"{result.cycles} cycles")
-            if replays:
+                console.print(f"scenario {escape(report.scenario)}: ended by {report.end_reason} after "
+                              f"{report.cycles} cycles")
+            if replay is not None:
                 console.print(f"replay written to {escape(args.record)} (watch it: soccer-sim replay "
                               f"{escape(args.record)})")
-            if logs:
+            if log is not None:
                 console.print(f"rcssserver game log written to {escape(args.rcg)}")
         sys.stdout.flush()
     except BrokenPipeError:  # the reader went away (``soccer-sim play --json | head``): not an error
@@ -135,6 +128,21 @@ def run(args: argparse.Namespace) -> int:
 
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no second error at exit
     return 0
+
+
+def _stopped_line(error: str) -> str:
+    """The error line of a match that did not finish (``error``: its record's ``Kind: what
+    happened``): a team's failure as the TeamError words it (naming the team and its method);
+    a timeout or a worker that ended as the runner words it (naming the team whose code was
+    running); any other exception with its kind."""
+    kind, _, text = error.partition(": ")
+    if kind == "TeamError":
+        return text
+    if kind == "MatchTimeout":
+        return f"match stopped (--match-timeout): {text}"
+    if kind == "WorkerDied":
+        return f"match stopped: {text}"
+    return f"match stopped: {error}"
 
 
 def _fail(message: str, status: int) -> int:

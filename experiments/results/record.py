@@ -34,6 +34,10 @@ class MatchRecord:
     error: str | None = None
     traceback: str | None = None
     forfeit: int = FORFEIT_NONE
+    report: object = field(default=None, compare=False, repr=False)
+    """What the run's ``report`` function made of the finished match in its worker (``soccer-sim
+    play``'s :class:`~experiments.match_report.MatchReport`), carried back with the record and
+    never stored: not one of :meth:`to_row`'s columns."""
 
     @property
     def key(self) -> tuple[str, str, int]:

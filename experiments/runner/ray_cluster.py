@@ -18,6 +18,10 @@ from experiments.runner.worker import play_spec
 SHIP_EXCLUDES = ["__pycache__", "*.pyc", "*.nbi", "*.nbc"]
 """Left out of the shipped packages: caches that belong to this machine."""
 
+ADDRESS_PROBE_SECONDS = 5.0
+"""Seconds the Ray address of a cluster to join has to accept a connection before the run
+gives up on it with one line (Ray's own client keeps retrying an address that does not answer)."""
+
 class RayUnavailable(ExperimentError):
     """Ray is not installed, the cluster cannot be reached or none of its nodes can play."""
 
@@ -40,6 +44,8 @@ def connect(ray, workers: int | None, address: str | None, ship_code: bool) -> t
     target = address or os.environ.get("RAY_ADDRESS") or None
     if ray.is_initialized():
         return False, "using the Ray session already initialized in this process"
+    if target:
+        probe_address(target)
     options: dict = dict(include_dashboard=False, log_to_driver=False, configure_logging=False)
     if ship_code:
         options["runtime_env"] = code_runtime_env(target is None)
@@ -55,6 +61,45 @@ def connect(ray, workers: int | None, address: str | None, ship_code: bool) -> t
         return False, (f"joined the cluster at {ray.get_runtime_context().gcs_address}"
                        f"{'' if address else ' (RAY_ADDRESS)'}")
     return True, "started a private local Ray instance"
+
+
+def probe_address(target: str) -> None:
+    """RayUnavailable, within :data:`ADDRESS_PROBE_SECONDS`, when nothing accepts a connection
+    at the cluster address ``target`` (``HOST:PORT``, or ``ray://HOST:PORT`` for Ray Client) as
+    Ray will dial it (Ray replaces a loopback host by this machine's address). ``auto`` and
+    addresses Ray cannot parse are left to Ray, which answers those at once."""
+    import socket
+
+    scheme, _, rest = target.rpartition("://")
+    dialled = rest if scheme else _as_ray_dials(target)
+    host, _, port_text = dialled.rpartition(":")
+    host = host.strip("[]")
+    if not host or not port_text.isdigit():
+        return
+    try:
+        socket.create_connection((host, int(port_text)), timeout=ADDRESS_PROBE_SECONDS).close()
+    except socket.timeout:
+        reason = f"no answer within {ADDRESS_PROBE_SECONDS:g} s"
+    except socket.gaierror as exc:
+        reason = f"unknown host ({exc.strerror})"
+    except OSError as exc:
+        reason = exc.strerror or type(exc).__name__
+    else:
+        return
+    where = target if dialled in (target, rest) else f"{target} (dialled as {dialled})"
+    raise RayUnavailable(f"cannot reach the Ray cluster at {where}: {reason.lower()}; start it (ray start --head) "
+                         "or give the address of a running one")
+
+
+def _as_ray_dials(address: str) -> str:
+    """``address`` as Ray's driver dials it (a loopback host becomes this machine's address);
+    as given when Ray's helper for it is missing or refuses the address."""
+    try:
+        from ray._private.services import canonicalize_bootstrap_address
+
+        return canonicalize_bootstrap_address(address) or address
+    except Exception:  # noqa: BLE001 - a private helper of Ray: its absence or error leaves the address as given
+        return address
 
 
 @dataclass

@@ -16,11 +16,14 @@ import threading
 import time
 import traceback as tb
 from collections.abc import Callable, MutableSequence
-from typing import Protocol
+from typing import TYPE_CHECKING, Protocol
 
 from experiments.errors import ExperimentError
 from experiments.results.record import FORFEIT_NONE, MatchRecord
 from experiments.runner.spec import MatchSpec
+
+if TYPE_CHECKING:  # annotations only
+    from soccer_sim import MatchResult
 
 
 class MatchFigures(Protocol):
@@ -96,7 +99,8 @@ def make_team(name: str) -> tuple[object, str]:
 
 def play_spec(spec: MatchSpec, config_hash: str, code_version: str, timeout: float | None,
               deciding: MutableSequence[int] | None = None,
-              figures: Callable[[], MatchFigures] | None = None) -> MatchRecord:
+              figures: Callable[[], MatchFigures] | None = None,
+              report: Callable[[MatchResult], object] | None = None) -> MatchRecord:
     """Play ``spec`` and return its record; every failure becomes a forfeit or an error row.
 
     The record carries the code version of this process (the code that really played), not
@@ -104,7 +108,10 @@ def play_spec(spec: MatchSpec, config_hash: str, code_version: str, timeout: flo
     integers (a worker's shared slot) set to [side running team code now, side whose act
     returned last], so a parent can blame the team whose code was running if the worker dies;
     a private list if None. ``figures``: makes a recorder whose figures of the whole match are
-    added to both teams' statistics of a match played to its end."""
+    added to both teams' statistics of a match played to its end. ``report``: a picklable
+    function of the finished match's :class:`~soccer_sim.MatchResult` whose value the record
+    carries back in :attr:`MatchRecord.report` (``soccer-sim play``'s match report; not for a
+    study's own ``play`` function)."""
     from experiments.runner.fingerprint import code_version as running_code_version
 
     record = MatchRecord(spec.home, spec.away, spec.seed, config_hash, running_code_version())
@@ -122,21 +129,22 @@ def play_spec(spec: MatchSpec, config_hash: str, code_version: str, timeout: flo
             play(spec, record, lambda team, name, side: _Watched(team, name, side, deciding))
             disarm_timer(alarm)
         else:
-            _play_match(spec, record, deciding, figures, alarm)
+            _play_match(spec, record, deciding, figures, report, alarm)
     except BaseException as exc:  # noqa: BLE001 - a worker must survive anything a team does
         disarm_timer(alarm)
         if isinstance(exc, KeyboardInterrupt) and timeout is None:
             raise
-        record.error = f"{type(exc).__name__}: {exc}"
-        record.traceback = tb.format_exc()
         record.forfeit = _culprit(exc, spec, deciding)
+        record.error = failure_text(exc, spec, record.forfeit)
+        record.traceback = tb.format_exc()
     deciding[0] = FORFEIT_NONE  # the match is over: no team's code runs until the next one
     record.wall_time = time.perf_counter() - start
     return record
 
 
 def _play_match(spec: MatchSpec, record: MatchRecord, deciding: MutableSequence[int],
-                figures: Callable[[], MatchFigures] | None, alarm) -> None:
+                figures: Callable[[], MatchFigures] | None, report: Callable[[MatchResult], object] | None,
+                alarm) -> None:
     """Play the match between ``spec.home`` and ``spec.away`` into ``record``."""
     from soccer_sim import run_match
 
@@ -159,6 +167,31 @@ def _play_match(spec: MatchSpec, record: MatchRecord, deciding: MutableSequence[
         extra = recorders[0].figures()
         record.home_stats.update(extra)
         record.away_stats.update(extra)
+    if report is not None:
+        record.report = report(result)
+
+
+def failure_text(exc: BaseException, spec: MatchSpec, side: int) -> str:
+    """``record.error`` for a match ``exc`` stopped, ``Kind: what happened``: a TeamError as it
+    stands (it names the team and the method), a timeout inside a team's method as a
+    MatchTimeout naming both, anything else with the team ``side`` names (if any) appended."""
+    from soccer_sim import TeamError
+
+    if isinstance(exc, TeamError) and isinstance(exc.__cause__, MatchTimeout):
+        method = exc.message.split("(", 1)[0]
+        return (f"MatchTimeout: match exceeded its time budget of {exc.__cause__.seconds:g} s while team "
+                f"{exc.team_name!r} was in {method}()")
+    if isinstance(exc, TeamError):
+        return f"TeamError: {exc}"
+    return f"{type(exc).__name__}: {exc}{blame_suffix(spec, side)}"
+
+
+def blame_suffix(spec: MatchSpec, side: int) -> str:
+    """``; it was running the code of the away team 'name'`` for ``side`` (nothing for FORFEIT_NONE):
+    what a failure's message adds when the worker's slot says whose code ran."""
+    if side == FORFEIT_NONE:
+        return ""
+    return f"; it was running the code of the {('home', 'away')[side]} team {spec.key[side]!r}"
 
 
 def _culprit(exc: BaseException, spec: MatchSpec, deciding: MutableSequence[int]) -> int:
@@ -180,29 +213,42 @@ TIMER_RESTRIKE_SECONDS = 0.2
 """Seconds after a timeout's raise when the timer strikes again, in case that raise was swallowed."""
 
 
-def arm_timer(timeout: float | None):
+class _Alarm:
+    """An armed match timer: the SIGALRM handler it replaced, and whether it may still strike
+    (cleared first thing on disarming, so a strike already on its way when the match ends
+    raises nothing)."""
+
+    def __init__(self, previous) -> None:
+        self.previous = previous
+        self.active = True
+
+
+def arm_timer(timeout: float | None) -> _Alarm | None:
     """Start a timer that raises MatchTimeout in this (main) thread after ``timeout`` seconds;
     None where signals are unavailable (another thread, or no SIGALRM on this platform)."""
     if timeout is None or not hasattr(signal, "setitimer") or threading.current_thread() is not threading.main_thread():
         return None
 
     def _expired(signum, frame):
+        if not alarm.active:
+            return
         # Strike again soon: a raise inside a callback the interpreter guards (a garbage
         # collector's finaliser, e.g. pymunk freeing a space) is printed and swallowed, and the
         # match would play on. The disarm that follows a raise that lands comes well before this.
         signal.setitimer(signal.ITIMER_REAL, TIMER_RESTRIKE_SECONDS)
         raise MatchTimeout(timeout)
 
-    previous = signal.signal(signal.SIGALRM, _expired)
+    alarm = _Alarm(signal.signal(signal.SIGALRM, _expired))
     signal.setitimer(signal.ITIMER_REAL, timeout)
-    return previous
+    return alarm
 
 
-def disarm_timer(previous) -> None:
+def disarm_timer(alarm: _Alarm | None) -> None:
     """Stop the timer of :func:`arm_timer` and restore the signal handler it replaced."""
-    if previous is not None:
+    if alarm is not None:
+        alarm.active = False
         signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
+        signal.signal(signal.SIGALRM, alarm.previous)
 
 
 def failed_record(spec: MatchSpec, config_hash: str, code_version: str, seconds: float, message: str,
@@ -210,7 +256,6 @@ def failed_record(spec: MatchSpec, config_hash: str, code_version: str, seconds:
     """The record of a match the parent had to give up on (its worker died or was stopped):
     ``forfeit`` is the side whose code was running then, if the worker's slot says so; nobody
     is blamed otherwise, and the message then names that team."""
-    if forfeit != FORFEIT_NONE:
-        message += f"; it was running the code of the {('home', 'away')[forfeit]} team {spec.key[forfeit]!r}"
+    message += blame_suffix(spec, forfeit)
     return MatchRecord(spec.home, spec.away, spec.seed, config_hash, code_version, error=message,
                        traceback=message, forfeit=forfeit, wall_time=seconds)

@@ -59,6 +59,13 @@ class DeafHangingTeam(_Still):
             time.sleep(0.05)
 
 
+class DeafAtOnceTeam(DeafHangingTeam):
+    """Hangs deaf to the timer from its first act() (nothing else is under way when the timer
+    is due, so the team is surely the one whose code runs)."""
+
+    fail_at = 0
+
+
 class CrashingTeam(_Still):
     """Ends its worker process abruptly (as a crash in native code would)."""
 
@@ -112,3 +119,60 @@ class Forward(Constant):
 
 class Sideways(Constant):
     dash, kick, catch = (0.0, 0.02), (0.0, 0.0), False
+
+
+class RaisingBaseException(_Still):
+    """Raises a BaseException that is not an Exception (as a bare ``raise BaseException``)."""
+
+    def misbehave(self) -> None:
+        raise BaseException("scripted base exception")
+
+
+class QuietlyExitingTeam(_Still):
+    """Ends its process at once with status 0 (``os._exit(0)``): no exception, no report."""
+
+    def misbehave(self) -> None:
+        os._exit(0)
+
+
+class SelfKillingTeam(_Still):
+    """Kills its own process with SIGKILL."""
+
+    def misbehave(self) -> None:
+        os.kill(os.getpid(), signal.SIGKILL)
+
+
+class PrintingTeam(_Still):
+    """Prints on stdout every cycle (Python's print and the process's file descriptor 1)."""
+
+    fail_at = 0
+
+    def misbehave(self) -> None:
+        print("team says hello")
+        os.write(1, b"team writes to fd 1\n")
+
+
+class SelfAlarmingTeam(_Still):
+    """Restores SIGALRM's default action (end the process) and sets a timer of its own."""
+
+    def misbehave(self) -> None:
+        signal.signal(signal.SIGALRM, signal.SIG_DFL)
+        signal.setitimer(signal.ITIMER_REAL, 0.01)
+        time.sleep(5)
+
+
+MARKER_VARIABLE = "SOCCER_SIM_TEST_MARKER"
+"""The environment variable naming the file :class:`MarkingHangingTeam` creates."""
+
+
+class MarkingHangingTeam(_Still):
+    """Creates the file the environment variable MARKER_VARIABLE names, then sleeps for ever in
+    act() (a test knows the match is under way once the file exists)."""
+
+    fail_at = 0
+
+    def misbehave(self) -> None:
+        with open(os.environ[MARKER_VARIABLE], "w"):
+            pass
+        while True:
+            time.sleep(0.05)

@@ -36,6 +36,7 @@ EXAMPLES: dict[str, tuple] = {
     "experiments.results.store.StorageError": ("r.sqlite: cannot store a match (database or disk is full)",),
     "experiments.results.export.ExportError": ("needs pyarrow",),
     "experiments.runner.worker.MatchTimeout": (2.5,),
+    "experiments.runner.local.MatchFailed": ("WorkerDied: the worker process ended with exit code 0", 1),
     "experiments.runner.ray_cluster.RayUnavailable": ("no ray",),
     "experiments.commands.run_options.RunInputError": ("--teams: unknown team",),
     "experiments.errors.ParameterError": ("record_every", "must be at least 1, got 0"),

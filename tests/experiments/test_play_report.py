@@ -41,6 +41,7 @@ def _result_with(events: EventLog):
     class Result:
         team_names = ("a", "b")
         seed, cycles, score = 3, 100, (1, 1)
+        scenario, end_reason = "full-match", "time_over"
         statistics = (soccer_sim.statistics.TeamStatistics(), soccer_sim.statistics.TeamStatistics())
 
     result = Result()
@@ -99,10 +100,12 @@ def test_error_text_with_brackets_is_printed(monkeypatch, capsys):
 
 
 def test_ctrl_c_prints_interrupted_and_exits_130(monkeypatch, capsys):
-    def interrupted(*args, **kwargs):
+    import experiments.runner.local
+
+    def interrupted(*args, **kwargs):  # Ctrl-C reaches play while its match's worker plays (the worker ignores it)
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(soccer_sim, "run_match", interrupted)
+    monkeypatch.setattr(experiments.runner.local, "play_in_worker", interrupted)
     assert main(["play", "--cycles", "5"]) == 130
     captured = capsys.readouterr()
     assert captured.err.strip() == "interrupted" and "Traceback" not in captured.out + captured.err

@@ -97,7 +97,7 @@ def test_a_team_that_never_returns_is_stopped_by_the_match_timeout(team_module, 
     run_match("idle", "idle", config=MatchConfig(max_cycles=1))  # kernels loaded before the clock runs
     module = team_module("play_hanging_team", TEAM_SOURCE)
     assert main(["play", f"{module}:Hanging", "idle", "--cycles", "10", "--match-timeout", "2"]) == 1
-    assert one_error_line(capsys) == (f"error: match stopped: it exceeded its time budget of 2 s (--match-timeout) "
+    assert one_error_line(capsys) == (f"error: match stopped (--match-timeout): match exceeded its time budget of 2 s "
                                       f"while team '{module}:Hanging' was in act()")
 
 

@@ -178,21 +178,25 @@ def test_a_chosen_command_still_gets_its_lazily_built_options() -> None:
     assert (args.benchmark, args.repeats, args.home) == ("startup", 2, "mmd+msd2")
 
 
-def test_play_warms_the_kernels_before_the_match_clock_starts(monkeypatch) -> None:
-    import experiments.warmup
-    import soccer_sim
+def test_play_warms_the_kernels_before_its_worker_starts(monkeypatch) -> None:
+    import experiments.runner.local as local
     from experiments.cli import main
+    from experiments.warmup import WarmUp
 
-    calls = []
-    monkeypatch.setattr(experiments.warmup, "warm_kernels", lambda teams, *a, **k: calls.append(("warm", tuple(teams))))
+    order, kernel = [], Kernel("m", "f", "()")
 
-    def match(*args, **kwargs):
-        calls.append(("match", args[:2]))
+    def warm(teams, processes=None, observation="full"):
+        order.append(("warm", tuple(teams)))
+        return WarmUp((kernel,), 1, processes, 0.0)
+
+    def start_worker(self):
+        order.append(("worker", self._kernels))  # the worker loads these before the match clock starts
         raise ValueError("stopped by the test")
 
-    monkeypatch.setattr(soccer_sim, "run_match", match)
+    monkeypatch.setattr(local, "warm_kernels", warm)
+    monkeypatch.setattr(local.LocalPool, "_start_worker", start_worker)
     assert main(["play", "greedy", "static", "--cycles", "10"]) == 2
-    assert calls == [("warm", ("greedy", "static")), ("match", ("greedy", "static"))]
+    assert order == [("warm", ("greedy", "static")), ("worker", (kernel,))]
 
 
 def test_the_runner_warms_up_before_the_progress_clock_and_the_first_worker(monkeypatch, tmp_path: Path) -> None:
