@@ -38,6 +38,7 @@ from soccer_sim.team import TeamError
 
 from rcss_bridge.connection import Connection, Recorder
 from rcss_bridge.errors import BridgeError, ProtocolError, ServerError, TeamFailure, TeamTooSlow
+from rcss_bridge.localisation import warm_up
 from rcss_bridge.messages import Message, SenseBody, Think, read_message
 from rcss_bridge.params import ServerParameters
 from rcss_bridge.sexpr import head
@@ -142,7 +143,9 @@ class TeamClient:
 
     # ------------------------------------------------------------------------------ connect
     def connect(self) -> None:
-        """Connect the players and the coach and read the server's parameters."""
+        """Connect the players and the coach and read the server's parameters (the bridge's
+        own compiled kernel is loaded first: nothing may compile once the server waits)."""
+        warm_up()
         s = self.settings
         order = [s.goalie] + [row for row in range(s.players) if row != s.goalie]
         order = order[: s.players if s.connect is None else s.connect]
@@ -212,13 +215,10 @@ class TeamClient:
         rows = sorted(self.players)
         received: dict[int, list[Message]] = {row: [] for row in rows}
         thinks = dict.fromkeys(rows, 0)
-        for row in rows:
-            self.players[row].step = self.step
-            self._carry[row] = self._carry.get(row, []) + _read_all(self.players[row].early, self.players[row].name)
-            self.players[row].early.clear()
 
-        def take(row: int) -> None:
-            for message in _read_all(self.players[row].receive(), self.players[row].name):
+        def take(row: int, texts: Sequence[str] | None = None) -> None:
+            conn = self.players[row]
+            for message in _read_all(conn.receive() if texts is None else texts, conn.name):
                 if isinstance(message, Think):
                     thinks[row] += 1
                     received[row].extend(self._carry[row])
@@ -226,6 +226,11 @@ class TeamClient:
                 else:
                     self._carry[row].append(message)
 
+        for row in rows:
+            self.players[row].step = self.step
+            self._carry.setdefault(row, [])
+            take(row, self.players[row].early)  # what arrived while connecting
+            self.players[row].early.clear()
         deadline = time.monotonic() + self.settings.step_timeout
         while waiting := [row for row in rows if thinks[row] == 0]:
             socks = {self.players[row].sock: row for row in waiting}
@@ -252,10 +257,14 @@ class TeamClient:
         """Send each connected player its order and ``(done)`` in one datagram (a player
         without an order sends ``(done)`` alone). A say is checked as the simulator checks
         one (:func:`soccer_sim.perception.audio.check_message`) and sent quoted."""
+        for row, datagram in self._datagrams(orders).items():
+            self.players[row].send(datagram)
+
+    def _datagrams(self, orders: Mapping[int, PlayerOrder]) -> dict[int, str]:
+        """Each connected player's datagram (:func:`command_datagram`)."""
         audio = self.config.observation.audio if self.config is not None else AudioParams()
-        for row, conn in self.players.items():
-            order = orders.get(row, PlayerOrder())
-            conn.send(command_datagram(order, audio, self.team_name, row))
+        return {row: command_datagram(orders.get(row, PlayerOrder()), audio, self.team_name, row)
+                for row in self.players}
 
     def coach_command(self, text: str) -> None:
         """Send one command of the online coach (``(change_player_type 2 5)``)."""
@@ -278,7 +287,15 @@ class TeamClient:
                     on_step(step)
                 if step.over:
                     break
-                self.send_step(self._decide(worker, step, decide))
+                orders = self._decide(worker, step, decide)
+                try:
+                    datagrams = self._datagrams(orders)
+                except (TeamError, ProtocolError) as exc:
+                    row = getattr(exc, "player", None)
+                    raise TeamFailure(self.team_name, -1 if row is None else row, step.step, step.server_time,
+                                      f"bad order: {exc}") from exc
+                for row, datagram in datagrams.items():
+                    self.players[row].send(datagram)
                 played += 1
         except BaseException:
             self.close()
@@ -310,12 +327,12 @@ class TeamClient:
 def command_datagram(order: PlayerOrder, audio: AudioParams = AudioParams(), team_name: str = "?",
                      row: int | None = None) -> str:
     """One player's datagram for a step: its commands, its say quoted, then ``(done)``. The
-    commands must not say or end the step themselves (a :class:`ProtocolError`), and the
-    message must be one the server accepts (:class:`~soccer_sim.team.TeamError`)."""
+    commands must not say or end the step themselves, and the message must be one the server
+    accepts (each a :class:`~soccer_sim.team.TeamError` naming the player)."""
     commands = order.commands.strip()
     if "(say" in commands or "(done" in commands or "(bye" in commands:
-        raise ProtocolError(f"player {row}: commands {commands!r} may not contain say, done or bye "
-                            "(the say goes in PlayerOrder.say)")
+        raise TeamError(team_name, f"commands {commands!r} may not contain say, done or bye (the say goes "
+                        "in PlayerOrder.say)", row)
     if order.say is not None:
         check_message(order.say, audio, team_name, row)
         commands += f'(say "{order.say}")'

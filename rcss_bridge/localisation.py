@@ -103,3 +103,9 @@ def face_from_flags(points: np.ndarray, distances: np.ndarray, directions: np.nd
     if c == 0.0 and s == 0.0:
         return float("nan")
     return wrap(math.degrees(math.atan2(s, c)))
+
+
+def warm_up() -> None:
+    """Compile (or load from numba's cache) the self-localisation kernel now: a step's first
+    call must not spend the server's 1.25 s (``TeamClient.connect`` calls this first)."""
+    position_from_flags(np.zeros((1, 2)), np.ones(1), np.zeros(1), 0.0)
