@@ -290,10 +290,9 @@ class TeamClient:
                 orders = self._decide(worker, step, decide)
                 try:
                     datagrams = self._datagrams(orders)
-                except (TeamError, ProtocolError) as exc:
-                    row = getattr(exc, "player", None)
-                    raise TeamFailure(self.team_name, -1 if row is None else row, step.step, step.server_time,
-                                      f"bad order: {exc}") from exc
+                except TeamError as exc:  # command_datagram names the player
+                    raise TeamFailure(self.team_name, exc.player if exc.player is not None else -1, step.step,
+                                      step.server_time, f"bad order: {exc.message}") from exc
                 for row, datagram in datagrams.items():
                     self.players[row].send(datagram)
                 played += 1

@@ -9,7 +9,7 @@ import pytest
 
 from rcss_bridge.messages import SenseBody, read_message
 from rcss_bridge.views_builder import ViewsBuilder
-from soccer_sim.perception.views import OPPONENT, TEAMMATE
+from soccer_sim.perception.views import TEAMMATE
 from soccer_sim.state import PlayMode
 from tests.rcss_bridge.recorded import received, truth
 
