@@ -1,5 +1,6 @@
-"""The project's import graph: no circles between modules, and the experiments core never
-leans on the command line.
+"""The project's import graph: no circles between modules, the experiments core never leans
+on the command line, and the bridge to rcssserver stands beside the simulator (it imports
+soccer_sim, never agents or experiments; soccer_sim never imports it).
 
 Every module of the project's packages is parsed (not imported) with :mod:`ast`, and every
 ``import`` statement it can execute is collected, at module level and inside functions and
@@ -23,7 +24,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
-PACKAGES = ("soccer_sim", "agents", "formations", "experiments", "kernel_cache")
+PACKAGES = ("soccer_sim", "agents", "formations", "experiments", "kernel_cache", "rcss_bridge")
 
 
 @dataclass(frozen=True)
@@ -219,6 +220,21 @@ def test_the_experiments_core_does_not_import_the_command_line(project):
     assert commands and core, "the experiments core or its command line is not where this test looks"
     leaks = [describe(path) for m in sorted(core) if (path := shortest_path(edges, m, commands))]
     assert not leaks, "the experiments core reaches experiments.commands:\n" + "\n".join(leaks)
+
+
+def test_the_bridge_imports_the_simulator_only(project):
+    """rcss_bridge may import soccer_sim (configuration, views, self-localisation), never the
+    teams (agents) or the runner (experiments); soccer_sim and agents never import the bridge."""
+    modules, edges = project
+    bridge = {m for m in modules if m.split(".")[0] == "rcss_bridge"}
+    assert bridge, "rcss_bridge is not where this test looks"
+    for sources, forbidden, rule in (
+            (bridge, ("agents", "experiments"), "rcss_bridge reaches agents or experiments"),
+            ({m for m in modules if m.split(".")[0] in ("soccer_sim", "agents")}, ("rcss_bridge",),
+             "soccer_sim or agents reaches rcss_bridge")):
+        goals = {m for m in modules if m.split(".")[0] in forbidden}
+        leaks = [describe(path) for m in sorted(sources) if (path := shortest_path(edges, m, goals))]
+        assert not leaks, rule + ":\n" + "\n".join(leaks)
 
 
 def test_the_graph_sees_every_package(project):

@@ -142,6 +142,34 @@ def _surely_unseen(dx: float, dy: float, bx: float, by: float, close2: float,
 
 
 @njit(cache=True, nogil=True)
+def _flag_fix(fx: float, fy: float, distance: float, direction: float) -> tuple[float, float]:  # pragma: no cover
+    """Where an observer stands that sees the flag at ``(fx, fy)`` at ``distance`` (m) in the
+    absolute ``direction`` (degrees: its look direction plus the reported relative one):
+    ``f - d (cos a, sin a)``, one flag's term of the self-localisation mean."""
+    a = math.radians(direction)
+    return fx - distance * math.cos(a), fy - distance * math.sin(a)
+
+
+@njit(cache=True, nogil=True)
+def position_from_sightings(flags: np.ndarray, distances: np.ndarray, directions: np.ndarray,
+                            look: float) -> tuple[float, float]:  # pragma: no cover - compiled
+    """The self-localisation estimate from reported sightings: the mean of :func:`_flag_fix`
+    over the flags at ``flags`` (k, 2) m seen at ``distances`` (k,) m and ``directions`` (k,)
+    degrees relative to the look direction ``look`` (degrees, absolute); NaN for k = 0. The
+    same formula :func:`_localise_one` applies to the distances and directions it computes."""
+    k = flags.shape[0]
+    if k == 0:
+        return np.nan, np.nan
+    sx = 0.0
+    sy = 0.0
+    for f in range(k):
+        x, y = _flag_fix(flags[f, 0], flags[f, 1], distances[f], look + directions[f])
+        sx += x
+        sy += y
+    return sx / k, sy / k
+
+
+@njit(cache=True, nogil=True)
 def _localise_one(px: float, py: float, body: float, flags: np.ndarray,
                   prm: np.ndarray) -> tuple[float, float, int]:  # pragma: no cover - compiled
     """One player's position from the flags it sees, and how many it sees (NaN, NaN, 0 for none)."""
@@ -161,10 +189,10 @@ def _localise_one(px: float, py: float, body: float, flags: np.ndarray,
         if not (_in_cone(dx, dy, dist, bx, by, cos_half, prm) or dist <= close):
             continue
         rel = _wrap(math.degrees(math.atan2(dy, dx)) - body)
-        d_rep = _reported_distance(dist, q_l, d_step)
-        a = math.radians(body + _quantize(rel, a_step))
-        sx += flags[f, 0] - d_rep * math.cos(a)
-        sy += flags[f, 1] - d_rep * math.sin(a)
+        x, y = _flag_fix(flags[f, 0], flags[f, 1], _reported_distance(dist, q_l, d_step),
+                         body + _quantize(rel, a_step))
+        sx += x
+        sy += y
         k += 1
     if k == 0:
         return np.nan, np.nan, 0

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from soccer_sim.perception.params import SeeParams
-from soccer_sim.perception.kernels import localise_into, params_array, sense_velocities
+from soccer_sim.perception.kernels import localise_into, params_array, position_from_sightings, sense_velocities
 
 PENALTY_AREA_LENGTH = 16.5
 """rcssserver's ``PENALTY_AREA_LENGTH`` (m), where the penalty-box flags stand."""
@@ -105,3 +105,19 @@ def sensed_velocity(velocities: np.ndarray, body_dirs: np.ndarray, params: SeePa
     out = np.empty((len(vel), 2))
     sense_velocities(np.ascontiguousarray(vel), np.ascontiguousarray(body), float(params.direction_step), out)
     return out
+
+
+def position_from_flags(flags: np.ndarray, distances: np.ndarray, directions: np.ndarray,
+                        look: float) -> np.ndarray:
+    """The module's position estimate (2,) m from sightings a player was told rather than
+    ones computed here: the flags at ``flags`` (k, 2) m seen at ``distances`` (k,) m and
+    ``directions`` (k,) degrees relative to the look direction ``look`` (degrees, same frame
+    as the flags); NaN when k = 0. A client of the real server (``rcss_bridge``) uses it with
+    the flags of a ``see`` and the look direction it estimates."""
+    pts = np.ascontiguousarray(flags, dtype=np.float64).reshape(-1, 2)
+    dist = np.ascontiguousarray(distances, dtype=np.float64).reshape(-1)
+    dirs = np.ascontiguousarray(directions, dtype=np.float64).reshape(-1)
+    if not len(pts) == len(dist) == len(dirs):
+        raise ValueError(f"position_from_flags: {len(pts)} flags, {len(dist)} distances and {len(dirs)} "
+                         "directions must describe the same sightings")
+    return np.array(position_from_sightings(pts, dist, dirs, float(look)))
