@@ -33,9 +33,7 @@ def replay_recording(path: str | None, option: str) -> Iterator[list]:
     if path is None:
         yield []
         return
-    # rerun's own log lines (its file writer's "No space left on device", ...) would come beside
-    # ours: every failure they report reaches us as an exception, worded in one line.
-    os.environ.setdefault("RUST_LOG", RERUN_LOG_FILTER)
+    _quiet_rerun()
     from soccer_sim.replay import ReplayError, RerunRecorder
 
     with _atomic_recording(path, option, ".rrd", "a replay file", RerunRecorder, ReplayError) as recorders:
@@ -65,6 +63,7 @@ def replay_destination(path: str | None, option: str) -> Iterator[Path | None]:
     if path is None:
         yield None
         return
+    _quiet_rerun()  # (before the worker starts: it inherits the environment)
     from soccer_sim.replay import ReplayError
 
     with _atomic_destination(path, option, ".rrd", "a replay file", ReplayError) as temporary:
@@ -134,15 +133,22 @@ def _atomic_destination(path: str, option: str, suffix: str, what: str, error: t
         raise error(f"{option} {path}: cannot write it ({describe(exc)})") from None
 
 
+def _quiet_rerun() -> None:
+    """rerun's own log lines (its file writer's "No space left on device", ...) would come
+    beside ours: every failure they report reaches us as an exception, worded in one line."""
+    os.environ.setdefault("RUST_LOG", RERUN_LOG_FILTER)
+
+
 def _failed_write(exc: BaseException, temporary: Path) -> OSError | None:
     """The OSError of a recording's failed write behind ``exc``, or None: an OSError of a full
-    disk or an I/O error (a game log's own write), or the RuntimeError rerun raises when its
-    file writer stopped, on a file system with no space left."""
+    disk or an I/O error (a game log's own write), or any other failure of the match that wrote
+    it (rerun's RuntimeError when its file writer stopped, a worker's report of it) on a file
+    system with no space left."""
     from experiments.results.files import write_failure
 
     if isinstance(exc, OSError) and write_failure(exc):
         return exc
-    if isinstance(exc, RuntimeError):
+    if isinstance(exc, Exception):
         with contextlib.suppress(OSError):
             if os.statvfs(temporary.parent).f_bavail == 0:
                 return OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
