@@ -32,6 +32,7 @@ import numpy as np
 from agents.assignment import AssignmentError, assign_on_grid
 from agents.assignment.grid import random_instance
 from experiments.errors import ExperimentError, StudyArgumentError
+from experiments.limits import ranged, ranged_list
 from experiments.results.files import make_output_directory
 
 #: Table 1 of the paper: (side, density %, robots) -> (pairs explored, baseline s, lazy s, speed-up).
@@ -89,44 +90,27 @@ class Trial:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--sizes", default="100,200,400", help="sides of the square 2-D workspaces (default: %(default)s)")
-    parser.add_argument("--robots", default="100,200", help="robot counts, as many goals (default: %(default)s)")
-    parser.add_argument("--densities", default="0.2,0.1,0.15,0.25",
+    parser.add_argument("--sizes", type=ranged_list("grid-sides"), default="100,200,400", help="sides of the square 2-D workspaces (default: %(default)s)")
+    parser.add_argument("--robots", type=ranged_list("grid-robots"), default="100,200", help="robot counts, as many goals (default: %(default)s)")
+    parser.add_argument("--densities", type=ranged_list("densities"), default="0.2,0.1,0.15,0.25",
                         help="obstacle densities; the first for every size, the others at the smallest size "
                              "and the first robot count (default: %(default)s)")
-    parser.add_argument("--sizes-3d", default="40,60",
+    parser.add_argument("--sizes-3d", type=ranged_list("cube-sides"), default="40,60",
                         help="sides of cubic 3-D workspaces (26-connected), at the first density and robot count; "
                              "'' for none (default: %(default)s)")
-    parser.add_argument("--repeats", type=int, default=3, help="random instances per row (default: %(default)s)")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the instances (default: %(default)s)")
+    parser.add_argument("--repeats", type=ranged("repeats"), default=3, help="random instances per row (default: %(default)s)")
+    parser.add_argument("--seed", type=ranged("seed"), default=0, help="seed of the instances (default: %(default)s)")
     parser.add_argument("--out", default=None, metavar="DIR",
                         help="also write the CSV files and the PNG plot into DIR (created if missing; "
                              "default: print the table only)")
 
 
-def _numbers(text: str, kind: type, name: str) -> list:
-    try:
-        values = [kind(part) for part in text.split(",") if part.strip()]
-    except ValueError:
-        raise StudyArgumentError(f"--{name} must be comma-separated {kind.__name__}s, got {text!r}") from None
-    return values
-
-
 def rows_of(args: argparse.Namespace) -> list[Row]:
     """The table's rows from the command's options (see the module docstring); ValueError
     naming the option that is wrong."""
-    sizes = _numbers(args.sizes, int, "sizes")
-    robots = _numbers(args.robots, int, "robots")
-    densities = _numbers(args.densities, float, "densities")
-    cubes = _numbers(args.sizes_3d, int, "sizes-3d")
+    sizes, robots, densities, cubes = args.sizes, args.robots, args.densities, args.sizes_3d
     if not sizes or not robots or not densities:
         raise StudyArgumentError("--sizes, --robots and --densities need at least one value each")
-    if min(sizes + cubes, default=1) < 2 or min(robots) < 1:
-        raise StudyArgumentError("sizes must be at least 2 and robot counts at least 1")
-    if not all(0.0 <= d < 1.0 for d in densities):
-        raise StudyArgumentError(f"--densities must lie in [0, 1), got {args.densities!r}")
-    if args.repeats < 1:
-        raise StudyArgumentError(f"--repeats must be at least 1, got {args.repeats}")
     rows = [Row((side, side), densities[0], count) for count in robots for side in sizes]
     rows += [Row((min(sizes),) * 2, density, robots[0]) for density in densities[1:]]
     rows += [Row((side,) * 3, densities[0], robots[0]) for side in cubes]
