@@ -183,12 +183,3 @@ def parse_list(text: str, name: str, option: str | None = None) -> list:
             where = f"{option}: " if option else ""
             raise OutOfRange(f"{where}each value {exc}") from None
     return values
-
-
-def check(name: str, value: float, what: str) -> None:
-    """OutOfRange naming ``what`` unless ``value`` lies in ``OPTION_RANGES[name]`` (for a value
-    given to a library call rather than parsed from the command line)."""
-    limits = OPTION_RANGES[name]
-    number = isinstance(value, (int, float)) and not isinstance(value, bool)
-    if not number or (limits.integer and not isinstance(value, int)) or not limits.contains(value):
-        raise OutOfRange(f"{what} must be {limits.describe()}, got {value!r}")

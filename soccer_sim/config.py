@@ -10,8 +10,9 @@ metres per cycle for speeds and metres per cycle² for accelerations. The
 absolute frame has its origin at the centre spot, x along the length of the
 field (towards the right-hand goal) and y across it.
 
-All configs are frozen dataclasses; :func:`MatchConfig.validate` (called on
-construction) rejects impossible values with a message naming the field.
+All configs are frozen dataclasses; each checks its fields when constructed (their ranges are
+:mod:`soccer_sim.config_ranges`'s, docs/limits.md lists them) and rejects impossible values
+with a :class:`ConfigError` naming the field.
 """
 
 from __future__ import annotations

@@ -217,3 +217,15 @@ def test_the_extremes_of_rcssservers_player_type_ranges_make_configurations() ->
 def test_an_unlimited_stamina_capacity_stays_allowed() -> None:
     assert StaminaConfig(capacity=None).capacity_or_inf == math.inf
     assert StaminaConfig(capacity=math.inf).capacity_or_inf == math.inf
+
+
+def test_docs_list_every_field_range() -> None:
+    """docs/limits.md has a row for every field of the table, under its dataclass."""
+    text = (Path(__file__).resolve().parents[2] / "docs" / "limits.md").read_text()
+    for owner, rows in FIELD_RANGES.items():
+        section = text.split(f"### {owner}\n", 1)[1].split("###", 1)[0]
+        for name, allowed in rows.items():
+            line = next((line for line in section.splitlines() if line.startswith(f"| `{name}` |")), None)
+            assert line is not None, (owner, name)
+            high = f"{allowed.high:,}" if allowed.integer else ("inf" if math.isinf(allowed.high) else f"{allowed.high:,g}")
+            assert high in line and (allowed.unit or "-") in line, line
