@@ -247,10 +247,7 @@ def _params(args: argparse.Namespace) -> dict:
     """The study's parameters; a RunInputError naming the option that cannot be used."""
     from experiments.commands.run_options import RunInputError
     from soccer_sim import TeamNotFoundError, resolve_team
-    from soccer_sim.scenarios import MAX_PLAYERS
 
-    if args.robots > MAX_PLAYERS:
-        raise RunInputError(f"--robots must be at most {MAX_PLAYERS} (players a side), got {args.robots}")
     for option, name in (("--team", args.team), ("--keeper", args.keeper)):
         try:
             resolve_team(name)

@@ -142,3 +142,9 @@ def test_docs_list_every_range() -> None:
 
 def _bound(limits: NumberRange, value: float) -> str:
     return f"{value:,}" if limits.integer else f"{value:,g}"
+
+
+def test_penalty_shot_robots_are_at_most_a_side():
+    from soccer_sim.scenarios import MAX_PLAYERS
+
+    assert OPTION_RANGES["robots"].high == MAX_PLAYERS
