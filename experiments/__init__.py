@@ -5,7 +5,7 @@ Layers (a module imports only from its own layer or the ones above it in this li
 
 * the core, used by everything below: :mod:`experiments.errors` (the error root),
   :mod:`experiments.configuration` (the match configuration of a cycle count),
-  :mod:`experiments.arguments` (argument types), :mod:`experiments.runner` (match specs and
+  :mod:`experiments.limits` (the range of every numeric option), :mod:`experiments.runner` (match specs and
   running them), :mod:`experiments.results` (the results store) and :mod:`experiments.stats`;
 * :mod:`experiments.studies` and :mod:`experiments.benchmarks`, each a sub-command module
   (``add_arguments``/``run``) built on the core and the command-line helpers of

@@ -30,6 +30,8 @@ import tempfile
 import time
 from pathlib import Path
 
+from experiments.limits import ranged
+
 MANIFEST_PATH = Path(__file__).with_name("kernel_manifest.py")
 """The generated module :func:`write_manifest` writes."""
 
@@ -144,7 +146,7 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m experiments.kernel_record", description=__doc__.split("\n\n")[0])
     parser.add_argument("--team", help="record this team's self-play in this process and print it as JSON")
     parser.add_argument("--away", help="with --team: the away team (default: the same team, a self-play)")
-    parser.add_argument("--cycles", type=int, default=RECORD_CYCLES,
+    parser.add_argument("--cycles", type=ranged("cycles"), default=RECORD_CYCLES,
                         help=f"cycles per match (default: {RECORD_CYCLES})")
     parser.add_argument("--observation", choices=("full", "partial"), default="full",
                         help="with --team: the observation mode of the recorded match (default: full)")

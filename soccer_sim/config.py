@@ -10,17 +10,19 @@ metres per cycle for speeds and metres per cycle² for accelerations. The
 absolute frame has its origin at the centre spot, x along the length of the
 field (towards the right-hand goal) and y across it.
 
-All configs are frozen dataclasses; :func:`MatchConfig.validate` (called on
-construction) rejects impossible values with a message naming the field.
+All configs are frozen dataclasses; each checks its fields when constructed (their ranges are
+:mod:`soccer_sim.config_ranges`'s, docs/limits.md lists them) and rejects impossible values
+with a :class:`ConfigError` naming the field.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 from dataclasses import field as default_of
 
-from soccer_sim.config_checks import ConfigError, _is_integer, _is_real, _require_fraction, _require_positive
+from soccer_sim.config_checks import ConfigError
+from soccer_sim.config_ranges import check_ranges
 from soccer_sim.perception.config import ObservationConfig
 from soccer_sim.rule_config import RuleConfig, TackleConfig
 
@@ -54,8 +56,13 @@ class FieldConfig:
     margin: float = 5.0
     """How far beyond the lines players may run (the ground around the pitch)."""
 
+    def __post_init__(self) -> None:
+        self.validate()
+
     def validate(self) -> None:
-        _require_positive(self, *(f.name for f in fields(self)))
+        """ConfigError naming the first field out of its range (:mod:`soccer_sim.config_ranges`)
+        or out of proportion with the others."""
+        check_ranges(self)
         if self.goal_width >= self.width:
             raise ConfigError(f"FieldConfig.goal_width ({self.goal_width}) must be smaller than the field width ({self.width})")
         if self.penalty_area_width >= self.width or self.goal_area_width >= self.penalty_area_width:
@@ -180,25 +187,18 @@ class PhysicsConfig:
     bodies it could meet in the cycle (see soccer_sim.physics.SubstepPlanner): a body far from
     everything cannot pass through anything, whatever its speed."""
 
+    def __post_init__(self) -> None:
+        self.validate()
+
     def validate(self) -> None:
-        _require_positive(
-            self, "cycle_seconds", "player_radius", "ball_radius", "player_speed_max", "dash_power_max",
-            "dash_power_rate", "dash_heading_speed", "ball_speed_max", "kick_speed_max", "kickable_margin",
-            "max_substep_distance", "player_mass", "ball_mass", "inertia_moment",
-        )
-        _require_fraction(
-            self, "player_decay", "ball_decay", "kick_distance_penalty", "kick_angle_penalty",
-            "player_rand", "ball_rand", "kick_rand", "player_restitution", "ball_restitution",
-            "side_dash_rate", "back_dash_rate",
-        )
+        """ConfigError naming the first field out of its range (:mod:`soccer_sim.config_ranges`)
+        or out of proportion with the others."""
+        check_ranges(self)
         if not isinstance(self.cap_summed_kicks, bool):
             raise ConfigError(f"PhysicsConfig.cap_summed_kicks must be a bool, got {self.cap_summed_kicks!r}")
         if self.body_ball_contact not in BODY_BALL_CONTACTS:
             raise ConfigError(f"PhysicsConfig.body_ball_contact must be one of {', '.join(BODY_BALL_CONTACTS)}, "
                               f"got {self.body_ball_contact!r}")
-        if not (_is_real(self.collision_velocity_factor) and -1.0 <= self.collision_velocity_factor <= 0.0):
-            raise ConfigError("PhysicsConfig.collision_velocity_factor must be within [-1, 0], "
-                              f"got {self.collision_velocity_factor!r}")
         if self.max_substep_distance > 2 * self.ball_radius + 2 * self.player_radius:
             raise ConfigError("PhysicsConfig.max_substep_distance must not exceed the ball-player contact diameter")
 
@@ -276,16 +276,13 @@ class StaminaConfig:
     effort_max: float = 1.0
     """Highest (and initial) effort."""
 
+    def __post_init__(self) -> None:
+        self.validate()
+
     def validate(self) -> None:
-        _require_positive(self, "maximum")
-        for name in ("recovery_per_cycle", "extra_stamina", "recover_dec", "effort_dec", "effort_inc"):
-            value = getattr(self, name)
-            if not (_is_real(value) and math.isfinite(value) and value >= 0):
-                raise ConfigError(f"StaminaConfig.{name} must be a finite number >= 0, got {value!r}")
-        if self.capacity is not None and not (_is_real(self.capacity) and self.capacity >= 0):
-            raise ConfigError(f"StaminaConfig.capacity must be None or a number >= 0, got {self.capacity!r}")
-        _require_fraction(self, "recover_dec_thr", "recover_min", "effort_dec_thr", "effort_min",
-                          "effort_inc_thr", "effort_max")
+        """ConfigError naming the first field out of its range (:mod:`soccer_sim.config_ranges`)
+        or out of proportion with the others."""
+        check_ranges(self)
         if self.effort_min > self.effort_max:
             raise ConfigError(f"StaminaConfig.effort_min ({self.effort_min}) must not exceed effort_max ({self.effort_max})")
 
@@ -364,15 +361,12 @@ class PlayerTypeConfig:
     max_trials: int = 1000
     """Draws per type before it falls back to the default type (rcssserver's ``MAX_TRIAL``)."""
 
+    def __post_init__(self) -> None:
+        self.validate()
+
     def validate(self) -> None:
-        for name in ("types", "pt_max", "max_trials"):
-            value = getattr(self, name)
-            if not (_is_integer(value) and value >= 1):
-                raise ConfigError(f"PlayerTypeConfig.{name} must be a positive integer, got {value!r}")
-        for f in fields(self):
-            value = getattr(self, f.name)
-            if f.type == "float" and not (_is_real(value) and math.isfinite(value)):
-                raise ConfigError(f"PlayerTypeConfig.{f.name} must be a finite number, got {value!r}")
+        """ConfigError naming the first field out of its range (:mod:`soccer_sim.config_ranges`)."""
+        check_ranges(self)
 
 
 @dataclass(frozen=True)
@@ -405,12 +399,17 @@ class MatchConfig:
             if not isinstance(part, kind):
                 raise ConfigError(f"MatchConfig.{name} must be a {kind.__name__}, got {type(part).__name__}")
             part.validate()
-        if not (_is_integer(self.players_per_team) and 1 <= self.players_per_team):
-            raise ConfigError(f"MatchConfig.players_per_team must be a positive integer, got {self.players_per_team!r}")
+        check_ranges(self)
         if self.rules.goalie_index >= self.players_per_team:
             raise ConfigError("RuleConfig.goalie_index must index a player of the team")
-        if self.max_cycles is not None and not (_is_integer(self.max_cycles) and self.max_cycles > 0):
-            raise ConfigError(f"MatchConfig.max_cycles must be None or a positive integer, got {self.max_cycles!r}")
+        room = min(self.field.length, self.field.width) / 2.0
+        if self.rules.set_play_clearance >= room:
+            raise ConfigError(f"RuleConfig.set_play_clearance ({self.rules.set_play_clearance:g} m) must be less than "
+                              f"half the field's smaller side ({room:g} m): opponents are kept that far from the "
+                              "ball at set plays")
+        if self.rules.corner_inset >= room:
+            raise ConfigError(f"RuleConfig.corner_inset ({self.rules.corner_inset:g} m) must be less than half the "
+                              f"field's smaller side ({room:g} m)")
 
     @property
     def total_cycles(self) -> int:

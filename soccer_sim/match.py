@@ -48,7 +48,7 @@ from soccer_sim.kernels import PT_DECAY, PT_INERTIA_MOMENT
 from soccer_sim.perception.observer import Observer
 from soccer_sim.physics import Physics, SubstepPlanner
 from soccer_sim.player_types import check_choice, draw_player_types
-from soccer_sim.recorder import Recorder
+from soccer_sim.recorder import Recorder, check_recorders
 from soccer_sim.referee import Referee
 from soccer_sim.registry import resolve_team
 from soccer_sim.scenarios.scenario import Scenario, line_up
@@ -119,6 +119,7 @@ class Match:
             raise TypeError("give either config and scenario or a setup resolved from them, not both")
         if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
             raise ValueError(f"seed must be a non-negative integer, got {seed!r}")
+        recorders = check_recorders(recorders)
         self.setup = setup
         """Sides, goalkeepers, rules on/off, start and end of the match, resolved once."""
         self.config = config = setup.config

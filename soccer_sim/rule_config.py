@@ -7,7 +7,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from soccer_sim.config_checks import ConfigError, _is_integer, _is_real, _require_fraction, _require_positive
+from soccer_sim.config_checks import ConfigError
+from soccer_sim.config_ranges import check_ranges
 
 
 @dataclass(frozen=True)
@@ -68,29 +69,16 @@ class RuleConfig:
     for its own team's fault, the next such fault gives the opponents an indirect free kick
     on the penalty area's edge (rcssserver ``max_goal_kicks``)."""
 
+    def __post_init__(self) -> None:
+        self.validate()
+
     def validate(self) -> None:
-        for name in ("half_cycles", "set_play_timeout", "goalie_hold_cycles"):
-            value = getattr(self, name)
-            if not (_is_integer(value) and value > 0):
-                raise ConfigError(f"RuleConfig.{name} must be a positive integer, got {value!r}")
-        if not (_is_integer(self.catch_ban_cycles) and self.catch_ban_cycles >= 0):
-            raise ConfigError(f"RuleConfig.catch_ban_cycles must be a non-negative integer, got {self.catch_ban_cycles!r}")
-        _require_positive(self, "set_play_clearance", "catch_length", "catch_width", "stuck_ball_radius")
-        if self.offside_active_distance is not None:
-            _require_positive(self, "offside_active_distance")
-        if not (_is_real(self.corner_inset) and 0.0 <= self.corner_inset):
-            raise ConfigError(f"RuleConfig.corner_inset must be a number >= 0, got {self.corner_inset!r}")
-        if not (_is_integer(self.goal_pause_cycles) and self.goal_pause_cycles >= 0):
-            raise ConfigError(f"RuleConfig.goal_pause_cycles must be a non-negative integer, got {self.goal_pause_cycles!r}")
-        if self.stuck_ball_cycles is not None and not (_is_integer(self.stuck_ball_cycles) and self.stuck_ball_cycles > 0):
-            raise ConfigError(f"RuleConfig.stuck_ball_cycles must be None or a positive integer, got {self.stuck_ball_cycles!r}")
-        if not (_is_integer(self.max_goal_kicks) and self.max_goal_kicks >= 0):
-            raise ConfigError(f"RuleConfig.max_goal_kicks must be a non-negative integer, got {self.max_goal_kicks!r}")
+        """ConfigError naming the first field out of its range (:mod:`soccer_sim.config_ranges`);
+        how the distances fit the field is :class:`~soccer_sim.config.MatchConfig`'s check."""
+        check_ranges(self)
         for name in ("offside", "back_pass_rule", "goal_kick_leaves_area", "proper_goal_kicks"):
             if not isinstance(getattr(self, name), bool):
                 raise ConfigError(f"RuleConfig.{name} must be a bool, got {getattr(self, name)!r}")
-        if not (_is_integer(self.goalie_index) and 0 <= self.goalie_index):
-            raise ConfigError(f"RuleConfig.goalie_index must be a non-negative integer, got {self.goalie_index!r}")
 
 
 @dataclass(frozen=True)
@@ -142,20 +130,14 @@ class TackleConfig:
     """Chance that a carded foul is a straight red card (rcssserver ``red_card_probability``;
     a second yellow card is always a red one)."""
 
+    def __post_init__(self) -> None:
+        self.validate()
+
     def validate(self) -> None:
+        """ConfigError naming the first field out of its range (:mod:`soccer_sim.config_ranges`)."""
         if not isinstance(self.enabled, bool):
             raise ConfigError(f"TackleConfig.enabled must be a bool, got {self.enabled!r}")
-        _require_positive(self, "tackle_dist", "tackle_width", "tackle_exponent", "foul_exponent")
-        for name in ("tackle_back_dist", "tackle_power_rate", "max_tackle_power", "max_back_tackle_power",
-                     "tackle_rand_factor"):
-            value = getattr(self, name)
-            if not (_is_real(value) and math.isfinite(value) and value >= 0):
-                raise ConfigError(f"TackleConfig.{name} must be a finite number >= 0, got {value!r}")
-        _require_fraction(self, "foul_detect_probability", "red_card_probability")
-        for name in ("tackle_cycles", "foul_cycles"):
-            value = getattr(self, name)
-            if not (_is_integer(value) and value >= 0):
-                raise ConfigError(f"TackleConfig.{name} must be a non-negative integer, got {value!r}")
+        check_ranges(self)
 
     @property
     def tackle_reach(self) -> float:

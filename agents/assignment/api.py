@@ -149,7 +149,7 @@ def assign(
     a robot and the other robots get ``-1``. Ties are broken deterministically.
 
     Raises:
-        AssignmentError: (a ``ValueError``) for non-finite coordinates or
+        AssignmentError: (a ``ValueError``) for complex, non-finite coordinates or
             coordinates above ``MAX_COORDINATE`` (1e150) in magnitude, arrays
             that are not 2-D, different dimensions d, unknown method or
             algorithm names, ``"random"`` without a valid ``rng``.
@@ -267,7 +267,10 @@ def assign_costs(
     Raises:
         AssignmentError: for NaN or negative costs, a matrix that is not 2-D,
             unknown method or algorithm names, ``"random"`` without a valid
-            ``rng``, finite costs whose squares overflow (msd2, mmd+msd2), or
+            ``rng``, finite costs whose total over an assignment would overflow
+            (above the largest float64 divided by ``min(n, m)``), finite costs
+            whose squares or their total overflow (msd2, mmd+msd2), complex
+            costs, or
             forbidden pairs that leave no complete assignment (the message
             says how many robots could be served).
     """

@@ -20,8 +20,14 @@ def _as_float_matrix(value: object, name: str, if_not_numeric: str, if_not_2d: s
     """``value`` as a 2-D float64 array (any empty input becomes shape ``(0, 0)``); the two
     texts say what ``name`` must be when it is not numeric / not two-dimensional."""
     try:
-        array = np.asarray(value, dtype=np.float64)
+        raw = np.asarray(value)
+        if np.iscomplexobj(raw):
+            raise AssignmentError(f"{name} {if_not_numeric}: complex numbers are not coordinates or costs "
+                                  "(give the real and imaginary parts as two columns)")
+        array = np.asarray(raw, dtype=np.float64)
     except (TypeError, ValueError) as exc:
+        if isinstance(exc, AssignmentError):
+            raise
         raise AssignmentError(f"{name} {if_not_numeric}: {exc}") from None
     if array.ndim != 2:
         if array.size == 0:
@@ -73,7 +79,9 @@ def as_costs(costs: object) -> np.ndarray:
 
     ``+inf`` marks a forbidden pair and is kept; NaN and ``-inf`` are rejected,
     as are negative costs (distances and travel costs cannot be negative, and
-    the lexicographic methods order pairs by cost).
+    the lexicographic methods order pairs by cost), complex numbers, and finite
+    costs so large that the total of an assignment (``min(n, m)`` pairs) would
+    overflow to ``inf``: at most the largest float64 divided by ``min(n, m)``.
     """
     matrix = _as_float_matrix(
         costs, "costs", "must be a numeric matrix of shape (robots, targets)", "must be a 2-D matrix (robots, targets)"
@@ -84,12 +92,23 @@ def as_costs(costs: object) -> np.ndarray:
         value = matrix[i, j]
         what = "NaN" if np.isnan(value) else f"negative ({float(value)})"
         raise AssignmentError(f"costs[{i}, {j}] is {what}: costs must be >= 0, or +inf for a forbidden pair")
+    pairs = min(matrix.shape)
+    if pairs:
+        limit = np.finfo(np.float64).max / pairs
+        too_large = np.isfinite(matrix) & (matrix > limit)
+        if too_large.any():
+            i, j = np.argwhere(too_large)[0]
+            raise AssignmentError(
+                f"costs[{i}, {j}] is {float(matrix[i, j]):g}: with {pairs} pair(s) to assign, finite costs must be "
+                f"at most {limit:.4g} so that the total of an assignment stays finite"
+            )
     return np.ascontiguousarray(matrix)
 
 
 def check_squares(costs: np.ndarray, method: str) -> None:
-    """Raise if a finite cost overflows to ``inf`` when squared (methods that square costs)."""
-    limit = np.sqrt(np.finfo(np.float64).max)
+    """Raise if a finite cost's square, or the total of the squares of an assignment, overflows
+    to ``inf`` (methods that square costs)."""
+    limit = np.sqrt(np.finfo(np.float64).max / max(1, min(costs.shape)))
     too_large = np.isfinite(costs) & (costs > limit)
     if too_large.any():
         i, j = np.argwhere(too_large)[0]

@@ -3,10 +3,10 @@
 
 def add_match_arguments(parser, matches: int) -> None:
     """The options every match benchmark takes: --home, --away, --matches, --cycles, --seed."""
-    from experiments.arguments import positive_int
+    from experiments.limits import ranged
 
     parser.add_argument("--home", default="chaser", help="home team (default: chaser)")
     parser.add_argument("--away", default="chaser", help="away team (default: chaser)")
-    parser.add_argument("--matches", type=positive_int, default=matches, help=f"matches to play (default: {matches})")
-    parser.add_argument("--cycles", type=positive_int, default=None, help="cycles per match (default: a full match)")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the first match; match i uses seed + i")
+    parser.add_argument("--matches", type=ranged("matches"), default=matches, help=f"matches to play (default: {matches})")
+    parser.add_argument("--cycles", type=ranged("cycles"), default=None, help="cycles per match (default: a full match)")
+    parser.add_argument("--seed", type=ranged("seed"), default=0, help="seed of the first match; match i uses seed + i")

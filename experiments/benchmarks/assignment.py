@@ -23,6 +23,7 @@ import argparse
 import time
 
 from experiments.errors import StudyArgumentError
+from experiments.limits import ranged, ranged_list
 
 #: Rows of the runtime table: (label, method, algorithm).
 RUNTIME_ROWS: tuple[tuple[str, str, str | None], ...] = (
@@ -73,33 +74,21 @@ DENSE_ROWS = {"msd", "msd2", "greedy", "mmdr (bitvector)"}
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--sizes", default="10,20,100,300,1000,10000",
+    parser.add_argument("--sizes", type=ranged_list("sizes"), default="10,20,100,300,1000,10000",
                         help="comma-separated robot counts n for the runtime table (default: %(default)s)")
-    parser.add_argument("--repeats", type=int, default=5,
+    parser.add_argument("--repeats", type=ranged("repeats"), default=5,
                         help="random instances timed per cell; the median is reported (default: %(default)s)")
-    parser.add_argument("--quality-instances", type=int, default=20000,
+    parser.add_argument("--quality-instances", type=ranged("quality-instances"), default=20000,
                         help="random 10x10 instances for the quality table, 0 to skip (default: %(default)s)")
-    parser.add_argument("--time-limit", type=float, default=20.0,
+    parser.add_argument("--time-limit", type=ranged("time-limit"), default=20.0,
                         help="skip a cell whose single call is predicted to take longer (seconds, default: %(default)s)")
     parser.add_argument("--methods", default="",
                         help="comma-separated row labels to run (default: all), e.g. 'mmd+msd2,mmdr (fast)'")
-    parser.add_argument("--seed", type=int, default=2013, help="seed of the random instances (default: %(default)s)")
+    parser.add_argument("--seed", type=ranged("seed"), default=2013, help="seed of the random instances (default: %(default)s)")
 
 
 BenchmarkArgumentError = StudyArgumentError
 """A value the benchmark cannot use: the one argument error of studies and benchmarks."""
-
-
-def _parse_sizes(text: str) -> list[int]:
-    """``"10,100"`` -> ``[10, 100]``; every size must be a positive integer."""
-    sizes = []
-    for part in (p.strip() for p in text.split(",")):
-        if not part:
-            continue
-        if not part.isdigit() or int(part) < 1:
-            raise BenchmarkArgumentError(f"--sizes: {part!r} is not a positive integer (e.g. --sizes 10,100,1000)")
-        sizes.append(int(part))
-    return sizes
 
 
 def _parse_methods(text: str) -> set[str]:
@@ -141,18 +130,6 @@ def _format_ms(seconds: float) -> str:
     return f"{ms:,.0f}"
 
 
-def _check_numbers(args) -> None:
-    """--repeats, --quality-instances and --time-limit within their ranges."""
-    import math
-
-    if args.repeats < 1:
-        raise BenchmarkArgumentError(f"--repeats: must be at least 1, got {args.repeats}")
-    if args.quality_instances < 0:
-        raise BenchmarkArgumentError(f"--quality-instances: must be 0 or more, got {args.quality_instances}")
-    if not (math.isfinite(args.time_limit) and args.time_limit > 0):
-        raise BenchmarkArgumentError(f"--time-limit: must be a positive number of seconds, got {args.time_limit:g}")
-
-
 def _runtime_table(args) -> None:
     import sys
 
@@ -161,7 +138,7 @@ def _runtime_table(args) -> None:
     from agents.assignment import assign
     from experiments.reporting import Table
 
-    sizes = _parse_sizes(args.sizes)
+    sizes = args.sizes
     wanted = _parse_methods(args.methods)
     rows = [row for row in RUNTIME_ROWS if not wanted or row[0] in wanted]
     table = Table("Median time of one assign() call in milliseconds "
@@ -247,12 +224,10 @@ def run(args: argparse.Namespace) -> int:
     from experiments.commands.errors import fail
 
     try:
-        _parse_sizes(args.sizes)
         _parse_methods(args.methods)
-        _check_numbers(args)
     except BenchmarkArgumentError as exc:
         return fail(str(exc))
-    if args.sizes.strip():
+    if args.sizes:
         _runtime_table(args)
     if args.quality_instances > 0:
         _quality_table(args)

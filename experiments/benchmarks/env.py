@@ -25,15 +25,15 @@ import time
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from experiments.arguments import positive_int
+    from experiments.limits import ranged
 
-    parser.add_argument("--cycles", type=positive_int, default=3000, help="cycles per run (default: %(default)s)")
-    parser.add_argument("--repeats", type=positive_int, default=3, help="runs of each (default: %(default)s)")
+    parser.add_argument("--cycles", type=ranged("cycles"), default=3000, help="cycles per run (default: %(default)s)")
+    parser.add_argument("--repeats", type=ranged("repeats"), default=3, help="runs of each (default: %(default)s)")
     parser.add_argument("--action-mode", choices=("low_level", "high_level"), default="low_level",
                         help="also time the high-level actions (default: %(default)s)")
-    parser.add_argument("--envs", type=positive_int, default=4,
+    parser.add_argument("--envs", type=ranged("envs"), default=4,
                         help="matches in the vector environment (default: %(default)s)")
-    parser.add_argument("--processes", type=positive_int, default=2,
+    parser.add_argument("--processes", type=ranged("processes"), default=2,
                         help="worker processes of the subprocess vector environment (default: %(default)s)")
 
 

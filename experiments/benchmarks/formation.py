@@ -17,13 +17,13 @@ import argparse
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from experiments.arguments import positive_int
+    from experiments.limits import ranged
 
-    parser.add_argument("--queries", type=positive_int, default=100_000, help="balls per vectorised call (default 100000)")
-    parser.add_argument("--single", type=positive_int, default=20_000, help="single calls timed per case (default 20000)")
-    parser.add_argument("--batch", type=positive_int, default=200, help="calls per timed batch (default 200)")
-    parser.add_argument("--repeats", type=positive_int, default=5, help="vectorised calls timed; the best is reported")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the random ball positions")
+    parser.add_argument("--queries", type=ranged("queries"), default=100_000, help="balls per vectorised call (default 100000)")
+    parser.add_argument("--single", type=ranged("single"), default=20_000, help="single calls timed per case (default 20000)")
+    parser.add_argument("--batch", type=ranged("batch"), default=200, help="calls per timed batch (default 200)")
+    parser.add_argument("--repeats", type=ranged("repeats"), default=5, help="vectorised calls timed; the best is reported")
+    parser.add_argument("--seed", type=ranged("seed"), default=0, help="seed of the random ball positions")
     parser.add_argument(
         "--set", dest="sets", action="append", metavar="NAME", help="only this built-in set (repeatable; default: all)"
     )

@@ -89,29 +89,12 @@ class Trial:
     total: float
 
 
-def _numbers(text: str, kind: type, name: str) -> list:
-    try:
-        values = [kind(part) for part in text.split(",") if part.strip()]
-    except ValueError:
-        raise StudyArgumentError(f"--{name} must be comma-separated {kind.__name__}s, got {text!r}") from None
-    return values
-
-
 def rows_of(args: argparse.Namespace) -> list[Row]:
     """The table's rows from the command's options (see the module docstring); ValueError
     naming the option that is wrong."""
-    sizes = _numbers(args.sizes, int, "sizes")
-    robots = _numbers(args.robots, int, "robots")
-    densities = _numbers(args.densities, float, "densities")
-    cubes = _numbers(args.sizes_3d, int, "sizes-3d")
+    sizes, robots, densities, cubes = args.sizes, args.robots, args.densities, args.sizes_3d
     if not sizes or not robots or not densities:
         raise StudyArgumentError("--sizes, --robots and --densities need at least one value each")
-    if min(sizes + cubes, default=1) < 2 or min(robots) < 1:
-        raise StudyArgumentError("sizes must be at least 2 and robot counts at least 1")
-    if not all(0.0 <= d < 1.0 for d in densities):
-        raise StudyArgumentError(f"--densities must lie in [0, 1), got {args.densities!r}")
-    if args.repeats < 1:
-        raise StudyArgumentError(f"--repeats must be at least 1, got {args.repeats}")
     rows = [Row((side, side), densities[0], count) for count in robots for side in sizes]
     rows += [Row((min(sizes),) * 2, density, robots[0]) for density in densities[1:]]
     rows += [Row((side,) * 3, densities[0], robots[0]) for side in cubes]

@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 
 from experiments.benchmarks import add_match_arguments
+from experiments.limits import ranged
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -20,7 +21,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--observation", choices=("full", "partial"), default="full",
                         help="full (default) or partial observation: each player's own view and messages")
     parser.add_argument("--profile", action="store_true", help="also print a cProfile top list of one match")
-    parser.add_argument("--top", type=int, default=25, help="entries in the profile top list (default: 25)")
+    parser.add_argument("--top", type=ranged("top"), default=25, help="entries in the profile top list (default: 25)")
 
 
 def run(args: argparse.Namespace) -> int:

@@ -16,12 +16,12 @@ from pathlib import Path
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from experiments.arguments import positive_int
+    from experiments.limits import ranged
 
     parser.add_argument("--home", default="mmdr", help="home team (default: %(default)s)")
     parser.add_argument("--away", default="mmd+msd2", help="away team (default: %(default)s)")
-    parser.add_argument("--matches", type=positive_int, default=3, help="seeds played (default: %(default)s)")
-    parser.add_argument("--cycles", type=positive_int, default=None, help="cycles per match (default: a full match)")
+    parser.add_argument("--matches", type=ranged("matches"), default=3, help="seeds played (default: %(default)s)")
+    parser.add_argument("--cycles", type=ranged("cycles"), default=None, help="cycles per match (default: a full match)")
 
 
 def run(args: argparse.Namespace) -> int:

@@ -9,13 +9,13 @@ from __future__ import annotations
 
 import argparse
 
-from experiments.arguments import positive_int
+from experiments.limits import ranged
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--players", type=positive_int, default=10, help="outfield players (default: 10)")
-    parser.add_argument("--situations", type=positive_int, default=20, help="random situations (default: 20)")
-    parser.add_argument("--number", type=positive_int, default=500, help="calls per timing run (default: 500)")
+    parser.add_argument("--players", type=ranged("players"), default=10, help="outfield players (default: 10)")
+    parser.add_argument("--situations", type=ranged("situations"), default=20, help="random situations (default: 20)")
+    parser.add_argument("--number", type=ranged("number"), default=500, help="calls per timing run (default: 500)")
 
 
 def run(args: argparse.Namespace) -> int:

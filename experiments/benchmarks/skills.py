@@ -9,12 +9,12 @@ from __future__ import annotations
 
 import argparse
 
-from experiments.arguments import positive_int
+from experiments.limits import ranged
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--views", type=positive_int, default=20, help="random situations (default: 20)")
-    parser.add_argument("--number", type=positive_int, default=200, help="calls per timing run (default: 200)")
+    parser.add_argument("--views", type=ranged("views"), default=20, help="random situations (default: 20)")
+    parser.add_argument("--number", type=ranged("number"), default=200, help="calls per timing run (default: 200)")
 
 
 def run(args: argparse.Namespace) -> int:

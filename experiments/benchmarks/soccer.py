@@ -33,15 +33,15 @@ Figures = dict[str, float | None]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from experiments.arguments import positive_int
+    from experiments.limits import ranged
 
     parser.add_argument("--home", default=None, help="home team (with --away: play this one pairing)")
     parser.add_argument("--away", default=None, help="away team (with --home)")
-    parser.add_argument("--matches", type=positive_int, default=3,
+    parser.add_argument("--matches", type=ranged("matches"), default=3,
                         help="seeds per pairing and side (default: 3; 48 matches over the default pairings)")
-    parser.add_argument("--cycles", type=positive_int, default=None, help="cycles per match (default: a full match)")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the first match; seed i is seed + i")
-    parser.add_argument("--workers", type=positive_int, default=1, help="matches played at once (default: 1)")
+    parser.add_argument("--cycles", type=ranged("cycles"), default=None, help="cycles per match (default: a full match)")
+    parser.add_argument("--seed", type=ranged("seed"), default=0, help="seed of the first match; seed i is seed + i")
+    parser.add_argument("--workers", type=ranged("workers"), default=1, help="matches played at once (default: 1)")
     parser.add_argument("--observation", choices=("full", "partial"), default="full",
                         help="full (default) or partial observation (each player decides from its own view)")
     parser.add_argument("--rcg", nargs="+", metavar="FILE", default=None,

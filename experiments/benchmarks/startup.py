@@ -28,14 +28,14 @@ programs are in its file cache (warm)."""
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from experiments.arguments import positive_int
+    from experiments.limits import ranged
 
     parser.add_argument("--home", default="mmd+msd2", help="home team of the match played (default: mmd+msd2)")
     parser.add_argument("--away", default="press-433", help="away team of the match played (default: press-433)")
-    parser.add_argument("--cycles", type=positive_int, default=None,
+    parser.add_argument("--cycles", type=ranged("cycles"), default=None,
                         help="cycles of the match played (default: a full match of 6000)")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the match played (default: 0)")
-    parser.add_argument("--repeats", type=positive_int, default=3,
+    parser.add_argument("--seed", type=ranged("seed"), default=0, help="seed of the match played (default: 0)")
+    parser.add_argument("--repeats", type=ranged("repeats"), default=3,
                         help="cold and warm runs of play, and runs of each --help, to take the median of (default: 3)")
     parser.add_argument("--help-only", action="store_true",
                         help="time only the --help of every command (no match played, nothing compiled)")

@@ -29,10 +29,10 @@ from __future__ import annotations
 
 import argparse
 
-from experiments.arguments import positive_float, positive_int
+from experiments.limits import ranged
 from experiments.configuration import match_config
 
-__all__ = ["match_config", "positive_int", "register", "run"]
+__all__ = ["match_config", "register", "run"]
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -42,8 +42,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                     "paths) and print the score and per-team statistics.")
     parser.add_argument("home", nargs="?", default="mmd+msd2", help="home team (default: mmd+msd2)")
     parser.add_argument("away", nargs="?", default="press-433", help="away team (default: press-433)")
-    parser.add_argument("--seed", type=int, default=0, help="match seed (default: 0)")
-    parser.add_argument("--cycles", type=positive_int, default=None,
+    parser.add_argument("--seed", type=ranged("seed"), default=0, help="match seed (default: 0)")
+    parser.add_argument("--cycles", type=ranged("cycles"), default=None,
                         help="stop after this many cycles (default: the full two halves of 3000); more than "
                              "6000 lengthens both halves to half of it each")
     parser.add_argument("--observation", choices=("full", "partial"), default="full",
@@ -60,7 +60,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                              "soccerwindow2)")
     from experiments.runner.run import DEFAULT_MATCH_TIMEOUT
 
-    parser.add_argument("--match-timeout", type=positive_float, default=DEFAULT_MATCH_TIMEOUT, metavar="SECONDS",
+    parser.add_argument("--match-timeout", type=ranged("match-timeout"), default=DEFAULT_MATCH_TIMEOUT, metavar="SECONDS",
                         help=f"stop the match with an error if it takes longer, e.g. a team that never returns "
                              f"from act() (default: {DEFAULT_MATCH_TIMEOUT:g}, as for tournaments)")
     parser.set_defaults(func=run)

@@ -10,7 +10,7 @@ import warnings
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from experiments.arguments import positive_float, positive_int, seed_value
+from experiments.limits import ranged
 from experiments.commands.errors import fail
 from experiments.errors import ExperimentError
 
@@ -28,14 +28,14 @@ def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None
     --match-timeout, --retry-errors, --record-dir, --rcg-dir, --record-every, --no-progress, --same-code."""
     from experiments.runner.run import BACKENDS, DEFAULT_MATCH_TIMEOUT
 
-    parser.add_argument("--seed", type=seed_value, default=0, help="first seed; a pairing plays seeds seed, seed+1, ... (default: 0)")
-    parser.add_argument("--cycles", type=positive_int, default=None,
+    parser.add_argument("--seed", type=ranged("seed"), default=0, help="first seed; a pairing plays seeds seed, seed+1, ... (default: 0)")
+    parser.add_argument("--cycles", type=ranged("cycles"), default=None,
                         help="cycles per match (default: a regulation match of 6000); part of the configuration hash")
     parser.add_argument("--observation", choices=("full", "partial"), default="full",
                         help="what the teams perceive: the exact state (full, default) or each player's own noisy "
                              "view and the say/hear channel (partial; teams must support it); part of the "
                              "configuration hash")
-    parser.add_argument("--workers", type=positive_int, default=os.cpu_count() or 1,
+    parser.add_argument("--workers", type=ranged("workers"), default=os.cpu_count() or 1,
                         help="worker processes (default: every core); with --backend ray: at most this many CPUs "
                              "of a local Ray instance")
     parser.add_argument("--backend", choices=BACKENDS, default="local",
@@ -51,7 +51,7 @@ def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None
     parser.add_argument("--tables", default=None, metavar="DIR",
                         help="where the CSV/Markdown tables and the PNG go (default: the --out name without its "
                              "extension, plus '-tables')")
-    parser.add_argument("--match-timeout", type=positive_float, default=DEFAULT_MATCH_TIMEOUT, metavar="SECONDS",
+    parser.add_argument("--match-timeout", type=ranged("match-timeout"), default=DEFAULT_MATCH_TIMEOUT, metavar="SECONDS",
                         help=f"a match taking longer is stopped and forfeited (default: {DEFAULT_MATCH_TIMEOUT:g})")
     parser.add_argument("--retry-errors", action="store_true", help="play stored forfeits again")
     parser.add_argument("--record-dir", default=None, metavar="DIR",
@@ -60,7 +60,7 @@ def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None
     parser.add_argument("--rcg-dir", default=None, metavar="DIR",
                         help="write rcssserver game logs (.rcg) of a sample of the matches played into DIR "
                              "(replay one with rcssmonitor or soccerwindow2)")
-    parser.add_argument("--record-every", type=positive_int, default=10, metavar="K",
+    parser.add_argument("--record-every", type=ranged("record-every"), default=10, metavar="K",
                         help="with --record-dir or --rcg-dir: record every K-th match of the run (default: 10)")
     parser.add_argument("--no-progress", action="store_true", help="no progress bar or progress lines")
     parser.add_argument("--same-code", action="store_true",

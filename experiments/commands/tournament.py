@@ -20,7 +20,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from experiments.commands import add_json_option, doc_summary, table_command
-from experiments.arguments import positive_int
+from experiments.limits import ranged
 
 KIND = "tournament"
 DEFAULT_GAMES = 20
@@ -39,7 +39,7 @@ def _add_arguments(parser: argparse.ArgumentParser) -> None:
     from experiments.commands.run_options import add_run_arguments, add_team_option
 
     add_team_option(parser, "--teams", DEFAULT_TEAMS, "the teams")
-    parser.add_argument("--games", type=positive_int, default=DEFAULT_GAMES,
+    parser.add_argument("--games", type=ranged("games"), default=DEFAULT_GAMES,
                         help="matches per pairing, rounded up to even: sides swapped on paired seeds "
                              f"(default: {DEFAULT_GAMES}, a few minutes on two cores)")
     add_run_arguments(parser, "results.sqlite")

@@ -133,6 +133,9 @@ class LocalPool:
         state reaches a match); ``kill_grace``: seconds past ``timeout`` before a worker that
         does not answer is killed."""
         self.size = workers
+        self.most_at_once = 0
+        """The most worker processes this pool has run at once: ``size`` at most, fewer when
+        there were fewer matches to play (the run line reports it)."""
         self._figures = figures
         self._report = report
         self._args = (config_hash, version, timeout)
@@ -167,6 +170,7 @@ class LocalPool:
         config_hash, version, _ = self._args
         try:
             self._workers = [self._start_worker() for _ in range(min(self.size, len(pending)))]
+            self.most_at_once = max(self.most_at_once, len(self._workers))
             while pending or any(w.spec is not None for w in self._workers):
                 for worker in self._workers:
                     if worker.spec is None and pending:

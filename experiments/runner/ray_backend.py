@@ -85,6 +85,8 @@ class RayPool:
         nodes = self._alive()
         cpus = sum(self._slots(info) for info in nodes.values())
         self.size = max(cpus, 1)
+        self.most_at_once = 0
+        """The most matches this pool has had in flight at once (the run line reports it)."""
         shipped = ("driver's code shipped" if ship and self._started_here else
                    "code not shipped: every node must have the project installed")
         self._say(f"ray: {where}: {len(nodes)} node(s), {cpus} CPU(s) used; {shipped}")
@@ -274,6 +276,7 @@ class RayPool:
                 node.busy += 1
                 task = MatchTask(spec, node, time.monotonic(), attempt, failed_on, new_token())
                 self._in_flight[node.submit(task.token, spec, *self._args, figures=self._figures)] = task
+                self.most_at_once = max(self.most_at_once, len(self._in_flight))
 
     def _finished(self, ref, task: MatchTask, version: str) -> Iterator[MatchRecord]:
         node = task.node

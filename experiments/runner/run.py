@@ -221,7 +221,6 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
                 if pool is None:
                     pool = _pool(backend, workers, digest, version, match_timeout, address, figures, ship_code)
                     running.callback(pool.close)
-                    used = pool.size
                     pool.warm_up(todo)  # compile the kernels once, before any worker, match clock or ETA starts
                     bar = running.enter_context(RunProgress(len(todo), kind, enabled=progress))
                     shared.on_stored = lambda _spec: bar.advance()
@@ -232,6 +231,7 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
                     played += 1
                     if policy.exceeded(tally.finished, tally.unblamed):
                         raise RunStopped(_stop_message(tally, policy, len(todo), store.path))
+            used = pool.most_at_once if pool is not None else 0
         records = store.records(keys)
     return RunSummary(str(path), len(specs), len(specs) - len(todo), played,
                       sum(r.error is not None for r in records), time.monotonic() - start, used, records,

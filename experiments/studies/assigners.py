@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from experiments.arguments import positive_int
+from experiments.limits import ranged
 
 if TYPE_CHECKING:
     from experiments.reporting import Table
@@ -156,10 +156,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
     parser.description = doc_summary(__doc__)
     parser.add_argument("--part", choices=("all", *PARTS), default="all")
-    parser.add_argument("--games", type=positive_int, default=100,
+    parser.add_argument("--games", type=ranged("games"), default=100,
                         help="matches per pairing, sides swapped on paired seeds (default: 100)")
     parser.add_argument("--league", default=",".join(DEFAULT_LEAGUE), help="teams of the league part")
-    parser.add_argument("--league-games", type=positive_int, default=8,
+    parser.add_argument("--league-games", type=ranged("league-games"), default=8,
                         help="matches per pairing in the league part (default: 8)")
     parser.add_argument("--assigners", default=",".join(DEFAULT_CLAIMS), help="teams of the claims part")
     parser.add_argument("--opponent", default="press-433", help="opponent of the claims part")

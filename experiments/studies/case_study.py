@@ -56,7 +56,7 @@ def behaviour_columns(params: dict) -> tuple:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from experiments.arguments import positive_int
+    from experiments.limits import ranged
     from experiments.commands.run_options import add_run_arguments, add_team_option
 
     parser.description = doc_summary(__doc__)
@@ -64,7 +64,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_team_option(parser, "--opponents", DEFAULT_OPPONENTS, "their opponents")
     parser.add_argument("--baseline", default="mmd+msd2",
                         help="the variant the others are compared with, match by match (default: mmd+msd2)")
-    parser.add_argument("--games", type=positive_int, default=1000,
+    parser.add_argument("--games", type=ranged("games"), default=1000,
                         help="matches per pairing, rounded up to even: sides swapped on paired seeds (default: 1000)")
     add_run_arguments(parser, "case-study.sqlite")
 

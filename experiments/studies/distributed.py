@@ -33,6 +33,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from experiments.errors import StudyArgumentError
+from experiments.limits import ranged, ranged_list
 from experiments.results.files import make_output_directory, output_path, write_file
 
 #: Side of the squares of the worst-case construction, in units of r_comm (> 2: isolated targets).
@@ -60,58 +61,31 @@ class Run:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--grid-sizes", default="50,100,250,500,1000,2000,4000,8000,16000",
+    parser.add_argument("--grid-sizes", type=ranged_list("grid-sizes"), default="50,100,250,500,1000,2000,4000,8000,16000",
                         help="agent counts n of the grid-dense series (default: %(default)s; '' to skip)")
-    parser.add_argument("--grid-trials", type=int, default=30,
+    parser.add_argument("--grid-trials", type=ranged("grid-trials"), default=30,
                         help="random instances per size in the grid-dense series (default: %(default)s, as the paper)")
-    parser.add_argument("--etsp-sizes", default="25,50,100,250,500,1000",
+    parser.add_argument("--etsp-sizes", type=ranged_list("etsp-sizes"), default="25,50,100,250,500,1000",
                         help="agent counts n of the etsp-uniform series (default: %(default)s; '' to skip)")
-    parser.add_argument("--worst-sizes", default="16,36,64,144,256,576",
+    parser.add_argument("--worst-sizes", type=ranged_list("worst-sizes"), default="16,36,64,144,256,576",
                         help="agent counts n of the etsp-worst series (default: %(default)s; '' to skip)")
-    parser.add_argument("--trials", type=int, default=10,
+    parser.add_argument("--trials", type=ranged("trials"), default=10,
                         help="random instances per point of the etsp-uniform and sweep series (default: %(default)s)")
-    parser.add_argument("--sweep-n", type=int, default=200, help="agent count of the sweep (default: %(default)s)")
-    parser.add_argument("--sweep-areas", default="0.03,0.1,0.3,1,3,10",
+    parser.add_argument("--sweep-n", type=ranged("sweep-n"), default=200, help="agent count of the sweep (default: %(default)s)")
+    parser.add_argument("--sweep-areas", type=ranged_list("sweep-areas"), default="0.03,0.1,0.3,1,3,10",
                         help="area per agent |E|/n of the sweep, in units of r_comm^2 (default: %(default)s; '' to skip)")
-    parser.add_argument("--r-comm", type=float, default=10.0, help="communication range (default: %(default)s)")
-    parser.add_argument("--round-fraction", type=float, default=0.1,
+    parser.add_argument("--r-comm", type=ranged("r-comm"), default=10.0, help="communication range (default: %(default)s)")
+    parser.add_argument("--round-fraction", type=ranged("round-fraction"), default=0.1,
                         help="time between rounds as a fraction of r_comm / v_max (default: %(default)s)")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the random instances (default: %(default)s)")
+    parser.add_argument("--seed", type=ranged("seed"), default=0, help="seed of the random instances (default: %(default)s)")
     parser.add_argument("--out", type=output_path, default=None,
                         help="directory for the CSV files and the PNG figures (created if missing)")
 
 
-def _parse_numbers(text: str, option: str, kind: type, minimum: float) -> list:
-    """``"1,2"`` -> ``[1, 2]`` of ``kind``; each value must be at least ``minimum``."""
-    values = []
-    for part in (p.strip() for p in text.split(",")):
-        if not part:
-            continue
-        try:
-            value = kind(part)
-        except ValueError:
-            raise StudyArgumentError(f"{option}: {part!r} is not a {'whole ' if kind is int else ''}number") from None
-        if not math.isfinite(value) or value < minimum:
-            raise StudyArgumentError(f"{option}: {part!r} must be at least {minimum:g}")
-        values.append(value)
-    return values
-
-
 def _check_args(args: argparse.Namespace) -> dict:
-    plan = {
-        "grid": _parse_numbers(args.grid_sizes, "--grid-sizes", int, 2),
-        "etsp": _parse_numbers(args.etsp_sizes, "--etsp-sizes", int, 2),
-        "worst": _parse_numbers(args.worst_sizes, "--worst-sizes", int, 2),
-        "areas": _parse_numbers(args.sweep_areas, "--sweep-areas", float, 1e-6),
-    }
-    for option, value in (("--grid-trials", args.grid_trials), ("--trials", args.trials), ("--sweep-n", args.sweep_n)):
-        if value < 1:
-            raise StudyArgumentError(f"{option}: {value} must be at least 1")
-    if not (math.isfinite(args.r_comm) and args.r_comm > 0):
-        raise StudyArgumentError(f"--r-comm: {args.r_comm} must be a positive number")
-    if not (math.isfinite(args.round_fraction) and 0 < args.round_fraction <= 1):
-        raise StudyArgumentError(f"--round-fraction: {args.round_fraction} must be in (0, 1]")
-    return plan
+    """The series to run: the lists parsed by their options' types (each value within its
+    range in :data:`experiments.limits.OPTION_RANGES`)."""
+    return {"grid": args.grid_sizes, "etsp": args.etsp_sizes, "worst": args.worst_sizes, "areas": args.sweep_areas}
 
 
 def _empty_cells(targets: np.ndarray, side: float, r_comm: float) -> int:

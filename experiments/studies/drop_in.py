@@ -39,13 +39,13 @@ class DropInGame:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from experiments.arguments import positive_int
+    from experiments.limits import ranged
     from experiments.commands.run_options import add_run_arguments, add_team_option
 
     parser.description = doc_summary(__doc__)
     add_team_option(parser, "--candidates", DEFAULT_CANDIDATES, "the players compared, the first against each other one")
     add_team_option(parser, "--pool", DEFAULT_POOL, "the teams the other 21 players are drawn from")
-    parser.add_argument("--games", type=positive_int, default=200,
+    parser.add_argument("--games", type=ranged("games"), default=200,
                         help="drop-in games; each is played once per candidate (default: 200)")
     add_run_arguments(parser, "drop-in.sqlite")
 

@@ -30,6 +30,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from experiments.errors import StudyArgumentError
+from experiments.limits import ranged, ranged_list
 from experiments.results.files import make_output_directory, output_path, write_file
 
 if TYPE_CHECKING:  # the assignment code compiles kernels: imported when the study runs, not for --help
@@ -52,47 +53,35 @@ class Trial:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--n", type=int, default=300, help="deployed robots (default: %(default)s, as the paper)")
-    parser.add_argument("--degree", default="10",
+    parser.add_argument("--n", type=ranged("n"), default=300, help="deployed robots (default: %(default)s, as the paper)")
+    parser.add_argument("--degree", type=degree_value, default="10",
                         help="nearest neighbours per robot, or 'all' for the complete graph (default: %(default)s)")
-    parser.add_argument("--lambdas", default="0,0.1,0.2,0.3,0.4,0.5,0.6,0.7,0.8,0.9,1",
+    parser.add_argument("--lambdas", type=ranged_list("lambdas"), default="0,0.1,0.2,0.3,0.4,0.5,0.6,0.7,0.8,0.9,1",
                         help="diagonal scalings in [0, 1] (default: %(default)s)")
-    parser.add_argument("--trials", type=int, default=10, help="random deployments (default: %(default)s, as the paper)")
-    parser.add_argument("--side", type=float, default=100.0, help="side of the square, metres (default: %(default)s)")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the deployments (default: %(default)s)")
+    parser.add_argument("--trials", type=ranged("trials"), default=10, help="random deployments (default: %(default)s, as the paper)")
+    parser.add_argument("--side", type=ranged("side"), default=100.0, help="side of the square, metres (default: %(default)s)")
+    parser.add_argument("--seed", type=ranged("seed"), default=0, help="seed of the deployments (default: %(default)s)")
     parser.add_argument("--out", type=output_path, default=None,
                         help="directory for the CSV files and the PNG figure (created if missing)")
 
 
 def _check_args(args: argparse.Namespace) -> tuple[list[float], int | None]:
-    lambdas = []
-    for part in (p.strip() for p in args.lambdas.split(",")):
-        if not part:
-            continue
-        try:
-            value = float(part)
-        except ValueError:
-            raise StudyArgumentError(f"--lambdas: {part!r} is not a number") from None
-        if not (math.isfinite(value) and 0.0 <= value <= 1.0):
-            raise StudyArgumentError(f"--lambdas: {part!r} must be in [0, 1]")
-        lambdas.append(value)
-    if not lambdas:
+    """The distinct diagonal scalings in increasing order and the degree (None: the complete
+    graph); each number was range-checked by its option's type."""
+    if not args.lambdas:
         raise StudyArgumentError("--lambdas: give at least one value")
-    if args.degree == "all":
-        degree = None
-    else:
-        try:
-            degree = int(args.degree)
-        except ValueError:
-            raise StudyArgumentError(f"--degree: {args.degree!r} is not a whole number or 'all'") from None
-        if degree < 1:
-            raise StudyArgumentError(f"--degree: {degree} must be at least 1")
-    for option, value, minimum in (("--n", args.n, 2), ("--trials", args.trials, 1)):
-        if value < minimum:
-            raise StudyArgumentError(f"{option}: {value} must be at least {minimum}")
-    if not (math.isfinite(args.side) and args.side > 0):
-        raise StudyArgumentError(f"--side: {args.side} must be a positive number")
-    return sorted(set(lambdas)), degree
+    return sorted(set(args.lambdas)), args.degree
+
+
+def degree_value(text: str) -> int | None:
+    """The ``--degree`` type: ``all`` (None: the complete graph) or a count of neighbours
+    within its range."""
+    if text.strip() == "all":
+        return None
+    try:
+        return ranged("degree")(text)
+    except argparse.ArgumentTypeError as exc:
+        raise argparse.ArgumentTypeError(f"{exc}; or 'all' for the complete graph") from None
 
 
 def corners(side: float) -> tuple[np.ndarray, np.ndarray]:

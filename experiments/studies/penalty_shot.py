@@ -58,19 +58,19 @@ PAIRS = (("one", "uncoordinated"), ("one", "coordinated"), ("uncoordinated", "co
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from experiments.arguments import positive_int
+    from experiments.limits import ranged
     from experiments.commands.run_options import add_run_arguments
 
     parser.description = doc_summary(__doc__)
-    parser.add_argument("--trials", type=positive_int, default=60,
+    parser.add_argument("--trials", type=ranged("trials"), default=60,
                         help="markers visited per condition and setting (default: %(default)s)")
-    parser.add_argument("--robots", type=positive_int, default=3,
+    parser.add_argument("--robots", type=ranged("robots"), default=3,
                         help="attackers in the uncoordinated and coordinated conditions (default: %(default)s)")
     parser.add_argument("--team", default="bidding",
                         help="the attackers' team (a registered name; default: %(default)s, potential-field bidding)")
     parser.add_argument("--keeper", default="static",
                         help="the goalkeeper's team in the second setting, played with one player (default: %(default)s)")
-    parser.add_argument("--limit", type=positive_int, default=1200,
+    parser.add_argument("--limit", type=ranged("limit"), default=1200,
                         help="cycles a trial may last before it counts as a timeout (default: %(default)s, 2 minutes)")
     add_run_arguments(parser, "penalty-shot.sqlite")
 
@@ -251,10 +251,7 @@ def _params(args: argparse.Namespace) -> dict:
     """The study's parameters; a RunInputError naming the option that cannot be used."""
     from experiments.commands.run_options import RunInputError
     from soccer_sim import TeamNotFoundError, resolve_team
-    from soccer_sim.scenarios import MAX_PLAYERS
 
-    if args.robots > MAX_PLAYERS:
-        raise RunInputError(f"--robots must be at most {MAX_PLAYERS} (players a side), got {args.robots}")
     for option, name in (("--team", args.team), ("--keeper", args.keeper)):
         try:
             resolve_team(name)

@@ -29,6 +29,7 @@ Unknown keys and wrong types are a :class:`ScenarioError` naming the key.
 from __future__ import annotations
 
 import json
+import os
 import sys
 from dataclasses import fields
 from pathlib import Path
@@ -91,7 +92,12 @@ or a runaway file is refused instead of filling memory."""
 
 
 def load_scenario(path: str | Path) -> Scenario:
-    """Read a scenario from a ``.json`` or ``.toml`` file; ScenarioError for a bad file."""
+    """Read a scenario from a ``.json`` or ``.toml`` file; ScenarioError for a bad file, one that
+    sets no field at all (an empty file would silently play the regular match) or a ``path``
+    that is not a path."""
+    if not isinstance(path, (str, os.PathLike)):
+        raise ScenarioError("Scenario", f"load_scenario needs the path of a .json or .toml file, got "
+                                        f"{type(path).__name__}")
     path = Path(path)
     suffix = path.suffix.lower()
     if suffix not in (".json", ".toml"):
@@ -111,6 +117,9 @@ def load_scenario(path: str | Path) -> Scenario:
         raise ScenarioError("Scenario", f"{path} is not valid {kind}: {exc}") from None
     except RecursionError:
         raise ScenarioError("Scenario", f"{path} is not a usable {kind} scenario: nested too deeply") from None
+    if data == {}:
+        raise ScenarioError("Scenario", f"{path} sets no scenario field: an empty scenario would play the regular "
+                                        "match; give at least one field (name, home, away, ball, ...)")
     return scenario_from_dict(data, str(path))
 
 

@@ -42,14 +42,23 @@ def test_same_seed_same_instances(tmp_path) -> None:
 
 
 @pytest.mark.parametrize("bad, message", [
-    (["--sizes", "ten"], "--sizes must be comma-separated ints"),
-    (["--densities", "0.2,1.5"], "--densities must lie in [0, 1)"),
-    (["--repeats", "0"], "--repeats must be at least 1"),
-    (["--robots", "0"], "robot counts at least 1"),
+    (["--sizes", "ten"], "argument --sizes: each value must be an integer from 2 to 10000 (cells a side), got ten"),
+    (["--densities", "0.2,1.5"], "argument --densities: each value must be a number in [0, 0.99] (obstacle share)"),
+    (["--repeats", "0"], "argument --repeats: must be a positive integer up to 1000 (repetitions), got 0"),
+    (["--robots", "0"], "argument --robots: each value must be a positive integer up to 100000 (robots), got 0"),
+    (["--sizes-3d", "100000"], "argument --sizes-3d: each value must be an integer from 2 to 500"),
+    (["--seed", "-1"], "argument --seed: must be a non-negative integer"),
 ])
 def test_bad_options_are_named(bad, message, capsys) -> None:
-    assert main(["bench", "lazy-assignment", *bad]) == 2
+    with pytest.raises(SystemExit) as usage:
+        main(["bench", "lazy-assignment", *bad])
+    assert usage.value.code == 2
     assert message in capsys.readouterr().err
+
+
+def test_an_empty_list_is_named(capsys) -> None:
+    assert main(["bench", "lazy-assignment", "--robots", ""]) == 2
+    assert "--sizes, --robots and --densities need at least one value each" in capsys.readouterr().err
 
 
 def test_unequal_totals_stop_the_benchmark(monkeypatch) -> None:

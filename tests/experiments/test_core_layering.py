@@ -10,7 +10,7 @@ from pathlib import Path
 import experiments
 
 PACKAGE = Path(experiments.__file__).parent
-CORE = ["runner", "results", "errors.py", "configuration.py", "arguments.py", "stats.py"]
+CORE = ["runner", "results", "errors.py", "configuration.py", "limits.py", "stats.py"]
 OUTER = ("experiments.commands", "experiments.studies", "experiments.benchmarks", "experiments.cli")
 
 

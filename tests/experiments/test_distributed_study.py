@@ -48,16 +48,24 @@ def test_study_is_reproducible(tmp_path) -> None:
 
 @pytest.mark.parametrize(
     "option, value, message",
-    [("--grid-sizes", "10,x", "--grid-sizes: 'x' is not a whole number"),
-     ("--etsp-sizes", "1", "--etsp-sizes: '1' must be at least 2"),
-     ("--sweep-areas", "0", "--sweep-areas: '0' must be at least"),
-     ("--trials", "0", "--trials: 0 must be at least 1"),
-     ("--r-comm", "-1", "--r-comm: -1.0 must be a positive number"),
-     ("--round-fraction", "2", "--round-fraction: 2.0 must be in (0, 1]")],
+    [("--grid-sizes", "10,x", "argument --grid-sizes: each value must be an integer from 2 to 100000 (agents), got x"),
+     ("--etsp-sizes", "1", "argument --etsp-sizes: each value must be an integer from 2 to 100000 (agents), got 1"),
+     ("--worst-sizes", "99999999", "argument --worst-sizes: each value must be an integer from 2 to 100000"),
+     ("--sweep-areas", "0", "argument --sweep-areas: each value must be a number in [1e-06, 1e+06]"),
+     ("--trials", "0", "argument --trials: must be a positive integer up to 100000 (trials), got 0"),
+     ("--grid-trials", "1e9", "argument --grid-trials: must be a positive integer up to 100000"),
+     ("--sweep-n", "-3", "argument --sweep-n: must be a positive integer up to 100000"),
+     ("--r-comm", "-1", "argument --r-comm: must be a positive number up to 1e+06 (metres), got -1"),
+     ("--r-comm", "1e308", "argument --r-comm: must be a positive number up to 1e+06 (metres), got 1e308"),
+     ("--round-fraction", "2", "argument --round-fraction: must be a positive number up to 1"),
+     ("--seed", "-1", "argument --seed: must be a non-negative integer up to 9223372036854775807 (seed), got -1")],
 )
 def test_study_refuses_bad_options(option, value, message, capsys) -> None:
-    assert main(["experiment", "distributed", option, value]) == 2
-    assert message in capsys.readouterr().err
+    with pytest.raises(SystemExit) as usage:
+        main(["experiment", "distributed", option, value])
+    assert usage.value.code == 2
+    err = capsys.readouterr().err
+    assert message in err and len(err.splitlines()) == 1
 
 
 def test_worst_case_construction_makes_the_searcher_walk_the_ring() -> None:

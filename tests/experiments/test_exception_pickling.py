@@ -22,6 +22,8 @@ EXAMPLES: dict[str, tuple] = {
     "agents.assignment.errors.AssignmentError": ("NaN in robots",),
     "agents.skills.model.SkillInputError": ("horizon must be positive",),
     "experiments.errors.StudyArgumentError": ("lambdas: bad",),
+    "experiments.limits.OutOfRange": ("--etsp-sizes: each value must be an integer from 2 to 100000 (agents), got 1",),
+    "soccer_sim.recorder.RecorderError": ("recorders must be a list or other iterable of recorders, got int",),
     "experiments.errors.ExperimentError": ("a run cannot start",),
     "agents.errors.AgentsError": ("an assigner refuses its input",),
     "agents.roles.errors.RoleError": ("unknown role assigner 'mmdx'",),

@@ -133,9 +133,10 @@ def test_bad_options_are_reported_without_a_traceback(tmp_path, capsys):
     assert main(["experiment", "penalty-shot", "--trials", "2", "--team", "no-such-team", "--out", results]) == 2
     err = capsys.readouterr().err
     assert "--team" in err and "Traceback" not in err
-    assert main(["experiment", "penalty-shot", "--trials", "1", "--robots", "12", "--out", results]) == 2
+    with pytest.raises(SystemExit) as usage:           # more robots than a side has players: the option's range
+        main(["experiment", "penalty-shot", "--trials", "1", "--robots", "12", "--out", results])
     err = capsys.readouterr().err
-    assert "--robots must be at most 11" in err and "Traceback" not in err
+    assert usage.value.code == 2 and "--robots: must be a positive integer up to 11" in err and "Traceback" not in err
     (tmp_path / "a-file").write_text("")
     assert main(["experiment", "penalty-shot", "--trials", "1", "--out", results, "--tables",
                  str(tmp_path / "a-file")]) == 2

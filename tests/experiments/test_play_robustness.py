@@ -108,7 +108,7 @@ def test_match_timeout_is_checked_and_defaults_to_the_tournaments(capsys) -> Non
     assert build_parser().parse_args(["play"]).match_timeout == DEFAULT_MATCH_TIMEOUT
     with pytest.raises(SystemExit) as usage:
         main(["play", "--match-timeout", "0"])
-    assert usage.value.code == 2 and "must be a positive number" in capsys.readouterr().err
+    assert usage.value.code == 2 and "must be a number in [1, 604800] (seconds), got 0" in capsys.readouterr().err
 
 
 def test_the_report_into_a_closed_pipe_ends_quietly_with_status_0() -> None:

@@ -30,6 +30,7 @@ class ScriptedPool:
     fails with no team at fault when ``fails(k)``, and is played 1-0 otherwise."""
 
     size = 1
+    most_at_once = 1
 
     def __init__(self, fails) -> None:
         self.fails = fails

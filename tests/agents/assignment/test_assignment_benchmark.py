@@ -4,16 +4,18 @@ from __future__ import annotations
 
 import argparse
 
+import pytest
+
 from experiments.benchmarks import assignment as bench
 
 
 def _args(**overrides) -> argparse.Namespace:
+    """The benchmark's options parsed from ``--name value`` for each override (so each value
+    passes its option's range check, as on the command line)."""
     parser = argparse.ArgumentParser()
     bench.add_arguments(parser)
-    args = parser.parse_args([])
-    for name, value in overrides.items():
-        setattr(args, name, value)
-    return args
+    return parser.parse_args([text for name, value in overrides.items()
+                              for text in (f"--{name.replace('_', '-')}", str(value))])
 
 
 def test_benchmark_prints_both_tables_and_explains_skipped_cells(capsys):
@@ -41,6 +43,9 @@ def test_bad_arguments_are_explained(capsys):
     assert bench.run(_args(sizes="10", quality_instances=0, methods="msd,hungarian")) == 2
     err = " ".join(capsys.readouterr().err.split())
     assert "--methods: unknown row label(s) 'hungarian'" in err and "'mmdr (fast)'" in err
-    assert bench.run(_args(sizes="10,1x0", quality_instances=0)) == 2
-    assert "--sizes: '1x0' is not a positive integer" in capsys.readouterr().err
-    assert bench.run(_args(sizes="0", quality_instances=0)) == 2
+    for sizes, shown in (("10,1x0", "1x0"), ("0", "0"), ("10,1000000", "1000000")):
+        with pytest.raises(SystemExit) as usage:
+            _args(sizes=sizes, quality_instances=0)
+        assert usage.value.code == 2
+        assert (f"--sizes: each value must be a positive integer up to 100000 (robots), got {shown}"
+                in capsys.readouterr().err)

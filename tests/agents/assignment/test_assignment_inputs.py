@@ -263,3 +263,36 @@ def test_unchecked_dense_entry_point_gives_assigns_answer(method):
         targets[: min(n, m) // 2] = robots[: min(n, m) // 2]  # ties at zero distance too
         np.testing.assert_array_equal(dense_target_of(robots, targets, method),
                                       assign(robots, targets, method=method).target_of)
+
+
+def test_costs_whose_total_would_overflow_are_refused():
+    """All costs 1e308 made a total of inf; the largest finite cost is the float64 maximum
+    divided by the pairs an assignment has, and the total at that limit is finite."""
+    with pytest.raises(AssignmentError, match=r"costs\[0, 0\] is 1e\+308: with 2 pair\(s\) to assign, finite costs "
+                                              r"must be at most 8.988e\+307 so that the total"):
+        assign_costs([[1e308, 1e308], [1e308, 1e308]])
+    limit = np.finfo(np.float64).max / 2
+    result = assign_costs([[limit, limit], [limit, np.inf]])
+    assert np.isfinite(result.total) and result.target_of.tolist() == [1, 0]
+    assert assign_costs([[1e308, 1.0]]).total == 1.0      # one pair: any finite cost
+
+
+@pytest.mark.parametrize("method", ["msd2", "mmd+msd2"])
+def test_squared_costs_whose_total_would_overflow_are_refused(method):
+    big = float(np.sqrt(np.finfo(np.float64).max)) * 0.9    # its square is finite, two of them are not
+    with pytest.raises(AssignmentError, match="squares the costs"):
+        assign_costs([[big, big], [big, big]], method)
+
+
+@pytest.mark.parametrize("robots, targets, name", [
+    ([[1 + 2j, 0.0]], [[0.0, 0.0]], "robots"),
+    (np.array([[0.0, 0.0]]), np.array([[3.0, 1j]]), "targets"),
+])
+def test_complex_coordinates_are_refused_not_truncated(robots, targets, name):
+    with pytest.raises(AssignmentError, match=f"^{name} must be an array of numbers .*complex numbers are not"):
+        assign(robots, targets)
+
+
+def test_complex_costs_are_refused():
+    with pytest.raises(AssignmentError, match="^costs must be a numeric matrix .*complex numbers are not"):
+        assign_costs([[1.0, 2 + 1j]])
