@@ -50,7 +50,7 @@ INPUT_CHANGED = [
     Case("formation import onto its own input", "input changed", refused(),
          argv=("formation", "import", "helios", "hg.conf", "hg.conf"), setup=(Copy("agent2d.conf", "hg.conf"),)),
     Case("formation import onto a file of the imported directory", "input changed", refused(),
-         argv=("formation", "import", "helios", "dt", "dt/offense-formation.conf"), setup=(AgentDir("dt"),)),
+         argv=("formation", "import", "helios", "dt", "dt/normal-formation.conf"), setup=(AgentDir("dt"),)),
     Case("formation show --out onto the formation it draws", "input changed", refused(),
          argv=("formation", "show", "fs.png", "--out", "fs.png"), setup=(Copy("formation.json", "fs.png"),)),
     Case("replay --png onto the recording it reads", "input changed", refused(),

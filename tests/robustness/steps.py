@@ -228,7 +228,7 @@ class AgentDir(_Step):
     """An agent2d formations-dt directory ``name`` with one formation file ``file`` in it."""
 
     name: str
-    file: str = "offense-formation.conf"
+    file: str = "normal-formation.conf"
     needs = ("agent2d.conf",)
 
     def make(self, ctx: Context) -> None:
