@@ -30,7 +30,6 @@ from __future__ import annotations
 
 import argparse
 import concurrent.futures
-import hashlib
 import json
 import os
 import pty
@@ -39,7 +38,6 @@ import resource
 import shlex
 import shutil
 import signal
-import stat
 import struct
 import subprocess
 import sys
@@ -52,6 +50,7 @@ from pathlib import Path
 from tests.robustness.cases import CASES
 from tests.robustness.model import FILED_AS, Case, Run
 from tests.robustness.steps import Context, Fixtures, Unsupported, child_environment, cli_command, make_device
+from tests.robustness.watch import changed, snapshot
 
 OUTCOMES = ("input changed", "hang", "traceback", "silent", "unclear error", "slow", "clear error", "ok", "skipped")
 BAD = frozenset(OUTCOMES[:6])
@@ -85,31 +84,6 @@ class Verdict:
     outcome: str
     detail: str
     run: Run | None
-
-
-# ------------------------------------------------------------------------------ watching the set-up files
-def snapshot(root: Path, writes: tuple[str, ...]) -> dict[str, tuple]:
-    """What each set-up file is: a regular file's bytes (digest); any other kind's type, inode,
-    device number and link target. Never opens anything that is not a regular file."""
-    seen: dict[str, tuple] = {}
-    for path in sorted(root.rglob("*")):
-        name = path.relative_to(root).as_posix()
-        if name == ".fill-log" or any(name == w or name.startswith(w + "/") for w in writes):
-            continue
-        info = path.lstat()
-        if stat.S_ISREG(info.st_mode):
-            seen[name] = ("file", hashlib.sha256(path.read_bytes()).hexdigest())
-        elif not stat.S_ISDIR(info.st_mode):
-            target = os.readlink(path) if stat.S_ISLNK(info.st_mode) else None
-            seen[name] = (stat.S_IFMT(info.st_mode), info.st_ino, info.st_rdev, target)
-        else:
-            seen[name] = ("dir",)
-    return seen
-
-
-def changed(before: dict[str, tuple], root: Path, writes: tuple[str, ...]) -> list[str]:
-    after = snapshot(root, writes)
-    return [name for name, what in before.items() if after.get(name) != what]
 
 
 # ------------------------------------------------------------------------------ running one case
