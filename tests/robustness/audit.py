@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import argparse
 import concurrent.futures
+import fcntl
 import json
 import os
 import pty
@@ -42,6 +43,7 @@ import struct
 import subprocess
 import sys
 import tempfile
+import termios
 import threading
 import time
 from dataclasses import dataclass
@@ -153,9 +155,6 @@ def execute(case: Case, directory: Path, bound: float) -> Run:
         stdout = open(directory / f"stdout-{case.stdout_device}", "wb")  # noqa: SIM115 - closed below
     elif case.tty_columns:
         master, slave = pty.openpty()
-        import fcntl
-        import termios
-
         fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", 24, case.tty_columns, 0, 0))
         stdout = slave
     env = child_environment()
