@@ -44,6 +44,7 @@ import numpy as np
 
 from soccer_sim.config import MatchConfig
 from soccer_sim.kinematics import CycleNoise, Kinematics
+from soccer_sim.errors import SoccerSimError
 from soccer_sim.kernels import PT_DECAY, PT_INERTIA_MOMENT
 from soccer_sim.perception.observer import Observer
 from soccer_sim.physics import Physics, SubstepPlanner
@@ -52,7 +53,7 @@ from soccer_sim.recorder import Recorder, check_recorders
 from soccer_sim.referee import Referee
 from soccer_sim.registry import resolve_team
 from soccer_sim.scenarios.scenario import Scenario, line_up
-from soccer_sim.setup import MatchSetup
+from soccer_sim.setup import MatchSetup, SetupTypeError
 from soccer_sim.state import AWAY, HOME, NO_PLAYER, EventLog, PlayMode, WorldState
 from soccer_sim.statistics import StatisticsRecorder, TeamStatistics
 from soccer_sim.tackles import TackleOutcome, Tackles
@@ -98,6 +99,10 @@ def initial_positions(config: MatchConfig) -> np.ndarray:
     return np.concatenate([own, -own])
 
 
+class SeedError(SoccerSimError, ValueError):
+    """A match seed that is not a non-negative integer."""
+
+
 class Match:
     """One match between two teams; :meth:`run` plays it to the end.
 
@@ -114,11 +119,11 @@ class Match:
         if setup is None:
             setup = MatchSetup.resolve(config, scenario)
         elif not isinstance(setup, MatchSetup):
-            raise TypeError(f"setup must be a MatchSetup, got {type(setup).__name__}")
+            raise SetupTypeError(f"setup must be a MatchSetup, got {type(setup).__name__}")
         elif config is not None or scenario is not None:
-            raise TypeError("give either config and scenario or a setup resolved from them, not both")
+            raise SetupTypeError("give either config and scenario or a setup resolved from them, not both")
         if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
-            raise ValueError(f"seed must be a non-negative integer, got {seed!r}")
+            raise SeedError(f"seed must be a non-negative integer, got {seed!r}")
         recorders = check_recorders(recorders)
         self.setup = setup
         """Sides, goalkeepers, rules on/off, start and end of the match, resolved once."""

@@ -14,10 +14,15 @@ from dataclasses import dataclass, replace
 
 from soccer_sim.config import MatchConfig
 from soccer_sim.ending import MatchEnd
+from soccer_sim.errors import SoccerSimError
 from soccer_sim.scenarios.library import get_scenario
 from soccer_sim.scenarios.scenario import Scenario, ScenarioError
 from soccer_sim.state import NO_PLAYER, PlayMode
 from soccer_sim.team import SideInfo
+
+
+class SetupTypeError(SoccerSimError, TypeError):
+    """A match's configuration or setup given as something else (a TypeError too)."""
 
 
 @dataclass(frozen=True)
@@ -59,7 +64,7 @@ class MatchSetup:
         if config is None:
             config = MatchConfig()
         if not isinstance(config, MatchConfig):
-            raise TypeError(f"config must be a MatchConfig, got {type(config).__name__}")
+            raise SetupTypeError(f"config must be a MatchConfig, got {type(config).__name__}")
         scenario = resolve_scenario(scenario)
         scenario.check(config)
         if scenario.offside is not None and scenario.offside != config.rules.offside:

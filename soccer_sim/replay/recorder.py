@@ -118,7 +118,10 @@ class RerunRecorder:
         blueprint = default_blueprint(match.config.field, formation_meshes=self.formation_meshes)
         try:
             if self.path is not None:
-                self.recording.save(self.path, default_blueprint=blueprint)
+                # kept in memory and written at the end (:meth:`on_end`): rerun's own file writer
+                # can block for ever when the disk fills under it, a write of ours fails at once
+                self._memory = self.recording.memory_recording()
+                self.recording.send_blueprint(blueprint, make_active=True, make_default=True)
             if self.spawn:
                 self.recording.spawn(default_blueprint=blueprint)
         except Exception as exc:  # rerun reports unwritable paths and missing viewers as plain errors
@@ -145,7 +148,10 @@ class RerunRecorder:
         rec = self.recording
         rec.flush()
         if self.path is not None:
+            data = self._memory.drain_as_bytes()
             rec.disconnect()
+            with open(self.path, "wb") as handle:  # (an OSError names the file: a full disk fails here)
+                handle.write(data)
 
     # ------------------------------------------------------------------ buffering
     def _allocate(self, players: int) -> None:

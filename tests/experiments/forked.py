@@ -4,7 +4,8 @@ The fuzz tests that hand commands FIFOs, device nodes and huge numbers cannot ru
 test process: a command blocked on a FIFO, or a compiled kernel spinning on a 1e308 m field,
 would hang the test run. :func:`run_forked` forks the test process (so the modules and kernels
 it loaded are there at no cost), runs the call in the child as its own process group, with
-standard output and error going to files, an address-space limit and a working directory,
+standard output and error going to files, an address-space limit (``memory_mb`` on top of
+what the test process maps) and a working directory,
 and kills the whole group at the bound.
 """
 
@@ -110,7 +111,9 @@ def _child(call, cwd: Path, memory_mb: int, env: dict[str, str], out_path: Path,
     status = 0
     try:
         os.setpgid(0, 0)
-        limit = memory_mb * 1024 * 1024
+        # the cap is on top of what the test process already maps (a worker that loaded Ray or
+        # compiled many kernels maps gigabytes; a fixed cap below that fails every allocation)
+        limit = _address_space() + memory_mb * 1024 * 1024
         resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
         signal.signal(signal.SIGINT, signal.SIG_DFL)
         for fd, path in ((1, out_path), (2, err_path)):
@@ -145,6 +148,12 @@ def _child(call, cwd: Path, memory_mb: int, env: dict[str, str], out_path: Path,
         except BaseException:  # noqa: BLE001
             pass
         os._exit(status)
+
+
+def _address_space() -> int:
+    """The bytes of address space this process maps now (``/proc/self/statm``'s size)."""
+    with open("/proc/self/statm") as statm:
+        return int(statm.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
 
 
 def _kill_group(pid: int) -> None:

@@ -24,6 +24,8 @@ EXAMPLES: dict[str, tuple] = {
     "experiments.errors.StudyArgumentError": ("lambdas: bad",),
     "experiments.limits.OutOfRange": ("--etsp-sizes: each value must be an integer from 2 to 100000 (agents), got 1",),
     "soccer_sim.recorder.RecorderError": ("recorders must be a list or other iterable of recorders, got int",),
+    "soccer_sim.match.SeedError": ("seed must be a non-negative integer, got -1",),
+    "soccer_sim.setup.SetupTypeError": ("config must be a MatchConfig, got str",),
     "experiments.errors.ExperimentError": ("a run cannot start",),
     "agents.errors.AgentsError": ("an assigner refuses its input",),
     "agents.roles.errors.RoleError": ("unknown role assigner 'mmdx'",),
