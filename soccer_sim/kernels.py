@@ -612,17 +612,24 @@ def mirror_bodies(bodies: np.ndarray, sign: float, pos_out: np.ndarray, vel_out:
 
 @njit(cache=True, nogil=True)
 def chase_ball(own_pos: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, goal_x: float, kick_speed: float,
-               gain: float, dash: np.ndarray, kick: np.ndarray) -> None:  # pragma: no cover - compiled
-    """Dash at the ball; kick so that the ball leaves at ``kick_speed`` towards (goal_x, 0)."""
+               gain: float, kickable: float, dash: np.ndarray, kick: np.ndarray) -> None:  # pragma: no cover
+    """A player with the ball within ``kickable`` (m) kicks it so that it leaves at
+    ``kick_speed`` towards (goal_x, 0); every other player dashes at the ball (one body command
+    each, as the match executes only one)."""
     bx, by = ball[0], ball[1]
     dx, dy = goal_x - bx, -by
     scale = kick_speed / max(math.sqrt(dx * dx + dy * dy), 1e-9)
     kx, ky = dx * scale - ball_vel[0], dy * scale - ball_vel[1]
     for i in range(own_pos.shape[0]):
-        dash[i, 0] = (bx - own_pos[i, 0]) * gain
-        dash[i, 1] = (by - own_pos[i, 1]) * gain
-        kick[i, 0] = kx
-        kick[i, 1] = ky
+        rx, ry = bx - own_pos[i, 0], by - own_pos[i, 1]
+        if rx * rx + ry * ry <= kickable * kickable:
+            dash[i, 0] = dash[i, 1] = 0.0
+            kick[i, 0] = kx
+            kick[i, 1] = ky
+        else:
+            dash[i, 0] = rx * gain
+            dash[i, 1] = ry * gain
+            kick[i, 0] = kick[i, 1] = 0.0
 
 
 @njit(cache=True, nogil=True)
