@@ -26,6 +26,8 @@ class PartialTeam:
         self.n = side_info.players_per_team
         self.ball = np.zeros((self.n, 2))           # each player's own memory of the ball
         self.goal = np.array([config.field.half_length, 0.0])
+        self.kickable = config.physics.kickable_distance
+        self.goalie = side_info.goalie_index
 
     def act(self, views: PlayerViews) -> TeamCommand:
         dash, kick, say = np.zeros((self.n, 2)), np.zeros((self.n, 2)), [None] * self.n
@@ -41,9 +43,13 @@ class PartialTeam:
             mates = me.players[me.player_sides == TEAMMATE]
             mine = np.hypot(*(ball - me.position))
             if len(mates) == 0 or mine <= np.hypot(*(mates - ball).T).min():
-                dash[i] = (ball - me.position) * 100.0       # clipped to full power by the match
-                kick[i] = (self.goal - ball) / max(np.hypot(*(self.goal - ball)), 1e-9) * 3.0
+                if mine <= self.kickable:                     # one body command a cycle: kick ...
+                    kick[i] = (self.goal - ball) / max(np.hypot(*(self.goal - ball)), 1e-9) * 3.0
+                else:                                         # ... or run (clipped to full power)
+                    dash[i] = (ball - me.position) * 100.0
             else:
                 spot = SPOTS[i % len(SPOTS)] + np.array([ball[0] * 0.5, ball[1] * 0.2])
                 dash[i] = (spot - me.position) * 0.3
-        return TeamCommand(dash=dash, kick=kick, catch=True, say=say)
+        keeper = views.player(self.goalie) if 0 <= self.goalie < self.n else None
+        catch = keeper is not None and keeper.ball_seen and np.hypot(*(keeper.ball - keeper.position)) < 2.0
+        return TeamCommand(dash=dash, kick=kick, catch=bool(catch), say=say)

@@ -530,6 +530,48 @@ def separate_ball_overlaps(bodies: np.ndarray, play_on: bool, collided: np.ndarr
 
 # --- team views and commands -----------------------------------------------------------------
 @njit(cache=True, nogil=True)
+def one_body_command(commands: np.ndarray, tackle: np.ndarray, catch: np.ndarray, goalie_rows: np.ndarray,
+                     moving: np.ndarray, home: int, ignored: np.ndarray) -> None:  # pragma: no cover - compiled
+    """rcssserver executes one body command per player and cycle, the first it receives
+    (``M_command_done`` in ``player.cpp``); a team sends its commands at once, so the match keeps
+    the one of highest priority, tackle > catch > kick > move > dash, and drops the others.
+
+    ``commands``: (P, 4) rows ``[dash, kick]``, a dropped kick or dash zeroed in place (a
+    non-zero vector is a command); ``tackle``: (P,) tackle directions, NaN for none; ``catch``:
+    (2,) each team's goalkeeper's catch request, cleared when that goalkeeper tackles;
+    ``goalie_rows``: (2,) the goalkeepers' rows (-1: none); ``moving``: (P,) the rows a
+    kick-off placement moves this cycle, cleared where a higher command was sent; ``home``:
+    home's player count (rows below it are home's); ``ignored``: (2,) each team's count of
+    dropped commands, added to."""
+    for i in range(commands.shape[0]):
+        team = 0 if i < home else 1
+        dash = commands[i, 0] != 0.0 or commands[i, 1] != 0.0
+        kick = commands[i, 2] != 0.0 or commands[i, 3] != 0.0
+        catches = catch[team] and goalie_rows[team] == i
+        move = moving[i]
+        if not math.isnan(tackle[i]):
+            dropped = int(catches) + int(kick) + int(move) + int(dash)
+            if catches:
+                catch[team] = False
+        elif catches:
+            dropped = int(kick) + int(move) + int(dash)
+        elif kick:
+            dropped = int(move) + int(dash)
+        elif move:
+            dropped = int(dash)
+        else:
+            continue
+        if dropped == 0:
+            continue
+        ignored[team] += dropped
+        if not math.isnan(tackle[i]) or catches:
+            commands[i, 2] = commands[i, 3] = 0.0
+        commands[i, 0] = commands[i, 1] = 0.0
+        if move and (kick or catches or not math.isnan(tackle[i])):
+            moving[i] = False
+
+
+@njit(cache=True, nogil=True)
 def store_command(dash: np.ndarray, kick: np.ndarray, sign: float,
                   out: np.ndarray) -> int:  # pragma: no cover - compiled
     """Write ``sign * dash`` and ``sign * kick`` into ``out`` ((n, 4) rows ``[dash, kick]``);
@@ -570,17 +612,24 @@ def mirror_bodies(bodies: np.ndarray, sign: float, pos_out: np.ndarray, vel_out:
 
 @njit(cache=True, nogil=True)
 def chase_ball(own_pos: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, goal_x: float, kick_speed: float,
-               gain: float, dash: np.ndarray, kick: np.ndarray) -> None:  # pragma: no cover - compiled
-    """Dash at the ball; kick so that the ball leaves at ``kick_speed`` towards (goal_x, 0)."""
+               gain: float, kickable: float, dash: np.ndarray, kick: np.ndarray) -> None:  # pragma: no cover
+    """A player with the ball within ``kickable`` (m) kicks it so that it leaves at
+    ``kick_speed`` towards (goal_x, 0); every other player dashes at the ball (one body command
+    each, as the match executes only one)."""
     bx, by = ball[0], ball[1]
     dx, dy = goal_x - bx, -by
     scale = kick_speed / max(math.sqrt(dx * dx + dy * dy), 1e-9)
     kx, ky = dx * scale - ball_vel[0], dy * scale - ball_vel[1]
     for i in range(own_pos.shape[0]):
-        dash[i, 0] = (bx - own_pos[i, 0]) * gain
-        dash[i, 1] = (by - own_pos[i, 1]) * gain
-        kick[i, 0] = kx
-        kick[i, 1] = ky
+        rx, ry = bx - own_pos[i, 0], by - own_pos[i, 1]
+        if rx * rx + ry * ry <= kickable * kickable:
+            dash[i, 0] = dash[i, 1] = 0.0
+            kick[i, 0] = kx
+            kick[i, 1] = ky
+        else:
+            dash[i, 0] = rx * gain
+            dash[i, 1] = ry * gain
+            kick[i, 0] = kick[i, 1] = 0.0
 
 
 @njit(cache=True, nogil=True)

@@ -45,7 +45,7 @@ import numpy as np
 from soccer_sim.config import MatchConfig
 from soccer_sim.kinematics import CycleNoise, Kinematics
 from soccer_sim.errors import SoccerSimError
-from soccer_sim.kernels import PT_DECAY, PT_INERTIA_MOMENT
+from soccer_sim.kernels import PT_DECAY, PT_INERTIA_MOMENT, one_body_command
 from soccer_sim.perception.observer import Observer
 from soccer_sim.physics import Physics, SubstepPlanner
 from soccer_sim.player_types import check_choice, draw_player_types
@@ -56,7 +56,7 @@ from soccer_sim.scenarios.scenario import Scenario, line_up
 from soccer_sim.setup import MatchSetup, SetupTypeError
 from soccer_sim.state import AWAY, HOME, NO_PLAYER, EventLog, PlayMode, WorldState
 from soccer_sim.statistics import StatisticsRecorder, TeamStatistics
-from soccer_sim.tackles import TackleOutcome, Tackles
+from soccer_sim.tackles import Tackles
 from soccer_sim.team import SideInfo, Team, team_failure
 from soccer_sim.team_hooks import ChoosesPlayerTypes, check_observation_mode
 from soccer_sim.view import TeamFrame
@@ -195,6 +195,14 @@ class Match:
         self.kickers = _NO_KICKERS
         self.touchers = _NO_KICKERS
         self._catch = np.zeros(2, dtype=bool)
+        self._goalie_rows = np.array(setup.goalie_rows, dtype=np.int64)
+        self._team_rows = (slice(0, sizes[0]), slice(sizes[0], n2))
+        self._moving = np.zeros(n2, dtype=bool)
+        """The rows a kick-off placement moves this cycle (after the one-body-command rule)."""
+        self._no_tackles = np.full(n2, np.nan)
+        self.ignored_commands = np.zeros(2, dtype=np.int64)
+        """Body commands each team sent that were not executed, (home, away): rcssserver executes
+        one per player and cycle (:func:`soccer_sim.kernels.one_body_command`)."""
         self._kicker_rows = np.zeros(n2, dtype=np.int64)
         self._substeps = SubstepPlanner(config)
         self._started = False
@@ -269,19 +277,30 @@ class Match:
         pos, vel, ball, ball_vel, bodies, stamina, effort, recovery, capacity = self._arrays
         self.noise.draw()
 
-        # 1-2. Teams decide; kick-off placement.
+        # 1-2. Teams decide; one body command per player (tackle > catch > kick > move > dash);
+        # kick-off placement.
         moves = self._collect_commands()
-        if state.play_mode == _KICK_OFF or state.play_mode == _AFTER_GOAL:
-            for team in (HOME, AWAY):
+        home_frame, away_frame = self.frames
+        tackling = home_frame.tackling or away_frame.tackling
+        tackle = self._tackles_asked() if tackling else self._no_tackles
+        moving = self._moving
+        placing = state.play_mode == _KICK_OFF or state.play_mode == _AFTER_GOAL
+        if placing:
+            for team, rows in enumerate(self._team_rows):
+                moving[rows] = moves[team] is not None
+        one_body_command(self.commands, tackle, self._catch, self._goalie_rows, moving, self.sizes[0],
+                         self.ignored_commands)
+        if placing:
+            for team, rows in enumerate(self._team_rows):
                 if moves[team] is not None:
-                    referee.apply_moves(state, team, moves[team])
+                    referee.apply_moves(state, team, moves[team], moving[rows])
+            moving[:] = False
 
         # 3-4. Tackles (frozen and sent-off players idle), kicks, then the referee judges
         # kicks, tackles and catches.
-        home_frame, away_frame = self.frames
-        tackling = home_frame.tackling or away_frame.tackling
         if tackling or self.tackles.busy:
-            tackled = self._resolve_tackles(tackling)
+            tackled = self.tackles.resolve(state, tackle, self._foul_asked(), tackling, self.commands, self._catch,
+                                           referee.kick_mask(state))
         else:
             tackled = None
         holder = state.ball_holder
@@ -352,14 +371,16 @@ class Match:
             observer.say(state.cycle, said, state.pos, checked=True)  # (read_command checked the messages)
         return moves
 
-    def _resolve_tackles(self, tackling: bool) -> TackleOutcome | None:
-        """The tackle phase (:meth:`Tackles.resolve`) with both teams' tackle commands."""
+    def _tackles_asked(self) -> np.ndarray:
+        """(P,) both teams' tackle directions this cycle (absolute, radians; NaN for none)."""
         home_frame, away_frame = self.frames
-        tackle = np.concatenate([home_frame.tackle if home_frame.tackling else np.full(home_frame.n, np.nan),
-                                 away_frame.tackle if away_frame.tackling else np.full(away_frame.n, np.nan)])
-        foul = np.concatenate([home_frame.foul, away_frame.foul])
-        return self.tackles.resolve(self.state, tackle, foul, tackling, self.commands, self._catch,
-                                    self.referee.kick_mask(self.state))
+        return np.concatenate([home_frame.tackle if home_frame.tackling else np.full(home_frame.n, np.nan),
+                               away_frame.tackle if away_frame.tackling else np.full(away_frame.n, np.nan)])
+
+    def _foul_asked(self) -> np.ndarray:
+        """(P,) both teams' foul flags this cycle."""
+        home_frame, away_frame = self.frames
+        return np.concatenate([home_frame.foul, away_frame.foul])
 
     def _check_end(self) -> None:
         """Judge the scenario's end conditions on this cycle's events

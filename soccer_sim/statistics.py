@@ -6,6 +6,8 @@
   definition replays use too);
 * tackles, tackles won, fouls, yellow and red cards: from the event log (set plays, free kicks
   included, are counted by the match report);
+* ignored commands: body commands sent but not executed (one per player and cycle, as
+  rcssserver: tackle > catch > kick > move > dash);
 * teammate contacts: new body contacts between two players of the team (the collision solver
   counts them; the role-assignment literature expects good assignment to avoid them);
 * distance run: the sum over cycles of every player's displacement (m). Jumps longer than
@@ -59,6 +61,9 @@ class TeamStatistics:
     """Fouls called on the team's players (FOUL events)."""
     yellow_cards: int = 0
     red_cards: int = 0
+    ignored_commands: int = 0
+    """Body commands the team sent that were not executed: rcssserver executes one per player
+    and cycle (tackle > catch > kick > move > dash; :func:`soccer_sim.kernels.one_body_command`)."""
     reported: dict[str, float] = field(default_factory=dict)
     """Figures the team reported itself (``Team.statistics()``), e.g. role switches."""
 
@@ -69,7 +74,7 @@ class TeamStatistics:
             "possession": self.possession, "teammate_contacts": self.teammate_contacts,
             "distance_run": self.distance_run, "tackles": self.tackles, "tackles_won": self.tackles_won,
             "fouls": self.fouls, "yellow_cards": self.yellow_cards,
-            "red_cards": self.red_cards,
+            "red_cards": self.red_cards, "ignored_commands": self.ignored_commands,
         }
         values.update(self.reported)
         return values
@@ -117,6 +122,7 @@ class StatisticsRecorder:
                 fouls=int(np.count_nonzero(mine & (kinds == EventKind.FOUL))),
                 yellow_cards=int(np.count_nonzero(mine & (kinds == EventKind.YELLOW_CARD))),
                 red_cards=int(np.count_nonzero(mine & (kinds == EventKind.RED_CARD))),
+                ignored_commands=int(match.ignored_commands[team]),
                 reported=reported,
             ))
         self.result = (stats[0], stats[1])

@@ -31,7 +31,8 @@ class IdleTeam:
 
 class ChaserTeam:
     """Every player (the goalkeeper too) runs flat out at the ball and, when it can, kicks it
-    as hard as possible straight at the centre of the opponents' goal. Under partial observation
+    as hard as possible straight at the centre of the opponents' goal (a player that kicks does
+    not dash in that cycle: one body command per player and cycle). Under partial observation
     each player runs at where it last saw the ball (the centre spot before it has seen it)."""
 
     observation_modes = ("full", "partial")
@@ -44,6 +45,7 @@ class ChaserTeam:
         n = side_info.players_per_team
         self._goal_x = config.field.half_length
         self._kick_speed = config.physics.kick_speed_max
+        self._kickable = config.physics.kickable_distance
         self._command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
         self._last_ball = np.zeros((n, 2))  # partial observation: where each player last saw the ball
 
@@ -52,7 +54,7 @@ class ChaserTeam:
         if isinstance(view, PlayerViews):
             return self._act_on_own_views(view)
         chase_ball(view.own_pos, view.ball, view.ball_vel, self._goal_x, self._kick_speed, self._DASH_GAIN,
-                   command.dash, command.kick)
+                   self._kickable, command.dash, command.kick)
         return command
 
 
@@ -66,4 +68,7 @@ class ChaserTeam:
         to_goal = np.array([self._goal_x, 0.0]) - ball
         length = np.maximum(np.hypot(to_goal[:, 0], to_goal[:, 1]), 1e-9)
         command.kick[:] = to_goal * (self._kick_speed / length)[:, None]
+        near = np.hypot(*(ball - views.position).T) <= self._kickable  # kick, or else dash
+        command.dash[near] = 0.0
+        command.kick[~near] = 0.0
         return command

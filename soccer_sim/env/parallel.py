@@ -116,6 +116,9 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         self.observation_slots = builder.slots
         box = spaces.Box(builder.low, builder.high, dtype=np.float32)
         self._decoders = {side: ActionDecoder(sizes[side], goalies[side], self.config) for side in self.sides}
+        self._perceived: dict[int, object] = {}
+        """Each controlled side's view of the cycle being played (what its agents' observations
+        were built from): the decoders send a kick only for a player it shows near the ball."""
         low_level = self.action_mode == "low_level"
         self._translators = {} if low_level else {side: load_action_mode(self.action_mode) for side in self.sides}
         if low_level:
@@ -251,7 +254,7 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
             if self._translators:
                 command = self._translators[side].command_for(match.frames[side].view, block)
             else:
-                command = self._decoders[side].decode(block)
+                command = self._decoders[side].decode(block, self._perceived[side])
             external = self._externals[side]
             external.dash[:] = command.dash
             external.kick[:] = command.kick
@@ -323,10 +326,11 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         if self.partial:  # each agent's own view of the coming cycle (the memories see every cycle)
             views = match.observer.observe(state)
             for side in self.sides:
+                self._perceived[side] = views[side]
                 self._builders[side].build(views[side], out=self._obs[self._blocks[side]], write=build)
             return
         for side in self.sides:
-            view = match.frames[side].update_view(state, state.attack_direction(side))
+            view = self._perceived[side] = match.frames[side].update_view(state, state.attack_direction(side))
             if not build:
                 continue
             block = self._blocks[side]

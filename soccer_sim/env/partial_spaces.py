@@ -41,7 +41,7 @@ next                        1       its speaker's number / (k - 1)
 next                        1       1 when an opponent's message was heard (its content is left out)
 ==========================  ======  ===========================================================
 
-The memories start empty at the kick-off of each half (the team frame turns with the ends).
+The memories start empty with the match and carry over half time (the teams keep their ends).
 A see arrives alternately after one and two cycles; between sees the player slots keep the last
 see's content (``9`` says how old it is) and the own, ball and hear values are of this cycle.
 Seen positions are where the agent places what it sees: its believed position plus the reported
@@ -141,10 +141,8 @@ class PartialObservationBuilder:
         self.out = np.zeros((n, self.size), dtype=np.float32)
         self.reset()
 
-    def reset(self, half: int = 0) -> None:
-        """Forget every memory (a new match, or a new half: the team frame turns with the ends,
-        so what was seen in the last half is elsewhere in it now)."""
-        self._half = half
+    def reset(self) -> None:
+        """Forget every memory (a new match)."""
         self._seen[:] = 0.0
         self._ball[:] = 0.0
         self._ball_cycle[:] = _NEVER
@@ -155,8 +153,6 @@ class PartialObservationBuilder:
         clipped to the bounds: written into ``out`` when given, else into a new array. With
         ``write=False`` only the memories are updated (None is returned)."""
         cycle = views.cycle
-        if views.half != self._half:
-            self.reset(views.half)
         buf = self.out
         observe_rows(cycle, self._scale, views.position, views.velocity, views.stamina, views.body_direction,
                      views.saw, views.ball_seen, views.ball, views.seen_count, views.seen_position, views.seen_side,

@@ -94,7 +94,7 @@ class PolicyTeam:
             self._actions[:] = check_actions(self._names, actions, self._size)
         except ValueError as exc:
             raise TeamError(self.name, str(exc)) from None
-        command = self._decoder.decode(self._actions)
+        command = self._decoder.decode(self._actions, view)
         if self.say_values:
             command.say = self._builder.codec.encode(self._actions[:, ACTION_SIZE + 1:],
                                                      self._actions[:, ACTION_SIZE] > 0)

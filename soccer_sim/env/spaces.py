@@ -63,7 +63,8 @@ import numpy as np
 
 from soccer_sim.config import MatchConfig
 from soccer_sim.state import PlayMode
-from soccer_sim.team import TeamCommand
+from soccer_sim.perception.views import PlayerViews
+from soccer_sim.team import TeamCommand, TeamView
 
 ACTION_SIZE = 5
 MODES = len(PlayMode)
@@ -199,20 +200,38 @@ class ObservationBuilder:
 
 
 class ActionDecoder:
-    """Turns the players' (n, 5) actions into the team's :class:`TeamCommand`."""
+    """Turns the players' (n, 5) actions into the team's :class:`TeamCommand`.
+
+    A player executes one body command a cycle (the match's rule, as rcssserver's): an action's
+    kick is sent only for a player who perceives the ball within its kickable distance
+    (:func:`ball_within_reach`), so that the dash of a player who cannot kick is not lost to a
+    kick that could do nothing."""
 
     def __init__(self, n: int, goalie: int, config: MatchConfig) -> None:
         self.n, self.goalie = n, goalie
         self.scales = Scales.of(config)
+        self.kickable = config.physics.kickable_distance
         self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
 
-    def decode(self, actions: np.ndarray) -> TeamCommand:
-        """``actions`` (n, 5), already checked and clipped to [-1, 1]."""
+    def decode(self, actions: np.ndarray, view: TeamView | PlayerViews) -> TeamCommand:
+        """``actions`` (n, 5), already checked and clipped to [-1, 1]; ``view``: what the
+        players perceived this cycle (the team's view, or each player's own)."""
         command = self.command
         command.dash[:] = actions[:, 0:2] * self.scales.dash
         command.kick[:] = actions[:, 2:4] * self.scales.kick
+        command.kick[~ball_within_reach(view, self.kickable)] = 0.0
         command.catch = bool(0 <= self.goalie < self.n and actions[self.goalie, 4] > 0.0)
         return command
+
+
+def ball_within_reach(view: TeamView | PlayerViews, kickable: float) -> np.ndarray:
+    """(n,) bool: the players who perceive the ball within ``kickable`` (m): exactly under full
+    observation; under partial observation by the distance of this cycle's see (a player who
+    does not see the ball this cycle does not kick)."""
+    if isinstance(view, PlayerViews):
+        return np.nan_to_num(view.ball_distance, nan=np.inf) <= kickable
+    gap = view.ball - view.own_pos
+    return np.einsum("ij,ij->i", gap, gap) <= kickable * kickable
 
 
 def check_actions(agents: list[str], actions: list[object], size: int = ACTION_SIZE) -> np.ndarray:

@@ -136,9 +136,11 @@ class PlayModes:
             return self._mask_none
         return self._mask_team[state.mode_team]
 
-    def apply_moves(self, state: WorldState, team: int, targets: np.ndarray) -> None:
+    def apply_moves(self, state: WorldState, team: int, targets: np.ndarray, moved: np.ndarray | None = None) -> None:
         """KICK_OFF and AFTER_GOAL only: teleport ``team``'s players to ``targets``, clamped
-        into their own half, the team not kicking off kept out of the centre circle."""
+        into their own half, the team not kicking off kept out of the centre circle.
+        ``moved``: (n,) bool, the players whose move is their one body command this cycle
+        (None: all; the others, who sent a higher one, stay where they are)."""
         if state.play_mode != KICK_OFF and state.play_mode != AFTER_GOAL:
             return
         n = self.sizes[team]
@@ -148,12 +150,16 @@ class PlayModes:
                              f"got shape {targets.shape}")
         rows = self.rows[team]
         block = state.pos[rows]
-        block[:] = targets
+        if moved is None:
+            block[:] = targets
+            state.vel[rows] = 0.0
+        else:
+            block[moved] = targets[moved]
+            state.vel[rows][moved] = 0.0
         clamp_into_own_half(block, state.attack_direction(team), self.config.field)
         if team != state.mode_team:
             direction = state.attack_direction(team)
             push_out_of_circle(block, 0.0, 0.0, self._kick_off_radius, (-float(direction), 0.0))
-        state.vel[rows] = 0.0
 
     def set_play_taken(self, state: WorldState, kicker: int) -> None:
         """``kicker``'s kick started play on (the set play or held ball it was taken from ends)."""

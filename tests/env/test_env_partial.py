@@ -206,7 +206,7 @@ def test_undecodable_team_mate_messages_count_as_nothing_heard() -> None:
     np.testing.assert_allclose(hear[2], [0.5, -0.5, 1.0, 0.5, 0.0], atol=STEP + 1e-6)  # the decodable one, from 5
 
 
-def test_the_memories_last_between_sightings_and_end_with_the_half() -> None:
+def test_the_memories_last_between_sightings_and_over_half_time_and_end_with_the_match() -> None:
     environment = parallel_env(**PARTIAL, controlled="left", max_cycles=5)
     environment.reset_arrays(seed=0)
     views = _copy(environment._match.observer.views[0])
@@ -220,7 +220,11 @@ def test_the_memories_last_between_sightings_and_end_with_the_half() -> None:
     np.testing.assert_array_equal(later[kept, 10:12], seen[kept, 10:12])  # where it last saw the ball
     np.testing.assert_allclose(later[kept, 14], 7 / BALL_AGE_CAP)
     np.testing.assert_array_equal(later[:, 16:82], seen[:, 16:82])  # the last see's slots
-    blind.half = 1
+    blind.half = 1  # the teams keep their ends: what was seen is where it was
+    second = builder.build(blind)
+    np.testing.assert_array_equal(second[kept, 10:12], seen[kept, 10:12])
+    np.testing.assert_array_equal(second[:, 16:82], seen[:, 16:82])
+    builder.reset()  # a new match
     second = builder.build(blind)
     assert not second[:, 10:12].any() and (second[:, 14] == 1.0).all() and (second[:, 9] == 1.0).all()
     own = 16 + 3 * np.arange(11)
