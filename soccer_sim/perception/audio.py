@@ -44,6 +44,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from soccer_sim.config_checks import ConfigError
+from soccer_sim.config_ranges import check_ranges
 from soccer_sim.perception.coded import SILENT_CODE, CodedMessages, allowed_codes, first_bad_row
 from soccer_sim.perception.audio_kernels import arrivals, choose_heard, join_said
 from soccer_sim.team import TeamError
@@ -89,6 +90,7 @@ class AudioParams:
                 raise ConfigError(f"AudioParams.{f.name} must be a whole number >= 0, got {value!r}")
         if self.say_msg_size < 1:
             raise ConfigError(f"AudioParams.say_msg_size must be at least 1, got {self.say_msg_size!r}")
+        check_ranges(self)
 
 
 def check_message(message: object, params: AudioParams = AudioParams(), team_name: str = "?",

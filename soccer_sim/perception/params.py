@@ -19,6 +19,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from soccer_sim.config_checks import ConfigError
+from soccer_sim.config_ranges import check_ranges
 
 MAX_DIST_IN_PITCH = math.hypot(105.0, 68.0)
 """``heteroplayer.cpp``'s ``maximum_dist_in_pitch`` (m): the diagonal of the 105 x 68 m pitch."""
@@ -83,6 +84,7 @@ class SeeParams:
                 raise ConfigError(f"SeeParams.{f.name} must be a whole number of ms, got {value!r}")
             if value <= 0 and f.name != "visible_distance":
                 raise ConfigError(f"SeeParams.{f.name} must be positive, got {value!r}")
+        check_ranges(self)
         if self.visible_distance < 0:
             raise ConfigError(f"SeeParams.visible_distance must be >= 0, got {self.visible_distance!r}")
         if self.visible_angle > 360:

@@ -15,13 +15,16 @@ from soccer_sim import run_match
 from soccer_sim.config import (ConfigError, FieldConfig, MatchConfig, PhysicsConfig, PlayerTypeConfig, RuleConfig,
                                StaminaConfig, TackleConfig)
 from soccer_sim.config_ranges import FIELD_RANGES
+from soccer_sim.perception.audio import AudioParams
+from soccer_sim.perception.params import SeeParams
 from soccer_sim.player_types import PlayerType, draw_player_types
 from soccer_sim.rcg.defaults import DEFAULT_PLAYER_TYPE, PLAYER_PARAMS, SERVER_PARAMS
 from soccer_sim.rcg.params import PLAYER_TYPE_PARAMETERS, SERVER_PARAMETERS
 
 RCSSSERVER_DATA = Path(__file__).resolve().parents[1] / "data" / "rcssserver"
 
-CONFIGS = (FieldConfig, PhysicsConfig, StaminaConfig, RuleConfig, TackleConfig, PlayerTypeConfig, MatchConfig)
+CONFIGS = (FieldConfig, PhysicsConfig, StaminaConfig, RuleConfig, TackleConfig, PlayerTypeConfig, SeeParams, AudioParams,
+           MatchConfig)
 
 
 @pytest.mark.parametrize("make, message", [
@@ -229,3 +232,14 @@ def test_docs_list_every_field_range() -> None:
             assert line is not None, (owner, name)
             high = f"{allowed.high:,}" if allowed.integer else ("inf" if math.isinf(allowed.high) else f"{allowed.high:,g}")
             assert high in line and (allowed.unit or "-") in line, line
+
+
+@pytest.mark.parametrize("make, message", [
+    (lambda: AudioParams(say_msg_size=10**18), "AudioParams.say_msg_size must be a positive integer up to 8,192"),
+    (lambda: SeeParams(visible_distance=1e308), r"SeeParams.visible_distance must be within \[0, 1000\] \(m\)"),
+    (lambda: SeeParams(send_step=10**12), "SeeParams.send_step must be a positive integer up to 60,000"),
+    (lambda: AudioParams(hear_max=10**9), "AudioParams.hear_max"),
+])
+def test_the_partial_observation_parameters_have_ranges_too(make, message) -> None:
+    with pytest.raises(ConfigError, match=message):
+        make()
