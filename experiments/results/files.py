@@ -197,6 +197,31 @@ def directory_problem(directory: str | os.PathLike, used: Iterable[str | os.Path
     except OSError as exc:
         where = "" if existing == directory else f" (in {existing})"
         return f"cannot write there{where} ({exc.strerror or exc})"
+    if existing == directory:
+        special = _special_entry(directory)
+        if special is not None:
+            return special
+    return None
+
+
+def _special_entry(directory: Path) -> str | None:
+    """Why an output directory that holds something other than regular files and directories
+    (a FIFO, a device, a socket) is refused before any work (the command writes its files into
+    it, and never over such an entry), or None."""
+    from formations.input_files import kind_of
+
+    try:
+        with os.scandir(directory) as entries:
+            for entry in entries:
+                try:
+                    mode = entry.stat().st_mode
+                except FileNotFoundError:  # a link to nothing: writing through it makes a file
+                    continue
+                if not (stat.S_ISREG(mode) or stat.S_ISDIR(mode)):
+                    return f"holds {entry.name}, which is not a regular file ({kind_of(mode)}); " \
+                           "the command writes its files here and never replaces such a file"
+    except OSError as exc:
+        return f"cannot be read ({exc.strerror or exc})"
     return None
 
 

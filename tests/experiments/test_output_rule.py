@@ -9,7 +9,9 @@ from __future__ import annotations
 import hashlib
 import os
 import sqlite3
+import stat
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -272,3 +274,20 @@ def _helios(tmp_path: Path) -> str:
     path = tmp_path / "source.conf"
     path.write_text(dt_v2_text())
     return str(path)
+
+
+def test_a_fifo_inside_the_tables_directory_is_refused_before_any_match(tmp_path) -> None:
+    """The tables are written into --tables; a FIFO there (where a table would go) is refused up
+    front, before a match is played, and stays a FIFO."""
+    tables = tmp_path / "tables"
+    tables.mkdir()
+    fifo = tables / "league.csv"
+    os.mkfifo(fifo)
+    run = subprocess.run([sys.executable, "-m", "experiments.cli", "tournament", "--teams", "idle,chaser",
+                          "--games", "1", "--cycles", "5", "--out", str(tmp_path / "r.sqlite"),
+                          "--tables", str(tables)], capture_output=True, text=True, timeout=120, cwd=tmp_path,
+                         env={**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[2])})
+    assert run.returncode == 2, run.stderr
+    assert "league.csv" in run.stderr and "not a regular file (a FIFO)" in run.stderr
+    assert stat.S_ISFIFO(os.stat(fifo).st_mode)
+    assert not (tmp_path / "r.sqlite").exists()  # refused before any match was stored
