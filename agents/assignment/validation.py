@@ -95,13 +95,8 @@ def as_costs(costs: object) -> np.ndarray:
     pairs = min(matrix.shape)
     if pairs:
         limit = np.finfo(np.float64).max / pairs
-        too_large = np.isfinite(matrix) & (matrix > limit)
-        if too_large.any():
-            i, j = np.argwhere(too_large)[0]
-            raise AssignmentError(
-                f"costs[{i}, {j}] is {float(matrix[i, j]):g}: with {pairs} pair(s) to assign, finite costs must be "
-                f"at most {limit:.4g} so that the total of an assignment stays finite"
-            )
+        _refuse_above(matrix, limit, f"with {pairs} pair(s) to assign, finite costs must be at most {limit:.4g} "
+                                     "so that the total of an assignment stays finite")
     return np.ascontiguousarray(matrix)
 
 
@@ -109,10 +104,12 @@ def check_squares(costs: np.ndarray, method: str) -> None:
     """Raise if a finite cost's square, or the total of the squares of an assignment, overflows
     to ``inf`` (methods that square costs)."""
     limit = np.sqrt(np.finfo(np.float64).max / max(1, min(costs.shape)))
+    _refuse_above(costs, limit, f"method {method!r} squares the costs, so finite costs must be at most {limit:.4g}")
+
+
+def _refuse_above(costs: np.ndarray, limit: float, why: str) -> None:
+    """AssignmentError naming the first finite cost above ``limit``, and ``why`` it may not be."""
     too_large = np.isfinite(costs) & (costs > limit)
     if too_large.any():
         i, j = np.argwhere(too_large)[0]
-        raise AssignmentError(
-            f"costs[{i}, {j}] is {float(costs[i, j]):g}: method {method!r} squares the costs, so finite "
-            f"costs must be at most {limit:.4g}"
-        )
+        raise AssignmentError(f"costs[{i}, {j}] is {float(costs[i, j]):g}: {why}")
