@@ -65,14 +65,13 @@ def connect(ray, workers: int | None, address: str | None, ship_code: bool) -> t
 
 def probe_address(target: str) -> None:
     """RayUnavailable, within :data:`ADDRESS_PROBE_SECONDS`, when nothing accepts a connection
-    at the cluster address ``target`` (``HOST:PORT``, or ``ray://HOST:PORT`` for Ray Client) as
-    Ray will dial it (Ray replaces a loopback host by this machine's address). ``auto`` and
-    addresses Ray cannot parse are left to Ray, which answers those at once."""
+    at the cluster address ``target`` (``HOST:PORT``, or ``ray://HOST:PORT`` for Ray Client),
+    dialled as given (a loopback address stays on loopback). ``auto`` and addresses Ray cannot
+    parse are left to Ray, which answers those at once."""
     import socket
 
     scheme, _, rest = target.rpartition("://")
-    dialled = rest if scheme else _as_ray_dials(target)
-    host, _, port_text = dialled.rpartition(":")
+    host, _, port_text = rest.rpartition(":")
     host = host.strip("[]")
     if not host or not port_text.isdigit():
         return
@@ -86,20 +85,8 @@ def probe_address(target: str) -> None:
         reason = exc.strerror or type(exc).__name__
     else:
         return
-    where = target if dialled in (target, rest) else f"{target} (dialled as {dialled})"
-    raise RayUnavailable(f"cannot reach the Ray cluster at {where}: {reason.lower()}; start it (ray start --head) "
+    raise RayUnavailable(f"cannot reach the Ray cluster at {target}: {reason.lower()}; start it (ray start --head) "
                          "or give the address of a running one")
-
-
-def _as_ray_dials(address: str) -> str:
-    """``address`` as Ray's driver dials it (a loopback host becomes this machine's address);
-    as given when Ray's helper for it is missing or refuses the address."""
-    try:
-        from ray._private.services import canonicalize_bootstrap_address
-
-        return canonicalize_bootstrap_address(address) or address
-    except Exception:  # noqa: BLE001 - a private helper of Ray: its absence or error leaves the address as given
-        return address
 
 
 @dataclass

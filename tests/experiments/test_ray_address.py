@@ -73,7 +73,6 @@ def test_an_address_that_never_answers_is_given_up_after_the_probe_time(monkeypa
 
 
 def test_auto_and_unparsable_addresses_are_left_to_ray(monkeypatch) -> None:
-    monkeypatch.setattr(ray_cluster, "_as_ray_dials", lambda address: address)
     monkeypatch.setattr(socket, "create_connection", lambda *a, **k: pytest.fail("nothing is to be dialled"))
     for address in ("auto", "local", "host-without-port"):
         probe_address(address)
