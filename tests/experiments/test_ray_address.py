@@ -11,7 +11,6 @@ from pathlib import Path
 
 import pytest
 
-from experiments.runner import ray_cluster
 from experiments.runner.ray_cluster import ADDRESS_PROBE_SECONDS, RayUnavailable, connect, probe_address
 
 ROOT = Path(__file__).resolve().parents[2]
