@@ -346,6 +346,9 @@ def _refusal(path: Path, meta: dict[str, str], tables: list[str], kind: str, con
     if "kind" not in meta:
         what = contents() if contents is not None else f"an SQLite database with tables {', '.join(tables)}"
         return f"{path}: not a soccer-sim results file ({what}); it is left untouched: use another results file"
+    if "matches" not in tables:                                # a results file whose matches are gone
+        return f"{path}: damaged results file (its matches table is missing); it is left untouched: " \
+               "use another results file"
     fresh = f"to start fresh, delete {path} or use another results file"
     if meta["kind"] != kind:
         return f"{path} holds the results of '{meta['kind']}', not '{kind}'; {fresh}"

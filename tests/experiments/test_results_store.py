@@ -63,3 +63,16 @@ def test_bad_paths_have_clear_messages(tmp_path) -> None:
         ResultStore.open(junk)
     with pytest.raises(ResultsError, match="no such results file"):
         ResultStore.open(tmp_path / "none.sqlite")
+
+
+def test_a_results_file_whose_matches_table_is_gone_is_refused_untouched(tmp_path) -> None:
+    import sqlite3
+
+    path = tmp_path / "r.sqlite"
+    ResultStore.create(path, "tournament", "h1", "{}", {}).close()
+    with sqlite3.connect(path) as db:
+        db.executescript("PRAGMA journal_mode=DELETE; DROP TABLE matches;")
+    before = path.read_bytes()
+    with pytest.raises(ResultsError, match="damaged results file .its matches table is missing"):
+        ResultStore.create(path, "tournament", "h1", "{}", {})
+    assert path.read_bytes() == before
