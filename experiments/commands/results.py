@@ -99,8 +99,9 @@ def run_show(args: argparse.Namespace) -> int:
                      f"({type(exc).__name__}: {exc})")
     mine = [r for r in records if r.key in wanted]
     failed = sum(not r.played for r in mine)
-    print(f"{args.file}: {kind}, {len(mine)} of {len(wanted)} matches stored ({failed} failed), "
-          f"configuration {meta.get('config_hash')}, code {sorted({r.code_version for r in mine}) or '-'}")
+    versions = ", ".join(sorted({r.code_version for r in mine})) or "-"
+    _print_note(f"{args.file}: {kind}, {len(mine)} of {len(wanted)} matches stored ({failed} failed), "
+                f"configuration {meta.get('config_hash')}, code {versions}")
     try:
         if out_dir is not None:
             out_dir.mkdir(parents=True, exist_ok=True)
@@ -110,3 +111,14 @@ def run_show(args: argparse.Namespace) -> int:
     except OSError as exc:
         return _fail(f"--tables {out_dir}: cannot write {describe(exc)}", 1)
     return 0
+
+
+def _print_note(text: str) -> None:
+    """One line of text; on a terminal wrapped to its width (piped: one line, as scripts read it)."""
+    import shutil
+    import sys
+    import textwrap
+
+    if sys.stdout.isatty():
+        text = textwrap.fill(text, width=shutil.get_terminal_size().columns, subsequent_indent="  ")
+    print(text)

@@ -169,8 +169,10 @@ def stdout_lacks(pattern: str) -> Check:
 
 
 def width_at_most(columns: int) -> Check:
+    """The printed lines fit ``columns`` columns on the terminal (colour and style escapes take none)."""
     def check(run: Run) -> str | None:
-        widest = max((len(line.rstrip("\r")) for line in run.stdout.splitlines()), default=0)
+        shown = re.sub(r"\x1b\[[0-9;?]*[A-Za-z]", "", run.stdout)
+        widest = max((len(line.rstrip("\r")) for line in shown.splitlines()), default=0)
         return f"a line {widest} columns wide" if widest > columns else None
 
     return check
