@@ -282,7 +282,8 @@ class Match:
         moves = self._collect_commands()
         home_frame, away_frame = self.frames
         tackling = home_frame.tackling or away_frame.tackling
-        tackle = self._tackles_asked() if tackling else self._no_tackles
+        # (with tackles switched off a tackle request is no command at all)
+        tackle = self._tackles_asked() if tackling and self.config.tackles.enabled else self._no_tackles
         moving = self._moving
         placing = state.play_mode == _KICK_OFF or state.play_mode == _AFTER_GOAL
         if placing:

