@@ -156,8 +156,12 @@ class Dribbler:
         dash, kick = np.zeros((self.n, 2)), np.zeros((self.n, 2))
         me, ball = view.own_pos[DRIBBLER], view.ball
         # one body command a cycle: it walks into the ball, pushing it on with its body (a
-        # walker pushes a ball it runs into), and so is a dashing player with the ball in reach
-        dash[DRIBBLER] = (ball - me) * 0.3 + (0.05, 0.0)
+        # walker pushes a ball it runs into: a dashing player with the ball in reach), and every
+        # tenth cycle with the ball in reach touches it forward instead
+        if view.cycle % 10 == 0 and np.hypot(*(ball - me)) < self.reach:
+            kick[DRIBBLER] = (me + (1.0, 0.0) - ball) * 0.3 + (0.25, 0.0)
+        else:
+            dash[DRIBBLER] = (ball - me) * 0.3 + (0.05, 0.0)
         return TeamCommand(dash=dash, kick=kick)
 
 
