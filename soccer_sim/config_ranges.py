@@ -48,8 +48,8 @@ class FieldRange:
             return self.optional
         if isinstance(value, bool) or not isinstance(value, numbers.Integral if self.integer else numbers.Real):
             return False
-        if math.isnan(value) or value > self.high:
-            return False
+        if (not isinstance(value, numbers.Integral) and math.isnan(value)) or value > self.high:
+            return False  # (an integer is never NaN, and math.isnan overflows on a huge one)
         return value > self.low if self.low_open else value >= self.low
 
     def describe(self) -> str:
@@ -218,4 +218,10 @@ def check_ranges(config: object) -> None:
     for name, allowed in FIELD_RANGES[owner].items():
         value = getattr(config, name)
         if not allowed.contains(value):
-            raise ConfigError(f"{owner}.{name} must be {allowed.describe()}, got {value!r}")
+            raise ConfigError(f"{owner}.{name} must be {allowed.describe()}, got {_shown(value)}")
+
+
+def _shown(value: object, longest: int = 40) -> str:
+    """``value``'s repr for an error line, cut short (a huge integer has hundreds of digits)."""
+    text = repr(value)
+    return text if len(text) <= longest else f"{text[:longest - 12]}... ({len(text)} characters)"
