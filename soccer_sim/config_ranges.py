@@ -105,7 +105,7 @@ FIELD_RANGES: dict[str, dict[str, FieldRange]] = {
         "back_dash_rate": _fraction(),
         "dash_heading_speed": _positive(100.0, "m/cycle"),
         "player_decay": _fraction("per cycle"),
-        "ball_decay": _fraction("per cycle"),
+        "ball_decay": FieldRange(0.0, 1.0, "per cycle", low_open=True),  # (the kick noise divides by it)
         "ball_speed_max": _positive(100.0, "m/cycle"),
         "kick_speed_max": _positive(100.0, "m/cycle"),
         "kickable_margin": _length(10.0),
