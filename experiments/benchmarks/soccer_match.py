@@ -28,7 +28,7 @@ if TYPE_CHECKING:
 
 COUNTED = ("goals", "shots", "shots ending on a body", "passes", "kicks", "tackles", "tackles won", "fouls",
            "corners", "kick-ins", "goal kicks", "free kicks", "offside calls", "goalkeeper catches",
-           "set-play retakes", "dropped balls", "teammate contacts")
+           "set-play retakes", "dropped balls", "teammate contacts", "body commands dropped")
 """The counted figures, in table order (the per-cycle ones follow, then distance by role)."""
 ROLE_PREFIX = "distance run by "
 """Prefix of the per-role figures' names: ``distance run by LABEL (km per player)``."""
@@ -146,6 +146,7 @@ def counted_figures(result: MatchResult) -> dict[str, float | None]:
         "set-play retakes": both("goal_kick_retake"),
         "dropped balls": float(report.drop_balls),
         "teammate contacts": float(home.teammate_contacts + away.teammate_contacts),
+        "body commands dropped": float(home.ignored_commands + away.ignored_commands),
     }
 
 

@@ -43,7 +43,8 @@ from experiments.benchmarks.soccer_plays import PlayFigures
 from soccer_sim.rcg import GameLog
 from soccer_sim.rcg.mapping import BALL_COLLIDE, GOALIE, MAX_PLAYER, STAND, TACKLE, TACKLE_FAULT
 
-NOT_IN_A_LOG = ("shots", "shots ending on a body", "passes", "set-play retakes", "teammate contacts")
+NOT_IN_A_LOG = ("shots", "shots ending on a body", "passes", "set-play retakes", "teammate contacts",
+               "body commands dropped")
 """Counted figures a game log cannot give (see the module docstring)."""
 HALF_LENGTH = 52.5
 """Half the length of rcssserver's pitch (m; a constant of the server, not in the log)."""
