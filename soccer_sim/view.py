@@ -1,7 +1,7 @@
 """Team-relative views and the conversion of team commands back to the absolute frame.
 
 Every team sees the world as if it attacked towards +x. When a team attacks towards -x in
-the absolute frame (the away team in the first half, the home team in the second), its
+the absolute frame (the away team; the teams keep their ends at half time), its
 frame is the absolute one turned by 180° about the centre spot: ``(x, y) -> (-x, -y)`` for
 positions and vectors alike. A rotation (not a reflection) keeps left and right as the
 players see them, and it is its own inverse, so commands go back with the same sign.

@@ -62,7 +62,7 @@ def draw_replay(replay: Replay, path: str | os.PathLike, cycle: int | None = Non
     score = replay.score[k]
     minute = cycle / (physics or PhysicsConfig()).cycles_per_minute
     ax.set_title(f"cycle {cycle} ({minute:.1f} min): {int(score[0])} - {int(score[1])}  "
-                 f"(home red attacks +x in the first half; crosses: role targets)")
+                 f"(home red attacks +x; crosses: role targets)")
     hl, hw, m = field.length / 2, field.width / 2, field.margin
     ax.set_xlim(-hl - m, hl + m)
     ax.set_ylim(-hw - m, hw + m)
