@@ -10,3 +10,27 @@ def outcome(records) -> list[tuple]:
     """What must not depend on workers, backend or resuming: key, score, statistics, failure."""
     return [(r.home, r.away, r.seed, r.config_hash, r.home_goals, r.away_goals, r.cycles, r.home_stats,
              r.away_stats, r.error, r.forfeit) for r in records]
+
+
+def start_until_in_act(argv: list[str], marker, root, bound: float):
+    """Start ``argv`` (a subprocess with the project on its path and pipes for its output) whose
+    team touches ``marker`` when its worker is inside ``act()`` (:data:`scripted_teams.MARKER_VARIABLE`),
+    and return the process once that happened (an AssertionError after ``bound`` seconds or if it
+    ended first)."""
+    import os
+    import subprocess
+    import time
+
+    from tests.experiments.scripted_teams import MARKER_VARIABLE
+
+    env = {**os.environ, MARKER_VARIABLE: str(marker),
+           "PYTHONPATH": os.pathsep.join([str(root), os.environ.get("PYTHONPATH", "")])}
+    process = subprocess.Popen(argv, cwd=root, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + bound
+    while not marker.exists():
+        if process.poll() is not None or time.monotonic() >= deadline:
+            process.kill()
+            out, err = process.communicate()
+            raise AssertionError(f"the match never reached act() (exit {process.returncode}): {err[-2000:]}")
+        time.sleep(0.05)
+    return process

@@ -3,14 +3,10 @@ the middle of a match: no match played on for nobody, no BrokenPipeError traceba
 
 from __future__ import annotations
 
-import os
-import subprocess
 import sys
-import time
 from pathlib import Path
 
-from tests.experiments.helpers import SCRIPTED
-from tests.experiments.scripted_teams import MARKER_VARIABLE
+from tests.experiments.helpers import SCRIPTED, start_until_in_act
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -28,17 +24,9 @@ run_matches([MatchSpec("idle", "{SCRIPTED}MarkingHangingTeam", 0, 100)], sys.arg
 
 
 def test_the_workers_of_a_killed_run_end_quietly(tmp_path) -> None:
-    marker = tmp_path / "match-under-way"
-    env = {**os.environ, MARKER_VARIABLE: str(marker),
-           "PYTHONPATH": os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")])}
-    run = subprocess.Popen([sys.executable, "-c", RUN, str(tmp_path / "r.sqlite")], cwd=ROOT, env=env,
-                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    run = start_until_in_act([sys.executable, "-c", RUN, str(tmp_path / "r.sqlite")],
+                             tmp_path / "match-under-way", ROOT, HANG_BOUND)
     try:
-        deadline = time.monotonic() + HANG_BOUND
-        while not marker.exists():  # the worker is inside the team's act()
-            assert run.poll() is None, run.communicate()
-            assert time.monotonic() < deadline, "the match never started"
-            time.sleep(0.05)
         run.kill()
         run.wait()
         # The pipes reach their end once every process holding them (the workers) has ended.

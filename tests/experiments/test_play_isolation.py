@@ -12,7 +12,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from tests.experiments.helpers import SCRIPTED
+from tests.experiments.helpers import SCRIPTED, start_until_in_act
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -75,22 +75,11 @@ def test_what_a_team_prints_stays_out_of_the_json_report() -> None:
 
 def test_ctrl_c_while_the_worker_plays_stops_it_and_exits_130(tmp_path) -> None:
     import signal
-    import time
 
-    from tests.experiments.scripted_teams import MARKER_VARIABLE
-
-    marker = tmp_path / "match-under-way"
-    env = {**os.environ, MARKER_VARIABLE: str(marker),
-           "PYTHONPATH": os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")])}
-    player = subprocess.Popen([sys.executable, "-m", "experiments.cli", "play", "idle", SCRIPTED + "MarkingHangingTeam",
-                               "--cycles", "40"], cwd=ROOT, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                              text=True)
+    player = start_until_in_act([sys.executable, "-m", "experiments.cli", "play", "idle",
+                                 SCRIPTED + "MarkingHangingTeam", "--cycles", "40"],
+                                tmp_path / "match-under-way", ROOT, HANG_BOUND)
     try:
-        deadline = time.monotonic() + HANG_BOUND
-        while not marker.exists():  # the worker is inside the team's act()
-            assert player.poll() is None, player.communicate()
-            assert time.monotonic() < deadline, "the match never started"
-            time.sleep(0.05)
         player.send_signal(signal.SIGINT)
         out, err = player.communicate(timeout=HANG_BOUND)  # ends once play and its worker have ended
     finally:
