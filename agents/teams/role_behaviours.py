@@ -115,12 +115,14 @@ class RoleBehaviours:
         self.codes = positions.position_codes(formation_set)
         """Each role's position code (index into :data:`agents.teams.positions.POSITIONS`)."""
         p = self.params
-        self._packed = np.array([*astuple(p), half_length, half_width], dtype=np.float64)
+        self.packed = np.array([*astuple(p), half_length, half_width], dtype=np.float64)
+        """The parameters as :func:`adjust_role_targets` reads them (:class:`RoleParams` in field
+        order, then the half length and half width)."""
 
     def adjust(self, targets: np.ndarray, attacking: bool, ball: np.ndarray, opp_pos: np.ndarray) -> None:
         """Move ``targets`` ((roles, 2), team frame, in place) by each role's behaviour for the
         ball at ``ball`` (where it will be controlled) and the opponents at ``opp_pos``."""
-        adjust_role_targets(targets, self.codes, opp_pos, float(ball[0]), float(ball[1]), attacking, self._packed)
+        adjust_role_targets(targets, self.codes, opp_pos, float(ball[0]), float(ball[1]), attacking, self.packed)
 
 
 @njit(cache=True, nogil=True)

@@ -196,6 +196,17 @@ class Shape:
         self._rows = np.zeros(max(params.support_players, 1), dtype=np.int64)
         self._spots = np.zeros((max(params.support_players, 1), 2))
 
+    @property
+    def knobs(self) -> np.ndarray:
+        """The block's and the settled targets' constants (:mod:`agents.teams.shape_kernels`'
+        ``KNOBS`` layout), a copy."""
+        return self._knobs.copy()
+
+    @property
+    def support_knobs(self) -> np.ndarray:
+        """The support spots' constants (:func:`~agents.teams.shape_kernels.support_spots`), a copy."""
+        return self._support_knobs.copy()
+
     def restart(self) -> None:
         """Start the block and the targets afresh next cycle (no pace limit from stale ones):
         for a brain that did not act last cycle."""

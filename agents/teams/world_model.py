@@ -25,6 +25,7 @@ which team-mates far from the ball use to keep theirs fresh.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -33,6 +34,26 @@ from agents.teams.belief_kernels import AGE_NEVER, own_kicks
 from agents.teams.belief_record import hear_and_believe, hear_block_and_believe, new_record
 from soccer_sim.config import MatchConfig
 from soccer_sim.perception.views import HeardLog, PlayerViews
+from soccer_sim.state import NO_PLAYER, PlayMode
+from soccer_sim.team import SideInfo, TeamView
+
+
+class Senses(NamedTuple):
+    """What each player of a team senses of itself this cycle, whatever it believes of the
+    rest ((n, ...) arrays, team frame, metres, m/cycle): the rows the pipeline's dashes and its
+    choice of who decides on the ball read."""
+
+    position: np.ndarray
+    velocity: np.ndarray
+    effort: np.ndarray
+    stamina: np.ndarray
+    capacity: np.ndarray
+    holds: np.ndarray
+    """(n,) bool: the player holds the ball (a goalkeeper's catch)."""
+    present: np.ndarray
+    """(n,) bool: the player is on the field (not sent off)."""
+    saw: np.ndarray
+    """(n,) bool: the player received a see this cycle (every cycle under full observation)."""
 
 
 @dataclass(frozen=True)
@@ -58,11 +79,73 @@ class BeliefParams:
     """... plus this (m)."""
 
 
+class TruthBeliefs:
+    """Full observation as a world model: every player believes the truth, so a team holds
+    one belief row (row 0, what the team view says), which every player takes its world from
+    (:attr:`belief_of`). The same arrays as :class:`TeamBeliefs` (with one row), so the
+    pipeline reads both alike; the truth needs no messages."""
+
+    talks = False
+    """Whether the players keep their beliefs fresh through the say channel (no: nothing to tell)."""
+
+    def __init__(self, n: int, m: int) -> None:
+        self.n, self.m = n, m
+        self.ball = np.zeros((1, 2))
+        self.ball_vel = np.zeros((1, 2))
+        self.ball_age = np.zeros(1, dtype=np.int64)
+        self.mate_pos = np.zeros((1, n, 2))
+        self.mate_vel = np.zeros((1, n, 2))
+        self.mate_effort = np.ones((1, n))
+        self.opp_pos = np.zeros((1, m, 2))
+        self.opp_vel = np.zeros((1, m, 2))
+        self.belief_of = np.zeros(n, dtype=np.int64)
+        """(n,) the belief row each player takes its world from: row 0 for all."""
+        self.view: TeamView | None = None
+        self._holds = np.zeros(n, dtype=bool)
+        self._saw = np.ones(n, dtype=bool)
+
+    def update(self, view: TeamView, votes: tuple[np.ndarray, np.ndarray] | None = None) -> Senses:
+        """Row 0 becomes the team view's truth; returns the players' senses of this cycle."""
+        self.view = view
+        self.ball[0] = view.ball
+        self.ball_vel[0] = view.ball_vel
+        self.mate_pos[0] = view.own_pos
+        self.mate_vel[0] = view.own_vel
+        self.mate_effort[0] = view.effort
+        self.opp_pos[0] = view.opp_pos
+        self.opp_vel[0] = view.opp_vel
+        self._holds[:] = False
+        if view.ball_holder != NO_PLAYER and 0 <= view.ball_holder < self.n:
+            self._holds[view.ball_holder] = True
+        return Senses(view.own_pos, view.own_vel, view.effort, view.stamina, view.capacity, self._holds,
+                      view.present, self._saw)
+
+    def view_of(self, b: int) -> TeamView:
+        """Belief ``b`` (0) as a team view: the team view itself."""
+        assert self.view is not None, "view_of before update"
+        return self.view
+
+    def kicked(self, kick: np.ndarray, kickable: float) -> None:
+        """The truth needs no telling what the players kicked."""
+
+    def world_messages(self, present: np.ndarray) -> list[str | None]:
+        """Nothing to say."""
+        return []
+
+
 class TeamBeliefs:
     """The world models of a team's ``n`` players about ``m`` opponents (module docstring)."""
 
-    def __init__(self, n: int, m: int, config: MatchConfig, params: BeliefParams = BeliefParams()) -> None:
+    talks = True
+    """Whether the players keep their beliefs fresh through the say channel (yes: world messages
+    and role votes)."""
+
+    def __init__(self, n: int, m: int, config: MatchConfig, params: BeliefParams = BeliefParams(),
+                 side_info: SideInfo | None = None) -> None:
         self.n, self.m, self.params = n, m, params
+        self.side_info = side_info
+        """The side the players play on (its goalkeeper and player types, for :meth:`view_of`;
+        None: no goalkeeper, default types)."""
         self._ball_decay = float(config.physics.ball_decay)
         self._ball_speed_max = float(config.physics.ball_speed_max)
         self.ball = np.zeros((n, 2))
@@ -80,7 +163,19 @@ class TeamBeliefs:
         self.opp_age = np.full((n, m), AGE_NEVER, dtype=np.int64)
         self._last_seen = np.zeros((n, 2))
         self._last_seen_cycle = np.full(n, -AGE_NEVER, dtype=np.int64)
+        self.mate_vel = np.zeros((n, n, 2))
+        """(n, n, 2) the velocity player i believes team-mate j has: its own sensed one, zero for
+        the others (it cannot tell how they move)."""
+        self.mate_effort = np.ones((n, n))
+        """(n, n) the effort player i believes team-mate j has: its own for everybody."""
+        self.opp_vel = np.zeros((n, m, 2))
+        """(n, m, 2) the velocity player i believes opponent k has: zero (it cannot tell)."""
+        self.belief_of = np.arange(n, dtype=np.int64)
+        """(n,) the belief row each player takes its world from: its own."""
         self._rows = np.arange(n)
+        self._views: list[TeamView] = []
+        self._goalie = side_info.goalie_index if side_info is not None else -1
+        self._last: PlayerViews | None = None
         self._params = np.array([params.ball_gain, params.ball_velocity_gain, params.ball_noise_share, params.near,
                                  params.gate_share, params.gate_floor])
         self.record = new_record((self.ball, self.ball_vel, self.ball_age, self.mate_pos, self.mate_age, self.opp_pos,
@@ -90,14 +185,19 @@ class TeamBeliefs:
         self._no_votes = (np.zeros((n, n, 0), dtype=np.int64), np.zeros((n, n), dtype=np.int64))
         """An empty vote book's arrays, for an update that keeps no votes."""
 
-    def update(self, views: PlayerViews, votes: tuple[np.ndarray, np.ndarray] | None = None) -> None:
+    def update(self, views: PlayerViews, votes: tuple[np.ndarray, np.ndarray] | None = None) -> Senses:
         """One cycle of every player's model from its own row of ``views`` and the team-mates'
         messages it heard (module docstring). With ``votes`` (a
         :class:`~agents.roles.voting.VoteBook`'s ``votes`` and ``vote_cycle``) the votes among
         those messages are stored there too: one compiled call
         (:func:`~agents.teams.belief_record.hear_and_believe`; for a match's
         :class:`~soccer_sim.perception.views.HeardLog` of messages all of our length,
-        :func:`~agents.teams.belief_record.hear_block_and_believe` on the delivery itself)."""
+        :func:`~agents.teams.belief_record.hear_block_and_believe` on the delivery itself).
+        Returns the players' senses of this cycle."""
+        self._last = views
+        rows = self._rows
+        self.mate_vel[rows, rows] = views.velocity
+        self.mate_effort[:] = views.effort[:, None]
         log = views.heard_mates
         votes_of = votes if votes is not None else self._no_votes
         said = said_bytes(log.messages) if isinstance(log, HeardLog) else None
@@ -106,12 +206,55 @@ class TeamBeliefs:
                                    views.seen_count, views.seen_position, views.seen_side, views.seen_number,
                                    views.seen_distance, views.position, log.heard, said, DIGIT_OF_BYTE, DECODING,
                                    CODES, *votes_of, views.cycle)
-            return
+            return self._senses(views)
         listeners, speakers, texts = heard_pairs(log)
         hear_and_believe(self.record, views.ball_seen, views.ball, views.ball_distance, views.saw, views.seen_count,
                          views.seen_position, views.seen_side, views.seen_number, views.seen_distance,
                          views.position, listeners, speakers, text_digits(texts), DECODING, CODES,
                          *votes_of, views.cycle)
+        return self._senses(views)
+
+    @staticmethod
+    def _senses(views: PlayerViews) -> Senses:
+        return Senses(views.position, views.velocity, views.effort, views.stamina, views.capacity, views.holds_ball,
+                      views.present, views.saw)
+
+    def view_of(self, b: int) -> TeamView:
+        """Player ``b``'s beliefs as a team view (team-mates and opponents where it believes them,
+        their velocities unknown and taken as zero, everyone's stamina its own; its own rows
+        from its own senses), for the skills that read a team view."""
+        views = self._last
+        assert views is not None, "view_of before update"
+        if not self._views:
+            n, m, side = self.n, self.m, self.side_info
+            own_types = np.array(side.own_types if side is not None and side.own_types else (0,) * n, dtype=np.intp)
+            opp_types = np.array(side.opponent_types if side is not None and side.opponent_types else (0,) * m,
+                                 dtype=np.intp)
+            self._views = [TeamView(own_pos=np.zeros((n, 2)), own_vel=np.zeros((n, 2)), opp_pos=np.zeros((m, 2)),
+                                    opp_vel=np.zeros((m, 2)), ball=np.zeros(2), ball_vel=np.zeros(2),
+                                    stamina=np.zeros(n), effort=np.ones(n), capacity=np.full(n, np.inf),
+                                    frozen=np.zeros(n, dtype=np.int64), own_types=own_types,
+                                    opp_types=opp_types) for _ in range(n)]
+        view = self._views[b]
+        view.own_pos[:] = self.mate_pos[b]
+        view.own_vel[:] = self.mate_vel[b]
+        view.opp_pos[:] = self.opp_pos[b]
+        view.ball[:] = self.ball[b]
+        view.ball_vel[:] = self.ball_vel[b]
+        view.stamina[:] = views.stamina[b]
+        view.effort[:] = views.effort[b]
+        view.capacity[:] = views.capacity[b]
+        view.frozen[:] = 0
+        view.frozen[b] = views.frozen[b]
+        view.play_mode, view.mode_ours, view.score = views.play_mode, views.mode_ours, views.score
+        view.cycle, view.half = views.cycle, views.half
+        if views.holds_ball[b]:
+            view.ball_holder = b
+        elif views.play_mode == PlayMode.GOALIE_HOLDS and views.mode_ours and self._goalie >= 0:
+            view.ball_holder = self._goalie
+        else:
+            view.ball_holder = NO_PLAYER
+        return view
 
     def kicked(self, kick: np.ndarray, kickable: float) -> None:
         """Each player's own kicks of this cycle (``kick`` (n, 2) m/cycle, team frame; zero rows
