@@ -70,13 +70,13 @@ def test_a_change_in_a_called_module_recompiles_the_caller(tmp_path: Path) -> No
 
 def test_the_projects_kernels_depend_on_the_kernels_they_call() -> None:
     from agents.assignment.scram import mmdr_points
-    from agents.teams.own_view_state import before_roles_of
+    from agents.teams.pipeline_kernels import derive_worlds
 
     assert type(mmdr_points._cache._impl._locator).__name__.startswith("Project")
-    files = set(kernel_cache.dependencies(ROOT / "agents" / "teams" / "own_view_state.py"))
-    assert {"agents/teams/own_view_kernels.py", "agents/skills/interception_kernels.py",
+    files = set(kernel_cache.dependencies(ROOT / "agents" / "teams" / "pipeline_kernels.py"))
+    assert {"agents/teams/shape_kernels.py", "agents/skills/interception_kernels.py",
             "formations/interpolation_kernels.py", "agents/roles/voting.py"} <= files
     assert "agents/assignment/deletion.py" in kernel_cache.dependencies(ROOT / "agents" / "assignment" / "scram.py")
     assert "soccer_sim/match.py" not in files  # not imported by any kernel module on the way
-    assert before_roles_of._cache._impl._locator.get_source_stamp() == kernel_cache.dependency_stamp(
-        ROOT / "agents" / "teams" / "own_view_state.py")
+    assert derive_worlds._cache._impl._locator.get_source_stamp() == kernel_cache.dependency_stamp(
+        ROOT / "agents" / "teams" / "pipeline_kernels.py")

@@ -68,6 +68,9 @@ class BeliefDecisions:
         self.goals = np.zeros((n, 2))
         self.urgent = np.zeros(n, dtype=bool)
         self.mode_key: tuple[int, bool] = (-1, False)
+        self.mode_since = 0
+        """The cycle the play mode began, as this belief knows it (a retake of its own set play
+        begins it anew)."""
         self.last_cycle = -2
         """The cycle this belief last decided (a gap: it forgets what holds from cycle to cycle)."""
         self.dribble_dash: np.ndarray | None = None
@@ -82,7 +85,8 @@ class BeliefDecisions:
                eligible: np.ndarray) -> bool:
         """The belief's decisions of this cycle (module docstring) on ``view`` and ``race``;
         only ``rows`` ((n,) bool: the players who take their world from it) are written into
-        the team's ``goals``, ``urgent`` and ``command``. ``ball_player``: the player of ours
+        the team's ``goals``, ``urgent`` and ``command``. ``mode_since``: the cycle the play
+        mode began. ``ball_player``: the player of ours
         the belief sends to the ball (-1: none). ``in_flight``: the belief's memory
         that our pass is in flight, ``eligible`` (n,) who of ours may play it (not offside when
         it was played). Returns whether the belief kicked."""
@@ -97,7 +101,8 @@ class BeliefDecisions:
         g, u = self.goals, self.urgent
         g[:] = goals
         u[:] = urgent
-        if self.last_cycle != view.cycle - 1:  # it did not decide last cycle: its set play is new to it
+        woken = self.last_cycle != view.cycle - 1
+        if woken:  # it did not decide last cycle: the play mode is new to it (and began at mode_since)
             self.mode_key = (-1, False)
         self.last_cycle = view.cycle
         set_plays = self.set_plays
@@ -107,6 +112,7 @@ class BeliefDecisions:
             if mode != PlayMode.PLAY_ON:
                 set_plays.begin(view)
             self.mode_key = key
+            self.mode_since = mode_since if woken else view.cycle  # (a retaken set play begins anew)
         # Each cycle the taker is chosen afresh from what the belief holds now: a choice made on
         # stale beliefs (each player sure another is nearer) would leave the ball untaken.
         rechoose = view.mode_ours and mode in RECHOSEN
@@ -115,14 +121,15 @@ class BeliefDecisions:
             set_plays.taker = -1
         elif mode == PlayMode.KICK_OFF and view.mode_ours and self.kick_off_taker >= 0:
             set_plays.taker = self.kick_off_taker
+        since = self.mode_since
         if mode == PlayMode.PLAY_ON:
             self._play_on(view, race, ball_player, own, in_flight, eligible)
         elif mode in (PlayMode.KICK_OFF, PlayMode.AFTER_GOAL):
-            set_plays.kick_off(view, g, own, u, mode_since)
+            set_plays.kick_off(view, g, own, u, since)
         elif mode == PlayMode.GOALIE_HOLDS:
-            set_plays.goalie_holds(view, g, own, mode_since)
+            set_plays.goalie_holds(view, g, own, since)
         else:
-            set_plays.set_play(view, g, own, u, mode_since)
+            set_plays.set_play(view, g, own, u, since)
         if rechoose and set_plays.taker != taker:
             set_plays.routine = None  # the next cycle's routine is made around the new taker
         return self._take_rows(rows, goals, urgent, command)

@@ -148,4 +148,4 @@ class FormationTeam:
         b = int(pipeline.world.belief_of[outfield[0]]) if len(outfield) else 0
         return team_drawing(self.formation_set.formation(pipeline.situation(b)), pipeline.targets[b],
                             pipeline.match_roles[b], pipeline.goals, outfield,
-                            pipeline.followed[b] if len(outfield) else None)
+                            pipeline.followed[b] if len(outfield) and pipeline.cycles else None)

@@ -69,10 +69,11 @@ from soccer_sim.perception.views import PlayerViews
 from soccer_sim.state import SET_PLAYS, PlayMode
 from soccer_sim.team import SideInfo, TeamCommand, TeamView
 
-ASSIGN_EVERY = 4
+ASSIGN_EVERY = 2
 """Cycles between a belief's assignments at least (it assigns on the cycles its believer sees,
-and at once when the play mode changes): its inputs move little in 0.4 s, and the assignment
-it follows is kept between."""
+and at once when the play mode changes): the players' votes travel every other cycle (world
+messages on the others), so an assignment made more often could not be agreed on any faster,
+and a belief's inputs move little in 0.2 s; the assignment it follows is kept between."""
 
 RACE_NEAR = 20.0
 """A belief whose ball is within this (m) of one of its players runs its ball race again on
@@ -158,7 +159,7 @@ class Pipeline:
                 assigner.reset(k, child)
                 if leave is not None:
                     leave.reset(outfield, n, child)
-        first = self.assigners[0]
+        first = self.assigners[0] if rows else setup.make_assigner()
         self._steers = type(first).steer is not RoleAssigner.steer
         self._batches = type(first).assign_rows is not RoleAssigner.assign_rows
         scales = time_scales(side_info.player_types, side_info.own_types, outfield, config)
@@ -190,6 +191,10 @@ class Pipeline:
         self.goals = np.zeros((n, 2))
         self.urgent = np.zeros(n, dtype=bool)
         self.attacking = np.zeros(rows, dtype=bool)
+        self.previous = np.zeros((rows, roles, 2))
+        """(rows, roles, 2) each belief's role targets of the last cycle (its targets move at the block's pace)."""
+        self.block = np.zeros((rows, 3))
+        """(rows, 3) each belief's block: the formation's query point (x, y) and its shift up the field."""
         self.our_cycles = np.zeros((rows, n), dtype=np.int64)
         self.our_points = np.zeros((rows, n, 2))
         self.our_first = np.full(rows, -1, dtype=np.int64)
@@ -221,6 +226,8 @@ class Pipeline:
         """The team's role figures: each player's distance to the target of the role it follows."""
         self._mode_key: tuple[int, bool] = (-1, False)
         self._mode_since = 0
+        self.cycles = 0
+        """Cycles this pipeline has acted (0: no assignment made yet)."""
         self._situation = Situation.NORMAL
         self._play_on_cycles = self._conflict_cycles = self._unfilled_cycles = 0
         self._goal_kick_keeper = style.goalkeeper_goal_kicks and goalie >= 0
@@ -256,10 +263,10 @@ class Pipeline:
             tables_our_set_play=tables[Situation.OUR_SET_PLAY], tables_their_set_play=tables[Situation.THEIR_SET_PLAY],
             tables_normal=tables[Situation.NORMAL],
             attacking=self.attacking, pending=np.zeros(rows, dtype=np.int64), in_play=np.zeros(rows, dtype=bool),
-            block=np.zeros((rows, 3)), our_cycles=self.our_cycles, our_points=self.our_points,
+            block=self.block, our_cycles=self.our_cycles, our_points=self.our_points,
             our_first=self.our_first, their_cycles=self.their_cycles, their_points=self.their_points,
             their_first=self.their_first, their_cycle=self.their_cycle, win_point=self.win_point,
-            previous=np.zeros((rows, roles, 2)), primed=np.zeros(rows, dtype=bool), named_ball=self.named_ball,
+            previous=self.previous, primed=np.zeros(rows, dtype=bool), named_ball=self.named_ball,
             proposals=self.proposals, followed=self.followed, following=self.following, rank=self.rank,
             match_roles=self.match_roles, full=self._full, targets=self.targets, rows=self._rows,
             outfield_rows=self._outfield_rows, belief_rows=self._belief_rows, due=self._due,
@@ -281,6 +288,7 @@ class Pipeline:
     def act(self, view: TeamView | PlayerViews) -> TeamCommand:
         """Every player's command for this cycle (module docstring)."""
         n, command, world, s = self.n, self.command, self.world, self.state
+        self.cycles += 1
         cycle, mode, ours = view.cycle, view.play_mode, bool(view.mode_ours)
         votes = (self.votes.votes, self.votes.vote_cycle) if self.votes is not None else None
         senses = world.update(view, votes)
@@ -331,6 +339,8 @@ class Pipeline:
             move = command.move = senses.position.copy()
             move[self._deciding] = self.goals[self._deciding]
         kicked = self._decide(beliefs) if n_on_ball else self._no_kicks
+        if world.talks:  # a player knows what it just kicked
+            world.kicked(command.kick, self._kickable + 0.2)
         # 6. dashes, what the players say, the figures
         say_world = cycle % 2 == 0 or self.votes is None
         switches, mean, largest, far, shared, empty = dash_and_say(
@@ -342,7 +352,6 @@ class Pipeline:
             self._count_conflicts(shared, empty)
         self._remember_passes(beliefs, kicked, play_on, view)
         if world.talks:
-            world.kicked(command.kick, self._kickable + 0.2)
             command.say = digit_messages(self._digits, senses.present)
         return command
 

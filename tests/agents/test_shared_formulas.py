@@ -16,8 +16,7 @@ import pytest
 
 import agents.skills.ball_kernels as ball_kernels
 import agents.skills.passing as passing
-import agents.teams.own_view_after as own_view_after
-import agents.teams.own_view_kernels as own_view_kernels
+import agents.teams.pipeline_kernels as pipeline_kernels
 import agents.teams.role_behaviours as role_behaviours
 import agents.teams.role_kernels as role_kernels
 import agents.teams.shape as shape
@@ -29,7 +28,7 @@ from soccer_sim.rules import offside
 ROOT = Path(__file__).resolve().parents[2]
 
 
-@pytest.mark.parametrize("module", [ball_kernels, passing, own_view_after, own_view_kernels, role_behaviours,
+@pytest.mark.parametrize("module", [ball_kernels, passing, pipeline_kernels, role_behaviours,
                                     role_kernels, shape])
 def test_the_agents_keep_players_onside_by_the_referees_offside_line(module) -> None:
     assert module.offside_line is offside.offside_line

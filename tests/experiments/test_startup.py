@@ -147,7 +147,6 @@ def test_partial_observation_adds_the_see_model_and_the_world_models() -> None:
     added = {k.name for k in partial - full}
     assert "soccer_sim.perception.kernels:perceive" in added
     assert "agents.teams.belief_record:hear_block_and_believe" in added
-    assert "agents.teams.own_view_state:before_roles_of" in added
     assert partial - full == {Kernel(*KERNELS[i]) for i in TEAMS[PARTIAL_ENTRY]} - full
     assert observation_of(paired_specs("mmdr", "chaser", 2, 0, 100, "partial")) == "partial"
     assert observation_of(paired_specs("mmdr", "chaser", 2, 0, 100)) == "full"

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from agents.assignment import assign
+from agents.teams.pipeline_kernels import ball_player
 from agents.teams import FormationTeam, TeamStyle, builtin
 from agents.teams.ball_role import covered_role
 from soccer_sim import MatchConfig, PlayMode, SideInfo
@@ -43,18 +44,24 @@ def _act(assigner: str, ball_role: str) -> tuple[FormationTeam, int, np.ndarray]
     team = _ready(FormationTeam(assigner, TeamStyle(ball_role=ball_role)))
     view = _situation()
     team.act(view)
-    ball_row = team._ball_player(view, None) if ball_role == "leave" else -1
-    return team, ball_row, team.targets[team._outfield_roles]
+    pipeline = team.pipeline
+    ball_row = int(ball_player(pipeline.state, 0)) if ball_role == "leave" else -1
+    return team, ball_row, pipeline.targets[0][pipeline.match_roles[0]]
+
+
+def _roles(team: FormationTeam) -> np.ndarray:
+    """The outfield players' roles (indices into the outfield roles) the team follows."""
+    return team.pipeline.followed[0]
 
 
 def test_leave_takes_the_ball_player_out_of_the_matching() -> None:
     team, ball_row, targets = _act("mmdr", "leave")
     assert ball_row >= 1  # an outfield player goes for the ball
-    roles = team.role_of_player
+    roles = _roles(team)
     assert sorted(roles.tolist()) == list(range(10))  # still every role held once
     i = ball_row - 1  # outfield row
-    point = team.goals[ball_row]  # where it runs: its interception point
-    assert np.hypot(*(point - team._situation_and_ball(_situation(), _race(team))[1])) < 1e-9
+    point = team.pipeline.goals[ball_row]  # where it runs: its interception point
+    assert np.hypot(*(point - team.pipeline.win_point[0])) < 1e-9
     covered = covered_role(targets, point)
     assert roles[i] == covered  # it holds the role whose target is nearest its interception point
     assert covered == int(np.argmin(np.hypot(*(targets - point).T)))
@@ -66,32 +73,26 @@ def test_leave_takes_the_ball_player_out_of_the_matching() -> None:
     assert roles[rows].tolist() == expected.tolist()
     # Everybody but the ball player runs to its role's target: the nine remaining roles are filled.
     others = np.array(rows) + 1
-    assert np.allclose(team.goals[others], targets[roles[rows]])
-
-
-def _race(team: FormationTeam):
-    from agents import skills
-
-    return skills.ball_race(team.skills, _situation(), None, their_first_only=True)
+    assert np.allclose(team.pipeline.goals[others], targets[roles[rows]])
 
 
 def test_keep_matches_all_ten_players_to_all_ten_roles() -> None:
     team, _, targets = _act("mmdr", "keep")
     expected = assign(_situation().own_pos[1:], targets, "mmdr").target_of
-    assert team.role_of_player.tolist() == expected.tolist()
+    assert _roles(team).tolist() == expected.tolist()
     leave_team, _, _ = _act("mmdr", "leave")
-    assert leave_team.role_of_player.tolist() != team.role_of_player.tolist()  # the option changes the matching
+    assert _roles(leave_team).tolist() != _roles(team).tolist()  # the option changes the matching
 
 
 def test_static_leave_swaps_the_covered_role_with_the_ball_players_own() -> None:
     team, ball_row, targets = _act("static", "leave")
     i = ball_row - 1
-    covered = covered_role(targets, team.goals[ball_row])
+    covered = covered_role(targets, team.pipeline.goals[ball_row])
     expected = np.arange(10)
     expected[i], expected[covered] = covered, i
-    assert covered != i and team.role_of_player.tolist() == expected.tolist()
+    assert covered != i and _roles(team).tolist() == expected.tolist()
     keep, _, _ = _act("static", "keep")
-    assert keep.role_of_player.tolist() == list(range(10))
+    assert _roles(keep).tolist() == list(range(10))
 
 
 def test_leave_only_in_play_on() -> None:
@@ -99,8 +100,8 @@ def test_leave_only_in_play_on() -> None:
     view = _situation()
     view.play_mode, view.mode_ours = PlayMode.KICK_IN, True
     team.act(view)
-    targets = team.targets[team._outfield_roles]
-    assert team.role_of_player.tolist() == assign(view.own_pos[1:], targets, "mmdr").target_of.tolist()
+    targets = team.pipeline.targets[0][team.pipeline.match_roles[0]]
+    assert _roles(team).tolist() == assign(view.own_pos[1:], targets, "mmdr").target_of.tolist()
 
 
 def test_bad_ball_role_is_a_clear_error() -> None:

@@ -74,16 +74,17 @@ def test_the_fastest_player_runs_to_the_interception_point_and_others_hold_forma
     own = spread_out()
     ball, ball_vel = np.array([5.0, 10.0]), np.array([-1.5, 0.0])  # rolling towards us, nobody near
     command = team.act(view(own, spread_out(+1.0), ball, ball_vel))
-    role_targets = team.targets[team._match_roles][team.role_of_player]
-    away = np.flatnonzero(np.hypot(*(team.goals[team.outfield] - role_targets).T) > 1e-9)
+    pipeline = team.pipeline
+    role_targets = pipeline.targets[0][pipeline.match_roles[0]][pipeline.followed[0]]
+    away = np.flatnonzero(np.hypot(*(pipeline.goals[pipeline.outfield] - role_targets).T) > 1e-9)
     assert away.size == 1  # one runner; the others hold formation (their goals are their role targets)
-    runner = int(team.outfield[away[0]])
+    runner = int(pipeline.outfield[away[0]])
     # The runner heads for a point on the ball's path (y = 10), ahead of the ball, not at the ball...
-    goal = team.goals[runner]
+    goal = pipeline.goals[runner]
     assert goal[1] == pytest.approx(10.0, abs=0.5) and goal[0] < ball[0] - 2.0
     # ...flat out (an urgent player: a full-power dash towards that point).
     dash = command.dash[runner]
-    assert np.hypot(*dash) == pytest.approx(team.model.accel_max)
+    assert np.hypot(*dash) == pytest.approx(pipeline.model.accel_max)
     assert dash @ (goal - own[runner]) > 0.9 * np.hypot(*dash) * np.hypot(*(goal - own[runner]))
 
 
@@ -131,7 +132,8 @@ def test_statues_hold_their_kick_off_spots() -> None:
             positions.append(match.state.pos[1:11].copy())
 
     soccer_sim.run_match(result_team, "idle", seed=3, config=MatchConfig(max_cycles=300), recorders=[Watch()])
-    spots = result_team.kick_off_spots[result_team._outfield_roles]
+    pipeline = result_team.pipeline
+    spots = pipeline.kick_off_spots[pipeline.match_roles[0]]
     final = positions[-1]
     # Every outfield player ends up at its own spot (the idle opponents never take the ball away).
     assert np.hypot(*(final - spots).T).max() < 3.0

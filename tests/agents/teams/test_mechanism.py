@@ -48,7 +48,7 @@ def test_role_figures_report_shares_and_gaps() -> None:
 def test_a_static_team_samples_every_nth_play_on_cycle() -> None:
     team = FormationTeam("static")
     soccer_sim.run_match(team, "idle", seed=1, config=MatchConfig(max_cycles=200))
-    figures = team.figures
+    figures = team.pipeline.figures
     assert 0 < figures.samples <= 200 // SAMPLE_EVERY
     assert figures.samples >= figures.cycles // SAMPLE_EVERY - 1
     # static holds the shirt-number roles: fixed and held roles are the same assignment.

@@ -26,7 +26,7 @@ def test_labels_follow_the_role_each_player_is_assigned() -> None:
     defender = next(r for r in range(10) if kinds[r + 1] == "centre-back")
     forward = next(r for r in range(10) if kinds[r + 1] == "centre-forward")
     swap[[defender, forward]] = swap[[forward, defender]]
-    team.role_of_player = swap
+    team.pipeline.followed[0] = swap
     labels = team.role_labels()
     assert labels[defender + 1] == "centre-forward" and labels[forward + 1] == "centre-back"
     assert sorted(labels) == sorted(kinds)  # still one label per formation role

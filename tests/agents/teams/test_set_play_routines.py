@@ -52,9 +52,9 @@ def test_at_our_corner_runners_go_into_the_box_and_the_corner_is_crossed_into_it
     own = attacking_line_up()
     opp = defending(box=False)
     team.act(view(own, opp, CORNER, PlayMode.CORNER_KICK, cycle=300))
-    taker = team.set_plays.taker
+    taker = team.pipeline.decisions[0].set_plays.taker
     assert taker == 3
-    in_box = MODEL.in_penalty_area(np.delete(team.goals, [0, taker], axis=0), ours=False)
+    in_box = MODEL.in_penalty_area(np.delete(team.pipeline.goals, [0, taker], axis=0), ours=False)
     assert in_box.sum() >= 3  # the runners' spots are in their box
     cycle, kicker, kick = play_set_play(team, own, opp, CORNER, PlayMode.CORNER_KICK, 300, 40)
     assert kicker == taker and cycle == 300 + team.style.routines.corner_wait
@@ -93,9 +93,9 @@ def test_at_our_kick_in_a_team_mate_comes_short() -> None:
     own[3] = ball + (-0.6, 0.5)
     own[6] = ball + (3.0, 8.0)  # the nearest team-mate
     team.act(view(own, defending(box=False), ball, PlayMode.KICK_IN, cycle=500))
-    assert team.set_plays.taker == 3
+    assert team.pipeline.decisions[0].set_plays.taker == 3
     expected = routines.short_spot(MODEL, ball, False, team.style.routines)
-    assert np.allclose(team.goals[6], expected)
+    assert np.allclose(team.pipeline.goals[6], expected)
     assert 0.0 < expected[1] - ball[1] <= team.style.routines.short_gap + 1e-9  # infield of the ball
 
 
@@ -159,8 +159,8 @@ def test_the_team_goalkeeper_holds_its_line_when_the_attacker_wins_the_race() ->
     opp_vel[9] = (-0.9, 0.0)
     team = ready("mmdr")
     team.act(play_on_view(own, opp, ball, ball_vel, opp_vel))
-    assert np.allclose(team.goals[0], skills.guard_position(MODEL, ball))
-    assert np.hypot(*(team.goals[0] - own[0])) < 0.5
+    assert np.allclose(team.pipeline.goals[0], skills.guard_position(MODEL, ball))
+    assert np.hypot(*(team.pipeline.goals[0] - own[0])) < 0.5
 
 
 def test_the_team_goalkeeper_comes_out_when_it_wins_the_race() -> None:
@@ -169,10 +169,10 @@ def test_the_team_goalkeeper_comes_out_when_it_wins_the_race() -> None:
     team = ready("mmdr")
     v = play_on_view(own, opp, ball, ball_vel, opp_vel)
     team.act(v)
-    race = skills.ball_race(team.skills, v)
+    race = skills.ball_race(team.pipeline.skills, v)
     assert race.ours.first == 0
-    assert np.allclose(team.goals[0], race.ours.points[0])
-    assert team.goals[0][0] > own[0][0] + 3.0  # out towards the ball
+    assert np.allclose(team.pipeline.goals[0], race.ours.points[0])
+    assert team.pipeline.goals[0][0] > own[0][0] + 3.0  # out towards the ball
 
 
 def test_a_defender_pressed_in_our_box_with_nobody_free_kicks_the_ball_wide_of_the_goal() -> None:
@@ -208,7 +208,7 @@ def test_the_corner_wait_never_goes_beyond_the_teams_patience() -> None:
     team.reset(SideInfo(0, "us", "them", 11, 0, 11, 0), CONFIG, np.random.default_rng(0))
     cycle, kicker, _ = play_set_play(team, attacking_line_up(), defending(box=False), CORNER,
                                      PlayMode.CORNER_KICK, 300, 120)
-    assert kicker == 3 and cycle == 300 + team.set_plays.patience < 300 + CONFIG.rules.set_play_timeout
+    assert kicker == 3 and cycle == 300 + team.pipeline.decisions[0].set_plays.patience < 300 + CONFIG.rules.set_play_timeout
 
 
 def test_routine_params_reject_bad_values() -> None:

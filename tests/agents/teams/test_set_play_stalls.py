@@ -73,11 +73,11 @@ def play_set_play(team: FormationTeam, own: np.ndarray, opp: np.ndarray, ball, m
 @pytest.mark.parametrize("name", ["counter-442", "mmdr", "press-433"])
 def test_the_kick_off_taker_is_placed_at_the_ball_and_kicks_after_the_wait(name: str) -> None:
     team = ready(name)
-    own = team.kick_off_spots[: 11].copy()
+    own = team.pipeline.kick_off_spots[: 11].copy()
     cycle, kicker, kick = play_set_play(team, own, their_half(), (0.0, 0.0), PlayMode.KICK_OFF, 0, 60, moved=True)
-    assert cycle == team.style.set_play_wait and kicker >= 0 and kicker != team.goalie
+    assert cycle == team.style.set_play_wait and kicker >= 0 and kicker != team.pipeline.goalie
     assert np.hypot(*kick) > 0.0
-    move = team.command.move
+    move = team.pipeline.command.move
     assert np.hypot(*move[kicker]) <= KICKABLE  # placed within reach of the ball on the centre spot
     assert move[kicker][0] < 0.0  # behind it, in our half
 
@@ -89,9 +89,9 @@ def test_our_goalkeeper_takes_the_goal_kick_and_is_the_only_one_at_the_spot() ->
     own = goal_kick_line_up()
     assert np.hypot(*(own[0] - SPOT)) < 2.0  # where the stall began
     team.act(view(own, their_half(), SPOT, PlayMode.GOAL_KICK, cycle=100))
-    assert team.set_plays.taker == 0
-    assert np.allclose(team.goals[0], SPOT)  # the goalkeeper runs to the ball
-    others = np.hypot(*(team.goals[1:] - SPOT).T)
+    assert team.pipeline.decisions[0].set_plays.taker == 0
+    assert np.allclose(team.pipeline.goals[0], SPOT)  # the goalkeeper runs to the ball
+    others = np.hypot(*(team.pipeline.goals[1:] - SPOT).T)
     assert others.min() > 2.0  # nobody else of ours goes to the spot
     # Placed at the ball, the goalkeeper kicks once the wait is over.
     own[0] = SPOT + (-0.6, 0.0)
@@ -108,9 +108,9 @@ def test_after_the_goalkeepers_goal_kick_is_retaken_it_leaves_the_spot_for_the_g
     first = play_set_play(team, own, opp, SPOT, PlayMode.GOAL_KICK, 100, 30)
     assert first[1] == 0
     team.act(view(own, opp, SPOT, PlayMode.GOAL_KICK, cycle=first[0] + 1))  # retaken at once
-    assert team.set_plays.taker != 0
-    assert team.goals[0][0] <= -HL + 2.0 and abs(team.goals[0][1]) < 1.0
-    assert np.hypot(*(team.goals[0] - SPOT)) > 8.0
+    assert team.pipeline.decisions[0].set_plays.taker != 0
+    assert team.pipeline.goals[0][0] <= -HL + 2.0 and abs(team.pipeline.goals[0][1]) < 1.0
+    assert np.hypot(*(team.pipeline.goals[0] - SPOT)) > 8.0
 
 
 def test_a_goal_kick_goes_where_nobody_can_play_it_inside_the_area() -> None:
@@ -242,7 +242,7 @@ def test_a_taker_at_the_stamina_floor_still_runs_to_the_ball() -> None:
         seen = view(own, their_half(), ball, PlayMode.KICK_IN, cycle=cycle)
         seen.stamina[:] = floor - 2.0
         command = team.act(seen)
-    assert team.set_plays.taker == 4
+    assert team.pipeline.decisions[0].set_plays.taker == 4
     # It runs at full power (a dash of 100 accelerates 0.6 m/cycle^2), not stands.
     assert np.hypot(*command.dash[4]) == pytest.approx(100.0 * CONFIG.physics.dash_power_rate, rel=0.05)
 
@@ -252,7 +252,7 @@ def test_a_retaken_set_play_goes_to_the_nearest_player_who_has_not_tried_it() ->
     own = np.array([[-30.0 + 3.0 * (i % 5), -20.0 + 4.0 * i] for i in range(11)])
     ball = own[6] + (0.5, 0.0)
     v = view(own, their_half(), ball, PlayMode.KICK_IN)
-    set_plays = team.set_plays
+    set_plays = team.pipeline.decisions[0].set_plays
     order = np.argsort(np.hypot(*(own[1:] - ball).T), kind="stable") + 1  # the outfield, nearest first
     assert set_plays._choose_taker(v) == order[0]
     set_plays.tried_takers[:] = [int(order[0])]

@@ -104,7 +104,7 @@ def test_role_targets_never_jump_when_possession_changes_and_then_settle() -> No
     theirs = opponents(-30.0)
     theirs[5] = (-20.0, 30.0)  # their player on the ball deep in our half: we defend
     team.act(view(own, theirs, (-20.0, 30.0), cycle=10))
-    before = team.shape.previous.copy()
+    before = team.pipeline.previous[0].copy()
     # Now our player 9 has the ball at their box: attack. Targets move, but at a running pace
     # (the shape's paced targets: support spots are put on top of them, see the support tests).
     own[9] = (30.0, -10.0)
@@ -112,15 +112,15 @@ def test_role_targets_never_jump_when_possession_changes_and_then_settle() -> No
     steps = []
     for cycle in range(11, 160):
         team.act(view(own, theirs, (30.5, -10.0), cycle=cycle))
-        steps.append(np.hypot(*(team.shape.previous[1:] - before[1:]).T).max())
-        before = team.shape.previous.copy()
-    assert team.shape.attacking
+        steps.append(np.hypot(*(team.pipeline.previous[0][1:] - before[1:]).T).max())
+        before = team.pipeline.previous[0].copy()
+    assert team.pipeline.attacking[0]
     assert max(steps) <= PARAMS.drop_speed + 1e-9 and steps[0] > 0.3
     assert steps[-1] < 1e-9  # settled: the shape's own targets, no longer limited
     # the settled targets are the attack formation at the carrier's point, shifted, rest defence applied
-    expected = team.formation_set.positions(team.shape.query, Situation.ATTACK)
+    expected = team.formation_set.positions(team.pipeline.block[0, :2], Situation.ATTACK)
     forwards = [r for r, k in enumerate(KINDS) if k == "forward"]
-    assert np.allclose(team.targets[forwards, 0], np.minimum(expected[forwards, 0] + team.shape.shift, HL - 2.0))
+    assert np.allclose(team.pipeline.targets[0][forwards, 0], np.minimum(expected[forwards, 0] + team.pipeline.block[0, 2], HL - 2.0))
 
 
 # ---------------------------------------------------------------------------- rest defence
@@ -137,12 +137,12 @@ def test_the_back_line_stays_behind_the_ball_and_their_forwards_when_we_attack(b
     theirs[1] = (front_x, 25.0)
     for cycle in range(200):
         team.act(view(own, theirs, (ball_x, 0.0), cycle=cycle))
-    assert team.shape.attacking
+    assert team.pipeline.attacking[0]
     backs = [r for r, k in enumerate(KINDS) if k == "defender"]
-    assert np.all(team.targets[backs, 0] <= line + 1e-9)
-    assert np.any(team.targets[backs, 0] >= line - 1e-6)  # held at the line, not dropped further
+    assert np.all(team.pipeline.targets[0][backs, 0] <= line + 1e-9)
+    assert np.any(team.pipeline.targets[0][backs, 0] >= line - 1e-6)  # held at the line, not dropped further
     # No defender near the opponents' box, nor the full backs.
-    assert np.all(team.targets[backs, 0] < HL - CONFIG.field.penalty_area_length - 10.0)
+    assert np.all(team.pipeline.targets[0][backs, 0] < HL - CONFIG.field.penalty_area_length - 10.0)
 
 
 def test_the_back_line_stays_goal_side_of_the_ball_when_we_defend() -> None:
@@ -152,9 +152,9 @@ def test_the_back_line_stays_goal_side_of_the_ball_when_we_defend() -> None:
     theirs[3] = (-28.0, 4.0)  # their player on the ball, past our back line's formation spot
     for cycle in range(120):
         team.act(view(own, theirs, (-28.0, 4.0), cycle=cycle))
-    assert not team.shape.attacking
+    assert not team.pipeline.attacking[0]
     backs = [r for r, k in enumerate(KINDS) if k == "defender"]
-    assert np.all(team.targets[backs, 0] <= -28.0 - PARAMS.defend_ball_gap + 1e-9)
+    assert np.all(team.pipeline.targets[0][backs, 0] <= -28.0 - PARAMS.defend_ball_gap + 1e-9)
 
 
 # ---------------------------------------------------------------------------- support
@@ -173,7 +173,7 @@ def support_roles(assigner: str, own, theirs, ball, carrier_row: int = 8):
         team.act(view(own, theirs, ball, cycle=50))
         teams.append(team)
     team, plain = teams
-    moved = [r for r in team._match_roles if not np.allclose(team.targets[r], plain.targets[r])]
+    moved = [r for r in team.pipeline.match_roles[0] if not np.allclose(team.pipeline.targets[0][r], plain.pipeline.targets[0][r])]
     return team, plain, moved
 
 
@@ -183,13 +183,13 @@ def test_support_moves_two_midfield_role_targets_to_open_spots_at_passing_distan
     theirs[1:4] = [(5.0, -4.0), (6.0, 4.0), (3.0, 8.0)]  # lanes ahead and to the left are covered
     ball = carrier + (0.5, 0.0)
     team, plain, moved = support_roles("static", SUPPORT_OWN, theirs, ball)
-    assert team.shape.attacking
+    assert team.pipeline.attacking[0]
     assert len(moved) == PARAMS.support_players
     backs = {r for r, k in enumerate(KINDS) if k == "defender"}
     forwards = {r for r, k in enumerate(KINDS) if k == "forward"}
     assert not (backs | forwards) & set(moved)  # the rest defence stays back, the forwards up front
     for role in moved:
-        spot = team.targets[role]
+        spot = team.pipeline.targets[0][role]
         assert 8.0 <= np.hypot(*(spot - ball)) <= 15.0
         assert spot[0] - ball[0] >= -0.5 * np.hypot(*(spot - ball)) - 1e-9  # not far behind the ball
         # the pass lane to the spot is open: no opponent within 2 m of it
@@ -198,11 +198,11 @@ def test_support_moves_two_midfield_role_targets_to_open_spots_at_passing_distan
         gap = np.hypot(*(ball + t[:, None] * ab - theirs).T)
         assert gap.min() >= 2.0
     # the support roles are the midfield roles whose own targets lie nearest the carrier (whoever plays them)
-    carrier_role = team._match_roles[team.role_of_player[list(team.outfield).index(8)]]
-    gaps = {r: np.hypot(*(plain.targets[r] - carrier)) for r in team._match_roles
+    carrier_role = team.pipeline.match_roles[0][team.pipeline.followed[0][list(team.pipeline.outfield).index(8)]]
+    gaps = {r: np.hypot(*(plain.pipeline.targets[0][r] - carrier)) for r in team.pipeline.match_roles[0]
             if r not in backs | forwards and r != carrier_role}
     assert sorted(moved) == sorted(sorted(gaps, key=gaps.get)[:2])
-    assert np.hypot(*(team.targets[moved[0]] - team.targets[moved[1]])) >= PARAMS.crowd_distance
+    assert np.hypot(*(team.pipeline.targets[0][moved[0]] - team.pipeline.targets[0][moved[1]])) >= PARAMS.crowd_distance
 
 
 @pytest.mark.parametrize("assigner", ["static", "mmdr", "greedy"])
@@ -213,13 +213,13 @@ def test_the_role_assigner_decides_who_runs_to_a_support_spot(assigner: str) -> 
     own[5] = (-30.0, 0.0)  # the holding midfielder far behind: static still sends it if its role supports
     team, _, moved = support_roles(assigner, own, theirs, own[8] + (0.5, 0.0))
     assert moved
-    out_targets = team.targets[team._match_roles]
+    out_targets = team.pipeline.targets[0][team.pipeline.match_roles[0]]
     for role in moved:
-        players = [row for i, row in enumerate(team.outfield) if team._match_roles[team.role_of_player[i]] == role]
-        assert len(players) == 1 and np.allclose(team.goals[players[0]], team.targets[role])
+        players = [row for i, row in enumerate(team.pipeline.outfield) if team.pipeline.match_roles[0][team.pipeline.followed[0][i]] == role]
+        assert len(players) == 1 and np.allclose(team.pipeline.goals[players[0]], team.pipeline.targets[0][role])
         if assigner == "static":
             assert players[0] == role  # the role's own player, however far
-    assert np.allclose(out_targets[team.role_of_player][team.outfield != 8], team.goals[team.outfield[team.outfield != 8]])
+    assert np.allclose(out_targets[team.pipeline.followed[0]][team.pipeline.outfield != 8], team.pipeline.goals[team.pipeline.outfield[team.pipeline.outfield != 8]])
 
 
 def test_the_carriers_own_role_never_supports() -> None:
@@ -235,9 +235,9 @@ def test_nobody_supports_when_we_defend() -> None:
     own = np.array([[-50.0, 0.0], *[[-20.0 + 3.0 * i, -15.0 + 3.0 * i] for i in range(10)]])
     theirs = opponents(-10.0)
     team, _, moved = support_roles("static", own, theirs, theirs[2] + (-0.5, 0.0))
-    assert not team.shape.attacking and moved == []
-    planned = team.targets[team._out_roles][team.role_of_player]
-    off_target = [row for i, row in enumerate(team.outfield) if not np.allclose(team.goals[row], planned[i])]
+    assert not team.pipeline.attacking[0] and moved == []
+    planned = team.pipeline.targets[0][team.pipeline.match_roles[0]][team.pipeline.followed[0]]
+    off_target = [row for i, row in enumerate(team.pipeline.outfield) if not np.allclose(team.pipeline.goals[row], planned[i])]
     assert len(off_target) == 1  # only the player sent at the ball
 
 
@@ -250,17 +250,17 @@ def test_forwards_follow_up_our_shot_to_the_rebound_area() -> None:
     theirs[0] = (HL - 1.0, 0.0)
     ball, ball_vel = np.array([40.0, 4.0]), np.array([2.6, -0.3])
     team.act(view(own, theirs, (30.0, 0.0), cycle=9))
-    team.shape.shot(9, np.array([38.0, 4.2]))
+    team.pipeline.decisions[0].shot_cycle, team.pipeline.decisions[0].shot_from = 9, np.array([38.0, 4.2])
     team.act(view(own, theirs, ball, ball_vel, cycle=10))
     forwards = [6, 8, 10]  # static roles: row r plays role r (wingers 7/11 and the centre forward 9)
     rebound_x = HL - PARAMS.rebound_depth
-    at_rebound = [row for row in team.outfield if abs(team.goals[row, 0] - rebound_x) < 1e-9]
+    at_rebound = [row for row in team.pipeline.outfield if abs(team.pipeline.goals[row, 0] - rebound_x) < 1e-9]
     assert len(at_rebound) == PARAMS.follow_up_players and set(at_rebound) <= set(forwards)
-    assert abs(team.goals[at_rebound[0], 1] - team.goals[at_rebound[1], 1]) == pytest.approx(2 * PARAMS.rebound_spread)
+    assert abs(team.pipeline.goals[at_rebound[0], 1] - team.pipeline.goals[at_rebound[1], 1]) == pytest.approx(2 * PARAMS.rebound_spread)
     assert 8 in at_rebound  # the centre forward is the nearest
     # Long after the shot they are back on their own targets.
     team.act(view(own, theirs, ball, ball_vel, cycle=10 + PARAMS.follow_up_cycles + 1))
-    assert not any(abs(team.goals[row, 0] - rebound_x) < 1e-9 for row in team.outfield)
+    assert not any(abs(team.pipeline.goals[row, 0] - rebound_x) < 1e-9 for row in team.pipeline.outfield)
 
 
 # ---------------------------------------------------------------------------- kick-off shape
@@ -295,4 +295,4 @@ def test_shape_params_are_checked() -> None:
 def test_a_free_carrier_runs_with_the_ball_and_nobody_leaves_the_shape() -> None:
     theirs = opponents(30.0)  # nobody within 25 m of our carrier
     team, _, moved = support_roles("static", SUPPORT_OWN, theirs, SUPPORT_OWN[8] + (0.5, 0.0))
-    assert team.shape.attacking and moved == []
+    assert team.pipeline.attacking[0] and moved == []

@@ -76,8 +76,8 @@ def test_a_ball_the_bidding_teams_goalkeeper_wins_in_its_area_is_the_goalkeepers
                             stamina=np.full(11, config.stamina.maximum), play_mode=PlayMode.PLAY_ON, mode_ours=False,
                             cycle=cycle)
             team.act(view)
-        keepers[name] = team.goals[0].copy()
-        assert team.assigner.ball_player() is None or name == "bidding"
+        keepers[name] = team.pipeline.goals[0].copy()
+        assert team.pipeline.assigners[0].ball_player() is None or name == "bidding"
     # The keeper runs onto the ball's path (a few metres out), not to its guard point on the line.
     for goal in keepers.values():
         assert goal[0] > -47.0 and abs(goal[1] - 3.0) < 1.5
@@ -96,10 +96,10 @@ def test_the_assigner_is_told_where_the_ball_will_be_controlled_not_the_blocks_l
     team.reset(SideInfo(0, "us", "them", 11, 0, 11, 0), config, np.random.default_rng(0))
     own = np.array([[-51.0, 0.0], *[[-10.0 + 2.0 * (i % 5), -20.0 + 4.0 * i] for i in range(10)]])
     opp = np.array([[50.0, 0.0], *[[30.0, -30.0 + 6.0 * i] for i in range(10)]])
-    for cycle, ball in ((100, (-5.0, 0.0)), (101, (20.0, 2.0))):  # a long ball: 25 m in a cycle
+    for cycle, ball in ((100, (-5.0, 0.0)), (102, (20.0, 2.0))):  # a long ball: 25 m in two cycles
         view = TeamView(own_pos=own, own_vel=np.zeros_like(own), opp_pos=opp, opp_vel=np.zeros_like(opp),
                         ball=np.array(ball), ball_vel=np.zeros(2), stamina=np.full(11, config.stamina.maximum),
                         play_mode=PlayMode.PLAY_ON, mode_ours=False, cycle=cycle)
         team.act(view)
-    assert np.hypot(*(team.shape.query - (20.0, 2.0))) > 20.0  # the block is still on its way
-    assert np.hypot(*(team._context.ball - (20.0, 2.0))) < 1.0  # the ball stands still: controlled where it is
+    assert np.hypot(*(team.pipeline.block[0, :2] - (20.0, 2.0))) > 20.0  # the block is still on its way
+    assert np.hypot(*(team.pipeline.contexts[0].ball - (20.0, 2.0))) < 1.0  # the ball stands still: controlled where it is

@@ -74,6 +74,6 @@ def test_time_factors_none_for_equal_players_else_reference_over_speed() -> None
     assert scale[5] > 1.0 and scale[1] == 1.0
     team = FormationTeam("mmdr")
     team.reset(replace(SIDE, player_types=types, own_types=(0,) * 11), CONFIG, np.random.default_rng(0))
-    assert team._context.time_scale is None  # equal players: the assigners use plain distances
+    assert team.pipeline.contexts[0].time_scale is None  # equal players: the assigners use plain distances
     team.reset(replace(SIDE, player_types=types, own_types=own), CONFIG, np.random.default_rng(0))
-    assert np.array_equal(team._context.time_scale, scale)
+    assert np.array_equal(team.pipeline.contexts[0].time_scale, scale)

@@ -1,4 +1,6 @@
-"""The built-in team under partial observation: each player decides from its own view alone."""
+"""The built-in team's one pipeline (:mod:`agents.teams.pipeline`): under partial observation
+each player decides from its own view alone; under full observation every player believes the
+truth, and what is derived from it is computed once for the team."""
 
 from __future__ import annotations
 
@@ -99,9 +101,9 @@ def test_before_a_kick_off_every_player_lines_up_in_its_own_role():
     for _ in range(3):
         match.step()
         for team in match.teams:
-            positioning = team.players.positioning
-            outfield = team.players.outfield
-            roles = positioning.followed[outfield, positioning.rank[outfield]]
+            pipeline = team.pipeline
+            outfield = pipeline.outfield
+            roles = pipeline.followed[pipeline.world.belief_of[outfield], pipeline.rank[outfield]]
             np.testing.assert_array_equal(roles, np.arange(len(outfield)))
     for side in (slice(0, 11), slice(11, 22)):
         spots = match.state.pos[side]
@@ -109,26 +111,52 @@ def test_before_a_kick_off_every_player_lines_up_in_its_own_role():
         assert gaps[~np.eye(11, dtype=bool)].min() > 2.0
 
 
-def test_only_players_near_the_ball_decide_with_a_whole_brain_in_play_on():
-    from agents.teams.decentralised import BRAIN_DISTANCE
+@pytest.mark.parametrize("observation", ["full", "partial"])
+def test_only_beliefs_with_a_player_near_the_ball_decide_on_it_in_play_on(observation):
+    from agents.teams.decisions import BeliefDecisions
+    from agents.teams.pipeline import BRAIN_DISTANCE
 
-    match = Match("mmdr", "counter-442", seed=1, config=MatchConfig(observation=ObservationConfig("partial"),
-                                                                    max_cycles=400))
+    config = MatchConfig(observation=ObservationConfig(observation), max_cycles=400)
+    match = Match("mmdr", "counter-442", seed=1, config=config)
     match.start()
-    acted = []
-    play = match.teams[0].players
-    original = play._brain_acts
+    pipeline = match.teams[0].pipeline
+    decided = []
+    original = BeliefDecisions.decide
 
-    def spy(i, views, *rest):
-        acted.append((i, views.play_mode, float(np.hypot(*(play.beliefs.ball[i] - views.position[i])))))
-        return original(i, views, *rest)
+    def spy(decisions, view, race, ball_player, rows, *rest):
+        if decisions in pipeline.decisions and view.play_mode == PlayMode.PLAY_ON:
+            gaps = np.hypot(*(view.own_pos[rows] - view.ball).T)
+            decided.append(float(gaps.min()))
+        return original(decisions, view, race, ball_player, rows, *rest)
 
-    play._brain_acts = spy
-    for _ in range(399):
+    BeliefDecisions.decide = spy
+    try:
+        for _ in range(399):
+            match.step()
+    finally:
+        BeliefDecisions.decide = original
+    assert decided, "somebody of ours must have played the ball"
+    near_goal = sum(gap >= BRAIN_DISTANCE for gap in decided)  # (the goalkeeper with the ball near our area)
+    assert near_goal < len(decided) / 2
+
+
+def test_under_full_observation_the_team_assigns_roles_once_a_cycle():
+    calls = []
+    match = Match("mmdr", "static", seed=2, config=MatchConfig(max_cycles=200))
+    match.start()
+    pipeline = match.teams[0].pipeline
+    assert pipeline.world.belief_of.tolist() == [0] * 11 and len(pipeline.assigners) == 1
+    assigner = pipeline.assigners[0]
+    original = assigner.assign
+
+    def counted(players, targets, order, previous, context):
+        calls.append(context.cycle)
+        return original(players, targets, order, previous, context)
+
+    assigner.assign = counted
+    for _ in range(199):
         match.step()
-    in_play = [(i, gap) for i, mode, gap in acted if mode == PlayMode.PLAY_ON and i != play.goalie]
-    assert in_play, "somebody of ours must have played the ball"
-    assert all(gap < BRAIN_DISTANCE for _, gap in in_play)
+    assert calls and len(calls) == len(set(calls))  # at most once a cycle
 
 
 @pytest.mark.parametrize("scenario", ["3-vs-1-with-keeper", "empty-goal"])
@@ -139,25 +167,56 @@ def test_smaller_sides_play_decentralised_each_player_picking_the_roles_it_belie
 
 
 def test_what_the_players_say_is_what_the_general_encoders_make(monkeypatch):
-    """The messages made in the positioning's last compiled call are the world messages and
+    """The messages made in the pipeline's last compiled call are the world messages and
     votes that TeamBeliefs.world_messages and VoteBook.messages encode (alternate cycles)."""
     from agents.roles.voting import VoteBook
-    from agents.teams.decentralised import DecentralisedPlay
+    from agents.teams.pipeline import Pipeline
 
     said = {"world": 0, "vote": 0}
-    original = DecentralisedPlay.act
+    original = Pipeline.act
 
-    def act(players, views):
-        command = original(players, views)
+    def act(pipeline, views):
+        command = original(pipeline, views)
         if views.cycle % 2 == 0:
-            expected = players.beliefs.world_messages(views.present)
+            expected = pipeline.world.world_messages(views.present)
             said["world"] += 1
         else:
-            expected = VoteBook.messages(players.positioning.proposals, views.cycle, views.present)
+            expected = VoteBook.messages(pipeline.proposals, views.cycle, views.present)
             said["vote"] += 1
         assert list(command.say) == expected
         return command
 
-    monkeypatch.setattr(DecentralisedPlay, "act", act)
+    monkeypatch.setattr(Pipeline, "act", act)
     Match("mmdr", "static", seed=6, config=PARTIAL).run()
     assert said["world"] > 100 and said["vote"] > 100  # (both teams)
+
+
+def test_under_full_observation_nobody_speaks():
+    match = Match("mmdr", "static", seed=6, config=MatchConfig(max_cycles=50))
+    match.start()
+    for _ in range(49):
+        match.step()
+    assert match.teams[0].pipeline.command.say is None
+
+
+@pytest.mark.parametrize("point, keeper_goes", [((-51.5, 0.0), True), ((-36.5, 19.0), True),
+                                                 ((-52.55, 0.0), False), ((-35.0, 0.0), False),
+                                                 ((-51.5, 20.7), False)])
+def test_the_goalkeeper_comes_out_only_for_a_ball_it_wins_inside_our_area(point, keeper_goes):
+    """:func:`~agents.teams.pipeline_kernels.ball_player` on a belief whose race has our
+    goalkeeper first (cycle 2, the opponents at 20) at ``point`` and outfield player 1 next."""
+    from agents.teams.pipeline_kernels import ball_player
+
+    team, _ = resolve_team("mmdr")
+    match = Match(team, "static", seed=1, config=MatchConfig(max_cycles=10))
+    match.start()
+    pipeline = team.pipeline
+    model = pipeline.model
+    assert model.half_length == 52.5 and model.penalty_area_length == 16.5 and model.penalty_area_half_width == 20.16
+    pipeline.our_first[0] = 0
+    pipeline.our_cycles[0] = 30
+    pipeline.our_cycles[0, 0], pipeline.our_cycles[0, 1] = 2, 5
+    pipeline.our_points[0, 0] = point
+    pipeline.their_cycle[0] = 20
+    pipeline.named_ball[0] = -1
+    assert ball_player(pipeline.state, 0) == (0 if keeper_goes else 1)
