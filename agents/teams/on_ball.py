@@ -100,27 +100,3 @@ def ball_reach(our_cycles: np.ndarray, outfield: np.ndarray, model: skills.Motio
     cycles = our_cycles[outfield].astype(np.float64)
     cycles[our_cycles[outfield] >= skills.UNREACHABLE] = np.inf
     return cycles * model.top_speed
-
-
-def ball_player(named: int | None, race: skills.BallRace, goalie: int, outfield: np.ndarray,
-                model: skills.MotionModel, stationary: bool) -> int:
-    """Our player who goes for the ball (-1: none can reach it in time): the assigner's
-    ``named`` outfield player (index among ``outfield``) if it names one, unless our goalkeeper
-    wins the ball in its area; else the first of ours to reach it, the goalkeeper only for a
-    ball it wins in its area (an outfield player goes instead); statues (``stationary``) only
-    for a ball that comes to them."""
-    first = race.ours.first
-    keeper = first == goalie >= 0 and skills.comes_out(model, race, goalie)
-    if named is not None and not stationary and not keeper:  # (a ball our keeper wins is its own)
-        return int(outfield[named])
-    if first < 0:
-        return -1
-    if stationary:
-        return first if race.ours.cycles[first] <= 2 else -1
-    if first == goalie and not skills.comes_out(model, race, goalie):
-        cycles = race.ours.cycles[outfield]
-        if not cycles.size:  # a lone goalkeeper stays in its area
-            return -1
-        best = int(np.argmin(cycles))
-        return int(outfield[best]) if cycles[best] < skills.UNREACHABLE else -1
-    return int(first)
