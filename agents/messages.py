@@ -9,8 +9,9 @@ below ``71 ** 10`` (about 61.5 bits). Its last base-:data:`KINDS` digit is the k
 
 * :class:`WorldMessage` -- the sender's ball estimate (position, velocity, age) and its own
   position. Positions in the team's frame (m; the sender and its team-mates share it) with
-  resolution :data:`POSITION_STEP` 0.1 m over x in [-64, 64], y in [-44, 44] (the 105 x 68 m
-  pitch with a wide margin); velocity with resolution :data:`VELOCITY_STEP` 0.02 m/cycle over
+  resolution :data:`POSITION_STEP` 0.1 m over x in [-64, 64], y in [-44, 44] (the default
+  field, :data:`soccer_sim.config.STANDARD_FIELD`, with a wide margin; a fixed range of the
+  message format); velocity with resolution :data:`VELOCITY_STEP` 0.02 m/cycle over
   [-3, 3] m/cycle (``ball_speed_max``); age in whole cycles, saturating at :data:`MAX_AGE`.
   Values are rounded to the nearest step, so decoding is within half a step.
 * :class:`VoteMessage` -- a role-assignment vote: ``assignment[i]`` the role of the team's

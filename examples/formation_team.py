@@ -25,7 +25,7 @@ class FormationTeam:
         if isinstance(system, formations.FormationSet):
             self.formation_set = system
         elif os.path.exists(system):
-            self.formation_set = formations.load_set(system)
+            self.formation_set = formations.load_set(system, field=soccer_sim.config.STANDARD_FIELD)
         else:
             self.formation_set = formations.load_builtin(system)
         self.method = method

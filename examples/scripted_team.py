@@ -9,12 +9,13 @@ In a tournament:     soccer-sim tournament --teams static,examples.scripted_team
 
 import numpy as np
 
+from soccer_sim.config import STANDARD_FIELD
 from soccer_sim.env import PolicyTeam
 
 # Home spots (x, y) of players 1-10 as fractions of the half length / half width: a 4-4-2.
 SPOTS = np.array([(-0.6, -0.6), (-0.6, -0.2), (-0.6, 0.2), (-0.6, 0.6), (-0.2, -0.6), (-0.2, -0.2), (-0.2, 0.2),
                   (-0.2, 0.6), (0.2, -0.2), (0.2, 0.2)])
-HALF_WIDTH_SHARE = 34.0 / 52.5  # the half width in units of the half length (positions are / half length)
+HALF_WIDTH_SHARE = STANDARD_FIELD.half_width / STANDARD_FIELD.half_length  # positions are / half length
 
 
 def _towards(vector: np.ndarray, gain: float = 12.0) -> np.ndarray:
@@ -36,7 +37,7 @@ def scripted_policy(observation: np.ndarray) -> np.ndarray:
     if observation[5] > 0.5:  # the goalkeeper
         spot = np.array([-0.97, np.clip(ball[1] * 0.3, -0.1, 0.1)])
         action[0:2] = _towards(spot - me)
-        if np.hypot(*(ball - me)) < 2.0 / 52.5:
+        if np.hypot(*(ball - me)) < 2.0 / STANDARD_FIELD.half_length:
             action[4] = 1.0
             action[2:4] = _towards(goal - ball, gain=1e9)
         return action

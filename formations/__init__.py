@@ -5,7 +5,8 @@ role), triangulates the ball positions once, and interpolates role positions
 for any ball position in microseconds. A :class:`FormationSet` holds one
 formation per game :class:`Situation`. Coordinates are metres in the
 team-relative frame: origin at the centre spot, attacking towards +x, y to the
-left (see :mod:`formations.field`).
+left (see :mod:`formations.field`). The field itself is the simulator's
+(``soccer_sim.config.FieldConfig``): readers of formation files take it as an argument.
 
 This package is pure: it imports only numpy and scipy (matplotlib lazily, for
 pictures) and the project's numba cache stamps (:mod:`kernel_cache`), never the
@@ -23,7 +24,7 @@ import kernel_cache  # noqa: F401 - first of all: numba's cache stamps for the k
 
 from formations.builtin import builtin_names, load_builtin
 from formations.errors import FormationError, FormationInputError, UnknownRoleError
-from formations.field import STANDARD_FIELD, FieldDimensions
+from formations.field import FieldDimensions
 from formations.files import load, load_helios, load_set, read_any, save
 from formations.formation import Formation
 from formations.formation_set import FormationSet, Situation, parse_situation
@@ -40,7 +41,6 @@ __all__ = [
     "FieldDimensions",
     "ROLE_KINDS",
     "Role",
-    "STANDARD_FIELD",
     "Situation",
     "UnknownRoleError",
     "asymmetries",

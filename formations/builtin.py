@@ -10,7 +10,7 @@ from functools import lru_cache
 from importlib import resources
 
 from formations.errors import FormationInputError
-from formations.files import load_set
+from formations.files import load_packaged_set
 from formations.formation_set import FormationSet
 
 _DATA_PACKAGE = "formations"
@@ -35,4 +35,4 @@ def builtin_path(name: str):
 def load_builtin(name: str) -> FormationSet:
     """The built-in formation set *name* (read once, then shared: formations are immutable)."""
     with resources.as_file(builtin_path(name)) as path:
-        return load_set(path)
+        return load_packaged_set(path)

@@ -1,7 +1,10 @@
 """The built-in formation sets, generated from a compact parametric design.
 
-Run ``python -m formations.design`` to (re)write ``formations/data/*.json``;
-the test-suite checks that the shipped files equal what this module produces.
+Run ``python -m tests.formations.write_builtin_sets`` to (re)write
+``formations/data/*.json`` for the simulator's default field (this package is pure, so the
+field, ``soccer_sim.config.STANDARD_FIELD``, comes from the caller: every function that
+places players takes it); the test-suite checks that the shipped files equal what this
+module produces for that field.
 
 Design. Every role belongs to a *line* (goalkeeper, defence, midfield,
 attack) and has a nominal lateral slot (metres, + to the left). For a ball at
@@ -46,25 +49,20 @@ symmetric.
 
 from __future__ import annotations
 
-import argparse
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
-from formations.field import STANDARD_FIELD
+from formations.field import FieldDimensions
 from formations.files import save
 from formations.formation import Formation
 from formations.formation_set import FormationSet, Situation
 from formations.roles import Role
 from formations.symmetry import mirror_complete
 
-HALF_LENGTH = STANDARD_FIELD.half_length
-HALF_WIDTH = STANDARD_FIELD.half_width
-
-SAMPLE_COLUMNS_X: tuple[float, ...] = (
-    -HALF_LENGTH,
+INNER_COLUMNS_X: tuple[float, ...] = (
     -45.0,
     -36.0,
     -27.0,
@@ -76,22 +74,24 @@ SAMPLE_COLUMNS_X: tuple[float, ...] = (
     27.0,
     36.0,
     45.0,
-    HALF_LENGTH,
 )
-"""x of the sample columns: goal lines, the penalty-area lines (|x| = 36) and 9 m steps."""
-EVEN_COLUMN_Y: tuple[float, ...] = (0.0, 12.0, 24.0, HALF_WIDTH)
-"""Ball y (left half) in even-numbered columns: centre line to touchline."""
+"""x of the sample columns between the goal lines (:func:`sample_columns_x` adds those): the
+penalty-area lines (|x| = 36 on the default field) and 9 m steps."""
+INNER_EVEN_COLUMN_Y: tuple[float, ...] = (0.0, 12.0, 24.0)
+"""Ball y (left half) in even-numbered columns, from the centre line; the touchline
+(:func:`even_column_y`) closes the column."""
 ODD_COLUMN_Y: tuple[float, ...] = (6.0, 18.0, 30.0)
 """Ball y (left half) in odd-numbered columns, offset by half a spacing."""
 
-PLAYER_X_LIMIT = HALF_LENGTH - 1.0
+GOAL_LINE_GAP = 1.0
 """Players are kept this far inside the goal lines (|x|, metres)."""
-PLAYER_Y_LIMIT = HALF_WIDTH - 1.5
+TOUCHLINE_GAP = 1.5
 """Players are kept this far inside the touchlines (|y|, metres)."""
-SET_PLAY_DISTANCE = STANDARD_FIELD.centre_circle_radius + 2.0
-"""Distance kept from the ball at the samples of the opponents' set plays
-(rule: 9.15 m). The metre of margin absorbs the interpolation between samples:
-the straight line between two points of a circle cuts inside it."""
+SET_PLAY_MARGIN = 2.0
+"""Metres added to the field's centre-circle radius (the distance the rule keeps opponents
+from the ball at set plays) at the samples of the opponents' set plays
+(:func:`set_play_distance`). The margin absorbs the interpolation between samples: the
+straight line between two points of a circle cuts inside it."""
 KICK_OFF_MARGIN = 0.5
 """At a kick-off (ball on the centre spot) players stand at x <= -this."""
 KICK_OFF_LINE_GAP: dict[str, float] = {"defence": 21.5, "midfield": 10.5, "attack": 0.0}
@@ -108,6 +108,28 @@ FULL_BACK_PUSH_RAMP = (-20.0, 10.0)
 """Ball x (metres) over which the full backs' overlap grows from none to full."""
 POSITION_DECIMALS = 2
 """Positions are rounded to centimetres in the shipped files."""
+
+
+def sample_columns_x(field: FieldDimensions) -> tuple[float, ...]:
+    """x of the sample columns on *field*: its goal lines and :data:`INNER_COLUMNS_X`."""
+    return (-field.half_length, *INNER_COLUMNS_X, field.half_length)
+
+
+def even_column_y(field: FieldDimensions) -> tuple[float, ...]:
+    """Ball y (left half) in even-numbered columns on *field*: centre line to touchline."""
+    return (*INNER_EVEN_COLUMN_Y, field.half_width)
+
+
+def player_limits(field: FieldDimensions) -> tuple[float, float]:
+    """(|x|, |y|) players are kept within on *field* (m): :data:`GOAL_LINE_GAP` inside the goal
+    lines and :data:`TOUCHLINE_GAP` inside the touchlines."""
+    return field.half_length - GOAL_LINE_GAP, field.half_width - TOUCHLINE_GAP
+
+
+def set_play_distance(field: FieldDimensions) -> float:
+    """Distance (m) kept from the ball at the samples of the opponents' set plays on *field*:
+    its centre-circle radius (the rule's 9.15 m) plus :data:`SET_PLAY_MARGIN`."""
+    return field.centre_circle_radius + SET_PLAY_MARGIN
 
 
 @dataclass(frozen=True)
@@ -140,13 +162,18 @@ class Style:
     """Extra depth of full backs (metres) when the ball is far up, to overlap in attack."""
     behind_ball: float | None = None
     """If set, the back line stays this many metres behind the ball (but no
-    deeper than ``defence.lo``)."""
+    deeper than ``defence.lo``); a ``keep_away`` style keeps it
+    :func:`set_play_distance` behind instead."""
     kick_off: bool = False
     """Keep everyone in our half when the ball is near the centre spot."""
     kick_off_takers: bool = False
     """Put the kick-off takers at their kick-off spots (our kick-off)."""
     keep_away: bool = False
-    """Keep outfield players SET_PLAY_DISTANCE from the ball."""
+    """Keep outfield players :func:`set_play_distance` from the ball."""
+
+    def back_line_gap(self, field: FieldDimensions) -> float | None:
+        """Metres the back line stays behind the ball on *field* (None: no such rule)."""
+        return set_play_distance(field) if self.keep_away else self.behind_ball
 
 
 @dataclass(frozen=True)
@@ -200,7 +227,6 @@ THEIR_SET_PLAY = Style(
     width=0.8,
     wide_width=0.8,
     shift={"defence": 0.35, "midfield": 0.5, "attack": 0.45},
-    behind_ball=SET_PLAY_DISTANCE,
     kick_off=True,
     keep_away=True,
 )
@@ -269,26 +295,27 @@ SYSTEMS: dict[str, System] = {
 """The built-in systems, by name."""
 
 
-def sample_balls_left_half() -> np.ndarray:
-    """(n, 2) ball positions of the design with y >= 0 (the rest are mirrored)."""
+def sample_balls_left_half(field: FieldDimensions) -> np.ndarray:
+    """(n, 2) ball positions of the design on *field* with y >= 0 (the rest are mirrored)."""
     balls = []
-    for column, x in enumerate(SAMPLE_COLUMNS_X):
-        for y in EVEN_COLUMN_Y if column % 2 == 0 else ODD_COLUMN_Y:
+    for column, x in enumerate(sample_columns_x(field)):
+        for y in even_column_y(field) if column % 2 == 0 else ODD_COLUMN_Y:
             balls.append((x, y))
     return np.array(balls, dtype=np.float64)
 
 
-def goalkeeper_position(bx: float, by: float) -> tuple[float, float]:
-    """In the goal area: 1 m off the line, coming out a little as the ball advances."""
-    x = -HALF_LENGTH + 1.0 + 0.035 * (bx + HALF_LENGTH)
+def goalkeeper_position(bx: float, by: float, field: FieldDimensions) -> tuple[float, float]:
+    """In the goal area of *field*: 1 m off the line, coming out a little as the ball advances."""
+    x = -field.half_length + 1.0 + 0.035 * (bx + field.half_length)
     y = 0.12 * by
     return x, y
 
 
-def role_position(design: RoleDesign, style: Style, bx: float, by: float) -> tuple[float, float]:
-    """Position of one role for ball (bx, by) in *style*, before set-play rules."""
+def role_position(design: RoleDesign, style: Style, bx: float, by: float,
+                  field: FieldDimensions) -> tuple[float, float]:
+    """Position of one role for ball (bx, by) in *style* on *field*, before set-play rules."""
     if design.line == "goalkeeper":
-        return goalkeeper_position(bx, by)
+        return goalkeeper_position(bx, by, field)
     line: Line = getattr(style, design.line)
     x = line.depth(bx) + design.depth_offset
     if design.full_back:
@@ -296,8 +323,9 @@ def role_position(design: RoleDesign, style: Style, bx: float, by: float) -> tup
         x += style.full_back_push * min(max((bx - start) / (end - start), 0.0), 1.0)
     if style.kick_off:
         x = min(x, -KICK_OFF_MARGIN - KICK_OFF_LINE_GAP[design.line] + math.hypot(bx, by) + design.depth_offset)
-    if design.line == "defence" and style.behind_ball is not None:
-        x = max(min(x, bx - style.behind_ball), style.defence.lo)
+    behind_ball = style.back_line_gap(field)
+    if design.line == "defence" and behind_ball is not None:
+        x = max(min(x, bx - behind_ball), style.defence.lo)
     width = style.wide_width if design.wide else style.width
     y = design.slot * width + style.shift[design.line] * by
     if style.kick_off_takers and design.kick_off_spot is not None:
@@ -307,76 +335,81 @@ def role_position(design: RoleDesign, style: Style, bx: float, by: float) -> tup
     return x, y
 
 
-def team_positions(system: System, style: Style, bx: float, by: float) -> np.ndarray:
-    """(11, 2) positions of *system* for ball (bx, by) in *style*."""
-    positions = np.array([role_position(d, style, bx, by) for d in system.roles])
+def team_positions(system: System, style: Style, bx: float, by: float, field: FieldDimensions) -> np.ndarray:
+    """(11, 2) positions of *system* for ball (bx, by) in *style* on *field*."""
+    x_limit, y_limit = player_limits(field)
+    positions = np.array([role_position(d, style, bx, by, field) for d in system.roles])
     outfield = np.array([d.line != "goalkeeper" for d in system.roles])
     if style.kick_off:
         # Near the centre spot everyone is in our half; the limit relaxes
         # with the ball's distance from the spot, keeping positions continuous.
         limit = -KICK_OFF_MARGIN + math.hypot(bx, by)
         positions[outfield, 0] = np.minimum(positions[outfield, 0], limit)
-    positions[:, 0] = np.clip(positions[:, 0], -PLAYER_X_LIMIT, PLAYER_X_LIMIT)
-    positions[outfield, 1] = np.clip(positions[outfield, 1], -PLAYER_Y_LIMIT, PLAYER_Y_LIMIT)
+    positions[:, 0] = np.clip(positions[:, 0], -x_limit, x_limit)
+    positions[outfield, 1] = np.clip(positions[outfield, 1], -y_limit, y_limit)
     if style.keep_away:
-        positions[outfield, 1] = _clear_of_touchline_ball(positions[outfield, 1], by)
-        _keep_away_from_ball(positions, outfield, bx, by)
+        positions[outfield, 1] = _clear_of_touchline_ball(positions[outfield, 1], by, field)
+        _keep_away_from_ball(positions, outfield, bx, by, field)
     return positions
 
 
-def _clear_of_touchline_ball(y: np.ndarray, by: float) -> np.ndarray:
+def _clear_of_touchline_ball(y: np.ndarray, by: float, field: FieldDimensions) -> np.ndarray:
     """Lateral positions squeezed towards the middle so that nobody is within
-    SET_PLAY_DISTANCE (sideways) of a ball on a touchline.
+    :func:`set_play_distance` (sideways) of a ball on a touchline of *field*.
 
     Every player's target meets a ball on the touchline at some x (he stands
     ahead of a ball on our goal line and behind one on theirs), so at kick-ins
     only a lateral gap can keep him clear. A smooth, strictly increasing
     squeeze (``cap * tanh(y / cap)``) keeps the players' left-to-right order;
-    the cap on the ball's side shrinks to HALF_WIDTH - SET_PLAY_DISTANCE - 1 m
+    the cap on the ball's side shrinks to half the width - the set-play distance - 1 m
     as the ball reaches that touchline.
     """
-    tight = HALF_WIDTH - SET_PLAY_DISTANCE - 1.0
-    loose = PLAYER_Y_LIMIT
-    left_cap = loose - (loose - tight) * max(by, 0.0) / HALF_WIDTH
-    right_cap = loose - (loose - tight) * max(-by, 0.0) / HALF_WIDTH
+    half_width = field.half_width
+    tight = half_width - set_play_distance(field) - 1.0
+    loose = player_limits(field)[1]
+    left_cap = loose - (loose - tight) * max(by, 0.0) / half_width
+    right_cap = loose - (loose - tight) * max(-by, 0.0) / half_width
     cap = np.where(y >= 0.0, left_cap, right_cap)
     return cap * np.tanh(y / cap)
 
 
-def _keep_away_from_ball(positions: np.ndarray, movable: np.ndarray, bx: float, by: float) -> None:
+def _keep_away_from_ball(positions: np.ndarray, movable: np.ndarray, bx: float, by: float,
+                         field: FieldDimensions) -> None:
     """Push movable players near the ball radially outwards, in place.
 
-    A player at distance r < 2 * SET_PLAY_DISTANCE from the ball moves to
-    distance SET_PLAY_DISTANCE + r / 2 along the same direction: nobody stays
-    within SET_PLAY_DISTANCE, players farther than twice that do not move, and
+    With D = :func:`set_play_distance` on *field*, a player at distance r < 2 D from the
+    ball moves to distance D + r / 2 along the same direction: nobody stays
+    within D, players farther than twice that do not move, and
     (unlike projecting everyone onto the circle) two players never end on the
     same spot because their order along each ray is kept. Positions are then
     clipped to the players' limits.
     """
+    distance_kept = set_play_distance(field)
+    x_limit, y_limit = player_limits(field)
     offset = positions - (bx, by)
     distance = np.hypot(offset[:, 0], offset[:, 1])
-    near = movable & (distance < 2.0 * SET_PLAY_DISTANCE)
-    scale = (SET_PLAY_DISTANCE + 0.5 * distance[near]) / np.maximum(distance[near], 1e-9)
+    near = movable & (distance < 2.0 * distance_kept)
+    scale = (distance_kept + 0.5 * distance[near]) / np.maximum(distance[near], 1e-9)
     positions[near] = (bx, by) + offset[near] * scale[:, None]
-    positions[:, 0] = np.clip(positions[:, 0], -PLAYER_X_LIMIT, PLAYER_X_LIMIT)
-    positions[:, 1] = np.clip(positions[:, 1], -PLAYER_Y_LIMIT, PLAYER_Y_LIMIT)
+    positions[:, 0] = np.clip(positions[:, 0], -x_limit, x_limit)
+    positions[:, 1] = np.clip(positions[:, 1], -y_limit, y_limit)
 
 
-def design_formation(system: System, situation: Situation) -> Formation:
-    """The symmetric formation of *system* in *situation*."""
+def design_formation(system: System, situation: Situation, field: FieldDimensions) -> Formation:
+    """The symmetric formation of *system* in *situation* on *field*."""
     style = STYLES[situation]
-    balls = sample_balls_left_half()
-    positions = np.array([team_positions(system, style, bx, by) for bx, by in balls])
+    balls = sample_balls_left_half(field)
+    positions = np.array([team_positions(system, style, bx, by, field) for bx, by in balls])
     positions = np.round(positions, POSITION_DECIMALS) + 0.0  # + 0.0 turns -0.0 into 0.0
     name = f"{system.name} {situation.value.replace('_', ' ')}"
     half = Formation([d.role for d in system.roles], balls, positions, name=name, description=system.description)
     return mirror_complete(half)
 
 
-def design_set(name: str) -> FormationSet:
-    """The built-in formation set *name* (one of :data:`SYSTEMS`)."""
+def design_set(name: str, field: FieldDimensions) -> FormationSet:
+    """The built-in formation set *name* (one of :data:`SYSTEMS`) on *field*."""
     system = SYSTEMS[name]
-    formations = {situation: design_formation(system, situation) for situation in Situation}
+    formations = {situation: design_formation(system, situation, field) for situation in Situation}
     return FormationSet(system.name, formations, description=system.description)
 
 
@@ -385,18 +418,12 @@ def data_directory() -> Path:
     return Path(__file__).resolve().parent / "data"
 
 
-def main(argv: list[str] | None = None) -> int:
-    """Write every built-in set to ``formations/data/NAME.json`` (or --out DIR)."""
-    parser = argparse.ArgumentParser(description="Generate the built-in formation sets.")
-    parser.add_argument("--out", type=Path, default=data_directory(), help="output directory")
-    args = parser.parse_args(argv)
-    args.out.mkdir(parents=True, exist_ok=True)
+def write_builtin_sets(out: Path, field: FieldDimensions) -> list[Path]:
+    """Write every built-in set, designed for *field*, to ``out/NAME.json``; the paths written."""
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
     for name in SYSTEMS:
-        path = args.out / f"{name}.json"
-        save(design_set(name), path)
-        print(f"wrote {path}")
-    return 0
-
-
-if __name__ == "__main__":
-    raise SystemExit(main())
+        path = out / f"{name}.json"
+        save(design_set(name, field), path)
+        written.append(path)
+    return written

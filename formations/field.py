@@ -1,52 +1,65 @@
-"""Dimensions of the standard field, as formations need them.
+"""What formations read from a field, and the tolerances of formation files.
 
 Formations live in the *team-relative frame*: metres, origin at the centre
-spot, the team attacks towards +x (its own goal line is x = -52.5), and +y
-points to the left of a player facing the opponent goal. The numbers are those
-of the RoboCup 2D soccer server (FIFA's pitch rounded to 105 x 68 m). They are
-kept here, rather than imported from the simulator, because this package is
-pure (numpy/scipy only); the simulator's configuration uses the same values.
+spot, the team attacks towards +x (its own goal line is x = -half_length), and
++y points to the left of a player facing the opponent goal.
+
+This package is pure (numpy/scipy only), so it does not define the field: the
+field's dimensions are defined once, in the simulator's configuration
+(``soccer_sim.config.FieldConfig``, its default ``soccer_sim.config.STANDARD_FIELD``),
+and every function here that needs them takes the field from its caller as a
+:class:`FieldDimensions`, which ``FieldConfig`` satisfies.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from typing import Protocol
 
 
-@dataclass(frozen=True)
-class FieldDimensions:
-    """Lengths of the field markings, in metres."""
+class FieldDimensions(Protocol):
+    """The lengths of the field markings formations use (metres): the interface of the
+    simulator's ``FieldConfig``, with its names."""
 
-    length: float = 105.0
-    """Distance between the two goal lines."""
-    width: float = 68.0
-    """Distance between the two touchlines."""
-    penalty_area_depth: float = 16.5
-    """How far the penalty area reaches into the field from the goal line."""
-    penalty_area_width: float = 40.32
-    """Extent of the penalty area along the goal line."""
-    goal_area_depth: float = 5.5
-    """How far the goal area reaches into the field from the goal line."""
-    goal_area_width: float = 18.32
-    """Extent of the goal area along the goal line."""
-    goal_width: float = 14.02
-    """Distance between the goal posts (the server's wide goal)."""
-    centre_circle_radius: float = 9.15
-    """Radius of the centre circle, also the distance opponents keep at set plays."""
+    @property
+    def length(self) -> float:
+        """Distance between the two goal lines."""
+
+    @property
+    def width(self) -> float:
+        """Distance between the two touchlines."""
 
     @property
     def half_length(self) -> float:
         """x of the opponent goal line (our own is at minus this)."""
-        return self.length / 2.0
 
     @property
     def half_width(self) -> float:
         """|y| of the touchlines."""
-        return self.width / 2.0
 
+    @property
+    def penalty_area_length(self) -> float:
+        """How far the penalty area reaches into the field from the goal line."""
 
-STANDARD_FIELD = FieldDimensions()
-"""The field every built-in formation is designed for."""
+    @property
+    def penalty_area_width(self) -> float:
+        """Extent of the penalty area along the goal line."""
+
+    @property
+    def goal_area_length(self) -> float:
+        """How far the goal area reaches into the field from the goal line."""
+
+    @property
+    def goal_area_width(self) -> float:
+        """Extent of the goal area along the goal line."""
+
+    @property
+    def goal_width(self) -> float:
+        """Distance between the goal posts."""
+
+    @property
+    def centre_circle_radius(self) -> float:
+        """Radius of the centre circle, also the distance opponents keep at set plays."""
+
 
 FAR_OUTSIDE_MARGIN = 10.0
 """Metres beyond the goal lines and touchlines where a ball or player position

@@ -36,6 +36,7 @@ from typing import Any
 import numpy as np
 
 from formations.errors import FormationError
+from formations.field import FieldDimensions
 from formations.formation import Formation
 from formations.formation_set import FormationSet
 from formations.helios import formation_from_helios, is_helios_layout
@@ -96,8 +97,12 @@ def looks_like_json(text: str) -> bool:
     return not stripped or stripped[0] in "{["
 
 
-def read_any(path: str | os.PathLike[str]) -> Formation | FormationSet:
-    """Read a formation or a formation set from *path*.
+def read_any(path: str | os.PathLike[str], *, field: FieldDimensions) -> Formation | FormationSet:
+    """Read a formation or a formation set for *field* from *path*.
+
+    *field* is the field the formation is played on (the simulator's ``FieldConfig``):
+    every position must lie within :data:`~formations.field.FAR_OUTSIDE_MARGIN` of its lines,
+    and helios layouts take their static samples and unnamed roles' kinds from it.
 
     The layout is recognised by the content, whatever the file is called: our
     JSON layouts, helios-base's JSON layout, or agent2d's text layouts
@@ -107,17 +112,17 @@ def read_any(path: str | os.PathLike[str]) -> Formation | FormationSet:
     source = str(path)
     text = read_text(path)
     if not looks_like_json(text):
-        return formation_from_helios_text(text, source, name=Path(path).stem)
+        return formation_from_helios_text(text, source, field=field, name=Path(path).stem)
     document = parse_json(text, source)
     if not isinstance(document, dict):
         raise FormationError(source, f"expected a JSON object at the top level, got {_json_type(document)}")
     if is_helios_layout(document):
-        return formation_from_helios(document, source, name=Path(path).stem)
+        return formation_from_helios(document, source, field=field, name=Path(path).stem)
     layout = document.get("format")
     if layout == FORMAT_FORMATION:
-        return formation_from_dict(document, source)
+        return formation_from_dict(document, source, field)
     if layout == FORMAT_SET:
-        return formation_set_from_dict(document, source)
+        return formation_set_from_dict(document, source, field)
     raise FormationError(
         source,
         f"unknown layout: 'format' is {layout!r}, expected {FORMAT_FORMATION!r} or {FORMAT_SET!r} "
@@ -125,13 +130,14 @@ def read_any(path: str | os.PathLike[str]) -> Formation | FormationSet:
     )
 
 
-def load_helios(path: str | os.PathLike[str]) -> Formation:
-    """Read a helios-base / agent2d formation from *path*: their JSON layout or agent2d's
-    text layouts; FormationError for anything else (our own layouts included)."""
+def load_helios(path: str | os.PathLike[str], *, field: FieldDimensions) -> Formation:
+    """Read a helios-base / agent2d formation for *field* (as :func:`read_any`) from *path*: their
+    JSON layout or agent2d's text layouts; FormationError for anything else (our own layouts
+    included)."""
     source = str(path)
     text = read_text(path)
     if not looks_like_json(text):
-        return formation_from_helios_text(text, source, name=Path(path).stem)
+        return formation_from_helios_text(text, source, field=field, name=Path(path).stem)
     document = parse_json(text, source)
     if not isinstance(document, dict) or not is_helios_layout(document):
         raise FormationError(
@@ -139,27 +145,40 @@ def load_helios(path: str | os.PathLike[str]) -> Formation:
             "not a helios-base formation: neither a JSON file with a 'method' field nor an agent2d text "
             "file starting 'Formation DelaunayTriangulation' or 'Formation Static'",
         )
-    return formation_from_helios(document, source, name=Path(path).stem)
+    return formation_from_helios(document, source, field=field, name=Path(path).stem)
 
 
-def load(path: str | os.PathLike[str]) -> Formation:
-    """Read one formation from *path*, in our JSON layout or helios-base's."""
-    result = read_any(path)
+def load(path: str | os.PathLike[str], *, field: FieldDimensions) -> Formation:
+    """Read one formation for *field* (as :func:`read_any`) from *path*, in our JSON layout or
+    helios-base's."""
+    result = read_any(path, field=field)
     if isinstance(result, FormationSet):
         raise FormationError(str(path), "this file holds a formation set; read it with formations.load_set")
     return result
 
 
-def load_set(path: str | os.PathLike[str]) -> FormationSet:
-    """Read a formation set from *path* (our set layout)."""
-    result = read_any(path)
+def load_set(path: str | os.PathLike[str], *, field: FieldDimensions) -> FormationSet:
+    """Read a formation set for *field* (as :func:`read_any`) from *path* (our set layout)."""
+    result = read_any(path, field=field)
     if not isinstance(result, FormationSet):
         raise FormationError(str(path), "this file holds a single formation, not a formation set")
     return result
 
 
-def formation_from_dict(document: dict[str, Any], source: str) -> Formation:
-    """Build a :class:`Formation` from the parsed JSON object of our layout."""
+def load_packaged_set(path: str | os.PathLike[str]) -> FormationSet:
+    """Read a formation set shipped with this package (our set layout) from *path*. Its
+    positions are not checked against a field here: the package's tests check the built-in
+    sets against the simulator's field, the one they are designed for."""
+    source = str(path)
+    document = parse_json(read_text(path), source)
+    if not isinstance(document, dict) or document.get("format") != FORMAT_SET:
+        raise FormationError(source, f"not a formation set ('format' must be {FORMAT_SET!r})")
+    return formation_set_from_dict(document, source, None)
+
+
+def formation_from_dict(document: dict[str, Any], source: str, field: FieldDimensions | None) -> Formation:
+    """Build a :class:`Formation` for *field* (None: positions not checked against a field) from
+    the parsed JSON object of our layout."""
     _check_version(document, source)
     _reject_unknown_keys(document, _FORMATION_KEYS, source, None)
     name = _optional_string(document, "name", source)
@@ -168,11 +187,12 @@ def formation_from_dict(document: dict[str, Any], source: str) -> Formation:
     check_roles(roles, source)  # before the samples, which refer to the roles
     check_role_count(roles, source)
     balls, positions = _parse_samples(_require(document, "samples", list, source, None), roles, source)
-    return Formation(roles, balls, positions, name=name, description=description, source=source)
+    return Formation(roles, balls, positions, name=name, description=description, source=source, field=field)
 
 
-def formation_set_from_dict(document: dict[str, Any], source: str) -> FormationSet:
-    """Build a :class:`FormationSet` from the parsed JSON object of our set layout."""
+def formation_set_from_dict(document: dict[str, Any], source: str, field: FieldDimensions | None) -> FormationSet:
+    """Build a :class:`FormationSet` for *field* (as :func:`formation_from_dict`) from the parsed
+    JSON object of our set layout."""
     _check_version(document, source)
     _reject_unknown_keys(document, _SET_KEYS, source, None)
     name = _optional_string(document, "name", source)
@@ -184,7 +204,7 @@ def formation_set_from_dict(document: dict[str, Any], source: str) -> FormationS
         if not isinstance(member, dict):
             raise FormationError(source, f"expected an object, got {_json_type(member)}", where)
         try:
-            formations[situation] = formation_from_dict(member, source)
+            formations[situation] = formation_from_dict(member, source, field)
         except FormationError as error:
             raise error.within(where) from None
     return FormationSet(name, formations, description=description, source=source)

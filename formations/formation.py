@@ -20,6 +20,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from formations.errors import FormationError, FormationInputError, UnknownRoleError
+from formations.field import FieldDimensions
 from formations.interpolation import TriangleInterpolator
 from formations.roles import Role, check_roles
 from formations.triangulation import triangulate
@@ -42,6 +43,10 @@ class Formation:
         Free text, saved with the formation.
     source:
         What to name in error messages (the file a formation was read from).
+    field:
+        The field the samples are for (the simulator's ``FieldConfig``); given, every
+        position must lie within :data:`~formations.field.FAR_OUTSIDE_MARGIN` of its lines
+        (the readers of formation files pass it to catch typos). Not kept.
 
     Raises :class:`FormationError` if the roles or samples are unusable.
     """
@@ -55,13 +60,14 @@ class Formation:
         name: str = "",
         description: str = "",
         source: str | None = None,
+        field: FieldDimensions | None = None,
     ) -> None:
         self.source = source or (f"formation {name!r}" if name else "<formation>")
         roles = tuple(roles)
         check_roles(roles, self.source)
         balls_array = _as_float_array(balls, self.source, "ball positions")
         positions_array = _as_float_array(positions, self.source, "role positions")
-        check_samples(roles, balls_array, positions_array, self.source)
+        check_samples(roles, balls_array, positions_array, self.source, field)
         self.roles: tuple[Role, ...] = roles
         self.name = name
         self.description = description

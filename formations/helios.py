@@ -33,6 +33,7 @@ from typing import Any
 import numpy as np
 
 from formations.errors import FormationError
+from formations.field import FieldDimensions
 from formations.formation import Formation
 from formations.helios_roles import (
     HELIOS_KINDS,
@@ -63,8 +64,10 @@ def is_helios_layout(document: dict[str, Any]) -> bool:
     return "method" in document and "format" not in document
 
 
-def formation_from_helios(document: dict[str, Any], source: str, *, name: str = "") -> Formation:
-    """Convert a parsed helios-base JSON formation into a :class:`Formation`."""
+def formation_from_helios(document: dict[str, Any], source: str, *, field: FieldDimensions,
+                          name: str = "") -> Formation:
+    """Convert a parsed helios-base JSON formation into a :class:`Formation` on *field* (the
+    server's pitch the file was written for; its positions are checked against it)."""
     method = document.get("method")
     if method not in (HELIOS_METHOD, STATIC_METHOD):
         raise FormationError(
@@ -82,7 +85,7 @@ def formation_from_helios(document: dict[str, Any], source: str, *, name: str = 
     if static:
         if len(balls) != 1:
             raise FormationError(source, f"a static formation holds exactly one sample (its line-up), found {len(balls)}")
-        balls, positions = static_samples(positions[0])
+        balls, positions = static_samples(positions[0], field)
     server_to_team_frame(balls, positions)
     partners = partners_from_pairs(
         {number: item["pair"] for number, item in entries.items()}, source, lambda number: f"role {number}"
@@ -90,11 +93,12 @@ def formation_from_helios(document: dict[str, Any], source: str, *, name: str = 
     roles = []
     for n in range(1, HELIOS_ROLE_COUNT + 1):
         given = HELIOS_KINDS.get(entries[n]["type"])
-        kind = role_kind(given, entries[n]["name"], float(positions[:, n - 1, 0].mean()))
+        kind = role_kind(given, entries[n]["name"], float(positions[:, n - 1, 0].mean()), field)
         roles.append(Role(n, entries[n]["name"], kind, partners.get(n)))
     description = f"imported from helios-base formation {source}" + (" (static)" if static else "")
     try:
-        return Formation(roles, balls, positions, name=name, description=description, source=source)
+        return Formation(roles, balls, positions, name=name, description=description, source=source,
+                         field=field)
     except FormationError as error:
         if static and error.where:  # the four samples are copies of the file's one sample
             raise FormationError(source, error.problem, re.sub(r"^sample \d+", "sample 0", error.where)) from None

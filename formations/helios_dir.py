@@ -33,10 +33,12 @@ from __future__ import annotations
 
 import os
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
+from dataclasses import field as default_of
 from pathlib import Path
 
 from formations.errors import FormationError
+from formations.field import FieldDimensions
 from formations.files import load_helios
 from formations.formation import Formation
 from formations.formation_set import FormationSet, Situation, parse_situation
@@ -74,19 +76,21 @@ class DirectoryImport:
     formation_set: FormationSet
     placed: dict[Situation, Path]
     """Situation -> the file that supplied it."""
-    left_out: dict[Path, str] = field(default_factory=dict)
+    left_out: dict[Path, str] = default_of(default_factory=dict)
     """File -> why it was not placed."""
-    notes: list[str] = field(default_factory=list)
+    notes: list[str] = default_of(default_factory=list)
     """Other things the user should know (roles taken from the normal formation, ...)."""
 
 
 def import_helios_directory(
     directory: str | os.PathLike[str],
     *,
+    field: FieldDimensions,
     name: str | None = None,
     mapping: Mapping[str, str | Situation] | None = None,
 ) -> DirectoryImport:
-    """Read an agent2d formation directory into a :class:`FormationSet`.
+    """Read an agent2d formation directory into a :class:`FormationSet` on *field* (the server's
+    pitch its files were written for; see :func:`formations.files.read_any`).
 
     *mapping* maps file names (with or without ``.conf``) to situation names
     and takes precedence over :data:`AGENT2D_SITUATIONS`. Raises
@@ -116,7 +120,7 @@ def import_helios_directory(
         raise FormationError(str(root), f"no normal formation (normal-formation.conf) in the directory (found: {found})")
     formations: dict[Situation, Formation] = {}
     for situation, path in placed.items():
-        formations[situation] = load_helios(path)
+        formations[situation] = load_helios(path, field=field)
     notes = []
     normal = formations[Situation.NORMAL]
     for situation, formation in formations.items():

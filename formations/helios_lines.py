@@ -10,11 +10,13 @@ The parsers of the layouts themselves are :mod:`formations.helios_text` and
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass
+from dataclasses import field as default_of
 
 import numpy as np
 
 from formations.errors import FormationError
+from formations.field import FieldDimensions
 from formations.formation import Formation
 from formations.helios_roles import ROLE_COUNT, partners_from_pairs, role_kind, server_to_team_frame, static_samples
 from formations.roles import Role
@@ -108,22 +110,36 @@ class ParsedLayout:
     from their names or depth. Coordinates are still the server's.
     """
 
-    names: dict[int, str] = field(default_factory=dict)
-    pairs: dict[int, int] = field(default_factory=dict)
-    types: dict[int, str] = field(default_factory=dict)
-    role_lines: dict[int, int] = field(default_factory=dict)
-    balls: list[tuple[float, float]] = field(default_factory=list)
-    positions: list[np.ndarray] = field(default_factory=list)
-    sample_lines: list[int] = field(default_factory=list)
+    names: dict[int, str] = default_of(default_factory=dict)
+    pairs: dict[int, int] = default_of(default_factory=dict)
+    types: dict[int, str] = default_of(default_factory=dict)
+    role_lines: dict[int, int] = default_of(default_factory=dict)
+    balls: list[tuple[float, float]] = default_of(default_factory=list)
+    positions: list[np.ndarray] = default_of(default_factory=list)
+    sample_lines: list[int] = default_of(default_factory=list)
     static: bool = False
+    static_positions: np.ndarray | None = None
+    """A static formation's one position per role (11, 2), server frame."""
+    static_line: int = 0
+    """The line a static formation's positions are written on."""
 
     def hold_static(self, positions: np.ndarray, line: int) -> None:
-        """Make this a static formation of *positions* (11, 2); *line* is where they are written."""
+        """Make this a static formation of *positions* (11, 2); *line* is where they are written.
+        Its samples (:func:`~formations.helios_roles.static_samples`) are made when the
+        formation is built, on the field it is built for."""
         self.static = True
-        for ball, sample in zip(*static_samples(positions)):
+        self.static_positions = np.asarray(positions, dtype=np.float64)
+        self.static_line = line
+
+    def expand_static(self, field: FieldDimensions) -> None:
+        """A static formation's samples on *field*: its positions at each of the field's corners."""
+        if self.static_positions is None:
+            return
+        for ball, sample in zip(*static_samples(self.static_positions, field)):
             self.balls.append((float(ball[0]), float(ball[1])))
             self.positions.append(sample)
-            self.sample_lines.append(line)
+            self.sample_lines.append(self.static_line)
+        self.static_positions = None
 
 
 def symmetry_number(reader: LineReader, line: Line, token: str, number: int) -> int:
@@ -141,8 +157,11 @@ def sample_field(i: int, k: int) -> str:
 
 
 # ----------------------------------------------------------------- building
-def build_formation(parsed: ParsedLayout, source: str, name: str, description: str) -> Formation:
-    """The :class:`Formation` *parsed* describes, in our frame; errors name the line at fault."""
+def build_formation(parsed: ParsedLayout, source: str, name: str, description: str,
+                    field: FieldDimensions) -> Formation:
+    """The :class:`Formation` *parsed* describes, in our frame, on *field* (the pitch of the
+    server the layout was written for); errors name the line at fault."""
+    parsed.expand_static(field)
     balls = np.array(parsed.balls, dtype=np.float64).reshape(-1, 2)
     positions = np.array(parsed.positions, dtype=np.float64).reshape(-1, ROLE_COUNT, 2)
     server_to_team_frame(balls, positions)
@@ -153,10 +172,11 @@ def build_formation(parsed: ParsedLayout, source: str, name: str, description: s
     for number in ALL_ROLES:
         role_name = parsed.names[number]
         mean_x = float(positions[:, number - 1, 0].mean()) if len(positions) else 0.0
-        kind = role_kind(parsed.types.get(number), role_name, mean_x)
+        kind = role_kind(parsed.types.get(number), role_name, mean_x, field)
         roles.append(Role(number, role_name, kind, partners.get(number)))
     try:
-        return Formation(roles, balls, positions, name=name, description=description, source=source)
+        return Formation(roles, balls, positions, name=name, description=description, source=source,
+                         field=field)
     except FormationError as error:
         raise _locate(error, parsed) from None
 

@@ -24,7 +24,7 @@ from collections.abc import Callable, Mapping
 import numpy as np
 
 from formations.errors import FormationError
-from formations.field import STANDARD_FIELD
+from formations.field import FieldDimensions
 
 ROLE_COUNT = 11
 """agent2d formations always have roles 1..11."""
@@ -58,9 +58,9 @@ NAME_KINDS: tuple[tuple[str, str], ...] = (
 )
 """Name suffix -> kind: Goalie, *Back, *Half, *Forward and the other names of the table."""
 
-DEPTH_THIRD = STANDARD_FIELD.length / 6.0
-"""A role of unknown name whose mean x is below -this (m) is a defender, above +this a
-forward, and a midfielder in between (the field's thirds)."""
+FIELD_THIRDS = 3
+"""A role of unknown name is placed by the third of the field's length its mean x falls in:
+the defending third (defender), the middle one (midfielder) or the attacking one (forward)."""
 
 
 def kind_from_name(name: str) -> str | None:
@@ -72,16 +72,19 @@ def kind_from_name(name: str) -> str | None:
     return None
 
 
-def role_kind(given: str | None, name: str, mean_x: float) -> str:
-    """Our kind of a role: *given* (from a type column) if any, else from its *name*, else from its depth."""
-    return given or kind_from_name(name) or kind_from_depth(mean_x)
+def role_kind(given: str | None, name: str, mean_x: float, field: FieldDimensions) -> str:
+    """Our kind of a role: *given* (from a type column) if any, else from its *name*, else from its
+    depth on *field*."""
+    return given or kind_from_name(name) or kind_from_depth(mean_x, field)
 
 
-def kind_from_depth(mean_x: float) -> str:
-    """Kind of a role of unknown name from its mean x over the samples (metres, our frame)."""
-    if mean_x < -DEPTH_THIRD:
+def kind_from_depth(mean_x: float, field: FieldDimensions) -> str:
+    """Kind of a role of unknown name from its mean x over the samples (metres, our frame) and
+    the third of *field* it falls in (:data:`FIELD_THIRDS`)."""
+    middle_half_length = field.length / (2 * FIELD_THIRDS)
+    if mean_x < -middle_half_length:
         return "defender"
-    if mean_x > DEPTH_THIRD:
+    if mean_x > middle_half_length:
         return "forward"
     return "midfielder"
 
@@ -127,24 +130,19 @@ def server_to_team_frame(balls: np.ndarray, positions: np.ndarray) -> None:
     positions[..., 1] *= -1.0
 
 
-STATIC_BALLS = np.array(
-    [
-        (-STANDARD_FIELD.half_length, -STANDARD_FIELD.half_width),
-        (-STANDARD_FIELD.half_length, STANDARD_FIELD.half_width),
-        (STANDARD_FIELD.half_length, -STANDARD_FIELD.half_width),
-        (STANDARD_FIELD.half_length, STANDARD_FIELD.half_width),
-    ]
-)
-"""Ball positions of the samples a static formation becomes (the field's corners, symmetric
-about both axes, so the same in the server's frame and ours)."""
+def static_balls(field: FieldDimensions) -> np.ndarray:
+    """(4, 2) ball positions of the samples a static formation becomes: the corners of *field*
+    (symmetric about both axes, so the same in the server's frame and ours)."""
+    hl, hw = field.half_length, field.half_width
+    return np.array([(-hl, -hw), (-hl, hw), (hl, -hw), (hl, hw)], dtype=np.float64)
 
 
-def static_samples(positions: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def static_samples(positions: np.ndarray, field: FieldDimensions) -> tuple[np.ndarray, np.ndarray]:
     """Samples (balls (4, 2), positions (4, n, 2)) that hold *positions* (n, 2) for every ball.
 
     A static formation has one position per player whatever the ball does;
-    the same positions at the four corners of the field make every ball
+    the same positions at the four corners of *field* make every ball
     position on the field give exactly them.
     """
-    balls = STATIC_BALLS.copy()
+    balls = static_balls(field)
     return balls, np.repeat(np.asarray(positions, dtype=np.float64)[None], len(balls), axis=0)

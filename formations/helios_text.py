@@ -56,6 +56,7 @@ import re
 
 import numpy as np
 
+from formations.field import FieldDimensions
 from formations.formation import Formation
 from formations.helios_csv import parse_csv
 from formations.helios_lines import (
@@ -99,8 +100,9 @@ def is_csv_header(line: Line) -> bool:
     return line.text.split(",", 1)[0].strip() == "Method" and "," in line.text
 
 
-def formation_from_helios_text(text: str, source: str, *, name: str = "") -> Formation:
-    """Parse agent2d's text formation *text* (read from *source*) into a :class:`Formation`."""
+def formation_from_helios_text(text: str, source: str, *, field: FieldDimensions, name: str = "") -> Formation:
+    """Parse agent2d's text formation *text* (read from *source*) into a :class:`Formation` on
+    *field* (the server's pitch the file was written for; its positions are checked against it)."""
     reader = LineReader(text, source)
     header = reader.next("the header line (" + HEADER_EXAMPLES + ")")
     if is_csv_header(header):
@@ -113,7 +115,7 @@ def formation_from_helios_text(text: str, source: str, *, name: str = "") -> For
         else:
             parsed = _parse_dt_v1(reader) if version == 1 else _parse_dt(reader, version)
             layout = f"Formation {DT_METHOD} {version}"
-    return build_formation(parsed, source, name, f"imported from agent2d formation {source} ({layout})")
+    return build_formation(parsed, source, name, f"imported from agent2d formation {source} ({layout})", field)
 
 
 # ----------------------------------------------------------------- parsing

@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-from formations.field import STANDARD_FIELD, FieldDimensions
+from formations.field import FieldDimensions
 from formations.formation import Formation
 
 KIND_COLOURS = {
@@ -23,8 +23,8 @@ KIND_COLOURS = {
 """Marker colour of each role kind."""
 
 
-def draw_field(ax: Any, field: FieldDimensions = STANDARD_FIELD) -> None:
-    """Draw the field markings (team-relative frame, our goal on the left)."""
+def draw_field(ax: Any, field: FieldDimensions) -> None:
+    """Draw the markings of *field* (team-relative frame, our goal on the left)."""
     from matplotlib.patches import Arc, Circle, Rectangle
 
     hl, hw = field.half_length, field.half_width
@@ -36,8 +36,8 @@ def draw_field(ax: Any, field: FieldDimensions = STANDARD_FIELD) -> None:
     for sign in (-1.0, 1.0):
         goal_line = sign * hl
         for depth, width in (
-            (field.penalty_area_depth, field.penalty_area_width),
-            (field.goal_area_depth, field.goal_area_width),
+            (field.penalty_area_length, field.penalty_area_width),
+            (field.goal_area_length, field.goal_area_width),
         ):
             x = goal_line if sign < 0 else goal_line - depth
             ax.add_patch(Rectangle((x, -width / 2), depth, width, **line))
@@ -112,9 +112,11 @@ def save_picture(
     ball_xy: tuple[float, float],
     path: str | os.PathLike[str],
     *,
+    field: FieldDimensions,
     title: str | None = None,
 ) -> np.ndarray:
-    """Write a PNG (or any format matplotlib infers from *path*) of *formation* at *ball_xy*."""
+    """Write a PNG (or any format matplotlib infers from *path*) of *formation* at *ball_xy*, on
+    the markings of *field*."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -122,7 +124,7 @@ def save_picture(
 
     fig, ax = plt.subplots(figsize=(11, 7.5))
     try:
-        draw_field(ax)
+        draw_field(ax, field)
         positions = draw_formation(ax, formation, ball_xy)
         ax.set_title(title or f"{formation.name or 'formation'}: ball at ({ball_xy[0]:g}, {ball_xy[1]:g})")
         ax.legend(loc="upper right", fontsize=7, framealpha=0.6)

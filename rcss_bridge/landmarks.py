@@ -13,15 +13,15 @@ normal from inside the pitch (:data:`LINE_NORMALS`).
 
 from __future__ import annotations
 
-from soccer_sim.perception.localise import FLAG_MARGIN, PENALTY_AREA_LENGTH, PENALTY_AREA_WIDTH
+from soccer_sim.config import STANDARD_FIELD, FieldConfig
+from soccer_sim.perception.localise import FLAG_MARGIN
 
 
-def flag_positions(length: float = 105.0, width: float = 68.0,
-                   goal_width: float = 14.02) -> dict[tuple[str, ...], tuple[float, float]]:
-    """Every named landmark of a ``length`` x ``width`` m pitch by its name tokens, e.g.
-    ``("f", "p", "l", "c") -> (-36.0, 0.0)`` (m, server frame)."""
-    hl, hw, hg = length / 2.0, width / 2.0, goal_width / 2.0
-    px, py = hl - PENALTY_AREA_LENGTH, PENALTY_AREA_WIDTH / 2.0
+def flag_positions(field: FieldConfig = STANDARD_FIELD) -> dict[tuple[str, ...], tuple[float, float]]:
+    """Every named landmark of the pitch ``field`` by its name tokens, e.g.
+    ``("f", "p", "l", "c") -> (-36.0, 0.0)`` (m, server frame, for the default pitch)."""
+    hl, hw, hg = field.half_length, field.half_width, field.goal_width / 2.0
+    px, py = hl - field.penalty_area_length, field.penalty_area_width / 2.0
     out: dict[tuple[str, ...], tuple[float, float]] = {
         ("f", "c"): (0.0, 0.0), ("f", "c", "t"): (0.0, -hw), ("f", "c", "b"): (0.0, hw)}
     for end, sx in (("l", -1.0), ("r", 1.0)):
@@ -46,7 +46,8 @@ def flag_positions(length: float = 105.0, width: float = 68.0,
 
 
 FLAGS = flag_positions()
-"""The landmarks of the default pitch by name (m, server frame)."""
+"""The landmarks of the default pitch (:data:`soccer_sim.config.STANDARD_FIELD`) by name (m,
+server frame)."""
 
 LINE_NORMALS = {("l", "l"): 180.0, ("l", "r"): 0.0, ("l", "t"): -90.0, ("l", "b"): 90.0}
 """Each line's outward normal seen from inside the pitch (degrees, server frame); from

@@ -1,8 +1,9 @@
 """Every physical and rule parameter of a match, importable from here.
 
-The field, physics and stamina parameters live in this module, the referee's and the
-tackles' in :mod:`soccer_sim.rule_config` (re-exported here), the shared checks and
-:class:`ConfigError` in :mod:`soccer_sim.config_checks`.
+The physics and stamina parameters live in this module, the field's in
+:mod:`soccer_sim.field_config` and the referee's and the tackles' in :mod:`soccer_sim.rule_config`
+(both re-exported here), the shared checks and :class:`ConfigError` in
+:mod:`soccer_sim.config_checks`.
 
 Defaults follow the RoboCup 2D soccer simulator's server parameters where one
 exists. Units: metres, cycles (one cycle = ``cycle_seconds`` of game time),
@@ -23,64 +24,13 @@ from dataclasses import field as default_of
 
 from soccer_sim.config_checks import ConfigError
 from soccer_sim.config_ranges import check_ranges
+from soccer_sim.field_config import STANDARD_FIELD, FieldConfig
 from soccer_sim.perception.config import ObservationConfig
 from soccer_sim.rule_config import RuleConfig, TackleConfig
 
 
 BODY_BALL_CONTACTS = ("rcssserver", "swept", "rigid")
 """The values of :attr:`PhysicsConfig.body_ball_contact`."""
-
-
-@dataclass(frozen=True)
-class FieldConfig:
-    """Dimensions of the pitch (metres)."""
-
-    length: float = 105.0
-    """Distance between the two goal lines."""
-    width: float = 68.0
-    """Distance between the two touchlines."""
-    goal_width: float = 14.02
-    """Distance between the inner sides of the goal posts."""
-    goal_post_radius: float = 0.06
-    """Radius of each (static, collidable) goal post."""
-    penalty_area_length: float = 16.5
-    """Depth of the penalty area from the goal line."""
-    penalty_area_width: float = 40.32
-    """Width of the penalty area across the field."""
-    goal_area_length: float = 5.5
-    """Depth of the goal area from the goal line."""
-    goal_area_width: float = 18.32
-    """Width of the goal area across the field."""
-    centre_circle_radius: float = 9.15
-    """Radius of the centre circle, also the set-play clearance distance."""
-    margin: float = 5.0
-    """How far beyond the lines players may run (the ground around the pitch)."""
-
-    def __post_init__(self) -> None:
-        self.validate()
-
-    def validate(self) -> None:
-        """ConfigError naming the first field out of its range (:mod:`soccer_sim.config_ranges`)
-        or out of proportion with the others."""
-        check_ranges(self)
-        if self.goal_width >= self.width:
-            raise ConfigError(f"FieldConfig.goal_width ({self.goal_width}) must be smaller than the field width ({self.width})")
-        if self.penalty_area_width >= self.width or self.goal_area_width >= self.penalty_area_width:
-            raise ConfigError("FieldConfig: need goal_area_width < penalty_area_width < width")
-        if self.goal_width >= self.goal_area_width:
-            raise ConfigError("FieldConfig: the goal must be narrower than the goal area")
-        if self.penalty_area_length * 2 >= self.length or self.goal_area_length >= self.penalty_area_length:
-            raise ConfigError("FieldConfig: need goal_area_length < penalty_area_length < length / 2")
-        if self.centre_circle_radius * 2 >= min(self.length, self.width):
-            raise ConfigError("FieldConfig.centre_circle_radius does not fit in the field")
-
-    @property
-    def half_length(self) -> float:
-        return self.length / 2.0
-
-    @property
-    def half_width(self) -> float:
-        return self.width / 2.0
 
 
 @dataclass(frozen=True)
@@ -373,7 +323,7 @@ class PlayerTypeConfig:
 class MatchConfig:
     """Everything that, with the two teams and the seed, determines a match."""
 
-    field: FieldConfig = default_of(default_factory=FieldConfig)
+    field: FieldConfig = STANDARD_FIELD
     physics: PhysicsConfig = default_of(default_factory=PhysicsConfig)
     stamina: StaminaConfig = default_of(default_factory=StaminaConfig)
     rules: RuleConfig = default_of(default_factory=RuleConfig)

@@ -1,8 +1,8 @@
 """The role-assigner interface: which outfield player takes which formation role.
 
 Team-relative frame (we attack +x, our goal at ``x = -half_length``), metres, cycles. The
-field's default sizes are the formations' (:data:`formations.field.STANDARD_FIELD`), the same
-team frame and field the formation targets are given in.
+field's default sizes are the simulator's default field's
+(:data:`soccer_sim.config.STANDARD_FIELD`), the field the built-in formations are designed for.
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ import numpy as np
 
 from agents.roles.errors import RoleError
 from agents.roles.kernels import descending_x, is_permutation
-from formations.field import STANDARD_FIELD
+from soccer_sim.config import STANDARD_FIELD
 
 
 @dataclass
@@ -40,11 +40,11 @@ class RoleContext:
     """The match cycle (100 ms each); hysteresis counts in these."""
     attacking: bool
     """The situation: True when we expect to control the ball first (we attack)."""
-    penalty_area_length: float = STANDARD_FIELD.penalty_area_depth
-    """Depth of the penalty area from the goal line (m; default: the standard field's, as
+    penalty_area_length: float = STANDARD_FIELD.penalty_area_length
+    """Depth of the penalty area from the goal line (m; default: the default field's, as
     rcssserver's)."""
     penalty_area_half_width: float = STANDARD_FIELD.penalty_area_width / 2.0
-    """Half the penalty area's width (m; default: the standard field's, as rcssserver's)."""
+    """Half the penalty area's width (m; default: the default field's, as rcssserver's)."""
     ball_reach: np.ndarray | None = None
     """Optional (k,) how far (m) each outfield player (row of ``players``) effectively is from
     controlling the ball, when the team knows better than the straight distance to ``ball``

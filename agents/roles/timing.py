@@ -20,7 +20,7 @@ import numpy as np
 from agents.roles import assigner_names, make_assigner
 from agents.roles.base import RoleContext, offensive_order
 from agents.roles.errors import RoleError
-from formations.field import STANDARD_FIELD
+from soccer_sim.config import STANDARD_FIELD
 
 _HALF_LENGTH, _HALF_WIDTH = STANDARD_FIELD.half_length, STANDARD_FIELD.half_width
 

@@ -8,8 +8,9 @@ valid formation, not just the built-in ones:
 * the role's *reference spot* is its mean target in the normal situation over a grid of ball
   positions that is symmetric in y (so a role's own lateral slot survives and the block's
   slide with the ball cancels out); team frame, metres, we attack +x;
-* a role is *wide* when its reference spot is at least ``wide_fraction`` of the standard
-  field's half width from the long axis;
+* a role is *wide* when its reference spot is at least ``wide_fraction`` of the default
+  field's half width (:data:`soccer_sim.config.STANDARD_FIELD`, the field the built-in
+  formations are designed for) from the long axis;
 * goalkeeper -> ``"goalkeeper"``; defender -> ``"full-back"`` (wide) or ``"centre-back"``;
   forward -> ``"winger"`` (wide) or ``"centre-forward"`` (a 4-4-2's strikers are
   centre-forwards); midfielder -> ``"wide-midfielder"`` (wide), else ``"holding-midfielder"``
@@ -22,7 +23,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from formations import STANDARD_FIELD, FormationSet, Situation
+from formations import FormationSet, Situation
+from soccer_sim.config import STANDARD_FIELD
 
 GOALKEEPER = "goalkeeper"
 CENTRE_BACK = "centre-back"
@@ -44,8 +46,8 @@ POSITION_KINDS: dict[str, str] = {
 """Position label -> the formation role kind it belongs to (for tables by kind)."""
 
 WIDE_FRACTION = 0.45
-"""A role is wide when its reference spot's |y| is at least this share of the standard half
-width (15.3 m of 34 m): full-backs and wingers stand about 20 m out, central players within
+"""A role is wide when its reference spot's |y| is at least this share of the default field's
+half width (15.3 m on rcssserver's pitch): full-backs and wingers stand about 20 m out, central players within
 about 13 m, so the cut falls in the gap between them."""
 HOLDING_GAP = 3.0
 """The deepest central midfielder holds when it stands at least this many metres (x) behind

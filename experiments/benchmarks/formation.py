@@ -37,7 +37,7 @@ def run(args: argparse.Namespace) -> int:
     import formations
     from experiments.commands.errors import fail
     from experiments.reporting import Table
-    from formations.field import STANDARD_FIELD
+    from soccer_sim.config import STANDARD_FIELD
 
     names = args.sets or formations.builtin_names()
     unknown = sorted(set(names) - set(formations.builtin_names()))

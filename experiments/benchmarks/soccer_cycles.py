@@ -33,10 +33,13 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
+from soccer_sim.config import STANDARD_FIELD
+
 CROWD_RADIUS = 2.0
 """Players whose centre is within this distance of the ball's centre count as near it (m)."""
-MIDFIELD_HALF_LENGTH = 17.5
-"""The ball is in midfield while ``|x|`` is below this (m): the middle third of a 105 m pitch."""
+MIDFIELD_HALF_LENGTH = STANDARD_FIELD.length / 6.0
+"""The ball is in midfield while ``|x|`` is below this (m): the middle third of rcssserver's pitch
+(the simulator's default field)."""
 LOW_STAMINA = 100.0
 """Stamina below which rcssserver caps a dash's power (the player is out of stamina)."""
 

@@ -20,7 +20,8 @@ threshold and the relocation limit come from the log's ``server_param`` line). T
   separately, as the catch).
 
 **Passes (kick to kick)** and **shots (ball path)**: as :mod:`experiments.benchmarks.soccer_plays`
-defines them (the pitch's half length is rcssserver's 52.5 m, which the log does not give).
+defines them (the pitch's half length is rcssserver's, the simulator's default field's, which the
+log does not give).
 
 Not in a log, so shown as ``-``: **shots**, **shots ending on a body** and **passes** (their
 definitions, :mod:`soccer_sim.analysis.plays`, need the ball's velocity at the kick, before the
@@ -40,13 +41,14 @@ import numpy as np
 from experiments.benchmarks.soccer_cycles import CycleFigures
 from experiments.benchmarks.soccer_match import COUNTED, place_figures, role_figure
 from experiments.benchmarks.soccer_plays import PlayFigures
+from soccer_sim.config import STANDARD_FIELD
 from soccer_sim.rcg import GameLog
 from soccer_sim.rcg.mapping import BALL_COLLIDE, GOALIE, MAX_PLAYER, STAND, TACKLE, TACKLE_FAULT
 
 NOT_IN_A_LOG = ("shots", "shots ending on a body", "passes", "set-play retakes", "teammate contacts",
                "body commands dropped")
 """Counted figures a game log cannot give (see the module docstring)."""
-HALF_LENGTH = 52.5
+HALF_LENGTH = STANDARD_FIELD.half_length
 """Half the length of rcssserver's pitch (m; a constant of the server, not in the log)."""
 _KICK, _CATCH, _TACKLE = 0, 3, 8
 """Indices of the kick, catch and tackle counters in a player's ``(c ...)``."""

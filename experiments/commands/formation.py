@@ -135,6 +135,7 @@ def run_show(args: argparse.Namespace) -> int:
     from experiments.results.files import atomic_output, describe, file_problem, is_directory_name
     from formations.validation import check_ball_position
     from formations.plotting import save_picture
+    from soccer_sim.config import STANDARD_FIELD
 
     item = _read(args.file)
     if isinstance(item, int):
@@ -150,7 +151,7 @@ def run_show(args: argparse.Namespace) -> int:
     if not all(math.isfinite(v) for v in ball):
         return _fail(f"--ball must be two finite numbers (metres), got {ball[0]:g} {ball[1]:g}")
     try:
-        check_ball_position(ball, "--ball")
+        check_ball_position(ball, "--ball", STANDARD_FIELD)
     except FormationError as error:
         return _fail(str(error))
     label = (formation.name if isinstance(item, Formation) else item.name) or Path(args.file).stem
@@ -163,7 +164,7 @@ def run_show(args: argparse.Namespace) -> int:
         return _fail(f"--out {out}: {problem}")
     try:
         with atomic_output(out) as temporary:
-            positions = save_picture(formation, ball, temporary)
+            positions = save_picture(formation, ball, temporary, field=STANDARD_FIELD)
     except OSError as error:                 # a write that started and failed (a full disk): exit 1
         return _fail(f"--out: cannot write {describe(error)}; nothing was written", FAILED)
     except ValueError as error:              # a format matplotlib does not know
@@ -187,6 +188,7 @@ def run_import(args: argparse.Namespace) -> int:
     from experiments.results.files import file_problem
     from formations import FormationError
     from formations.files import load_helios
+    from soccer_sim.config import STANDARD_FIELD
 
     if os.path.isdir(args.file):
         return _import_directory(args)
@@ -196,7 +198,7 @@ def run_import(args: argparse.Namespace) -> int:
     if problem:
         return _fail(f"{args.out}: {problem}")
     try:
-        formation = load_helios(args.file)
+        formation = load_helios(args.file, field=STANDARD_FIELD)
     except FormationError as error:
         return _fail(str(error))
     except OSError as error:
@@ -213,6 +215,7 @@ def _import_directory(args: argparse.Namespace) -> int:
     from formations import FormationError
     from formations.formation_set import Situation
     from formations.helios_dir import import_helios_directory
+    from soccer_sim.config import STANDARD_FIELD
 
     mapping = {}
     for entry in args.map:
@@ -224,7 +227,7 @@ def _import_directory(args: argparse.Namespace) -> int:
     if problem:
         return _fail(f"{args.out}: {problem}")
     try:
-        result = import_helios_directory(args.file, name=args.name, mapping=mapping)
+        result = import_helios_directory(args.file, field=STANDARD_FIELD, name=args.name, mapping=mapping)
     except FormationError as error:
         return _fail(str(error))
     except OSError as error:
@@ -289,11 +292,12 @@ def _read(name: str):
     such file exists), or the exit status (2: bad input) after printing why it
     cannot be read: a malformed formation or an unreadable file."""
     from formations import FormationError, builtin_names, load_builtin, read_any
+    from soccer_sim.config import STANDARD_FIELD
 
     try:
         if not os.path.exists(name) and name in builtin_names():
             return load_builtin(name)
-        return read_any(name)
+        return read_any(name, field=STANDARD_FIELD)
     except FormationError as error:
         return _fail(str(error), BAD_INPUT)
     except OSError as error:

@@ -9,6 +9,12 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from soccer_sim.config import FieldConfig
 
 
 CONDITIONS = ("one", "uncoordinated", "coordinated")
@@ -35,12 +41,18 @@ class Trial:
     scored: bool
 
 
-def markers(count: int, seed: int, half_length: float = 52.5, half_width: float = 34.0,
-            goal_area_length: float = 5.5, goal_area_half_width: float = 9.16) -> np.ndarray:
-    """(count, 2) the fixed marker sequence (absolute frame, the attackers attack +x):
+def markers(count: int, seed: int, field: FieldConfig | None = None) -> np.ndarray:
+    """(count, 2) the fixed marker sequence on ``field`` (default: the simulator's
+    :data:`~soccer_sim.config.STANDARD_FIELD`; absolute frame, the attackers attack +x):
     alternately in the attackers' own half and in the opponents' half, uniform within
     ``MARKER_INSET`` of the lines, none in or next to the goal area they attack."""
     import numpy as np
+
+    from soccer_sim.config import STANDARD_FIELD
+
+    field = field or STANDARD_FIELD
+    half_length, half_width = field.half_length, field.half_width
+    goal_area_length, goal_area_half_width = field.goal_area_length, field.goal_area_width / 2.0
 
     rng = np.random.default_rng([seed, 0x5E7])
     out = np.empty((count, 2))
@@ -56,9 +68,15 @@ def markers(count: int, seed: int, half_length: float = 52.5, half_width: float 
     return out
 
 
-def first_positions(robots: int, half_length: float = 52.5) -> np.ndarray:
-    """(robots, 2) the attackers on their own goal line at the first trial, ``ROBOT_SPACING`` apart."""
+def first_positions(robots: int, half_length: float | None = None) -> np.ndarray:
+    """(robots, 2) the attackers on their own goal line at the first trial, ``ROBOT_SPACING`` apart
+    (``half_length`` m: half the field's length, default the simulator's
+    :data:`~soccer_sim.config.STANDARD_FIELD`'s)."""
     import numpy as np
+
+    from soccer_sim.config import STANDARD_FIELD
+
+    half_length = STANDARD_FIELD.half_length if half_length is None else half_length
 
     y = (np.arange(robots) - (robots - 1) / 2.0) * ROBOT_SPACING
     return np.column_stack([np.full(robots, -half_length + 0.5), y])

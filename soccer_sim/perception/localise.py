@@ -25,36 +25,39 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from soccer_sim.field_config import STANDARD_FIELD, FieldConfig
 from soccer_sim.perception.params import SeeParams
 from soccer_sim.perception.kernels import localise_into, params_array, position_from_sightings, sense_velocities
 
-PENALTY_AREA_LENGTH = 16.5
-"""rcssserver's ``PENALTY_AREA_LENGTH`` (m), where the penalty-box flags stand."""
-PENALTY_AREA_WIDTH = 40.32
-"""rcssserver's ``PENALTY_AREA_WIDTH`` (m)."""
 FLAG_MARGIN = 5.0
 """rcssserver's ``PITCH_MARGIN`` (m): the outer ring of flags stands this far outside the lines."""
+FLAG_RING_X = tuple(float(x) for x in range(-50, 51, 10))
+"""x (m) of the outer-ring flags beyond each touchline (rcssserver's ``(f t l 50)`` ...
+``(f b r 50)``): every 10 m, at the same places whatever the pitch's length."""
+FLAG_RING_Y = tuple(float(y) for y in range(-30, 31, 10))
+"""y (m) of the outer-ring flags behind each goal line (``(f l t 30)`` ... ``(f r b 30)``)."""
 
 
-def field_flags(length: float = 105.0, width: float = 68.0, goal_width: float = 14.02) -> np.ndarray:
-    """The positions (55, 2) m of rcssserver's flags for a pitch of ``length`` x ``width`` m
-    centred on the origin: centre and the two ends of the halfway line, the four corners, both
-    goals' centres and posts, the three flags of each penalty box, and the outer ring (every
-    10 m along the touchlines' outside from -50 to 50, and at -30..30 behind the goal lines)."""
-    hl, hw, hg = length / 2.0, width / 2.0, goal_width / 2.0
-    px, py = hl - PENALTY_AREA_LENGTH, PENALTY_AREA_WIDTH / 2.0
+def field_flags(field: FieldConfig = STANDARD_FIELD) -> np.ndarray:
+    """The positions (55, 2) m of rcssserver's flags for the pitch ``field`` (its length,
+    width, goal width and penalty area) centred on the origin: centre and the two ends of the
+    halfway line, the four corners, both goals' centres and posts, the three flags of each
+    penalty box, and the outer ring (:data:`FLAG_RING_X` along the touchlines' outside,
+    :data:`FLAG_RING_Y` behind the goal lines)."""
+    hl, hw, hg = field.half_length, field.half_width, field.goal_width / 2.0
+    px, py = hl - field.penalty_area_length, field.penalty_area_width / 2.0
     pts = [(0.0, 0.0), (0.0, -hw), (0.0, hw)]
     for sx in (-1.0, 1.0):
         pts += [(sx * hl, -hw), (sx * hl, hw), (sx * hl, 0.0), (sx * hl, -hg), (sx * hl, hg),
                 (sx * px, -py), (sx * px, 0.0), (sx * px, py)]
-        pts += [(sx * (hl + FLAG_MARGIN), float(y)) for y in range(-30, 31, 10)]
+        pts += [(sx * (hl + FLAG_MARGIN), y) for y in FLAG_RING_Y]
     for sy in (-1.0, 1.0):
-        pts += [(float(x), sy * (hw + FLAG_MARGIN)) for x in range(-50, 51, 10)]
+        pts += [(x, sy * (hw + FLAG_MARGIN)) for x in FLAG_RING_X]
     return np.array(pts, dtype=np.float64)
 
 
 DEFAULT_FLAGS = field_flags()
-"""The 55 flags of the default 105 x 68 m pitch (m)."""
+"""The 55 flags of the default pitch (:data:`soccer_sim.field_config.STANDARD_FIELD`), m."""
 
 
 @dataclass(frozen=True)

@@ -20,9 +20,11 @@ import numpy as np
 
 from soccer_sim.config_checks import ConfigError
 from soccer_sim.config_ranges import check_ranges
+from soccer_sim.field_config import STANDARD_FIELD
 
-MAX_DIST_IN_PITCH = math.hypot(105.0, 68.0)
-"""``heteroplayer.cpp``'s ``maximum_dist_in_pitch`` (m): the diagonal of the 105 x 68 m pitch."""
+MAX_DIST_IN_PITCH = math.hypot(STANDARD_FIELD.length, STANDARD_FIELD.width)
+"""``heteroplayer.cpp``'s ``maximum_dist_in_pitch`` (m): the diagonal of rcssserver's pitch
+(:data:`soccer_sim.field_config.STANDARD_FIELD`), whatever field a match plays on."""
 
 
 @dataclass(frozen=True)

@@ -33,6 +33,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from experiments.commands.errors import TRACEBACK_VARIABLE, CommandParser
+from soccer_sim.config import STANDARD_FIELD as FIELD
 
 # a damaged results file is ~20 kB of bytes: hypothesis says so when it reports one
 pytestmark = pytest.mark.filterwarnings("ignore:Generating overly large repr")
@@ -358,7 +359,7 @@ def _reads(kind: str, path: Path) -> bool:
         if kind == "formation":
             from formations import read_any
 
-            read_any(str(path))
+            read_any(str(path), field=FIELD)
         elif kind == "scenario":
             from soccer_sim import MatchConfig
             from soccer_sim.scenarios import load_scenario

@@ -33,6 +33,7 @@ from experiments.cli import main as cli
 from formations import FormationError, Situation
 from formations.helios_dir import import_helios_directory
 from formations.symmetry import asymmetries
+from soccer_sim.config import STANDARD_FIELD as FIELD
 
 BALLS = [(0.0, 0.0), (52.5, 34.0), (-30.0, 12.5), (41.0, -20.0), (-52.5, -34.0)]
 """Ball positions (ours) at which a static formation must give its line-up."""
@@ -53,7 +54,7 @@ def _assert_holds_lineup(formation):
 # ----------------------------------------------------------------- Formation Static 0 + empty samples block
 @pytest.mark.parametrize("end", [False, True], ids=["no End", "End"])
 def test_static_file_with_an_empty_samples_block_holds_its_lineup(tmp_path, end):
-    formation = formations.load(_write(tmp_path, "before-kick-off.conf", static_v0_text(end=end)))
+    formation = formations.load(_write(tmp_path, "before-kick-off.conf", static_v0_text(end=end)), field=FIELD)
     _assert_holds_lineup(formation)
     assert [r.name for r in formation.roles] == [name for _, name, _, _ in LINEUP]
     assert [r.kind for r in formation.roles] == LINEUP_KINDS
@@ -63,7 +64,7 @@ def test_static_file_with_an_empty_samples_block_holds_its_lineup(tmp_path, end)
 def test_static_file_with_comments_and_plain_header_and_empty_samples_block(tmp_path):
     text = static_v0_text().replace("Formation Static 0\n", "Formation Static\n# line-up before kick-off\n")
     text = text.replace("Begin Samples 2 0\n", "\n// saved by the editor\nBegin Samples 2 0\n")
-    _assert_holds_lineup(formations.load(_write(tmp_path, "static.conf", text)))
+    _assert_holds_lineup(formations.load(_write(tmp_path, "static.conf", text), field=FIELD))
 
 
 @pytest.mark.parametrize(
@@ -83,22 +84,22 @@ def test_broken_static_file_with_samples_block_names_file_and_line(tmp_path, old
     text = static_v0_text()
     assert old in text
     with pytest.raises(FormationError, match=message):
-        formations.load(_write(tmp_path, "static.conf", text.replace(old, new, 1)))
+        formations.load(_write(tmp_path, "static.conf", text.replace(old, new, 1)), field=FIELD)
 
 
 # ----------------------------------------------------------------- helios-base's JSON, method Static
 def test_json_static_formation_with_unknown_types_holds_its_lineup(tmp_path):
     path = _write(tmp_path, "before-kick-off.conf", json.dumps(static_json_document(), indent=2))
-    formation = formations.load(path)
+    formation = formations.load(path, field=FIELD)
     _assert_holds_lineup(formation)
     assert [r.kind for r in formation.roles] == LINEUP_KINDS  # from the names: every type is Unknown
     assert all(r.partner is None for r in formation.roles)
-    assert formations.load_helios(path).roles == formation.roles
+    assert formations.load_helios(path, field=FIELD).roles == formation.roles
     # Unknown types stay refused where the kind matters: a Delaunay formation.
     document = static_json_document()
     document["method"] = "DelaunayTriangulation"
     with pytest.raises(FormationError, match=r"role 1: 'type' must be one of G, DF, MF, FW, got 'Unknown'"):
-        formations.load(_write(tmp_path, "dt.json", json.dumps(document)))
+        formations.load(_write(tmp_path, "dt.json", json.dumps(document)), field=FIELD)
 
 
 def test_json_static_formation_takes_given_types_and_places_unknown_names_by_depth(tmp_path):
@@ -106,7 +107,7 @@ def test_json_static_formation_takes_given_types_and_places_unknown_names_by_dep
     document["role"][0]["type"] = "G"
     document["role"][1]["type"] = document["role"][10]["type"] = "Unknown"
     document["role"][1]["name"] = document["role"][10]["name"] = "Sample"
-    formation = formations.load(_write(tmp_path, "s.json", json.dumps(document)))
+    formation = formations.load(_write(tmp_path, "s.json", json.dumps(document)), field=FIELD)
     _assert_holds_lineup(formation)
     # Given types win over names (a "SideBack" typed MF is a midfielder); "Sample" goes by depth:
     # x -31 is a defender, x -9.5 a midfielder.
@@ -129,13 +130,13 @@ def test_broken_json_static_formation_is_reported(tmp_path, mutate, message):
     mutate(document)
     path = _write(tmp_path, "static.json", json.dumps(document))
     with pytest.raises(FormationError, match=message) as caught:
-        formations.load(path)
+        formations.load(path, field=FIELD)
     assert str(caught.value).startswith(str(path) + ":")
 
 
 # ----------------------------------------------------------------- helios-base's comma-separated layout
 def test_csv_delaunay_formation_reproduces_every_sample(tmp_path):
-    formation = formations.load(_write(tmp_path, "normal-formation.conf", csv_dt_text()))
+    formation = formations.load(_write(tmp_path, "normal-formation.conf", csv_dt_text()), field=FIELD)
     samples = mirrored_samples()
     assert formation.n_samples == len(samples)
     for ball, positions in samples:
@@ -145,19 +146,19 @@ def test_csv_delaunay_formation_reproduces_every_sample(tmp_path):
     assert [r.partner for r in formation.roles] == [None, 3, 2, 5, 4, None, 8, 7, 10, 9, None]
     assert asymmetries(formation, tolerance=1e-6) == []
     # The same formation as agent2d's text layout of the same samples.
-    text = formations.load(_write(tmp_path, "text.conf", dt_v2_text()))
+    text = formations.load(_write(tmp_path, "text.conf", dt_v2_text()), field=FIELD)
     assert text.roles == formation.roles and np.array_equal(text.sample_positions, formation.sample_positions)
 
 
 def test_csv_role_types_give_kinds_and_unknown_falls_back_to_names(tmp_path):
     types = ["G", "MF", "MF", "DF", "DF", "DF", "MF", "MF", "FW", "FW", "Unknown"]
-    formation = formations.load(_write(tmp_path, "f.conf", csv_dt_text(types=types)))
+    formation = formations.load(_write(tmp_path, "f.conf", csv_dt_text(types=types)), field=FIELD)
     kinds = [r.kind for r in formation.roles]
     assert kinds == ["goalkeeper", "midfielder", "midfielder", "defender", "defender", "defender"] + ["midfielder"] * 2 + ["forward"] * 3
 
 
 def test_csv_static_formation_holds_its_lineup(tmp_path):
-    formation = formations.load(_write(tmp_path, "before-kick-off.conf", csv_static_text()))
+    formation = formations.load(_write(tmp_path, "before-kick-off.conf", csv_static_text()), field=FIELD)
     _assert_holds_lineup(formation)
     assert [r.kind for r in formation.roles] == LINEUP_KINDS
 
@@ -195,16 +196,16 @@ def test_broken_csv_file_names_file_and_line(tmp_path, edit, message):
     edited = edit(text)
     assert edited != text
     with pytest.raises(FormationError, match=message):
-        formations.load(_write(tmp_path, "f.conf", edited))
+        formations.load(_write(tmp_path, "f.conf", edited), field=FIELD)
 
 
 def test_broken_csv_static_file_names_file_and_line(tmp_path):
     text = csv_static_text().replace("Position,-48.5,0,", "Position,-48.5,0,-91,")
     with pytest.raises(FormationError, match=r"f.conf: line 5: the Position row holds 22 value\(s\), found 23"):
-        formations.load(_write(tmp_path, "f.conf", text))
+        formations.load(_write(tmp_path, "f.conf", text), field=FIELD)
     text = csv_static_text().replace("Position,-48.5,0,-31,", "Position,-48.5,0,-91,")
     with pytest.raises(FormationError, match=r"f.conf: line 5, role 2: position \(-91, 7.5\) is far outside"):
-        formations.load(_write(tmp_path, "f.conf", text))
+        formations.load(_write(tmp_path, "f.conf", text), field=FIELD)
 
 
 # ----------------------------------------------------------------- a directory of these layouts
@@ -223,11 +224,11 @@ def _mixed_directory(tmp_path):
 
 def test_directory_of_csv_json_static_and_text_static_files(tmp_path):
     root = _mixed_directory(tmp_path)
-    result = import_helios_directory(root)
+    result = import_helios_directory(root, field=FIELD)
     assert set(result.formation_set.situations) == {Situation.NORMAL}
     assert "never load it" in result.left_out[root / "goalie-formation.conf"]
     mapped = import_helios_directory(
-        root, mapping={"before-kick-off": "our_set_play", "goal-kick-our": "their_set_play", "kickin-our-formation": "defend"}
+        root, field=FIELD, mapping={"before-kick-off": "our_set_play", "goal-kick-our": "their_set_play", "kickin-our-formation": "defend"}
     )
     team = mapped.formation_set
     for situation in ("our_set_play", "their_set_play", "defend"):
@@ -242,7 +243,7 @@ def test_cli_imports_the_static_file_librcsc_writes(tmp_path, capsys):
     out = tmp_path / "kickoff.json"
     assert cli(["formation", "import", "helios", str(source), str(out)]) == 0
     assert re.search(r"wrote .*kickoff.json: 11 roles, 4 samples", capsys.readouterr().out)
-    _assert_holds_lineup(formations.load(out))
+    _assert_holds_lineup(formations.load(out, field=FIELD))
     bad = _write(tmp_path, "bad.conf", static_v0_text().replace("Begin Samples 2 0", "Begin Samples 2 1"))
     assert cli(["formation", "import", "helios", str(bad), str(tmp_path / "o.json")]) == 2  # bad input
     assert re.search(r"bad.conf: line 13: a static formation holds no samples", capsys.readouterr().err)

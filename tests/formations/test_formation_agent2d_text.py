@@ -22,6 +22,7 @@ from experiments.cli import main as cli
 from formations import FormationError, Situation
 from formations.helios_dir import import_helios_directory
 from formations.symmetry import asymmetries
+from soccer_sim.config import STANDARD_FIELD as FIELD
 
 
 def _write(tmp_path, name, text):
@@ -32,7 +33,7 @@ def _write(tmp_path, name, text):
 
 @pytest.mark.parametrize("maker", [dt_v2_text, dt_v1_text], ids=["version 2", "version 1"])
 def test_every_sample_is_reproduced_at_its_ball_position(tmp_path, maker):
-    formation = formations.load(_write(tmp_path, "normal-formation.conf", maker()))
+    formation = formations.load(_write(tmp_path, "normal-formation.conf", maker()), field=FIELD)
     samples = mirrored_samples()
     assert formation.name == "normal-formation" and formation.n_samples == len(samples) == 11
     for ball, positions in samples:
@@ -44,7 +45,7 @@ def test_every_sample_is_reproduced_at_its_ball_position(tmp_path, maker):
 
 
 def test_roles_kinds_and_mirror_pairs(tmp_path):
-    formation = formations.load(_write(tmp_path, "f.conf", dt_v2_text()))
+    formation = formations.load(_write(tmp_path, "f.conf", dt_v2_text()), field=FIELD)
     assert [r.name for r in formation.roles] == [name for _, name, _ in ROLES]
     assert [r.kind for r in formation.roles] == ["goalkeeper"] + ["defender"] * 4 + ["midfielder"] * 3 + ["forward"] * 3
     assert [r.partner for r in formation.roles] == [None, 3, 2, 5, 4, None, 8, 7, 10, 9, None]
@@ -60,12 +61,12 @@ def test_version_3_takes_kinds_from_the_type_column(tmp_path):
     types = {1: "G", 2: "DF", 3: "DF", 4: "MF", 5: "MF", 6: "DF", 7: "MF", 8: "MF", 9: "FW", 10: "FW", 11: "FW"}
     for n, name, pair in ROLES:
         text = text.replace(f"\n{n} {name} {pair}\n", f"\n{n} {types[n]} {name} {pair} - -\n", 1)
-    formation = formations.load(_write(tmp_path, "v3.conf", text))
+    formation = formations.load(_write(tmp_path, "v3.conf", text), field=FIELD)
     assert formation.role(4).kind == "midfielder" and formation.role(6).kind == "defender"
 
 
 def test_static_formation_holds_its_positions_for_every_ball(tmp_path):
-    formation = formations.load(_write(tmp_path, "before-kick-off.conf", static_text()))
+    formation = formations.load(_write(tmp_path, "before-kick-off.conf", static_text()), field=FIELD)
     expected = np.array(STATIC_POSITIONS, dtype=float) * (1.0, -1.0)
     for ball in [(0.0, 0.0), (52.5, 34.0), (-30.0, 12.5), (80.0, -50.0)]:
         np.testing.assert_allclose(formation.positions(ball), expected, atol=1e-9)
@@ -77,7 +78,7 @@ def test_static_formation_holds_its_positions_for_every_ball(tmp_path):
 
 def test_constraints_block_and_comments_are_skipped(tmp_path):
     text = dt_v2_text().replace("End Samples\n", "End Samples\n// editor constraints\nBegin Constraints 1\n0 3\nEnd Constraints\n")
-    assert formations.load(_write(tmp_path, "c.conf", text)).n_samples == 11
+    assert formations.load(_write(tmp_path, "c.conf", text), field=FIELD).n_samples == 11
 
 
 def _line_of(text: str, needle: str, occurrence: int = 1) -> int:
@@ -120,18 +121,18 @@ def test_broken_file_names_file_and_line(tmp_path, label, edit, message):
     assert text != good, "the edit must change the file"
     path = _write(tmp_path, "broken.conf", text)
     with pytest.raises(FormationError, match=message) as caught:
-        formations.load(path)
+        formations.load(path, field=FIELD)
     assert re.match(re.escape(str(path)) + r": line \d+", str(caught.value)), str(caught.value)
 
 
 def test_error_lines_point_at_the_culprit(tmp_path):
     text = dt_v2_text().replace("Ball 42.76 0\n", "Ball 42.7.6 0\n")
     with pytest.raises(FormationError) as caught:
-        formations.load(_write(tmp_path, "b.conf", text))
+        formations.load(_write(tmp_path, "b.conf", text), field=FIELD)
     assert caught.value.where == f"line {_line_of(text, 'Ball 42.7.6 0')}"
     text = dt_v2_text().replace("\n11 CenterForward 0\n", "\n12 CenterForward 0\n")
     with pytest.raises(FormationError) as caught:
-        formations.load(_write(tmp_path, "r.conf", text))
+        formations.load(_write(tmp_path, "r.conf", text), field=FIELD)
     assert caught.value.where == f"line {_line_of(text, '12 CenterForward 0')}"
 
 
@@ -147,7 +148,7 @@ def test_error_lines_point_at_the_culprit(tmp_path):
 )
 def test_broken_static_and_version_1_files(tmp_path, text, message):
     with pytest.raises(FormationError, match=message):
-        formations.load(_write(tmp_path, "x.conf", text))
+        formations.load(_write(tmp_path, "x.conf", text), field=FIELD)
 
 
 def _directory(tmp_path):
@@ -166,7 +167,7 @@ def _directory(tmp_path):
 
 
 def test_directory_becomes_a_set_and_reports_what_it_left_out(tmp_path):
-    result = import_helios_directory(_directory(tmp_path))
+    result = import_helios_directory(_directory(tmp_path), field=FIELD)
     team = result.formation_set
     assert team.name == "formations-dt"
     assert set(team.situations) == {Situation.NORMAL, Situation.ATTACK, Situation.DEFEND}
@@ -181,7 +182,7 @@ def test_directory_becomes_a_set_and_reports_what_it_left_out(tmp_path):
 
 
 def test_mapping_places_the_static_file_with_the_normal_roles(tmp_path):
-    result = import_helios_directory(_directory(tmp_path), name="mine", mapping={"before-kick-off.conf": "our_kickoff"})
+    result = import_helios_directory(_directory(tmp_path), field=FIELD, name="mine", mapping={"before-kick-off.conf": "our_kickoff"})
     team = result.formation_set
     assert team.name == "mine" and team.formation("our_set_play").roles == team.roles
     assert team.formation("our_set_play").role(3).name == "CenterBack"
@@ -192,10 +193,10 @@ def test_mapping_places_the_static_file_with_the_normal_roles(tmp_path):
 def test_directory_without_normal_formation_or_with_a_broken_file(tmp_path):
     root = write_directory(tmp_path / "empty", {"offense-formation.conf": dt_v2_text()})
     with pytest.raises(FormationError, match=r"no normal formation .*found: offense-formation.conf"):
-        import_helios_directory(root)
+        import_helios_directory(root, field=FIELD)
     root = write_directory(tmp_path / "broken", {"normal-formation.conf": dt_v2_text().replace("Ball 0 0", "Ball 0 zero")})
     with pytest.raises(FormationError, match=r"normal-formation.conf: line 18: 'zero' is not a number"):
-        import_helios_directory(root)
+        import_helios_directory(root, field=FIELD)
 
 
 def test_cli_imports_a_file_and_a_directory(tmp_path, capsys):
@@ -203,7 +204,7 @@ def test_cli_imports_a_file_and_a_directory(tmp_path, capsys):
     out = tmp_path / "normal.json"
     assert cli(["formation", "import", "helios", str(source), str(out)]) == 0
     assert "11 roles, 11 samples" in capsys.readouterr().out
-    assert formations.load(out).roles == formations.load(source).roles
+    assert formations.load(out, field=FIELD).roles == formations.load(source, field=FIELD).roles
     directory = _directory(tmp_path)
     out = tmp_path / "set.json"
     assert cli(["formation", "import", "helios", str(directory), str(out), "--map", "before-kick-off=their_set_play"]) == 0
@@ -211,7 +212,7 @@ def test_cli_imports_a_file_and_a_directory(tmp_path, capsys):
     assert "their_set_play  <- before-kick-off.conf" in printed and "not placed (1 file)" in printed
     assert "kickin-our-formation.conf: our kick-ins only" in printed and "notes.txt" not in printed
     assert json.loads(out.read_text())["format"] == "soccer-sim-formation-set"
-    assert formations.load_set(out).situations == (Situation.NORMAL, Situation.ATTACK, Situation.DEFEND, Situation.THEIR_SET_PLAY)
+    assert formations.load_set(out, field=FIELD).situations == (Situation.NORMAL, Situation.ATTACK, Situation.DEFEND, Situation.THEIR_SET_PLAY)
 
 
 def test_cli_reports_broken_files_and_bad_mapping(tmp_path, capsys):
@@ -247,7 +248,7 @@ def test_round_trip_directory_to_set_to_a_team_playing_with_it(tmp_path, capsys)
     capsys.readouterr()
     examples = Path(__file__).resolve().parents[2] / "examples"
     team_class = runpy.run_path(str(examples / "formation_team.py"))["FormationTeam"]
-    for team in (team_class(str(out)), team_class(formations.load_set(out))):
+    for team in (team_class(str(out)), team_class(formations.load_set(out, field=FIELD))):
         assert team.formation_set.formation("defend").n_samples == 11
         result = soccer_sim.run_match(team, "idle", seed=1, config=soccer_sim.MatchConfig(max_cycles=200))
         assert result.cycles == 200

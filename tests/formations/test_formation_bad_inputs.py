@@ -11,6 +11,7 @@ from formations.files import formation_from_dict
 from experiments.commands import formation as formation_command
 from tests.formations.formation_samples import eleven_roles
 from formations import Formation, FormationError, Role
+from soccer_sim.config import STANDARD_FIELD as FIELD
 
 
 def run(*argv: str) -> int:
@@ -58,7 +59,7 @@ def test_a_formation_built_in_memory_refuses_twelve_roles() -> None:
     with pytest.raises(FormationError, match="mine: 12 roles; a formation places one team, at most 11 players"):
         Formation(roles, balls, positions, source="mine")
     with pytest.raises(FormationError, match="12 roles"):
-        formation_from_dict(twelve_role_document(), "doc")
+        formation_from_dict(twelve_role_document(), "doc", FIELD)
 
 
 @pytest.mark.parametrize("ball", [("1000", "0"), ("0", "-45")])

@@ -9,9 +9,9 @@ import pytest
 
 import formations
 from formations import Situation
-from formations.design import SET_PLAY_DISTANCE, SYSTEMS, design_set
-from formations.field import STANDARD_FIELD
+from formations.design import SYSTEMS, design_set, set_play_distance
 from formations.files import dumps
+from soccer_sim.config import STANDARD_FIELD
 
 NAMES = ["4-3-3", "4-4-2"]
 HL, HW = STANDARD_FIELD.half_length, STANDARD_FIELD.half_width
@@ -38,12 +38,13 @@ def test_builtin_names_and_loading():
 @pytest.mark.parametrize("name", NAMES)
 def test_shipped_files_are_what_the_design_generates(name):
     shipped = resources.files("formations").joinpath("data", f"{name}.json").read_text(encoding="utf-8")
-    assert shipped == dumps(design_set(name)), "run `python -m formations.design` to regenerate"
+    assert shipped == dumps(design_set(name, STANDARD_FIELD)), (
+        "run `python -m tests.formations.write_builtin_sets` to regenerate")
 
 
 @pytest.mark.parametrize("name", NAMES)
 def test_samples_cover_the_whole_field(name):
-    penalty_depth = STANDARD_FIELD.penalty_area_depth
+    penalty_depth = STANDARD_FIELD.penalty_area_length
     penalty_half_width = STANDARD_FIELD.penalty_area_width / 2
     for situation, formation in formations.load_builtin(name).own_formations().items():
         balls = formation.balls
@@ -63,7 +64,7 @@ def test_samples_cover_the_whole_field(name):
 
 @pytest.mark.parametrize("name", NAMES)
 def test_goalkeeper_in_goal_area_and_everyone_on_the_field(name):
-    depth, half_width = STANDARD_FIELD.goal_area_depth, STANDARD_FIELD.goal_area_width / 2
+    depth, half_width = STANDARD_FIELD.goal_area_length, STANDARD_FIELD.goal_area_width / 2
     outside = np.array([(x, y) for x in (-70.0, -55.0, 0.0, 56.0, 80.0) for y in (-50.0, -36.0, 0.0, 35.0, 45.0)])
     for situation, formation in formations.load_builtin(name).own_formations().items():
         positions = formation.positions_many(np.vstack((GRID, outside)))
@@ -123,7 +124,7 @@ def their_restart_spots() -> dict[str, np.ndarray]:
         "kick-off": np.array([[0.0, 0.0]]),
         "kick-ins": np.vstack([np.column_stack((xs, np.full_like(xs, side))) for side in (-HW, HW)]),
         "corners": np.array([[-HL, -HW], [-HL, HW]]),
-        "goal kicks": np.array([[HL - STANDARD_FIELD.goal_area_depth, s * STANDARD_FIELD.goal_area_width / 2] for s in (-1, 1)]),
+        "goal kicks": np.array([[HL - STANDARD_FIELD.goal_area_length, s * STANDARD_FIELD.goal_area_width / 2] for s in (-1, 1)]),
         "free kicks in their half": their_half,
     }
 
@@ -132,12 +133,12 @@ def their_restart_spots() -> dict[str, np.ndarray]:
 def test_everyone_keeps_clear_at_their_restarts(name):
     formation = formations.load_builtin(name).formation(Situation.THEIR_SET_PLAY)
     outfield = ~kinds(formation, "goalkeeper")
-    in_our_box = (formation.balls[:, 0] < -HL + STANDARD_FIELD.penalty_area_depth) & (
+    in_our_box = (formation.balls[:, 0] < -HL + STANDARD_FIELD.penalty_area_length) & (
         np.abs(formation.balls[:, 1]) < STANDARD_FIELD.penalty_area_width / 2
     )
     for ball, positions in zip(formation.balls[~in_our_box], formation.sample_positions[~in_our_box]):
         distance = np.hypot(*(positions[outfield] - ball).T)
-        assert distance.min() >= SET_PLAY_DISTANCE - 0.01, ball
+        assert distance.min() >= set_play_distance(STANDARD_FIELD) - 0.01, ball
     # Between the samples too (interpolated), wherever the opponents can restart play.
     for label, balls in their_restart_spots().items():
         positions = formation.positions_many(balls)[:, outfield]

@@ -14,6 +14,7 @@ from experiments.commands import formation as formation_command
 from tests.formations.formation_samples import small_document
 from test_formation_errors import BAD_DOCUMENTS, HELIOS_BAD
 from test_formation_files import helios_document
+from soccer_sim.config import STANDARD_FIELD as FIELD
 
 
 def run(*argv: str) -> int:
@@ -98,7 +99,7 @@ def test_import_helios(tmp_path, write_json, capsys):
     out = tmp_path / "ours.json"
     assert run("formation", "import", "helios", str(source), str(out)) == 0
     assert json.loads(out.read_text())["format"] == "soccer-sim-formation"
-    assert formations.load(out).n_samples == 6
+    assert formations.load(out, field=FIELD).n_samples == 6
     not_helios = write_json("ours.json", small_document())
     assert run("formation", "import", "helios", str(not_helios), str(tmp_path / "x.json")) == 2
     assert "not a helios-base formation" in capsys.readouterr().err

@@ -12,6 +12,7 @@ from scipy.spatial import QhullError
 import formations
 from formations import Formation, FormationError, FormationSet, Role
 from tests.formations.formation_samples import eleven_roles, small_document
+from soccer_sim.config import STANDARD_FIELD as FIELD
 
 Mutation = Callable[[dict[str, Any]], Any]
 
@@ -96,7 +97,7 @@ def test_bad_document_is_reported_with_file_and_culprit(write_json, label, mutat
     mutate(document)
     path = write_json("bad.json", document)
     with pytest.raises(FormationError, match=message) as caught:
-        formations.load(path)
+        formations.load(path, field=FIELD)
     assert str(caught.value).startswith(str(path) + ":")
     assert isinstance(caught.value, ValueError)
     assert "\n" not in str(caught.value)
@@ -114,13 +115,13 @@ def test_bad_document_is_reported_with_file_and_culprit(write_json, label, mutat
 def test_invalid_json_names_the_file(write_json, text, message):
     path = write_json("broken.json", text)
     with pytest.raises(FormationError, match=message) as caught:
-        formations.load(path)
+        formations.load(path, field=FIELD)
     assert str(caught.value).startswith(str(path))
 
 
 def test_missing_file_is_an_os_error(tmp_path):
     with pytest.raises(FileNotFoundError):
-        formations.load(tmp_path / "absent.json")
+        formations.load(tmp_path / "absent.json", field=FIELD)
 
 
 def test_a_sample_equal_to_another_after_rounding_noise_is_rejected_programmatically():
@@ -164,7 +165,7 @@ def test_error_inside_a_set_file_names_the_situation(tmp_path, write_json):
     }
     path = write_json("set.json", document)
     with pytest.raises(FormationError, match=r"set.json: formation 'attack', sample 1: missing the position of role 2"):
-        formations.load_set(path)
+        formations.load_set(path, field=FIELD)
 
 
 # ----------------------------------------------------------------- helios
@@ -195,7 +196,7 @@ def test_bad_helios_file_is_reported(write_json, label, mutate, message):
     mutate(document)
     path = write_json("helios.json", document)
     with pytest.raises(FormationError, match=message) as caught:
-        formations.load(path)
+        formations.load(path, field=FIELD)
     assert str(caught.value).startswith(str(path) + ":")
 
 

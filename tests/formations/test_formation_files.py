@@ -13,12 +13,13 @@ from formations import FormationError, FormationSet, Situation
 from formations.files import dumps
 
 from tests.formations.formation_samples import small_document
+from soccer_sim.config import STANDARD_FIELD as FIELD
 
 
 def test_formation_round_trip_is_exact(tmp_path, random_formation):
     path = tmp_path / "random.json"
     random_formation.save(path)
-    loaded = formations.load(path)
+    loaded = formations.load(path, field=FIELD)
     assert loaded.roles == random_formation.roles
     assert loaded.name == random_formation.name
     assert np.array_equal(loaded.balls, random_formation.balls)
@@ -30,7 +31,7 @@ def test_formation_set_round_trip(tmp_path):
     original = formations.load_builtin("4-4-2")
     path = tmp_path / "set.json"
     formations.save(original, path)
-    loaded = formations.load_set(path)
+    loaded = formations.load_set(path, field=FIELD)
     assert loaded.name == "4-4-2" and loaded.situations == original.situations
     for situation in Situation:
         a, b = original.formation(situation), loaded.formation(situation)
@@ -58,7 +59,7 @@ def test_layout_is_readable_one_sample_per_line(random_formation):
 
 
 def test_small_document_loads(write_json):
-    formation = formations.load(write_json("small.json", small_document()))
+    formation = formations.load(write_json("small.json", small_document()), field=FIELD)
     assert formation.role_numbers == (1, 2, 3)
     assert formation.role(2).partner == 3
     np.testing.assert_allclose(formation.positions((30.0, 0.0))[1], (0.0, -15.0))
@@ -67,12 +68,12 @@ def test_small_document_loads(write_json):
 def test_load_and_load_set_refuse_the_other_kind(tmp_path, write_json):
     single = write_json("single.json", small_document())
     with pytest.raises(FormationError, match="single.json.*not a formation set"):
-        formations.load_set(single)
+        formations.load_set(single, field=FIELD)
     set_path = tmp_path / "set.json"
     formations.save(formations.load_builtin("4-3-3"), set_path)
     with pytest.raises(FormationError, match="set.json.*formation set"):
-        formations.load(set_path)
-    assert isinstance(formations.read_any(set_path), FormationSet)
+        formations.load(set_path, field=FIELD)
+    assert isinstance(formations.read_any(set_path, field=FIELD), FormationSet)
 
 
 # ----------------------------------------------------------------- helios
@@ -124,7 +125,7 @@ def helios_document() -> dict:
 
 
 def test_helios_layout_imports_with_y_mirrored_to_our_frame(write_json):
-    formation = formations.load(write_json("helios.json", helios_document()))
+    formation = formations.load(write_json("helios.json", helios_document()), field=FIELD)
     assert formation.name == "helios"
     assert [r.kind for r in formation.roles][:2] == ["goalkeeper", "defender"]
     assert formation.role(2).partner == 3 and formation.role(3).partner == 2
@@ -138,10 +139,10 @@ def test_helios_layout_imports_with_y_mirrored_to_our_frame(write_json):
 
 
 def test_helios_import_then_save_round_trips(tmp_path, write_json):
-    imported = formations.load(write_json("helios.json", helios_document()))
+    imported = formations.load(write_json("helios.json", helios_document()), field=FIELD)
     out = tmp_path / "ours.json"
     imported.save(out)
-    again = formations.load(out)
+    again = formations.load(out, field=FIELD)
     assert again.roles == imported.roles
     assert np.array_equal(again.sample_positions, imported.sample_positions)
 
@@ -183,7 +184,7 @@ def helios_text_mutual_pairs() -> str:
 
 
 def test_helios_file_with_mutual_pairs_as_its_tools_write_it(write_json):
-    formation = formations.load(write_json("normal-formation.conf", helios_text_mutual_pairs()))
+    formation = formations.load(write_json("normal-formation.conf", helios_text_mutual_pairs()), field=FIELD)
     assert formation.name == "normal-formation" and formation.n_samples == 5
     assert [formation.role(n).partner for n in range(1, 12)] == [None, 3, 2, 5, 4, None, 8, 7, 10, 9, None]
     assert formation.role(6).kind == "midfielder" and formation.role(11).kind == "forward"

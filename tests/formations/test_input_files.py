@@ -11,6 +11,7 @@ import formations
 from formations.files import FORMATION_FILE_LIMIT
 from formations.input_files import check_input, open_input, read_input
 from tests.experiments.special_files import device_node, fifo
+from soccer_sim.config import STANDARD_FIELD as FIELD
 
 
 def test_a_regular_file_is_read(tmp_path) -> None:
@@ -49,7 +50,7 @@ def test_a_file_over_its_limit_is_refused(tmp_path) -> None:
     with open(path, "wb") as handle:
         handle.truncate(FORMATION_FILE_LIMIT + 1)
     with pytest.raises(OSError, match="larger than the 16 MiB a formation file may hold") as caught:
-        formations.load(path)
+        formations.load(path, field=FIELD)
     assert caught.value.errno == errno.EFBIG
 
 
@@ -57,4 +58,4 @@ def test_formation_readers_refuse_special_files(tmp_path) -> None:
     path = fifo(tmp_path, "normal-formation.conf")
     for load in (formations.load, formations.read_any, formations.load_helios):
         with pytest.raises(OSError, match="not a regular file"):
-            load(path)
+            load(path, field=FIELD)

@@ -122,17 +122,14 @@ def test_a_role_order_that_is_not_a_permutation_is_refused(name: str) -> None:
 
 
 def test_context_defaults_are_rcssserver_penalty_area() -> None:
-    from formations.field import STANDARD_FIELD
-    from soccer_sim.config import FieldConfig
+    from soccer_sim.config import STANDARD_FIELD
 
     ctx = context()
     assert isinstance(ctx, RoleContext)
     assert ctx.penalty_area_length == 16.5 and ctx.penalty_area_half_width == pytest.approx(40.32 / 2)
-    # One source (the formations' field), the same numbers the simulator's default field plays with.
+    # One source: the simulator's default field.
     assert (ctx.penalty_area_length, ctx.penalty_area_half_width) == (
-        STANDARD_FIELD.penalty_area_depth, STANDARD_FIELD.penalty_area_width / 2.0)
-    assert (ctx.penalty_area_length, ctx.penalty_area_half_width) == (
-        FieldConfig().penalty_area_length, FieldConfig().penalty_area_width / 2.0)
+        STANDARD_FIELD.penalty_area_length, STANDARD_FIELD.penalty_area_width / 2.0)
     assert at_cycle(ctx, 9).cycle == 9
 
 
