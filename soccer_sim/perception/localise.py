@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from soccer_sim.perception.params import SeeParams
-from soccer_sim.perception.kernels import localise_into, params_array, position_from_sightings, sense_velocities
+from soccer_sim.perception.kernels import localise_into, position_from_sightings, see_record, sense_velocities
 
 PENALTY_AREA_LENGTH = 16.5
 """rcssserver's ``PENALTY_AREA_LENGTH`` (m), where the penalty-box flags stand."""
@@ -90,7 +90,7 @@ def localise(positions: np.ndarray, velocities: np.ndarray, body_dirs: np.ndarra
     flag_pts = DEFAULT_FLAGS if flags is None else np.ascontiguousarray(flags, dtype=np.float64).reshape(-1, 2)
     position = np.empty((n, 2))
     count = np.empty(n, dtype=np.int64)
-    localise_into(np.ascontiguousarray(pos), np.ascontiguousarray(body), flag_pts, params_array(params), position,
+    localise_into(np.ascontiguousarray(pos), np.ascontiguousarray(body), flag_pts, see_record(params), position,
                   count)
     return SelfEstimate(position=position, velocity=sensed_velocity(vel, body, params), localised=count > 0,
                         flags_seen=count)
