@@ -156,13 +156,13 @@ def query_each(rows: np.ndarray, play_on: bool, after_goal: bool, block: np.ndar
         out = targets[i].reshape(width)
         if play_on:
             if attacking[i]:
-                value_kernel(block[i, 0], block[i, 1], *tables_attack, out)
+                value_kernel(block[i, 0], block[i, 1], tables_attack, out)
             else:
-                value_kernel(block[i, 0], block[i, 1], *tables_defend, out)
+                value_kernel(block[i, 0], block[i, 1], tables_defend, out)
         elif after_goal:
-            value_kernel(0.0, 0.0, *tables_other, out)
+            value_kernel(0.0, 0.0, tables_other, out)
         else:
-            value_kernel(ball[i, 0], ball[i, 1], *tables_other, out)
+            value_kernel(ball[i, 0], ball[i, 1], tables_other, out)
 
 
 @njit(cache=True, nogil=True)
