@@ -7,7 +7,8 @@ same functions: :mod:`agents.messages` encodes and decodes single messages with 
 costs about 15 us a message, ten times a compiled one).
 
 Digits are the indices of the characters in :data:`agents.messages.ALPHABET`; grid indices and
-sizes are those :mod:`agents.messages` documents.
+sizes are those :mod:`agents.messages` documents. The ranges, steps and sizes travel as one named
+record (:data:`GRID_PARAMS`, :data:`agents.messages.WORLD_GRID`), read by field name.
 """
 
 from __future__ import annotations
@@ -27,6 +28,13 @@ MAX_PLAYERS = 11
 FACTORIAL_MAX = math.factorial(MAX_PLAYERS)
 INVALID = -1
 """A decoded kind that is no message of ours."""
+
+GRID_PARAMS = np.dtype([("x_range", np.float64), ("y_range", np.float64), ("v_range", np.float64)]
+                       + [(name, np.int64) for name in ("per_m", "per_v", "max_age", "nx", "ny", "nv", "nage",
+                                                        "modulus")])
+"""The message grid: the largest |x|, |y| (m) and |velocity| (m/cycle) a world message holds,
+grid points per m and per m/cycle, the largest ball age (cycles), the grid sizes of a position
+coordinate, a velocity coordinate and an age, and the modulus of a vote's cycle."""
 
 
 @njit(cache=True, nogil=True)
@@ -83,15 +91,15 @@ def digits_number(digits: np.ndarray) -> int:  # pragma: no cover - compiled
 
 
 @njit(cache=True, nogil=True)
-def decode_digits(digits: np.ndarray, nx: int, ny: int, nv: int, nage: int, per_m: int, per_v: int, modulus: int,
-                  kind: np.ndarray, world: np.ndarray, values: np.ndarray, vote: np.ndarray, vote_size: np.ndarray,
-                  vote_cycle: np.ndarray) -> None:  # pragma: no cover - compiled
+def decode_digits(digits: np.ndarray, grid: np.ndarray, kind: np.ndarray, world: np.ndarray, values: np.ndarray,
+                  vote: np.ndarray, vote_size: np.ndarray, vote_cycle: np.ndarray) -> None:  # pragma: no cover
     """Decode messages given as digits (p, LENGTH) (a digit -1: a character outside the
-    alphabet, not a message): ``kind`` (p,) WORLD, VOTE or INVALID;
-    a world message's grid indices into ``world`` (p, 7) (ball x, y, velocity x, y, age,
-    sender x, y) and their values into ``values`` (p, 7: m, m/cycle, cycles; ``per_m`` and
-    ``per_v`` grid steps a unit); a vote's permutation into ``vote`` (p, MAX_PLAYERS), its
-    size and cycle."""
+    alphabet, not a message) on the :data:`GRID_PARAMS` record ``grid``: ``kind`` (p,) WORLD,
+    VOTE or INVALID; a world message's grid indices into ``world`` (p, 7) (ball x, y, velocity
+    x, y, age, sender x, y) and their values into ``values`` (p, 7: m, m/cycle, cycles); a
+    vote's permutation into ``vote`` (p, MAX_PLAYERS), its size and cycle."""
+    g = grid[0]
+    nx, ny, nv, nage, per_m, per_v, modulus = g.nx, g.ny, g.nv, g.nage, g.per_m, g.per_v, g.modulus
     lehmer = np.empty(MAX_PLAYERS, dtype=np.int64)
     left = np.empty(MAX_PLAYERS, dtype=np.int64)
     for p in range(digits.shape[0]):
@@ -144,11 +152,10 @@ def decode_digits(digits: np.ndarray, nx: int, ny: int, nv: int, nage: int, per_
 
 @njit(cache=True, nogil=True)
 def world_digits_rows(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray, sender: np.ndarray,
-                      out: np.ndarray, x_range: float, y_range: float, v_range: float, per_m: int, per_v: int,
-                      max_age: int, nx: int, ny: int, nv: int, nage: int) -> None:  # pragma: no cover - compiled
+                      grid: np.ndarray, out: np.ndarray) -> None:  # pragma: no cover - compiled
     """Rows of world messages' digits into ``out`` (n, LENGTH): ball (n, 2), its velocity
-    (n, 2), ages (n,) and senders (n, 2), each clipped into its range."""
-    grid = (x_range, y_range, v_range, per_m, per_v, max_age, nx, ny, nv, nage)
+    (n, 2), ages (n,) and senders (n, 2), each clipped into its range (``grid``: a
+    :data:`GRID_PARAMS` record)."""
     for i in range(ball.shape[0]):
         number_digits(world_message_number(ball[i], ball_vel[i], ball_age[i], sender[i], grid), out[i])
 
@@ -163,11 +170,13 @@ def vote_digits_rows(assignments: np.ndarray, cycle: int, modulus: int,
 
 @njit(cache=True, nogil=True)
 def world_message_number(ball: np.ndarray, ball_vel: np.ndarray, ball_age: int, sender: np.ndarray,
-                         grid: tuple) -> int:  # pragma: no cover - compiled
+                         grid: np.ndarray) -> int:  # pragma: no cover - compiled
     """The number of one world message of ball (2,), velocity (2,), age and sender (2,), each
-    clipped into its range (``grid``: :data:`agents.messages.WORLD_GRID`), as
-    :func:`world_digits_rows` makes it."""
-    x_range, y_range, v_range, per_m, per_v, max_age, nx, ny, nv, nage = grid
+    clipped into its range (``grid``: a :data:`GRID_PARAMS` record, :data:`agents.messages.WORLD_GRID`),
+    as :func:`world_digits_rows` makes it."""
+    g = grid[0]
+    x_range, y_range, v_range, per_m, per_v, max_age = g.x_range, g.y_range, g.v_range, g.per_m, g.per_v, g.max_age
+    nx, ny, nv, nage = g.nx, g.ny, g.nv, g.nage
     return world_number(grid_index(ball[0], x_range, per_m), grid_index(ball[1], y_range, per_m),
                         grid_index(ball_vel[0], v_range, per_v), grid_index(ball_vel[1], v_range, per_v),
                         min(max(ball_age, 0), max_age), grid_index(sender[0], x_range, per_m),

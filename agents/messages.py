@@ -33,8 +33,9 @@ import numpy as np
 
 from agents import message_kernels
 from agents.errors import AgentsError
-from agents.message_kernels import (decode_digits, grid_index, number_digits, vote_digits_rows, vote_number,
-                                    world_digits_rows, world_number)
+from agents.message_kernels import (GRID_PARAMS, decode_digits, grid_index, number_digits, vote_digits_rows,
+                                    vote_number, world_digits_rows, world_number)
+from soccer_sim.kernels import make_record
 from soccer_sim.perception.audio import SAY_CHARACTERS
 from soccer_sim.perception.coded import CodedMessages
 from soccer_sim.perception.views import HeardLog
@@ -249,14 +250,11 @@ def decode_texts(texts: Sequence[str]) -> Decoded:
     decoded = Decoded(len(texts))
     if not texts:
         return decoded
-    decode_digits(text_digits(texts), *DECODING, decoded.kind, decoded.grid, decoded.world, decoded.vote,
+    decode_digits(text_digits(texts), WORLD_GRID, decoded.kind, decoded.grid, decoded.world, decoded.vote,
                   decoded.vote_size, decoded.vote_cycle)
     return decoded
 
 
-DECODING = (_NX, _NY, _NV, _NAGE, _PER_M, _PER_V, CYCLE_MODULUS)
-"""The grid sizes, steps and cycle modulus :func:`~agents.message_kernels.decode_digits` takes
-after the digits."""
 CODES = (WORLD, VOTE, MAX_PLAYERS)
 """The kinds' codes and the most players a vote covers, for compiled callers of the decoder."""
 
@@ -326,8 +324,7 @@ def world_texts(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray, se
     """A team's world messages in one call: :func:`encode_world_clipped` for each row of (n, 2)
     balls, velocities and senders and (n,) ball ages; None for players not ``present``."""
     digits = np.empty((ball.shape[0], MESSAGE_LENGTH), dtype=np.int64)
-    world_digits_rows(ball, ball_vel, ball_age, sender, digits, X_RANGE, Y_RANGE, V_RANGE, _PER_M, _PER_V, MAX_AGE,
-                      _NX, _NY, _NV, _NAGE)
+    world_digits_rows(ball, ball_vel, ball_age, sender, WORLD_GRID, digits)
     return digit_texts(digits, present)
 
 
@@ -351,9 +348,10 @@ def digit_texts(digits: np.ndarray, present: np.ndarray) -> list[str | None]:
     return list(digit_messages(digits, present))
 
 
-WORLD_GRID = (X_RANGE, Y_RANGE, V_RANGE, _PER_M, _PER_V, MAX_AGE, _NX, _NY, _NV, _NAGE)
-"""A world message's ranges, steps and grid sizes, as compiled encoders take them
-(:func:`~agents.message_kernels.world_message_number`)."""
+WORLD_GRID = make_record(GRID_PARAMS, x_range=X_RANGE, y_range=Y_RANGE, v_range=V_RANGE, per_m=_PER_M, per_v=_PER_V,
+                         max_age=MAX_AGE, nx=_NX, ny=_NY, nv=_NV, nage=_NAGE, modulus=CYCLE_MODULUS)
+"""The message grid's ranges, steps, sizes and the votes' cycle modulus, as the compiled encoders
+and decoders take them (a :data:`~agents.message_kernels.GRID_PARAMS` record)."""
 
 
 assert len(ALPHABET) == message_kernels.BASE and MESSAGE_LENGTH == message_kernels.LENGTH

@@ -58,6 +58,7 @@ def record_match(home: str, away: str, seed: int = 0, cycles: int | None = RECOR
     from numba.core.dispatcher import Dispatcher
 
     from experiments.configuration import match_config
+    from experiments.warmup import signature_text
     from soccer_sim import run_match
     from soccer_sim.rcg import RcgRecorder
 
@@ -73,7 +74,7 @@ def record_match(home: str, away: str, seed: int = 0, cycles: int | None = RECOR
             seconds = time.perf_counter() - start
             for signature in set(self.signatures) - before:
                 found.append({"module": self.py_func.__module__, "function": self.py_func.__qualname__,
-                              "signature": repr(tuple(signature)), "seconds": round(seconds, 3)})
+                              "signature": signature_text(signature), "seconds": round(seconds, 3)})
 
     Dispatcher._compile_for_args = watched
     try:

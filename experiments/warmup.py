@@ -167,13 +167,55 @@ def dispatcher_of(kernel: Kernel):
 def signature_of(kernel: Kernel) -> tuple:
     """The kernel's argument types as numba types. A compiled structure's type (a numba
     ``StructRef``, written ``numba.NameType((field, type), ...)``) is one its module defines;
-    importing the kernel's module (:func:`dispatcher_of`) registers it."""
+    importing the kernel's module (:func:`dispatcher_of`) registers it. A named tuple's class
+    is written ``named('module.Class')`` (:func:`signature_text`)."""
     from numba.core import types
 
     dispatcher_of(kernel)
     structures = SimpleNamespace(**{cls.__name__: _structure_maker(cls) for cls in _subclasses(types.StructRef)})
-    namespace = {**vars(types), "numba": structures}
+    namespace = {**vars(types), "numba": structures, "named": _named_class}
     return tuple(eval(kernel.signature, {"__builtins__": {}}, namespace))  # noqa: S307 - text from the manifest
+
+
+def signature_text(signature: Sequence[object]) -> str:
+    """Argument types (numba types) as the text :func:`signature_of` reads back: numba's own
+    ``repr``, except that named tuples (whose ``repr`` is not an expression) are written as
+    ``NamedTuple((types), named('module.Class'))`` or ``NamedUniTuple(type, count, named(...))``,
+    inside tuples and compiled structures too."""
+    return _tuple_text([_type_text(t) for t in signature])
+
+
+def _tuple_text(items: list[str]) -> str:
+    """``items`` as Python writes a tuple of them."""
+    return f"({items[0]},)" if len(items) == 1 else f"({', '.join(items)})"
+
+
+def _type_text(t: object) -> str:
+    """One numba type as :func:`signature_text` writes it."""
+    from numba.core import types
+
+    if isinstance(t, (types.NamedTuple, types.NamedUniTuple)):
+        cls = t.instance_class
+        named = f"named({f'{cls.__module__}.{cls.__qualname__}'!r})"
+        if isinstance(t, types.NamedUniTuple):
+            return f"NamedUniTuple({_type_text(t.dtype)}, {t.count}, {named})"
+        return f"NamedTuple({_tuple_text([_type_text(e) for e in t.types])}, {named})"
+    if isinstance(t, types.UniTuple):
+        return f"UniTuple({_type_text(t.dtype)}, {t.count})"
+    if isinstance(t, types.Tuple):
+        return f"Tuple({_tuple_text([_type_text(e) for e in t.types])})"
+    if isinstance(t, types.StructRef):
+        fields = [f"({name!r}, {_type_text(field)})" for name, field in t.field_dict.items()]
+        return f"numba.{type(t).__qualname__}{_tuple_text(fields)}"
+    return repr(t)
+
+
+def _named_class(qualified: str) -> type:
+    """The class ``module.Class`` a named tuple's type was made of."""
+    import importlib
+
+    module, _, name = qualified.rpartition(".")
+    return getattr(importlib.import_module(module), name)
 
 
 def _structure_maker(cls: type) -> Callable[..., object]:

@@ -22,6 +22,7 @@ from numpy.typing import ArrayLike
 from formations.errors import FormationError, FormationInputError, UnknownRoleError
 from formations.field import FieldDimensions
 from formations.interpolation import TriangleInterpolator
+from formations.interpolation_kernels import QueryTables
 from formations.roles import Role, check_roles
 from formations.triangulation import triangulate
 from formations.validation import check_samples
@@ -140,10 +141,9 @@ class Formation:
         return values.reshape(len(points), self._n_roles, 2)
 
     @property
-    def query_tables(self) -> tuple:
+    def query_tables(self) -> QueryTables:
         """The compiled query's tables (:func:`formations.interpolation_kernels.value_kernel`'s
-        arguments after the point, before ``out``), for callers that query inside their own
-        compiled loops."""
+        ``tables``), for callers that query inside their own compiled loops."""
         return self._interpolator.tables
 
     def nearest_covered_ball(self, ball_xy: ArrayLike) -> tuple[float, float]:

@@ -36,7 +36,8 @@ import numpy as np
 from scipy.spatial import Delaunay
 
 from formations.errors import FormationInputError
-from formations.interpolation_kernels import find_triangle_kernel, grid_cell, nearest_edge_kernel, value_kernel
+from formations.interpolation_kernels import (QueryTables, find_triangle_kernel, grid_cell, nearest_edge_kernel,
+                                              value_kernel)
 
 GRID_CELLS_ALONG_LONG_SIDE = 64
 """Resolution of the triangle lookup grid (cells along the longer side of the
@@ -163,10 +164,14 @@ class TriangleInterpolator:
         self._edge_inv_length2 = np.ascontiguousarray(self._hull_inv_length2, dtype=np.float64)
         self._edge_values = np.ascontiguousarray(self._edge_start_values)
         self._edge_value_deltas = np.ascontiguousarray(self._edge_delta_values)
-        self._tables = (self._grid_table, *self._grid_shape, self._cell_offsets, self._cell_triangles,
-                        self._bary_table, self._affine, self._edge_offsets, self._cell_edge_items, self._edge_starts,
-                        self._edge_deltas, self._edge_inv_length2, self._edge_values, self._edge_value_deltas)
-        """The compiled queries' arguments after the point, in their order."""
+        nx, ny = self._grid_shape
+        self._tables = QueryTables(
+            grid=self._grid_table, nx=nx, ny=ny, cell_offsets=self._cell_offsets, cell_triangles=self._cell_triangles,
+            bary=self._bary_table, affine=self._affine, edge_offsets=self._edge_offsets,
+            cell_edges=self._cell_edge_items, starts=self._edge_starts, deltas=self._edge_deltas,
+            inv_length2=self._edge_inv_length2, edge_values=self._edge_values,
+            edge_value_deltas=self._edge_value_deltas)
+        """The compiled query's tables."""
 
     # ---------------------------------------------------------------- queries
     def find_triangle(self, x: float, y: float) -> int:
@@ -189,12 +194,12 @@ class TriangleInterpolator:
         if not (math.isfinite(x) and math.isfinite(y)):
             raise FormationInputError(f"query point must be finite, got ({x}, {y})")
         out = np.empty(self.values.shape[1])
-        value_kernel(x, y, *self._tables, out)
+        value_kernel(x, y, self._tables, out)
         return out
 
     @property
-    def tables(self) -> tuple:
-        """:func:`~formations.interpolation_kernels.value_kernel`'s arguments after the point."""
+    def tables(self) -> QueryTables:
+        """:func:`~formations.interpolation_kernels.value_kernel`'s tables."""
         return self._tables
 
     def values_many(self, points: np.ndarray) -> np.ndarray:

@@ -1,10 +1,13 @@
 """The compiled single queries of :class:`formations.interpolation.TriangleInterpolator`: the
 triangle containing a point (a grid of candidate triangles), the nearest hull edge (a grid of
-candidate edges), and the interpolated value, for one point or each of many, each in one call."""
+candidate edges), and the interpolated value, for one point or each of many, each in one call.
+The interpolated value takes an interpolator's tables as one named tuple (:class:`QueryTables`),
+read by field name."""
 
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit, types
@@ -12,6 +15,39 @@ from numba.extending import intrinsic
 
 INSIDE_TOLERANCE = 1e-12
 """Barycentric coordinates down to minus this count as inside a triangle."""
+
+
+class QueryTables(NamedTuple):
+    """An interpolator's tables for :func:`value_kernel` (made once with the interpolator)."""
+
+    grid: np.ndarray
+    """(3,) the lookup grid's origin x, y (m) and inverse cell size (1/m)."""
+    nx: int
+    """Grid cells along x."""
+    ny: int
+    """Grid cells along y."""
+    cell_offsets: np.ndarray
+    """(cells + 1,) each cell's first entry in ``cell_triangles``."""
+    cell_triangles: np.ndarray
+    """The candidate triangles of each cell, one cell after the other."""
+    bary: np.ndarray
+    """(triangles, 6) each triangle's inverse transform (four entries) and reference corner."""
+    affine: np.ndarray
+    """(triangles, values, 3) each triangle's affine map of (x, y, 1) to the values."""
+    edge_offsets: np.ndarray
+    """(cells + 1,) each cell's first entry in ``cell_edges``."""
+    cell_edges: np.ndarray
+    """The candidate hull edges of each cell, one cell after the other."""
+    starts: np.ndarray
+    """(edges, 2) each hull edge's start (m)."""
+    deltas: np.ndarray
+    """(edges, 2) each hull edge's end minus its start (m)."""
+    inv_length2: np.ndarray
+    """(edges,) one over each hull edge's squared length."""
+    edge_values: np.ndarray
+    """(edges, values) the values at each hull edge's start."""
+    edge_value_deltas: np.ndarray
+    """(edges, values) the values at each hull edge's end minus those at its start."""
 
 
 @intrinsic
@@ -90,21 +126,21 @@ def nearest_edge_kernel(x: float, y: float, cell: int, edge_offsets: np.ndarray,
 
 
 @njit(cache=True, nogil=True)
-def value_kernel(x: float, y: float, grid: np.ndarray, nx: int, ny: int, cell_offsets: np.ndarray,
-                  cell_triangles: np.ndarray, bary: np.ndarray, affine: np.ndarray, edge_offsets: np.ndarray,
-                  cell_edges: np.ndarray, starts: np.ndarray, deltas: np.ndarray, inv_length2: np.ndarray,
-                  edge_values: np.ndarray, edge_value_deltas: np.ndarray,
-                  out: np.ndarray) -> None:  # pragma: no cover - compiled
+def value_kernel(x: float, y: float, tables: QueryTables, out: np.ndarray) -> None:  # pragma: no cover - compiled
     """:meth:`TriangleInterpolator.value` at (x, y) into ``out``: inside the hull the
     triangle's affine map ``A @ (x, y, 1)``, evaluated as ``fma(A0, x, A1 * y) + A2`` (the
     order and roundings of the BLAS matrix-vector kernel this query used before it was
     compiled, on x86-64, so matches did not change); else the values interpolated along the
     nearest hull edge."""
-    cell, t = find_triangle_kernel(x, y, grid, nx, ny, cell_offsets, cell_triangles, bary)
+    cell, t = find_triangle_kernel(x, y, tables.grid, tables.nx, tables.ny, tables.cell_offsets,
+                                   tables.cell_triangles, tables.bary)
     if t >= 0:
+        affine = tables.affine
         for i in range(out.shape[0]):
             out[i] = fma(affine[t, i, 0], x, affine[t, i, 1] * y) + affine[t, i, 2]
         return
-    edge, s = nearest_edge_kernel(x, y, cell, edge_offsets, cell_edges, starts, deltas, inv_length2)
+    edge, s = nearest_edge_kernel(x, y, cell, tables.edge_offsets, tables.cell_edges, tables.starts, tables.deltas,
+                                  tables.inv_length2)
+    edge_values, edge_value_deltas = tables.edge_values, tables.edge_value_deltas
     for i in range(out.shape[0]):
         out[i] = edge_values[edge, i] + s * edge_value_deltas[edge, i]

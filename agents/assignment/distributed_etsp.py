@@ -29,6 +29,8 @@ outcome does not depend on the order in which messages are handled.
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 from numba import njit
 
@@ -37,24 +39,31 @@ from .distributed_model import DistributedResult, NetworkModel, finished_run, mo
 from .etsp import etsp_tour, tour_length
 
 
+class Ring(NamedTuple):
+    """Each agent's three ring indices (n,) int64: ``curr`` the target it heads for, ``next``
+    and ``prev`` the first targets after and before it it still believes free (-1 once stopped)."""
+
+    prev: np.ndarray
+    curr: np.ndarray
+    next: np.ndarray
+
+
 @njit(cache=True, nogil=True)
 def _communication_round(
     indptr: np.ndarray,
     neighbours: np.ndarray,
-    prev0: np.ndarray,
-    curr0: np.ndarray,
-    next0: np.ndarray,
+    sent: Ring,
     dist0: np.ndarray,
-    prev: np.ndarray,
-    curr: np.ndarray,
-    nxt: np.ndarray,
+    ring: Ring,
     bits: np.ndarray,
     counts: np.ndarray,
     active: np.ndarray,
     m: int,
 ) -> None:
-    """COMM-RD for every active agent: ``prev0/curr0/next0/dist0`` are the broadcasts (the
-    state at the start of the round), ``prev/curr/nxt`` receive the new state."""
+    """COMM-RD for every active agent: ``sent`` and ``dist0`` are the broadcasts (the state at
+    the start of the round), ``ring`` receives the new state."""
+    prev0, curr0, next0 = sent.prev, sent.curr, sent.next
+    prev, curr, nxt = ring.prev, ring.curr, ring.next
     n = prev0.shape[0]
     for i in range(n):
         if not active[i]:
@@ -207,8 +216,9 @@ def simulate_etsp(
         indptr, neighbours, pair_longest = _neighbour_lists(positions, active, model.r_comm)
         messages += int(neighbours.shape[0])
         longest = max(longest, pair_longest)
-        prev0, curr0, next0 = prev.copy(), curr.copy(), nxt.copy()
-        _communication_round(indptr, neighbours, prev0, curr0, next0, dist, prev, curr, nxt, bits, counts, active, m)
+        sent = Ring(prev=prev.copy(), curr=curr.copy(), next=nxt.copy())
+        _communication_round(indptr, neighbours, sent, dist, Ring(prev=prev, curr=curr, next=nxt), bits, counts,
+                             active, m)
         moving = active.copy()
         goals[moving] = ring[curr[moving]]
         move_toward(positions, goals, moving, model.step, travelled, arrived_at, now, model.v_max)

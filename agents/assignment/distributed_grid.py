@@ -41,6 +41,7 @@ estimates, the round's enter / exit counts); one numba kernel runs a round.
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
@@ -177,22 +178,60 @@ def _grant(exists: bool, boss: int, granted: np.ndarray, estimate: np.ndarray, c
 WORK_ROWS = 11
 
 
+class CellTargets(NamedTuple):
+    """The targets (m, 2), grouped by cell (``cell_targets[cell_ptr[c]:cell_ptr[c + 1]]`` lie in
+    cell c), and which are taken (m,) bool."""
+
+    targets: np.ndarray
+    cell_ptr: np.ndarray
+    cell_targets: np.ndarray
+    taken: np.ndarray
+
+
+class Searchers(NamedTuple):
+    """Each agent's state (n,): its role (SEARCHING, ASSIGNED, STOPPED), target (-1 none), current
+    cell, column and row directions (+1 / -1), the columns it knows full (n, b) and whether it
+    decides this round (it stands on its cell's centre)."""
+
+    role: np.ndarray
+    target: np.ndarray
+    currcell: np.ndarray
+    dircol: np.ndarray
+    dirrow: np.ndarray
+    colfull: np.ndarray
+    deciding: np.ndarray
+
+
+class Cells(NamedTuple):
+    """Each cell's state (cells,): its leader (-1 none), the leader's estimates (free targets less
+    agents: ``delta`` in the cell, ``below`` and ``right`` beyond it) and the agents in it;
+    ``led[:n_led[0]]`` the cells that have a leader; ``work`` the zeroed per-cell scratch
+    ``(WORK_ROWS, cells)``."""
+
+    leader: np.ndarray
+    delta: np.ndarray
+    below: np.ndarray
+    right: np.ndarray
+    cell_agents: np.ndarray
+    led: np.ndarray
+    n_led: np.ndarray
+    work: np.ndarray
+
+
 @njit(cache=True, nogil=True)
-def _grid_round(
-    b: int, side: float, positions: np.ndarray, targets: np.ndarray,
-    cell_ptr: np.ndarray, cell_targets: np.ndarray, taken: np.ndarray,
-    role: np.ndarray, target: np.ndarray, currcell: np.ndarray, dircol: np.ndarray, dirrow: np.ndarray,
-    colfull: np.ndarray, deciding: np.ndarray,
-    leader: np.ndarray, delta: np.ndarray, below: np.ndarray, right: np.ndarray, cell_agents: np.ndarray,
-    led: np.ndarray, n_led: np.ndarray, work: np.ndarray, stats: np.ndarray,
-) -> None:
+def _grid_round(b: int, positions: np.ndarray, on_cells: CellTargets, agents: Searchers, cells: Cells,
+                stats: np.ndarray) -> None:
     """One communication round: leaders' messages, role assignment in newly reached cells,
     the decisions of the agents that have reached a cell centre, and the leaders' updates.
 
-    ``led[:n_led[0]]`` lists the cells that have a leader; ``work`` is zeroed scratch of shape
-    ``(WORK_ROWS, cells)``, left zeroed again. A round costs O(leaders + deciding agents),
-    not O(cells), so fine partitions of large environments stay cheap.
+    ``work`` is left zeroed again. A round costs O(leaders + deciding agents), not O(cells), so
+    fine partitions of large environments stay cheap.
     """
+    targets, cell_ptr, cell_targets, taken = on_cells.targets, on_cells.cell_ptr, on_cells.cell_targets, on_cells.taken
+    role, target, currcell, deciding = agents.role, agents.target, agents.currcell, agents.deciding
+    dircol, dirrow, colfull = agents.dircol, agents.dirrow, agents.colfull
+    leader, delta, below, right, cell_agents = cells.leader, cells.delta, cells.below, cells.right, cells.cell_agents
+    led, n_led, work = cells.led, cells.n_led, cells.work
     n = positions.shape[0]
     # (a) Broadcasts of the leaders in office at the start of the round.
     leaders_before = n_led[0]
@@ -428,13 +467,16 @@ def simulate_grid(
     need = min(n, m)
     trace = [positions.copy()] if record_trace else None
 
+    on_cells = CellTargets(targets=targets, cell_ptr=cell_ptr, cell_targets=cell_targets, taken=taken)
+    agents_state = Searchers(role=role, target=target, currcell=currcell, dircol=dircol, dirrow=dirrow,
+                             colfull=colfull, deciding=deciding)
+    cell_state = Cells(leader=leader, delta=delta, below=below, right=right, cell_agents=cell_agents, led=led,
+                       n_led=n_led, work=work)
     rounds = 0
     completed = False
     while not completed and rounds < max_rounds:
         now = rounds * model.round_time
-        _grid_round(b, side, positions, targets, cell_ptr, cell_targets, taken, role, target, currcell,
-                    dircol, dirrow, colfull, deciding, leader, delta, below, right, cell_agents, led, n_led, work,
-                    stats)
+        _grid_round(b, positions, on_cells, agents_state, cell_state, stats)
         _set_goals(b, side, positions, targets, role, target, currcell, deciding, goals, moving)
         move_toward(positions, goals, moving, model.step, travelled, arrived_at, now, model.v_max)
         rounds += 1

@@ -38,7 +38,7 @@ from scipy.optimize import linear_sum_assignment
 
 from .errors import AssignmentError
 from .grid import HALF, Workspace
-from .pathcost import UNREACHABLE, SearchPool, dijkstra_costs, pool_costs
+from .pathcost import UNREACHABLE, SearchMoves, SearchPool, SearchState, dijkstra_costs, pool_costs
 from .result import AssignmentResult
 
 #: Method names accepted by :func:`assign_on_grid`.
@@ -234,7 +234,7 @@ def _lazy(workspace: Workspace, robot_flat: np.ndarray, goal_flat: np.ndarray, r
     exact = ~reachable
     pool = SearchPool(workspace, robot_flat, budget)
     if costs.shape[0] == costs.shape[1]:
-        cols, rounds, pairs, bad_robot, bad_goal = _lazy_square(costs, exact, goal_flat, *pool.arrays)
+        cols, rounds, pairs, bad_robot, bad_goal = _lazy_square(costs, exact, goal_flat, pool.moves, pool.searches)
         if bad_robot == _NO_ASSIGNMENT:  # excluded by the region check
             raise AssignmentError("no complete assignment exists")
         rows = np.arange(n)
@@ -268,7 +268,7 @@ _NO_ASSIGNMENT = -2
 
 @njit(cache=True, nogil=True, inline="always")
 def _settle_pairs(costs: np.ndarray, exact: np.ndarray, rows: np.ndarray, cols: np.ndarray, goal_flat: np.ndarray,
-                  moves: tuple, searches: tuple) -> int:  # pragma: no cover - compiled
+                  moves: SearchMoves, searches: SearchState) -> int:  # pragma: no cover - compiled
     """Search the true cost of each pair ``(rows[k], cols[k])`` in order and write it into ``costs``
     (marking it in ``exact``). Returns -1, or the first ``k`` whose goal cannot be reached."""
     goals = np.empty(rows.shape[0], dtype=np.int64)
@@ -284,21 +284,16 @@ def _settle_pairs(costs: np.ndarray, exact: np.ndarray, rows: np.ndarray, cols: 
 
 
 @njit(cache=True, nogil=True)
-def _lazy_square(costs: np.ndarray, exact: np.ndarray, goal_flat: np.ndarray, allowed: np.ndarray,
-                 offsets: np.ndarray, step_costs: np.ndarray, strides: np.ndarray, states: np.ndarray, heaps: object,
-                 record: np.ndarray, totals: np.ndarray, free_slots: np.ndarray, dirty: np.ndarray,
-                 sources: np.ndarray, budget: int) -> tuple:  # pragma: no cover - compiled
+def _lazy_square(costs: np.ndarray, exact: np.ndarray, goal_flat: np.ndarray, moves: SearchMoves,
+                 searches: SearchState) -> tuple:  # pragma: no cover - compiled
     """The lazy rounds for as many goals as robots, in one compiled call.
 
     Each round matches the free robots (:func:`_augment_rows`, keeping the prices), searches
-    the chosen pairs still on bounds in robot order and frees their robots. The arguments
-    after ``goal_flat`` are a :class:`SearchPool`'s ``arrays`` (one by one: numba types
-    single arrays far faster than tuples of them). Returns ``(goal of each robot, rounds,
+    the chosen pairs still on bounds in robot order and frees their robots. ``moves`` and
+    ``searches``: a :class:`SearchPool`'s. Returns ``(goal of each robot, rounds,
     pairs searched, robot, goal)``: robot is ``_NONE``, or ``_NO_ASSIGNMENT`` when the
     matching fails, or the robot whose goal (the last field) cannot be reached.
     """
-    moves = (allowed, offsets, step_costs, strides)
-    searches = (states, heaps, record, totals, free_slots, dirty, sources, budget)
     n = costs.shape[0]
     u, v = np.zeros(n), np.zeros(n + 1)
     col_of_row = np.full(n, -1, dtype=np.int64)

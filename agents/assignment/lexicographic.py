@@ -35,6 +35,7 @@ tightness test exact.
 from __future__ import annotations
 
 import heapq
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
@@ -72,23 +73,40 @@ def _flip_path(
         c = previous
 
 
+class PairGraph(NamedTuple):
+    """The candidate pairs as CSR lists: row r's pairs are ``indptr[r]:indptr[r + 1]``, each
+    pair's column in ``indices`` and its row in ``rows_of_edge``."""
+
+    indptr: np.ndarray
+    indices: np.ndarray
+    rows_of_edge: np.ndarray
+
+
+class Matching(NamedTuple):
+    """A matching: each row's column and pair (-1 unmatched), each column's row (-1 unmatched)."""
+
+    col_of_row: np.ndarray
+    edge_of_row: np.ndarray
+    row_of_col: np.ndarray
+
+
+class PathScratch(NamedTuple):
+    """Scratch of the augmenting-path search: each column's last visit stamp and the pair it was
+    reached by, and the queue of rows."""
+
+    col_seen: np.ndarray
+    pred_edge: np.ndarray
+    queue: np.ndarray
+
+
 @njit(cache=True, nogil=True)
-def _repair(
-    start: int,
-    indptr: np.ndarray,
-    indices: np.ndarray,
-    rows_of_edge: np.ndarray,
-    alive: np.ndarray,
-    fixed_col: np.ndarray,
-    col_of_row: np.ndarray,
-    edge_of_row: np.ndarray,
-    row_of_col: np.ndarray,
-    col_seen: np.ndarray,
-    stamp: int,
-    pred_edge: np.ndarray,
-    queue: np.ndarray,
-) -> bool:
-    """Breadth-first augmenting path from free row ``start`` over alive pairs; flip it if found."""
+def _repair(start: int, graph: PairGraph, alive: np.ndarray, fixed_col: np.ndarray, matching: Matching,
+            scratch: PathScratch, stamp: int) -> bool:
+    """Breadth-first augmenting path from free row ``start`` over alive pairs not into a fixed
+    column; flip it in ``matching`` if found (columns visited are stamped ``stamp``)."""
+    indptr, indices, rows_of_edge = graph.indptr, graph.indices, graph.rows_of_edge
+    col_of_row, edge_of_row, row_of_col = matching.col_of_row, matching.edge_of_row, matching.row_of_col
+    col_seen, pred_edge, queue = scratch.col_seen, scratch.pred_edge, scratch.queue
     head = 0
     tail = 1
     queue[0] = start
@@ -245,6 +263,9 @@ def lexicographic_refine(
     queue = np.empty(n_rows, dtype=np.int64)
     group = np.empty(n_edges, dtype=np.int64)
     freed = np.empty(n_rows, dtype=np.int64)
+    graph = PairGraph(indptr, indices, rows_of_edge)
+    matching = Matching(col_of_row, edge_of_row, row_of_col)
+    scratch = PathScratch(col_seen, pred_edge, queue)
     stamp = 0
     n_fixed = 0
     order = np.argsort(-lengths, kind="mergesort")
@@ -282,10 +303,7 @@ def lexicographic_refine(
         unmatched = 0
         for k in range(n_freed):
             stamp += 1
-            if not _repair(
-                freed[k], indptr, indices, rows_of_edge, alive, fixed_col,
-                col_of_row, edge_of_row, row_of_col, col_seen, stamp, pred_edge, queue,
-            ):
+            if not _repair(freed[k], graph, alive, fixed_col, matching, scratch, stamp):
                 unmatched += 1
         if unmatched == 0:
             continue  # case 2

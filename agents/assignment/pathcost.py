@@ -43,6 +43,7 @@ What the resumable search keeps between queries, and why the answers stay exact:
 from __future__ import annotations
 
 import mmap
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
@@ -305,6 +306,39 @@ def dijkstra_costs(workspace: Workspace, source: int, targets: np.ndarray) -> tu
     return out, int(settled)
 
 
+class SearchMoves(NamedTuple):
+    """A workspace's moves as the searches take them: which moves each flat cell allows, the
+    flat offset and half-unit cost of each move, and the grid's strides
+    (:class:`~agents.assignment.grid.Moves`, :attr:`~agents.assignment.grid.Workspace.strides`)."""
+
+    allowed: np.ndarray
+    offsets: np.ndarray
+    costs: np.ndarray
+    strides: np.ndarray
+
+
+class SearchState(NamedTuple):
+    """The state of a :class:`SearchPool`'s searches, as compiled code takes it."""
+
+    states: np.ndarray
+    """(rows, cells) the cell states of the live searches, one row each."""
+    heaps: object
+    """A typed list of each robot's open list (int64 key and cell pairs)."""
+    record: np.ndarray
+    """(robots, 4) per robot its open-list size, the goal its keys aim at, its last use and its
+    row (-1 when not live): columns ``_SIZE``, ``_AIM``, ``_LAST_USE``, ``_SLOT``."""
+    totals: np.ndarray
+    """(5,) bytes held, cells expanded, queries, live searches, free rows (``_BYTES`` ...)."""
+    free_slots: np.ndarray
+    """The stack of free rows."""
+    dirty: np.ndarray
+    """(rows,) uint8 which rows were used before (cleared before reuse)."""
+    sources: np.ndarray
+    """(robots,) each robot's flat cell."""
+    budget: int
+    """Bytes of search state past which the least recently used searches are dropped."""
+
+
 # Columns of a pool's per-robot record, and entries of its totals.
 _SIZE, _AIM, _LAST_USE, _SLOT = 0, 1, 2, 3
 _BYTES, _EXPANDED, _CLOCK, _LIVE_COUNT, _FREE_SLOTS = 0, 1, 2, 3, 4
@@ -324,13 +358,13 @@ def _empty_heaps(n):
 @njit(cache=True, nogil=True)
 def _held(searches, robot):
     """Bytes held by ``robot``'s (live) search: its row of cell states and its open list."""
-    return searches[0].shape[1] * searches[0].itemsize + searches[1][robot].nbytes
+    return searches.states.shape[1] * searches.states.itemsize + searches.heaps[robot].nbytes
 
 
 @njit(cache=True, nogil=True)
 def _drop(searches, robot):
     """Free ``robot``'s search state; its row of cell states goes back to the free rows."""
-    heaps, record, totals, free_slots = searches[1], searches[2], searches[3], searches[4]
+    heaps, record, totals, free_slots = searches.heaps, searches.record, searches.totals, searches.free_slots
     totals[_BYTES] -= _held(searches, robot)
     heaps[robot] = np.empty(0, dtype=np.int64)
     free_slots[totals[_FREE_SLOTS]] = record[robot, _SLOT]
@@ -342,7 +376,7 @@ def _drop(searches, robot):
 @njit(cache=True, nogil=True)
 def _drop_oldest(searches):
     """Drop the least recently used live search."""
-    record = searches[2]
+    record = searches.record
     oldest = -1
     for other in range(record.shape[0]):
         if record[other, _SLOT] >= 0 and (oldest < 0 or record[other, _LAST_USE] < record[oldest, _LAST_USE]):
@@ -354,7 +388,8 @@ def _drop_oldest(searches):
 def _start(searches, robot):
     """Start ``robot``'s search in a free row (dropping the least recently used search when
     none is free: the pool would be over its budget after this query and drop it then)."""
-    states, heaps, record, totals, free_slots, dirty, sources = searches[:7]
+    states, heaps, record, totals = searches.states, searches.heaps, searches.record, searches.totals
+    free_slots, dirty, sources = searches.free_slots, searches.dirty, searches.sources
     if totals[_FREE_SLOTS] == 0:
         _drop_oldest(searches)
     totals[_FREE_SLOTS] -= 1
@@ -380,13 +415,14 @@ def pool_costs(moves, searches, robots, goals):
     """Exact half-unit costs (or -1) from each of ``robots`` to the flat cell of ``goals`` at the
     same place, by each robot's resumable A*, queried in order.
 
-    ``moves`` and ``searches`` are a :class:`SearchPool`'s ``moves`` and ``searches``: compiled
+    ``moves`` and ``searches`` are a :class:`SearchPool`'s :class:`SearchMoves` and :class:`SearchState`: compiled
     code that holds them calls this directly. A robot's search starts on first use; after
     each query the least recently used searches are dropped while the pool holds more than
     its budget (never the last one).
     """
-    allowed, offsets, step_costs, strides = moves
-    states, heaps, record, totals, budget = searches[0], searches[1], searches[2], searches[3], searches[7]
+    allowed, offsets, step_costs, strides = moves.allowed, moves.offsets, moves.costs, moves.strides
+    states, heaps, record, totals, budget = (searches.states, searches.heaps, searches.record, searches.totals,
+                                             searches.budget)
     out = np.empty(robots.shape[0], dtype=np.int64)
     goal_at = np.empty(strides.shape[0], dtype=np.int64)
     for k in range(robots.shape[0]):
@@ -411,11 +447,9 @@ def pool_costs(moves, searches, robots, goals):
 
 
 @njit(cache=True, nogil=True)
-def _pool_costs(robots, goals, allowed, offsets, costs, strides, states, heaps, record, totals, free_slots, dirty,
-                sources, budget):
-    """:func:`pool_costs` called with a :class:`SearchPool`'s ``arrays``."""
-    return pool_costs((allowed, offsets, costs, strides),
-                      (states, heaps, record, totals, free_slots, dirty, sources, budget), robots, goals)
+def _pool_costs(moves, searches, robots, goals):
+    """:func:`pool_costs` called from Python (it is inlined into its compiled callers)."""
+    return pool_costs(moves, searches, robots, goals)
 
 
 #: Largest block of cell states taken from the C allocator (bytes); larger ones are mapped directly.
@@ -473,17 +507,14 @@ class SearchPool:
     one per robot), instead of every search allocating and clearing a grid of its own.
 
     Attributes:
-        moves: ``(allowed, offsets, costs, strides)`` of the workspace.
-        searches: the search state: the block of cell-state rows; a typed list of the
-            robots' open lists; per robot its open-list size, the goal its keys aim at,
-            its last use and its row (-1 when not live); totals (bytes held, cells
-            expanded, queries, live searches, free rows); the stack of free rows; which
-            rows were used before; the robots' flat cells; the budget.
+        moves: the workspace's :class:`SearchMoves`.
+        searches: the :class:`SearchState` of the searches.
     """
 
     def __init__(self, workspace: Workspace, sources: np.ndarray, budget: int) -> None:
         moves = workspace.moves
-        self.moves = (moves.allowed, moves.offsets, moves.costs, workspace.strides)
+        self.moves = SearchMoves(allowed=moves.allowed, offsets=moves.offsets, costs=moves.costs,
+                                 strides=workspace.strides)
         sources = np.ascontiguousarray(sources, dtype=np.int64)
         n = len(sources)
         cells = moves.allowed.shape[0]
@@ -494,44 +525,38 @@ class SearchPool:
         record[:, _SLOT] = -1
         totals = np.zeros(5, dtype=np.int64)
         totals[_FREE_SLOTS] = rows
-        self.searches = (_zeroed_rows(rows, cells, dtype), _empty_heaps(n), record, totals,
-                         np.arange(rows - 1, -1, -1, dtype=np.int64), np.zeros(rows, dtype=np.uint8), sources,
-                         np.int64(budget))
-
-    @property
-    def arrays(self) -> tuple:
-        """``moves`` and ``searches`` one array after the other, for compiled functions that
-        take them so (numba types single arrays far faster than tuples of them)."""
-        return (*self.moves, *self.searches)
+        self.searches = SearchState(states=_zeroed_rows(rows, cells, dtype), heaps=_empty_heaps(n), record=record,
+                                    totals=totals, free_slots=np.arange(rows - 1, -1, -1, dtype=np.int64),
+                                    dirty=np.zeros(rows, dtype=np.uint8), sources=sources, budget=np.int64(budget))
 
     def costs_to(self, robots: np.ndarray, goals: np.ndarray) -> np.ndarray:
         """Half-unit costs from each of ``robots`` (indices) to the flat cell ``goals`` at the same
         place (``UNREACHABLE`` if none), queried in order."""
-        return _pool_costs(np.ascontiguousarray(robots, dtype=np.int64), np.ascontiguousarray(goals, dtype=np.int64),
-                           *self.arrays)
+        return _pool_costs(self.moves, self.searches, np.ascontiguousarray(robots, dtype=np.int64),
+                           np.ascontiguousarray(goals, dtype=np.int64))
 
     @property
     def expanded(self) -> int:
         """Cells expanded by all queries so far (a restarted search counts its cells again)."""
-        return int(self.searches[3][_EXPANDED])
+        return int(self.searches.totals[_EXPANDED])
 
     @property
     def nbytes(self) -> int:
         """Memory held by the live searches (bytes): their rows of cell states and open lists."""
-        return int(self.searches[3][_BYTES])
+        return int(self.searches.totals[_BYTES])
 
     @property
     def live(self) -> int:
         """Searches kept (not dropped, or started again since)."""
-        return int(self.searches[3][_LIVE_COUNT])
+        return int(self.searches.totals[_LIVE_COUNT])
 
     def known_costs(self, robot: int, goals: np.ndarray) -> np.ndarray:
         """Half-unit costs from ``robot`` to the flat cells ``goals`` its search has already
         expanded, ``UNREACHABLE`` elsewhere (and everywhere if its search is not live)."""
-        slot = self.searches[2][robot, _SLOT]
+        slot = self.searches.record[robot, _SLOT]
         if slot < 0:
             return np.full(len(goals), UNREACHABLE, dtype=np.int64)
-        reached = self.searches[0][slot, goals].astype(np.int64)
+        reached = self.searches.states[slot, goals].astype(np.int64)
         return np.where(reached < 0, -reached - 1, UNREACHABLE)
 
 

@@ -52,10 +52,10 @@ def new_record(values: tuple) -> BeliefRecord:  # pragma: no cover - compiled
 
 @njit(cache=True, nogil=True)
 def hear_and_believe(r: BeliefRecord, ball_seen, ball_at, ball_distance, saw, count, at, side, number, distance,
-                     position, listener, speaker, digits, decoding: tuple, codes: tuple, votes, vote_cycle,
+                     position, listener, speaker, digits, decoding: np.ndarray, codes: tuple, votes, vote_cycle,
                      cycle: int) -> None:  # pragma: no cover - compiled
     """A cycle's intake (module docstring): the messages ``digits`` (p, 10) that ``listener``
-    (p,) heard from ``speaker`` (p,) decoded (``decoding``: :data:`agents.messages.DECODING`),
+    (p,) heard from ``speaker`` (p,) decoded (``decoding``: :data:`agents.messages.WORLD_GRID`),
     the world models updated with the senses and the world messages, the votes of the right
     size stored in ``votes`` (n, n, k) and ``vote_cycle`` (n, n) (k = 0: none kept).
     ``codes``: the world and vote kinds' codes and the most players a vote covers
@@ -69,19 +69,18 @@ def hear_and_believe(r: BeliefRecord, ball_seen, ball_at, ball_distance, saw, co
     vote_size = np.zeros(p, dtype=np.int64)
     vote_cycle_sent = np.zeros(p, dtype=np.int64)
     if p > 0:
-        decode_digits(digits, decoding[0], decoding[1], decoding[2], decoding[3], decoding[4], decoding[5],
-                      decoding[6], kind, grid, world, vote, vote_size, vote_cycle_sent)
+        decode_digits(digits, decoding, kind, grid, world, vote, vote_size, vote_cycle_sent)
     believe(r.ball, r.ball_vel, r.ball_age, r.mate_pos, r.mate_age, r.opp_pos, r.opp_age, r.last_seen,
             r.last_seen_cycle, ball_seen, ball_at, ball_distance, saw, count, at, side, number, distance, position,
             listener, speaker, kind, world, codes[0], cycle, r.params, r.ball_decay, r.speed_max)
     if p > 0 and votes.shape[2] > 0:
-        _store_votes(listener, speaker, kind, vote, vote_size, vote_cycle_sent, codes[1], cycle, decoding[6], votes,
-                     vote_cycle)
+        _store_votes(listener, speaker, kind, vote, vote_size, vote_cycle_sent, codes[1], cycle, decoding[0].modulus,
+                     votes, vote_cycle)
 
 
 @njit(cache=True, nogil=True)
 def hear_block_and_believe(r: BeliefRecord, ball_seen, ball_at, ball_distance, saw, count, at, side, number, distance,
-                           position, heard, said, digit_of_byte, decoding: tuple, codes: tuple, votes, vote_cycle,
+                           position, heard, said, digit_of_byte, decoding: np.ndarray, codes: tuple, votes, vote_cycle,
                            cycle: int) -> None:  # pragma: no cover - compiled
     """:func:`hear_and_believe` with the messages as the delivery has them: ``heard`` (n, n)
     bool, listener ``l`` heard team-mate ``s``; ``said`` (n, 10) uint8 the characters each

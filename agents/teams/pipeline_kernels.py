@@ -163,17 +163,17 @@ def _query(s, b: int, play_on: bool, after_goal: bool, other: int) -> None:  # p
     out = s.targets[b].reshape(s.targets.shape[1] * s.targets.shape[2])
     if play_on:
         if s.attacking[b]:
-            value_kernel(s.block[b, 0], s.block[b, 1], *s.tables_attack, out)
+            value_kernel(s.block[b, 0], s.block[b, 1], s.tables_attack, out)
         else:
-            value_kernel(s.block[b, 0], s.block[b, 1], *s.tables_defend, out)
+            value_kernel(s.block[b, 0], s.block[b, 1], s.tables_defend, out)
         return
     x, y = (0.0, 0.0) if after_goal else (s.ball[b, 0], s.ball[b, 1])
     if other == OUR_SET_PLAY:
-        value_kernel(x, y, *s.tables_our_set_play, out)
+        value_kernel(x, y, s.tables_our_set_play, out)
     elif other == THEIR_SET_PLAY:
-        value_kernel(x, y, *s.tables_their_set_play, out)
+        value_kernel(x, y, s.tables_their_set_play, out)
     else:
-        value_kernel(x, y, *s.tables_normal, out)
+        value_kernel(x, y, s.tables_normal, out)
 
 
 @njit(cache=True, nogil=True)

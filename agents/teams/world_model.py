@@ -29,7 +29,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from agents.messages import CODES, DECODING, DIGIT_OF_BYTE, heard_pairs, said_bytes, text_digits, world_texts
+from agents.messages import CODES, DIGIT_OF_BYTE, WORLD_GRID, heard_pairs, said_bytes, text_digits, world_texts
 from agents.teams.belief_kernels import AGE_NEVER, own_kicks
 from agents.teams.belief_record import hear_and_believe, hear_block_and_believe, new_record
 from soccer_sim.config import MatchConfig
@@ -204,13 +204,13 @@ class TeamBeliefs:
         if said is not None:  # (a match's delivery, decoded as it stands)
             hear_block_and_believe(self.record, views.ball_seen, views.ball, views.ball_distance, views.saw,
                                    views.seen_count, views.seen_position, views.seen_side, views.seen_number,
-                                   views.seen_distance, views.position, log.heard, said, DIGIT_OF_BYTE, DECODING,
+                                   views.seen_distance, views.position, log.heard, said, DIGIT_OF_BYTE, WORLD_GRID,
                                    CODES, *votes_of, views.cycle)
             return self._senses(views)
         listeners, speakers, texts = heard_pairs(log)
         hear_and_believe(self.record, views.ball_seen, views.ball, views.ball_distance, views.saw, views.seen_count,
                          views.seen_position, views.seen_side, views.seen_number, views.seen_distance,
-                         views.position, listeners, speakers, text_digits(texts), DECODING, CODES,
+                         views.position, listeners, speakers, text_digits(texts), WORLD_GRID, CODES,
                          *votes_of, views.cycle)
         return self._senses(views)
 

@@ -6,11 +6,16 @@ Compiled because a side's 11 rows x 21 seen players cost about 0.15 ms per cycle
 expressions (many small fancy-indexing operations), more than the rest of an environment step.
 Each row reads only its own row of every input and writes only its own rows of the memories
 and of the output: what keeps one agent's observation free of what another perceives.
+
+The scales and slot counts travel as a named record (:data:`OBSERVATION_PARAMS`), the views'
+arrays and the memories as named tuples (:class:`ViewRows`, :class:`Memories`), each read by
+field name.
 """
 
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
@@ -18,22 +23,57 @@ from numba import njit
 OPPONENT_SIDE = -1
 """``PlayerViews.seen_side`` of an opponent (:data:`soccer_sim.perception.views.OPPONENT`)."""
 
+OBSERVATION_PARAMS = np.dtype(
+    [(name, np.float64) for name in ("length", "speed", "stamina_max", "see_cap", "ball_cap")]
+    + [("slots", np.int64), ("unidentified", np.int64)])
+"""The observation's divisors and slots: half the field's length (m), the top player speed
+(m/cycle), the stamina maximum, the see age and ball age caps (cycles), and the numbered slots
+per team and the unidentified slots (:mod:`soccer_sim.env.partial_spaces`)."""
+
+
+class ViewRows(NamedTuple):
+    """The arrays of a team's :class:`~soccer_sim.perception.views.PlayerViews` that
+    :func:`observe_rows` reads (team frame: m, m/cycle, degrees)."""
+
+    position: np.ndarray
+    velocity: np.ndarray
+    stamina: np.ndarray
+    body_direction: np.ndarray
+    saw: np.ndarray
+    ball_seen: np.ndarray
+    ball: np.ndarray
+    seen_count: np.ndarray
+    seen_position: np.ndarray
+    seen_side: np.ndarray
+    seen_number: np.ndarray
+
+
+class Memories(NamedTuple):
+    """Each agent's memories (one row each, only its own row written by it)."""
+
+    last_ball: np.ndarray
+    """(n, 2) m where it last saw the ball."""
+    ball_cycle: np.ndarray
+    """(n,) the cycle of its last ball sighting."""
+    see_cycle: np.ndarray
+    """(n,) the cycle of its last see."""
+    block: np.ndarray
+    """(n, 6 slots + 4 unidentified) the player slots of its last see (already scaled)."""
+
 
 @njit(cache=True, nogil=True)
-def observe_rows(cycle: int, scale: np.ndarray, position: np.ndarray, velocity: np.ndarray, stamina: np.ndarray,
-                 body_direction: np.ndarray, saw: np.ndarray, ball_seen: np.ndarray, ball: np.ndarray,
-                 seen_count: np.ndarray, seen_position: np.ndarray, seen_side: np.ndarray, seen_number: np.ndarray,
-                 goalie: np.ndarray, last_ball: np.ndarray, ball_cycle: np.ndarray, see_cycle: np.ndarray,
-                 block: np.ndarray, slots: int, unidentified: int, write: bool,
+def observe_rows(cycle: int, params: np.ndarray, views: ViewRows, goalie: np.ndarray, memory: Memories, write: bool,
                  out: np.ndarray) -> None:  # pragma: no cover - compiled
-    """Update the memories and (``write``) fill ``out[:, :16 + 6 slots + 4 unidentified]``.
-
-    ``scale`` = (half length m, top player speed m/cycle, stamina maximum, see age cap cycles,
-    ball age cap cycles). Positions in the team frame (m), velocities m/cycle, directions degrees.
-    Memories: ``last_ball`` (n, 2) m, ``ball_cycle`` and ``see_cycle`` (n,) the cycle of the
-    last ball sighting and of the last see, ``block`` (n, 6 slots + 4 unidentified) the player
-    slots of the last see (already scaled). Layout: :mod:`soccer_sim.env.partial_spaces`."""
-    length, speed, stamina_max, see_cap, ball_cap = scale[0], scale[1], scale[2], scale[3], scale[4]
+    """Update the ``memory`` with the ``views`` of ``cycle`` and (``write``) fill
+    ``out[:, :16 + 6 slots + 4 unidentified]``; ``params``: an :data:`OBSERVATION_PARAMS`
+    record; ``goalie`` (n,) 1 for the goalkeeper's row. Layout: :mod:`soccer_sim.env.partial_spaces`."""
+    p = params[0]
+    length, speed, stamina_max, see_cap, ball_cap = p.length, p.speed, p.stamina_max, p.see_cap, p.ball_cap
+    slots, unidentified = p.slots, p.unidentified
+    position, velocity, stamina, body_direction = views.position, views.velocity, views.stamina, views.body_direction
+    saw, ball_seen, ball, seen_count = views.saw, views.ball_seen, views.ball, views.seen_count
+    seen_position, seen_side, seen_number = views.seen_position, views.seen_side, views.seen_number
+    last_ball, ball_cycle, see_cycle, block = memory.last_ball, memory.ball_cycle, memory.see_cycle, memory.block
     width = block.shape[1]
     for p in range(position.shape[0]):
         if ball_seen[p]:

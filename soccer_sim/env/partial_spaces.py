@@ -62,7 +62,8 @@ from __future__ import annotations
 import numpy as np
 
 from soccer_sim.config import MatchConfig
-from soccer_sim.env.partial_kernel import observe_rows
+from soccer_sim.kernels import make_record
+from soccer_sim.env.partial_kernel import OBSERVATION_PARAMS, Memories, ViewRows, observe_rows
 from soccer_sim.env.say_codec import SayCodec
 from soccer_sim.env.spaces import _TAIL, MODES, VELOCITY_BOUND, Scales, observation_slots
 from soccer_sim.perception.views import PlayerViews
@@ -131,13 +132,16 @@ class PartialObservationBuilder:
         """End of the numbered slots; the unidentified slots follow."""
         self._tail = self._people + 4 * UNIDENTIFIED_SLOTS
         self._hear = self._tail + _TAIL
-        self._scale = np.array([self.scales.length, self.scales.player_speed, self.scales.stamina, SEE_AGE_CAP,
-                                BALL_AGE_CAP], dtype=np.float64)
+        self._params = make_record(OBSERVATION_PARAMS, length=self.scales.length, speed=self.scales.player_speed,
+                                   stamina_max=self.scales.stamina, see_cap=SEE_AGE_CAP, ball_cap=BALL_AGE_CAP,
+                                   slots=self.slots, unidentified=UNIDENTIFIED_SLOTS)
         self._seen = np.zeros((n, self._tail - _OWN), dtype=np.float32)
         """Each agent's player slots from its last see (it alone writes its row)."""
         self._ball = np.zeros((n, 2))
         self._ball_cycle = np.full(n, _NEVER, dtype=np.int64)
         self._see_cycle = np.full(n, _NEVER, dtype=np.int64)
+        self._memory = Memories(last_ball=self._ball, ball_cycle=self._ball_cycle, see_cycle=self._see_cycle,
+                                block=self._seen)
         self.out = np.zeros((n, self.size), dtype=np.float32)
         self.reset()
 
@@ -154,10 +158,10 @@ class PartialObservationBuilder:
         ``write=False`` only the memories are updated (None is returned)."""
         cycle = views.cycle
         buf = self.out
-        observe_rows(cycle, self._scale, views.position, views.velocity, views.stamina, views.body_direction,
-                     views.saw, views.ball_seen, views.ball, views.seen_count, views.seen_position, views.seen_side,
-                     views.seen_number, self._goalie, self._ball, self._ball_cycle, self._see_cycle, self._seen,
-                     self.slots, UNIDENTIFIED_SLOTS, write, buf)
+        rows = ViewRows(views.position, views.velocity, views.stamina, views.body_direction, views.saw,
+                        views.ball_seen, views.ball, views.seen_count, views.seen_position, views.seen_side,
+                        views.seen_number)
+        observe_rows(cycle, self._params, rows, self._goalie, self._memory, write, buf)
         if not write:
             return None
         tail = buf[:, self._tail:self._hear]

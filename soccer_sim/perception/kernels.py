@@ -6,36 +6,103 @@ Compiled because a partially observed match runs them every cycle for up to 22 o
 (23 objects + 55 flags): as numpy expressions they cost about 0.6 ms per cycle, four times a
 whole cycle of the full-observation match. Angles are degrees, distances metres.
 
-Parameters travel as one float array (:func:`params_array`, index constants ``P_*``) so the
-kernels have one signature whatever the configuration.
+Parameters travel as a named record (:data:`SEE_PARAMS`, made by :func:`see_record` from
+:class:`~.params.SeeParams`; the kernels read its fields by name, as :mod:`soccer_sim.kernels`
+does), so the kernels have one signature whatever the configuration; arrays that travel together
+(the players' constants, this cycle's truth, the outputs) are named tuples read by field name.
 """
 
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
 
 from soccer_sim.body import facing
+from soccer_sim.kernels import make_record
 from soccer_sim.perception.params import SeeParams
 
 EPS = 1.0e-10
 """rcssserver's ``EPS`` (``utility.h``), added before the logarithm."""
 
-(P_HALF_ANGLE, P_VISIBLE_DISTANCE, P_QUANTIZE_STEP, P_QUANTIZE_STEP_L, P_DISTANCE_STEP, P_DIRECTION_STEP,
- P_UNUM_FAR, P_UNUM_TOO_FAR, P_TEAM_FAR, P_TEAM_TOO_FAR, P_MAX_OBSERVATION, P_OMNIDIRECTIONAL) = range(12)
-
 UNSEEN, ANONYMOUS, TEAM_ONLY, FULL = -1, 0, 1, 2
 """Identity levels (:mod:`.see`)."""
 
+SEE_PARAMS = np.dtype(
+    [(name, np.float64) for name in (
+        "half_angle", "visible_distance", "quantize_step", "quantize_step_l", "distance_step", "direction_step",
+        "unum_far_length", "unum_too_far_length", "team_far_length", "team_too_far_length",
+        "max_observation_length")]
+    + [("omnidirectional", np.bool_), ("exact_self", np.bool_)])
+"""The see model's and the self-localisation's parameters (:class:`~.params.SeeParams`' fields
+of the same names, degrees and metres; ``half_angle`` is half its ``visible_angle``)."""
 
-def params_array(params: SeeParams) -> np.ndarray:
-    """``params`` as the kernels' float array (``P_*`` indices)."""
-    return np.array([params.visible_angle / 2.0, params.visible_distance, params.quantize_step,
-                     params.quantize_step_l, params.distance_step, params.direction_step, params.unum_far_length,
-                     params.unum_too_far_length, params.team_far_length, params.team_too_far_length,
-                     params.max_observation_length, 1.0 if params.omnidirectional else 0.0], dtype=np.float64)
+
+def see_record(params: SeeParams) -> np.ndarray:
+    """``params`` as the kernels' :data:`SEE_PARAMS` record."""
+    return make_record(
+        SEE_PARAMS, half_angle=params.visible_angle / 2.0, visible_distance=params.visible_distance,
+        quantize_step=params.quantize_step, quantize_step_l=params.quantize_step_l,
+        distance_step=params.distance_step, direction_step=params.direction_step,
+        unum_far_length=params.unum_far_length, unum_too_far_length=params.unum_too_far_length,
+        team_far_length=params.team_far_length, team_too_far_length=params.team_too_far_length,
+        max_observation_length=params.max_observation_length, omnidirectional=params.omnidirectional,
+        exact_self=params.exact_self)
+
+
+class SightingRows(NamedTuple):
+    """What observers see of the objects (object 0 the ball, then the players): one row per
+    observer, or one observer's row, of :class:`~.see.Sightings`' arrays (unseen: NaN, UNSEEN)."""
+
+    seen: np.ndarray
+    distance: np.ndarray
+    direction: np.ndarray
+    identity: np.ndarray
+    in_cone: np.ndarray
+
+
+class TrueBodies(NamedTuple):
+    """This cycle's truth that :func:`perceive` perceives, absolute frame: the players' (P, 2)
+    positions (m) and velocities (m/cycle), the ball (2,) m and who is on the pitch (P,)."""
+
+    pos: np.ndarray
+    vel: np.ndarray
+    ball: np.ndarray
+    present: np.ndarray
+
+
+class ObserverRows(NamedTuple):
+    """Each player row's constants for :func:`perceive` (P,): its ``inertia_moment``, its
+    ``player_decay``, its team (0 home, 1 away) and the row of its team's first player."""
+
+    inertia: np.ndarray
+    decay: np.ndarray
+    team: np.ndarray
+    first: np.ndarray
+
+
+class Perception(NamedTuple):
+    """What :func:`perceive` writes, one row per player, in each player's team frame: the
+    arrays of :class:`~.views.PlayerViews` of the same names, and ``seen_rows`` (P, K) the player
+    row behind each seen player (-1 padding, for tests and statistics)."""
+
+    body_direction: np.ndarray
+    position: np.ndarray
+    velocity: np.ndarray
+    localised: np.ndarray
+    ball_seen: np.ndarray
+    ball_distance: np.ndarray
+    ball_direction: np.ndarray
+    ball: np.ndarray
+    seen_count: np.ndarray
+    seen_distance: np.ndarray
+    seen_direction: np.ndarray
+    seen_position: np.ndarray
+    seen_side: np.ndarray
+    seen_number: np.ndarray
+    seen_rows: np.ndarray
 
 
 @njit(cache=True, nogil=True)
@@ -105,9 +172,9 @@ def _in_cone(dx: float, dy: float, dist: float, bx: float, by: float, cos_half: 
     player facing the unit vector ``(bx, by)``: ``|dir| < visible_angle / 2`` (as ``cos dir >
     cos(visible_angle / 2)``, which spares the arctangent of the objects out of view) and
     ``dist < max_observation_length``; any direction when omnidirectional."""
-    if dist >= prm[P_MAX_OBSERVATION]:
+    if dist >= prm[0].max_observation_length:
         return False
-    if prm[P_OMNIDIRECTIONAL] != 0.0:
+    if prm[0].omnidirectional:
         return True
     return dx * bx + dy * by > dist * cos_half
 
@@ -121,7 +188,7 @@ def _unseen_bounds(cos_half: float, close: float, prm: np.ndarray) -> tuple[floa
     """:func:`_surely_unseen`'s bounds for one observer: the squared ``close`` distance and the
     squared cosine of the half view angle, each with :data:`_SLACK` to spare; (inf, 0) -- the
     shortcut off -- when omnidirectional or for a cone as wide as a half-plane or wider."""
-    if prm[P_OMNIDIRECTIONAL] != 0.0 or cos_half <= 0.0:
+    if prm[0].omnidirectional or cos_half <= 0.0:
         return math.inf, 0.0
     return close * close * (1.0 + _SLACK), cos_half * cos_half * (1.0 - _SLACK)
 
@@ -173,10 +240,10 @@ def position_from_sightings(flags: np.ndarray, distances: np.ndarray, directions
 def _localise_one(px: float, py: float, body: float, flags: np.ndarray,
                   prm: np.ndarray) -> tuple[float, float, int]:  # pragma: no cover - compiled
     """One player's position from the flags it sees, and how many it sees (NaN, NaN, 0 for none)."""
-    close, q_l, d_step, a_step = prm[P_VISIBLE_DISTANCE], prm[P_QUANTIZE_STEP_L], prm[P_DISTANCE_STEP], \
-        prm[P_DIRECTION_STEP]
+    close, q_l, d_step, a_step = prm[0].visible_distance, prm[0].quantize_step_l, prm[0].distance_step, \
+        prm[0].direction_step
     b = math.radians(body)
-    bx, by, cos_half = math.cos(b), math.sin(b), math.cos(math.radians(prm[P_HALF_ANGLE]))
+    bx, by, cos_half = math.cos(b), math.sin(b), math.cos(math.radians(prm[0].half_angle))
     close2, cos2 = _unseen_bounds(cos_half, close, prm)
     sx = 0.0
     sy = 0.0
@@ -210,15 +277,17 @@ def localise_into(pos: np.ndarray, body: np.ndarray, flags: np.ndarray, prm: np.
 
 @njit(cache=True, nogil=True)
 def _see_one(ox: float, oy: float, body: float, objects: np.ndarray, me: int, visible: np.ndarray,
-             u_team: np.ndarray, u_unum: np.ndarray, prm: np.ndarray, seen: np.ndarray, distance: np.ndarray,
-             direction: np.ndarray, identity: np.ndarray, in_cone: np.ndarray) -> None:  # pragma: no cover - compiled
+             u_team: np.ndarray, u_unum: np.ndarray, prm: np.ndarray,
+             out: SightingRows) -> None:  # pragma: no cover - compiled
     """What one observer at ``(ox, oy)`` looking along ``body`` sees of ``objects`` (object 0 the
     ball; ``me`` its own object row or -1; ``visible[j]`` False for objects that cannot be seen),
-    into the rows ``seen`` .. ``in_cone``; ``u_team``, ``u_unum``: its identity-drop draws."""
-    close, q, d_step, a_step = prm[P_VISIBLE_DISTANCE], prm[P_QUANTIZE_STEP], prm[P_DISTANCE_STEP], \
-        prm[P_DIRECTION_STEP]
+    into its row ``out``; ``u_team``, ``u_unum``: its identity-drop draws; ``prm``: a
+    :data:`SEE_PARAMS` record."""
+    seen, distance, direction, identity, in_cone = out.seen, out.distance, out.direction, out.identity, out.in_cone
+    close, q, d_step, a_step = prm[0].visible_distance, prm[0].quantize_step, prm[0].distance_step, \
+        prm[0].direction_step
     b = math.radians(body)
-    bx, by, cos_half = math.cos(b), math.sin(b), math.cos(math.radians(prm[P_HALF_ANGLE]))
+    bx, by, cos_half = math.cos(b), math.sin(b), math.cos(math.radians(prm[0].half_angle))
     close2, cos2 = _unseen_bounds(cos_half, close, prm)
     for j in range(objects.shape[0]):
         dx, dy = objects[j, 0] - ox, objects[j, 1] - oy
@@ -242,9 +311,9 @@ def _see_one(ox: float, oy: float, body: float, objects: np.ndarray, me: int, vi
             identity[j] = FULL
         elif near:
             identity[j] = ANONYMOUS
-        elif u_team[j] < _drop_chance(d_rep, prm[P_TEAM_FAR], prm[P_TEAM_TOO_FAR]):
+        elif u_team[j] < _drop_chance(d_rep, prm[0].team_far_length, prm[0].team_too_far_length):
             identity[j] = ANONYMOUS
-        elif u_unum[j] < _drop_chance(d_rep, prm[P_UNUM_FAR], prm[P_UNUM_TOO_FAR]):
+        elif u_unum[j] < _drop_chance(d_rep, prm[0].unum_far_length, prm[0].unum_too_far_length):
             identity[j] = TEAM_ONLY
         else:
             identity[j] = FULL
@@ -252,38 +321,42 @@ def _see_one(ox: float, oy: float, body: float, objects: np.ndarray, me: int, vi
 
 @njit(cache=True, nogil=True)
 def see_into(obs: np.ndarray, body: np.ndarray, objects: np.ndarray, self_index: np.ndarray,
-             visible: np.ndarray, uniforms: np.ndarray, prm: np.ndarray, seen: np.ndarray, distance: np.ndarray,
-             direction: np.ndarray, identity: np.ndarray, in_cone: np.ndarray) -> None:  # pragma: no cover - compiled
-    """What each observer sees of ``objects`` (object 0 the ball, then players): the arrays
-    of :class:`~.see.Sightings` (unseen: NaN, UNSEEN). ``self_index[i]``: observer i's object
-    row minus one (-1: none); ``visible[j]``: object j may be seen at all (players sent off are
-    not); ``uniforms`` (2, n, m): the team-drop and number-drop draws."""
+             visible: np.ndarray, uniforms: np.ndarray, prm: np.ndarray,
+             out: SightingRows) -> None:  # pragma: no cover - compiled
+    """What each observer sees of ``objects`` (object 0 the ball, then players) into ``out``
+    ((n, m) arrays, one row per observer). ``self_index[i]``: observer i's object row minus one
+    (-1: none); ``visible[j]``: object j may be seen at all (players sent off are not);
+    ``uniforms`` (2, n, m): the team-drop and number-drop draws; ``prm``: a :data:`SEE_PARAMS`
+    record."""
     for i in range(obs.shape[0]):
         me = self_index[i] + 1 if self_index[i] >= 0 else -1
-        _see_one(obs[i, 0], obs[i, 1], body[i], objects, me, visible, uniforms[0, i], uniforms[1, i], prm, seen[i],
-                 distance[i], direction[i], identity[i], in_cone[i])
+        _see_one(obs[i, 0], obs[i, 1], body[i], objects, me, visible, uniforms[0, i], uniforms[1, i], prm,
+                 SightingRows(out.seen[i], out.distance[i], out.direction[i], out.identity[i], out.in_cone[i]))
 
 
 @njit(cache=True, nogil=True)
-def perceive(pos: np.ndarray, vel: np.ndarray, ball: np.ndarray, present: np.ndarray, seeing: np.ndarray,
-             inertia: np.ndarray, decay: np.ndarray, flags: np.ndarray, prm: np.ndarray, exact_self: bool,
-             advance: bool, uniforms: np.ndarray, team: np.ndarray, first: np.ndarray, home_attacks: float,
-             belief: np.ndarray, body_out: np.ndarray, pos_out: np.ndarray, vel_out: np.ndarray,
-             localised: np.ndarray, ball_seen: np.ndarray, ball_dist: np.ndarray, ball_dir: np.ndarray,
-             ball_at: np.ndarray, count: np.ndarray, s_dist: np.ndarray, s_dir: np.ndarray, s_at: np.ndarray,
-             s_side: np.ndarray, s_num: np.ndarray, s_obj: np.ndarray) -> None:  # pragma: no cover - compiled
+def perceive(truth: TrueBodies, seeing: np.ndarray, uniforms: np.ndarray, advance: bool, home_attacks: float,
+             rows: ObserverRows, flags: np.ndarray, prm: np.ndarray, belief: np.ndarray,
+             out: Perception) -> None:  # pragma: no cover - compiled
     """One cycle of every player's perception (:mod:`.observer`'s steps 1-3) in one call.
 
     ``belief`` (P, 2): each player's belief about its own position, absolute frame, updated in
-    place (advanced by the sensed velocity over ``decay`` when ``advance``, replaced by the flag
-    estimate on cycles with a see; the true position with ``exact_self``). ``seeing`` (P,): who
-    gets a see; ``uniforms`` (2, k, P + 1): the identity draws of the k seeing players in row
-    order. Outputs are in each player's team frame (``home_attacks`` for the first team's
-    players, its negative for the other's: each team's attack direction):
-    ``body_out`` degrees, ``pos_out`` / ``vel_out`` the believed position and sensed velocity, the
-    ball's polar coordinates and position, and the seen players nearest first (ties in row order)
-    with position, side (+1 team-mate, -1 opponent, 0 unknown), number (-1 unknown) and row
-    (``s_obj``, for tests). Rows of players without a see are cleared (NaN, 0, -1)."""
+    place (advanced by the sensed velocity over its decay when ``advance``, replaced by the flag
+    estimate from ``flags`` (F, 2) m on cycles with a see; the true position with the record
+    ``prm``'s ``exact_self``). ``seeing`` (P,): who gets a see; ``uniforms`` (2, k, P + 1): the
+    identity draws of the k seeing players in row order. Outputs (``out``) are in each player's
+    team frame (``home_attacks`` for the first team's players, its negative for the other's: each
+    team's attack direction): the body direction in degrees, the believed position and sensed
+    velocity, the ball's polar coordinates and position, and the seen players nearest first (ties
+    in row order) with position, side (+1 team-mate, -1 opponent, 0 unknown), number (-1 unknown)
+    and row. Rows of players without a see are cleared (NaN, 0, -1)."""
+    pos, vel, ball, present = truth.pos, truth.vel, truth.ball, truth.present
+    inertia, decay, team, first = rows.inertia, rows.decay, rows.team, rows.first
+    exact_self = prm[0].exact_self
+    body_out, pos_out, vel_out, localised = out.body_direction, out.position, out.velocity, out.localised
+    ball_seen, ball_dist, ball_dir, ball_at = out.ball_seen, out.ball_distance, out.ball_direction, out.ball
+    count, s_dist, s_dir, s_at = out.seen_count, out.seen_distance, out.seen_direction, out.seen_position
+    s_side, s_num, s_obj = out.seen_side, out.seen_number, out.seen_rows
     n = pos.shape[0]
     m = n + 1
     objects = np.empty((m, 2))
@@ -298,8 +371,9 @@ def perceive(pos: np.ndarray, vel: np.ndarray, ball: np.ndarray, present: np.nda
     direction = np.empty(m)
     identity = np.empty(m, dtype=np.int8)
     cone = np.empty(m, dtype=np.bool_)
+    sighted = SightingRows(seen, distance, direction, identity, cone)
     order = np.empty(m, dtype=np.int64)
-    d_step = prm[P_DIRECTION_STEP]
+    d_step = prm[0].direction_step
     k = 0
     for p in range(n):
         fx, fy = facing(vel[p, 0], vel[p, 1], ball[0] - pos[p, 0], ball[1] - pos[p, 1], inertia[p])
@@ -338,8 +412,8 @@ def perceive(pos: np.ndarray, vel: np.ndarray, ball: np.ndarray, present: np.nda
                 if flags_seen > 0:
                     localised[p] = True
                     belief[p, 0], belief[p, 1] = x, y
-            _see_one(pos[p, 0], pos[p, 1], body, objects, p + 1, visible, uniforms[0, k], uniforms[1, k], prm, seen,
-                     distance, direction, identity, cone)
+            _see_one(pos[p, 0], pos[p, 1], body, objects, p + 1, visible, uniforms[0, k], uniforms[1, k], prm,
+                     sighted)
             k += 1
             b = math.radians(body)
             if seen[0]:

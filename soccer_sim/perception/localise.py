@@ -27,7 +27,7 @@ import numpy as np
 
 from soccer_sim.field_config import STANDARD_FIELD, FieldConfig
 from soccer_sim.perception.params import SeeParams
-from soccer_sim.perception.kernels import localise_into, params_array, position_from_sightings, sense_velocities
+from soccer_sim.perception.kernels import localise_into, position_from_sightings, see_record, sense_velocities
 
 FLAG_MARGIN = 5.0
 """rcssserver's ``PITCH_MARGIN`` (m): the outer ring of flags stands this far outside the lines."""
@@ -93,7 +93,7 @@ def localise(positions: np.ndarray, velocities: np.ndarray, body_dirs: np.ndarra
     flag_pts = DEFAULT_FLAGS if flags is None else np.ascontiguousarray(flags, dtype=np.float64).reshape(-1, 2)
     position = np.empty((n, 2))
     count = np.empty(n, dtype=np.int64)
-    localise_into(np.ascontiguousarray(pos), np.ascontiguousarray(body), flag_pts, params_array(params), position,
+    localise_into(np.ascontiguousarray(pos), np.ascontiguousarray(body), flag_pts, see_record(params), position,
                   count)
     return SelfEstimate(position=position, velocity=sensed_velocity(vel, body, params), localised=count > 0,
                         flags_seen=count)

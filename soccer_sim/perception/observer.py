@@ -32,7 +32,7 @@ import numpy as np
 
 from soccer_sim.perception.audio import AudioChannel
 from soccer_sim.perception.config import ObservationConfig
-from soccer_sim.perception.kernels import params_array, perceive, senses_into
+from soccer_sim.perception.kernels import ObserverRows, Perception, TrueBodies, perceive, see_record, senses_into
 from soccer_sim.perception.localise import DEFAULT_FLAGS
 from soccer_sim.perception.params import see_cycles
 from soccer_sim.perception.views import HeardLog, PlayerViews
@@ -53,17 +53,18 @@ class Observer:
         total = sizes[0] + sizes[1]
         self._total = total
         self._rng = rng
-        self._prm = params_array(params)
-        self._decay = np.ascontiguousarray(decay, dtype=np.float64)
-        self._inertia = np.ascontiguousarray(inertia, dtype=np.float64)
+        self._prm = see_record(params)
         self.offsets_ms = rng.integers(0, int(params.send_step), total)
         """(P,) each player's see phase (ms)."""
         send, sim = int(params.send_step), int(params.simulator_step)
         period = math.lcm(send, sim) // sim
         self._see_table = see_cycles(np.arange(period)[:, None], params, self.offsets_ms[None, :])
         self.channel = AudioChannel(sizes, team_names, config.audio)
-        self._team = np.repeat(np.array([0, 1], dtype=np.int64), sizes)
-        self._first = np.where(self._team == 0, 0, sizes[0]).astype(np.int64)
+        team = np.repeat(np.array([0, 1], dtype=np.int64), sizes)
+        self._constants = ObserverRows(inertia=np.ascontiguousarray(inertia, dtype=np.float64),
+                                       decay=np.ascontiguousarray(decay, dtype=np.float64), team=team,
+                                       first=np.where(team == 0, 0, sizes[0]).astype(np.int64))
+        """Each player row's constants for :func:`~.kernels.perceive`."""
         self._belief = np.zeros((total, 2))
         self._started = False
         self._half = 0
@@ -82,6 +83,9 @@ class Observer:
         self.seen_rows = np.empty((total, k), dtype=np.int64)
         """(P, K) the player row of each player seen in the last cycle's lists (-1 padding): the
         truth behind the views, for tests and statistics."""
+        self._perception = Perception(seen_rows=self.seen_rows,
+                                      **{name: out[name] for name in Perception._fields if name != "seen_rows"})
+        """The arrays :func:`~.kernels.perceive` writes each cycle."""
         rows = self._rows = (slice(0, sizes[0]), slice(sizes[0], total))
         """Each team's rows (home, away)."""
         self.views = tuple(PlayerViews(player_types=np.asarray(type_ids[r]).copy(),
@@ -101,13 +105,8 @@ class Observer:
         if not self._started:
             self._belief[:] = state.pos  # a player knows where it starts
         uniforms = self._rng.random((2, int(np.count_nonzero(seeing)), self._total + 1))
-        perceive(state.pos, state.vel, state.ball, present, seeing, self._inertia, self._decay, DEFAULT_FLAGS,
-                 self._prm, self.params.exact_self, self._started, uniforms, self._team, self._first,
-                 float(state.home_attacks),
-                 self._belief, out["body_direction"], out["position"], out["velocity"], out["localised"],
-                 out["ball_seen"], out["ball_distance"], out["ball_direction"], out["ball"], out["seen_count"],
-                 out["seen_distance"], out["seen_direction"], out["seen_position"], out["seen_side"],
-                 out["seen_number"], self.seen_rows)
+        perceive(TrueBodies(state.pos, state.vel, state.ball, present), seeing, uniforms, self._started,
+                 float(state.home_attacks), self._constants, DEFAULT_FLAGS, self._prm, self._belief, self._perception)
         self._started = True
         senses_into(state.stamina, state.effort, state.capacity, state.frozen, present, int(state.ball_holder),
                     out["stamina"], out["effort"], out["capacity"], out["frozen"], out["present"], out["holds_ball"])

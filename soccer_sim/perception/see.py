@@ -31,8 +31,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from soccer_sim.body import DEFAULT_INERTIA_MOMENT
-from soccer_sim.perception.kernels import (ANONYMOUS, EPS, FULL, TEAM_ONLY, UNSEEN, body_degrees, params_array,
-                                           reported_distances, see_into)
+from soccer_sim.perception.kernels import (ANONYMOUS, EPS, FULL, TEAM_ONLY, UNSEEN, SightingRows, body_degrees,
+                                           reported_distances, see_into, see_record)
 from soccer_sim.perception.params import SeeParams
 
 __all__ = ["ANONYMOUS", "EPS", "FULL", "TEAM_ONLY", "UNSEEN", "Sightings", "body_directions", "quantized_distance",
@@ -126,6 +126,6 @@ def see(observers: np.ndarray, body_dirs: np.ndarray, ball: np.ndarray, players:
     # identity drops: drawn for every pair (team drops, then number drops) so the stream does not
     # depend on who sees what
     uniforms = rng.random((2, n, m))
-    see_into(obs, body, objects, idx, np.ones(m, dtype=bool), uniforms, params_array(params), seen, distance,
-             direction, identity, in_cone)
+    see_into(obs, body, objects, idx, np.ones(m, dtype=bool), uniforms, see_record(params),
+             SightingRows(seen, distance, direction, identity, in_cone))
     return Sightings(seen=seen, distance=distance, direction=direction, identity=identity, in_cone=in_cone)

@@ -103,3 +103,13 @@ def test_messages_travel_through_the_channel() -> None:
     (sender, text), = heard.for_listener(1)[0]
     assert sender == 0 and decode(text) == world
     assert decode(heard.for_listener(0)[0][0][1]) == vote
+
+
+def test_the_message_grid_is_one_packed_record_of_the_encoders_constants() -> None:
+    from agents import messages
+    from agents.message_kernels import GRID_PARAMS
+
+    grid = messages.WORLD_GRID
+    assert grid.dtype == GRID_PARAMS and grid.shape == (1,) and not GRID_PARAMS.isalignedstruct
+    assert (grid[0]["x_range"], grid[0]["y_range"], grid[0]["v_range"], grid[0]["max_age"], grid[0]["modulus"]) == (
+        messages.X_RANGE, messages.Y_RANGE, messages.V_RANGE, messages.MAX_AGE, messages.CYCLE_MODULUS)

@@ -113,7 +113,7 @@ def test_vectorised_matches_single_on_a_large_batch():
     np.testing.assert_allclose(single, many, rtol=0, atol=1e-9)
     each = np.empty_like(single)
     for ball, out in zip(balls, each):  # the compiled query the decentralised team calls: bit for bit
-        value_kernel(ball[0], ball[1], *formation.query_tables, out.reshape(-1))
+        value_kernel(ball[0], ball[1], formation.query_tables, out.reshape(-1))
     np.testing.assert_array_equal(each, single)
 
 

@@ -211,18 +211,19 @@ def test_the_square_shortcut_changes_no_sighting_and_no_localisation(monkeypatch
     from soccer_sim.perception import kernels
     from soccer_sim.perception.localise import DEFAULT_FLAGS
 
-    prm = kernels.params_array(SeeParams(visible_angle=angle, omnidirectional=omni))
+    prm = kernels.see_record(SeeParams(visible_angle=angle, omnidirectional=omni))
     monkeypatch.setattr(kernels, "_surely_unseen", njit(lambda dx, dy, bx, by, close2, cos2: False))
     monkeypatch.setattr(kernels, "_see_one", njit(kernels._see_one.py_func))
     monkeypatch.setattr(kernels, "_localise_one", njit(kernels._localise_one.py_func))
     plain_see, plain_localise = njit(kernels.see_into.py_func), njit(kernels.localise_into.py_func)
     # (numba reads the globals when it compiles: compile the copies now, while they are patched)
     plain_see(np.zeros((1, 2)), np.zeros(1), np.ones((2, 2)), np.zeros(1, dtype=np.int64), np.ones(2, dtype=bool),
-              np.zeros((2, 1, 2)), prm, *(np.empty((1, 2), dtype=t) for t in (bool, float, float, np.int8, bool)))
+              np.zeros((2, 1, 2)), prm,
+              kernels.SightingRows(*(np.empty((1, 2), dtype=t) for t in (bool, float, float, np.int8, bool))))
     plain_localise(np.zeros((1, 2)), np.zeros(1), DEFAULT_FLAGS, prm, np.empty((1, 2)), np.empty(1, dtype=np.int64))
     monkeypatch.undo()
     rng = np.random.default_rng(21)
-    close, half = prm[kernels.P_VISIBLE_DISTANCE], prm[kernels.P_HALF_ANGLE]
+    close, half = prm[0]["visible_distance"], prm[0]["half_angle"]
     skipped = 0
     for scene in range(40):
         obs = rng.uniform([-50, -30], [50, 30], (11, 2))
@@ -233,9 +234,10 @@ def test_the_square_shortcut_changes_no_sighting_and_no_localisation(monkeypatch
             r = close * (1.0, 0.9999, 1.0001)[k % 3] if k >= 4 else rng.uniform(1.0, 40.0)
             objects[1 + k] = obs[0] + r * np.array([math.cos(a), math.sin(a)])
         args = (obs, body, objects, np.arange(11), np.ones(23, dtype=bool), rng.random((2, 11, 23)), prm)
-        outs = [tuple(np.empty((11, 23), dtype=t) for t in (bool, float, float, np.int8, bool)) for _ in range(2)]
-        kernels.see_into(*args, *outs[0])
-        plain_see(*args, *outs[1])
+        outs = [kernels.SightingRows(*(np.empty((11, 23), dtype=t) for t in (bool, float, float, np.int8, bool)))
+                for _ in range(2)]
+        kernels.see_into(*args, outs[0])
+        plain_see(*args, outs[1])
         for mine, theirs in zip(*outs):
             np.testing.assert_array_equal(mine, theirs)
         flags = np.vstack([DEFAULT_FLAGS, obs[0] + close * np.array([[1.0, 0.0], [0.0, -1.0]])])
