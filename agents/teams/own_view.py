@@ -164,7 +164,7 @@ class OwnViewPositioning:
             radius=arrays.ours.radius, catch_radius=arrays.ours.catch_radius, opp_radius=arrays.theirs.radius,
             opp_catch_radius=arrays.theirs.catch_radius, reach=model.reach, ball_travel=model.ball_travel,
             coast=model.player_coast, raced=self._raced,
-            race_constants=np.array(tuple(first.skills.intercept_constants), dtype=np.float64),
+            race_constants=first.skills.intercept_params,
             race_near=float(RACE_NEAR), race_every=int(RACE_EVERY),
             # the switch, the block and the settled targets
             switch_margin=sp.switch_margin, switch_persist=sp.switch_persist, depth=float(shape.depth),
