@@ -21,8 +21,7 @@ from agents.skills.interception_kernels import UNREACHABLE, MotionTables, Runner
 from formations.interpolation_kernels import value_kernel
 from agents.teams.role_kernels import shape_targets
 from soccer_sim.rules.offside import offside_line
-from agents.teams.shape_kernels import ATTACKING, BALL_X, DEFENDING, LIMITED, MODE, OFF, advance_block, \
-    settle_targets, support_spots, switch_side
+from agents.teams.shape_kernels import advance_block, settle_targets, support_spots, switch_side
 
 
 @njit(cache=True, nogil=True)
@@ -129,17 +128,14 @@ def settle_each(rows: np.ndarray, targets: np.ndarray, previous: np.ndarray, pri
     y scaled by it (:func:`shape_targets`), then the back line held behind its ball and every
     target moved at most the block's pace from its own last targets ``previous[i]``
     (:func:`settle_targets`)."""
-    own = knobs.copy()
     for i in rows:
         shift = block[i, 2]
         shifted = play_on and shift != 0.0
         narrowed = play_on and attacking[i] and block[i, 0] > narrow_x and narrowing != 1.0
         if shifted or narrowed:
             shape_targets(targets[i], match_roles[i], shift, shifted, x_limit, forwards, narrowing, narrowed)
-        own[BALL_X] = ball[i, 0]
-        own[MODE] = (ATTACKING if attacking[i] else DEFENDING) if play_on else OFF
-        own[LIMITED] = 1.0 if play_on and primed[i] else 0.0
-        settle_targets(targets[i], previous[i], outfield_roles, back_roles, opp_pos[i], own)
+        settle_targets(targets[i], previous[i], outfield_roles, back_roles, opp_pos[i], knobs, ball[i, 0], play_on,
+                       attacking[i], play_on and primed[i])
         primed[i] = True
 
 
