@@ -38,7 +38,7 @@ class Players:
     area where it catches (None: ``radius``), all C-contiguous float64 (the compiled search
     relies on it, as it does not check bounds)."""
 
-    __slots__ = ("pos", "vel", "effort", "radius", "catch_radius")
+    __slots__ = ("pos", "vel", "effort", "radius", "catch_radius", "_runners")
 
     def __init__(self, model: MotionModel, pos: np.ndarray, vel: np.ndarray, effort: np.ndarray | None = None,
                  radius: np.ndarray | None = None, catch_radius: np.ndarray | None = None) -> None:
@@ -56,8 +56,12 @@ class Players:
 
     @property
     def runners(self) -> Runners:
-        """These players' arrays as the compiled searches take them (the same arrays)."""
-        return Runners(self.pos, self.vel, self.effort, self.radius, self.catch_radius)
+        """These players' arrays as the compiled searches take them (the same arrays; made once)."""
+        try:
+            return self._runners
+        except AttributeError:
+            self._runners = Runners(self.pos, self.vel, self.effort, self.radius, self.catch_radius)
+            return self._runners
 
     def rows(self, start: int, stop: int) -> Players:
         """Players ``start`` to ``stop - 1`` alone (views of these arrays, no copy)."""

@@ -157,12 +157,15 @@ def best_pass(ctx: SkillContext, view: TeamView, passer: int, params: PassParams
     if not best_pass_search(arrays.ball, arrays.ball_vel, receivers, passer, bool(holder), ours.runners,
                             Runners(theirs.pos, theirs.vel, theirs.effort, radius, catch), search, found):
         return None
-    plan = found[0]
-    return PassPlan(receiver=int(plan["receiver"]), target=np.array([plan["target_x"], plan["target_y"]]),
-                    receive_point=np.array([plan["receive_x"], plan["receive_y"]]),
-                    kick=np.array([plan["kick_x"], plan["kick_y"]]), ball_vel=np.array([plan["ball_vx"], plan["ball_vy"]]),
-                    arrival_cycle=int(plan["arrival_cycle"]), receive_cycle=int(plan["receive_cycle"]),
-                    opponent_cycle=int(plan["opponent_cycle"]), score=float(plan["score"]))
+    plan = dict(zip(_PLAN_FIELDS, found.item(0)))  # by name (a void's fields one by one cost more than the search)
+    return PassPlan(receiver=plan["receiver"], target=np.array((plan["target_x"], plan["target_y"])),
+                    receive_point=np.array((plan["receive_x"], plan["receive_y"])),
+                    kick=np.array((plan["kick_x"], plan["kick_y"])), ball_vel=np.array((plan["ball_vx"], plan["ball_vy"])),
+                    arrival_cycle=plan["arrival_cycle"], receive_cycle=plan["receive_cycle"],
+                    opponent_cycle=plan["opponent_cycle"], score=plan["score"])
+
+
+_PLAN_FIELDS = PASS_PLAN.names
 
 
 def _search(ctx: SkillContext, params: PassParams) -> PassSearch:
