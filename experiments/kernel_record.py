@@ -48,6 +48,26 @@ RECORD_CYCLES = 6000
 shots on goal) call their kernels too."""
 
 
+def signature_text(signature: tuple) -> str:
+    """A kernel's argument types as the manifest writes them: the tuple's ``repr``, except that a
+    named tuple's type (``ArgsName(array(float64, 1d, C), ...)`` in numba's own text, which
+    cannot be read back) is written ``named('module.Class', (field types,))``, which
+    :func:`experiments.warmup.signature_of` reads."""
+    texts = [_type_text(t) for t in signature]
+    return "(" + ", ".join(texts) + ("," if len(texts) == 1 else "") + ")"
+
+
+def _type_text(numba_type: object) -> str:
+    """One argument type's text (see :func:`signature_text`)."""
+    from numba.core import types
+
+    if isinstance(numba_type, (types.NamedTuple, types.NamedUniTuple)):
+        cls = numba_type.instance_class
+        fields = [_type_text(t) for t in numba_type.types]
+        return f"named({cls.__module__ + '.' + cls.__qualname__!r}, ({', '.join(fields)}{',' if len(fields) == 1 else ''}))"
+    return repr(numba_type)
+
+
 def record_match(home: str, away: str, seed: int = 0, cycles: int | None = RECORD_CYCLES,
                  observation: str = "full") -> list[dict]:
     """Play ``home`` v ``away`` in this process and return every kernel first called from
@@ -73,7 +93,7 @@ def record_match(home: str, away: str, seed: int = 0, cycles: int | None = RECOR
             seconds = time.perf_counter() - start
             for signature in set(self.signatures) - before:
                 found.append({"module": self.py_func.__module__, "function": self.py_func.__qualname__,
-                              "signature": repr(tuple(signature)), "seconds": round(seconds, 3)})
+                              "signature": signature_text(signature), "seconds": round(seconds, 3)})
 
     Dispatcher._compile_for_args = watched
     try:

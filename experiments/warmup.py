@@ -167,13 +167,26 @@ def dispatcher_of(kernel: Kernel):
 def signature_of(kernel: Kernel) -> tuple:
     """The kernel's argument types as numba types. A compiled structure's type (a numba
     ``StructRef``, written ``numba.NameType((field, type), ...)``) is one its module defines;
-    importing the kernel's module (:func:`dispatcher_of`) registers it."""
+    importing the kernel's module (:func:`dispatcher_of`) registers it. A named tuple's type is
+    written ``named('module.Class', (field types,))``."""
     from numba.core import types
 
     dispatcher_of(kernel)
     structures = SimpleNamespace(**{cls.__name__: _structure_maker(cls) for cls in _subclasses(types.StructRef)})
-    namespace = {**vars(types), "numba": structures}
+    namespace = {**vars(types), "numba": structures, "named": _named_tuple_type}
     return tuple(eval(kernel.signature, {"__builtins__": {}}, namespace))  # noqa: S307 - text from the manifest
+
+
+def _named_tuple_type(path: str, fields: tuple) -> object:
+    """The numba type of a named tuple of class ``path`` (``module.Class``) with ``fields``'
+    types: how the manifest writes a kernel's named-tuple argument
+    (:func:`experiments.kernel_record.signature_text`)."""
+    import importlib
+
+    from numba.core import types
+
+    module, _, name = path.rpartition(".")
+    return types.BaseTuple.from_types(list(fields), getattr(importlib.import_module(module), name))
 
 
 def _structure_maker(cls: type) -> Callable[..., object]:

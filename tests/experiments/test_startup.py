@@ -109,7 +109,7 @@ print(ensure_cached(stale + KERNELS[:1], processes=1).compiled, is_cached(KERNEL
 
 def test_manifest_names_existing_kernels_with_the_right_number_of_arguments() -> None:
     from experiments.kernel_manifest import KERNELS, TEAMS
-    from experiments.kernel_record import builtin_teams
+    from experiments.kernel_record import builtin_teams, signature_text
     from experiments.warmup import dispatcher_of, signature_of
 
     assert sorted(TEAMS) == sorted([*builtin_teams(), PARTIAL_ENTRY])
@@ -121,7 +121,7 @@ def test_manifest_names_existing_kernels_with_the_right_number_of_arguments() ->
         signature = signature_of(kernel)
         assert len(signature) == len(inspect.signature(dispatcher.py_func).parameters), kernel.name
         # the types read back exactly (a compiled structure's too), or the cache index never matches
-        assert repr(signature) == kernel.signature, kernel.name
+        assert signature_text(signature) == kernel.signature, kernel.name
 
 
 def test_kernels_for_takes_the_union_of_the_teams_and_of_mixed_members() -> None:
