@@ -164,17 +164,17 @@ class OwnViewPositioning:
             radius=arrays.ours.radius, catch_radius=arrays.ours.catch_radius, opp_radius=arrays.theirs.radius,
             opp_catch_radius=arrays.theirs.catch_radius, reach=model.reach, ball_travel=model.ball_travel,
             coast=model.player_coast, raced=self._raced,
-            race_constants=np.array(tuple(first.skills.intercept_constants), dtype=np.float64),
+            race_constants=first.skills.intercept_params,
             race_near=float(RACE_NEAR), race_every=int(RACE_EVERY),
             # the switch, the block and the settled targets
             switch_margin=sp.switch_margin, switch_persist=sp.switch_persist, depth=float(shape.depth),
-            attack_push=float(shape.attack_push), knobs=shape._knobs.copy(), outfield_roles=shape.outfield_roles,
+            attack_push=float(shape.attack_push), knobs=shape.settle_record, outfield_roles=shape.outfield_roles,
             back_roles=shape.back_roles, x_limit=model.half_length - 2.0, forwards=first._forward_roles,
             narrowing=1.0 - style.box_narrowing, narrow_x=third,
             # the support spots
             is_forward=shape.is_forward, is_back=shape.is_back, offsets=shape.offsets,
             support_players=sp.support_players, support_pressure=sp.support_pressure,
-            support_horizon=sp.support_horizon, third_x=third, support_knobs=shape._support_knobs,
+            support_horizon=sp.support_horizon, third_x=third, support_knobs=shape.support_record,
             # each player's memory, assignments, targets and rows
             attacking=self.attacking, pending=self._pending, in_play=self._in_play, block=self._block,
             our_cycles=self.our_cycles, our_points=self.our_points, our_first=self.our_first,

@@ -17,7 +17,7 @@ from numba import njit
 
 from agents.roles.voting import follow_votes
 from agents.skills.interception_kernels import UNREACHABLE
-from agents.skills.player_kernels import paced_dash_rows
+from agents.skills.player_kernels import Bodies, DashOut, paced_dash_rows
 from soccer_sim.rules.offside import offside_line
 
 
@@ -59,16 +59,16 @@ def dash_and_gaps(rows: np.ndarray, outfield_rows: np.ndarray, play_on: bool, at
                   budgets: np.ndarray, measuring: tuple) -> tuple[int, float, float, int]:  # pragma: no cover
     """Step 6 of :class:`~agents.teams.own_view.OwnViewPositioning` and its figures: each
     deciding player's pacing phase (1 it believes we attack, 0 we defend, -1 not in play), its
-    dash to its goal into ``dash`` (``dashing``: the other arguments of
-    :func:`~agents.skills.player_kernels.paced_dash_rows` in its order, from the positions to
-    the goalkeeper's row, then cycle, half and the pacing constants); in play on, the role
+    dash to its goal into ``dash`` (``dashing``: the players' positions, velocities, efforts,
+    stamina and capacity, the balls, the goalkeeper's row, cycle, half and the pacing record of
+    :func:`~agents.skills.player_kernels.paced_dash_rows`); in play on, the role
     figures of the outfield rows (:func:`followed_role_gaps`; ``measuring``: its arguments
     after ``rows``), else zeros."""
     for i in rows:
         phase[i] = (1 if attacking[i] else 0) if play_on else -1
     position, velocity, effort, stamina, capacity, balls, goalie, cycle, half, pacing = dashing
-    paced_dash_rows(rows, position, velocity, goals, effort, stamina, capacity, urgent, balls, goalie, phase, cycle,
-                    half, pacing, dash, budgets)
+    paced_dash_rows(rows, Bodies(position, velocity, effort, stamina, capacity), goals, urgent, balls, goalie, phase,
+                    cycle, half, pacing, DashOut(dash, budgets))
     if not play_on or outfield_rows.shape[0] == 0:
         return 0, 0.0, 0.0, 0
     rank, followed, last_followed, targets, out_roles, unfilled = measuring

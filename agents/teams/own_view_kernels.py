@@ -17,12 +17,11 @@ import numpy as np
 from numba import njit
 
 from agents.roles.voting import follow_votes
-from agents.skills.interception_kernels import UNREACHABLE, race_kernel
+from agents.skills.interception_kernels import UNREACHABLE, MotionTables, Runners, race_kernel
 from formations.interpolation_kernels import value_kernel
 from agents.teams.role_kernels import shape_targets
 from soccer_sim.rules.offside import offside_line
-from agents.teams.shape_kernels import ATTACKING, BALL_X, DEFENDING, LIMITED, MODE, OFF, advance_block, \
-    settle_targets, support_spots, switch_side
+from agents.teams.shape_kernels import advance_block, settle_targets, support_spots, switch_side
 
 
 @njit(cache=True, nogil=True)
@@ -41,8 +40,8 @@ def read_play(rows: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, mate_pos
     winner's interception point or the ball). In play on, also its attack/defend switch with
     hysteresis (:meth:`agents.teams.shape.Shape.play_on`) and its block moved at the block's
     pace towards ``win_point`` (``block`` (n, 3): query x, y and the shift ``depth`` or
-    ``depth + attack_push``). ``c``: the race's constants (x_max, y_max, top_speed, area_x,
-    area_y, accel_max, speed_max, decay, body).
+    ``depth + attack_push``). ``c``: the race's constants (an
+    :data:`~agents.skills.interception_kernels.INTERCEPT_PARAMS` record).
 
     A player runs its race again on the cycles it sees when it believes the ball within
     ``near`` m or raced ``every`` cycles ago or more, and at the latest ``every + 1`` cycles
@@ -71,10 +70,11 @@ def read_play(rows: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray, mate_pos
         vel[:] = 0.0
         vel[i, 0], vel[i, 1] = own_vel[i, 0], own_vel[i, 1]
         eff[:] = effort[i]
-        first, first_cycle, their_first, their_first_cycle = race_kernel(
-            ball[i:i + 1], ball_vel[i:i + 1], mate_pos[i], vel, eff, radius, catch_radius, opp_pos[i], opp_vel, opp_eff,
-            opp_radius, opp_catch_radius, reach, ball_travel, coast, everyone, oc, op, tc, tp, c[0], c[1], c[2], c[3],
-            c[4], c[5], c[6], c[7], c[8], True)
+        firsts = race_kernel(ball[i:i + 1], ball_vel[i:i + 1], Runners(mate_pos[i], vel, eff, radius, catch_radius),
+                             Runners(opp_pos[i], opp_vel, opp_eff, opp_radius, opp_catch_radius),
+                             MotionTables(reach, ball_travel, coast), everyone, oc, op, tc, tp, c, True)
+        first, first_cycle = firsts.first, firsts.first_cycle
+        their_first, their_first_cycle = firsts.their_first, firsts.their_first_cycle
         our_cycles[i] = oc[0]
         our_points[i] = op[0]
         our_first[i] = first
@@ -128,17 +128,14 @@ def settle_each(rows: np.ndarray, targets: np.ndarray, previous: np.ndarray, pri
     y scaled by it (:func:`shape_targets`), then the back line held behind its ball and every
     target moved at most the block's pace from its own last targets ``previous[i]``
     (:func:`settle_targets`)."""
-    own = knobs.copy()
     for i in rows:
         shift = block[i, 2]
         shifted = play_on and shift != 0.0
         narrowed = play_on and attacking[i] and block[i, 0] > narrow_x and narrowing != 1.0
         if shifted or narrowed:
             shape_targets(targets[i], match_roles[i], shift, shifted, x_limit, forwards, narrowing, narrowed)
-        own[BALL_X] = ball[i, 0]
-        own[MODE] = (ATTACKING if attacking[i] else DEFENDING) if play_on else OFF
-        own[LIMITED] = 1.0 if play_on and primed[i] else 0.0
-        settle_targets(targets[i], previous[i], outfield_roles, back_roles, opp_pos[i], own)
+        settle_targets(targets[i], previous[i], outfield_roles, back_roles, opp_pos[i], knobs, ball[i, 0], play_on,
+                       attacking[i], play_on and primed[i])
         primed[i] = True
 
 

@@ -38,9 +38,9 @@ import numpy as np
 from agents import skills
 from soccer_sim.rules.offside import offside_line
 from agents.teams.shape_kernels import (
-    ATTACKING, BACK_FLOOR, BALL_X, DEFEND_BALL_GAP, DEFENDING, DROP, KNOBS, LIMITED, MODE, OFF, PUSH, REST_BALL_GAP,
-    REST_FORWARD_MARGIN, REST_MAX_GAP, advance_block, settle_targets, support_spots, switch_side)
+    SHAPE_PARAMS, SUPPORT_PARAMS, advance_block, settle_targets, support_spots, switch_side)
 from formations.formation_set import Situation
+from soccer_sim.kernels import make_record
 from soccer_sim.team import TeamView
 
 __all__ = ["Shape", "ShapeParams"]
@@ -178,15 +178,16 @@ class Shape:
         unit = unit[unit[:, 0] >= BACKWARD_LIMIT]  # support level with or ahead of the ball, or a little behind
         self.offsets = np.concatenate([unit * radius for radius in params.support_radii])
         """The support spots relative to the carrier, (S, 2)."""
-        knobs = np.zeros(KNOBS)
-        knobs[[REST_BALL_GAP, REST_FORWARD_MARGIN, REST_MAX_GAP, DEFEND_BALL_GAP, BACK_FLOOR, PUSH, DROP]] = (
-            params.rest_ball_gap, params.rest_forward_margin, params.rest_max_gap, params.defend_ball_gap,
-            -half_length + BACK_LINE_FLOOR, params.push_speed, params.drop_speed)
-        self._knobs = knobs
-        """The numbers :func:`settle_targets` needs, in its order."""
-        self._support_knobs = np.array([half_length - 3.0, half_width - 2.0, params.lane_cap, params.space_cap,
-                                        params.forward_weight, params.travel_weight, params.crowd_distance])
-        """The numbers :func:`support_spots` needs, in its order."""
+        self._settle_record = make_record(
+            SHAPE_PARAMS, rest_ball_gap=params.rest_ball_gap, rest_forward_margin=params.rest_forward_margin,
+            rest_max_gap=params.rest_max_gap, defend_ball_gap=params.defend_ball_gap,
+            back_floor=-half_length + BACK_LINE_FLOOR, push=params.push_speed, drop=params.drop_speed)
+        """The numbers :func:`advance_block` and :func:`settle_targets` read."""
+        self._support_record = make_record(
+            SUPPORT_PARAMS, x_limit=half_length - 3.0, y_limit=half_width - 2.0, lane_cap=params.lane_cap,
+            space_cap=params.space_cap, forward_weight=params.forward_weight, travel_weight=params.travel_weight,
+            crowd_distance=params.crowd_distance)
+        """The numbers :func:`support_spots` reads."""
         self._held = 0
         """Cycles the current support spots are kept for yet."""
         self._carrier = -1
@@ -201,6 +202,19 @@ class Shape:
         for a brain that did not act last cycle."""
         self._in_play = False
         self._primed = False
+
+    @property
+    def settle_record(self) -> np.ndarray:
+        """A copy of the block's and the back line's numbers as the compiled kernels read them
+        (a :data:`~agents.teams.shape_kernels.SHAPE_PARAMS` record: :func:`advance_block`,
+        :func:`settle_targets`), for positioning that runs them on its own."""
+        return self._settle_record.copy()
+
+    @property
+    def support_record(self) -> np.ndarray:
+        """A copy of the support spots' numbers as the compiled kernels read them (a
+        :data:`~agents.teams.shape_kernels.SUPPORT_PARAMS` record: :func:`support_spots`)."""
+        return self._support_record.copy()
 
     @property
     def shift(self) -> float:
@@ -225,7 +239,7 @@ class Shape:
         self.ball_point[:] = point
         block = self._block
         advance_block(block, point, self.depth + self.attack_push if self.attacking else self.depth,
-                      self._in_play, self._knobs)
+                      self._in_play, self._settle_record)
         self._in_play = True
         return (Situation.ATTACK if self.attacking else Situation.DEFEND), self.query
 
@@ -234,11 +248,8 @@ class Shape:
         behind the ball (rest defence when attacking) and every target moves at most the
         block's pace from last cycle's (the first cycle of play from the set play's targets);
         otherwise the targets are only remembered."""
-        knobs = self._knobs
-        knobs[BALL_X] = view.ball[0]
-        knobs[MODE] = (ATTACKING if self.attacking else DEFENDING) if play_on else OFF
-        knobs[LIMITED] = play_on and self._primed
-        settle_targets(targets, self.previous, self.outfield_roles, self.back_roles, view.opp_pos, knobs)
+        settle_targets(targets, self.previous, self.outfield_roles, self.back_roles, view.opp_pos, self._settle_record,
+                       float(view.ball[0]), bool(play_on), self.attacking, bool(play_on and self._primed))
         self._in_play = play_on
         self._primed = True
 
@@ -282,7 +293,7 @@ class Shape:
             return
         x_max = offside_line(view.opp_pos[:, 0], float(view.ball[0])) - 1.0
         count = support_spots(carrier, targets, targets, candidates, view.opp_pos, self.offsets,
-                              p.support_players, x_max, self._support_knobs, self._rows, self._spots)
+                              p.support_players, x_max, self._support_record, self._rows, self._spots)
         self._chosen, self._chosen_spots = self._rows[:count].copy(), self._spots[:count].copy()
         targets[self._chosen] = self._chosen_spots
 

@@ -296,3 +296,19 @@ def test_a_free_carrier_runs_with_the_ball_and_nobody_leaves_the_shape() -> None
     theirs = opponents(30.0)  # nobody within 25 m of our carrier
     team, _, moved = support_roles("static", SUPPORT_OWN, theirs, SUPPORT_OWN[8] + (0.5, 0.0))
     assert team.shape.attacking and moved == []
+
+
+def test_the_shape_hands_its_kernel_records_out_as_copies_of_its_parameters() -> None:
+    """What the own-view positioning needs of the shape comes through public properties: the
+    block's and the support spots' numbers as named records with the parameters' values, copies
+    that the shape does not see written."""
+    params = ShapeParams(rest_ball_gap=11.0, push_speed=0.65, lane_cap=4.5, crowd_distance=6.5)
+    shape = Shape(params, KINDS, depth=0.0, attack_push=0.0, half_length=HL, half_width=HW)
+    settle, support = shape.settle_record, shape.support_record
+    assert settle[0]["rest_ball_gap"] == 11.0 and settle[0]["push"] == 0.65
+    assert settle[0]["drop"] == params.drop_speed and settle[0]["back_floor"] > -HL
+    assert support[0]["lane_cap"] == 4.5 and support[0]["crowd_distance"] == 6.5
+    assert support[0]["x_limit"] < HL and support[0]["y_limit"] < HW
+    settle[0]["push"] = 99.0
+    support[0]["lane_cap"] = 99.0
+    assert shape.settle_record[0]["push"] == 0.65 and shape.support_record[0]["lane_cap"] == 4.5
