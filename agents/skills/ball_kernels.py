@@ -2,11 +2,18 @@
 (:mod:`agents.skills.lanes`), the offside line and the pass search
 (:mod:`agents.skills.passing`), the spread of a kicked ball under the kick and ball noise
 (:meth:`agents.skills.model.MotionModel.kick_spread`) and the shot scores
-(:mod:`agents.skills.shooting`). Constants come as named scalar arguments."""
+(:mod:`agents.skills.shooting`).
+
+Arguments travel as named records, as in :mod:`soccer_sim.kernels`: the constants of a match
+(and of a skill's parameters) as one-element numpy structured arrays read by field name
+(:data:`KICK_MODEL`, :data:`PASS_PARAMS`, :data:`SHOT_PARAMS`, made with
+:func:`soccer_sim.kernels.make_record`); arrays that belong together as named tuples read by
+field name (:class:`PassLanes`, :class:`ShotAims`)."""
 
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
@@ -21,17 +28,80 @@ LEAD_CAP = 10
 term is ``min(lead, LEAD_CAP) / LEAD_CAP``)."""
 
 
+def _fields(*names: str, kind: type = np.float64) -> list[tuple[str, type]]:
+    return [(name, kind) for name in names]
+
+
+KICK_MODEL = np.dtype(_fields(
+    "kick_max", "ball_max", "distance_penalty", "angle_penalty", "kickable_margin", "touch", "inertia_moment"))
+"""The kick rule as the kicker models it (:func:`kick_kernel`; made once per match,
+:attr:`agents.skills.model.MotionModel.kick_model`): the largest kick (``kick_max``, rcssserver's
+``max_power`` times ``kick_power_rate``) and ball speed, the kick rate's distance and angle
+penalties, the kickable margin, the touch distance (player plus ball radius) and the player
+type's inertia moment."""
+
+PASS_PARAMS = np.dtype(_fields("x_max", "y_max", "min_distance", "max_distance", "decay")
+                       + _fields("horizon", "extra_cycles", "min_lead", kind=np.int64)
+                       + _fields("coast", "kickable", "half_length", "weight_forward", "weight_goal", "weight_space",
+                                 "weight_lead"))
+"""The pass search's constants for one match and one
+:class:`~agents.skills.passing.PassParams` (:func:`pass_targets`, :func:`pass_scores`): the
+largest |x| and |y| of a target, the usable pass distances, the ball decay, the search horizon,
+the cycles searched beyond a lane's arrival, the smallest lead over the opponents (cycles), the
+player coast factor at the horizon, the kickable distance, the field's half length and the
+score's four weights."""
+
+SHOT_PARAMS = np.dtype(_fields("kick_max", "kick_rand", "ball_rand", "post", "lead_half", "lead_scale"))
+"""The shot scores' constants for one match and one :class:`~agents.skills.shooting.ShotParams`
+(:func:`shot_scores`): the largest kick, the kick and ball noise, the largest |y| of a ball
+entering the goal (the post less the ball radius) and the unblocked factor's logistic centre and
+scale (cycles of lead)."""
+
+
+class PassLanes(NamedTuple):
+    """The usable lanes of a pass search, one row each (:func:`pass_scores`)."""
+
+    targets: np.ndarray
+    """(L, 2) where the pass goes."""
+    owners: np.ndarray
+    """(L,) int: the receiver of each."""
+    arrival: np.ndarray
+    """(L,) int: the cycle the ball gets to the target."""
+    receive: np.ndarray
+    """(L,) int: the cycle the receiver controls it (UNREACHABLE: never)."""
+    received_at: np.ndarray
+    """(L, 2) where it does."""
+    theirs: np.ndarray
+    """(L,) int: the first opponent's cycle."""
+
+
+class ShotAims(NamedTuple):
+    """The aims of a shot, one row each, ascending across the goal line (:func:`shot_scores`)."""
+
+    aim_y: np.ndarray
+    """(A,) y of each aim on the goal line (m)."""
+    lead: np.ndarray
+    """(A,) cycles by which the ball beats the opponents to the line."""
+    kicks: np.ndarray
+    """(A, 2) the kick requests."""
+    velocities: np.ndarray
+    """(A, 2) the ball velocities they give."""
+    cross: np.ndarray
+    """(A,) int: the cycle the ball crosses the line."""
+
+
 @njit(cache=True, nogil=True)
-def body_effect(rx: float, ry: float, rnorm: float, pvx: float, pvy: float, distance_penalty: float,
-                angle_penalty: float, kickable_margin: float, touch: float,
-                inertia_moment: float) -> float:  # pragma: no cover - compiled
+def body_effect(rx: float, ry: float, rnorm: float, pvx: float, pvy: float,
+                kick: np.ndarray) -> float:  # pragma: no cover - compiled
     """Effectiveness of any kick by a player moving at (``pvx``, ``pvy``) on the ball lying at
     (``rx``, ``ry``) from it (``rnorm`` away): the simulator's kick rate
     (:mod:`soccer_sim.kick_rate`, rcssserver's), with the body direction of
-    :mod:`soccer_sim.body` (a player at rest or slow faces the ball)."""
-    angle = ball_angle_to_body(pvx, pvy, rx, ry, inertia_moment)
-    return kick_effectiveness(kick_distance_rate(rnorm, touch, kickable_margin), kick_angle_rate(angle),
-                              distance_penalty, angle_penalty)
+    :mod:`soccer_sim.body` (a player at rest or slow faces the ball); ``kick``: a
+    :data:`KICK_MODEL` record."""
+    k = kick[0]
+    angle = ball_angle_to_body(pvx, pvy, rx, ry, k.inertia_moment)
+    return kick_effectiveness(kick_distance_rate(rnorm, k.touch, k.kickable_margin), kick_angle_rate(angle),
+                              k.distance_penalty, k.angle_penalty)
 
 
 @njit(cache=True, nogil=True)
@@ -48,36 +118,33 @@ def effect(rx: float, ry: float, rnorm: float, base: float, angle_penalty: float
 
 @njit(cache=True, nogil=True)
 def effect_kernel(player: np.ndarray, player_vel: np.ndarray, ball: np.ndarray, kicks: np.ndarray, out: np.ndarray,
-                  distance_penalty: float, angle_penalty: float, kickable_margin: float, touch: float,
-                  inertia_moment: float) -> None:  # pragma: no cover - compiled
+                  kick: np.ndarray) -> None:  # pragma: no cover - compiled
     """The effectiveness of each of ``kicks`` by a player at ``player`` moving at
-    ``player_vel`` on the ball at ``ball``."""
+    ``player_vel`` on the ball at ``ball`` (``kick``: a :data:`KICK_MODEL` record)."""
     rx, ry = ball[0] - player[0], ball[1] - player[1]
     rnorm = math.sqrt(rx * rx + ry * ry)
-    base = body_effect(rx, ry, rnorm, player_vel[0], player_vel[1], distance_penalty, angle_penalty,
-                       kickable_margin, touch, inertia_moment)
+    base = body_effect(rx, ry, rnorm, player_vel[0], player_vel[1], kick)
+    angle_penalty = kick[0].angle_penalty
     for j in range(kicks.shape[0]):
         out[j] = effect(rx, ry, rnorm, base, angle_penalty, kicks[j, 0], kicks[j, 1], False)
 
 
 @njit(cache=True, nogil=True)
-def largest_speed(ux: float, uy: float, vx: float, vy: float, low: float, high: float, kick_max: float, rx: float,
-                  ry: float, rnorm: float, base: float, angle_penalty: float,
-                  holder: bool) -> float:  # pragma: no cover - compiled
+def largest_speed(ux: float, uy: float, vx: float, vy: float, low: float, high: float, kick_max: float,
+                  eff: float) -> float:  # pragma: no cover - compiled
     """The largest speed s in [low, high] along the unit vector u such that the change
-    ``s u - v`` fits in one kick (``low`` does, ``high`` does not).
+    ``s u - v`` fits in one kick of effectiveness ``eff`` (:func:`effect`; ``low`` does,
+    ``high`` does not).
 
-    For a fixed effectiveness e the boundary solves ``|s u - v| = kick_max e``, a quadratic
-    in s; e depends on the change's direction only, which moves little with s, so a few
-    rounds of "solve, re-evaluate e" land on the boundary. The result is checked and, if it
-    is not feasible, bisection between ``low`` and it settles the matter.
+    The boundary solves ``|s u - v| = kick_max eff``, a quadratic in s. The result is checked
+    and, if it is not feasible (rounding), bisection between ``low`` and it settles the
+    matter.
     """
     along = ux * vx + uy * vy
     rest = vx * vx + vy * vy - along * along
     s = high
     for _ in range(5):
-        cx, cy = s * ux - vx, s * uy - vy
-        reach = kick_max * effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder)
+        reach = kick_max * eff
         disc = reach * reach - rest
         if disc < 0.0:
             break
@@ -89,13 +156,13 @@ def largest_speed(ux: float, uy: float, vx: float, vy: float, low: float, high: 
     for nudge in (0.0, 1e-8):  # the boundary is met to rounding: step just inside it
         t = max(s - nudge, low)
         cx, cy = t * ux - vx, t * uy - vy
-        if math.sqrt(cx * cx + cy * cy) <= kick_max * effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder):
+        if math.sqrt(cx * cx + cy * cy) <= kick_max * eff:
             return t
     high = s
     for _ in range(18):  # to within 2^-18 of the range (~1e-5 m/cycle)
         mid = 0.5 * (low + high)
         cx, cy = mid * ux - vx, mid * uy - vy
-        if math.sqrt(cx * cx + cy * cy) <= kick_max * effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder):
+        if math.sqrt(cx * cx + cy * cy) <= kick_max * eff:
             low = mid
         else:
             high = mid
@@ -104,17 +171,17 @@ def largest_speed(ux: float, uy: float, vx: float, vy: float, low: float, high: 
 
 @njit(cache=True, nogil=True)
 def kick_kernel(player: np.ndarray, player_vel: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray,
-                desired: np.ndarray, kick_out: np.ndarray, result_out: np.ndarray, kick_max: float, ball_max: float,
-                distance_penalty: float, angle_penalty: float, kickable_margin: float, touch: float,
-                inertia_moment: float, holder: bool) -> None:  # pragma: no cover - compiled
+                desired: np.ndarray, kick_out: np.ndarray, result_out: np.ndarray, kick: np.ndarray,
+                holder: bool) -> None:  # pragma: no cover - compiled
     """The kick request (``kick_out``) that gives the ball each ``desired`` velocity, or the
     nearest one kick reaches, and the velocity it gets (``result_out``); see
     :mod:`agents.skills.kicking`. ``player_vel``: the kicker's velocity (its body direction,
-    :func:`body_effect`); ``holder``: a goalkeeper holding the ball (full effectiveness)."""
+    :func:`body_effect`); ``kick``: a :data:`KICK_MODEL` record; ``holder``: a goalkeeper
+    holding the ball (full effectiveness)."""
+    kick_max, ball_max, angle_penalty = kick[0].kick_max, kick[0].ball_max, kick[0].angle_penalty
     rx, ry = ball[0] - player[0], ball[1] - player[1]
     rnorm = math.sqrt(rx * rx + ry * ry)
-    base = body_effect(rx, ry, rnorm, player_vel[0], player_vel[1], distance_penalty, angle_penalty,
-                       kickable_margin, touch, inertia_moment)
+    base = body_effect(rx, ry, rnorm, player_vel[0], player_vel[1], kick)
     vx, vy = ball_vel[0], ball_vel[1]
     for j in range(desired.shape[0]):
         dx, dy = desired[j, 0], desired[j, 1]
@@ -154,8 +221,8 @@ def kick_kernel(player: np.ndarray, player_vel: np.ndarray, ball: np.ndarray, ba
                 result_out[j, 0] = nx
                 result_out[j, 1] = ny
                 continue
-            lam = largest_speed(ux, uy, vx, vy, closest, speed, kick_max, rx, ry, rnorm, base, angle_penalty,
-                                 holder) / speed
+            lam = largest_speed(ux, uy, vx, vy, closest, speed, kick_max,
+                                effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder)) / speed
         tx, ty = lam * dx, lam * dy
         cx, cy = tx - vx, ty - vy
         eff = max(effect(rx, ry, rnorm, base, angle_penalty, cx, cy, holder), 1e-9)
@@ -228,10 +295,13 @@ def deciding_cycles(receive: np.ndarray, arrival: np.ndarray, limit: np.ndarray,
 
 @njit(cache=True, nogil=True)
 def pass_targets(own_pos: np.ndarray, receivers: np.ndarray, leads: np.ndarray, speeds: np.ndarray, ball: np.ndarray,
-                 x_max: float, y_max: float, min_distance: float, max_distance: float, decay: float,
-                 targets: np.ndarray, owners: np.ndarray, wanted: np.ndarray) -> int:  # pragma: no cover
+                 params: np.ndarray, targets: np.ndarray, owners: np.ndarray,
+                 wanted: np.ndarray) -> int:  # pragma: no cover - compiled
     """Candidate targets (receiver + lead, kept within |x| <= x_max, |y| <= y_max), each with
-    each arrival speed, at a usable distance; the ball velocity each needs. Returns the count."""
+    each arrival speed, at a usable distance; the ball velocity each needs (``params``: a
+    :data:`PASS_PARAMS` record). Returns the count."""
+    p = params[0]
+    x_max, y_max, min_distance, max_distance, decay = p.x_max, p.y_max, p.min_distance, p.max_distance, p.decay
     count = 0
     for r in range(receivers.shape[0]):
         who = receivers[r]
@@ -254,13 +324,18 @@ def pass_targets(own_pos: np.ndarray, receivers: np.ndarray, leads: np.ndarray, 
 
 
 @njit(cache=True, nogil=True)
-def pass_scores(targets: np.ndarray, received_at: np.ndarray, receive: np.ndarray, theirs: np.ndarray,
-                arrival: np.ndarray, owners: np.ndarray, own_pos: np.ndarray, own_vel: np.ndarray, effort: np.ndarray,
-                opp_pos: np.ndarray, ball: np.ndarray, reach: np.ndarray, coast: float, kickable: float,
-                half_length: float, min_lead: int, score: np.ndarray, points: np.ndarray, weight_forward: float,
-                weight_goal: float, weight_space: float, weight_lead: float) -> int:  # pragma: no cover - compiled
-    """Score the safe candidates (see :mod:`agents.skills.passing`); unsafe ones score -inf. Returns
-    the best row, or -1 when none is safe."""
+def pass_scores(lanes: PassLanes, own_pos: np.ndarray, own_vel: np.ndarray, effort: np.ndarray,
+                opp_pos: np.ndarray, ball: np.ndarray, reach: np.ndarray, params: np.ndarray, score: np.ndarray,
+                points: np.ndarray) -> int:  # pragma: no cover - compiled
+    """Score the safe ``lanes`` (see :mod:`agents.skills.passing`; ``params``: a
+    :data:`PASS_PARAMS` record) into ``score``, and where each is received into ``points``;
+    unsafe ones score -inf. Returns the best row, or -1 when none is safe."""
+    targets, owners, arrival = lanes.targets, lanes.owners, lanes.arrival
+    receive, received_at, theirs = lanes.receive, lanes.received_at, lanes.theirs
+    p = params[0]
+    coast, kickable, half_length, min_lead = p.coast, p.kickable, p.half_length, p.min_lead
+    weight_forward, weight_goal, weight_space, weight_lead = p.weight_forward, p.weight_goal, p.weight_space, \
+        p.weight_lead
     best, best_score = -1, -np.inf
     for i in range(targets.shape[0]):
         score[i] = -np.inf
@@ -319,16 +394,20 @@ def kick_spreads(distance_rate: np.ndarray, angle_rate: np.ndarray, speed_rate: 
 
 
 @njit(cache=True, nogil=True)
-def shot_scores(aim_y: np.ndarray, lead: np.ndarray, kicks: np.ndarray, velocities: np.ndarray, cross: np.ndarray,
-                distance_rate: float, angle_rate: float, speed_rate: float, kick_max: float, travel: np.ndarray,
-                gain: np.ndarray, kick_rand: float, ball_rand: float, post: float, lead_half: float,
-                lead_scale: float, window: np.ndarray, score: np.ndarray) -> int:  # pragma: no cover - compiled
-    """The shooting score of each aim (see :mod:`agents.skills.shooting`) into ``score``;
-    returns the best aim's row. ``aim_y``: the aims across the goal line, ascending; ``lead``:
-    cycles by which each aim's ball beats the opponents to the line; ``window``: where across
-    an error window (in units of its half-width) the unblocked factor is sampled. The error
-    window is ``± sqrt(3)`` standard deviations of :func:`kick_spread_at`; the unblocked factor
-    between two aims is interpolated linearly, and held beyond the outermost ones."""
+def shot_scores(aims: ShotAims, distance_rate: float, angle_rate: float, speed_rate: float, travel: np.ndarray,
+                gain: np.ndarray, params: np.ndarray, window: np.ndarray,
+                score: np.ndarray) -> int:  # pragma: no cover - compiled
+    """The shooting score of each of the ``aims`` (see :mod:`agents.skills.shooting`) into
+    ``score``; returns the best aim's row. ``distance_rate``, ``angle_rate``, ``speed_rate``: the
+    kick noise's rates of this kick; ``travel``, ``gain``: the ball-travel and ball-noise tables;
+    ``params``: a :data:`SHOT_PARAMS` record; ``window``: where across an error window (in units
+    of its half-width) the unblocked factor is sampled. The error window is ``± sqrt(3)``
+    standard deviations of :func:`kick_spread_at`; the unblocked factor between two aims is
+    interpolated linearly, and held beyond the outermost ones."""
+    aim_y, lead, kicks, velocities, cross = aims.aim_y, aims.lead, aims.kicks, aims.velocities, aims.cross
+    p = params[0]
+    kick_max, kick_rand, ball_rand, post = p.kick_max, p.kick_rand, p.ball_rand, p.post
+    lead_half, lead_scale = p.lead_half, p.lead_scale
     count = aim_y.shape[0]
     unblocked = np.empty(count)
     for i in range(count):

@@ -22,7 +22,9 @@ from typing import NamedTuple, TypeVar
 
 import numpy as np
 
+from agents.skills.interception_kernels import INTERCEPT_PARAMS, Runners
 from agents.skills.model import MotionModel, SkillInputError, float_array, view_effort
+from soccer_sim.kernels import make_record
 from soccer_sim.config import MatchConfig
 from soccer_sim.team import SideInfo, TeamView
 
@@ -36,7 +38,7 @@ class Players:
     area where it catches (None: ``radius``), all C-contiguous float64 (the compiled search
     relies on it, as it does not check bounds)."""
 
-    __slots__ = ("pos", "vel", "effort", "radius", "catch_radius")
+    __slots__ = ("pos", "vel", "effort", "radius", "catch_radius", "_runners")
 
     def __init__(self, model: MotionModel, pos: np.ndarray, vel: np.ndarray, effort: np.ndarray | None = None,
                  radius: np.ndarray | None = None, catch_radius: np.ndarray | None = None) -> None:
@@ -51,6 +53,15 @@ class Players:
     def count(self) -> int:
         """Number of players."""
         return self.pos.shape[0]
+
+    @property
+    def runners(self) -> Runners:
+        """These players' arrays as the compiled searches take them (the same arrays; made once)."""
+        try:
+            return self._runners
+        except AttributeError:
+            self._runners = Runners(self.pos, self.vel, self.effort, self.radius, self.catch_radius)
+            return self._runners
 
     def rows(self, start: int, stop: int) -> Players:
         """Players ``start`` to ``stop - 1`` alone (views of these arrays, no copy)."""
@@ -83,7 +94,8 @@ class ViewArrays(NamedTuple):
 
 class InterceptConstants(NamedTuple):
     """The interception search's constants of one match (metres, m/cycle, m/cycle²), passed
-    to the compiled search as named scalars (see :mod:`agents.skills.interception_kernels`)."""
+    to the compiled search as an :data:`~agents.skills.interception_kernels.INTERCEPT_PARAMS`
+    record (:attr:`SkillContext.intercept_params`)."""
 
     x_max: float
     """|x| beyond which the ball has left the field: half length plus the ball's radius (the
@@ -117,6 +129,9 @@ class SkillContext:
             area_y=model.penalty_area_half_width, accel_max=model.accel_max, speed_max=model.speed_max,
             decay=model.player_decay, body=model.touch_distance)
         """The interception search's constants."""
+        self.intercept_params = make_record(INTERCEPT_PARAMS, **self.intercept_constants._asdict())
+        """The same constants as the compiled search reads them (an
+        :data:`~agents.skills.interception_kernels.INTERCEPT_PARAMS` record; never to be written)."""
         self._our_radii: dict[float, tuple[np.ndarray, np.ndarray]] = {}
         self._their_radii: dict[float, tuple[np.ndarray, np.ndarray]] = {}
         self._tables: dict[Hashable, object] = {}

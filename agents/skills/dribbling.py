@@ -26,7 +26,8 @@ import numpy as np
 from agents.skills.context import SkillContext
 from agents.skills.kicking import kick_for_velocity
 from agents.skills.model import SkillInputError, check_params, check_player, float_array
-from agents.skills.player_kernels import fan_kernel
+from agents.skills.player_kernels import FAN_PARAMS, FanOut, fan_kernel
+from soccer_sim.kernels import make_record
 from soccer_sim.team import TeamView
 
 
@@ -96,9 +97,11 @@ def dribble_directions(ctx: SkillContext, view: TeamView, player: int,
     cycles = np.minimum(np.ceil(probes / speed).astype(np.int64), model.horizon)
     fan = len(offsets)
     dirs, clearance, score = np.empty((fan, 2)), np.empty(fan), np.empty(fan)
-    fan_kernel(p, base, offsets, probes, cycles, arrays.theirs.pos, arrays.theirs.vel, model.reach,
-               model.player_coast, dirs, clearance, score, model.kickable_distance, params.clearance_cap,
-               params.goal_weight, model.half_length - params.field_margin, model.half_width - params.field_margin)
+    constants = ctx.table(("dribble fan params", params), lambda: make_record(
+        FAN_PARAMS, kickable=model.kickable_distance, cap=params.clearance_cap, goal_weight=params.goal_weight,
+        x_max=model.half_length - params.field_margin, y_max=model.half_width - params.field_margin))
+    fan_kernel(p, base, offsets, probes, cycles, arrays.theirs.pos, arrays.theirs.vel, model.tables, constants,
+               FanOut(dirs, clearance, score))
     return dirs, clearance, score
 
 

@@ -130,9 +130,8 @@ def intercept_checked(ctx: SkillContext, ball: np.ndarray, ball_vel: np.ndarray,
     count, n = ball_vel.shape[0], players.pos.shape[0]
     cycles = np.empty((count, n), dtype=np.int64)
     points = np.empty((count, n, 2))
-    intercept_kernel(ball, ball_vel, players.pos, players.vel, players.effort, players.radius, players.catch_radius,
-                     model.reach, model.ball_travel, model.player_coast, limits, only, cycles, points,
-                     *ctx.intercept_constants, catch_side, reaction, first_only)
+    intercept_kernel(ball, ball_vel, players.runners, model.tables, limits, only, cycles, points,
+                     ctx.intercept_params, catch_side, reaction, first_only)
     return cycles, points
 
 
@@ -161,12 +160,10 @@ def ball_race(ctx: SkillContext, view: TeamView, eligible: np.ndarray | None = N
     model = ctx.model
     our_cycles, our_points = np.empty((1, n), dtype=np.int64), np.empty((1, n, 2))
     their_cycles, their_points = np.empty((1, m), dtype=np.int64), np.empty((1, m, 2))
-    first, first_cycle, their_first, their_first_cycle = race_kernel(
-        ball, ball_vel, ours.pos, ours.vel, ours.effort, ours.radius, ours.catch_radius, theirs.pos, theirs.vel,
-        theirs.effort, theirs.radius, theirs.catch_radius, model.reach, model.ball_travel, model.player_coast, mask,
-        our_cycles, our_points, their_cycles, their_points, *ctx.intercept_constants, their_first_only)
-    return BallRace(Interception(our_cycles[0], our_points[0], first, first_cycle),
-                    Interception(their_cycles[0], their_points[0], their_first, their_first_cycle))
+    firsts = race_kernel(ball, ball_vel, ours.runners, theirs.runners, model.tables, mask, our_cycles, our_points,
+                         their_cycles, their_points, ctx.intercept_params, their_first_only)
+    return BallRace(Interception(our_cycles[0], our_points[0], firsts.first, firsts.first_cycle),
+                    Interception(their_cycles[0], their_points[0], firsts.their_first, firsts.their_first_cycle))
 
 
 _ALL_ELIGIBLE = np.zeros(0, dtype=np.bool_)  # empty: every player may play the ball

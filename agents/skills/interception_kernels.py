@@ -1,15 +1,19 @@
 """The compiled interception search (see :mod:`agents.skills.interception` for the model).
 
-The search's constants come as named scalars: the match's (:class:`~agents.skills.context.
-InterceptConstants`: ``x_max``, ``y_max``, ``top_speed``, ``area_x``, ``area_y``,
-``accel_max``, ``speed_max``, ``decay``, ``body``) and the call's (``catch_side``: the side
-whose penalty area the catch radius counts in, -1 ours, +1 theirs; ``delay``: the cycles before
-the players start to dash; ``first_only``: stop a trajectory at its first interception).
+Arguments travel as named records, as in :mod:`soccer_sim.kernels`: the match's constants as
+an :data:`INTERCEPT_PARAMS` record (a one-element numpy structured array read by field name,
+made from :class:`~agents.skills.context.InterceptConstants`); arrays that belong together as
+named tuples read by field name (:class:`Runners`: one team's players; :class:`MotionTables`:
+the motion model's per-cycle tables); the call's own choices as named scalars (``catch_side``:
+the side whose penalty area the catch radius counts in, -1 ours, +1 theirs; ``delay``: the
+cycles before the players start to dash; ``first_only``: stop a trajectory at its first
+interception). The ball race's result is a named tuple (:class:`RaceFirsts`).
 """
 
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
@@ -25,20 +29,70 @@ EVERYONE = np.zeros(0, dtype=np.int64)
 _MARGIN = 1e-6
 """Slack (m) of the run bound that skips hopeless hit tests, far above any rounding error."""
 
+INTERCEPT_PARAMS = np.dtype([(name, np.float64) for name in (
+    "x_max", "y_max", "top_speed", "area_x", "area_y", "accel_max", "speed_max", "decay", "body")])
+"""The interception search's constants of one match (the fields of
+:class:`~agents.skills.context.InterceptConstants`, which documents them; metres, m/cycle,
+m/cycle²)."""
+
+
+class Runners(NamedTuple):
+    """One team's players as the compiled search reads them, all C-contiguous float64."""
+
+    pos: np.ndarray
+    """(n, 2) positions (team frame, m)."""
+    vel: np.ndarray
+    """(n, 2) velocities (m/cycle)."""
+    effort: np.ndarray
+    """(n,) effort (1: fresh)."""
+    radius: np.ndarray
+    """(n,) control distance (m): the kickable distance."""
+    catch_radius: np.ndarray
+    """(n,) control distance inside the penalty area where the player catches (m)."""
+
+
+class MotionTables(NamedTuple):
+    """The motion model's per-cycle tables (:class:`~agents.skills.model.MotionModel`), index k
+    = cycles from now, ``horizon + 1`` entries each."""
+
+    reach: np.ndarray
+    """How far a player starting at rest runs in k cycles at full effort (m)."""
+    ball_travel: np.ndarray
+    """Distance factor of a rolling ball after k cycles (times its velocity: m)."""
+    coast: np.ndarray
+    """Distance factor of a coasting player after k cycles (times its velocity: m)."""
+
+
+class RaceFirsts(NamedTuple):
+    """Who gets to the ball first on each side (:func:`race_kernel`)."""
+
+    first: int
+    """Our first player (-1: nobody gets there)."""
+    first_cycle: int
+    """Its cycle (UNREACHABLE when nobody gets there)."""
+    their_first: int
+    """Their first player (-1: nobody)."""
+    their_first_cycle: int
+    """Its cycle (UNREACHABLE when nobody)."""
+
 
 @njit(cache=True, nogil=True)
-def intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, vel: np.ndarray, effort: np.ndarray,
-                     radius: np.ndarray, catch_radius: np.ndarray, reach: np.ndarray, ball_travel: np.ndarray,
-                     coast: np.ndarray, limits: np.ndarray, only: np.ndarray, cycles_out: np.ndarray,
-                     points_out: np.ndarray, x_max: float, y_max: float, top_speed: float, area_x: float,
-                     area_y: float, accel_max: float, speed_max: float, decay: float, body: float, catch_side: float,
-                     delay: int, first_only: bool) -> None:  # pragma: no cover - compiled
-    """Each player's earliest interception cycle and point on each trajectory p (ball row
-    ``ball[0 or p]``, velocity ``ball_vel[p]``) into ``cycles_out`` (P, n) and ``points_out``
-    (P, n, 2). ``limits[p] < 0`` (or ``limits`` empty): search to the horizon.
-    ``only[p] >= 0``: search that player alone on trajectory p (the others get UNREACHABLE).
-    With ``first_only`` a trajectory stops at its first interception and the later players
-    get UNREACHABLE."""
+def intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, runners: Runners, tables: MotionTables,
+                     limits: np.ndarray, only: np.ndarray, cycles_out: np.ndarray, points_out: np.ndarray,
+                     params: np.ndarray, catch_side: float, delay: int,
+                     first_only: bool) -> None:  # pragma: no cover - compiled
+    """Each of the ``runners``' earliest interception cycle and point on each trajectory p
+    (ball row ``ball[0 or p]``, velocity ``ball_vel[p]``) into ``cycles_out`` (P, n) and
+    ``points_out`` (P, n, 2); ``params``: an :data:`INTERCEPT_PARAMS` record. ``limits[p] < 0``
+    (or ``limits`` empty): search to the horizon. ``only[p] >= 0``: search that player alone on
+    trajectory p (the others get UNREACHABLE). With ``first_only`` a trajectory stops at its
+    first interception and the later players get UNREACHABLE."""
+    pos, vel, effort, radius, catch_radius = runners.pos, runners.vel, runners.effort, runners.radius, \
+        runners.catch_radius
+    reach, ball_travel, coast = tables.reach, tables.ball_travel, tables.coast
+    c = params[0]
+    x_max, y_max, top_speed, area_x, area_y = c.x_max, c.y_max, c.top_speed, c.area_x, c.area_y
+    accel_max, speed_max, decay, body = c.accel_max, c.speed_max, c.decay, c.body
     horizon = reach.shape[0] - 1
     n = pos.shape[0]
     run = np.empty(n)  # furthest straight-line run so far, per player
@@ -154,30 +208,25 @@ def intercept_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, ve
 
 
 @njit(cache=True, nogil=True)
-def race_kernel(ball: np.ndarray, ball_vel: np.ndarray, pos: np.ndarray, vel: np.ndarray, effort: np.ndarray,
-                radius: np.ndarray, catch_radius: np.ndarray, opp_pos: np.ndarray, opp_vel: np.ndarray,
-                opp_effort: np.ndarray, opp_radius: np.ndarray, opp_catch_radius: np.ndarray, reach: np.ndarray,
-                ball_travel: np.ndarray, coast: np.ndarray, eligible: np.ndarray, our_cycles: np.ndarray,
-                our_points: np.ndarray, their_cycles: np.ndarray, their_points: np.ndarray, x_max: float,
-                y_max: float, top_speed: float, area_x: float, area_y: float, accel_max: float, speed_max: float,
-                decay: float, body: float, their_first_only: bool) -> tuple[int, int, int, int]:  # pragma: no cover
+def race_kernel(ball: np.ndarray, ball_vel: np.ndarray, ours: Runners, theirs: Runners, tables: MotionTables,
+                eligible: np.ndarray, our_cycles: np.ndarray, our_points: np.ndarray, their_cycles: np.ndarray,
+                their_points: np.ndarray, params: np.ndarray,
+                their_first_only: bool) -> RaceFirsts:  # pragma: no cover - compiled
     """Both teams' :func:`intercept_kernel` of one ball in one call (ours catching in our
     penalty area, theirs in theirs, nobody delayed); our players not ``eligible`` (when it is
-    not empty) made UNREACHABLE. Returns (our first player, its cycle, their first player,
-    its cycle), -1 and UNREACHABLE when nobody gets there."""
-    intercept_kernel(ball, ball_vel, pos, vel, effort, radius, catch_radius, reach, ball_travel, coast, NO_LIMITS,
-                     EVERYONE, our_cycles, our_points, x_max, y_max, top_speed, area_x, area_y, accel_max, speed_max,
-                     decay, body, -1.0, 0, False)
+    not empty) made UNREACHABLE. Returns each side's first player and its cycle, -1 and
+    UNREACHABLE when nobody gets there."""
+    intercept_kernel(ball, ball_vel, ours, tables, NO_LIMITS, EVERYONE, our_cycles, our_points, params, -1.0, 0,
+                     False)
     if eligible.shape[0] > 0:
         for i in range(our_cycles.shape[1]):
             if not eligible[i]:
                 our_cycles[0, i] = UNREACHABLE
-    intercept_kernel(ball, ball_vel, opp_pos, opp_vel, opp_effort, opp_radius, opp_catch_radius, reach, ball_travel,
-                     coast, NO_LIMITS, EVERYONE, their_cycles, their_points, x_max, y_max, top_speed, area_x, area_y,
-                     accel_max, speed_max, decay, body, 1.0, 0, their_first_only)
+    intercept_kernel(ball, ball_vel, theirs, tables, NO_LIMITS, EVERYONE, their_cycles, their_points, params, 1.0, 0,
+                     their_first_only)
     first, first_cycle = first_of(our_cycles[0])
     their_first, their_first_cycle = first_of(their_cycles[0])
-    return first, first_cycle, their_first, their_first_cycle
+    return RaceFirsts(first, first_cycle, their_first, their_first_cycle)
 
 
 @njit(cache=True, nogil=True)

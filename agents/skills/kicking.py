@@ -47,8 +47,7 @@ def kick_effectiveness(model: MotionModel, player: np.ndarray, ball: np.ndarray,
     rows = float_array("kick", kick.reshape(1, -1) if single else kick, (-1, 2))
     out = np.empty(rows.shape[0])
     effect_kernel(float_array("player", player, (2,)), _velocity(player_vel), float_array("ball", ball, (2,)), rows,
-                  out, model.kick_distance_penalty, model.kick_angle_penalty, model.kickable_margin,
-                  model.touch_distance, model.inertia_moment)
+                  out, model.kick_model)
     return out[0] if single else out
 
 
@@ -68,9 +67,7 @@ def kick_for_velocity(model: MotionModel, player: np.ndarray, ball: np.ndarray, 
     kick = np.empty_like(rows)
     result = np.empty_like(rows)
     kick_kernel(float_array("player", player, (2,)), _velocity(player_vel), float_array("ball", ball, (2,)),
-                float_array("ball_vel", ball_vel, (2,)), rows, kick, result, model.kick_speed_max,
-                model.ball_speed_max, model.kick_distance_penalty, model.kick_angle_penalty, model.kickable_margin,
-                model.touch_distance, model.inertia_moment, bool(holder))
+                float_array("ball_vel", ball_vel, (2,)), rows, kick, result, model.kick_model, bool(holder))
     if single:
         return kick[0], result[0]
     return kick, result

@@ -31,8 +31,10 @@ import math
 import numpy as np
 
 from agents.errors import AgentsError
-from agents.skills.ball_kernels import kick_spreads
+from agents.skills.ball_kernels import KICK_MODEL, kick_spreads
+from agents.skills.interception_kernels import MotionTables
 from soccer_sim.config import MatchConfig
+from soccer_sim.kernels import make_record
 from soccer_sim.team import SideInfo, TeamView
 
 
@@ -90,6 +92,12 @@ class MotionModel:
         self.inertia_moment = float(phys.inertia_moment)
         """rcssserver ``inertia_moment``: how speed limits a turn, so where a kicker's body faces
         (:mod:`soccer_sim.body`)."""
+        self.kick_model = make_record(
+            KICK_MODEL, kick_max=self.kick_speed_max, ball_max=self.ball_speed_max,
+            distance_penalty=self.kick_distance_penalty, angle_penalty=self.kick_angle_penalty,
+            kickable_margin=self.kickable_margin, touch=self.touch_distance, inertia_moment=self.inertia_moment)
+        """The kick rule as the compiled kick kernels read it (a
+        :data:`~agents.skills.ball_kernels.KICK_MODEL` record; never to be written)."""
         self.kick_rand = float(phys.kick_rand)
         """rcssserver ``kick_rand``: scale of the kick noise (m/cycle at full power, see :meth:`kick_spread`)."""
         self.ball_rand = float(phys.ball_rand)
@@ -118,6 +126,8 @@ class MotionModel:
         """(horizon + 1,) factor of the ball's velocity travelled in k cycles: (1 - d^k) / (1 - d)."""
         self.player_coast = _geometric_sums(self.player_decay, k)
         """(horizon + 1,) the same factor for a player's velocity (coasting without dashes)."""
+        self.tables = MotionTables(self.reach, self.ball_travel, self.player_coast)
+        """The three tables above as the compiled searches take them (the same arrays)."""
         self.ball_noise_gain = _ball_noise_table(self.ball_decay, self.horizon)
         """(horizon + 1,) ``sqrt(sum_j (d^j travel(k - j))^2)`` over ``j < k``: how the ball noise
         of the ``k`` cycles after a kick adds up in the ball's position (per unit of noise at the

@@ -30,7 +30,7 @@ import numpy as np
 from agents.skills.context import Players, SkillContext, ViewArrays
 from agents.skills.model import MotionModel, SkillInputError, float_array
 from agents.skills.pacing import PacingParams, pacing_constants
-from agents.skills.player_kernels import caps_kernel, dash_kernel, paced_dash_kernel
+from agents.skills.player_kernels import Bodies, DashOut, caps_kernel, dash_kernel, paced_dash_kernel
 from soccer_sim.team import TeamView
 
 _F64 = np.dtype(np.float64)
@@ -123,9 +123,9 @@ def paced_dashes(ctx: SkillContext, view: TeamView, targets: np.ndarray, urgent:
         phase = 1 if attacking else 0
     else:
         raise SkillInputError(f"attacking must be True, False or None, got {attacking!r}")
-    paced_dash_kernel(arrays.ours.pos, arrays.ours.vel, targets, arrays.ours.effort, arrays.stamina,
-                      _capacity(view, model), _hurry(model, arrays, view, urgent, near), arrays.ball[0],
-                      model.goalie_index, phase, view.cycle, view.half, constants, out, budgets)
+    bodies = Bodies(arrays.ours.pos, arrays.ours.vel, arrays.ours.effort, arrays.stamina, _capacity(view, model))
+    paced_dash_kernel(bodies, targets, _hurry(model, arrays, view, urgent, near), arrays.ball[0], model.goalie_index,
+                      phase, view.cycle, view.half, constants, DashOut(out, budgets))
     return out
 
 

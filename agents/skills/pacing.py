@@ -48,6 +48,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from agents.skills.model import MotionModel, SkillInputError, check_params
+from soccer_sim.kernels import make_record
 
 
 @dataclass(frozen=True)
@@ -119,32 +120,32 @@ class PacingParams:
             raise SkillInputError(f"PacingParams.walk ({self.walk}) must not exceed cruise ({self.cruise})")
 
 
-# Indices of the kernel's constants (see pacing_constants).
-(K_ACCEL_MAX, K_SPEED_MAX, K_TOP_SPEED, K_POWER_RATE, K_DECAY, K_POWER_MAX, K_SIDE_RATE, K_BACK_RATE,
- K_HEADING_SPEED, K_INCOME, K_FLOOR, K_FRESH, K_TIRED, K_RECOVER_SHARE, K_CRUISE, K_WALK, K_FAR, K_SETTLE,
- K_SETTLE_SHARE, K_PLAY_DISTANCE, K_FINAL_THIRD_X, K_DANGER_X, K_RUN_DISTANCE, K_EXTRA, K_TOLERANCE,
- K_REST_SHARE, K_REST_GAP, K_HALF_CYCLES, K_SIZE) = range(29)
+PACING_PARAMS = np.dtype([(name, np.float64) for name in (
+    "accel_max", "speed_max", "top_speed", "power_rate", "decay", "power_max", "side_rate", "back_rate",
+    "heading_speed", "income", "floor", "fresh", "tired", "recover_share", "cruise", "walk", "far", "settle",
+    "settle_share", "play_distance", "final_third_x", "danger_x", "run_distance", "extra", "tolerance", "rest_share",
+    "rest_gap", "half_cycles")])
+"""The constants the compiled pacing kernels read (:func:`pacing_constants`): the motion
+model's dash rule (largest acceleration and speed, top running speed, ``dash_power_rate``,
+player decay, ``power_max``, the side and back dash rates and ``dash_heading_speed``), the
+stamina income per cycle, the policy's stamina levels in absolute stamina (``floor``,
+``fresh``, ``tired``), its shares and distances (:class:`PacingParams`; ``final_third_x`` in
+metres), ``extra_stamina``, the arrival ``tolerance`` (m) and the cycles of a half."""
 
 
 def pacing_constants(model: MotionModel, params: PacingParams, tolerance: float) -> np.ndarray:
-    """The (K_SIZE,) float64 constants the compiled pacing kernel reads: the motion model's
+    """The :data:`PACING_PARAMS` record the compiled pacing kernels read: the motion model's
     dash rule, the stamina levels in absolute stamina and the policy's choices."""
     config = model.config
     phys, stam = config.physics, config.stamina
-    k = np.empty(K_SIZE)
-    k[K_ACCEL_MAX], k[K_SPEED_MAX], k[K_TOP_SPEED] = model.accel_max, model.speed_max, model.top_speed
-    k[K_POWER_RATE], k[K_DECAY], k[K_POWER_MAX] = phys.dash_power_rate, model.player_decay, phys.dash_power_max
-    k[K_SIDE_RATE], k[K_BACK_RATE], k[K_HEADING_SPEED] = (phys.side_dash_rate, phys.back_dash_rate,
-                                                          phys.dash_heading_speed)
-    k[K_INCOME] = stam.recovery_per_cycle
-    k[K_FLOOR] = (stam.recover_dec_thr + params.floor_margin) * stam.maximum
-    k[K_FRESH], k[K_TIRED] = params.fresh * stam.maximum, params.tired * stam.maximum
-    k[K_RECOVER_SHARE], k[K_CRUISE], k[K_WALK] = params.recover_share, params.cruise, params.walk
-    k[K_FAR], k[K_SETTLE], k[K_SETTLE_SHARE] = params.far, params.settle, params.settle_share
-    k[K_PLAY_DISTANCE] = params.play_distance
-    k[K_FINAL_THIRD_X] = params.final_third * model.half_length
-    k[K_DANGER_X], k[K_RUN_DISTANCE] = params.danger_x, params.run_distance
-    k[K_EXTRA], k[K_TOLERANCE] = stam.extra_stamina, tolerance
-    k[K_REST_SHARE], k[K_REST_GAP] = params.rest_share, params.rest_gap
-    k[K_HALF_CYCLES] = config.rules.half_cycles
-    return k
+    return make_record(
+        PACING_PARAMS, accel_max=model.accel_max, speed_max=model.speed_max, top_speed=model.top_speed,
+        power_rate=phys.dash_power_rate, decay=model.player_decay, power_max=phys.dash_power_max,
+        side_rate=phys.side_dash_rate, back_rate=phys.back_dash_rate, heading_speed=phys.dash_heading_speed,
+        income=stam.recovery_per_cycle, floor=(stam.recover_dec_thr + params.floor_margin) * stam.maximum,
+        fresh=params.fresh * stam.maximum, tired=params.tired * stam.maximum, recover_share=params.recover_share,
+        cruise=params.cruise, walk=params.walk, far=params.far, settle=params.settle,
+        settle_share=params.settle_share, play_distance=params.play_distance,
+        final_third_x=params.final_third * model.half_length, danger_x=params.danger_x,
+        run_distance=params.run_distance, extra=stam.extra_stamina, tolerance=tolerance,
+        rest_share=params.rest_share, rest_gap=params.rest_gap, half_cycles=config.rules.half_cycles)

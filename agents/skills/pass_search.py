@@ -9,19 +9,38 @@ instead of a dozen and no intermediate arrays reach Python. Team frame, metres, 
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 from numba import njit
 
-from agents.skills.ball_kernels import beyond_line, deciding_cycles, kick_kernel, lane_arrivals, pass_scores, \
-    pass_targets
-from agents.skills.interception_kernels import EVERYONE, UNREACHABLE, intercept_kernel
+from agents.skills.ball_kernels import PassLanes, beyond_line, deciding_cycles, kick_kernel, lane_arrivals, \
+    pass_scores, pass_targets
+from agents.skills.interception_kernels import EVERYONE, UNREACHABLE, MotionTables, Runners, intercept_kernel
 
-PLAN_FLOATS = 9
-"""The floats of a found pass in :func:`best_pass_search`'s ``plan_f``: target (2), receive
-point (2), kick (2), ball velocity (2), score."""
-PLAN_INTS = 4
-"""The integers of a found pass in ``plan_i``: receiver, arrival cycle, receive cycle,
-opponent cycle."""
+PASS_PLAN = np.dtype([(name, np.int64) for name in ("receiver", "arrival_cycle", "receive_cycle", "opponent_cycle")]
+                     + [(name, np.float64) for name in ("target_x", "target_y", "receive_x", "receive_y", "kick_x",
+                                                        "kick_y", "ball_vx", "ball_vy", "score")])
+"""A found pass as :func:`best_pass_search` writes it (the fields of
+:class:`~agents.skills.passing.PassPlan`, which documents them)."""
+
+
+class PassSearch(NamedTuple):
+    """What :func:`best_pass_search` needs besides the view, fixed for a match and one
+    :class:`~agents.skills.passing.PassParams` (made once, :func:`agents.skills.passing.best_pass`)."""
+
+    leads: np.ndarray
+    """(L, 2) offsets of the targets from the receivers (m)."""
+    speeds: np.ndarray
+    """(S,) the ball's speeds on arrival (m/cycle)."""
+    params: np.ndarray
+    """A :data:`~agents.skills.ball_kernels.PASS_PARAMS` record."""
+    kick: np.ndarray
+    """A :data:`~agents.skills.ball_kernels.KICK_MODEL` record."""
+    intercept: np.ndarray
+    """An :data:`~agents.skills.interception_kernels.INTERCEPT_PARAMS` record."""
+    tables: MotionTables
+    """The motion model's tables."""
 
 
 @njit(cache=True, nogil=True)
@@ -43,31 +62,27 @@ def pass_receivers(own_pos: np.ndarray, opp_pos: np.ndarray, ball_x: float, offs
 
 @njit(cache=True, nogil=True)
 def best_pass_search(ball: np.ndarray, ball_vel: np.ndarray, receivers: np.ndarray, passer: int, holder: bool,
-                     leads: np.ndarray, speeds: np.ndarray, lanes: tuple, kicking: tuple, ours: tuple, theirs: tuple,
-                     search: tuple, scoring: tuple, plan_f: np.ndarray, plan_i: np.ndarray) -> bool:  # pragma: no cover
-    """The best safe pass of ``passer`` to one of ``receivers`` into ``plan_f`` (:data:`PLAN_FLOATS`)
-    and ``plan_i`` (:data:`PLAN_INTS`); False when there is none.
+                     ours: Runners, theirs: Runners, search: PassSearch,
+                     plan: np.ndarray) -> bool:  # pragma: no cover - compiled
+    """The best safe pass of ``passer`` to one of ``receivers`` into ``plan`` (a :data:`PASS_PLAN`
+    record); False when there is none.
 
-    ``ball`` and ``ball_vel`` are (1, 2) rows; the tuples hold the kernels' other arguments:
-    ``lanes`` (x_max, y_max, min_distance, max_distance, decay, horizon, extra_cycles, min_lead),
-    ``kicking`` (:func:`~agents.skills.ball_kernels.kick_kernel`'s model constants),
-    ``ours`` and ``theirs`` (the view's checked positions, velocities and efforts, and the
-    searches' radii and catch radii: theirs with the opponent margin), ``search``
-    (reach, ball travel, player coast, the nine interception constants) and ``scoring``
-    (reach, coast, kickable, half length, the four weights)."""
-    x_max, y_max, min_distance, max_distance, decay, horizon, extra, min_lead = lanes
-    own_pos, own_vel, opp_pos = ours[0], ours[1], theirs[0]
+    ``ball`` and ``ball_vel`` are (1, 2) rows; ``ours`` and ``theirs`` the view's checked players
+    with the searches' radii and catch radii (theirs with the opponent margin); ``holder``: the
+    passer is our goalkeeper holding the ball."""
+    p = search.params[0]
+    decay, horizon, extra, min_lead = p.decay, p.horizon, p.extra_cycles, p.min_lead
+    leads, speeds, tables = search.leads, search.speeds, search.tables
+    own_pos, own_vel, opp_pos = ours.pos, ours.vel, theirs.pos
     size = receivers.shape[0] * leads.shape[0] * speeds.shape[0]
     targets, wanted = np.empty((size, 2)), np.empty((size, 2))
     owners = np.empty(size, dtype=np.int64)
-    count = pass_targets(own_pos, receivers, leads, speeds, ball[0], x_max, y_max, min_distance, max_distance,
-                         decay, targets, owners, wanted)
+    count = pass_targets(own_pos, receivers, leads, speeds, ball[0], search.params, targets, owners, wanted)
     if count == 0:
         return False
     targets, owners, wanted = targets[:count], owners[:count], wanted[:count]
     kicks, velocities = np.empty((count, 2)), np.empty((count, 2))
-    kick_kernel(own_pos[passer], own_vel[passer], ball[0], ball_vel[0], wanted, kicks, velocities, kicking[0],
-                kicking[1], kicking[2], kicking[3], kicking[4], kicking[5], kicking[6], holder)
+    kick_kernel(own_pos[passer], own_vel[passer], ball[0], ball_vel[0], wanted, kicks, velocities, search.kick, holder)
     arrival = np.empty(count, dtype=np.int64)
     limit = np.empty(count, dtype=np.int64)
     usable = lane_arrivals(targets, wanted, velocities, ball[0], decay, horizon, extra, arrival, limit)
@@ -83,37 +98,35 @@ def best_pass_search(ball: np.ndarray, ball_vel: np.ndarray, receivers: np.ndarr
         vel_u[u, 0], vel_u[u, 1] = velocities[j, 0], velocities[j, 1]
         targets_u[u, 0], targets_u[u, 1] = targets[j, 0], targets[j, 1]
         own_u[u], lim_u[u], arrival_u[u] = owners[j], limit[j], arrival[j]
-    reach, travel, coast, c = search
     # The receiver alone on each lane, then every opponent up to the cycle that can still decide.
-    n, m = ours[0].shape[0], theirs[0].shape[0]
+    n, m = own_pos.shape[0], opp_pos.shape[0]
     cycles, points = np.empty((lanes_n, n), dtype=np.int64), np.empty((lanes_n, n, 2))
-    intercept_kernel(ball, vel_u, ours[0], ours[1], ours[2], ours[3], ours[4], reach, travel, coast, lim_u, own_u,
-                     cycles, points, c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], -1.0, 0, False)
+    intercept_kernel(ball, vel_u, ours, tables, lim_u, own_u, cycles, points, search.intercept, -1.0, 0, False)
     receive = np.empty(lanes_n, dtype=np.int64)
     received_at = np.empty((lanes_n, 2))
     for u in range(lanes_n):
         receive[u] = cycles[u, own_u[u]]
         received_at[u, 0], received_at[u, 1] = points[u, own_u[u], 0], points[u, own_u[u], 1]
     their_cycles, their_points = np.empty((lanes_n, m), dtype=np.int64), np.empty((lanes_n, m, 2))
-    intercept_kernel(ball, vel_u, theirs[0], theirs[1], theirs[2], theirs[3], theirs[4], reach, travel, coast,
-                     deciding_cycles(receive, arrival_u, lim_u, min_lead), EVERYONE, their_cycles, their_points,
-                     c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], 1.0, 1, True)
+    intercept_kernel(ball, vel_u, theirs, tables, deciding_cycles(receive, arrival_u, lim_u, min_lead), EVERYONE,
+                     their_cycles, their_points, search.intercept, 1.0, 1, True)
     first = np.empty(lanes_n, dtype=np.int64)
     for u in range(lanes_n):
         first[u] = UNREACHABLE
         for k in range(m):
             first[u] = min(first[u], their_cycles[u, k])
     score, plan_points = np.empty(lanes_n), np.empty((lanes_n, 2))
-    best = pass_scores(targets_u, received_at, receive, first, arrival_u, own_u, own_pos, own_vel, ours[2], opp_pos,
-                       ball[0], scoring[0], scoring[1], scoring[2], scoring[3], min_lead, score, plan_points,
-                       scoring[4], scoring[5], scoring[6], scoring[7])
+    best = pass_scores(PassLanes(targets_u, own_u, arrival_u, receive, received_at, first), own_pos, own_vel,
+                       ours.effort, opp_pos, ball[0], tables.reach, search.params, score, plan_points)
     if best < 0:
         return False
     j = usable[best]
-    plan_f[0], plan_f[1] = targets[j, 0], targets[j, 1]
-    plan_f[2], plan_f[3] = plan_points[best, 0], plan_points[best, 1]
-    plan_f[4], plan_f[5] = kicks[j, 0], kicks[j, 1]
-    plan_f[6], plan_f[7] = velocities[j, 0], velocities[j, 1]
-    plan_f[8] = score[best]
-    plan_i[0], plan_i[1], plan_i[2], plan_i[3] = owners[j], arrival[j], receive[best], first[best]
+    out = plan[0]
+    out.receiver, out.arrival_cycle, out.receive_cycle, out.opponent_cycle = owners[j], arrival[j], receive[best], \
+        first[best]
+    out.target_x, out.target_y = targets[j, 0], targets[j, 1]
+    out.receive_x, out.receive_y = plan_points[best, 0], plan_points[best, 1]
+    out.kick_x, out.kick_y = kicks[j, 0], kicks[j, 1]
+    out.ball_vx, out.ball_vy = velocities[j, 0], velocities[j, 1]
+    out.score = score[best]
     return True

@@ -26,11 +26,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from agents.skills.ball_kernels import LEAD_CAP, beyond_line
+from agents.skills.ball_kernels import LEAD_CAP, PASS_PARAMS, beyond_line
 from soccer_sim.rules.offside import offside_line
 from agents.skills.context import SkillContext, ViewArrays
+from agents.skills.interception_kernels import Runners
 from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, float_array
-from agents.skills.pass_search import PLAN_FLOATS, PLAN_INTS, best_pass_search, pass_receivers
+from agents.skills.pass_search import PASS_PLAN, PassSearch, best_pass_search, pass_receivers
+from soccer_sim.kernels import make_record
 from soccer_sim.team import TeamView
 
 __all__ = ["LEAD_CAP", "PassParams", "PassPlan", "best_pass", "offside_line", "offside_positions", "pass_candidates"]
@@ -149,32 +151,33 @@ def best_pass(ctx: SkillContext, view: TeamView, passer: int, params: PassParams
     if receivers.size == 0:
         return None
     ours, theirs = arrays.ours, arrays.theirs
-    leads, speeds, lanes, kicking, search, scoring = ctx.table(("best_pass", params), lambda: _constants(ctx, params))
+    search = ctx.table(("best_pass", params), lambda: _search(ctx, params))
     radius, catch = ctx.opponent_radii(params.opponent_margin)
-    plan_f, plan_i = np.empty(PLAN_FLOATS), np.empty(PLAN_INTS, dtype=np.int64)
-    if not best_pass_search(arrays.ball, arrays.ball_vel, receivers, passer, bool(holder), leads, speeds, lanes,
-                            kicking, (ours.pos, ours.vel, ours.effort, ours.radius, ours.catch_radius),
-                            (theirs.pos, theirs.vel, theirs.effort, radius, catch), search, scoring, plan_f, plan_i):
+    found = np.zeros(1, dtype=PASS_PLAN)
+    if not best_pass_search(arrays.ball, arrays.ball_vel, receivers, passer, bool(holder), ours.runners,
+                            Runners(theirs.pos, theirs.vel, theirs.effort, radius, catch), search, found):
         return None
-    return PassPlan(receiver=int(plan_i[0]), target=plan_f[0:2].copy(), receive_point=plan_f[2:4].copy(),
-                    kick=plan_f[4:6].copy(), ball_vel=plan_f[6:8].copy(), arrival_cycle=int(plan_i[1]),
-                    receive_cycle=int(plan_i[2]), opponent_cycle=int(plan_i[3]), score=float(plan_f[8]))
+    plan = dict(zip(_PLAN_FIELDS, found.item(0)))  # by name (a void's fields one by one cost more than the search)
+    return PassPlan(receiver=plan["receiver"], target=np.array((plan["target_x"], plan["target_y"])),
+                    receive_point=np.array((plan["receive_x"], plan["receive_y"])),
+                    kick=np.array((plan["kick_x"], plan["kick_y"])), ball_vel=np.array((plan["ball_vx"], plan["ball_vy"])),
+                    arrival_cycle=plan["arrival_cycle"], receive_cycle=plan["receive_cycle"],
+                    opponent_cycle=plan["opponent_cycle"], score=plan["score"])
 
 
-def _constants(ctx: SkillContext, params: PassParams) -> tuple:
-    """:func:`best_pass_search`'s arguments that hold for a match and ``params``: the leads
-    and arrival speeds, and its ``lanes``, ``kicking``, ``search`` and ``scoring`` tuples."""
+_PLAN_FIELDS = PASS_PLAN.names
+
+
+def _search(ctx: SkillContext, params: PassParams) -> PassSearch:
+    """:func:`best_pass_search`'s inputs that hold for a match and ``params``."""
     model = ctx.model
-    leads = np.asarray(params.leads, dtype=np.float64).reshape(-1, 2)
-    speeds = np.asarray(params.arrival_speeds, dtype=np.float64)
-    lanes = (float(model.half_length - params.field_margin), float(model.half_width - params.field_margin),
-             float(params.min_distance), float(params.max_distance), float(model.ball_decay), int(model.horizon),
-             int(params.extra_cycles), int(params.min_lead))
-    kicking = (float(model.kick_speed_max), float(model.ball_speed_max), float(model.kick_distance_penalty),
-               float(model.kick_angle_penalty), float(model.kickable_margin), float(model.touch_distance),
-               float(model.inertia_moment))
-    search = (model.reach, model.ball_travel, model.player_coast, tuple(float(c) for c in ctx.intercept_constants))
-    scoring = (model.reach, float(model.player_coast[-1]), float(model.kickable_distance), float(model.half_length),
-               float(params.weight_forward), float(params.weight_goal), float(params.weight_space),
-               float(params.weight_lead))
-    return leads, speeds, lanes, kicking, search, scoring
+    record = make_record(
+        PASS_PARAMS, x_max=model.half_length - params.field_margin, y_max=model.half_width - params.field_margin,
+        min_distance=params.min_distance, max_distance=params.max_distance, decay=model.ball_decay,
+        horizon=model.horizon, extra_cycles=params.extra_cycles, min_lead=params.min_lead,
+        coast=model.player_coast[-1], kickable=model.kickable_distance, half_length=model.half_length,
+        weight_forward=params.weight_forward, weight_goal=params.weight_goal, weight_space=params.weight_space,
+        weight_lead=params.weight_lead)
+    return PassSearch(leads=np.asarray(params.leads, dtype=np.float64).reshape(-1, 2),
+                      speeds=np.asarray(params.arrival_speeds, dtype=np.float64), params=record,
+                      kick=model.kick_model, intercept=ctx.intercept_params, tables=model.tables)

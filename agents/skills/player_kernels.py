@@ -1,23 +1,64 @@
 """The compiled kernels of the player skills: dashing to points (:mod:`agents.skills.movement`),
 the dribbling fan (:mod:`agents.skills.dribbling`) and the goalkeeper's guard point
-(:mod:`agents.skills.goalkeeping`). Constants come as named scalar arguments, except the
-pacing kernels' (one array, indexed by the ``K_*`` names of :mod:`agents.skills.pacing`)."""
+(:mod:`agents.skills.goalkeeping`).
+
+Arguments travel as named records, as in :mod:`soccer_sim.kernels`: the pacing kernels'
+constants as a :data:`~agents.skills.pacing.PACING_PARAMS` record and the dribbling fan's as a
+:data:`FAN_PARAMS` record (one-element numpy structured arrays read by field name); arrays that
+belong together as named tuples read by field name (:class:`Bodies`, :class:`DashOut`,
+:class:`FanOut`); the guard point's and the plain dash's few constants as named scalars."""
 
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
 
+from agents.skills.interception_kernels import MotionTables
 from soccer_sim.kernels import dash_direction_rate
 
-from agents.skills.pacing import (K_ACCEL_MAX, K_BACK_RATE, K_CRUISE, K_DANGER_X, K_DECAY, K_EXTRA, K_FAR,
-                                  K_FINAL_THIRD_X, K_FLOOR, K_FRESH, K_HALF_CYCLES, K_HEADING_SPEED, K_INCOME, K_PLAY_DISTANCE,
-                                  K_POWER_MAX, K_POWER_RATE, K_RECOVER_SHARE, K_REST_GAP, K_REST_SHARE,
-                                  K_RUN_DISTANCE, K_SETTLE,
-                                  K_SETTLE_SHARE, K_SIDE_RATE, K_SPEED_MAX, K_TIRED, K_TOLERANCE, K_TOP_SPEED,
-                                  K_WALK)
+FAN_PARAMS = np.dtype([(name, np.float64) for name in ("kickable", "cap", "goal_weight", "x_max", "y_max")])
+"""The dribbling fan's constants (:func:`fan_kernel`): the kickable distance, the clearance
+that counts no more, the weight of heading for the goal, and the largest |x| and |y| of a probe
+(m)."""
+
+
+class Bodies(NamedTuple):
+    """The players' own state as the pacing kernels read it, one row per player."""
+
+    pos: np.ndarray
+    """(n, 2) positions (team frame, m)."""
+    vel: np.ndarray
+    """(n, 2) velocities (m/cycle)."""
+    effort: np.ndarray
+    """(n,) effort."""
+    stamina: np.ndarray
+    """(n,) stamina."""
+    capacity: np.ndarray
+    """(n,) stamina still to recover this match (rcssserver's ``stamina_capacity``)."""
+
+
+class DashOut(NamedTuple):
+    """What the pacing kernels write, one row per player."""
+
+    dash: np.ndarray
+    """(n, 2) the dash (m/cycle², team frame)."""
+    budgets: np.ndarray
+    """(n,) the power budget (stamina per cycle; 0 when not dashing)."""
+
+
+class FanOut(NamedTuple):
+    """What :func:`fan_kernel` writes, one row per direction."""
+
+    dirs: np.ndarray
+    """(D, 2) unit vectors."""
+    clearance: np.ndarray
+    """(D,) the smallest margin to an opponent's reach (m; inf without opponents)."""
+    score: np.ndarray
+    """(D,) the direction's score (-inf: it leaves the field)."""
+
 
 
 @njit(cache=True, nogil=True)
@@ -58,75 +99,75 @@ def dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, effort: n
 
 
 @njit(cache=True, nogil=True)
-def paced_dash_kernel(pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, effort: np.ndarray, stamina: np.ndarray,
-                      capacity: np.ndarray, urgent: np.ndarray, ball: np.ndarray, goalie: int, attacking: int,
-                      cycle: int, half: int, k: np.ndarray, out: np.ndarray,
-                      budgets: np.ndarray) -> None:  # pragma: no cover - compiled
+def paced_dash_kernel(bodies: Bodies, targets: np.ndarray, urgent: np.ndarray, ball: np.ndarray, goalie: int,
+                      attacking: int, cycle: int, half: int, pacing: np.ndarray,
+                      out: DashOut) -> None:  # pragma: no cover - compiled
     """Per player, the dash to its ``targets`` row under the stamina policy of
-    :mod:`agents.skills.pacing` (``k``: its constants, ``K_*``): the power budget (into
-    ``budgets``, stamina per cycle), the pace it holds, the arrive-and-stop dash at that pace,
-    shortened when its power (the simulator's count, side and back dashes included) exceeds
-    the budget. ``attacking``: 1 we attack, 0 we defend (play on), -1 neither (set plays);
-    ``cycle``, ``half``: the view's."""
-    cycles_left = cycles_left_in_half(cycle, half, k)
-    for i in range(pos.shape[0]):
-        paced_dash_player(i, pos, vel, targets, effort, stamina, capacity, urgent[i], ball[0], ball[1], goalie,
-                          attacking, cycles_left, k, out, budgets)
+    :mod:`agents.skills.pacing` (``pacing``: its :data:`~agents.skills.pacing.PACING_PARAMS`
+    record): the power budget (into ``out.budgets``, stamina per cycle), the pace it holds, the
+    arrive-and-stop dash at that pace (into ``out.dash``), shortened when its power (the
+    simulator's count, side and back dashes included) exceeds the budget. ``attacking``: 1 we
+    attack, 0 we defend (play on), -1 neither (set plays); ``cycle``, ``half``: the view's."""
+    cycles_left = cycles_left_in_half(cycle, half, pacing)
+    for i in range(bodies.pos.shape[0]):
+        paced_dash_player(i, bodies, targets, urgent[i], ball[0], ball[1], goalie, attacking, cycles_left, pacing,
+                          out)
 
 
 @njit(cache=True, nogil=True)
-def paced_dash_rows(rows: np.ndarray, pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, effort: np.ndarray,
-                    stamina: np.ndarray, capacity: np.ndarray, urgent: np.ndarray, balls: np.ndarray, goalie: int,
-                    attacking: np.ndarray, cycle: int, half: int, k: np.ndarray, out: np.ndarray,
-                    budgets: np.ndarray) -> None:  # pragma: no cover - compiled
+def paced_dash_rows(rows: np.ndarray, bodies: Bodies, targets: np.ndarray, urgent: np.ndarray, balls: np.ndarray,
+                    goalie: int, attacking: np.ndarray, cycle: int, half: int, pacing: np.ndarray,
+                    out: DashOut) -> None:  # pragma: no cover - compiled
     """:func:`paced_dash_kernel` for the players ``rows`` only, each with its own ball
     (``balls`` (n, 2)) and phase (``attacking`` (n,)): players who each decide from what they
     alone believe."""
-    cycles_left = cycles_left_in_half(cycle, half, k)
+    cycles_left = cycles_left_in_half(cycle, half, pacing)
     for i in rows:
-        paced_dash_player(i, pos, vel, targets, effort, stamina, capacity, urgent[i], balls[i, 0], balls[i, 1],
-                          goalie, attacking[i], cycles_left, k, out, budgets)
+        paced_dash_player(i, bodies, targets, urgent[i], balls[i, 0], balls[i, 1], goalie, attacking[i], cycles_left,
+                          pacing, out)
 
 
 @njit(cache=True, nogil=True)
-def paced_dash_player(i: int, pos: np.ndarray, vel: np.ndarray, targets: np.ndarray, effort: np.ndarray,
-                      stamina: np.ndarray, capacity: np.ndarray, hurry: bool, bx: float, by: float, goalie: int,
-                      attacking: int, cycles_left: float, k: np.ndarray, out: np.ndarray,
-                      budgets: np.ndarray) -> None:  # pragma: no cover - compiled
+def paced_dash_player(i: int, bodies: Bodies, targets: np.ndarray, hurry: bool, bx: float, by: float, goalie: int,
+                      attacking: int, cycles_left: float, pacing: np.ndarray,
+                      out: DashOut) -> None:  # pragma: no cover - compiled
     """Player ``i``'s row of :func:`paced_dash_kernel` (the ball at ``bx``, ``by``; ``hurry``
     its urgent flag)."""
-    accel_max, rate = k[K_ACCEL_MAX], k[K_POWER_RATE]
-    side_rate, back_rate, heading_speed = k[K_SIDE_RATE], k[K_BACK_RATE], k[K_HEADING_SPEED]
-    run = k[K_RUN_DISTANCE]
+    pos, vel, effort, stamina, capacity = bodies.pos, bodies.vel, bodies.effort, bodies.stamina, bodies.capacity
+    dash, budgets = out.dash, out.budgets
+    k = pacing[0]
+    accel_max, rate = k.accel_max, k.power_rate
+    side_rate, back_rate, heading_speed = k.side_rate, k.back_rate, k.heading_speed
+    run = k.run_distance
     px, py = pos[i, 0], pos[i, 1]
     tx, ty = targets[i, 0], targets[i, 1]
     dx, dy = tx - px, ty - py
     vx, vy = vel[i, 0], vel[i, 1]
     dist = math.sqrt(dx * dx + dy * dy)
-    out[i, 0] = 0.0
-    out[i, 1] = 0.0
+    dash[i, 0] = 0.0
+    dash[i, 1] = 0.0
     budgets[i] = 0.0
-    if dist <= k[K_TOLERANCE] and vx * vx + vy * vy <= 1e-6:
+    if dist <= k.tolerance and vx * vx + vy * vy <= 1e-6:
         return
     st = stamina[i]
     ball_gap = math.sqrt((px - bx) ** 2 + (py - by) ** 2)
     if not hurry and attacking >= 0 and i != goalie:
         if attacking == 1:  # an attacking run into the final third, the ball in their half
-            hurry = bx >= 0.0 and tx >= k[K_FINAL_THIRD_X] and tx - px >= run
+            hurry = bx >= 0.0 and tx >= k.final_third_x and tx - px >= run
         else:  # a run back goal-side of the ball by a player caught in front of it
-            hurry = bx <= k[K_DANGER_X] and tx < bx < px and px - tx >= run
-    if not hurry and i != goalie and dist <= max(k[K_SETTLE], k[K_SETTLE_SHARE] * ball_gap) \
+            hurry = bx <= k.danger_x and tx < bx < px and px - tx >= run
+    if not hurry and i != goalie and dist <= max(k.settle, k.settle_share * ball_gap) \
             and not (tx > 0.0 and px > tx):
         return  # near enough: coast to a stop
     # Away from the play: behind it when we attack (rest defence), ahead of it when they do.
-    rest = not hurry and i != goalie and ((attacking == 1 and tx < bx - k[K_REST_GAP])
-                                          or (attacking == 0 and tx > bx + k[K_REST_GAP]))
+    rest = not hurry and i != goalie and ((attacking == 1 and tx < bx - k.rest_gap)
+                                          or (attacking == 0 and tx > bx + k.rest_gap))
     eff = effort[i]
-    budget = power_budget(st, capacity[i], hurry, i == goalie, rest, dist, ball_gap, cycles_left, k)
+    budget = power_budget(st, capacity[i], hurry, i == goalie, rest, dist, ball_gap, cycles_left, pacing)
     budgets[i] = budget
     if budget <= 0.0 or eff <= 0.0:
         return
-    ax, ay, size = arrive_and_stop(dx, dy, vx, vy, dist, pace_speed(budget, hurry, eff, k), accel_max * eff)
+    ax, ay, size = arrive_and_stop(dx, dy, vx, vy, dist, pace_speed(budget, hurry, eff, pacing), accel_max * eff)
     if size <= 0.0:
         return
     # The power the simulator will charge (soccer_sim.kinematics: the dash direction
@@ -140,72 +181,77 @@ def paced_dash_player(i: int, pos: np.ndarray, vel: np.ndarray, targets: np.ndar
     if power > budget:
         ax *= budget / power
         ay *= budget / power
-    out[i, 0] = ax
-    out[i, 1] = ay
+    dash[i, 0] = ax
+    dash[i, 1] = ay
 
 
 @njit(cache=True, nogil=True)
-def cycles_left_in_half(cycle: int, half: int, k: np.ndarray) -> float:  # pragma: no cover - compiled
+def cycles_left_in_half(cycle: int, half: int, pacing: np.ndarray) -> float:  # pragma: no cover - compiled
     """Cycles until the end of the current half (at least 1): the horizon over which the
     stamina still to recover (``capacity``) must last."""
-    return max((half + 1) * k[K_HALF_CYCLES] - cycle, 1.0)
+    k = pacing[0]
+    return max((half + 1) * k.half_cycles - cycle, 1.0)
 
 
 @njit(cache=True, nogil=True)
 def power_budget(st: float, capacity: float, hurry: bool, goalie: bool, rest: bool, dist: float, ball_gap: float,
-                 cycles_left: float, k: np.ndarray) -> float:  # pragma: no cover - compiled
+                 cycles_left: float, pacing: np.ndarray) -> float:  # pragma: no cover - compiled
     """One player's dash-power budget (stamina per cycle) under the policy of
     :mod:`agents.skills.pacing`: full power when in a hurry, else the income times the share
     its target's distance, its stamina and (``rest``) its distance from the play allow; never
     below the floor unless it is in a hurry within ``play_distance`` of the ball."""
-    floor = k[K_FLOOR]
+    k = pacing[0]
+    floor = k.floor
     if hurry:
-        budget = k[K_POWER_MAX]
+        budget = k.power_max
     else:
-        cruise, walk = k[K_CRUISE], k[K_WALK]
-        income = min(k[K_INCOME], max(0.0, (capacity + st - floor) / cycles_left))
-        share = cruise if goalie else walk + (cruise - walk) * min(dist / k[K_FAR], 1.0)
-        vigour = min(max((st - k[K_TIRED]) / (k[K_FRESH] - k[K_TIRED]), 0.0), 1.0)
-        share = min(share, k[K_RECOVER_SHARE] + (cruise - k[K_RECOVER_SHARE]) * vigour)
+        cruise, walk = k.cruise, k.walk
+        income = min(k.income, max(0.0, (capacity + st - floor) / cycles_left))
+        share = cruise if goalie else walk + (cruise - walk) * min(dist / k.far, 1.0)
+        vigour = min(max((st - k.tired) / (k.fresh - k.tired), 0.0), 1.0)
+        share = min(share, k.recover_share + (cruise - k.recover_share) * vigour)
         if rest:
-            share = min(share, k[K_REST_SHARE])
+            share = min(share, k.rest_share)
         budget = share * income
-    spendable = st + k[K_EXTRA] if hurry and ball_gap <= k[K_PLAY_DISTANCE] else st - floor
-    return max(0.0, min(budget, k[K_POWER_MAX], spendable))
+    spendable = st + k.extra if hurry and ball_gap <= k.play_distance else st - floor
+    return max(0.0, min(budget, k.power_max, spendable))
 
 
 @njit(cache=True, nogil=True)
-def pace_speed(budget: float, hurry: bool, eff: float, k: np.ndarray) -> float:  # pragma: no cover - compiled
+def pace_speed(budget: float, hurry: bool, eff: float, pacing: np.ndarray) -> float:  # pragma: no cover - compiled
     """The running-speed cap of a player with dash-power ``budget`` and effort ``eff``: its
     top speed when in a hurry, else the speed the budget holds against the decay (m/cycle)."""
-    top = k[K_TOP_SPEED] * eff
-    cap = top if hurry else min(top, budget * k[K_POWER_RATE] * eff / max(1.0 - k[K_DECAY], 1e-12))
-    return min(cap, k[K_SPEED_MAX])
+    k = pacing[0]
+    top = k.top_speed * eff
+    cap = top if hurry else min(top, budget * k.power_rate * eff / max(1.0 - k.decay, 1e-12))
+    return min(cap, k.speed_max)
 
 
 @njit(cache=True, nogil=True)
 def caps_kernel(urgent: np.ndarray, stamina: np.ndarray, capacity: np.ndarray, effort: np.ndarray, goalie: int,
-                cycle: int, half: int, k: np.ndarray, caps: np.ndarray) -> None:  # pragma: no cover - compiled
+                cycle: int, half: int, pacing: np.ndarray, caps: np.ndarray) -> None:  # pragma: no cover - compiled
     """The running-speed caps of :func:`speed_caps`: each player's :func:`pace_speed` for a
     long run (a target at least ``far`` away, the ball not near), 0 when it may not dash."""
-    cycles_left = cycles_left_in_half(cycle, half, k)
+    cycles_left = cycles_left_in_half(cycle, half, pacing)
     for i in range(caps.shape[0]):
-        budget = power_budget(stamina[i], capacity[i], urgent[i], i == goalie, False, k[K_FAR], np.inf, cycles_left,
-                              k)
-        caps[i] = pace_speed(budget, urgent[i], effort[i], k) if budget > 0.0 else 0.0
+        budget = power_budget(stamina[i], capacity[i], urgent[i], i == goalie, False, pacing[0].far, np.inf,
+                              cycles_left, pacing)
+        caps[i] = pace_speed(budget, urgent[i], effort[i], pacing) if budget > 0.0 else 0.0
 
 
 @njit(cache=True, nogil=True)
 def fan_kernel(start: np.ndarray, base: float, offsets: np.ndarray, probes: np.ndarray, cycles: np.ndarray,
-               opp_pos: np.ndarray, opp_vel: np.ndarray, reach: np.ndarray, coast: np.ndarray, dirs: np.ndarray,
-               clearance: np.ndarray, score: np.ndarray, kickable: float, cap: float, goal_weight: float, x_max: float,
-               y_max: float) -> None:  # pragma: no cover - compiled
+               opp_pos: np.ndarray, opp_vel: np.ndarray, tables: MotionTables, params: np.ndarray,
+               out: FanOut) -> None:  # pragma: no cover - compiled
     """Per direction (``base`` + offset): the unit vector, the clearance (the smallest margin
     in metres between a probe point and the disc an opponent can cover by the time the
     dribbler gets there; inf without opponents) and the score (-inf when the farthest probe
-    is outside the field less the margin). ``kickable``: the kickable distance; ``cap``: the
-    clearance that counts no more; ``goal_weight``: the weight of heading for the goal;
-    ``x_max``, ``y_max``: the largest |x| and |y| of a probe."""
+    is outside the field less the margin), into ``out``; ``params``: a :data:`FAN_PARAMS`
+    record."""
+    reach, coast = tables.reach, tables.coast
+    dirs, clearance, score = out.dirs, out.clearance, out.score
+    p = params[0]
+    kickable, cap, goal_weight, x_max, y_max = p.kickable, p.cap, p.goal_weight, p.x_max, p.y_max
     far = probes[probes.shape[0] - 1]
     for d in range(offsets.shape[0]):
         ux, uy = math.cos(base + offsets[d]), math.sin(base + offsets[d])

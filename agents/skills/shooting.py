@@ -41,13 +41,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from agents.skills.ball_kernels import lane_arrivals, shot_scores
+from agents.skills.ball_kernels import SHOT_PARAMS, ShotAims, lane_arrivals, shot_scores
 from agents.skills.context import Players, SkillContext
 from agents.skills.interception import UNREACHABLE, intercept_many
 from agents.skills.kicking import kick_for_velocity
 from agents.skills.lanes import opponent_cycles
 from agents.skills.model import MotionModel, check_params, check_player
 from soccer_sim.body import ball_angle_to_body
+from soccer_sim.kernels import make_record
 from soccer_sim.team import TeamView
 
 
@@ -158,11 +159,12 @@ def best_shot(ctx: SkillContext, view: TeamView, shooter: int, params: ShotParam
                                    float(to_ball[0]), float(to_ball[1]), model.inertia_moment)
     distance_rate, angle_rate, speed_rate = model.noise_rates(gap, angle, float(np.hypot(*view.ball_vel)))
     score = np.empty(len(aims))
-    best = shot_scores(np.ascontiguousarray(aims[:, 1]), lead, kicks, velocities, cross_cycle, float(distance_rate),
-                       float(angle_rate), float(speed_rate), model.kick_speed_max, model.ball_travel,
-                       model.ball_noise_gain, model.kick_rand, model.ball_rand,
-                       model.goal_half_width - model.ball_radius, params.lead_half, params.lead_scale, _WINDOW,
-                       score)
+    constants = ctx.table(("shot scores", params), lambda: make_record(
+        SHOT_PARAMS, kick_max=model.kick_speed_max, kick_rand=model.kick_rand, ball_rand=model.ball_rand,
+        post=model.goal_half_width - model.ball_radius, lead_half=params.lead_half, lead_scale=params.lead_scale))
+    best = shot_scores(ShotAims(np.ascontiguousarray(aims[:, 1]), lead, kicks, velocities, cross_cycle),
+                       float(distance_rate), float(angle_rate), float(speed_rate), model.ball_travel,
+                       model.ball_noise_gain, constants, _WINDOW, score)
     take = bool(score[best] >= params.threshold)
     open_lane = False
     if not take and params.lane_range > 0.0 and pressure <= params.lane_pressure \

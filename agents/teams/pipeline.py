@@ -46,6 +46,7 @@ from agents.roles import RoleAssigner, RoleContext, offensive_order
 from agents.roles.voting import VoteBook
 from agents.skills.interception import BallRace, Interception
 from agents.skills.movement import DEFAULT_PACING
+from agents.skills.player_kernels import Bodies
 from agents.skills.pacing import pacing_constants
 from agents.teams import mechanism
 from agents.teams.ball_role import LeaveMatching
@@ -249,16 +250,16 @@ class Pipeline:
             vote_cycle=votes[1], vote_horizon=votes[2],
             radius=arrays.ours.radius, catch_radius=arrays.ours.catch_radius, opp_radius=arrays.theirs.radius,
             opp_catch_radius=arrays.theirs.catch_radius, reach=model.reach, ball_travel=model.ball_travel,
-            coast=model.player_coast, race_constants=np.array(tuple(ctx.intercept_constants), dtype=np.float64),
+            coast=model.player_coast, race_constants=ctx.intercept_params,
             raced=np.full(rows, -(1 << 40), dtype=np.int64), race_near=float(RACE_NEAR), race_every=int(RACE_EVERY),
             switch_margin=sp.switch_margin, switch_persist=sp.switch_persist, depth=float(shape.depth),
-            attack_push=float(shape.attack_push), knobs=shape.knobs.copy(),
+            attack_push=float(shape.attack_push), knobs=shape.settle_record,
             outfield_roles=shape.outfield_roles, back_roles=shape.back_roles, x_limit=model.half_length - 2.0,
             forwards=setup.forward_roles, narrowing=1.0 - style.box_narrowing, narrow_x=third,
             role_codes=behaviours.codes, role_params=behaviours.packed,
             is_forward=shape.is_forward, is_back=shape.is_back, offsets=shape.offsets,
             support_players=sp.support_players, support_pressure=sp.support_pressure,
-            support_horizon=sp.support_horizon, third_x=third, support_knobs=shape.support_knobs,
+            support_horizon=sp.support_horizon, third_x=third, support_knobs=shape.support_record,
             tables_attack=tables[Situation.ATTACK], tables_defend=tables[Situation.DEFEND],
             tables_our_set_play=tables[Situation.OUR_SET_PLAY], tables_their_set_play=tables[Situation.THEIR_SET_PLAY],
             tables_normal=tables[Situation.NORMAL],
@@ -344,8 +345,8 @@ class Pipeline:
         # 6. dashes, what the players say, the figures
         say_world = cycle % 2 == 0 or self.votes is None
         switches, mean, largest, far, shared, empty = dash_and_say(
-            s, n_rows, n_out, play_on, (senses.position, senses.velocity, senses.effort, senses.stamina,
-                                        senses.capacity), cycle, view.half, command.dash, say_world, self._digits)
+            s, n_rows, n_out, play_on, Bodies(senses.position, senses.velocity, senses.effort, senses.stamina,
+                                              senses.capacity), cycle, view.half, command.dash, say_world, self._digits)
         self._after_dashes(beliefs, view, senses)
         if play_on and n_out:
             self.figures.add(switches, True, mean, largest, far)
@@ -439,7 +440,7 @@ class Pipeline:
     def _steer(self, beliefs: np.ndarray, play_on: bool, cycle: int) -> None:
         """A steering assigner (potential-field bidding) moves each player not going for the
         ball along its belief's field rather than straight to its role's target."""
-        world, s = self.world, self.state
+        world = self.world
         for b in beliefs.tolist():
             rows = np.flatnonzero((world.belief_of == b) & (self.rank >= 0) & ~self.urgent & self._deciding)
             if not rows.size:
@@ -450,7 +451,6 @@ class Pipeline:
             steps = self.assigners[b].steer(players, role_targets, followed, self._context(b, play_on, cycle))
             ranks = self.rank[rows]
             self.goals[rows] = steered_goals(players[ranks], steps[ranks], role_targets[followed[ranks]])
-        del s
 
     def _goalkeeper_goal(self, play_on: bool) -> None:
         """The goalkeeper guards the line between ball and goal, or goes for the ball its belief

@@ -27,12 +27,11 @@ from numba import njit
 
 from agents.message_kernels import number_digits, vote_number, world_message_number
 from agents.roles.voting import believed_conflicts, follow_votes
-from agents.skills.interception_kernels import UNREACHABLE, race_kernel
-from agents.skills.player_kernels import paced_dash_rows
+from agents.skills.interception_kernels import UNREACHABLE, MotionTables, Runners, race_kernel
+from agents.skills.player_kernels import Bodies, DashOut, paced_dash_rows
 from agents.teams.role_behaviours import adjust_role_targets
 from agents.teams.role_kernels import shape_targets
-from agents.teams.shape_kernels import ATTACKING, BALL_X, DEFENDING, LIMITED, MODE, OFF, advance_block, \
-    settle_targets, support_spots, switch_side
+from agents.teams.shape_kernels import advance_block, settle_targets, support_spots, switch_side
 from formations.interpolation_kernels import value_kernel
 from soccer_sim.rules.offside import offside_line
 
@@ -95,15 +94,16 @@ def plan_cycle(s, deciding: np.ndarray, mode: int, placed: bool, saw: np.ndarray
 def _race(s, b: int, cycle: int) -> None:  # pragma: no cover - compiled
     """Belief ``b``'s ball race (both teams, on what it believes: positions, velocities and
     efforts; our players it holds unable to play the ball left out) into its race memory."""
-    c = s.race_constants
     oc = s.our_cycles[b:b + 1]
     op = s.our_points[b:b + 1]
     tc = s.their_cycles[b:b + 1]
     tp = s.their_points[b:b + 1]
-    first, first_cycle, their_first, their_first_cycle = race_kernel(
-        s.ball[b:b + 1], s.ball_vel[b:b + 1], s.mate_pos[b], s.mate_vel[b], s.mate_effort[b], s.radius,
-        s.catch_radius, s.opp_pos[b], s.opp_vel[b], s.opp_effort, s.opp_radius, s.opp_catch_radius, s.reach,
-        s.ball_travel, s.coast, s.able[b], oc, op, tc, tp, c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], True)
+    firsts = race_kernel(s.ball[b:b + 1], s.ball_vel[b:b + 1],
+                         Runners(s.mate_pos[b], s.mate_vel[b], s.mate_effort[b], s.radius, s.catch_radius),
+                         Runners(s.opp_pos[b], s.opp_vel[b], s.opp_effort, s.opp_radius, s.opp_catch_radius),
+                         MotionTables(s.reach, s.ball_travel, s.coast), s.able[b], oc, op, tc, tp, s.race_constants, True)
+    first, first_cycle = firsts.first, firsts.first_cycle
+    their_first, their_first_cycle = firsts.their_first, firsts.their_first_cycle
     s.raced[b] = cycle
     s.our_first[b] = first
     s.their_first[b] = their_first
@@ -195,11 +195,8 @@ def _settle(s, b: int, play_on: bool) -> None:  # pragma: no cover - compiled
                             s.role_params)
     if s.stationary:
         return
-    own = s.knobs.copy()
-    own[BALL_X] = s.ball[b, 0]
-    own[MODE] = (ATTACKING if s.attacking[b] else DEFENDING) if play_on else OFF
-    own[LIMITED] = 1.0 if play_on and s.primed[b] else 0.0
-    settle_targets(targets, s.previous[b], s.outfield_roles, s.back_roles, s.opp_pos[b], own)
+    settle_targets(targets, s.previous[b], s.outfield_roles, s.back_roles, s.opp_pos[b], s.knobs, s.ball[b, 0], play_on,
+                   s.attacking[b], play_on and s.primed[b])
     s.primed[b] = True
 
 
@@ -375,25 +372,25 @@ def ball_player(s, b: int) -> int:  # pragma: no cover - compiled
 
 
 @njit(cache=True, nogil=True)
-def dash_and_say(s, n_rows: int, n_out: int, play_on: bool, senses: tuple, cycle: int, half: int, dash: np.ndarray,
+def dash_and_say(s, n_rows: int, n_out: int, play_on: bool, senses: Bodies, cycle: int, half: int, dash: np.ndarray,
                  say_world: bool, digits: np.ndarray) -> tuple[int, float, float, int, int, int]:  # pragma: no cover
     """The end of a team's cycle in one call: each deciding player's pacing phase (1 its
     belief says we attack, 0 we defend, -1 not in play) and its dash to its goal into ``dash``
     (:func:`~agents.skills.player_kernels.paced_dash_rows`; ``senses``: every player's own
-    position, velocity, effort, stamina and capacity); in play on the role figures of the
+    position, velocity, effort, stamina and capacity as it senses them); in play on the role figures of the
     outfield rows (:func:`_role_gaps`, the first four numbers returned); the digits of what
     every player says into ``digits`` (rows, 10; none: no channel): with ``say_world`` its
     world message (its believed ball, the ball's age and its own position), else its belief's
     proposal as a vote; and in play on the believed role conflicts of the beliefs the players
     follow (:func:`~agents.roles.voting.believed_conflicts`, the last two numbers)."""
-    position, velocity, effort, stamina, capacity = senses
     rows = s.rows[:n_rows]
+    position = senses.pos
     for i in rows:
         b = s.belief_of[i]
         s.phase[i] = (1 if s.attacking[b] else 0) if play_on else -1
         s.row_ball[i, 0], s.row_ball[i, 1] = s.ball[b, 0], s.ball[b, 1]
-    paced_dash_rows(rows, position, velocity, s.goals, effort, stamina, capacity, s.urgent, s.row_ball, s.goalie,
-                    s.phase, cycle, half, s.pacing, dash, s.budgets)
+    paced_dash_rows(rows, senses, s.goals, s.urgent, s.row_ball, s.goalie, s.phase, cycle, half, s.pacing,
+                    DashOut(dash, s.budgets))
     figures = (0, 0.0, 0.0, 0)
     if play_on and n_out > 0:
         figures = _role_gaps(s, s.outfield_rows[:n_out], position)

@@ -1,6 +1,12 @@
 """The compiled kernels of the team's shape (:mod:`agents.teams.shape`): the back line held
 behind the ball and the role targets moved at a running pace, and the support spots around
-our ball carrier. Team frame: we attack +x; units m and m/cycle."""
+our ball carrier. Team frame: we attack +x; units m and m/cycle.
+
+The shape's numbers travel as named records, as in :mod:`soccer_sim.kernels` (one-element
+numpy structured arrays read by field name, made once per match by
+:class:`~agents.teams.shape.Shape`): :data:`SHAPE_PARAMS` and :data:`SUPPORT_PARAMS`. What
+changes every cycle (the ball's x, whether play is on, whether the team attacks, whether the
+targets move at the block's pace) comes as named arguments."""
 
 from __future__ import annotations
 
@@ -10,13 +16,16 @@ import numpy as np
 from numba import njit
 
 
-REST_BALL_GAP, REST_FORWARD_MARGIN, REST_MAX_GAP, DEFEND_BALL_GAP, BACK_FLOOR, PUSH, DROP, BALL_X, MODE, LIMITED, \
-    KNOBS = range(11)
-"""Positions of the shape's numbers in the ``knobs`` array :func:`settle_targets` takes (one
-array rather than many arguments: a compiled call's cost grows with its arguments), and its
-length. The last three change every cycle: the ball's x, the mode and whether to limit."""
-OFF, ATTACKING, DEFENDING = 0.0, 1.0, 2.0
-"""Values of ``knobs[MODE]``: not in play on, attacking, defending."""
+SHAPE_PARAMS = np.dtype([(name, np.float64) for name in (
+    "rest_ball_gap", "rest_forward_margin", "rest_max_gap", "defend_ball_gap", "back_floor", "push", "drop")])
+"""The block's and the back line's numbers (:func:`advance_block`, :func:`settle_targets`; m and
+m/cycle): the :class:`~agents.teams.shape.ShapeParams` of the same names (``push`` and ``drop``
+are its ``push_speed`` and ``drop_speed``) and ``back_floor``, the deepest x of the back line."""
+
+SUPPORT_PARAMS = np.dtype([(name, np.float64) for name in (
+    "x_limit", "y_limit", "lane_cap", "space_cap", "forward_weight", "travel_weight", "crowd_distance")])
+"""The support spots' numbers (:func:`support_spots`): the largest |x| and |y| of a spot (m) and
+the :class:`~agents.teams.shape.ShapeParams` of the same names."""
 
 
 @njit(cache=True, nogil=True)
@@ -39,11 +48,12 @@ def switch_side(lead: int, in_play: bool, attacking: bool, pending: int, margin:
 
 @njit(cache=True, nogil=True)
 def advance_block(block: np.ndarray, point: np.ndarray, shift: float, in_play: bool,
-                  knobs: np.ndarray) -> None:  # pragma: no cover - compiled
+                  params: np.ndarray) -> None:  # pragma: no cover - compiled
     """Move the block (in place: ``block`` = (query x, query y, shift)) towards the query
-    ``point`` and the ``shift``: at most ``knobs[PUSH]`` metres forwards (+x) or ``knobs[DROP]``
-    metres otherwise, each; at once when not ``in_play`` (the first cycle of play)."""
-    push, drop = knobs[PUSH], knobs[DROP]
+    ``point`` and the ``shift``: at most ``push`` metres forwards (+x) or ``drop`` metres
+    otherwise, each (``params``: a :data:`SHAPE_PARAMS` record); at once when not ``in_play``
+    (the first cycle of play)."""
+    push, drop = params[0].push, params[0].drop
     if not in_play:
         block[0], block[1], block[2] = point[0], point[1], shift
         return
@@ -60,32 +70,30 @@ def advance_block(block: np.ndarray, point: np.ndarray, shift: float, in_play: b
 
 @njit(cache=True, nogil=True)
 def settle_targets(targets: np.ndarray, previous: np.ndarray, rows: np.ndarray, back_rows: np.ndarray,
-                   opp_pos: np.ndarray, knobs: np.ndarray) -> None:  # pragma: no cover - compiled
-    """The shape's last word on the role targets (in place), ``knobs`` giving the numbers
-    (``ball_x`` = ``knobs[BALL_X]``). In play on (``knobs[MODE]`` not OFF) the ``back_rows`` are
-    held behind the ball: when ATTACKING (rest defence) at or below ``ball_x -
-    knobs[REST_BALL_GAP]`` and ``knobs[REST_FORWARD_MARGIN]`` behind the opponents' most
-    advanced player but no more than ``knobs[REST_MAX_GAP]`` behind the ball, otherwise at or
-    below ``ball_x - knobs[DEFEND_BALL_GAP]``; never below ``knobs[BACK_FLOOR]``. When
-    ``knobs[LIMITED]`` is not 0, each of ``rows`` moves from ``previous`` by at most ``knobs[PUSH]`` (a move
-    forwards, +x) or ``knobs[DROP]`` (any other move) metres. ``previous`` is then set to the
-    targets of ``rows``."""
-    ball_x, mode = knobs[BALL_X], knobs[MODE]
-    limited = knobs[LIMITED] != 0.0
-    if mode != OFF:
-        if mode == ATTACKING:
+                   opp_pos: np.ndarray, params: np.ndarray, ball_x: float, play_on: bool, attacking: bool,
+                   limited: bool) -> None:  # pragma: no cover - compiled
+    """The shape's last word on the role targets (in place), ``params`` (a :data:`SHAPE_PARAMS`
+    record) giving the numbers. In ``play_on`` the ``back_rows`` are held behind the ball at
+    ``ball_x``: when ``attacking`` (rest defence) at or below ``ball_x - rest_ball_gap`` and
+    ``rest_forward_margin`` behind the opponents' most advanced player but no more than
+    ``rest_max_gap`` behind the ball, otherwise at or below ``ball_x - defend_ball_gap``; never
+    below ``back_floor``. When ``limited``, each of ``rows`` moves from ``previous`` by at most
+    ``push`` (a move forwards, +x) or ``drop`` (any other move) metres. ``previous`` is then set
+    to the targets of ``rows``."""
+    p = params[0]
+    if play_on:
+        if attacking:
             front = np.inf
             for j in range(opp_pos.shape[0]):  # their goalkeeper is never their most advanced
                 front = min(front, opp_pos[j, 0])
-            limit = min(ball_x - knobs[REST_BALL_GAP],
-                        max(front - knobs[REST_FORWARD_MARGIN], ball_x - knobs[REST_MAX_GAP]))
+            limit = min(ball_x - p.rest_ball_gap, max(front - p.rest_forward_margin, ball_x - p.rest_max_gap))
         else:
-            limit = ball_x - knobs[DEFEND_BALL_GAP]
-        limit = max(limit, knobs[BACK_FLOOR])
+            limit = ball_x - p.defend_ball_gap
+        limit = max(limit, p.back_floor)
         for r in back_rows:
             if targets[r, 0] > limit:
                 targets[r, 0] = limit
-    push, drop = knobs[PUSH], knobs[DROP]
+    push, drop = p.push, p.drop
     for r in rows:
         if limited:
             dx = targets[r, 0] - previous[r, 0]
@@ -111,7 +119,7 @@ def _lane_gap(ax: float, ay: float, bx: float, by: float, px: float, py: float) 
 
 @njit(cache=True, nogil=True)
 def support_spots(carrier: np.ndarray, own_pos: np.ndarray, goals: np.ndarray, candidates: np.ndarray,
-                  opp_pos: np.ndarray, offsets: np.ndarray, count: int, x_max: float, knobs: np.ndarray,
+                  opp_pos: np.ndarray, offsets: np.ndarray, count: int, x_max: float, params: np.ndarray,
                   out_rows: np.ndarray, out_spots: np.ndarray) -> int:  # pragma: no cover - compiled
     """Open spots around our ball carrier and who goes there.
 
@@ -119,8 +127,8 @@ def support_spots(carrier: np.ndarray, own_pos: np.ndarray, goals: np.ndarray, c
     possible supporters are (the team passes its role targets: support spots become role
     targets); ``candidates``: rows of ``own_pos`` that may support (the ``count`` nearest the
     carrier do); ``offsets`` (S, 2):
-    the spots relative to the carrier; ``knobs``: (x_limit, y_limit, lane_cap, space_cap,
-    forward_weight, travel_weight, crowd_distance). A spot counts only inside ``|x| <= x_limit``,
+    the spots relative to the carrier; ``params``: a :data:`SUPPORT_PARAMS` record. A spot
+    counts only inside ``|x| <= x_limit``,
     ``|y| <= y_limit`` and at or behind ``x_max`` (onside). Its score is the opponents' gap
     to the pass lane (capped at ``lane_cap``) plus half their gap to the spot (capped at
     ``space_cap``) plus ``forward_weight`` times its forward share of the offset, less
@@ -128,8 +136,9 @@ def support_spots(carrier: np.ndarray, own_pos: np.ndarray, goals: np.ndarray, c
     ``crowd_distance`` of another row's point in ``goals`` (the candidates' own excluded)
     or of a spot already taken. Writes the supporters to ``out_rows`` and their spots to
     ``out_spots``; returns how many."""
-    x_limit, y_limit, lane_cap, space_cap = knobs[0], knobs[1], knobs[2], knobs[3]
-    forward_weight, travel_weight, crowd_distance = knobs[4], knobs[5], knobs[6]
+    p = params[0]
+    x_limit, y_limit, lane_cap, space_cap = p.x_limit, p.y_limit, p.lane_cap, p.space_cap
+    forward_weight, travel_weight, crowd_distance = p.forward_weight, p.travel_weight, p.crowd_distance
     n_c = candidates.shape[0]
     chosen = 0
     picked = np.zeros(n_c, dtype=np.bool_)

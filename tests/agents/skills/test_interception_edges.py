@@ -63,11 +63,10 @@ def test_the_run_bound_skips_no_interception(monkeypatch) -> None:
         vels = rng.uniform(-3.0, 3.0, (6, 2)) * rng.uniform(0.0, 1.0, (6, 1))
         limits = rng.integers(-1, 60, 6).astype(np.int64)
         delay, first_only, side = int(scene % 3), bool(scene % 4 == 0), (-1.0, 1.0)[scene % 2]
-        args = (ball, vels, players.pos, players.vel, players.effort, players.radius, players.catch_radius,
-                model.reach, model.ball_travel, model.player_coast, limits, kernels.EVERYONE)
+        args = (ball, vels, players.runners, model.tables, limits, kernels.EVERYONE)
         got = np.empty((6, 11), dtype=np.int64), np.empty((6, 11, 2))
         want = np.empty((6, 11), dtype=np.int64), np.empty((6, 11, 2))
-        tail = (*ctx.intercept_constants, side, delay, first_only)
+        tail = (ctx.intercept_params, side, delay, first_only)
         kernels.intercept_kernel(*args, *got, *tail)
         unbounded(*args, *want, *tail)
         assert np.array_equal(got[0], want[0]) and np.array_equal(got[1], want[1]), scene

@@ -7,11 +7,12 @@ import numpy as np
 import pytest
 
 from agents.skills import MotionModel, SkillContext, best_pass, offside_positions
-from agents.skills.ball_kernels import deciding_cycles, lane_arrivals, pass_scores, pass_targets
+from agents.skills.ball_kernels import PASS_PARAMS, PassLanes, deciding_cycles, lane_arrivals, pass_scores, pass_targets
 from agents.skills.interception import UNREACHABLE, intercept_checked
 from agents.skills.interception_kernels import EVERYONE
 from agents.skills.kicking import kick_for_velocity
 from agents.skills.passing import PassParams
+from soccer_sim.kernels import make_record
 from tests.agents.skills.skill_views import CONFIG, N, make_view
 
 MODEL = MotionModel.even_sides(CONFIG)
@@ -32,10 +33,15 @@ def stepwise_pass(ctx: SkillContext, view, passer: int, params: PassParams, hold
     ball = np.asarray(view.ball, np.float64)
     size = receivers.size * len(params.leads) * len(params.arrival_speeds)
     targets, wanted, owners = np.empty((size, 2)), np.empty((size, 2)), np.empty(size, dtype=np.int64)
+    constants = make_record(
+        PASS_PARAMS, x_max=model.half_length - params.field_margin, y_max=model.half_width - params.field_margin,
+        min_distance=params.min_distance, max_distance=params.max_distance, decay=model.ball_decay,
+        horizon=model.horizon, extra_cycles=params.extra_cycles, min_lead=params.min_lead,
+        coast=model.player_coast[-1], kickable=model.kickable_distance, half_length=model.half_length,
+        weight_forward=params.weight_forward, weight_goal=params.weight_goal, weight_space=params.weight_space,
+        weight_lead=params.weight_lead)
     count = pass_targets(view.own_pos, receivers, np.asarray(params.leads, float).reshape(-1, 2),
-                         np.asarray(params.arrival_speeds, float), ball, model.half_length - params.field_margin,
-                         model.half_width - params.field_margin, params.min_distance, params.max_distance,
-                         model.ball_decay, targets, owners, wanted)
+                         np.asarray(params.arrival_speeds, float), ball, constants, targets, owners, wanted)
     if count == 0:
         return None
     targets, owners, wanted = targets[:count], owners[:count], wanted[:count]
@@ -56,10 +62,9 @@ def stepwise_pass(ctx: SkillContext, view, passer: int, params: PassParams, hold
                                deciding_cycles(receive, arrival_u, lim_u, params.min_lead), 1, True,
                                EVERYONE)[0].min(axis=1, initial=UNREACHABLE)
     score, points = np.empty(usable.size), np.empty((usable.size, 2))
-    best = pass_scores(targets[usable], received_at, receive, theirs, arrival_u, own_u, view.own_pos, view.own_vel,
-                       arrays.ours.effort, view.opp_pos, ball, model.reach, float(model.player_coast[-1]),
-                       model.kickable_distance, model.half_length, params.min_lead, score, points,
-                       params.weight_forward, params.weight_goal, params.weight_space, params.weight_lead)
+    lanes = PassLanes(targets[usable], own_u, arrival_u, receive, np.ascontiguousarray(received_at), theirs)
+    best = pass_scores(lanes, view.own_pos, view.own_vel, arrays.ours.effort, view.opp_pos, ball, model.reach,
+                       constants, score, points)
     if best < 0:
         return None
     j = int(usable[best])

@@ -11,6 +11,7 @@ import pytest
 import formations
 from agents import skills
 from agents.teams import FormationTeam, TeamStyle
+from agents.teams.shape_kernels import advance_block, switch_side
 from agents.teams.shape import Shape, ShapeParams
 from formations.formation_set import Situation
 from soccer_sim import MatchConfig, PlayMode, SideInfo
@@ -57,42 +58,52 @@ def opponents(front_x: float = -5.0) -> np.ndarray:
 
 
 # ---------------------------------------------------------------------------- hysteresis
+class _Switch:
+    """A belief's attack/defend switch as the pipeline runs it (:func:`switch_side`), one race a call."""
+
+    def __init__(self) -> None:
+        self.attacking, self.pending, self.in_play = False, 0, False
+
+    def race(self, ours: int, theirs: int) -> Situation:
+        self.attacking, self.pending = switch_side(theirs - ours, self.in_play, self.attacking, self.pending,
+                                                   PARAMS.switch_margin, PARAMS.switch_persist)
+        self.in_play = True
+        return Situation.ATTACK if self.attacking else Situation.DEFEND
+
+
 def test_the_attack_defend_switch_needs_a_clear_or_a_lasting_race_win() -> None:
-    shape = bare_shape()
-    v = view(np.zeros((11, 2)), np.zeros((11, 2)), (0.0, 0.0))
-    situation, _ = shape.play_on(v, race(2, 10))  # the first cycle of play follows the race
-    assert situation == Situation.ATTACK
+    switch = _Switch()
+    assert switch.race(2, 10) == Situation.ATTACK  # the first cycle of play follows the race
     # They win the race narrowly (by one cycle): we keep attacking until it has lasted.
     for _ in range(PARAMS.switch_persist - 1):
-        assert shape.play_on(v, race(5, 4))[0] == Situation.ATTACK
-    assert shape.play_on(v, race(5, 4))[0] == Situation.DEFEND
+        assert switch.race(5, 4) == Situation.ATTACK
+    assert switch.race(5, 4) == Situation.DEFEND
     # We win narrowly for a few cycles (a ball bouncing between two players): still defending.
     for _ in range(PARAMS.switch_persist - 1):
-        assert shape.play_on(v, race(4, 5))[0] == Situation.DEFEND
-    shape.play_on(v, race(5, 4))  # they win again: the count starts afresh
-    assert shape.play_on(v, race(4, 5))[0] == Situation.DEFEND
+        assert switch.race(4, 5) == Situation.DEFEND
+    switch.race(5, 4)  # they win again: the count starts afresh
+    assert switch.race(4, 5) == Situation.DEFEND
     # A clear win switches at once.
-    assert shape.play_on(v, race(1, 1 + PARAMS.switch_margin))[0] == Situation.ATTACK
+    assert switch.race(1, 1 + PARAMS.switch_margin) == Situation.ATTACK
 
 
 # ---------------------------------------------------------------------------- pace
 def test_the_query_point_and_the_block_shift_move_at_a_running_pace() -> None:
-    shape = bare_shape(depth=-2.0, push=8.0)
-    v = view(np.zeros((11, 2)), np.zeros((11, 2)), (0.0, 0.0))
-    _, query = shape.play_on(v, race(1, 9, ours_point=(-10.0, 0.0)))
-    assert np.allclose(query, (-10.0, 0.0)) and shape.shift == pytest.approx(6.0)  # first cycle: no lag
-    shape.settle(v, np.zeros((11, 2)), True)
+    record = bare_shape(depth=-2.0, push=8.0).settle_record
+    block = np.zeros(3)
+    advance_block(block, np.array([-10.0, 0.0]), -2.0 + 8.0, False, record)  # attacking: depth + push
+    assert np.allclose(block[:2], (-10.0, 0.0)) and block[2] == pytest.approx(6.0)  # first cycle: no lag
     points, shifts = [(-10.0, 0.0)], []
     for _ in range(30):  # a long ball forwards: the query point follows it at the push pace
-        _, query = shape.play_on(v, race(1, 9, ours_point=(20.0, 6.0)))
-        points.append(tuple(query))
+        advance_block(block, np.array([20.0, 6.0]), 6.0, True, record)
+        points.append(tuple(block[:2]))
     steps = np.hypot(*np.diff(np.array(points), axis=0).T)
     assert np.allclose(steps, PARAMS.push_speed)  # neither a jump nor a stop
     assert points[-1][0] == pytest.approx(-10.0 + 30 * PARAMS.push_speed * 30.0 / np.hypot(30.0, 6.0))
     assert points[-1][0] < 20.0  # still on its way after 30 cycles of a 30 m ball
     for _ in range(10):  # possession lost: the block drops (shift 6 -> -2) at the drop pace
-        shape.play_on(v, race(9, 1, theirs_point=(0.0, 0.0)))
-        shifts.append(shape.shift)
+        advance_block(block, np.array([0.0, 0.0]), -2.0, True, record)
+        shifts.append(block[2])
     drops = -np.diff([6.0, *shifts])
     assert np.all(drops <= PARAMS.drop_speed + 1e-12) and shifts[-1] == pytest.approx(-2.0)
     assert drops[0] == pytest.approx(PARAMS.drop_speed)
@@ -296,3 +307,19 @@ def test_a_free_carrier_runs_with_the_ball_and_nobody_leaves_the_shape() -> None
     theirs = opponents(30.0)  # nobody within 25 m of our carrier
     team, _, moved = support_roles("static", SUPPORT_OWN, theirs, SUPPORT_OWN[8] + (0.5, 0.0))
     assert team.pipeline.attacking[0] and moved == []
+
+
+def test_the_shape_hands_its_kernel_records_out_as_copies_of_its_parameters() -> None:
+    """What the pipeline needs of the shape comes through public properties: the
+    block's and the support spots' numbers as named records with the parameters' values, copies
+    that the shape does not see written."""
+    params = ShapeParams(rest_ball_gap=11.0, push_speed=0.65, lane_cap=4.5, crowd_distance=6.5)
+    shape = Shape(params, KINDS, depth=0.0, attack_push=0.0, half_length=HL, half_width=HW)
+    settle, support = shape.settle_record, shape.support_record
+    assert settle[0]["rest_ball_gap"] == 11.0 and settle[0]["push"] == 0.65
+    assert settle[0]["drop"] == params.drop_speed and settle[0]["back_floor"] > -HL
+    assert support[0]["lane_cap"] == 4.5 and support[0]["crowd_distance"] == 6.5
+    assert support[0]["x_limit"] < HL and support[0]["y_limit"] < HW
+    settle[0]["push"] = 99.0
+    support[0]["lane_cap"] = 99.0
+    assert shape.settle_record[0]["push"] == 0.65 and shape.support_record[0]["lane_cap"] == 4.5
