@@ -118,7 +118,8 @@ def _new_message_codes(values: tuple) -> MessageCodes:  # pragma: no cover - com
     return MessageCodes(*values)
 
 
-def _by_name(kind: str, fields: tuple[str, ...], values: Mapping[str, object], make: Callable[[tuple], object]):
+def _by_name(kind: str, fields: tuple[str, ...], values: Mapping[str, object],
+             make: Callable[[tuple], object]) -> object:
     """``make`` (a compiled constructor, cached like the kernels) of ``values`` taken by the
     names ``fields`` in their order (arrays shared, not copied); ValueError naming the names
     that are missing or unknown."""
