@@ -3,25 +3,43 @@
 Each kernel runs over a team's observers; row ``i`` of every output depends only on row ``i``
 of the inputs (observer ``i``'s own sightings, messages and earlier beliefs), which is what
 makes the model decentralised. Team frame, metres, m/cycle, cycles.
+
+The kernels of a cycle's intake read their arguments by name from two records of
+:mod:`agents.teams.belief_record`: ``r``, the team's world models
+(:class:`~agents.teams.belief_record.BeliefRecord`, updated in place, whose ``params`` is a
+:data:`BELIEF_PARAMS` record), and ``see``, what the players' sees of this cycle told them
+(:class:`~agents.teams.belief_record.SeeRecord`, the arrays of the
+:class:`~soccer_sim.perception.views.PlayerViews` of the same names).
 """
 
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numba import njit
 
+if TYPE_CHECKING:
+    from agents.teams.belief_record import BeliefRecord, SeeRecord
+
 AGE_NEVER = 1_000_000
 """The age (cycles) of something never seen."""
 
+BELIEF_PARAMS = np.dtype([(name, np.float64) for name in (
+    "ball_gain", "ball_velocity_gain", "ball_noise_share", "near", "gate_share", "gate_floor")])
+"""How the world model weighs what it sees, as a named record (a one-element array of this
+dtype, made from :class:`~agents.teams.world_model.BeliefParams` by
+:func:`soccer_sim.kernels.make_record`; the fields are the dataclass's, which documents them)."""
+
 
 @njit(cache=True, nogil=True)
-def predict_beliefs(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray, mate_age: np.ndarray,
-                    opp_age: np.ndarray, ball_decay: float) -> None:  # pragma: no cover - compiled
+def predict_beliefs(r: BeliefRecord) -> None:  # pragma: no cover - compiled
     """Advance every observer's beliefs by one cycle: the ball rolls on with its believed
-    velocity and slows by ``ball_decay``; every age grows by one (players are believed to stay
-    where they were last seen)."""
+    velocity and slows by ``r.ball_decay``; every age grows by one (players are believed to
+    stay where they were last seen)."""
+    ball, ball_vel, ball_age, mate_age, opp_age, ball_decay = (r.ball, r.ball_vel, r.ball_age, r.mate_age,
+                                                               r.opp_age, r.ball_decay)
     for i in range(ball.shape[0]):
         ball[i, 0] += ball_vel[i, 0]
         ball[i, 1] += ball_vel[i, 1]
@@ -38,17 +56,22 @@ def predict_beliefs(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray
 
 
 @njit(cache=True, nogil=True)
-def see_ball(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray, last_seen: np.ndarray,
-             last_seen_cycle: np.ndarray, seen: np.ndarray, at: np.ndarray, distance: np.ndarray, cycle: int,
-             gain: float, velocity_gain: float, noise_share: float, near: float, ball_decay: float,
-             speed_max: float) -> None:  # pragma: no cover - compiled
-    """Fold each observer's ball sighting (``seen``, ``at``, reported ``distance``) into its
-    belief: an alpha-beta filter on the predicted position (``gain`` of the residual into the
-    position, ``velocity_gain`` into the velocity), restarted when the residual is larger than
-    the sighting's noise allows (``noise_share`` of the distance plus 0.3 m: the ball was kicked
-    or the belief was stale), the velocity then taken from the last two sightings. A sighting
-    nearer than ``near`` m is precise enough to be taken as it is, with the velocity from the
-    last two sightings when they are recent."""
+def see_ball(r: BeliefRecord, see: SeeRecord, cycle: int) -> None:  # pragma: no cover - compiled
+    """Fold each observer's ball sighting of ``cycle`` (``see.ball_seen``, where: ``see.ball``,
+    the reported distance: ``see.ball_distance``) into its belief: an alpha-beta filter on the
+    predicted position (``ball_gain`` of the residual into the position, ``ball_velocity_gain``
+    into the velocity), restarted when the residual is larger than the sighting's noise allows
+    (``ball_noise_share`` of the distance plus 0.3 m: the ball was kicked or the belief was
+    stale), the velocity then taken from the last two sightings. A sighting nearer than
+    ``near`` m is precise enough to be taken as it is, with the velocity from the last two
+    sightings when they are recent. The believed speed is capped at ``r.speed_max``."""
+    ball, ball_vel, ball_age, last_seen, last_seen_cycle = (r.ball, r.ball_vel, r.ball_age, r.last_seen,
+                                                            r.last_seen_cycle)
+    seen, at, distance = see.ball_seen, see.ball, see.ball_distance
+    params = r.params[0]
+    gain, velocity_gain, noise_share, near = (params.ball_gain, params.ball_velocity_gain, params.ball_noise_share,
+                                              params.near)
+    ball_decay, speed_max = r.ball_decay, r.speed_max
     for i in range(ball.shape[0]):
         if not seen[i]:
             continue
@@ -89,15 +112,19 @@ def see_ball(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray, last_
 
 
 @njit(cache=True, nogil=True)
-def see_players(saw: np.ndarray, count: np.ndarray, at: np.ndarray, side: np.ndarray, number: np.ndarray,
-                distance: np.ndarray, mate_pos: np.ndarray, mate_age: np.ndarray, opp_pos: np.ndarray,
-                opp_age: np.ndarray, gate_share: float, gate_floor: float) -> None:  # pragma: no cover - compiled
-    """Fold each observer's player sightings into its beliefs about team-mates (``mate_*``,
-    (n, n)) and opponents (``opp_*``, (n, m)). A sighting with a number updates that player; one
-    with a side but no number, the nearest player of that side not yet updated this cycle within
-    the gate (``gate_share`` of the reported distance plus ``gate_floor`` m); one with neither,
-    the nearest such player of either side within the gate. The observer's own row (its
-    team-mate column ``i``) is left to the self-localisation."""
+def see_players(r: BeliefRecord, see: SeeRecord) -> None:  # pragma: no cover - compiled
+    """Fold each observer's player sightings (``see.seen_*``, the first ``see.seen_count`` of
+    each row, of observers who ``see.saw``) into its beliefs about team-mates (``r.mate_*``,
+    (n, n)) and opponents (``r.opp_*``, (n, m)). A sighting with a number updates that player;
+    one with a side but no number, the nearest player of that side not yet updated this cycle
+    within the gate (``gate_share`` of the reported distance plus ``gate_floor`` m); one with
+    neither, the nearest such player of either side within the gate. The observer's own row
+    (its team-mate column ``i``) is left to the self-localisation."""
+    saw, count, at, side, number, distance = (see.saw, see.seen_count, see.seen_position, see.seen_side,
+                                              see.seen_number, see.seen_distance)
+    mate_pos, mate_age, opp_pos, opp_age = r.mate_pos, r.mate_age, r.opp_pos, r.opp_age
+    params = r.params[0]
+    gate_share, gate_floor = params.gate_share, params.gate_floor
     n = mate_pos.shape[0]
     m = opp_pos.shape[1]
     for i in range(n):
@@ -146,14 +173,15 @@ def see_players(saw: np.ndarray, count: np.ndarray, at: np.ndarray, side: np.nda
 
 
 @njit(cache=True, nogil=True)
-def hear_world(listener: np.ndarray, speaker: np.ndarray, kind: np.ndarray, world: np.ndarray, world_kind: int,
-               mate_pos: np.ndarray, mate_age: np.ndarray, ball: np.ndarray, ball_vel: np.ndarray,
-               ball_age: np.ndarray, ball_decay: float) -> None:  # pragma: no cover - compiled
+def hear_world(r: BeliefRecord, listener: np.ndarray, speaker: np.ndarray, kind: np.ndarray, world: np.ndarray,
+               world_kind: int) -> None:  # pragma: no cover - compiled
     """Fold the team-mates' world messages heard this cycle into each listener's beliefs: rows
     of (listener, speaker, kind, values (ball x, y, velocity x, y, age, sender x, y)); only
     rows of ``world_kind`` from another team-mate count. The sender is where it said it was
     (age 1) unless the listener knows fresher; the ball is taken when fresher than the
-    listener's, rolled on by the cycle the message took."""
+    listener's, rolled on by the cycle the message took (slowing by ``r.ball_decay``)."""
+    mate_pos, mate_age, ball, ball_vel, ball_age, ball_decay = (r.mate_pos, r.mate_age, r.ball, r.ball_vel,
+                                                                r.ball_age, r.ball_decay)
     n = ball.shape[0]
     for p in range(listener.shape[0]):
         i, j = listener[p], speaker[p]
@@ -174,27 +202,22 @@ def hear_world(listener: np.ndarray, speaker: np.ndarray, kind: np.ndarray, worl
 
 
 @njit(cache=True, nogil=True)
-def believe(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray, mate_pos: np.ndarray,
-            mate_age: np.ndarray, opp_pos: np.ndarray, opp_age: np.ndarray, last_seen: np.ndarray,
-            last_seen_cycle: np.ndarray, ball_seen: np.ndarray, ball_at: np.ndarray, ball_distance: np.ndarray,
-            saw: np.ndarray, count: np.ndarray, at: np.ndarray, side: np.ndarray, number: np.ndarray,
-            distance: np.ndarray, position: np.ndarray, listener: np.ndarray, speaker: np.ndarray,
-            kind: np.ndarray, world: np.ndarray, world_kind: int, cycle: int, p: np.ndarray, ball_decay: float,
-            speed_max: float) -> None:  # pragma: no cover - compiled
-    """One cycle of every observer's beliefs in one call: :func:`predict_beliefs`,
-    :func:`see_ball`, :func:`see_players`, each observer's own position (its
-    self-localisation, ``position``), then :func:`hear_world`. ``p``: the
-    :class:`~agents.teams.world_model.BeliefParams` (ball gain, velocity gain, noise share,
-    near, gate share, gate floor)."""
-    predict_beliefs(ball, ball_vel, ball_age, mate_age, opp_age, ball_decay)
-    see_ball(ball, ball_vel, ball_age, last_seen, last_seen_cycle, ball_seen, ball_at, ball_distance, cycle, p[0],
-             p[1], p[2], p[3], ball_decay, speed_max)
-    see_players(saw, count, at, side, number, distance, mate_pos, mate_age, opp_pos, opp_age, p[4], p[5])
-    for i in range(ball.shape[0]):
+def believe(r: BeliefRecord, see: SeeRecord, listener: np.ndarray, speaker: np.ndarray, kind: np.ndarray,
+            world: np.ndarray, world_kind: int, cycle: int) -> None:  # pragma: no cover - compiled
+    """One cycle of every observer's beliefs ``r`` in one call: :func:`predict_beliefs`,
+    :func:`see_ball` and :func:`see_players` with the sees of ``cycle`` (``see``), each
+    observer's own position (its self-localisation, ``see.position``), then
+    :func:`hear_world` with the decoded messages heard (``listener``, ``speaker``, ``kind``,
+    ``world``; the world messages are those of ``world_kind``)."""
+    predict_beliefs(r)
+    see_ball(r, see, cycle)
+    see_players(r, see)
+    mate_pos, mate_age, position = r.mate_pos, r.mate_age, see.position
+    for i in range(mate_pos.shape[0]):
         mate_pos[i, i, 0] = position[i, 0]
         mate_pos[i, i, 1] = position[i, 1]
         mate_age[i, i] = 0
-    hear_world(listener, speaker, kind, world, world_kind, mate_pos, mate_age, ball, ball_vel, ball_age, ball_decay)
+    hear_world(r, listener, speaker, kind, world, world_kind)
 
 
 @njit(cache=True, nogil=True)

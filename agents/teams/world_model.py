@@ -24,15 +24,17 @@ which team-mates far from the ball use to keep theirs fresh.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass
 from typing import NamedTuple
 
 import numpy as np
 
-from agents.messages import CODES, DIGIT_OF_BYTE, WORLD_GRID, heard_pairs, said_bytes, text_digits, world_texts
-from agents.teams.belief_kernels import AGE_NEVER, own_kicks
-from agents.teams.belief_record import hear_and_believe, hear_block_and_believe, new_record
+from agents.messages import heard_pairs, said_bytes, text_digits, world_texts
+from agents.teams.belief_kernels import AGE_NEVER, BELIEF_PARAMS, own_kicks
+from agents.teams.belief_record import (SeeRecords, belief_record, hear_and_believe, hear_block_and_believe,
+                                        message_codes)
 from soccer_sim.config import MatchConfig
+from soccer_sim.kernels import make_record
 from soccer_sim.perception.views import HeardLog, PlayerViews
 from soccer_sim.state import NO_PLAYER, PlayMode
 from soccer_sim.team import SideInfo, TeamView
@@ -176,12 +178,18 @@ class TeamBeliefs:
         self._views: list[TeamView] = []
         self._goalie = side_info.goalie_index if side_info is not None else -1
         self._last: PlayerViews | None = None
-        self._params = np.array([params.ball_gain, params.ball_velocity_gain, params.ball_noise_share, params.near,
-                                 params.gate_share, params.gate_floor])
-        self.record = new_record((self.ball, self.ball_vel, self.ball_age, self.mate_pos, self.mate_age, self.opp_pos,
-                                  self.opp_age, self._last_seen, self._last_seen_cycle, self._params,
-                                  self._ball_decay, self._ball_speed_max))
-        """These arrays as one compiled record (:mod:`agents.teams.belief_record`)."""
+        self.record = belief_record(ball=self.ball, ball_vel=self.ball_vel, ball_age=self.ball_age,
+                                    mate_pos=self.mate_pos, mate_age=self.mate_age, opp_pos=self.opp_pos,
+                                    opp_age=self.opp_age, last_seen=self._last_seen,
+                                    last_seen_cycle=self._last_seen_cycle,
+                                    params=make_record(BELIEF_PARAMS, **asdict(params)),
+                                    ball_decay=self._ball_decay, speed_max=self._ball_speed_max)
+        """These arrays and constants as one compiled record
+        (:class:`~agents.teams.belief_record.BeliefRecord`)."""
+        self._sees = SeeRecords()
+        """The views' sees as a compiled record, kept while the views hand the same arrays."""
+        self._codes = message_codes()
+        """The say channel's decoding tables as a compiled record."""
         self._no_votes = (np.zeros((n, n, 0), dtype=np.int64), np.zeros((n, n), dtype=np.int64))
         """An empty vote book's arrays, for an update that keeps no votes."""
 
@@ -199,19 +207,15 @@ class TeamBeliefs:
         self.mate_vel[rows, rows] = views.velocity
         self.mate_effort[:] = views.effort[:, None]
         log = views.heard_mates
-        votes_of = votes if votes is not None else self._no_votes
+        kept_votes, vote_cycle = votes if votes is not None else self._no_votes
         said = said_bytes(log.messages) if isinstance(log, HeardLog) else None
+        see = self._sees.of(views)
         if said is not None:  # (a match's delivery, decoded as it stands)
-            hear_block_and_believe(self.record, views.ball_seen, views.ball, views.ball_distance, views.saw,
-                                   views.seen_count, views.seen_position, views.seen_side, views.seen_number,
-                                   views.seen_distance, views.position, log.heard, said, DIGIT_OF_BYTE, WORLD_GRID,
-                                   CODES, *votes_of, views.cycle)
+            hear_block_and_believe(self.record, see, log.heard, said, self._codes, kept_votes, vote_cycle, views.cycle)
             return self._senses(views)
         listeners, speakers, texts = heard_pairs(log)
-        hear_and_believe(self.record, views.ball_seen, views.ball, views.ball_distance, views.saw, views.seen_count,
-                         views.seen_position, views.seen_side, views.seen_number, views.seen_distance,
-                         views.position, listeners, speakers, text_digits(texts), WORLD_GRID, CODES,
-                         *votes_of, views.cycle)
+        hear_and_believe(self.record, see, listeners, speakers, text_digits(texts), self._codes, kept_votes,
+                         vote_cycle, views.cycle)
         return self._senses(views)
 
     @staticmethod

@@ -1,18 +1,26 @@
 """A team's intake in one compiled call (:mod:`agents.teams.belief_record`, made by
 :meth:`TeamBeliefs.update`): the same world models and votes as decoding the messages,
 updating the models and storing the votes one after the other, bad messages and a side
-without votes included."""
+without votes included; and the named records the kernels read (the sees' record kept while
+the views hand the same arrays and made again when they hand others, the records built by
+field name, the belief parameters read by name)."""
 
 from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import fields, replace
 
 import numpy as np
 import pytest
 
 from agents.messages import WORLD, WorldMessage, encode, heard_batch, vote_texts
 from agents.roles.voting import VoteBook
-from agents.teams.belief_kernels import believe
-from agents.teams.world_model import TeamBeliefs
+from agents.teams.belief_kernels import BELIEF_PARAMS, believe
+from agents.teams.belief_record import SEE_FIELDS, SeeRecords, belief_record, see_record
+from agents.teams.world_model import BeliefParams, TeamBeliefs
+from soccer_sim.perception.views import PlayerViews
 from tests.agents.test_world_model import CONFIG, M, N, see_ball_at
+from tests.agents.test_world_model import views as hand_built_views
 
 
 def _heard(cycle: int) -> tuple:
@@ -26,12 +34,8 @@ def _heard(cycle: int) -> tuple:
 def _three_steps(beliefs: TeamBeliefs, book: VoteBook | None, views) -> None:
     """The intake one step after another: decode, the world-model kernel, the vote book."""
     heard = heard_batch(views.heard_mates)
-    believe(beliefs.ball, beliefs.ball_vel, beliefs.ball_age, beliefs.mate_pos, beliefs.mate_age, beliefs.opp_pos,
-            beliefs.opp_age, beliefs._last_seen, beliefs._last_seen_cycle, views.ball_seen, views.ball,
-            views.ball_distance, views.saw, views.seen_count, views.seen_position, views.seen_side,
-            views.seen_number, views.seen_distance, views.position, heard.listener, heard.speaker,
-            heard.decoded.kind, heard.decoded.world, WORLD, views.cycle, beliefs._params, beliefs._ball_decay,
-            beliefs._ball_speed_max)
+    believe(beliefs.record, see_record(views), heard.listener, heard.speaker, heard.decoded.kind, heard.decoded.world,
+            WORLD, views.cycle)
     if book is not None:
         book.hear(views.cycle, heard)
 
@@ -54,3 +58,66 @@ def test_one_call_gives_what_the_three_steps_give(with_votes: bool) -> None:
         np.testing.assert_array_equal(book_together.votes, book_apart.votes)
         np.testing.assert_array_equal(book_together.vote_cycle, book_apart.vote_cycle)
         assert (book_together.votes[0, 1] == [1, 2, 0]).all() and (book_together.votes[2, 0] == [2, 0, 1]).all()
+
+
+def test_the_see_record_is_kept_while_the_views_hand_the_same_arrays_and_made_again_for_others() -> None:
+    records = SeeRecords()
+    given = see_ball_at({0: (3.0, 1.0)}, 1)
+    first = records.of(given)
+    assert records.of(given) is first
+    assert records.of(replace(given, cycle=2, heard_mates=((),) * N)) is first  # other views, the same arrays
+    for name in SEE_FIELDS:
+        other = replace(given, **{name: getattr(given, name).copy()})
+        assert records.of(other) is not first, name
+        assert records.of(other) is records.of(other)
+        records.of(given)
+
+
+def _views_in_place(cycles: int) -> Iterator[tuple[PlayerViews, PlayerViews]]:
+    """Pairs of views of each cycle: the same views object every cycle, its arrays overwritten
+    in place as a match's observer does (from cycle ``cycles // 2`` on, its ball arrays are
+    other arrays), and new views of the same sees."""
+    kept = hand_built_views(0)
+    for cycle in range(cycles):
+        fresh = see_ball_at({0: (0.5 * cycle, 1.0), 1: (0.5 * cycle + 0.2, 0.8)} if cycle % 4 else {}, cycle)
+        if cycle == cycles // 2:
+            kept.ball = kept.ball.copy()
+            kept.ball_seen = kept.ball_seen.copy()
+        for name in SEE_FIELDS:
+            getattr(kept, name)[...] = getattr(fresh, name)
+        kept.cycle = cycle
+        yield kept, fresh
+
+
+def test_views_overwritten_in_place_or_handing_new_arrays_are_believed_alike() -> None:
+    """A model fed one views object whose arrays change in place (and are once replaced)
+    believes what a model fed new views every cycle believes."""
+    in_place, anew = TeamBeliefs(N, M, CONFIG), TeamBeliefs(N, M, CONFIG)
+    for kept, fresh in _views_in_place(12):
+        in_place.update(kept)
+        anew.update(fresh)
+        for name in ("ball", "ball_vel", "ball_age", "mate_pos", "mate_age"):
+            np.testing.assert_array_equal(getattr(in_place, name), getattr(anew, name), err_msg=name)
+    assert anew.ball_age[0] <= 3 and abs(anew.ball[0, 0] - 5.0) < 1.0  # the ball was followed
+
+
+def test_a_belief_record_is_made_by_field_name() -> None:
+    beliefs = TeamBeliefs(N, M, CONFIG)
+    with pytest.raises(ValueError, match=r"missing \['speed_max'\], unknown \['speed'\]"):
+        belief_record(ball=beliefs.ball, ball_vel=beliefs.ball_vel, ball_age=beliefs.ball_age,
+                      mate_pos=beliefs.mate_pos, mate_age=beliefs.mate_age, opp_pos=beliefs.opp_pos,
+                      opp_age=beliefs.opp_age, last_seen=np.zeros((N, 2)), last_seen_cycle=np.zeros(N, np.int64),
+                      params=np.zeros(1, BELIEF_PARAMS), ball_decay=0.94, speed=3.0)
+
+
+def test_the_belief_parameters_reach_the_kernels_by_name() -> None:
+    """A ball seen 20 m away, then 0.3 m further along within the gate: the filter takes
+    ``ball_gain`` of the residual into the position and ``ball_velocity_gain`` into the
+    velocity, whatever the other parameters are."""
+    assert BELIEF_PARAMS.names == tuple(f.name for f in fields(BeliefParams))
+    for params in (BeliefParams(), BeliefParams(ball_gain=1.0, ball_velocity_gain=0.5, near=1.0, gate_floor=9.0)):
+        beliefs = TeamBeliefs(N, M, CONFIG, params)
+        beliefs.update(see_ball_at({0: (10.0, 0.0)}, 1))
+        beliefs.update(see_ball_at({0: (10.3, 0.0)}, 2))
+        np.testing.assert_allclose(beliefs.ball[0], [10.0 + params.ball_gain * 0.3, 0.0], atol=1e-12)
+        np.testing.assert_allclose(beliefs.ball_vel[0], [params.ball_velocity_gain * 0.3, 0.0], atol=1e-12)
