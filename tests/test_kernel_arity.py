@@ -20,8 +20,8 @@ MAX_PARAMETERS = 12
 JIT_DECORATORS = frozenset({"njit", "jit"})
 
 STILL_CONVERTING: frozenset[str] = frozenset()
-"""Modules whose kernels are still being converted to named records and may take more
-parameters for now. This list must shrink to empty: remove a module as soon as its kernels
+"""Modules whose kernels may still take more parameters while they are converted to named
+records: none now, and it is to stay empty (a module is removed as soon as its kernels
 comply (:func:`test_the_allow_list_names_only_modules_still_over_the_limit` insists)."""
 
 
