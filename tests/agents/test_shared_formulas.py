@@ -19,7 +19,6 @@ import agents.skills.passing as passing
 import agents.teams.pipeline_kernels as pipeline_kernels
 import agents.teams.role_behaviours as role_behaviours
 import agents.teams.role_kernels as role_kernels
-import agents.teams.shape as shape
 import soccer_sim.kernels as core_kernels
 from soccer_sim import kick_rate
 from soccer_sim.config import PhysicsConfig
@@ -28,8 +27,7 @@ from soccer_sim.rules import offside
 ROOT = Path(__file__).resolve().parents[2]
 
 
-@pytest.mark.parametrize("module", [ball_kernels, passing, pipeline_kernels, role_behaviours,
-                                    role_kernels, shape])
+@pytest.mark.parametrize("module", [ball_kernels, passing, pipeline_kernels, role_behaviours, role_kernels])
 def test_the_agents_keep_players_onside_by_the_referees_offside_line(module) -> None:
     assert module.offside_line is offside.offside_line
 
