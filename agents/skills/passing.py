@@ -151,7 +151,7 @@ def best_pass(ctx: SkillContext, view: TeamView, passer: int, params: PassParams
     if receivers.size == 0:
         return None
     ours, theirs = arrays.ours, arrays.theirs
-    search = ctx.table(("best_pass", params), lambda: _search(ctx, params))
+    search = ctx.table(("best_pass", params), lambda: pass_search_inputs(ctx, params))
     radius, catch = ctx.opponent_radii(params.opponent_margin)
     found = np.zeros(1, dtype=PASS_PLAN)
     if not best_pass_search(arrays.ball, arrays.ball_vel, receivers, passer, bool(holder), ours.runners,
@@ -168,7 +168,7 @@ def best_pass(ctx: SkillContext, view: TeamView, passer: int, params: PassParams
 _PLAN_FIELDS = PASS_PLAN.names
 
 
-def _search(ctx: SkillContext, params: PassParams) -> PassSearch:
+def pass_search_inputs(ctx: SkillContext, params: PassParams) -> PassSearch:
     """:func:`best_pass_search`'s inputs that hold for a match and ``params``."""
     model = ctx.model
     record = make_record(

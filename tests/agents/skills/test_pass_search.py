@@ -7,12 +7,11 @@ import numpy as np
 import pytest
 
 from agents.skills import MotionModel, SkillContext, best_pass, offside_positions
-from agents.skills.ball_kernels import PASS_PARAMS, PassLanes, deciding_cycles, lane_arrivals, pass_scores, pass_targets
+from agents.skills.ball_kernels import PassLanes, deciding_cycles, lane_arrivals, pass_scores, pass_targets
 from agents.skills.interception import UNREACHABLE, intercept_checked
 from agents.skills.interception_kernels import EVERYONE
 from agents.skills.kicking import kick_for_velocity
-from agents.skills.passing import PassParams
-from soccer_sim.kernels import make_record
+from agents.skills.passing import PassParams, pass_search_inputs
 from tests.agents.skills.skill_views import CONFIG, N, make_view
 
 MODEL = MotionModel.even_sides(CONFIG)
@@ -33,13 +32,7 @@ def stepwise_pass(ctx: SkillContext, view, passer: int, params: PassParams, hold
     ball = np.asarray(view.ball, np.float64)
     size = receivers.size * len(params.leads) * len(params.arrival_speeds)
     targets, wanted, owners = np.empty((size, 2)), np.empty((size, 2)), np.empty(size, dtype=np.int64)
-    constants = make_record(
-        PASS_PARAMS, x_max=model.half_length - params.field_margin, y_max=model.half_width - params.field_margin,
-        min_distance=params.min_distance, max_distance=params.max_distance, decay=model.ball_decay,
-        horizon=model.horizon, extra_cycles=params.extra_cycles, min_lead=params.min_lead,
-        coast=model.player_coast[-1], kickable=model.kickable_distance, half_length=model.half_length,
-        weight_forward=params.weight_forward, weight_goal=params.weight_goal, weight_space=params.weight_space,
-        weight_lead=params.weight_lead)
+    constants = pass_search_inputs(ctx, params).params
     count = pass_targets(view.own_pos, receivers, np.asarray(params.leads, float).reshape(-1, 2),
                          np.asarray(params.arrival_speeds, float), ball, constants, targets, owners, wanted)
     if count == 0:
