@@ -50,7 +50,7 @@ from agents.skills.player_kernels import Bodies
 from agents.skills.pacing import pacing_constants
 from agents.teams import mechanism
 from agents.teams.ball_role import LeaveMatching
-from agents.teams.decisions import BeliefDecisions, follow_up_goals
+from agents.teams.decisions import NO_SHOT, BeliefDecisions, follow_up_goals
 from agents.teams.on_ball import ball_reach, make_tackling
 from agents.teams.pipeline_kernels import (NORMAL, OUR_SET_PLAY, THEIR_SET_PLAY, assignment_problems, ball_player,
                                            dash_and_say, derive_worlds, follow_assignments, on_ball_rows,
@@ -220,6 +220,8 @@ class Pipeline:
         self._deciding = np.zeros(n, dtype=bool)
         self._problems = (np.zeros((rows, k, 2)), np.zeros((rows, k, 2)))
         self._kicked = np.zeros(rows, dtype=bool)
+        self._decided: list[int] = []
+        """The beliefs that decided on the ball this cycle."""
         self._no_kicks = np.zeros(rows, dtype=bool)
         self._digits = np.zeros((n if world.talks else 0, MESSAGE_LENGTH), dtype=np.int64)
         self.command = TeamCommand(dash=np.zeros((n, 2)), kick=np.zeros((n, 2)))
@@ -340,6 +342,7 @@ class Pipeline:
             move = command.move = senses.position.copy()
             move[self._deciding] = self.goals[self._deciding]
         kicked = self._decide(beliefs) if n_on_ball else self._no_kicks
+        decided = self._decided if n_on_ball else ()
         if world.talks:  # a player knows what it just kicked
             world.kicked(command.kick, self._kickable + 0.2)
         # 6. dashes, what the players say, the figures
@@ -347,7 +350,7 @@ class Pipeline:
         switches, mean, largest, far, shared, empty = dash_and_say(
             s, n_rows, n_out, play_on, Bodies(senses.position, senses.velocity, senses.effort, senses.stamina,
                                               senses.capacity), cycle, view.half, command.dash, say_world, self._digits)
-        self._after_dashes(beliefs, view, senses)
+        self._after_dashes(decided, view)
         if play_on and n_out:
             self.figures.add(switches, True, mean, largest, far)
             self._count_conflicts(shared, empty)
@@ -476,7 +479,7 @@ class Pipeline:
             if cycle - decisions.shot_cycle > params.follow_up_cycles:
                 continue
             if self.their_cycle[b] == 0 and (self.our_first[b] < 0 or self.our_cycles[b, self.our_first[b]] > 0):
-                decisions.shot_cycle = -(1 << 30)  # an opponent has the ball: the follow-up is over
+                decisions.shot_cycle = NO_SHOT  # an opponent has the ball: the follow-up is over
                 continue
             rows = (world.belief_of == b) & self._deciding
             follow_up_goals(params, self.shape.is_forward, self.model.half_length, decisions.shot_from,
@@ -496,24 +499,26 @@ class Pipeline:
         world, command = self.world, self.command
         kicked = self._kicked
         kicked[:] = False
+        self._decided = []
         for b in beliefs.tolist():
             rows = (world.belief_of == b) & self._deciding
             if not (rows & self._on_ball).any():
                 continue
-            kicked[b] = self.decisions[b].decide(world.view_of(b), self._race(b), int(ball_player(self.state, b)),
-                                                 rows, self._mode_since, self.goals, self.urgent, command,
-                                                 bool(self.in_flight[b]), self.able[b])
+            decisions = self.decisions[b]
+            kicked[b] = decisions.decide(world.view_of(b), self._race(b), int(ball_player(self.state, b)), rows,
+                                         self._mode_since, self.goals, self.urgent, command, bool(self.in_flight[b]),
+                                         self.able[b])
+            self._decided.append(b)
         return kicked
 
-    def _after_dashes(self, beliefs: np.ndarray, view: TeamView | PlayerViews, senses: Senses) -> None:
-        """The dribbler runs with the ball, not to a point; our set-play taker held back by the
-        stamina policy runs to the ball anyway (:meth:`~agents.teams.set_plays.SetPlays.run_if_held_back`)."""
+    def _after_dashes(self, decided: list[int] | tuple, view: TeamView | PlayerViews) -> None:
+        """For the ``decided`` beliefs (those that decided on the ball this cycle): the dribbler
+        runs with the ball, not to a point; our set-play taker held back by the stamina policy
+        runs to the ball anyway (:meth:`~agents.teams.set_plays.SetPlays.run_if_held_back`)."""
         world, command = self.world, self.command
         mode, ours = view.play_mode, view.mode_ours
-        for b in beliefs.tolist():
+        for b in decided:
             decisions = self.decisions[b]
-            if decisions.last_cycle != view.cycle:
-                continue
             if decisions.dribble_dash is not None and decisions.kicker >= 0:
                 command.dash[decisions.kicker] = decisions.dribble_dash
                 decisions.dribble_dash = None
@@ -526,17 +531,14 @@ class Pipeline:
                          view: TeamView | PlayerViews) -> None:
         """A belief that kicked holds our pass in flight, and the team-mates then in an offside
         position unable to play it; out of play on, without a kick, no pass is in flight."""
-        world = self.world
-        for b in beliefs.tolist():
-            if kicked[b]:
-                self.in_flight[b] = True
-                own = world.view_of(b)
-                self.able[b] = ~skills.offside_positions(self.model, own.own_pos, own.opp_pos, own.ball)
-                self.able[b][np.flatnonzero(self.command.kick.any(axis=1))] = True
-            elif not play_on:
-                self.in_flight[b] = False
-            if not self.in_flight[b]:
-                self.able[b] = True
+        if not play_on:
+            self.in_flight[beliefs] = False
+        for b in np.flatnonzero(kicked).tolist():
+            self.in_flight[b] = True
+            own = self.world.view_of(b)
+            self.able[b] = ~skills.offside_positions(self.model, own.own_pos, own.opp_pos, own.ball)
+            self.able[b][np.flatnonzero(self.command.kick.any(axis=1))] = True
+        self.able[~self.in_flight] = True
 
     def _count_conflicts(self, shared: int, empty: int) -> None:
         """Count the play-on cycles whose believed roles clash: ``shared`` roles two players both
