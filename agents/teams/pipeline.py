@@ -83,7 +83,7 @@ RACE_EVERY = 2
 """... on the cycles it sees at least this many cycles after its last race (and at the latest
 one cycle later): between sees a belief only rolls forward, so its last race holds."""
 
-BRAIN_DISTANCE = 2.2
+ON_BALL_DISTANCE = 2.2
 """A player who believes the ball within this (m) decides on the ball (a kick, a dribble, a
 tackle: rcssserver's ``tackle_dist`` is 2 m, the kickable distance about 1 m)."""
 
@@ -281,7 +281,7 @@ class Pipeline:
             phase=np.zeros(n, dtype=np.int64), row_ball=np.zeros((n, 2)),
             pacing=pacing_constants(model, DEFAULT_PACING, 0.05), budgets=np.zeros(n), last_role=self.rank.copy(),
             unfilled=float(style.unfilled_distance),
-            brain_distance=float(BRAIN_DISTANCE),
+            on_ball_distance=float(ON_BALL_DISTANCE),
             keeper_area_x=float(model.half_length - model.penalty_area_length - 2.0),
             keeper_area_y=float(model.penalty_area_half_width + 2.0),
             world_grid=WORLD_GRID, vote_modulus=int(CYCLE_MODULUS)))

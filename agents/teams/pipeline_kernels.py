@@ -434,7 +434,7 @@ def _role_gaps(s, rows: np.ndarray, position: np.ndarray) -> tuple[int, float, f
 def on_ball_rows(s, play_on: bool, set_play: bool, nearest_taker: bool, taker: int, reach: float, senses: tuple,
                  out: np.ndarray, deciding: np.ndarray) -> int:  # pragma: no cover - compiled
     """Which present players' beliefs decide on the ball this cycle (into ``out``), each by
-    its own belief ``b``: in play on a player who believes the ball within ``brain_distance``
+    its own belief ``b``: in play on a player who believes the ball within ``on_ball_distance``
     m or holds it, and the goalkeeper who believes it in or near our penalty area; at our set
     plays (``set_play``) a player who believes the ball within ``reach`` m, the
     ``taker`` (>= 0) and, with ``nearest_taker``, each outfield player its belief holds the
@@ -444,7 +444,7 @@ def on_ball_rows(s, play_on: bool, set_play: bool, nearest_taker: bool, taker: i
     position, holds, present = senses
     count = 0
     if play_on:
-        reach = s.brain_distance
+        reach = s.on_ball_distance
     for i in range(out.shape[0]):
         b = s.belief_of[i]
         dx, dy = s.ball[b, 0] - position[i, 0], s.ball[b, 1] - position[i, 1]

@@ -45,7 +45,7 @@ FIELDS = (
     "stationary", "spots", "outfield", "goalie", "offside_margin", "pressers", "keeper_margin", "area_x", "area_y",
     "half_length", "goals", "urgent", "phase", "row_ball", "pacing", "budgets", "last_role", "unfilled",
     # who decides on the ball
-    "brain_distance", "keeper_area_x", "keeper_area_y",
+    "on_ball_distance", "keeper_area_x", "keeper_area_y",
     # what the players say
     "world_grid", "vote_modulus",
 )

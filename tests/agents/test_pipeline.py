@@ -114,7 +114,7 @@ def test_before_a_kick_off_every_player_lines_up_in_its_own_role():
 @pytest.mark.parametrize("observation", ["full", "partial"])
 def test_only_beliefs_with_a_player_near_the_ball_decide_on_it_in_play_on(observation):
     from agents.teams.decisions import BeliefDecisions
-    from agents.teams.pipeline import BRAIN_DISTANCE
+    from agents.teams.pipeline import ON_BALL_DISTANCE
 
     config = MatchConfig(observation=ObservationConfig(observation), max_cycles=400)
     match = Match("mmdr", "counter-442", seed=1, config=config)
@@ -136,7 +136,7 @@ def test_only_beliefs_with_a_player_near_the_ball_decide_on_it_in_play_on(observ
     finally:
         BeliefDecisions.decide = original
     assert decided, "somebody of ours must have played the ball"
-    near_goal = sum(gap >= BRAIN_DISTANCE for gap in decided)  # (the goalkeeper with the ball near our area)
+    near_goal = sum(gap >= ON_BALL_DISTANCE for gap in decided)  # (the goalkeeper with the ball near our area)
     assert near_goal < len(decided) / 2
 
 
