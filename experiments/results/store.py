@@ -107,7 +107,7 @@ class ResultStore:
             store.close()
             raise ResultsError(f"{path}: not a soccer-sim results file ({exc})") from None
         if "kind" not in meta:
-            contents = _contents(path, store)
+            contents = _contents(path, connection)
             store.close()
             raise ResultsError(f"{path}: not a soccer-sim results file ({contents})")
         store.config_hash = meta.get("config_hash")
@@ -323,8 +323,8 @@ def _existing_refusal(path: Path, kind: str, config_hash: str, config: str) -> s
     connection, cleanup = connect_read_only(path)
     store = ResultStore(path, connection, cleanup=cleanup)
     try:
-        meta, tables = store.meta(), _tables(store._db)
-        refusal = _refusal(path, meta, tables, kind, config_hash, config, lambda: _contents(path, store))
+        meta, tables = store.meta(), _tables(connection)
+        refusal = _refusal(path, meta, tables, kind, config_hash, config, lambda: _contents(path, connection))
         if refusal is None and tables and (damage := damaged_pages(connection)):
             # refused read-only, before the writer touches it (its journal mode included)
             refusal = f"{path}: damaged results file ({damage}); it is left untouched: use another results file"
@@ -396,11 +396,11 @@ def _tables(db: sqlite3.Connection) -> list[str]:
     return [row[0] for row in db.execute("SELECT name FROM sqlite_master WHERE type = 'table' ORDER BY name")]
 
 
-def _contents(path: Path, store: ResultStore) -> str:
-    """What a file that is not a results file holds, for messages."""
+def _contents(path: Path, connection: sqlite3.Connection) -> str:
+    """What a file that is not a results file holds (read through ``connection``), for messages."""
     if path.stat().st_size == 0:
         return "an empty file"
-    tables = _tables(store._db)
+    tables = _tables(connection)
     return f"an SQLite database with tables {', '.join(tables)}" if tables else "an empty SQLite database"
 
 
