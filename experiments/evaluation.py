@@ -25,10 +25,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from experiments.results.record import MatchRecord
-from experiments.stats import Estimate, estimate, proportion
-
-if TYPE_CHECKING:
+if TYPE_CHECKING:  # the simulator and numpy load only when an evaluation runs (``--help`` stays quick)
+    from experiments.results.record import MatchRecord
+    from experiments.stats import Estimate
     from experiments.runner.spec import MatchSpec
     from soccer_sim import MatchConfig
     from soccer_sim.scenarios import Scenario
@@ -38,6 +37,9 @@ EVALUATION_SEED_BASE = 2 ** 32
 DEFAULT_EPISODES = 100
 """Episodes of an evaluation by default: a goal rate's 95 % interval at most about ±0.1 wide."""
 HOME = 0
+DEFAULT_OPPONENT = "static"
+"""The opponent by default: the environment's (``soccer_sim.env.options.DEFAULT_OPPONENT``, which a
+test keeps equal; named here so that building the command's options imports no simulator)."""
 
 
 def evaluation_seeds(episodes: int, offset: int = 0) -> range:
@@ -77,6 +79,8 @@ class EvaluationSummary:
 
 def summarise(records: Sequence[MatchRecord], policy: str, opponent: str) -> EvaluationSummary:
     """The :class:`EvaluationSummary` of ``policy``'s episodes at home against ``opponent`` in ``records``."""
+    from experiments.stats import estimate, proportion
+
     mine = [r for r in records if r.names() == (policy, opponent)]
     played = [r for r in mine if r.played]
     forfeits = sum(1 for r in mine if not r.played and r.forfeit == HOME)

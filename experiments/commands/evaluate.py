@@ -31,8 +31,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 def _add_arguments(parser: argparse.ArgumentParser) -> None:
     """The options (built only when the command is chosen)."""
     from experiments.commands.run_options import add_run_arguments
-    from experiments.evaluation import DEFAULT_EPISODES
-    from soccer_sim.env.options import DEFAULT_OPPONENT
+    from experiments.evaluation import DEFAULT_EPISODES, DEFAULT_OPPONENT
 
     parser.add_argument("policy", metavar="POLICY",
                         help="the team evaluated: a registered name or a package.module:Attribute path (a PolicyTeam "

@@ -98,3 +98,10 @@ def test_a_path_team_is_shown_by_its_own_name_unless_that_name_is_taken() -> Non
     assert team_labels([POLICY, same]) == {POLICY: POLICY, same: same}
     assert team_labels(["examples.scripted_team:ScriptedTeam", "examples.scripted_team:ScriptedTeam"]) == {
         "examples.scripted_team:ScriptedTeam": "scripted"}
+
+
+def test_the_default_opponent_is_the_environments() -> None:
+    from experiments.evaluation import DEFAULT_OPPONENT
+    from soccer_sim.env.options import DEFAULT_OPPONENT as ENVIRONMENTS
+
+    assert DEFAULT_OPPONENT == ENVIRONMENTS
