@@ -24,7 +24,8 @@ class RunInputError(ExperimentError):
 
 
 def add_run_arguments(parser: argparse.ArgumentParser, default_out: str, seed_help: str | None = None) -> None:
-    """(``seed_help``: the help of --seed where a command reads it otherwise) --games, --seed, --cycles, --workers, --backend, --address, --out, --tables,
+    """(``seed_help``: the help of --seed where a command reads it otherwise) --games, --seed,
+    --cycles, --workers, --backend, --address, --out, --tables,
     --match-timeout, --retry-errors, --record-dir, --rcg-dir, --record-every, --no-progress, --same-code."""
     from experiments.runner.run import BACKENDS, DEFAULT_MATCH_TIMEOUT
 

@@ -122,7 +122,8 @@ def tables(records: Sequence, teams: Sequence[str], label: dict[str, str] | None
             pair = pairing_summary(records, team, opponent)
             cells.append(pair.goal_difference.text())
             gd = pair.goal_difference
-            pair_rows.append([label[team], label[opponent], pair.games, pair.wins, pair.draws, pair.losses, pair.forfeits,
+            pair_rows.append([label[team], label[opponent], pair.games, pair.wins, pair.draws, pair.losses,
+                              pair.forfeits,
                               pair.goals_for, pair.goals_against, gd.mean, gd.se, gd.low, gd.high])
         matrix.rows.append(cells)
     return league_table_text, matrix, league_rows, pair_rows

@@ -99,7 +99,8 @@ class PolicyTeam:
         the policy was trained with) presents it: its action mode, mask, scenario horizon,
         observation slots and say values. Play it with ``env.config`` (the observation mode)."""
         return cls(policy, name, env.observation_slots, env.say_values, action_mode=env.action_mode,
-                   action_mask_in_observation=_has_mask(env), scenario=env.scenario, max_cycles=env.max_cycles, batched=batched)
+                   action_mask_in_observation=_has_mask(env), scenario=env.scenario, max_cycles=env.max_cycles,
+                   batched=batched)
 
     def reset(self, side_info: SideInfo, config: MatchConfig, rng: np.random.Generator) -> None:
         n = side_info.players_per_team
