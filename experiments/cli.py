@@ -31,6 +31,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "experiments.commands.bench",
     "experiments.commands.experiment",
     "experiments.commands.tournament",
+    "experiments.commands.evaluate",
     "experiments.commands.results",
     "experiments.commands.replay",
 )

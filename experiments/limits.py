@@ -93,6 +93,8 @@ OPTION_RANGES: dict[str, NumberRange] = {
     "match-timeout": NumberRange(1.0, 604_800.0, "seconds", integer=False),
     "record-every": _counts(1_000_000, "matches"),
     "matches": _counts(10_000, "matches"),
+    # -- evaluate
+    "episodes": _counts(100_000, "episodes"),
     # -- experiment penalty-shot
     "trials": _counts(100_000, "trials"),
     "robots": _counts(11, "robots"),

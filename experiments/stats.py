@@ -57,6 +57,21 @@ def estimate(values: Iterable[float], level: float = LEVEL) -> Estimate:
     return Estimate(n, mean, se, mean - half, mean + half)
 
 
+def proportion(successes: int, n: int, level: float = LEVEL) -> Estimate:
+    """The share ``successes / n`` with its standard error and Wilson's score interval (which
+    stays within [0, 1] and is not empty at 0 or n successes, unlike the normal one); nan where
+    undefined (n = 0)."""
+    from scipy import stats
+
+    if n == 0:
+        return Estimate(0, math.nan, math.nan, math.nan, math.nan)
+    share = successes / n
+    z = float(stats.norm.ppf(0.5 + level / 2))
+    centre = (share + z * z / (2 * n)) / (1 + z * z / n)
+    half = z / (1 + z * z / n) * math.sqrt(share * (1 - share) / n + z * z / (4 * n * n))
+    return Estimate(n, share, math.sqrt(share * (1 - share) / n), max(0.0, centre - half), min(1.0, centre + half))
+
+
 def sides_of(record: MatchRecord, team: str) -> list[int]:
     """The sides ``team`` plays in ``record``: [0], [1], [] or, against itself, [0] only (the
     home side stands for the team; the away side mirrors it)."""

@@ -73,7 +73,7 @@ def run(args: argparse.Namespace) -> int:
 
     from rich.markup import escape
 
-    from experiments.commands.run_options import RunInputError, check_observation
+    from experiments.commands.run_options import RunInputError, check_observation, scenario_named
     from experiments.match_report import match_report
     from experiments.recording import rcg_destination, replay_destination
     from experiments.runner.local import MatchFailed, play_in_worker
@@ -86,7 +86,7 @@ def run(args: argparse.Namespace) -> int:
     timeout = getattr(args, "match_timeout", None)
     try:
         config = match_config(args.cycles, getattr(args, "observation", "full"))
-        scenario = _scenario(getattr(args, "scenario", None))
+        scenario = scenario_named(getattr(args, "scenario", None))
         MatchSetup.resolve(config, scenario)  # a scenario that does not fit the field is bad input, found here
         with replay_destination(getattr(args, "record", None), "--record") as replay, \
                 rcg_destination(getattr(args, "rcg", None), "--rcg") as log:
@@ -163,17 +163,6 @@ def _report_console():
             raise BrokenPipeError
 
     return ReportConsole()
-
-
-def _scenario(text: str | None):
-    """The scenario ``--scenario`` names: a library name, or a path to a .json/.toml file."""
-    if text is None:
-        return None
-    from soccer_sim.scenarios import get_scenario, load_scenario
-
-    if text.lower().endswith((".json", ".toml")):
-        return load_scenario(text)
-    return get_scenario(text)
 
 
 def _print_report(console, report, elapsed: float) -> None:

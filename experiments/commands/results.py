@@ -21,6 +21,7 @@ from experiments.commands.errors import fail as _fail
 #: Kind stored in a results file -> the module that made it (``build_specs``, ``report``).
 REPORTERS: dict[str, str] = {
     "tournament": "experiments.commands.tournament",
+    "evaluation": "experiments.commands.evaluate",
     "case-study": "experiments.studies.case_study",
     "drop-in": "experiments.studies.drop_in",
     "assigners": "experiments.studies.assigners",

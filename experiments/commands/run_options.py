@@ -23,12 +23,14 @@ class RunInputError(ExperimentError):
     """Bad input to a command that runs matches; the message says what and how to fix it."""
 
 
-def add_run_arguments(parser: argparse.ArgumentParser, default_out: str) -> None:
-    """--games, --seed, --cycles, --workers, --backend, --address, --out, --tables,
+def add_run_arguments(parser: argparse.ArgumentParser, default_out: str, seed_help: str | None = None) -> None:
+    """(``seed_help``: the help of --seed where a command reads it otherwise) --games, --seed,
+    --cycles, --workers, --backend, --address, --out, --tables,
     --match-timeout, --retry-errors, --record-dir, --rcg-dir, --record-every, --no-progress, --same-code."""
     from experiments.runner.run import BACKENDS, DEFAULT_MATCH_TIMEOUT
 
-    parser.add_argument("--seed", type=ranged("seed"), default=0, help="first seed; a pairing plays seeds seed, seed+1, ... (default: 0)")
+    parser.add_argument("--seed", type=ranged("seed"), default=0,
+                        help=seed_help or "first seed; a pairing plays seeds seed, seed+1, ... (default: 0)")
     parser.add_argument("--cycles", type=ranged("cycles"), default=None,
                         help="cycles per match (default: a regulation match of 6000); part of the configuration hash")
     parser.add_argument("--observation", choices=("full", "partial"), default="full",
@@ -80,6 +82,53 @@ def check_observation(teams: list[str], observation: str) -> None:
             raise RunInputError(f"team {name!r} cannot play under --observation {observation}: it plays under "
                                 f"{', '.join(modes)} only (a team that takes per-player views declares "
                                 "observation_modes = ('full', 'partial') or ('partial',))")
+
+
+def scenario_named(text: str | None):
+    """The scenario ``--scenario`` names: a library name, or a path to a .json/.toml file (None:
+    none); a ScenarioError (a ValueError) for an unknown name or a bad file."""
+    if text is None:
+        return None
+    from soccer_sim.scenarios import get_scenario, load_scenario
+
+    if text.lower().endswith((".json", ".toml")):
+        return load_scenario(text)
+    return get_scenario(text)
+
+
+def scenario_option(text: str | None, config=None):
+    """:func:`scenario_named`, checked against ``config`` (None: the defaults), with a bad name or
+    file, or a scenario that does not fit the field, as a RunInputError naming ``--scenario``."""
+    from soccer_sim.setup import MatchSetup
+
+    try:
+        scenario = scenario_named(text)
+        if scenario is not None:
+            MatchSetup.resolve(config, scenario)
+    except (ValueError, OSError) as exc:
+        raise RunInputError(f"--scenario {text!r}: {exc}") from None
+    return scenario
+
+
+def team_labels(names: list[str]) -> dict[str, str]:
+    """How tables show each of ``names``: a team given by a ``package.module:Attribute`` path by
+    its own ``name`` (e.g. a PolicyTeam's), when it has one that no other team of ``names`` is
+    called or shown by; every other team by the name given. A path that cannot be loaded now
+    (e.g. ``results show`` elsewhere) keeps its path."""
+    from experiments.runner.worker import make_team
+
+    labels = {}
+    for name in names:
+        own = None
+        if ":" in name:
+            try:
+                own = getattr(make_team(name)[0], "name", None)
+            except Exception:  # noqa: BLE001 - a label only: the path stands for the team
+                own = None
+        labels[name] = own if isinstance(own, str) and own.strip() else name
+    shown = list(labels.values())
+    return {name: label if shown.count(label) == 1 and (label == name or label not in names) else name
+            for name, label in labels.items()}
 
 
 def add_team_option(parser: argparse.ArgumentParser, option: str, defaults: tuple[str, ...], what: str) -> None:

@@ -42,6 +42,9 @@ def _add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--games", type=ranged("games"), default=DEFAULT_GAMES,
                         help="matches per pairing, rounded up to even: sides swapped on paired seeds "
                              f"(default: {DEFAULT_GAMES}, a few minutes on two cores)")
+    parser.add_argument("--scenario", default=None, metavar="NAME|FILE",
+                        help="play a scenario instead of the regular match: a name from `soccer-sim scenarios` or "
+                             "a .json/.toml file (teams on the away side play the scenario's defence)")
     add_run_arguments(parser, "results.sqlite")
     add_json_option(parser)
     parser.set_defaults(func=table_command(run))
@@ -49,11 +52,13 @@ def _add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def build_specs(params: dict) -> list:
     """Every match of the round robin described by ``params`` (teams, games, seed, cycles)."""
+    from experiments.commands.run_options import scenario_named
     from experiments.runner.spec import paired_specs
 
+    scenario = scenario_named(params.get("scenario"))
     return [spec for a, b in itertools.combinations(params["teams"], 2)
             for spec in paired_specs(a, b, params["games"], params["seed"], params["cycles"],
-                                     params.get("observation", "full"))]
+                                     params.get("observation", "full"), scenario)]
 
 
 def run(args: argparse.Namespace) -> int:
@@ -63,12 +68,17 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _params(args: argparse.Namespace) -> dict:
-    from experiments.commands.run_options import check_observation, team_list
+    from experiments.commands.run_options import check_observation, scenario_option, team_list
+    from experiments.configuration import match_config
 
     teams = team_list(args.teams, "--teams", minimum=2)
+    scenario_option(args.scenario, match_config(args.cycles, args.observation))
     check_observation(teams, args.observation)
-    return {"teams": teams, "games": args.games, "seed": args.seed, "cycles": args.cycles,
-            "observation": args.observation}
+    params = {"teams": teams, "games": args.games, "seed": args.seed, "cycles": args.cycles,
+              "observation": args.observation}
+    if args.scenario is not None:  # (without one the parameters stay as results files have always stored them)
+        params["scenario"] = args.scenario
+    return params
 
 
 LEAGUE_COLUMNS = ["#", "team", "P", "Pts", "W", "D", "L", "FF", "GF", "GA", "mean GD (SE)"]
@@ -79,27 +89,32 @@ LEAGUE_LEGEND = ("P played, Pts points (3 a win, 1 a draw), W/D/L won/drawn/lost
 """What the league table's short column names mean (printed under it)."""
 
 
-def tables(records: Sequence, teams: Sequence[str]) -> tuple:
+def tables(records: Sequence, teams: Sequence[str], label: dict[str, str] | None = None) -> tuple:
     """(league table, pairwise matrix) as :class:`experiments.reporting.Table`, and the CSV rows
-    of both."""
+    of both; ``label``: how each team is shown (default:
+    :func:`~experiments.commands.run_options.team_labels`, a learned policy by its own name)."""
     from experiments.reporting import Table
     from experiments.stats import league_table, pairing_summary
 
+    from experiments.commands.run_options import team_labels
+
     league = league_table(records, teams)
+    label = label if label is not None else team_labels(list(teams))
     league_table_text = Table(f"league: {len(teams)} teams, {len(records)} matches", LEAGUE_COLUMNS, labels=2,
                               caption=LEAGUE_LEGEND)
     league_rows = []
     for rank, row in enumerate(league, 1):
-        league_table_text.rows.append([str(rank), row.team, str(row.games), str(row.points), str(row.wins),
+        league_table_text.rows.append([str(rank), label[row.team], str(row.games), str(row.points), str(row.wins),
                                        str(row.draws), str(row.losses), str(row.forfeits), str(row.goals_for),
                                        str(row.goals_against), row.goal_difference.text()])
         gd = row.goal_difference
-        league_rows.append([rank, row.team, row.games, row.points, row.wins, row.draws, row.losses, row.forfeits,
+        league_rows.append([rank, label[row.team], row.games, row.points, row.wins, row.draws, row.losses, row.forfeits,
                             row.goals_for, row.goals_against, gd.mean, gd.se, gd.low, gd.high])
-    matrix = Table("mean goal difference of the row team against the column team (SE)", ["team", *teams])
+    matrix = Table("mean goal difference of the row team against the column team (SE)",
+                   ["team", *(label[team] for team in teams)])
     pair_rows = []
     for team in teams:
-        cells = [team]
+        cells = [label[team]]
         for opponent in teams:
             if opponent == team:
                 cells.append("")
@@ -107,7 +122,8 @@ def tables(records: Sequence, teams: Sequence[str]) -> tuple:
             pair = pairing_summary(records, team, opponent)
             cells.append(pair.goal_difference.text())
             gd = pair.goal_difference
-            pair_rows.append([team, opponent, pair.games, pair.wins, pair.draws, pair.losses, pair.forfeits,
+            pair_rows.append([label[team], label[opponent], pair.games, pair.wins, pair.draws, pair.losses,
+                              pair.forfeits,
                               pair.goals_for, pair.goals_against, gd.mean, gd.se, gd.low, gd.high])
         matrix.rows.append(cells)
     return league_table_text, matrix, league_rows, pair_rows
@@ -120,13 +136,17 @@ def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list
     from experiments.reporting import ESTIMATE_COLUMNS, write_csv, write_markdown
     from experiments.results.files import atomic_output
 
+    from experiments.commands.run_options import team_labels
+
     teams = params["teams"]
-    league, matrix, league_rows, pair_rows = tables(records, teams)
+    label = team_labels(list(teams))
+    league, matrix, league_rows, pair_rows = tables(records, teams, label)
     league.print()
     matrix.print()
     if out_dir is None:
         return []
     cycles = params["cycles"] or "regulation (6000)"
+    scenario = f", scenario {params['scenario']}" if params.get("scenario") else ""
     writers = {
         "league.csv": lambda path: write_csv(path, ["rank", "team", "games", "points", "wins", "draws", "losses",
                                                     "forfeits", "goals_for", "goals_against", *ESTIMATE_COLUMNS],
@@ -136,8 +156,8 @@ def report(records: Sequence, params: dict, out_dir: Path | None = None) -> list
                                                pair_rows),
         "tournament.md": lambda path: write_markdown(path, [league, matrix],
                                                      f"Tournament: {len(records)} matches, seeds from "
-                                                     f"{params['seed']}, cycles per match: {cycles}."),
-        "tournament.png": lambda path: _figure(path, teams, league_rows, pair_rows),
+                                                     f"{params['seed']}, cycles per match: {cycles}{scenario}."),
+        "tournament.png": lambda path: _figure(path, [label[team] for team in teams], league_rows, pair_rows),
     }
     written = []
     for name, write in writers.items():

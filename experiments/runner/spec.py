@@ -131,11 +131,12 @@ def _digest(text: str) -> str:
 
 
 def paired_specs(team: str, opponent: str, games: int, seed: int, cycles: int | None,
-                 observation: str = "full") -> list[MatchSpec]:
+                 observation: str = "full", scenario: Scenario | None = None) -> list[MatchSpec]:
     """``games`` matches between two teams on paired seeds: seed ``seed + k`` is played once
     with each team at home, so ``games`` is rounded up to an even number. A team against itself
     plays ``games`` matches on distinct seeds (swapping sides would repeat the same match).
-    ``observation``: ``"full"`` or ``"partial"`` (the configuration's observation mode)."""
+    ``observation``: ``"full"`` or ``"partial"`` (the configuration's observation mode);
+    ``scenario``: played instead of the regular match (None)."""
     config = None
     if observation != "full":
         from experiments.configuration import match_config
@@ -143,7 +144,7 @@ def paired_specs(team: str, opponent: str, games: int, seed: int, cycles: int | 
         config = match_config(cycles, observation)
 
     def spec(home: str, away: str, s: int) -> MatchSpec:
-        return MatchSpec(home, away, s, cycles, configuration=config)
+        return MatchSpec(home, away, s, cycles, configuration=config, scenario=scenario)
 
     if team == opponent:
         return [spec(team, team, s) for s in range(seed, seed + games)]

@@ -47,7 +47,8 @@ from soccer_sim.env.persistence import ReplayPickling
 from soccer_sim.env.rewards import Rewards
 from soccer_sim.env.lookahead import LookaheadObserver
 from soccer_sim.env.partial_spaces import PartialObservationBuilder
-from soccer_sim.env.spaces import ACTION_SIZE, ActionDecoder, ObservationBuilder, check_action, check_actions
+from soccer_sim.env.spaces import (ACTION_SIZE, ActionDecoder, ObservationBuilder, check_action, check_actions,
+                                   check_choice, episode_horizon)
 from soccer_sim.match import Match
 from soccer_sim.state import AWAY, HOME
 from soccer_sim.team import SideInfo, TeamCommand
@@ -97,9 +98,9 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         offsets = {side: sum(sizes[s] for s in self.sides if s < side) for side in self.sides}
         self._blocks = {side: slice(offsets[side], offsets[side] + sizes[side]) for side in self.sides}
         rows = {side: slice(first[side], first[side] + sizes[side]) for side in self.sides}
-        limits = [c for c in (self.max_cycles, self.scenario.cycle_limit if self.scenario else None) if c]
-        horizon = min(limits) if limits else None
-        """The episode's last cycle when it ends before the match would: the time feature's scale."""
+        self.horizon = horizon = episode_horizon(self.max_cycles, self.scenario)
+        """The episode's last cycle when it ends before the match would (None: the match's own
+        length): the time feature's scale (:func:`~soccer_sim.env.spaces.episode_horizon`)."""
         self.partial = self.config.observation.partial
         """Whether agents observe partially (``observation="partial"``, :mod:`soccer_sim.env.partial_spaces`)."""
         self.say_values = say = kw["say_values"]
@@ -206,6 +207,13 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
         self.agents = list(self.possible_agents)
         self._observe()
 
+    @property
+    def match_seed(self) -> int | None:
+        """The seed of the match the current episode plays (None before the first reset):
+        ``run_match(..., seed=env.match_seed)`` with the same setup plays the same match, e.g.
+        with :class:`~soccer_sim.env.policy_team.PolicyTeam` in the controlled side's place."""
+        return self._match_seed
+
     def step(self, actions: dict[str, Any]) -> tuple[dict, dict, dict, dict, dict]:
         """One cycle from every live agent's action: (observations, rewards, terminations,
         truncations, infos) by agent; a ValueError naming the agent for a bad action."""
@@ -298,17 +306,9 @@ class SoccerParallelEnv(ReplayPickling, ParallelEnv):
             raise ValueError(f"no action for the live agents {', '.join(missing)}")
 
     def _check_choice(self, agent: str, action: Any) -> int:
-        """A discrete action as an int in the action space; ValueError naming the agent. A float
-        with an integral value (``5.0``, as some libraries' random policies give) counts as it."""
-        value = np.asarray(action)
-        integral = value.dtype.kind in "iu" or (value.dtype.kind == "f" and bool(np.all(np.mod(value, 1) == 0)))
-        if value.shape not in ((), (1,)) or not integral:
-            raise ValueError(f"action of {agent} must be one integer (action_mode={self.action_mode!r}), "
-                             f"got {action!r}")
-        choice = int(value.reshape(-1)[0])
-        if not 0 <= choice < self._action_space.n:
-            raise ValueError(f"action of {agent} must be in 0..{self._action_space.n - 1}, got {choice}")
-        return choice
+        """A discrete action as an int in the action space; ValueError naming the agent
+        (:func:`~soccer_sim.env.spaces.check_choice`)."""
+        return check_choice(agent, action, self._action_space.n, self.action_mode)
 
     def check_agent_action(self, agent: str, action: Any) -> None:
         """ValueError naming ``agent`` if ``action`` is not a valid action (the AEC form checks

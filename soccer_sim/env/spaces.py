@@ -93,6 +93,16 @@ def observation_slots(n: int, m: int, slots: int | None = None) -> int:
     return int(slots)
 
 
+def episode_horizon(max_cycles: int | None, scenario: object | None) -> int | None:
+    """The episode's last cycle when it ends before the match would: the smaller of the
+    environment's ``max_cycles`` and the scenario's ``cycle_limit`` (either may be None), None
+    when neither is set. The time feature's scale (:meth:`Scales.of`): the environment and
+    :class:`~soccer_sim.env.policy_team.PolicyTeam` both take it from here, so a policy sees in
+    matches the time it was trained with."""
+    limits = [c for c in (max_cycles, getattr(scenario, "cycle_limit", None)) if c]
+    return min(limits) if limits else None
+
+
 def observation_bounds(slots: int, config: MatchConfig) -> tuple[np.ndarray, np.ndarray]:
     """(low, high) float32 arrays of the observation with ``slots`` slots per side (see the
     module docstring)."""
@@ -246,6 +256,41 @@ def check_actions(agents: list[str], actions: list[object], size: int = ACTION_S
     if rows is None or rows.shape != (len(agents), size) or not np.isfinite(rows).all():
         return np.array([check_action(agent, action, size) for agent, action in zip(agents, actions)])
     return np.clip(rows, -1.0, 1.0, out=rows)
+
+
+def check_choice(agent: str, action: object, choices: int, action_mode: str) -> int:
+    """One agent's discrete action as an int in ``0..choices-1``; ValueError naming the agent
+    (and ``action_mode``) otherwise. A float with an integral value (``5.0``, as some libraries'
+    random policies give) counts as it."""
+    value = np.asarray(action)
+    integral = value.dtype.kind in "iu" or (value.dtype.kind == "f" and bool(np.all(np.mod(value, 1) == 0)))
+    if value.shape not in ((), (1,)) or not integral:
+        raise ValueError(f"action of {agent} must be one integer (action_mode={action_mode!r}), got {action!r}")
+    choice = int(value.reshape(-1)[0])
+    if not 0 <= choice < choices:
+        raise ValueError(f"action of {agent} must be in 0..{choices - 1}, got {choice}")
+    return choice
+
+
+def check_choices(agents: list[str], actions: object, choices: int, action_mode: str) -> np.ndarray:
+    """The discrete actions of ``agents`` as one int64 (len(agents),) array: one array operation
+    when they are well formed ((n,) or (n, 1) integers in range), else :func:`check_choice` agent
+    by agent, so the ValueError names the first agent at fault."""
+    n = len(agents)
+    rows = np.asarray(actions) if not isinstance(actions, list) else None
+    if rows is not None and rows.shape == (n, 1):
+        rows = rows[:, 0]
+    if rows is not None and rows.shape == (n,) and rows.dtype.kind in "iu" and bool(
+            ((rows >= 0) & (rows < choices)).all()):
+        return rows.astype(np.int64)
+    try:
+        listed = list(actions)  # type: ignore[call-overload]
+    except TypeError:
+        raise ValueError(f"actions must hold one action per agent ({n}), got {actions!r}") from None
+    if len(listed) != n:
+        raise ValueError(f"actions must hold one action per agent ({n}), got {len(listed)}")
+    return np.array([check_choice(agent, action, choices, action_mode) for agent, action in zip(agents, listed)],
+                    dtype=np.int64)
 
 
 def check_action(agent: str, action: object, size: int = ACTION_SIZE) -> np.ndarray:

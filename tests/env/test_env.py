@@ -192,7 +192,8 @@ def test_the_scripted_team_enters_a_tournament_from_the_command_line(tmp_path, c
                  "--cycles", "300", "--workers", "2", "--out", str(tmp_path / "r.sqlite"),
                  "--tables", str(tmp_path / "t"), "--no-progress"]) == 0
     printed = capsys.readouterr().out
-    assert "examples." in printed and "2 matches" in printed and "0 failed" in printed
+    assert "scripted" in printed and "examples.scripted_team" not in printed  # the team by its own name
+    assert "2 matches" in printed and "0 failed" in printed
 
 
 def test_high_level_actions_pass_the_api_tests_and_score() -> None:
