@@ -174,19 +174,20 @@ def test_kicking_wide_over_the_goal_line_gives_a_goal_kick_and_the_ends_stay_at_
     assert log.rows[299][1:3] == (PlayMode.KICK_OFF, AWAY)
 
 
-def test_goalkeeper_catches_a_shot_and_is_punished_for_holding_it():
+def test_goalkeeper_catches_a_shot_and_holding_it_past_the_free_kicks_time_drops_the_ball():
     hold = 30
     log = ModeLog()
     result = run_match(Striker(target=(60.0, 0.0)), Keeper(), seed=4,
-                       config=config(700, goalie_hold_cycles=hold), recorders=[log])
+                       config=config(700, set_play_timeout=hold), recorders=[log])
     catches = events_of(result, EventKind.CATCH)
     assert catches and catches[0][1:3] == (AWAY, 0)
     caught_at = catches[0][0]
-    free_kick = log.first(PlayMode.FREE_KICK)
-    assert free_kick[0] == caught_at + hold and free_kick[2] == HOME
-    assert all(row[1] == PlayMode.GOALIE_HOLDS for row in log.rows[caught_at:caught_at + hold])
-    # The free kick is on the edge of the away penalty area (x = 36 in the first half).
-    assert free_kick[3] == pytest.approx(36.0) or abs(free_kick[4]) == pytest.approx(20.16)
+    # rcssserver: the catch's cycle is the first of the keeper's free kick (drop_ball_time counts it)
+    assert all(row[1] == PlayMode.GOALIE_HOLDS for row in log.rows[caught_at:caught_at + hold - 1])
+    drop = events_of(result, EventKind.DROP_BALL)[0]
+    assert drop[0] == caught_at + hold - 1 and log.rows[drop[0]][1] == PlayMode.PLAY_ON
+    # dropped on the away penalty area's front corner (x = 36) on the ball's side
+    assert (drop[3], abs(drop[4])) == (pytest.approx(36.0), pytest.approx(20.16))
     assert EventKind.GOAL not in set(result.events.kind[: result.events.cycle.index(caught_at) + 1])
 
 
