@@ -202,3 +202,51 @@ def test_pass_to_a_player_beyond_the_defence_is_offside_only_with_the_rule_on(of
     else:
         assert calls == []
         assert any(e[1] == HOME and e[2] == STRIKER and e[5] == RUNNER for e in events_of(result, EventKind.PASS))
+
+
+class MovingKeeper(Keeper):
+    """The Keeper, which once it holds the ball asks every cycle to move (own frame) to a spot
+    inside its penalty area, a different one each cycle, and keeps dashing."""
+
+    def act(self, view) -> TeamCommand:
+        command = super().act(view)
+        holds = view.play_mode == PlayMode.GOALIE_HOLDS and view.ball_holder == self.goalie
+        if holds:  # (no catch request now: a catch is the higher body command)
+            command.catch = False
+            spot = (-45.0 + (view.cycle % 3), -3.0 + 2.0 * (view.cycle % 4))
+            command.move = np.tile(spot, (len(view.own_pos), 1))
+        else:
+            command.move = None
+        return command
+
+
+class KeeperSpots:
+    """Recorder: the away goalkeeper's position (absolute) while it holds the ball the first
+    time, and the moves refused then."""
+
+    def on_start(self, match) -> None:
+        self.rows = []
+        self.refused = 0
+        self.done = False
+
+    def on_cycle(self, match) -> None:
+        st = match.state
+        if st.play_mode == PlayMode.GOALIE_HOLDS and not self.done:
+            self.rows.append(st.pos[st.first_row(AWAY)].tolist())
+            self.refused = match.referee.goalkeeper.refused_moves[AWAY]
+        elif self.rows:
+            self.done = True
+
+    def on_end(self, match) -> None:
+        pass
+
+
+def test_a_holding_goalkeeper_moves_twice_then_its_moves_are_refused_and_it_cannot_dash_then():
+    spots = KeeperSpots()
+    result = run_match(Striker(target=(60.0, 0.0)), MovingKeeper(), seed=4, config=config(700), recorders=[spots])
+    assert events_of(result, EventKind.CATCH)
+    # the first two cycles of the hold move the keeper (the away team's own frame is mirrored);
+    # then every move is refused, and as the move still is its body command, its dash is dropped
+    assert spots.rows[1] != spots.rows[0] and spots.rows[2] != spots.rows[1]
+    assert all(row == spots.rows[2] for row in spots.rows[2:])
+    assert spots.refused == len(spots.rows) - 3
