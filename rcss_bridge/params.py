@@ -94,6 +94,7 @@ CONFIG_FIELDS: tuple[tuple[str, str, object], ...] = (
     ("catchable_area_l", "rules.catch_length", _same),
     ("catchable_area_w", "rules.catch_width", _same),
     ("catch_ban_cycle", "rules.catch_ban_cycles", _whole),
+    ("goalie_max_moves", "rules.goalie_max_moves", _whole),
     ("back_passes", "rules.back_pass_rule", _flag),
     ("ckick_margin", "rules.corner_inset", _same),
     ("ball_stuck_area", "rules.stuck_ball_radius", _same),

@@ -145,7 +145,7 @@ FIELD_RANGES: dict[str, dict[str, FieldRange]] = {
         "catch_length": _length(100.0),
         "catch_width": _length(100.0),
         "catch_ban_cycles": _cycles(),
-        "goalie_hold_cycles": _cycles(low=1),
+        "goalie_max_moves": FieldRange(-1, 1_000_000, "moves", integer=True),
         "goalie_index": FieldRange(0, 1000, "player", integer=True),
         "goal_pause_cycles": _cycles(),
         "corner_inset": _length(positive=False),

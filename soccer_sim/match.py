@@ -64,6 +64,7 @@ from soccer_sim.view import TeamFrame
 _KICK_OFF = PlayMode.KICK_OFF
 _TIME_OVER = PlayMode.TIME_OVER
 _AFTER_GOAL = PlayMode.AFTER_GOAL
+_GOALIE_HOLDS = PlayMode.GOALIE_HOLDS
 _NO_KICKERS = np.zeros(0, dtype=np.int64)
 
 
@@ -286,9 +287,14 @@ class Match:
         tackle = self._tackles_asked() if tackling and self.config.tackles.enabled else self._no_tackles
         moving = self._moving
         placing = state.play_mode == _KICK_OFF or state.play_mode == _AFTER_GOAL
+        keeper = NO_PLAYER  # the goalkeeper holding the ball whose move is a body command
         if placing:
             for team, rows in enumerate(self._team_rows):
                 moving[rows] = moves[team] is not None
+        elif state.play_mode == _GOALIE_HOLDS and moves[state.mode_team] is not None:
+            keeper = referee.holding_keeper(state, state.mode_team)
+            if keeper != NO_PLAYER:
+                moving[keeper] = True
         one_body_command(self.commands, tackle, self._catch, self._goalie_rows, moving, self.sizes[0],
                          self.ignored_commands)
         if placing:
@@ -296,6 +302,12 @@ class Match:
                 if moves[team] is not None:
                     referee.apply_moves(state, team, moves[team], moving[rows])
             moving[:] = False
+        elif keeper != NO_PLAYER:
+            if moving[keeper]:
+                team = state.mode_team
+                x, y = moves[team][keeper - state.first_row(team)]
+                referee.move_keeper(state, float(x), float(y))
+            moving[keeper] = False
 
         # 3-4. Tackles (frozen and sent-off players idle), kicks, then the referee judges
         # kicks, tackles and catches.
@@ -332,8 +344,7 @@ class Match:
         physics.set_ball_collides(holder == NO_PLAYER)
         substeps = self._substeps.count(bodies, holder == NO_PLAYER)
         self.touchers = physics.step(substeps, kickers)
-        if holder != NO_PLAYER:
-            ball[:] = pos[holder]
+        if holder != NO_PLAYER:  # (the referee keeps it touching the goalkeeper, keep_hold)
             ball_vel[:] = 0.0
 
         # 7-9. Decay, the referee, time, observers.

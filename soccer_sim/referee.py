@@ -66,7 +66,7 @@ from soccer_sim.rules import (
     TouchJudge,
 )
 from soccer_sim.setup import MatchSetup
-from soccer_sim.state import AWAY, HOME, EventKind, EventLog, PlayMode, WorldState
+from soccer_sim.state import AWAY, HOME, NO_PLAYER, EventKind, EventLog, PlayMode, WorldState
 
 if TYPE_CHECKING:
     from soccer_sim.tackles import TackleOutcome
@@ -126,6 +126,19 @@ class Referee:
         ((n, 2), absolute frame), clamped into the team's own half of the field (lines
         included), the team not kicking off kept out of the centre circle. Moved players stop.
         Ignored in any other play mode (:meth:`PlayModes.apply_moves`)."""
+
+    def holding_keeper(self, state: WorldState, team: int) -> int:
+        """The row of ``team``'s goalkeeper if it holds the ball now (its ``TeamCommand.move``
+        is then a body command, :meth:`move_keeper`), else NO_PLAYER."""
+        if state.play_mode != _GOALIE_HOLDS or state.mode_team != team:
+            return NO_PLAYER
+        row = self.modes.goalie_rows[team]
+        return row if row != NO_PLAYER and row == state.ball_holder else NO_PLAYER
+
+    def move_keeper(self, state: WorldState, x: float, y: float) -> bool:
+        """The holding goalkeeper's move to (x, y), absolute frame, within ``goalie_max_moves``
+        (:meth:`GoalkeeperJudge.holder_moves`); whether it was made."""
+        return self.goalkeeper.holder_moves(state, x, y)
 
     @property
     def judges(self) -> tuple[Judge, ...]:
@@ -207,7 +220,7 @@ class Referee:
     def after_step(self, state: WorldState, touchers: np.ndarray) -> None:
         """Judge the cycle after the physics step. ``touchers``: int array of the rows whose
         body touched the ball during the step. In play on the judges hear ``ball_touched``
-        (until one stops play) and ``analyse``; a held ball is kept in the penalty area; a set
+        (until one stops play) and ``analyse``; a held ball is kept (:meth:`GoalkeeperJudge.keep_hold`); a set
         play or the pause after a goal is kept; then time is judged."""
         mode = state.play_mode
         if mode == _TIME_OVER:
@@ -224,7 +237,7 @@ class Referee:
                 if call(state, bx, by):
                     break
         elif mode == _GOALIE_HOLDS:
-            self.goalkeeper.keep_holder_in_area(state)
+            self.goalkeeper.keep_hold(state)
         else:
             self.modes.keep(state)
         self.modes.judge_time(state)

@@ -34,9 +34,11 @@ class RuleConfig:
     """Width of the goalkeeper's catchable area (m)."""
     catch_ban_cycles: int = 5
     """Cycles after a catch attempt during which the goalkeeper cannot try again."""
-    goalie_hold_cycles: int = 60
-    """The goalkeeper must release a caught ball within this many cycles, or the opponents
-    get an indirect free kick."""
+    goalie_max_moves: int = 2
+    """How many times a goalkeeper holding a caught ball may place itself with
+    ``TeamCommand.move`` (rcssserver ``goalie_max_moves``); further moves are refused (they
+    still take the cycle's body command). Negative: no limit. How long it may hold the ball is
+    ``set_play_timeout``, the free kick's limit."""
     goalie_index: int = 0
     """Index (within its team, 0-based) of each team's goalkeeper; shirt number 1."""
     back_pass_rule: bool = True

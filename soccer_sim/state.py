@@ -88,6 +88,9 @@ class EventKind(IntEnum):
     RED_CARD = 16
     """A red card for ``player`` of ``team`` (a second yellow one, or a straight red one): it is
     sent off for the rest of the match."""
+    CATCH_FAULT = 17
+    """The ball held by ``team``'s goalkeeper (``player``) left its penalty area; the opponents'
+    free kick follows (the next SET_PLAY event; rcssserver's ``catch_fault_X``)."""
 
 
 @dataclass

@@ -177,8 +177,10 @@ class TeamCommand:
     """The goalkeeper tries to catch the ball this cycle (a bool, Python or numpy; 0 and 1 are
     accepted too, anything else is a TeamError)."""
     move: np.ndarray | None = None
-    """(n, 2) placement targets, honoured only before a kick-off and in the pause after a goal
-    (play modes KICK_OFF and AFTER_GOAL; the referee clamps them into the team's own half)."""
+    """(n, 2) placement targets, honoured before a kick-off and in the pause after a goal
+    (play modes KICK_OFF and AFTER_GOAL; the referee clamps them into the team's own half),
+    and, for the goalkeeper's row alone, while it holds the ball (GOALIE_HOLDS: at most
+    ``RuleConfig.goalie_max_moves`` moves, further ones refused; rcssserver's ``move``)."""
     tackle: np.ndarray | None = None
     """(n,) tackle directions in degrees, own frame (0: towards +x, the opponents' goal; 90:
     towards +y), NaN for players that do not tackle; None: nobody tackles. rcssserver's

@@ -11,7 +11,7 @@ _EVENT_NAMES = {EventKind.KICK: "kick", EventKind.PASS: "pass", EventKind.SHOT: 
                 EventKind.OFFSIDE: "offside", EventKind.DROP_BALL: "dropped ball", EventKind.HALF_TIME: "half time",
                 EventKind.TIME_OVER: "time over", EventKind.TOUCH: "touch", EventKind.BACK_PASS: "back-pass",
                 EventKind.TACKLE: "tackle", EventKind.FOUL: "foul", EventKind.YELLOW_CARD: "yellow card",
-                EventKind.RED_CARD: "red card"}
+                EventKind.RED_CARD: "red card", EventKind.CATCH_FAULT: "catch fault"}
 
 
 def describe_event(names: tuple[str, str], kind: int, team: int, player: int, x: float, y: float,

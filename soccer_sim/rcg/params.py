@@ -73,6 +73,7 @@ SERVER_PARAMETERS: dict[str, Callable[[MatchConfig], float]] = {
     "catchable_area_l": lambda c: c.rules.catch_length,
     "catchable_area_w": lambda c: c.rules.catch_width,
     "catch_ban_cycle": lambda c: c.rules.catch_ban_cycles,
+    "goalie_max_moves": lambda c: c.rules.goalie_max_moves,
     "back_passes": lambda c: c.rules.back_pass_rule,
     "ckick_margin": lambda c: c.rules.corner_inset,
     "ball_stuck_area": lambda c: c.rules.stuck_ball_radius,

@@ -72,7 +72,8 @@ MSG_BOARD = 1
 """The board number of rcssserver's ``(msg ...)`` lines that carry the result."""
 DISABLED_VIEW = "(v h 90)"
 """The view a player that never connected shows (rcssserver's default ``visible_angle``)."""
-_CAUSES = {int(EventKind.OFFSIDE): ("offside", "free_kick"), int(EventKind.BACK_PASS): ("back_pass", "indirect_free_kick")}
+_CAUSES = {int(EventKind.OFFSIDE): ("offside", "free_kick"), int(EventKind.BACK_PASS): ("back_pass", "indirect_free_kick"),
+           int(EventKind.CATCH_FAULT): ("catch_fault", "free_kick")}
 
 
 class RcgError(SoccerSimError, ValueError):

@@ -104,6 +104,16 @@ def in_penalty_area(field: FieldConfig, direction: int, x: float, y: float) -> b
     return 0.0 <= depth <= field.penalty_area_length and abs(y) <= field.penalty_area_width / 2.0
 
 
+def out_of_penalty_area(field: FieldConfig, direction: int, x: float, y: float) -> tuple[float, float]:
+    """(x, y), or, if it lies inside the penalty area defended by the team attacking
+    ``direction``, that area's front corner on the side of ``y`` (rcssserver's
+    ``moveOutOfPenalty``: where a ball dropped or a free kick given out of the area is put)."""
+    if in_penalty_area(field, direction, x, y):
+        front = field.half_length - field.penalty_area_length
+        return -direction * front, math.copysign(field.penalty_area_width / 2.0, y if y > 0.0 else -1.0)
+    return x, y
+
+
 def clamp_into_penalty_area(field: FieldConfig, direction: int, x: float, y: float) -> tuple[float, float]:
     """The nearest point to (x, y) inside the penalty area defended by the team attacking ``direction``."""
     depth = min(max(direction * x + field.half_length, 0.0), field.penalty_area_length)

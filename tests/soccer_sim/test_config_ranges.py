@@ -106,6 +106,7 @@ SERVER_PARAM_FIELDS: dict[str, tuple[str, str]] = {
     "use_offside": ("rules", "offside"), "offside_kick_margin": ("rules", "set_play_clearance"),
     "drop_ball_time": ("rules", "set_play_timeout"), "catchable_area_l": ("rules", "catch_length"),
     "catchable_area_w": ("rules", "catch_width"), "catch_ban_cycle": ("rules", "catch_ban_cycles"),
+    "goalie_max_moves": ("rules", "goalie_max_moves"),
     "back_passes": ("rules", "back_pass_rule"), "ckick_margin": ("rules", "corner_inset"),
     "ball_stuck_area": ("rules", "stuck_ball_radius"), "proper_goal_kicks": ("rules", "proper_goal_kicks"),
     "max_goal_kicks": ("rules", "max_goal_kicks"), "player_speed_max_min": ("player_types", "player_speed_max_min"),
@@ -117,7 +118,7 @@ SERVER_PARAM_FIELDS: dict[str, tuple[str, str]] = {
 """rcssserver ``server_param`` name -> (section, field) of the configuration that takes it as it is."""
 
 BOOLEAN = {"use_offside", "back_passes", "proper_goal_kicks"}
-INTEGER = {"drop_ball_time", "catch_ban_cycle", "max_goal_kicks", "tackle_cycles", "foul_cycles"}
+INTEGER = {"drop_ball_time", "catch_ban_cycle", "goalie_max_moves", "max_goal_kicks", "tackle_cycles", "foul_cycles"}
 
 
 def config_from_server_param(values: dict[str, str], player_params: dict[str, str]) -> MatchConfig:

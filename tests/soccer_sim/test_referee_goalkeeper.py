@@ -1,4 +1,7 @@
-"""The goalkeeper's catch (area, penalty area, ban), holding time limit and release."""
+"""The goalkeeper's catch (area, penalty area, ban), its hold as rcssserver (moves, catch fault, the free
+kick's time) and release."""
+
+import math
 
 import pytest
 
@@ -20,7 +23,10 @@ def test_legal_catch_makes_the_goalkeeper_hold_the_ball():
     ref, st, ev = keeper_world()
     catch(ref, st, HOME)
     assert (st.play_mode, st.mode_team, st.ball_holder) == (PlayMode.GOALIE_HOLDS, HOME, GK)
-    assert not st.ball_vel.any() and st.ball.tolist() == [-48.0, 2.0]
+    # rcssserver: the goalkeeper steps towards the ball until they touch; the ball stays
+    assert not st.ball_vel.any() and st.ball.tolist() == [-47.0, 2.5]
+    touching = CFG.physics.player_radius + CFG.physics.ball_radius
+    assert math.dist(st.pos[GK], st.ball) == pytest.approx(touching)
     assert st.last_touch == GK
     [(cycle, team, player, x, y, _)] = ev.of_kind(EventKind.CATCH)
     assert (cycle, team, player, x, y) == (100, HOME, 0, -47.0, 2.5)
@@ -91,34 +97,53 @@ def test_no_catch_at_set_plays():
     assert st.play_mode == PlayMode.FREE_KICK and st.ball_holder == NO_PLAYER
 
 
-def test_holding_too_long_gives_the_opponents_a_free_kick_on_the_penalty_area_edge():
-    hold = 20
-    ref, st, ev = keeper_world(gk=(-40.0, 5.0), ball=(-40.5, 5.0), config=config_with(goalie_hold_cycles=hold))
-    catch(ref, st, HOME)  # at cycle 100: the goalkeeper may kick in cycles 101..120
-    for _ in range(hold + 1):  # the catch cycle 100, then 101..120
+def test_holding_until_the_free_kicks_time_is_up_drops_the_ball_at_the_area_corner():
+    timeout = 20
+    ref, st, ev = keeper_world(gk=(-40.0, 5.0), ball=(-40.5, 5.0), config=config_with(set_play_timeout=timeout))
+    catch(ref, st, HOME)  # at cycle 100, which counts as the free kick's first
+    for _ in range(timeout):  # cycles 100..119 end held but the last
         assert st.play_mode == PlayMode.GOALIE_HOLDS
         step(ref, st)
-    assert (st.play_mode, st.mode_team, st.ball_holder) == (PlayMode.FREE_KICK, AWAY, NO_PLAYER)
-    # (-40, 5) is 3.5 m from the front line (x = -36) and 15.16 m from the side line.
-    assert st.ball.tolist() == [-HL + PA, 5.0]
-    assert ev.of_kind(EventKind.SET_PLAY)[-1][5] == int(PlayMode.FREE_KICK)
+    assert (st.play_mode, st.ball_holder) == (PlayMode.PLAY_ON, NO_PLAYER)
+    # rcssserver's moveOutOfPenalty: the area's front corner on the ball's side
+    assert st.ball.tolist() == [-HL + PA, CFG.field.penalty_area_width / 2]
+    [(_, _, _, x, y, replaced)] = ev.of_kind(EventKind.DROP_BALL)
+    assert replaced == int(PlayMode.GOALIE_HOLDS)
 
 
-def test_free_kick_after_holding_goes_to_the_nearer_side_line():
-    ref, st, ev = keeper_world(gk=(-50.0, -18.0), ball=(-50.0, -18.5), config=config_with(goalie_hold_cycles=1))
-    catch(ref, st, HOME)
-    step(ref, st)
-    step(ref, st)
-    assert st.ball.tolist() == [-50.0, -CFG.field.penalty_area_width / 2]
-
-
-def test_holding_goalkeeper_is_kept_inside_its_penalty_area():
+def test_a_held_ball_carried_out_of_the_area_is_a_catch_fault():
     ref, st, ev = keeper_world()
     catch(ref, st, HOME)
-    st.pos[GK] = (-30.0, 25.0)  # walked out of the area
+    st.pos[GK] = (-HL + PA + 1.0, 3.0)  # dashed out of the area with the ball
     step(ref, st)
-    assert st.pos[GK].tolist() == [-HL + PA, CFG.field.penalty_area_width / 2]
-    assert st.ball.tolist() == st.pos[GK].tolist()
+    [(_, team, player, x, y, _)] = ev.of_kind(EventKind.CATCH_FAULT)
+    assert (team, player) == (HOME, 0)
+    assert (st.play_mode, st.mode_team, st.ball_holder) == (PlayMode.FREE_KICK, AWAY, NO_PLAYER)
+    assert st.ball.tolist() == [x, y] and x > -HL + PA  # outside the area already: on the spot
+
+
+def test_holding_goalkeeper_moves_at_most_goalie_max_moves_times():
+    ref, st, ev = keeper_world()
+    catch(ref, st, HOME)
+    step(ref, st)
+    assert ref.holding_keeper(st, HOME) == GK and ref.holding_keeper(st, AWAY) == NO_PLAYER
+    assert ref.move_keeper(st, -45.0, 5.0) and st.pos[GK].tolist() == [-45.0, 5.0]
+    step(ref, st)
+    assert ref.move_keeper(st, -44.0, -6.0)
+    step(ref, st)
+    assert not ref.move_keeper(st, -46.0, 0.0)  # the third: refused, as (error too_many_moves)
+    step(ref, st)
+    assert st.pos[GK].tolist() == [-44.0, -6.0] and ref.goalkeeper.refused_moves == [1, 0]
+    touching = CFG.physics.player_radius + CFG.physics.ball_radius
+    assert math.dist(st.pos[GK], st.ball) == pytest.approx(touching)  # the ball follows
+
+
+def test_opponents_are_kept_clear_of_the_held_ball():
+    ref, st, ev = keeper_world()
+    catch(ref, st, HOME)
+    st.pos[N + 9] = (-45.0, 2.0)
+    step(ref, st)
+    assert math.dist(st.pos[N + 9], st.ball) >= CFG.rules.set_play_clearance - 1e-9
 
 
 def test_kicking_releases_the_ball():

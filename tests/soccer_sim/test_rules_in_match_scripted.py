@@ -174,19 +174,20 @@ def test_kicking_wide_over_the_goal_line_gives_a_goal_kick_and_the_ends_stay_at_
     assert log.rows[299][1:3] == (PlayMode.KICK_OFF, AWAY)
 
 
-def test_goalkeeper_catches_a_shot_and_is_punished_for_holding_it():
+def test_goalkeeper_catches_a_shot_and_holding_it_past_the_free_kicks_time_drops_the_ball():
     hold = 30
     log = ModeLog()
     result = run_match(Striker(target=(60.0, 0.0)), Keeper(), seed=4,
-                       config=config(700, goalie_hold_cycles=hold), recorders=[log])
+                       config=config(700, set_play_timeout=hold), recorders=[log])
     catches = events_of(result, EventKind.CATCH)
     assert catches and catches[0][1:3] == (AWAY, 0)
     caught_at = catches[0][0]
-    free_kick = log.first(PlayMode.FREE_KICK)
-    assert free_kick[0] == caught_at + hold and free_kick[2] == HOME
-    assert all(row[1] == PlayMode.GOALIE_HOLDS for row in log.rows[caught_at:caught_at + hold])
-    # The free kick is on the edge of the away penalty area (x = 36 in the first half).
-    assert free_kick[3] == pytest.approx(36.0) or abs(free_kick[4]) == pytest.approx(20.16)
+    # rcssserver: the catch's cycle is the first of the keeper's free kick (drop_ball_time counts it)
+    assert all(row[1] == PlayMode.GOALIE_HOLDS for row in log.rows[caught_at:caught_at + hold - 1])
+    drop = events_of(result, EventKind.DROP_BALL)[0]
+    assert drop[0] == caught_at + hold - 1 and log.rows[drop[0]][1] == PlayMode.PLAY_ON
+    # dropped on the away penalty area's front corner (x = 36) on the ball's side
+    assert (drop[3], abs(drop[4])) == (pytest.approx(36.0), pytest.approx(20.16))
     assert EventKind.GOAL not in set(result.events.kind[: result.events.cycle.index(caught_at) + 1])
 
 
@@ -201,3 +202,51 @@ def test_pass_to_a_player_beyond_the_defence_is_offside_only_with_the_rule_on(of
     else:
         assert calls == []
         assert any(e[1] == HOME and e[2] == STRIKER and e[5] == RUNNER for e in events_of(result, EventKind.PASS))
+
+
+class MovingKeeper(Keeper):
+    """The Keeper, which once it holds the ball asks every cycle to move (own frame) to a spot
+    inside its penalty area, a different one each cycle, and keeps dashing."""
+
+    def act(self, view) -> TeamCommand:
+        command = super().act(view)
+        holds = view.play_mode == PlayMode.GOALIE_HOLDS and view.ball_holder == self.goalie
+        if holds:  # (no catch request now: a catch is the higher body command)
+            command.catch = False
+            spot = (-45.0 + (view.cycle % 3), -3.0 + 2.0 * (view.cycle % 4))
+            command.move = np.tile(spot, (len(view.own_pos), 1))
+        else:
+            command.move = None
+        return command
+
+
+class KeeperSpots:
+    """Recorder: the away goalkeeper's position (absolute) while it holds the ball the first
+    time, and the moves refused then."""
+
+    def on_start(self, match) -> None:
+        self.rows = []
+        self.refused = 0
+        self.done = False
+
+    def on_cycle(self, match) -> None:
+        st = match.state
+        if st.play_mode == PlayMode.GOALIE_HOLDS and not self.done:
+            self.rows.append(st.pos[st.first_row(AWAY)].tolist())
+            self.refused = match.referee.goalkeeper.refused_moves[AWAY]
+        elif self.rows:
+            self.done = True
+
+    def on_end(self, match) -> None:
+        pass
+
+
+def test_a_holding_goalkeeper_moves_twice_then_its_moves_are_refused_and_it_cannot_dash_then():
+    spots = KeeperSpots()
+    result = run_match(Striker(target=(60.0, 0.0)), MovingKeeper(), seed=4, config=config(700), recorders=[spots])
+    assert events_of(result, EventKind.CATCH)
+    # the first two cycles of the hold move the keeper (the away team's own frame is mirrored);
+    # then every move is refused, and as the move still is its body command, its dash is dropped
+    assert spots.rows[1] != spots.rows[0] and spots.rows[2] != spots.rows[1]
+    assert all(row == spots.rows[2] for row in spots.rows[2:])
+    assert spots.refused == len(spots.rows) - 3

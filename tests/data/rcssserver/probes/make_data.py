@@ -1,7 +1,7 @@
 """Trim the raw traces of record.py into the small test data files in tests/data/rcssserver/.
 
 usage: python3 make_data.py RAW_DIR OUT_DIR [FILE ...]   (RAW_DIR holds clean.json, kicknoise.json,
-noisy.json and referee.json from run_probe.sh; with FILEs, e.g. tackle.json, only those are written
+noisy.json, referee.json and keeper.json from run_probe.sh; with FILEs, e.g. tackle.json, only those are written
 and only the modes they read are needed). Numbers only: metres, metres per cycle, degrees.
 """
 from __future__ import annotations
@@ -18,6 +18,7 @@ PARAMS = {
     "clean": NOISE_OFF,
     "kicknoise": {"player_rand": 0.0, "ball_rand": 0.0, "kick_rand": 0.1},
     "noisy": {"player_rand": 0.1, "ball_rand": 0.05, "kick_rand": 0.1},
+    "keeper": {**NOISE_OFF, "coach_w_referee": True, "goalie_max_moves": 2, "drop_ball_time": 100},
     "referee": {**NOISE_OFF, "coach_w_referee": True, "foul_detect_probability": 0.5, "foul_exponent": 10.0,
                 "red_card_probability": 0.0},
 }
@@ -25,8 +26,8 @@ PARAMS = {
 
 OPTIONS = ("server::synch_mode=true server::coach=true server::game_logging=false "
            "server::text_logging=false, and per mode: clean/referee server::player_rand=0 server::ball_rand=0 "
-           "server::kick_rand=0; kicknoise server::player_rand=0 server::ball_rand=0; referee also "
-           "server::coach_w_referee=true (see run_probe.sh)")
+           "server::kick_rand=0; kicknoise server::player_rand=0 server::ball_rand=0; referee and keeper as "
+           "clean and also server::coach_w_referee=true (see run_probe.sh)")
 
 
 def meta(modes: list[str], what: str) -> dict:
@@ -206,8 +207,42 @@ def tackles(c: dict, ref: dict) -> dict:
                          "tackler_at": [-1.0, 0.0]}}
 
 
+def goalkeeper(k: dict) -> dict:
+    def trace(ph: list[dict], orders: list[str] | None) -> list[dict]:
+        out = []
+        for i, st in enumerate(ph):
+            row = {"t": st["t"], "ball": [r(v) for v in st["ball"][:2]], "keeper": [r(v) for v in st["p"]["A1"][:2]],
+                   "heard": st["heard"], "errors": [e.split(" ", 1)[1] for e in st["errors"]]}
+            if orders is not None and i < len(orders):
+                row["order"] = orders[i]   # sent after this state, acted on in the next
+            out.append(row)
+        return out
+    hold = k["keeper_hold"]
+    orders = ["(catch 0)", "", "(move -45 5)", "(move -44 -6)", "(move -46 0)", "(dash 100 0)", "(dash 100 0)",
+              "(dash 100 0)", "(turn 90)", "(kick 50 0)", "", ""]
+    timeout = k["keeper_timeout"]
+    changes = [i for i, st in enumerate(timeout) if st["heard"]]
+    leaves = k["keeper_leaves_area"]
+    return {"meta": meta(["keeper"],
+                         "the goalkeeper A1 (left, unum 1, type 0) and the ball, cycle by cycle, from the trainer's "
+                         "see_global: 'hold': the ball at rest 1 m in front of the keeper, then each state's "
+                         "'order' (the keeper's command sent after it): catch, an idle cycle, three moves (the "
+                         "third beyond goalie_max_moves), three dashes, a turn, the kick. 'timeout': catch, then "
+                         "no command until the free kick's drop_ball_time ends it (only the states around the "
+                         "play mode changes; i: index from the setup state). 'leaves_area': catch 2.5 m inside "
+                         "the penalty area's front line (x = -36), then (dash 100 0) until the catch fault. "
+                         "heard: the referee's messages heard in the cycle that led to the state; errors: the "
+                         "server's replies to the keeper"),
+            "hold": trace(hold, orders),
+            "timeout": [dict(trace([timeout[i]], None)[0], i=i) for i in sorted(
+                {j for c in changes for j in (c - 1, c) if j >= 0})],
+            "leaves_area": trace(leaves[:8], None) + [dict(trace([leaves[i]], None)[0], i=i)
+                                                      for i, st in enumerate(leaves) if i >= 8 and st["heard"]]}
+
+
 FILES = {"dash.json": (dash, ("clean",)), "kick.json": (kicks, ("clean",)), "contact.json": (contact, ("clean",)),
-         "noise.json": (noise, ("kicknoise", "noisy")), "tackle.json": (tackles, ("clean", "referee"))}
+         "noise.json": (noise, ("kicknoise", "noisy")), "tackle.json": (tackles, ("clean", "referee")),
+         "goalkeeper.json": (goalkeeper, ("keeper",))}
 """Each data file: the function that trims it and the raw modes it reads."""
 
 

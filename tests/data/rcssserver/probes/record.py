@@ -8,6 +8,8 @@ MODE is one of (start the server first, options in README.md):
   noisy      default noise: player drift, kicks, ball launched at a standing player, sprinter and
              walker into a still ball, a path 0.3 m from the ball
   referee    noise off, referee on in trainer mode: foul tackles, fouls called, cards
+  keeper     noise off, referee on in trainer mode: the goalkeeper's catch, its free kick, moves,
+             a dash and the kick that releases the ball; holding until the free kick times out
 Every phase: one setup cycle (the trainer places players and ball, `(recover)`, play_on), then
 `cycles` cycles in which a policy sends player commands; the trainer's see_global (exact
 positions and velocities after each cycle) is recorded, state 0 being the one after the setup.
@@ -69,12 +71,15 @@ class Conn:
 class Rig:
     """Players {team: count} and a trainer, stepped together cycle by cycle."""
 
-    def __init__(self, teams: dict[str, int], player_port: int, trainer_port: int) -> None:
+    def __init__(self, teams: dict[str, int], player_port: int, trainer_port: int,
+                 goalies: tuple[str, ...] = ()) -> None:
+        """`goalies`: teams whose first player connects as the goalkeeper (unum 1)."""
         self.trainer = Conn(trainer_port, "(init (version 19))")
         self.players: dict[str, Conn] = {}
         for team, n in teams.items():
-            for _ in range(n):
-                c = Conn(player_port, f"(init {team} (version 19))")
+            for i in range(n):
+                goalie = " (goalie)" if team in goalies and i == 0 else ""
+                c = Conn(player_port, f"(init {team} (version 19){goalie})")
                 m = re.match(r"\(init ([lr]) (\d+)", c.init_reply)
                 if not m:
                     raise RuntimeError(c.init_reply)
@@ -84,6 +89,7 @@ class Rig:
         self.last_see = ""
         self.sense: dict[str, str] = {}
         self.heard: list[str] = []
+        self.errors: list[str] = []   # "A1 (error too_many_moves)": what the server answered a player
 
     def step(self, timeout: float = 10.0) -> None:
         """Send (done) from every client, then wait until each has received (think)."""
@@ -111,6 +117,8 @@ class Rig:
                         self.sense[names[key]] = msg
                     elif msg.startswith("(think"):
                         think = True
+                    elif msg.startswith(("(error", "(warning")) and key in names:
+                        self.errors.append(f"{names[key]} {msg}")
                     elif msg.startswith("(hear"):
                         m = _HEAR_REFEREE.match(msg)
                         if m and m.group(1) not in heard_now:
@@ -183,8 +191,9 @@ def phase(rig: Rig, log: dict, name: str, keep: tuple[str, ...], cmds: list[str]
 def snapshot(rig: Rig, keep: tuple[str, ...]) -> dict:
     t, ball, players = rig.state()
     out = {"t": t, "ball": ball, "p": {k: players[k] for k in keep if k in players},
-           "heard": list(rig.heard)}
+           "heard": list(rig.heard), "errors": list(rig.errors)}
     rig.heard.clear()
+    rig.errors.clear()
     for k in keep:
         st = rig.stamina(k)
         if st is not None:
@@ -319,15 +328,40 @@ def referee(rig: Rig, log: dict) -> None:
             break
 
 
+KEEPER_TEAMS = {"A": 2, "B": 1}
+KEEPER_ORDERS = ["(catch 0)", "", "(move -45 5)", "(move -44 -6)", "(move -46 0)", "(dash 100 0)", "(dash 100 0)",
+                 "(dash 100 0)", "(turn 90)", "(kick 50 0)", "", ""]
+"""The goalkeeper A1's command in each cycle of the hold probe ("" none): the catch, an idle cycle, three
+moves (the third beyond goalie_max_moves 2), three dashes, a turn, the kick that releases the ball."""
+
+
+def keeper(rig: Rig, log: dict) -> None:
+    # the goalkeeper at (-48, 0) facing +x, the ball at rest 1 m in front (inside catchable_area_l 1.2);
+    # a team-mate and an opponent parked on the touchline. Each phase's setup passes through drop_ball
+    # first: a mode change forgets the last kicker, so the goalkeeper's own kick of the phase before
+    # does not make its next catch a back pass.
+    forget = "(change_mode drop_ball)"
+    setup = [forget, move("A1", -48, 0), ball(-47, 0)]
+    phase(rig, log, "keeper_hold", ("A1", "B1"), setup,
+          lambda k, s: {"A1": KEEPER_ORDERS[k]} if KEEPER_ORDERS[k] else {}, len(KEEPER_ORDERS))
+    # catch, then hold without a kick until the referee ends the free kick
+    phase(rig, log, "keeper_timeout", ("A1", "B1"), setup,
+          lambda k, s: {"A1": "(catch 0)"} if k == 0 else {}, 110)
+    # catch 2.5 m inside the penalty area's front line (x = -36), then dash out of the area with the ball
+    phase(rig, log, "keeper_leaves_area", ("A1", "B1"), [forget, move("A1", -40.5, 0), ball(-39.5, 0)],
+          lambda k, s: {"A1": "(catch 0)" if k == 0 else "(dash 100 0)"} if k < 8 else {}, 45)
+
+
 def main() -> None:
     mode, out = sys.argv[1], sys.argv[2]
     player_port = int(sys.argv[3]) if len(sys.argv) > 3 else 6000
     trainer_port = int(sys.argv[4]) if len(sys.argv) > 4 else 6001
-    rig = Rig(TEAMS, player_port, trainer_port)
+    rig = Rig(KEEPER_TEAMS, player_port, trainer_port, goalies=("A",)) if mode == "keeper" \
+        else Rig(TEAMS, player_port, trainer_port)
     rig.wait_think()
     log: dict = {}
     try:
-        {"clean": clean, "kicknoise": kicknoise, "noisy": noisy, "referee": referee}[mode](rig, log)
+        {"clean": clean, "kicknoise": kicknoise, "noisy": noisy, "referee": referee, "keeper": keeper}[mode](rig, log)
     finally:
         with open(out, "w") as f:
             json.dump(log, f)
