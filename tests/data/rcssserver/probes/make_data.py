@@ -214,13 +214,8 @@ FOUL_RULE_TRACED = ("off_behind_dash_first", "off_behind_dashed_before", "off_be
 
 def foul_rule(ref: dict) -> dict:
     """foul_rule.json from the foulrule mode's raw traces (what it holds: its meta)."""
-    import record   # the situations' definitions, beside this script
-    cases = {}
-    for label, place, body, flag, action, _ in record.FOUL_RULE_CASES:
-        tx, ty, push = record.FOUL_RULE_PLACES[place]
-        cases[label] = {"tackler": [tx, ty], "push_dir": push, "holder_body": float(body), "flag": flag,
-                        "holder": action, "trials": 0, "tackled": 0, "foul_called": 0, "yellow_card": 0,
-                        "red_card": 0}
+    cases = {label: {**case, "trials": 0, "tackled": 0, "foul_called": 0, "yellow_card": 0, "red_card": 0}
+             for label, case in ref["cases"].items()}   # the situations as record.py wrote them
     traces = {}
     for name, ph in ref.items():
         if not name.startswith("foulrule_"):

@@ -356,6 +356,9 @@ def foul_rule(rig: Rig, log: dict) -> None:
     sent off), each with the tackler placed as FOUL_RULE_PLACES says, facing the ball and pushing
     it away from the holder (so a tackle that reached the ball moves it more than 0.8 m)."""
     import math
+    log["cases"] = {label: {"tackler": list(FOUL_RULE_PLACES[place][:2]), "push_dir": FOUL_RULE_PLACES[place][2],
+                            "holder_body": float(body), "flag": flag, "holder": action}
+                    for label, place, body, flag, action, _ in FOUL_RULE_CASES}   # for make_data.py
     n = 0
     for label, place, body, flag, action, trials in FOUL_RULE_CASES:
         tx, ty, push = FOUL_RULE_PLACES[place]
