@@ -12,7 +12,8 @@ One cycle (100 ms of game time by default):
    the successful tackles' pushes;
 4. the referee judges the kicks, the tackles (fouls, cards) and the goalkeepers' catch requests;
 5. dashes, the stamina model and the movement noise of players and ball
-   (:mod:`soccer_sim.kinematics`; players are restored at the start of each half);
+   (:mod:`soccer_sim.kinematics`; players are restored at the start of each half); who dashed
+   is kept for the next cycle's foul rule (``WorldState.dashed_before``);
 6. the collision solver moves everything for one cycle, in as many sub-steps as needed so
    that no player passes through another (:class:`~soccer_sim.physics.SubstepPlanner`), and
    body-ball contacts are resolved (``PhysicsConfig.body_ball_contact``); players are kept
@@ -334,8 +335,9 @@ class Match:
         else:
             referee.on_commands(state, kickers, self._catch)
 
-        # 5. Dashes.
+        # 5. Dashes (remembered for the next cycle's foul rule).
         kin.dash(vel, ball_vel, stamina, effort, recovery, capacity, self._dash, self.noise.motion)
+        np.any(self._dash != 0.0, axis=1, out=state.dashed_before)
 
         # 6. Collision solving. A held ball does not collide; when the goalkeeper kicks it away
         # it passes through the goalkeeper's body like any kicked ball passes its kicker.

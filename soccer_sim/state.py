@@ -230,6 +230,7 @@ class WorldState:
         self._frozen = np.zeros(players, dtype=np.int64)
         self._cards = np.zeros(players, dtype=np.int64)
         self._present = np.ones(players, dtype=bool)
+        self._dashed_before = np.zeros(players, dtype=bool)
 
     def _allocate(self, table: np.ndarray, stamina: np.ndarray, effort: np.ndarray, recovery: np.ndarray,
                   capacity: np.ndarray, score: np.ndarray) -> None:
@@ -265,6 +266,9 @@ class WorldState:
                    "card).")
     present = _owned("_present", "present", "(P,) False for a player sent off: parked off the pitch, its commands "
                      "ignored.")
+    dashed_before = _owned("_dashed_before", "dashed_before",
+                           "(P,) whether each player's dash was taken in the previous cycle (rcssserver's "
+                           "``dashed()`` stays true for the cycle after a dash; the foul rule reads it).")
 
     # --- copies and pickling: the views are rebuilt on the copied table --------------------
     def __getstate__(self) -> dict[str, object]:

@@ -8,8 +8,8 @@ its ``Player::tackle`` computes it, with the parameters of :class:`~soccer_sim.c
   the player faces the ball), gives the failure probability
   ``(x / tackle_dist)^e + (|y| / tackle_width)^e`` (``x / tackle_back_dist`` for a ball
   behind, never reached with the default 0). ``e`` is ``tackle_exponent``, or
-  ``foul_exponent`` for a foul tackle while an opponent can kick the ball (otherwise the
-  foul flag is dropped, as rcssserver does).
+  ``foul_exponent`` for a foul tackle while an opponent can kick the ball (within its type's
+  kickable distance; otherwise the foul flag is dropped, as rcssserver does).
 * **Push.** A successful tackle in direction ``d`` pushes the ball with
   ``(max_back_tackle_power + (max_tackle_power - max_back_tackle_power) * (1 - |a| / 180°))
   * tackle_power_rate * (1 - 0.5 * |b| / 180°)`` m/cycle towards ``d``, where ``a`` is ``d``
@@ -44,7 +44,7 @@ import numpy as np
 
 from soccer_sim.body import facing
 from soccer_sim.config import MatchConfig, TackleConfig
-from soccer_sim.kernels import PT_INERTIA_MOMENT, PT_KICK_RAND
+from soccer_sim.kernels import PT_INERTIA_MOMENT, PT_KICK_RAND, PT_KICKABLE
 from soccer_sim.rules.fouls import park_absent
 from soccer_sim.state import NO_PLAYER, WorldState
 
@@ -95,8 +95,10 @@ class TackleOutcome:
     pushers: list[int] = field(default_factory=list)
     """The tacklers whose tackle pushed the ball (reached it where they may kick)."""
     dashed: np.ndarray | None = None
-    """(P,) bool: which players asked to dash this cycle (rcssserver's ``dashed()`` in its
-    foul check)."""
+    """(P,) bool: which players dashed in this cycle or the one before (rcssserver's
+    ``dashed()`` in its foul check: true from a dash until the end of the next cycle; the
+    server counts a dash of the tackle's own cycle only when it was received before the
+    tackle, and a cycle's commands here have no order, so all of them count)."""
 
 
 class Tackles:
@@ -146,7 +148,7 @@ class Tackles:
         rows = np.flatnonzero(np.isfinite(tackle))
         if rows.size == 0:
             return None
-        outcome = TackleOutcome(dashed=np.any(commands[:, 0:2] != 0.0, axis=1))
+        outcome = TackleOutcome(dashed=np.any(commands[:, 0:2] != 0.0, axis=1) | state.dashed_before)
         outcome.dashed[rows] = False
         commands[rows] = 0.0  # a tackle is the player's one command of the cycle
         kickable = self._opponents_can_kick(state)
@@ -226,8 +228,10 @@ class Tackles:
                       accel * math.sin(direction) + noise * math.sin(noise_dir))
 
     def _opponents_can_kick(self, state: WorldState) -> tuple[bool, bool]:
-        """(home, away): whether a present player of that team has the ball within its kickable distance."""
+        """(home, away): whether a present player of that team has the ball within its own
+        kickable distance (its type's, as rcssserver's ``ballKickable``)."""
         d = np.hypot(state.pos[:, 0] - state.ball[0], state.pos[:, 1] - state.ball[1])
-        near = (d <= self._kickable) & state.present
+        kickable = self._kickable if self.types is None else self.types[:, PT_KICKABLE]
+        near = (d <= kickable) & state.present
         home = self._home
         return bool(near[:home].any()), bool(near[home:].any())

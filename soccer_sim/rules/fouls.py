@@ -7,7 +7,8 @@ present opponent of the tackler that could kick the ball (within its kickable di
 * a **foul tackle** (``TeamCommand.foul``) freezes each such opponent for
   ``TackleConfig.foul_cycles`` and is seen with probability ``foul_detect_probability``
   (one draw per opponent): a foul;
-* an opponent **charged** (it asked to dash this cycle, stands between the tackler and the
+* an opponent **charged** (it dashed this cycle or the one before, as rcssserver's
+  ``dashed()``, :attr:`soccer_sim.tackles.TackleOutcome.dashed`; stands between the tackler and the
   ball: no further from the tackler than the ball, ahead of it along the tackler-ball line and
   within the two bodies' radii of that line, and faces within 90° of that line by
   :func:`soccer_sim.body.facing`) makes a seen foul tackle a yellow card (a red one with
@@ -80,7 +81,7 @@ class FoulJudge(Judge):
 
     def tackle_taken(self, state: WorldState, row: int, foul: bool, dashed: np.ndarray) -> None:
         """``row``'s tackle pushed the ball; ``foul``: it was a foul tackle; ``dashed``: (P,)
-        which players asked to dash this cycle."""
+        which players dashed this cycle or the one before."""
         charge, yellow, red = self._check(state, row, foul, dashed)
         if charge or yellow or red:
             at = (float(state.pos[row, 0]), float(state.pos[row, 1]))  # before the free kick clears the tackler away

@@ -89,7 +89,7 @@ class Judge:
 
     def tackle_taken(self, state: WorldState, row: int, foul: bool, dashed: np.ndarray) -> None:
         """``row``'s tackle pushed the ball (``foul``: a foul tackle); ``dashed``: (P,) bool,
-        which players asked to dash this cycle (``tackleTaken``)."""
+        which players dashed this cycle or the one before (``tackleTaken``)."""
 
 
 def overrides(judge: Judge, hook: str) -> bool:

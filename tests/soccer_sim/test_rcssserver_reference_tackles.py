@@ -29,7 +29,7 @@ from tests.soccer_sim.probe_rig import (FULL, HOME_PROBE, N_TEAM, PROBE, Pitch, 
 
 from soccer_sim import Match, PlayMode, TeamCommand
 from soccer_sim.body import DEFAULT_INERTIA_MOMENT
-from soccer_sim.config import MatchConfig, TackleConfig
+from soccer_sim.config import MatchConfig, PhysicsConfig, TackleConfig
 from soccer_sim.state import AWAY, EventKind
 from soccer_sim.tackles import failure_probability
 
@@ -304,3 +304,99 @@ def test_a_called_foul_on_a_dashing_ball_holder_brings_a_card_the_second_one_red
     assert ours["red_card"] == ours["called_again"] == ours["sent_off"]
     assert ours["yellow_card"] + ours["red_card"] == ours["foul_called"]
     assert ours["free_kick_at_tackler"] == ours["foul_called"]
+
+
+# -------------------------------------------------------------- the foul rule, situation by situation
+# tests/data/rcssserver/foul_rule.json: tackles with and without the foul flag on a ball holder,
+# from behind, the side and the front, the holder standing, dashing, or having dashed the cycle
+# before (what each case means: the file's meta).
+
+HOLDER_DASH_POWER = {"dash_first": 100.0, "dash_after": 100.0, "dashed_before": 20.0}
+"""The server's probe: the holder's dash power per action (rcssserver power units)."""
+TURNED_AWAY_SPEED = 0.4
+"""A still player here faces the ball (soccer_sim.body); the server's holder with its body
+turned away from the ball (body 180) is a holder moving away from the ball at this speed
+(m/cycle), which faces more than 90 degrees off the ball."""
+
+
+def foul_rule_cases() -> dict[str, dict]:
+    return trace("foul_rule")["cases"]
+
+
+def foul_rule_trials(case: dict, trials: int, seed: int) -> dict[str, int]:
+    """The server's situation ``case`` played ``trials`` times: home players 1..10 in turn
+    (those still on the pitch) tackle the ball at (0.5, 0) held by an away player at (0, 0)
+    (away players 1..4 in turn), towards the case's push direction, with the foul flag as the
+    case says; the holder dashes towards +x as the case says (in the tackle's cycle, or in the
+    cycle before and not in the tackle's). Counts of trials with a foul called, a tackle that
+    reached the ball, a yellow card and a red card."""
+    pitch = TacklePitch(noiseless(), seed=seed)
+    counts = dict.fromkeys(("foul_called", "tackled", "yellow_card", "red_card"), 0)
+    holder_vx = -TURNED_AWAY_SPEED if case["holder_body"] == 180.0 else 0.0
+    dash = HOLDER_DASH_POWER.get(case["holder"], 0.0) * PhysicsConfig().dash_power_rate
+    for n in range(trials):
+        on_pitch = [p for p in range(1, N_TEAM) if pitch.state.present[p]]
+        tackler, victim = on_pitch[n % len(on_pitch)], N_TEAM + 1 + n % VICTIMS
+        while pitch.state.frozen[tackler] or pitch.state.frozen[victim]:
+            pitch.step()
+        pitch.park()
+        pitch.place(tackler, *case["tackler"])
+        pitch.place(victim, 0.0, 0.0, holder_vx, 0.0)
+        pitch.ball(0.5, 0.0)
+        since = len(pitch.match.events.kind)
+        if case["holder"] == "dashed_before":
+            pitch.away.dash[victim - N_TEAM] = (-dash, 0.0)  # the away frame is turned by 180°: towards +x
+            pitch.step()
+            pitch.place(victim, *pitch.state.pos[victim], holder_vx, 0.0)
+        elif case["holder"] in ("dash_first", "dash_after"):
+            pitch.away.dash[victim - N_TEAM] = (-dash, 0.0)
+        pitch.home.tackle[tackler] = case["push_dir"]
+        pitch.home.foul[tackler] = case["flag"] == "on"
+        pitch.step()
+        events = pitch.match.events
+        tackle = [d for k, d in zip(events.kind[since:], events.detail[since:]) if k == int(EventKind.TACKLE)]
+        assert len(tackle) == 1
+        counts["tackled"] += bool(tackle[0] & 1)
+        counts["foul_called"] += count(pitch, EventKind.FOUL, since) > 0
+        counts["yellow_card"] += count(pitch, EventKind.YELLOW_CARD, since) > 0
+        counts["red_card"] += count(pitch, EventKind.RED_CARD, since) > 0
+        pitch.step()
+    return counts
+
+
+@pytest.mark.parametrize("label", [label for label in foul_rule_cases() if label != "off_behind_dash_after"])
+def test_the_foul_rule_calls_a_tackle_on_a_ball_holder_as_the_server_does(label: str) -> None:
+    """Each server situation, 160 trials here (30 where the server showed cards: a tackler's
+    second card sends it off): where the server never called a foul (a tackle without the foul
+    flag on a holder that did not dash, that faces away from the ball, or that is not between
+    the tackler and the ball) none is called here; elsewhere (a foul tackle on any holder; a
+    tackle without the flag that charges a holder who dashed in this cycle or the one before,
+    from behind or the side) the called share agrees with the server's within 2.5 standard
+    errors; tackles reach the ball as often (3 standard errors), and cards come only where the
+    server showed them."""
+    server = foul_rule_cases()[label]
+    trials = 30 if server["yellow_card"] else 160
+    ours = foul_rule_trials(server, trials, seed=23)
+    if server["foul_called"] == 0:
+        assert ours["foul_called"] == 0, (ours, server)
+    else:
+        assert binomial_share_agrees(ours["foul_called"], trials, server["foul_called"], server["trials"]), (ours, server)
+    assert binomial_share_agrees(ours["tackled"], trials, server["tackled"], server["trials"], sigmas=3.0), (ours, server)
+    assert (ours["yellow_card"] > 0) == (server["yellow_card"] > 0), (ours, server)
+    if server["yellow_card"] == 0:
+        assert ours["red_card"] == 0
+
+
+def test_a_dash_counts_for_the_foul_rule_in_its_cycle_and_the_next() -> None:
+    """rcssserver's ``dashed()`` holds from a dash until the end of the next cycle: a holder
+    charged from behind is called about as often when it dashed the cycle before as when it
+    dashes in the tackle's cycle (the server: 48 of 120 and 49 of 100), and never when it stood
+    (0 of 40). The server counts a dash of the tackle's own cycle only when it was received
+    before the tackle (0 of 40 when received after it); a cycle's commands here have no order,
+    so every dash of the tackle's cycle counts, as the server's dash received first."""
+    cases = foul_rule_cases()
+    assert cases["off_behind_stand"]["foul_called"] == cases["off_behind_dash_after"]["foul_called"] == 0
+    first, before = cases["off_behind_dash_first"], cases["off_behind_dashed_before"]
+    assert binomial_share_agrees(first["foul_called"], first["trials"], before["foul_called"], before["trials"])
+    after = foul_rule_trials(cases["off_behind_dash_after"], 160, seed=29)
+    assert binomial_share_agrees(after["foul_called"], 160, first["foul_called"], first["trials"]), (after, first)

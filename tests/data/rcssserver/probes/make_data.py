@@ -1,7 +1,7 @@
 """Trim the raw traces of record.py into the small test data files in tests/data/rcssserver/.
 
 usage: python3 make_data.py RAW_DIR OUT_DIR [FILE ...]   (RAW_DIR holds clean.json, kicknoise.json,
-noisy.json, referee.json and keeper.json from run_probe.sh; with FILEs, e.g. tackle.json, only those are written
+noisy.json, referee.json, keeper.json and foulrule.json from run_probe.sh; with FILEs, e.g. tackle.json, only those are written
 and only the modes they read are needed). Numbers only: metres, metres per cycle, degrees.
 """
 from __future__ import annotations
@@ -22,6 +22,8 @@ PARAMS = {
     "referee": {**NOISE_OFF, "coach_w_referee": True, "foul_detect_probability": 0.5, "foul_exponent": 10.0,
                 "red_card_probability": 0.0},
 }
+PARAMS["foulrule"] = {**PARAMS["referee"], "tackle_dist": 2.0, "tackle_width": 1.25, "tackle_exponent": 6.0,
+                      "foul_cycles": 5, "tackle_cycles": 10}
 
 
 OPTIONS = ("server::synch_mode=true server::coach=true server::game_logging=false "
@@ -240,9 +242,53 @@ def goalkeeper(k: dict) -> dict:
                                                       for i, st in enumerate(leaves) if i >= 8 and st["heard"]]}
 
 
+FOUL_RULE_TRACED = ("off_behind_dash_first", "off_behind_dashed_before", "off_behind_dash_after", "on_front_stand")
+"""The cases whose first trial foul_rule.json keeps as a trace."""
+
+
+def foul_rule(ref: dict) -> dict:
+    """foul_rule.json from the foulrule mode's raw traces (what it holds: its meta)."""
+    cases = {label: {**case, "trials": 0, "tackled": 0, "foul_called": 0, "yellow_card": 0, "red_card": 0}
+             for label, case in ref["cases"].items()}   # the situations as record.py wrote them
+    traces = {}
+    for name, ph in ref.items():
+        if not name.startswith("foulrule_"):
+            continue
+        label, j = name[len("foulrule_"):].rsplit("_", 1)
+        case = cases[label]
+        at = 2 if case["holder"] == "dashed_before" else 1   # the state after the tackle's cycle
+        heard = [h for s in ph[1:] for h in s["heard"]]
+        called = "foul_charge_l" in heard
+        case["trials"] += 1
+        # a tackle that reached the ball pushed it more than 0.8 m away, or the foul put it at the tackler
+        case["tackled"] += called or math.dist(ph[at]["ball"][:2], ph[at - 1]["ball"][:2]) > 0.8
+        case["foul_called"] += called
+        case["yellow_card"] += any(h.startswith("yellow_card") for h in heard)
+        case["red_card"] += any(h.startswith("red_card") for h in heard)
+        if label in FOUL_RULE_TRACED and j == "0":
+            traces[label] = [{"t": s["t"], "ball": [r(v) for v in s["ball"]],
+                              "players": {k: [r(v) for v in p] for k, p in s["p"].items()}, "heard": s["heard"]}
+                             for s in ph]
+    return {"meta": meta(["foulrule"],
+                         "foul calls after tackles on a ball holder: a right player (B1..B4 in turn) at (0, 0) "
+                         "with body holder_body (deg) and the ball at (0.5, 0) within its kickable area; a left "
+                         "player (A1..A11 in turn) at 'tackler', its body facing the ball, sends (tackle DIR "
+                         "flag) pushing towards push_dir (absolute, deg: away from the holder). The holder: "
+                         "'stand' does nothing; 'dash_first' sends (dash 100 0) in the tackle's cycle, received "
+                         "before the tackle; 'dash_after' the same, received after the tackle; 'dashed_before' "
+                         "sends (dash 20 0) in the cycle before the tackle and nothing in its cycle. Counts per "
+                         "case: trials, tackled (the tackle reached the ball: it moved more than 0.8 m in the "
+                         "tackle's cycle, or a foul was called), foul_called (the referee said foul_charge_l), "
+                         "yellow_card, red_card (a second yellow card; red_card_probability is 0). traces: the "
+                         "first trial of some cases, states after the setup cycle and each cycle after it, "
+                         "players [x, y, vx, vy, body, neck], the referee's messages heard"),
+            "cases": cases, "traces": traces}
+
+
 FILES = {"dash.json": (dash, ("clean",)), "kick.json": (kicks, ("clean",)), "contact.json": (contact, ("clean",)),
          "noise.json": (noise, ("kicknoise", "noisy")), "tackle.json": (tackles, ("clean", "referee")),
-         "goalkeeper.json": (goalkeeper, ("keeper",))}
+         "goalkeeper.json": (goalkeeper, ("keeper",)),
+         "foul_rule.json": (foul_rule, ("foulrule",))}
 """Each data file: the function that trims it and the raw modes it reads."""
 
 

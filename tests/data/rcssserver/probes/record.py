@@ -10,6 +10,8 @@ MODE is one of (start the server first, options in README.md):
   referee    noise off, referee on in trainer mode: foul tackles, fouls called, cards
   keeper     noise off, referee on in trainer mode: the goalkeeper's catch, its free kick, moves,
              a dash and the kick that releases the ball; holding until the free kick times out
+  foulrule   as referee: tackles with and without the foul flag on a ball holder, by place, the
+             holder's body and whether (and when) it dashed: which are called
 Every phase: one setup cycle (the trainer places players and ball, `(recover)`, play_on), then
 `cycles` cycles in which a policy sends player commands; the trainer's see_global (exact
 positions and velocities after each cycle) is recorded, state 0 being the one after the setup.
@@ -352,6 +354,70 @@ def keeper(rig: Rig, log: dict) -> None:
           lambda k, s: {"A1": "(catch 0)" if k == 0 else "(dash 100 0)"} if k < 8 else {}, 45)
 
 
+FOUL_RULE_PLACES = {
+    # tackler (x, y) and the push's absolute direction (deg, away from the holder): the ball holder
+    # stands at (0, 0), the ball at (0.5, 0); the tackler faces the ball
+    "behind": (-1.0, 0.0, 0.0),       # the holder between tackler and ball, on the tackle's line
+    "behind_diag": (-0.7, -0.7, 0.0), # the holder between them, 0.25 m off the line
+    "side": (0.0, -1.0, 0.0),         # the holder nearer than the ball, 0.45 m off the line
+    "side_ahead": (0.5, -1.0, 0.0),   # the holder further than the ball: never charged
+    "front": (1.5, 0.0, -90.0),       # the ball between tackler and holder: never charged
+}
+FOUL_RULE_CASES = [
+    # (label, place, holder's body (deg), flag, holder's action, trials); the holder's actions:
+    #   stand: nothing; dash_first: (dash 100 0) sent before the tackle in the tackle's cycle;
+    #   dash_after: (dash 100 0) sent after the tackle in the tackle's cycle;
+    #   dashed_before: (dash 20 0) in the cycle before the tackle, nothing in the tackle's cycle
+    ("off_behind_stand", "behind", 0, "off", "stand", 40),
+    ("off_behind_dash_first", "behind", 0, "off", "dash_first", 100),
+    ("off_behind_dash_after", "behind", 0, "off", "dash_after", 40),
+    ("off_behind_dashed_before", "behind", 0, "off", "dashed_before", 120),
+    ("off_behind_facing_tackler_dash_first", "behind", 180, "off", "dash_first", 40),
+    ("off_behind_diag_dash_first", "behind_diag", 0, "off", "dash_first", 40),
+    ("off_side_dash_first", "side", 0, "off", "dash_first", 40),
+    ("off_side_ahead_dash_first", "side_ahead", 0, "off", "dash_first", 40),
+    ("off_front_dash_first", "front", 0, "off", "dash_first", 40),
+    ("on_front_stand", "front", 0, "on", "stand", 40),
+    ("on_side_stand", "side", 0, "on", "stand", 40),
+    ("on_side_dashed_before", "side", 0, "on", "dashed_before", 16),
+]
+"""The foul rule's situations (mode foulrule): when a tackle on a ball holder is called."""
+
+
+def foul_rule(rig: Rig, log: dict) -> None:
+    """Tackles on a right-team ball holder (B1..B4 in turn) by left players (in turn, those not
+    sent off), each with the tackler placed as FOUL_RULE_PLACES says, facing the ball and pushing
+    it away from the holder (so a tackle that reached the ball moves it more than 0.8 m)."""
+    import math
+    log["cases"] = {label: {"tackler": list(FOUL_RULE_PLACES[place][:2]), "push_dir": FOUL_RULE_PLACES[place][2],
+                            "holder_body": float(body), "flag": flag, "holder": action}
+                    for label, place, body, flag, action, _ in FOUL_RULE_CASES}   # for make_data.py
+    n = 0
+    for label, place, body, flag, action, trials in FOUL_RULE_CASES:
+        tx, ty, push = FOUL_RULE_PLACES[place]
+        facing = math.degrees(math.atan2(0.0 - ty, 0.5 - tx))
+        direction = round((push - facing + 180.0) % 360.0 - 180.0, 3)   # relative to the body
+        for j in range(trials):
+            alive = [a for a in TACKLERS if a in rig.players]
+            t, v = alive[n % len(alive)], f"B{1 + n % 4}"
+            n += 1
+            tackle_at = 1 if action == "dashed_before" else 0
+
+            def pol(k, s, t=t, v=v):
+                orders = {}
+                if k == tackle_at:
+                    orders[t] = f"(tackle {direction} {flag})"
+                if action in ("dash_first", "dash_after") and k == 0:
+                    orders[v] = "(dash 100 0)"
+                if action == "dashed_before" and k == 0:
+                    orders[v] = "(dash 20 0)"
+                return orders
+            first = (t,) if action == "dash_after" else (v,)
+            phase(rig, log, f"foulrule_{label}_{j}", (t, v),
+                  [move(v, 0, 0, body), ball(0.5, 0), move(t, tx, ty, round(facing, 3))],
+                  pol, tackle_at + 2, first=first)
+
+
 def main() -> None:
     mode, out = sys.argv[1], sys.argv[2]
     player_port = int(sys.argv[3]) if len(sys.argv) > 3 else 6000
@@ -361,7 +427,8 @@ def main() -> None:
     rig.wait_think()
     log: dict = {}
     try:
-        {"clean": clean, "kicknoise": kicknoise, "noisy": noisy, "referee": referee, "keeper": keeper}[mode](rig, log)
+        {"clean": clean, "kicknoise": kicknoise, "noisy": noisy, "referee": referee, "keeper": keeper,
+         "foulrule": foul_rule}[mode](rig, log)
     finally:
         with open(out, "w") as f:
             json.dump(log, f)

@@ -13,7 +13,7 @@ case $mode in
   clean)     extra="$noise_off" ;;
   kicknoise) extra="server::player_rand=0 server::ball_rand=0" ;;
   noisy)     extra="" ;;
-  referee|keeper) extra="$noise_off server::coach_w_referee=true" ;;
+  referee|keeper|foulrule) extra="$noise_off server::coach_w_referee=true" ;;
   *) echo "unknown mode: $mode" >&2; exit 2 ;;
 esac
 exec unshare -rn bash -c '
