@@ -44,7 +44,7 @@ from agents import skills
 from agents.messages import CYCLE_MODULUS, MESSAGE_LENGTH, WORLD_GRID, digit_messages
 from agents.roles import RoleAssigner, RoleContext, offensive_order
 from agents.roles.voting import VoteBook
-from agents.skills.interception import BallRace, Interception
+from agents.skills.interception import UNREACHABLE, BallRace, Interception
 from agents.skills.movement import DEFAULT_PACING
 from agents.skills.player_kernels import Bodies
 from agents.skills.pacing import pacing_constants
@@ -231,7 +231,6 @@ class Pipeline:
         self._mode_since = 0
         self.cycles = 0
         """Cycles this pipeline has acted (0: no assignment made yet)."""
-        self._situation = Situation.NORMAL
         self._play_on_cycles = self._conflict_cycles = self._unfilled_cycles = 0
         self._goal_kick_keeper = style.goalkeeper_goal_kicks and goalie >= 0
         sp, third = style.shape, model.half_length / 3.0
@@ -315,12 +314,9 @@ class Pipeline:
         # 2.-4. the derived world of each belief, its roles, every player's goal
         n_rows, n_out, n_beliefs, n_due = plan_cycle(s, self._deciding, int(mode), placed, senses.saw, cycle)
         beliefs = self._belief_rows[:n_beliefs]
-        attacking_any = bool(self.attacking[beliefs].any()) if play_on else False
-        situation = situation_of(mode, ours, attacking_any)
-        other = _OTHER.get(situation, NORMAL)
+        other = _OTHER.get(situation_of(mode, ours, False), NORMAL)  # (in play on each belief's own)
         derive_worlds(s, n_beliefs, play_on, mode == PlayMode.AFTER_GOAL, other,
                       play_on and not self.style.stationary, senses.saw, cycle)
-        self._situation = situation_of(mode, ours, bool(self.attacking[0]))
         if placed:
             self.proposals[beliefs] = self.followed[beliefs] = self.following[beliefs] = \
                 np.arange(self.proposals.shape[1])
@@ -389,7 +385,6 @@ class Pipeline:
     def _race(self, b: int) -> BallRace:
         """Belief ``b``'s ball race of this cycle as the skills read it."""
         first, their_first = int(self.our_first[b]), int(self.their_first[b])
-        from agents.skills.interception import UNREACHABLE
         first_cycle = int(self.our_cycles[b, first]) if first >= 0 else UNREACHABLE
         return BallRace(Interception(self.our_cycles[b], self.our_points[b], first, first_cycle),
                         Interception(self.their_cycles[b], self.their_points[b], their_first,
