@@ -257,7 +257,7 @@ class Pipeline:
             attack_push=float(shape.attack_push), knobs=shape.settle_record,
             outfield_roles=shape.outfield_roles, back_roles=shape.back_roles, x_limit=model.half_length - 2.0,
             forwards=setup.forward_roles, narrowing=1.0 - style.box_narrowing, narrow_x=third,
-            role_codes=behaviours.codes, role_params=behaviours.packed,
+            role_codes=behaviours.codes, role_params=behaviours.record,
             is_forward=shape.is_forward, is_back=shape.is_back, offsets=shape.offsets,
             support_players=sp.support_players, support_pressure=sp.support_pressure,
             support_horizon=sp.support_horizon, third_x=third, support_knobs=shape.support_record,

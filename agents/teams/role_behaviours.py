@@ -33,11 +33,12 @@ microseconds per cycle.
 from __future__ import annotations
 
 import math
-from dataclasses import astuple, dataclass
+from dataclasses import astuple, dataclass, fields
 
 import numpy as np
 from numba import njit
 
+from soccer_sim.kernels import make_record
 from soccer_sim.rules.offside import offside_line
 from agents.teams import positions
 from formations import FormationSet
@@ -106,6 +107,12 @@ class RoleParams:
                 raise ValueError(f"RoleParams.{name} must lie in [0, 1], not {getattr(self, name)!r}")
 
 
+ROLE_PARAMS = np.dtype([(field.name, np.float64) for field in fields(RoleParams)]
+                       + [("half_length", np.float64), ("half_width", np.float64)])
+"""The record :func:`adjust_role_targets` reads: :class:`RoleParams`' fields (which document
+them) and the field's half length and half width (m)."""
+
+
 class RoleBehaviours:
     """The role behaviours of one team for one match: ``adjust`` moves the role targets."""
 
@@ -115,25 +122,28 @@ class RoleBehaviours:
         self.codes = positions.position_codes(formation_set)
         """Each role's position code (index into :data:`agents.teams.positions.POSITIONS`)."""
         p = self.params
-        self.packed = np.array([*astuple(p), half_length, half_width], dtype=np.float64)
-        """The parameters as :func:`adjust_role_targets` reads them (:class:`RoleParams` in field
-        order, then the half length and half width)."""
+        self.record = make_record(ROLE_PARAMS, half_length=half_length, half_width=half_width,
+                                  **{field.name: getattr(p, field.name) for field in fields(p)})
+        """The parameters and the field's half length and half width as one :data:`ROLE_PARAMS`
+        record, as :func:`adjust_role_targets` reads them."""
 
     def adjust(self, targets: np.ndarray, attacking: bool, ball: np.ndarray, opp_pos: np.ndarray) -> None:
         """Move ``targets`` ((roles, 2), team frame, in place) by each role's behaviour for the
         ball at ``ball`` (where it will be controlled) and the opponents at ``opp_pos``."""
-        adjust_role_targets(targets, self.codes, opp_pos, float(ball[0]), float(ball[1]), attacking, self.packed)
+        adjust_role_targets(targets, self.codes, opp_pos, float(ball[0]), float(ball[1]), attacking, self.record)
 
 
 @njit(cache=True, nogil=True)
 def adjust_role_targets(targets: np.ndarray, codes: np.ndarray, opp_pos: np.ndarray, ball_x: float,
-                        ball_y: float, attacking: bool, p: np.ndarray) -> None:  # pragma: no cover - compiled
-    """The behaviours of the module docstring, in place; ``p`` is :class:`RoleParams` in field
-    order followed by the half length and half width."""
-    (mark_radius, mark_distance, back_line_gap, overlap_push, overlap_width, side_margin, tuck_in, screen_gap,
-     hold_behind, support_distance, winger_width, wide_mid_width, behind_line, forward_floor, back_line_limit,
-     half_length, half_width) = (p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11],
-                                 p[12], p[13], p[14], p[15], p[16])
+                        ball_y: float, attacking: bool, params: np.ndarray) -> None:  # pragma: no cover - compiled
+    """The behaviours of the module docstring, in place; ``params``: a :data:`ROLE_PARAMS` record."""
+    p = params[0]
+    mark_radius, mark_distance, back_line_gap = p.mark_radius, p.mark_distance, p.back_line_gap
+    overlap_push, overlap_width, side_margin, tuck_in = p.overlap_push, p.overlap_width, p.side_margin, p.tuck_in
+    screen_gap, hold_behind, support_distance = p.screen_gap, p.hold_behind, p.support_distance
+    winger_width, wide_mid_width, behind_line = p.winger_width, p.wide_midfielder_width, p.behind_line
+    forward_floor, back_line_limit = p.forward_floor, p.back_line_limit
+    half_length, half_width = p.half_length, p.half_width
     n = targets.shape[0]
     line = offside_line(opp_pos[:, 0], ball_x) - behind_line
     final_third = ball_x > half_length / 3.0
