@@ -87,6 +87,13 @@ ON_BALL_DISTANCE = 2.2
 """A player who believes the ball within this (m) decides on the ball (a kick, a dribble, a
 tackle: rcssserver's ``tackle_dist`` is 2 m, the kickable distance about 1 m)."""
 
+GUARD_STEP = 0.5
+"""How far (m) a player takes an opponent to have stepped up towards our attack (-x) in each
+cycle since it was last seen, for the offside line it keeps to (:func:`~agents.teams.pipeline_kernels.guard_line_x`):
+a back line steps up at about half a sprint (rcssserver's ``player_speed_max`` is 1.05 m/cycle)."""
+GUARD_CYCLES = 6
+"""... counted for at most this many cycles (3 m at most: a forward stays playable, not deep)."""
+
 VOTE_HORIZON = 20
 """Cycles a heard vote counts (2 s: the assignment moves on with the ball)."""
 
@@ -244,8 +251,9 @@ class Pipeline:
         shape = self.shape
         self.state: PipelineState = state_of(dict(
             ball=world.ball, ball_vel=world.ball_vel, ball_age=world.ball_age, mate_pos=world.mate_pos,
-            mate_vel=world.mate_vel, mate_effort=world.mate_effort, opp_pos=world.opp_pos, opp_vel=world.opp_vel,
-            opp_effort=np.ones(m), belief_of=world.belief_of, able=self.able, ball_gap=np.zeros(rows),
+            mate_vel=world.mate_vel, mate_effort=world.mate_effort, opp_pos=world.opp_pos, opp_age=world.opp_age,
+            opp_vel=world.opp_vel, opp_effort=np.ones(m), guard_x=np.zeros((rows, m)), guard_step=float(GUARD_STEP),
+            guard_cycles=int(GUARD_CYCLES), belief_of=world.belief_of, able=self.able, ball_gap=np.zeros(rows),
             assigned_at=self._assigned_at, assigned_mode=self._assigned_mode, assign_every=int(ASSIGN_EVERY),
             steers=bool(self._steers), first_outfield=int(outfield[0]) if k else -1, votes=votes[0],
             vote_cycle=votes[1], vote_horizon=votes[2],

@@ -155,6 +155,19 @@ def _read_play(s, b: int, play_on: bool, saw: bool, cycle: int) -> None:  # prag
 
 
 @njit(cache=True, nogil=True)
+def guard_line_x(s, b: int) -> np.ndarray:  # pragma: no cover - compiled
+    """Belief ``b``'s opponents' x as its players keep onside against (into ``s.guard_x[b]``):
+    each opponent's believed x less ``guard_step`` m for every cycle since it was seen (at most
+    ``guard_cycles``), as far up as it may have stepped meanwhile; under full observation (every
+    age 0) the believed x itself. The offside line a belief's players keep to is
+    :func:`~soccer_sim.rules.offside.offside_line` of these."""
+    out = s.guard_x[b]
+    for j in range(out.shape[0]):
+        out[j] = s.opp_pos[b, j, 0] - s.guard_step * min(s.opp_age[b, j], s.guard_cycles)
+    return out
+
+
+@njit(cache=True, nogil=True)
 def _query(s, b: int, play_on: bool, after_goal: bool, other: int) -> None:  # pragma: no cover - compiled
     """Belief ``b``'s formation targets (into ``targets[b]``, roles x 2): in play on the
     attacking or the defending formation at its block's query point, otherwise the formation
@@ -191,8 +204,8 @@ def _settle(s, b: int, play_on: bool) -> None:  # pragma: no cover - compiled
     if shifted or narrowed:
         shape_targets(targets, s.match_roles[b], shift, shifted, s.x_limit, s.forwards, s.narrowing, narrowed)
     if play_on:
-        adjust_role_targets(targets, s.role_codes, s.opp_pos[b], s.block[b, 0], s.block[b, 1], s.attacking[b],
-                            s.role_params)
+        adjust_role_targets(targets, s.role_codes, s.opp_pos[b], s.guard_x[b], s.block[b, 0], s.block[b, 1],
+                            s.attacking[b], s.role_params)
     if s.stationary:
         return
     settle_targets(targets, s.previous[b], s.outfield_roles, s.back_roles, s.opp_pos[b], s.knobs, s.ball[b, 0], play_on,
@@ -255,7 +268,7 @@ def _support(s, b: int) -> None:  # pragma: no cover - compiled
     players = s.support_players
     out_rows = np.zeros(players, dtype=np.int64)
     out_spots = np.zeros((players, 2))
-    x_max = offside_line(s.opp_pos[b, :, 0], s.ball[b, 0]) - 1.0
+    x_max = offside_line(s.guard_x[b], s.ball[b, 0]) - 1.0
     chosen = support_spots(s.our_points[b, carrier_row], s.targets[b], s.targets[b], candidates[:count], s.opp_pos[b],
                            s.offsets, players, x_max, s.support_knobs, out_rows, out_spots)
     for c in range(chosen):
@@ -272,6 +285,7 @@ def derive_worlds(s, n_beliefs: int, play_on: bool, after_goal: bool, other: int
     (:func:`_settle`) and, with ``support``, its support spots (:func:`_support`)."""
     for d in range(n_beliefs):
         b = s.belief_rows[d]
+        guard_line_x(s, b)
         _read_play(s, b, play_on, saw[b], cycle)
         _query(s, b, play_on, after_goal, other)
         _settle(s, b, play_on)
@@ -322,7 +336,7 @@ def player_goals(s, n_rows: int, n_beliefs: int, play_on: bool) -> None:  # prag
             gx, gy = s.targets[b, role, 0], s.targets[b, role, 1]
         if play_on:
             if not s.stationary:
-                limit = offside_line(s.opp_pos[b, :, 0], s.ball[b, 0]) - s.offside_margin
+                limit = offside_line(s.guard_x[b], s.ball[b, 0]) - s.offside_margin
                 if gx > limit:
                     gx = max(limit, 0.0)
             first = ball_player(s, b)

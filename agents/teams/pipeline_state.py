@@ -19,8 +19,10 @@ from numba.experimental import structref
 
 FIELDS = (
     # the beliefs (the world model's arrays: row b is one believer's) and who takes which
-    "ball", "ball_vel", "ball_age", "mate_pos", "mate_vel", "mate_effort", "opp_pos", "opp_vel", "opp_effort",
-    "belief_of", "able", "ball_gap",
+    "ball", "ball_vel", "ball_age", "mate_pos", "mate_vel", "mate_effort", "opp_pos", "opp_age", "opp_vel",
+    "opp_effort", "belief_of", "able", "ball_gap",
+    # the offside line each belief keeps its players behind
+    "guard_x", "guard_step", "guard_cycles",
     # who assigns, and the votes heard
     "assigned_at", "assigned_mode", "assign_every", "steers", "first_outfield", "votes", "vote_cycle", "vote_horizon",
     # the ball race

@@ -130,13 +130,17 @@ class RoleBehaviours:
     def adjust(self, targets: np.ndarray, attacking: bool, ball: np.ndarray, opp_pos: np.ndarray) -> None:
         """Move ``targets`` ((roles, 2), team frame, in place) by each role's behaviour for the
         ball at ``ball`` (where it will be controlled) and the opponents at ``opp_pos``."""
-        adjust_role_targets(targets, self.codes, opp_pos, float(ball[0]), float(ball[1]), attacking, self.record)
+        adjust_role_targets(targets, self.codes, opp_pos, np.ascontiguousarray(opp_pos[:, 0]), float(ball[0]),
+                            float(ball[1]), attacking, self.record)
 
 
 @njit(cache=True, nogil=True)
-def adjust_role_targets(targets: np.ndarray, codes: np.ndarray, opp_pos: np.ndarray, ball_x: float,
-                        ball_y: float, attacking: bool, params: np.ndarray) -> None:  # pragma: no cover - compiled
-    """The behaviours of the module docstring, in place; ``params``: a :data:`ROLE_PARAMS` record."""
+def adjust_role_targets(targets: np.ndarray, codes: np.ndarray, opp_pos: np.ndarray, line_x: np.ndarray,
+                        ball_x: float, ball_y: float, attacking: bool,
+                        params: np.ndarray) -> None:  # pragma: no cover - compiled
+    """The behaviours of the module docstring, in place; ``line_x`` (m,): the opponents' x the
+    offside line is drawn from (their x as believed, or as far up as they may have stepped
+    since seen); ``params``: a :data:`ROLE_PARAMS` record."""
     p = params[0]
     mark_radius, mark_distance, back_line_gap = p.mark_radius, p.mark_distance, p.back_line_gap
     overlap_push, overlap_width, side_margin, tuck_in = p.overlap_push, p.overlap_width, p.side_margin, p.tuck_in
@@ -145,7 +149,7 @@ def adjust_role_targets(targets: np.ndarray, codes: np.ndarray, opp_pos: np.ndar
     forward_floor, back_line_limit = p.forward_floor, p.back_line_limit
     half_length, half_width = p.half_length, p.half_width
     n = targets.shape[0]
-    line = offside_line(opp_pos[:, 0], ball_x) - behind_line
+    line = offside_line(line_x, ball_x) - behind_line
     final_third = ball_x > half_length / 3.0
     # Attacking full-backs stay inside the narrowest wide attacker (who keep the touchline).
     wide_floor = 1.0

@@ -99,6 +99,8 @@ class TruthBeliefs:
         self.mate_vel = np.zeros((1, n, 2))
         self.mate_effort = np.ones((1, n))
         self.opp_pos = np.zeros((1, m, 2))
+        self.opp_age = np.zeros((1, m), dtype=np.int64)
+        """(1, m) cycles since each opponent's position was seen: 0, the truth is always current."""
         self.opp_vel = np.zeros((1, m, 2))
         self.belief_of = np.zeros(n, dtype=np.int64)
         """(n,) the belief row each player takes its world from: row 0 for all."""
