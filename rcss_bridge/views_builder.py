@@ -6,7 +6,7 @@ Per step and player (rows: shirt number - 1; a shirt not connected is a row with
 ``present`` False and NaN everywhere):
 
 * ``sense_body``: stamina, effort, capacity; ``frozen`` = the longer of the tackle's and the
-  foul's remaining steps; ``present`` False once shown a red card; the sensed velocity (the
+  foul's remaining steps; ``cards`` from its ``card``; ``present`` False once shown a red card; the sensed velocity (the
   speed's direction is relative to the face).
 * ``see`` (``saw``): the self-localisation of :mod:`rcss_bridge.localisation` (``localised``
   when it found a position); the ball and the players at the reported distance and direction
@@ -37,6 +37,9 @@ from soccer_sim.perception.views import OPPONENT, TEAMMATE, UNKNOWN_SIDE, Player
 
 from rcss_bridge.localisation import localise, wrap
 from rcss_bridge.messages import Hear, Message, See, SenseBody, TypeChange
+
+CARD_COUNTS = {"none": 0, "yellow": 1, "red": 2}
+"""sense_body's ``card`` as :attr:`PlayerViews.cards` counts it (2: sent off, as the simulator counts)."""
 from rcss_bridge.play_modes import RefereeState
 
 
@@ -69,7 +72,8 @@ class ViewsBuilder:
             ball=np.full((n, 2), np.nan), ball_distance=np.full(n, np.nan), ball_direction=np.full(n, np.nan),
             seen_count=np.zeros(n, dtype=np.int64), seen_position=np.full((n, k, 2), np.nan),
             seen_distance=np.full((n, k), np.nan), seen_direction=np.full((n, k), np.nan),
-            seen_side=np.zeros((n, k), dtype=np.int8), seen_number=np.full((n, k), -1, dtype=np.int8))
+            seen_side=np.zeros((n, k), dtype=np.int8), seen_number=np.full((n, k), -1, dtype=np.int8),
+            cards=np.zeros(n, dtype=np.int64))
         """The views, overwritten by every :meth:`update` (as the simulator's are)."""
 
     @property
@@ -129,6 +133,7 @@ class ViewsBuilder:
     def _sense(self, row: int, sense: SenseBody, see: See | None) -> None:
         views, s = self.views, self.sign
         views.present[row] = sense.card != "red"
+        views.cards[row] = CARD_COUNTS.get(sense.card, 0)
         views.stamina[row], views.effort[row], views.capacity[row] = sense.stamina, sense.effort, sense.capacity
         views.frozen[row] = max(sense.tackle_expires, sense.foul_charged)
         self._neck[row] = sense.head_angle

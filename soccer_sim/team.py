@@ -133,6 +133,9 @@ class TeamView:
     """(n,) int: cycles during which each player still cannot act (after a tackle,
     ``TackleConfig.tackle_cycles``, or after being fouled, ``foul_cycles``); its commands are
     ignored while above zero. Zeros in a view built by hand."""
+    cards: np.ndarray | None = None
+    """(n,) int: each of our players' yellow cards (rcssserver's sense_body ``card``: 0 or 1;
+    2 once a second one sent the player off). None in a view built by hand: nobody is carded."""
     own_types: np.ndarray | None = None
     """(n,) int: each of our players' heterogeneous player type, an index into
     ``SideInfo.player_types`` (0: the default type; fixed for the match). Zeros in a view

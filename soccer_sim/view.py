@@ -64,7 +64,7 @@ class TeamFrame:
             own_pos=self._pos[own], own_vel=self._vel[own], opp_pos=self._pos[opp], opp_vel=self._vel[opp],
             ball=self._pos[total], ball_vel=self._vel[total], stamina=np.empty(n), effort=np.empty(n),
             capacity=np.empty(n), present=_read_only(state.present[own]), opp_present=_read_only(state.present[opp]),
-            frozen=_read_only(state.frozen[own]),
+            frozen=_read_only(state.frozen[own]), cards=_read_only(state.cards[own]),
             own_types=None if type_ids is None else _read_only(type_ids[own]),
             opp_types=None if type_ids is None else _read_only(type_ids[opp]),
         )

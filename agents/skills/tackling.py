@@ -36,14 +36,14 @@ taken; near our goal one over our goal line wide of the posts (a corner kick) is
 faces that line, a shot deflected sideways keeps going towards the line, and a corner is
 better than a weak poke the opponent keeps.
 
-**Foul tackles** (:attr:`TackleParams.professional_fouls`): a foul tackle succeeds more
-easily (``foul_exponent``), does not freeze the tackler when it pushes the ball, and stops
-the opponent on the ball for ``foul_cycles``; but the referee sees it half the time (a free
-kick for the opponents where the tackler stands, kept out of our penalty area) and may card
-it. The team uses one only to stop an opponent through on goal: ball in our half and none of
-our outfield players but the tackler nearer our goal than the ball; and each player at most
-once a match, so that nobody collects a second yellow card (ordinary tackles are never
-carded by the simulator's referee).
+**Foul tackles** (:attr:`TackleParams.foul_tackles`): a foul tackle succeeds more easily
+(``foul_exponent``), does not freeze the tackler when it pushes the ball, and stops the
+opponent on the ball for ``foul_cycles``; but the referee sees it half the time (a free kick
+for the opponents where the tackler stands, kept out of our penalty area), and a seen foul on
+an opponent the tackler charges is a yellow card. As helios-base's basic tackle does, a
+player without a card tackles with the foul flag whenever the ball is outside our penalty
+area (by :attr:`TackleParams.foul_area_margin`) and the foul tackle is the likelier to
+succeed; once carded it tackles fairly, so that it is not sent off by a second yellow card.
 """
 
 from __future__ import annotations
@@ -103,19 +103,23 @@ class TackleParams:
     """The goalkeeper's threshold for such a save: the alternative is a goal."""
     block_speed: float = 1.0
     """A block is only for a ball at least this fast (m/cycle): a kicked ball, not one rolling out."""
-    professional_fouls: bool = True
-    """Use a foul tackle to stop an opponent through on goal in our half (see the module
-    docstring); False: never foul on purpose."""
+    foul_tackles: bool = True
+    """Tackle with the foul flag while uncarded and outside our penalty area, as helios-base
+    does (see the module docstring); False: never foul on purpose."""
+    foul_area_margin: float = 0.5
+    """A foul tackle only for a ball more than this beyond our penalty area's line or side
+    (helios-base's 0.5 m), m."""
     directions: int = 32
     """Directions weighed for the push (evenly spaced)."""
 
     def __post_init__(self) -> None:
-        for name in ("enabled", "blocks", "keeper_saves", "professional_fouls"):
+        for name in ("enabled", "blocks", "keeper_saves", "foul_tackles"):
             if not isinstance(getattr(self, name), bool):
                 raise SkillInputError(f"TackleParams.{name} must be a bool, got {getattr(self, name)!r}")
         check_params(self, fractions=("min_probability", "danger_probability", "shot_probability",
                                         "keeper_probability", "min_score", "corner_value"),
-                     non_negative=("danger_distance", "touchline_weight", "post_margin", "block_speed"),
+                     non_negative=("danger_distance", "touchline_weight", "post_margin", "block_speed",
+                                   "foul_area_margin"),
                      counts=("directions",))
 
 
@@ -165,8 +169,6 @@ class Tackling:
         self._angles = angles
         self._units = np.stack((np.cos(angles), np.sin(angles)), axis=1)
         self._full_push = config.max_tackle_power * config.tackle_power_rate
-        self.fouled = np.zeros(n, dtype=bool)
-        """Which of our players has made a foul tackle this match (never a second one)."""
 
     def occasion(self, view: TeamView, their_cycle: int, our_cycle: int, ours_last: bool) -> Occasion:
         """What this cycle calls for, when none of our players can kick the ball: a tackle on
@@ -222,15 +224,16 @@ class Tackling:
             threshold = params.shot_probability
         else:
             threshold = params.danger_probability if danger else params.min_probability
+        may_foul = self._may_foul(ball)
         best: Tackle | None = None
         for row in np.flatnonzero(able).tolist():
             dx, dy = float(ball[0] - view.own_pos[row, 0]), float(ball[1] - view.own_pos[row, 1])
             vx, vy = float(view.own_vel[row, 0]), float(view.own_vel[row, 1])
             failure, x, y, fx, fy = body_frame_failure(cfg, dx, dy, vx, vy, float(self.inertia[row]), False)
             probability, foul = 1.0 - min(failure, 1.0), False
-            if self._may_foul(view, row):
+            if may_foul and not (view.cards is not None and view.cards[row] > 0):
                 foul_failure = body_frame_failure(cfg, dx, dy, vx, vy, float(self.inertia[row]), True)[0]
-                if 1.0 - foul_failure >= params.danger_probability:
+                if 1.0 - min(foul_failure, 1.0) > probability:
                     probability, foul = 1.0 - min(foul_failure, 1.0), True
             least = params.keeper_probability if row == self.goalie else threshold
             if probability < least or (best is not None and probability <= best.probability):
@@ -238,8 +241,6 @@ class Tackling:
             direction = self.direction(ball, view.ball_vel, math.atan2(fy, fx), math.atan2(y, x), danger)
             if direction is not None:
                 best = Tackle(row, direction, foul, probability)
-        if best is not None and best.foul:
-            self.fouled[best.player] = True
         return best
 
     def direction(self, ball: np.ndarray, ball_vel: np.ndarray, body: float, ball_angle: float,
@@ -278,19 +279,16 @@ class Tackling:
             return None
         return math.degrees(float(self._angles[best]))
 
-    def _may_foul(self, view: TeamView, row: int) -> bool:
-        """Whether ``row`` may use a foul tackle now: an opponent through on goal in our half
-        (no outfield team-mate nearer our goal than the ball), and ``row`` has not fouled yet."""
-        if not self.params.professional_fouls or self.fouled[row] or view.ball[0] >= 0.0:
+    def _may_foul(self, ball: np.ndarray) -> bool:
+        """Whether a player without a card may tackle with the foul flag for the ball at
+        ``ball``: :attr:`TackleParams.foul_tackles`, and the ball more than
+        :attr:`TackleParams.foul_area_margin` beyond our penalty area's line or side."""
+        params, model = self.params, self.model
+        if not params.foul_tackles:
             return False
-        own_goal_x = -self.model.half_length
-        ball_gap = math.hypot(float(view.ball[0]) - own_goal_x, float(view.ball[1]))
-        gaps = np.hypot(view.own_pos[:, 0] - own_goal_x, view.own_pos[:, 1])
-        covering = (gaps < ball_gap) & view.present
-        covering[row] = False
-        if 0 <= self.goalie < covering.size:
-            covering[self.goalie] = False
-        return not covering.any()
+        area_line = -model.half_length + model.penalty_area_length
+        return bool(ball[0] > area_line + params.foul_area_margin
+                    or abs(float(ball[1])) > model.penalty_area_half_width + params.foul_area_margin)
 
 
 def player_inertia(model: MotionModel, player_types: tuple, own_types: tuple[int, ...]) -> np.ndarray:

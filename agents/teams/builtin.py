@@ -37,7 +37,7 @@ LEAVE_VARIANTS: tuple[str, ...] = tuple(f"{a}-leave" for a in ASSIGNER_VARIANTS 
 
 COUNTER_442 = TeamStyle(
     system="4-4-2", depth=-6.0, pressers=1,
-    tackling=TackleParams(min_probability=0.85, professional_fouls=False),
+    tackling=TackleParams(min_probability=0.85, foul_tackles=False),
     decision=replace(ATTACKING_DECISIONS, pass_good=1.0, dribble_clearance=2.0, clear_line=-0.1,
                      passing=PassParams(weight_forward=1.6, weight_space=0.4, max_distance=45.0)),
 )

@@ -239,7 +239,8 @@ class TeamBeliefs:
             self._views = [TeamView(own_pos=np.zeros((n, 2)), own_vel=np.zeros((n, 2)), opp_pos=np.zeros((m, 2)),
                                     opp_vel=np.zeros((m, 2)), ball=np.zeros(2), ball_vel=np.zeros(2),
                                     stamina=np.zeros(n), effort=np.ones(n), capacity=np.full(n, np.inf),
-                                    frozen=np.zeros(n, dtype=np.int64), own_types=own_types,
+                                    frozen=np.zeros(n, dtype=np.int64), cards=np.zeros(n, dtype=np.int64),
+                                    own_types=own_types,
                                     opp_types=opp_types) for _ in range(n)]
         view = self._views[b]
         view.own_pos[:] = self.mate_pos[b]
@@ -252,6 +253,9 @@ class TeamBeliefs:
         view.capacity[:] = views.capacity[b]
         view.frozen[:] = 0
         view.frozen[b] = views.frozen[b]
+        view.cards[:] = 0  # (a player knows its own card only)
+        if views.cards is not None:
+            view.cards[b] = views.cards[b]
         view.play_mode, view.mode_ours, view.score = views.play_mode, views.mode_ours, views.score
         view.cycle, view.half = views.cycle, views.half
         if views.holds_ball[b]:

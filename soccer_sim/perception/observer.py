@@ -72,7 +72,8 @@ class Observer:
         # The views' arrays: written in place every cycle (team frames), windows per team below.
         self._out = out = dict(
             stamina=np.empty(total), effort=np.empty(total), capacity=np.empty(total),
-            frozen=np.empty(total, dtype=np.int64), present=np.empty(total, dtype=bool),
+            frozen=np.empty(total, dtype=np.int64), cards=np.zeros(total, dtype=np.int64),
+            present=np.empty(total, dtype=bool),
             holds_ball=np.zeros(total, dtype=bool), position=np.empty((total, 2)), velocity=np.empty((total, 2)),
             body_direction=np.empty(total), localised=np.empty(total, dtype=bool), saw=np.empty(total, dtype=bool),
             ball_seen=np.empty(total, dtype=bool), ball=np.empty((total, 2)), ball_distance=np.empty(total),
@@ -110,6 +111,7 @@ class Observer:
         self._started = True
         senses_into(state.stamina, state.effort, state.capacity, state.frozen, present, int(state.ball_holder),
                     out["stamina"], out["effort"], out["capacity"], out["frozen"], out["present"], out["holds_ball"])
+        out["cards"][:] = state.cards
         _, heard, messages = self.channel.deliver(state.cycle, self._rng)
         score = state.score.tolist()
         for team, view in enumerate(self.views):

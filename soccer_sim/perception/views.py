@@ -11,7 +11,7 @@ vectorised over its players. Everything is in the team's own frame (attacking +x
 Three sources, as in rcssserver:
 
 * the **referee** (heard by every player every cycle): cycle, half, play mode, score;
-* **sense_body** (every cycle): stamina, effort, recovery capacity, frozen cycles, the
+* **sense_body** (every cycle): stamina, effort, recovery capacity, frozen cycles, its card, the
   player's own velocity (quantised) and body direction, whether it holds the ball;
 * the **see** (when one arrives: :attr:`PlayerViews.saw`; alternately after one and two cycles)
   with the ball and the players in view (:mod:`soccer_sim.perception.see`), and the
@@ -221,6 +221,9 @@ class PlayerViews:
     heard_opponents: Sequence[tuple[str, ...]] = ()
     """Per player, the opponents' messages heard this cycle (speakers not named; a
     :class:`HeardLog` too)."""
+    cards: np.ndarray | None = None
+    """(n,) each player's yellow cards (sense_body's ``card``: 0 or 1; 2 once sent off); None:
+    nobody is carded."""
 
     def __post_init__(self) -> None:
         n = len(self.stamina)

@@ -22,6 +22,8 @@ TACKLES = CONFIG.tackles
 
 
 def tackling(**params) -> Tackling:
+    """Our tackling with ``params``; fair tackles only unless a test asks for foul tackles."""
+    params.setdefault("foul_tackles", False)
     return Tackling(MODEL, TACKLES, np.full(N, MODEL.inertia_moment), 0, TackleParams(**params))
 
 
@@ -39,6 +41,10 @@ def test_a_likely_tackle_on_an_opponents_ball_is_made_towards_their_goal() -> No
     expected = 1.0 - body_frame_failure(TACKLES, 1.4, 0.0, 0.0, 0.0, MODEL.inertia_moment, False)[0]
     assert tackle.probability == pytest.approx(expected) and tackle.probability > 0.8
     assert math.cos(math.radians(tackle.direction)) > 0.9  # straight ahead: up the field
+    foul = tackling(foul_tackles=True).choose(view, Occasion.ON_BALL)  # uncarded, in midfield: the foul tackle
+    foul_expected = 1.0 - body_frame_failure(TACKLES, 1.4, 0.0, 0.0, 0.0, MODEL.inertia_moment, True)[0]
+    assert foul is not None and foul.foul and foul.probability == pytest.approx(foul_expected)
+    assert foul_expected > expected
 
 
 def test_no_tackle_when_the_chance_is_low_or_nobody_is_in_reach() -> None:
@@ -87,26 +93,29 @@ def test_a_push_never_goes_into_our_goal_mouth_but_may_go_behind_for_a_corner() 
         abs(crossing_y((-47.0, 0.0), chosen.direction)) > MODEL.goal_half_width + 2.0
 
 
-def test_a_professional_foul_only_on_an_opponent_through_on_goal_and_once_per_player() -> None:
-    through = dict(own={5: (-21.4, 0.0), 6: (10.0, 5.0)}, opp={9: (-20.9, 0.0)}, ball=(-20.0, 0.0))
+def test_a_foul_tackle_outside_our_penalty_area_until_the_tackler_is_carded() -> None:
     pos = np.array([[30.0 + i, 30.0] for i in range(N)])  # everybody else far up the field
     pos[0] = (-50.0, 0.0)
     pos[5] = (-21.4, 0.0)
-    view = make_view(own=pos, opp=through["opp"], ball=through["ball"])
-    team = tackling()
-    first = team.choose(view, Occasion.ON_BALL)
-    assert first is not None and first.foul and first.player == 5
-    again = team.choose(view, Occasion.ON_BALL)
-    assert again is not None and not again.foul  # no second foul (no second yellow card)
-    covered = pos.copy()
-    covered[4] = (-35.0, 2.0)  # a team-mate goal-side: not through on goal
-    assert not tackling().choose(make_view(own=covered, opp=through["opp"], ball=through["ball"]),
-                                 Occasion.ON_BALL).foul
-    assert not tackling(professional_fouls=False).choose(view, Occasion.ON_BALL).foul
+    view = make_view(own=pos, opp={9: (-20.9, 0.0)}, ball=(-20.0, 0.0))  # in our half, outside the area
+    first = tackling(foul_tackles=True).choose(view, Occasion.ON_BALL)
+    assert first is not None and first.foul and first.player == 5  # as helios-base: foul while uncarded
+    assert tackling(foul_tackles=True).choose(view, Occasion.ON_BALL).foul  # and again: no memory but the card
+    view.cards = np.zeros(N, dtype=np.int64)
+    view.cards[5] = 1
+    carded = tackling(foul_tackles=True).choose(view, Occasion.ON_BALL)
+    assert carded is not None and not carded.foul and carded.player == 5  # a second yellow would send it off
+    view.cards[5] = 0
+    assert not tackling(foul_tackles=False).choose(view, Occasion.ON_BALL).foul
+    area_line = -MODEL.half_length + MODEL.penalty_area_length
+    inside = pos.copy()
+    inside[5] = (area_line - 3.4, 0.0)
+    in_area = tackling(foul_tackles=True).choose(make_view(own=inside, opp={9: (area_line - 2.9, 0.0)}, ball=(area_line - 2.0, 0.0)),
+                                Occasion.ON_BALL)
+    assert in_area is not None and not in_area.foul  # never a foul in our penalty area
     midfield = pos.copy()
     midfield[5] = (8.6, 0.0)
-    assert not tackling().choose(make_view(own=midfield, opp={9: (11.0, 0.0)}, ball=(10.0, 0.0)),
-                                 Occasion.ON_BALL).foul
+    assert tackling(foul_tackles=True).choose(make_view(own=midfield, opp={9: (11.0, 0.0)}, ball=(10.0, 0.0)), Occasion.ON_BALL).foul
 
 
 def test_occasions_blocks_and_the_goalkeepers_dive() -> None:
