@@ -144,8 +144,18 @@ class SafetyParams:
     or clearing across our goal): a defender closed down near its goal line plays safe, as
     real ones do."""
 
+    wing_margin: float = 3.0
+    """The wing kick is as hard as keeps the ball at least this far inside the touchline and the
+    opponents' goal line when it stops, even with an opponent's kick of the same strength
+    towards the same touchline in the same cycle (each takes half the room; m; the full kick
+    when that allows it): a ball knocked away from a contest stays in play rather than going
+    out for their throw."""
+    wing_min_speed: float = 0.5
+    """... but never slower than this (m/cycle): near the touchline the ball must still get
+    away from the opponent."""
+
     def __post_init__(self) -> None:
-        check_params(self, whole=("deep_pressure",))
+        check_params(self, whole=("deep_pressure",), non_negative=("wing_margin", "wing_min_speed"))
         if not isinstance(self.block, SaveParams):
             raise SkillInputError("SafetyParams.block must be a SaveParams")
 
@@ -321,13 +331,21 @@ def safe_kick(ctx: SkillContext, view: TeamView, player: int, choice: BallDecisi
     if deep:
         return BallDecision(OnBallAction.BLOCK, parry_kick(ctx, view, player, params.block), None, None,
                             choice.pressure)
-    return BallDecision(OnBallAction.WING, wing_kick(model, view, player), None, None, choice.pressure)
+    return BallDecision(OnBallAction.WING, wing_kick(model, view, player, params), None, None, choice.pressure)
 
 
-def wing_kick(model: MotionModel, view: TeamView, player: int) -> np.ndarray:
-    """The kick sending the ball hard towards the nearer touchline, a little forwards."""
-    side = 1.0 if view.ball[1] >= 0.0 else -1.0
+def wing_kick(model: MotionModel, view: TeamView, player: int, params: SafetyParams = SafetyParams()) -> np.ndarray:
+    """The kick sending the ball towards the nearer touchline, a little forwards, as hard as
+    keeps it ``params.wing_margin`` inside the touchline and the opponents' goal line when it
+    stops, with half the room (an opponent's kick in the same cycle may add as much; the ball
+    travels ``speed / (1 - ball_decay)`` m), at least ``params.wing_min_speed``."""
+    bx, by = float(view.ball[0]), float(view.ball[1])
+    side = 1.0 if by >= 0.0 else -1.0
     direction = np.array([0.3, side]) / np.hypot(0.3, 1.0)
+    room_y = (model.half_width - params.wing_margin - abs(by)) / abs(direction[1])
+    room_x = (model.half_length - params.wing_margin - bx) / direction[0]
+    speed = max(min(model.kick_speed_max, 0.5 * min(room_x, room_y) * (1.0 - model.ball_decay)),
+                params.wing_min_speed)
     kick, _ = kick_for_velocity(model, view.own_pos[player], view.ball, view.ball_vel,
-                                direction * model.kick_speed_max, player_vel=view.own_vel[player])
+                                direction * min(speed, model.kick_speed_max), player_vel=view.own_vel[player])
     return kick

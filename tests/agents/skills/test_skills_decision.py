@@ -82,3 +82,19 @@ def test_goalkeeper_on_the_ball_never_dribbles() -> None:
     decision = decide_on_ball(CTX, view, 0)
     assert decision.action in (OnBallAction.PASS, OnBallAction.CLEAR)
     assert decision.kick[0] > 0.0
+
+
+def test_a_contested_ball_sent_wide_stops_inside_the_field_even_with_the_mirror_kick() -> None:
+    from agents.skills.decision import SafetyParams, wing_kick
+    from agents.skills.kicking import kick_effectiveness
+    params = SafetyParams()
+    decay, half_width = MODEL.ball_decay, MODEL.half_width
+    for ball_y in (0.0, 8.0, -15.0, 25.0):
+        player = np.array([-1.0, ball_y])
+        view = make_view(own={5: tuple(player)}, ball=(-0.5, ball_y))
+        kick = wing_kick(MODEL, view, 5, params)
+        velocity = kick * kick_effectiveness(MODEL, player, view.ball, kick)  # the ball was at rest
+        travel_y = 2.0 * abs(velocity[1]) / (1.0 - decay)  # with an opponent's equal kick to the same side
+        assert np.sign(velocity[1]) == (1.0 if ball_y >= 0.0 else -1.0) and velocity[0] > 0.0
+        room = half_width - abs(ball_y) - params.wing_margin
+        assert travel_y <= room + 1e-6 or np.hypot(*velocity) <= params.wing_min_speed + 1e-6
