@@ -9,11 +9,14 @@ probe points and opponents; its score is ``min(clearance, clearance_cap) / clear
 goal_weight * cos(angle to the goal)``. Directions whose farthest probe leaves the field
 (less ``field_margin``) are excluded.
 
-**Kick and dash.** The dribbler dashes so that this cycle's displacement is ``speed`` along
-the direction (clipped to its acceleration); the kick sends the ball to the point ``lead``
-ahead of where the dribbler will be after this cycle, so after the move the ball is again
-between the body and the edge of the kickable area (never touching the body, which in
-rcssserver contact mode would stop both). Repeating it every cycle keeps the ball in reach.
+**Kicks and dashes, one a cycle.** A player executes one body command a cycle (rcssserver's
+rule), so the dribbler alternates: it **dashes** (towards ``speed`` along the direction,
+clipped to its acceleration) while the ball, rolling on, stays within its kickable area one
+cycle ahead, in front of it and off its body; otherwise, when it can kick the ball, it
+**kicks** it to the point ``lead`` ahead of where it will be after this cycle (in which it
+only coasts) and ``dashes`` more cycles of running, and then runs after it. A ball out of
+reach that dashing will not bring back is chased: the dash goes towards where the ball will
+be. The ball never touches the body (which in rcssserver's contact mode would stop both).
 """
 
 from __future__ import annotations
@@ -25,7 +28,7 @@ import numpy as np
 
 from agents.skills.context import SkillContext
 from agents.skills.kicking import kick_for_velocity
-from agents.skills.model import SkillInputError, check_params, check_player, float_array
+from agents.skills.model import MotionModel, SkillInputError, check_params, check_player, float_array
 from agents.skills.player_kernels import FAN_PARAMS, FanOut, fan_kernel
 from soccer_sim.kernels import make_record
 from soccer_sim.team import TeamView
@@ -52,10 +55,17 @@ class DribbleParams:
     """Weight of heading towards the goal against clearance."""
     field_margin: float = 1.0
     """Directions whose farthest probe is not this far inside the lines are excluded (m)."""
+    dashes: int = 2
+    """Cycles of running a kick plans for before the ball is again ``lead`` ahead (the kick
+    cycle itself not counted): kick, dash, dash, kick... at dribbling speed."""
+    reach_margin: float = 0.1
+    """A dash keeps the ball only if the ball stays this much inside the kickable distance and
+    this much off the body one cycle ahead (m)."""
 
     def __post_init__(self) -> None:
-        check_params(self, positive=("clearance_cap",), non_negative=("spread_deg", "goal_weight", "field_margin"),
-                     counts=("fan",), fractions=("speed_fraction",))
+        check_params(self, positive=("clearance_cap",), non_negative=("spread_deg", "goal_weight", "field_margin",
+                                                                       "reach_margin"),
+                     counts=("fan", "dashes"), fractions=("speed_fraction",))
         probes = np.asarray(self.probes, dtype=float)
         if probes.ndim != 1 or len(probes) == 0 or not (np.isfinite(probes) & (probes > 0)).all():
             raise SkillInputError(f"DribbleParams.probes must be positive distances, got {self.probes!r}")
@@ -67,14 +77,15 @@ class DribbleParams:
 
 @dataclass(frozen=True)
 class DribblePlan:
-    """One cycle of dribbling: put ``kick`` and ``dash`` into the player's command rows."""
+    """One cycle of dribbling: put ``kick`` and ``dash`` into the player's command rows (one of
+    them is zero: one body command a cycle)."""
 
     direction: np.ndarray
     """(2,) unit vector of the dribble."""
     kick: np.ndarray
-    """(2,) kick request (zero when the ball is not kickable)."""
+    """(2,) kick request (zero on a cycle the dribbler runs)."""
     dash: np.ndarray
-    """(2,) dash acceleration."""
+    """(2,) dash acceleration (zero on a cycle the dribbler kicks)."""
     clearance: float
     """Opponents' margin along the direction (m; large when nobody is near)."""
     score: float
@@ -115,7 +126,7 @@ def _fan(params: DribbleParams) -> tuple[np.ndarray, np.ndarray]:
 def dribble(ctx: SkillContext, view: TeamView, player: int, params: DribbleParams = DribbleParams(),
             direction: np.ndarray | None = None) -> DribblePlan:
     """One cycle of dribbling for ``player``: the best direction of the fan (or ``direction``,
-    a (2,) vector, when given), the dash and the kick that keeps the ball ``lead`` ahead."""
+    a (2,) vector, when given), and this cycle's dash or kick (module docstring)."""
     model = ctx.model
     player = check_player(player, model.players_per_team)
     dirs, clearance, score = dribble_directions(ctx, view, player, params)
@@ -132,19 +143,83 @@ def dribble(ctx: SkillContext, view: TeamView, player: int, params: DribbleParam
             best = int(np.argmax(dirs @ np.array([-px / size, -py / size])))
         ux, uy = dirs[best].tolist()
     effort = float(ctx.arrays(view).ours.effort[player])
-    vx, vy = view.own_vel[player].tolist()
     pace = params.speed_fraction * model.top_speed * effort
-    ax, ay = ux * pace - vx, uy * pace - vy
-    size = math.hypot(ax, ay)
     limit = model.accel_max * effort
-    if size > limit:
-        ax, ay = ax * limit / size, ay * limit / size
-    bx, by = view.ball.tolist()
+    position, velocity = np.array([px, py]), view.own_vel[player].astype(float)
+    ball, ball_vel = view.ball.astype(float), view.ball_vel.astype(float)
+    heading = np.array([ux, uy])
+    dash = _run(velocity, heading * pace, limit)
     kick = np.zeros(2)
-    if (bx - px) ** 2 + (by - py) ** 2 <= model.kickable_distance ** 2:
-        lead = params.lead if params.lead is not None else 0.5 * (model.touch_distance + model.kickable_distance)
-        wanted = np.array([px + vx + ax + ux * lead - bx, py + vy + ay + uy * lead - by])
-        kick, _ = kick_for_velocity(model, view.own_pos[player], view.ball, view.ball_vel, wanted,
-                                    player_vel=view.own_vel[player])
-    return DribblePlan(direction=np.array([ux, uy]), kick=kick, dash=np.array([ax, ay]),
-                       clearance=float(clearance[best]), score=float(score[best]))
+    if not _keeps_ball(model, position + _moved(model, velocity, dash), ball + ball_vel, heading, params):
+        gap = ball - position
+        if gap @ gap <= model.kickable_distance ** 2:
+            kick = _kick_ahead(model, view, player, heading, pace, limit, params)
+            dash = np.zeros(2)
+        else:  # chase: run towards where the ball will be
+            dash = _run(velocity, _toward(ball + ball_vel - position, pace), limit)
+    return DribblePlan(direction=heading, kick=kick, dash=dash, clearance=float(clearance[best]),
+                       score=float(score[best]))
+
+
+def _run(velocity: np.ndarray, wanted: np.ndarray, limit: float) -> np.ndarray:
+    """The dash acceleration towards the velocity ``wanted``, at most ``limit`` long."""
+    accel = wanted - velocity
+    size = math.hypot(*accel)
+    return accel * (limit / size) if size > limit else accel
+
+
+def _toward(offset: np.ndarray, pace: float) -> np.ndarray:
+    """A velocity of ``pace`` along ``offset`` (zero for a zero offset)."""
+    size = math.hypot(*offset)
+    return offset * (pace / size) if size > 1e-9 else np.zeros(2)
+
+
+def _moved(model: MotionModel, velocity: np.ndarray, accel: np.ndarray) -> np.ndarray:
+    """How far a player moving at ``velocity`` moves this cycle with ``accel`` (speed clipped to
+    ``player_speed_max``, as the simulator moves it)."""
+    moved = velocity + accel
+    speed = math.hypot(*moved)
+    return moved * (model.speed_max / speed) if speed > model.speed_max else moved
+
+
+def _keeps_ball(model: MotionModel, player_next: np.ndarray, ball_next: np.ndarray, heading: np.ndarray,
+                params: DribbleParams) -> bool:
+    """Whether the ball at ``ball_next`` is within the kickable area of a player at
+    ``player_next`` (by ``reach_margin``), off its body and in front of it along ``heading``."""
+    gap = ball_next - player_next
+    distance = math.hypot(*gap)
+    return (model.touch_distance + params.reach_margin < distance < model.kickable_distance - params.reach_margin
+            and float(gap @ heading) > 0.0)
+
+
+def _kick_ahead(model: MotionModel, view: TeamView, player: int, heading: np.ndarray, pace: float, limit: float,
+                params: DribbleParams) -> np.ndarray:
+    """The kick that puts the ball ``lead`` ahead of where the dribbler will be after this
+    cycle (in which it kicks and coasts) and ``m`` cycles of running at ``pace``: the most
+    cycles up to ``params.dashes`` for which the ball stays within reach and off the body on
+    every cycle between (else the one whose ball strays least)."""
+    position, velocity = view.own_pos[player].astype(float), view.own_vel[player].astype(float)
+    ball = view.ball.astype(float)
+    lead = params.lead if params.lead is not None else 0.5 * (model.touch_distance + model.kickable_distance)
+    path = [position + velocity]  # the kick cycle: no dash, the player coasts
+    moving = velocity * model.player_decay
+    for _ in range(params.dashes):
+        moved = _moved(model, moving, _run(moving, heading * pace, limit))
+        path.append(path[-1] + moved)
+        moving = moved * model.player_decay
+    near, far = model.touch_distance + params.reach_margin, model.kickable_distance - params.reach_margin
+    best, best_stray = None, np.inf
+    for m in range(params.dashes, 0, -1):
+        ball_vel = (path[m] + heading * lead - ball) / model.ball_travel[m + 1]
+        stray = 0.0
+        for k in range(1, m + 1):  # the cycles between the kick and the ball's arrival
+            gap = math.hypot(*(ball + ball_vel * model.ball_travel[k] - path[k - 1]))
+            stray = max(stray, gap - far, near - gap)
+        if stray <= 0.0:
+            best = ball_vel
+            break
+        if stray < best_stray:
+            best, best_stray = ball_vel, stray
+    kick, _ = kick_for_velocity(model, view.own_pos[player], view.ball, view.ball_vel, best,
+                                player_vel=view.own_vel[player])
+    return kick

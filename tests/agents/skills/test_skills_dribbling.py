@@ -1,5 +1,6 @@
-"""Dribbling: the direction avoids opponents and heads for goal; in the real simulator the ball
-stays within reach, off the body, while the dribbler advances."""
+"""Dribbling: the direction avoids opponents and heads for goal; in the real simulator, kicking
+and dashing on alternate cycles (one body command a cycle), the ball stays within reach and off
+the body while the dribbler advances."""
 
 from __future__ import annotations
 
@@ -37,9 +38,6 @@ def test_directions_leaving_the_field_are_excluded() -> None:
     assert plan.direction[1] <= 0.3
 
 
-@pytest.mark.xfail(strict=True, reason="the dribble plans a kick and a dash for the same cycle; with one body "
-                                      "command per player and cycle (rcssserver's rule) the dash is dropped and "
-                                      "the ball runs out of reach: the dribble is to alternate kicks and dashes")
 def test_dribble_keeps_the_ball_in_reach_in_the_simulator() -> None:
     def script(view):
         dash, kick = np.zeros((N, 2)), np.zeros((N, 2))
@@ -59,7 +57,9 @@ def test_dribble_keeps_the_ball_in_reach_in_the_simulator() -> None:
     assert max(gaps) <= CONFIG.physics.kickable_distance
     assert min(gaps) > CONFIG.physics.player_radius + CONFIG.physics.ball_radius  # never touching the body
     start, end = home.views[0]["own_pos"][DRIBBLER], home.views[-1]["own_pos"][DRIBBLER]
-    assert end[0] - start[0] > 15.0  # about 0.7 m per cycle
+    # About 0.45 m a cycle: one body command a cycle, so on the kick cycles (about one in three)
+    # the dribbler only coasts, and its speed decays to 0.4 of itself.
+    assert end[0] - start[0] > 12.0
     # It went round the opponent rather than through it.
     path = np.array([v["own_pos"][DRIBBLER] for v in home.views])
     assert np.min(np.hypot(*(path - (-5.0, 0.5)).T)) > 1.0

@@ -40,7 +40,8 @@ def test_near_their_goal_a_free_player_dribbles_on_instead_of_passing_back() -> 
     carried = carry_kick(CTX, view, P, decision, passing)
     assert carried is not None and carried.action == skills.OnBallAction.DRIBBLE
     kick, dash = carried.kick, carried.dash
-    assert kick[0] > 0.0 and dash[0] > 0.0  # ball and player go on towards the goal
+    # ball or player goes on towards the goal (one body command a cycle: a kick or a dash)
+    assert (kick[0] > 0.0 and not dash.any()) or (dash[0] > 0.0 and not kick.any())
     plan = skills.dribble(CTX, view, P, passing.dribbling)
     np.testing.assert_allclose(kick, plan.kick)
     kick2, dash2, shot = on_ball_kick(CTX, view, P, 0, passing, skills.ball_race(CTX, view), False)
