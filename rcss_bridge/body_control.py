@@ -13,14 +13,16 @@ cycle's one body command (:func:`soccer_sim.body.turn_angle`).
 ``horizon`` cycles with the server's rules (dash rates, effort, the type's
 ``dash_power_rate``, top speed and decay, the turn's reach at each cycle's speed): *dash*, the
 requested acceleration now and every cycle, in the requested direction from the body as it
-is; *turn*, as many turns as the body needs to face the requested direction (at speed a turn
-reaches less), then the same dashes straight ahead. The plan whose displacement along the
+is; *turn*, one turn towards the requested direction (as far as it reaches at the player's
+speed), then the same dashes from the body as turned. The plan whose displacement along the
 requested direction is larger is taken (the dash on a tie); only its first command is sent,
-and the choice is made again every cycle. A request the body's angle lets through in full (a
+and the choice is made again every cycle (so a turn the speed cuts short is followed by
+another when that pays). A request the body's angle lets through in full (a
 gentle one, or one nearly ahead) is always a dash; a strong one well off the body's line waits
-for a turn. With the default horizon (:data:`RUN_HORIZON`, 4 cycles) a player at rest dashes
-within about 43° of its body and turns first beyond that (a full back dash, rate 0.7, just
-loses to a turn and three forward dashes).
+for a turn. With the default horizon (:data:`RUN_HORIZON`, 4 cycles) a full request within
+about 43° of the body is a dash and one beyond it a turn (at rest a full back dash, rate 0.7,
+just loses to a turn and three forward dashes); a moving player asked to go more than about
+120-150° the other way dashes backwards, as its turn would fall short.
 
 **The neck** (:func:`neck_moment`). After the body's command the face (body + neck) is
 turned towards where the ball is believed to be, the neck within ``minneckang`` /
@@ -173,13 +175,14 @@ def _progress(vx: float, vy: float, body: float, want: float, size: float, turn_
               player: PlayerType, rules: ServerRules, horizon: int) -> float:
     """Metres covered along ``want`` in ``horizon`` cycles by a player at velocity (vx, vy)
     with its body at ``body`` that dashes for ``size`` m/cycle² towards ``want`` every cycle,
-    after turning to face it first when ``turn_first`` (server rules, noise aside)."""
+    after turning towards it first, as far as one turn reaches, when ``turn_first`` (server
+    rules, noise aside)."""
     covered = 0.0
     ux, uy = math.cos(math.radians(want)), math.sin(math.radians(want))
-    for _ in range(horizon):
+    for cycle in range(horizon):
         remaining = wrap(want - body)
         ax = ay = 0.0
-        if turn_first and abs(remaining) > ALIGNED:
+        if turn_first and cycle == 0:
             reach = turn_angle(rules.max_moment, math.hypot(vx, vy), player.inertia_moment)
             body += clamp(remaining, -reach, reach)
         else:
