@@ -30,16 +30,22 @@ import time
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
+import numpy as np
+
 from soccer_sim.config import MatchConfig
 from soccer_sim.perception.audio import AudioParams, check_message
 from soccer_sim.perception.views import PlayerViews
 from soccer_sim.state import PlayMode
-from soccer_sim.team import TeamError
+from soccer_sim.team import TeamCommand, TeamError
 
+from rcss_bridge.body_control import ServerRules
+from rcss_bridge.commands import CommandTranslator, PlayerBodies, player_type_commands
+from rcss_bridge.commands import warm_up as warm_up_commands
 from rcss_bridge.connection import Connection, Recorder
-from rcss_bridge.errors import BridgeError, ProtocolError, ServerError, TeamFailure, TeamTooSlow
+from rcss_bridge.errors import BridgeError, CommandError, ProtocolError, ServerError, TeamFailure, TeamTooSlow
 from rcss_bridge.localisation import warm_up
 from rcss_bridge.messages import Message, SenseBody, Think, read_message
+from rcss_bridge.orders import PlayerOrder
 from rcss_bridge.params import ServerParameters
 from rcss_bridge.sexpr import head
 from rcss_bridge.views_builder import ViewsBuilder
@@ -73,15 +79,6 @@ class ClientSettings:
     decision_budget: float = 1.0
     """The longest a team may take to decide one step (under :data:`SERVER_WAIT_SECONDS`,
     leaving time to send)."""
-
-
-@dataclass(frozen=True)
-class PlayerOrder:
-    """One player's commands for one step: ``commands`` as the server reads them (``(dash 80)
-    (turn_neck 10)``; empty for none) and a message to ``say`` (None: nothing)."""
-
-    commands: str = ""
-    say: str | None = None
 
 
 @dataclass
@@ -129,6 +126,8 @@ class TeamClient:
         self.parameters: ServerParameters | None = None
         self.config: MatchConfig | None = None
         self.views: ViewsBuilder | None = None
+        self.translator: CommandTranslator | None = None
+        """The team's command translation (:mod:`rcss_bridge.commands`), made at :meth:`connect`."""
         self.step = -1
         self.server_time = 0
         self._worker: _DecisionWorker | None = None
@@ -146,6 +145,7 @@ class TeamClient:
         """Connect the players and the coach and read the server's parameters (the bridge's
         own compiled kernel is loaded first: nothing may compile once the server waits)."""
         warm_up()
+        warm_up_commands()
         s = self.settings
         order = [s.goalie] + [row for row in range(s.players) if row != s.goalie]
         order = order[: s.players if s.connect is None else s.connect]
@@ -172,6 +172,9 @@ class TeamClient:
             self.views = ViewsBuilder(self.team_name, self.side, s.players,
                                       [t.player_decay for t in self.parameters.types], s.goalie,
                                       first.play_mode or "before_kick_off")
+            self.translator = CommandTranslator(self.team_name, s.players,
+                                                ServerRules.from_server(self.parameters.server),
+                                                self.parameters.types, self.config, s.goalie)
             for conn in self.players.values():
                 conn.send("(synch_see)")
         except BaseException:
@@ -265,6 +268,37 @@ class TeamClient:
         audio = self.config.observation.audio if self.config is not None else AudioParams()
         return {row: command_datagram(orders.get(row, PlayerOrder()), audio, self.team_name, row)
                 for row in self.players}
+
+    def send_command(self, step: Step, command: TeamCommand, ball: np.ndarray | None = None) -> None:
+        """Send the team's ``command`` for ``step`` (:class:`~soccer_sim.team.TeamCommand`,
+        team frame) as each player's one body command, ``turn_neck`` and say
+        (:class:`~rcss_bridge.commands.CommandTranslator`). ``ball``: where each player
+        believes the ball is ((n, 2), team frame; None: where it saw it this step). A command
+        the bridge cannot translate, or a say the server would not take, is a
+        :class:`TeamFailure` naming the player and the step."""
+        if self.translator is None or self.views is None:
+            raise BridgeError("connect() first")
+        try:
+            bodies = PlayerBodies.from_views(step.views, self.views.necks, ball)
+            orders = self.translator.translate(command, bodies, self.views.referee.server_mode)
+            datagrams = self._datagrams(orders)
+        except (CommandError, TeamError) as exc:
+            player = exc.player if exc.player is not None else -1
+            raise TeamFailure(self.team_name, player, step.step, step.server_time,
+                              f"bad command: {exc.message}") from exc
+        for row, datagram in datagrams.items():
+            self.players[row].send(datagram)
+
+    def choose_player_types(self, choice: Sequence[int]) -> None:
+        """Give the players the types of a team's ``choose_player_types`` (type ids by row,
+        of the server's types) through the online coach, one ``(change_player_type UNUM
+        TYPE)`` per player (:func:`~rcss_bridge.commands.player_type_commands`); a
+        :class:`~rcss_bridge.errors.CommandError` for a choice the server would refuse."""
+        if self.parameters is None or self.config is None:
+            raise BridgeError("connect() first")
+        for text in player_type_commands(choice, self.parameters.types, self.settings.players,
+                                         self.config.player_types.pt_max, self.team_name):
+            self.coach_command(text)
 
     def coach_command(self, text: str) -> None:
         """Send one command of the online coach (``(change_player_type 2 5)``)."""

@@ -45,3 +45,20 @@ class TeamFailure(BridgeError, RuntimeError):
 class TeamTooSlow(TeamFailure, TimeoutError):
     """A team's decision for one step took longer than the server waits (its ``(done)`` would
     come after the server had moved on)."""
+
+
+class CommandError(BridgeError, ValueError):
+    """A team's command the bridge cannot translate for the server (a malformed
+    ``TeamCommand``, a player type choice the server would refuse). ``player`` is the row of
+    the player at fault (shirt number - 1), or None when the whole command is."""
+
+    def __init__(self, team_name: str, message: str, player: int | None = None) -> None:
+        where = f"team {team_name!r}" + (f", player {player} (shirt {player + 1})" if player is not None else "")
+        super().__init__(f"{where}: {message}")
+        self.team_name = team_name
+        self.message = message
+        self.player = player
+
+    def __reduce__(self):
+        """Pickle by the constructor's arguments (the error may cross a process boundary)."""
+        return type(self), (self.team_name, self.message, self.player)

@@ -80,6 +80,12 @@ class ViewsBuilder:
     def n(self) -> int:
         return self.views.n
 
+    @property
+    def necks(self) -> np.ndarray:
+        """(n,) each player's neck as its last ``sense_body`` told it (``head_angle``: the
+        face's angle to the body, degrees; a copy)."""
+        return self._neck.copy()
+
     def update(self, step: int, inboxes: Mapping[int, Sequence[Message]]) -> PlayerViews:
         """The views after one step's messages: ``inboxes`` maps each connected player's row to
         the messages it received this step (parsed, in arrival order; when there are several

@@ -31,6 +31,15 @@ DEFAULT_INERTIA_MOMENT = 5.0
 
 
 @njit(cache=True, nogil=True)
+def turn_angle(moment: float, speed: float, inertia_moment: float) -> float:  # pragma: no cover - compiled
+    """rcssserver's turn (``Player::turn``, noise aside): a ``(turn MOMENT)`` of a player moving
+    at ``speed`` (m/cycle) turns its body by ``moment / (1 + inertia_moment * speed)``, in the
+    moment's unit (degrees or radians). With ``moment`` 180° (``maxmoment``) it is the largest
+    turn at that speed."""
+    return moment / (1.0 + inertia_moment * speed)
+
+
+@njit(cache=True, nogil=True)
 def facing(vx: float, vy: float, to_ball_x: float, to_ball_y: float,
            inertia_moment: float) -> tuple[float, float]:  # pragma: no cover - compiled
     """The unit vector a player with velocity ``(vx, vy)`` (m/cycle) faces when the ball lies
@@ -46,7 +55,7 @@ def facing(vx: float, vy: float, to_ball_x: float, to_ball_y: float,
         return bx, by
     mx, my = vx / speed, vy / speed
     angle = math.atan2(mx * by - my * bx, mx * bx + my * by)  # from the motion to the ball, (-pi, pi]
-    largest = math.pi / (1.0 + inertia_moment * speed)
+    largest = turn_angle(math.pi, speed, inertia_moment)
     if abs(angle) <= largest:
         return bx, by
     turn = largest if angle > 0.0 else -largest

@@ -134,3 +134,38 @@ def test_the_step_messages_are_records():
             assert set(step.inboxes) == {0, 1}
             assert any(isinstance(m, SenseBody) for m in step.inboxes[0])
             team.send_step({})
+
+
+def test_a_team_command_goes_out_as_one_body_command_a_neck_turn_and_the_say():
+    """The client's send path for a TeamCommand (rcss_bridge.commands): each connected player's
+    datagram holds at most one body command, then turn_neck and the say, then (done); the
+    coach gives the chosen player types; a malformed command ends with the player and the step."""
+    import numpy as np
+
+    from soccer_sim.team import TeamCommand
+
+    with FakeServer() as server:
+        with TeamClient("BRIDGE", _settings(server)) as team:
+            team.connect()
+            team.choose_player_types([0, 5] + [0] * 9)
+            for _ in range(3):
+                step = team.next_step()
+                dash, kick = np.zeros((11, 2)), np.zeros((11, 2))
+                dash[1] = kick[1] = (0.3, 0.0)  # a kick and a dash: the kick alone goes
+                team.send_command(step, TeamCommand(dash=dash, kick=kick, say=["AB"] + [None] * 10))
+            step = team.next_step()
+            with pytest.raises(TeamFailure, match=r"player 1 \(shirt 2\), step 3 .*command.kick is not finite"):
+                kick[1] = (np.nan, 0.0)
+                team.send_command(step, TeamCommand(dash=dash, kick=kick))
+        time.sleep(0.2)
+    coach = [d for d in server.datagrams["BRIDGE-coach"] if d != "(bye)"]
+    assert coach[:2] == ["(change_player_type 1 0)", "(change_player_type 2 5)"] and len(coach) == 11
+    for name, said in (("BRIDGE-1", ['(say "AB")']), ("BRIDGE-2", [])):
+        datagrams = [d for d in server.datagrams[name] if d not in ("(synch_see)", "(bye)")]
+        assert len(datagrams) == 3
+        for datagram in datagrams:
+            commands = server_commands(datagram)
+            body = [c for c in commands if not c.startswith(("(turn_neck", "(say", "(done"))]
+            assert len(body) <= 1 and commands[-1] == "(done)" and commands[-1 - len(said):-1] == said
+            if name == "BRIDGE-2" and body:
+                assert body[0].startswith("(kick ")
