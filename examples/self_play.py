@@ -9,8 +9,10 @@ The environment's own primitives make the opponent: ``opponent=`` takes any Team
 :meth:`~soccer_sim.env.PolicyTeam.for_env` enters a policy exactly as the environment presents
 it to the learner (same observations in the team's own frame, attacking +x from either side;
 same action mode and horizon). The opponent's policy is a :class:`FrozenPolicy`, a holder whose
-snapshot is replaced at each refresh, so the environment and its opponent are built once. The
-matches must run in this process for the refresh to reach them (SuperSuit ``num_cpus=0``).
+snapshot is replaced at each refresh, so the environments and their opponent are built once. The
+matches run in this process, each built around the same holder (SuperSuit's ``ConcatVecEnv`` of
+``MarkovVectorEnv`` s; its ``concat_vec_envs_v1`` would copy the environment by pickling, and the
+refreshes would not reach the copies).
 
 The scenario is :data:`SMALL_SIDED`, 3 against 3 from a kick-off until a goal (400 cycles at most),
 with the dense rewards, so that both sides face the same task.
@@ -125,18 +127,25 @@ def smoke(episodes: int = 6, cycles: int = 60, refresh_every: int = 2, seed: int
 # ----------------------------------------------------------------------------- PPO (the rl extra)
 def train(args: argparse.Namespace) -> dict:
     """PPO with parameter sharing (SuperSuit + Stable-Baselines3) against the frozen copy."""
-    import supersuit as ss
     import torch
     from stable_baselines3 import PPO
     from stable_baselines3.common.callbacks import BaseCallback
     from stable_baselines3.common.utils import set_random_seed
     from stable_baselines3.common.vec_env import VecMonitor
+    from supersuit.vector import ConcatVecEnv, MarkovVectorEnv
+    from supersuit.vector.sb3_vector_wrapper import SB3VecEnvWrapper
 
     torch.set_num_threads(1)
     set_random_seed(args.seed)
     frozen = FrozenPolicy(lambda observations: np.zeros((len(observations), 5)))  # stands still until the first refresh
-    vec = ss.pettingzoo_env_to_vec_env_v1(make_env(frozen))
-    vec = ss.concat_vec_envs_v1(vec, args.envs, num_cpus=0, base_class="stable_baselines3")  # in process
+
+    def one_match() -> MarkovVectorEnv:
+        """One match sharing ``frozen`` (``ss.concat_vec_envs_v1`` would copy the environment by
+        pickling, and with it the opponent: the refreshes would not reach the copies)."""
+        return MarkovVectorEnv(make_env(frozen))
+
+    first = one_match()
+    vec = SB3VecEnvWrapper(ConcatVecEnv([one_match] * args.envs, first.observation_space, first.action_space))
     vec.venv.reset(seed=args.seed)
     model = PPO("MlpPolicy", VecMonitor(vec), n_steps=512, batch_size=256, seed=args.seed, verbose=0)
 
