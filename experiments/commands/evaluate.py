@@ -2,8 +2,9 @@
 a policy's goal rate and mean score difference on a scenario, with 95 % intervals, over fixed
 evaluation seeds disjoint from training seeds.
 
-POLICY is a registered team name or a ``package.module:Attribute`` path (a PolicyTeam, or a
-factory making one, for a learned policy). It plays the home side of every episode against
+POLICY is a registered team name, a ``package.module:Attribute`` path (a PolicyTeam, or a
+factory making one, for a learned policy) or a saved RL checkpoint named
+``checkpoint:KIND:PATH?OPTION=VALUE&...`` (:mod:`soccer_sim.env.checkpoint_teams`). It plays the home side of every episode against
 ``--opponent``; episode k plays the match seed 2**32 + S + k (the protocol:
 :mod:`experiments.evaluation`). Episodes are stored in ``--out`` as they finish (re-running the
 same command plays only what is missing); the table is printed and written to ``--tables``
@@ -34,8 +35,9 @@ def _add_arguments(parser: argparse.ArgumentParser) -> None:
     from experiments.evaluation import DEFAULT_EPISODES, DEFAULT_OPPONENT
 
     parser.add_argument("policy", metavar="POLICY",
-                        help="the team evaluated: a registered name or a package.module:Attribute path (a PolicyTeam "
-                             "or a factory making one)")
+                        help="the team evaluated: a registered name, a package.module:Attribute path (a PolicyTeam "
+                             "or a factory making one) or a saved RL checkpoint checkpoint:KIND:PATH?OPTION=VALUE&... "
+                             "(KIND: sb3, torch, torchrl, tianshou, rllib; docs/env.md)")
     parser.add_argument("--scenario", required=True, metavar="NAME|FILE",
                         help="the scenario: a name from `soccer-sim scenarios` (full-match for the regular match) or "
                              "a .json/.toml file")

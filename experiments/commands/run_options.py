@@ -135,7 +135,8 @@ def add_team_option(parser: argparse.ArgumentParser, option: str, defaults: tupl
     """A comma-separated team-list option whose help names the defaults and the registered teams."""
     parser.add_argument(option, default=",".join(defaults),
                         help=f"{what}, comma-separated (default: {','.join(defaults)}): registered names "
-                             "(`soccer-sim teams` lists them) or package.module:Attribute paths")
+                             "(`soccer-sim teams` lists them), package.module:Attribute paths or saved RL checkpoints "
+                             "checkpoint:KIND:PATH?OPTION=VALUE&... (docs/env.md)")
 
 
 def run_command(args: argparse.Namespace, kind: str, params_of, build_specs, report, figures=None) -> int:
@@ -188,10 +189,12 @@ def incomplete(summary: RunSummary) -> int:
 
 
 def team_list(text: str, option: str, minimum: int = 1) -> list[str]:
-    """Comma-separated team names, each resolvable (a registered name or an importable
-    ``module:Attribute`` path); a RunInputError naming the closest registered names otherwise
-    (:func:`soccer_sim.registry.unknown_team_message`)."""
+    """Comma-separated team names, each resolvable (a registered name, an importable
+    ``module:Attribute`` path or a loadable checkpoint team ``checkpoint:KIND:PATH?...``); a
+    RunInputError naming the closest registered names, or what is wrong with the checkpoint,
+    otherwise (:func:`soccer_sim.registry.unknown_team_message`)."""
     from soccer_sim import TeamNotFoundError, available_teams, resolve_team
+    from soccer_sim.env.checkpoint_teams import CheckpointError, checkpoint_team, is_checkpoint_name
     from soccer_sim.registry import unknown_team_message
 
     names = [name.strip() for name in text.split(",") if name.strip()]
@@ -201,7 +204,12 @@ def team_list(text: str, option: str, minimum: int = 1) -> list[str]:
         raise RunInputError(f"{option}: needs at least {minimum} team(s), got {text!r}")
     known = available_teams()
     for name in names:
-        if ":" in name:
+        if is_checkpoint_name(name):
+            try:
+                checkpoint_team(name)
+            except CheckpointError as exc:
+                raise RunInputError(f"{option}: {exc}") from None
+        elif ":" in name:
             try:
                 resolve_team(name)
             except TeamNotFoundError as exc:

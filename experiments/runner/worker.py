@@ -87,13 +87,17 @@ class _Watched:
 
 
 def make_team(name: str) -> tuple[object, str]:
-    """(team object, display name) for a registered name, a ``module:Attribute`` path or a
-    mixed-team name (:mod:`experiments.mixed_team`)."""
+    """(team object, display name) for a registered name, a ``module:Attribute`` path, a
+    mixed-team name (:mod:`experiments.mixed_team`) or a checkpoint team name
+    (``checkpoint:KIND:PATH?...``, :mod:`soccer_sim.env.checkpoint_teams`)."""
     from experiments.mixed_team import is_mixed_name, mixed_team
     from soccer_sim import resolve_team
+    from soccer_sim.env.checkpoint_teams import checkpoint_team, is_checkpoint_name
 
     if is_mixed_name(name):
         return mixed_team(name), name
+    if is_checkpoint_name(name):
+        return checkpoint_team(name), name
     return resolve_team(name)
 
 

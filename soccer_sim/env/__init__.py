@@ -1,7 +1,9 @@
 """The PettingZoo interface: :func:`parallel_env` (a ``ParallelEnv``) and :func:`env` (the
 same as an AEC environment), so that PettingZoo's test helpers and multi-agent RL libraries
 take the module as it is; :class:`PolicyTeam` enters a policy written for the environment in
-matches and tournaments. User guide: ``docs/env.md``.
+matches and tournaments, and :func:`load_policy` / :func:`checkpoint_team` a saved checkpoint of
+an RL library (:mod:`soccer_sim.env.checkpoints`, the optional extra ``rl``). User guide:
+``docs/env.md``.
 
 Options (keyword arguments of both):
 
@@ -55,6 +57,8 @@ Options (keyword arguments of both):
 
 from __future__ import annotations
 
+from soccer_sim.env.checkpoint_teams import checkpoint_team
+from soccer_sim.env.checkpoints import CheckpointError, load_policy
 from soccer_sim.env.infos import EVENT_KIND_NAMES, PLAY_MODE_NAMES
 from soccer_sim.env.options import DEFAULT_OPPONENT
 from soccer_sim.env.parallel import SoccerParallelEnv
@@ -78,6 +82,6 @@ def env(**options):
     return to_aec(parallel_env(**options))
 
 
-__all__ = ["ACTION_SIZE", "DEFAULT_OPPONENT", "DENSE", "EVENT_KIND_NAMES", "OBSERVATION_SLOTS", "PLAY_MODE_NAMES",
-           "PolicyTeam", "SoccerParallelEnv", "TERMS", "env", "observation_size", "parallel_env",
-           "partial_observation_size", "vector_env"]
+__all__ = ["ACTION_SIZE", "CheckpointError", "DEFAULT_OPPONENT", "DENSE", "EVENT_KIND_NAMES", "OBSERVATION_SLOTS",
+           "PLAY_MODE_NAMES", "PolicyTeam", "SoccerParallelEnv", "TERMS", "checkpoint_team", "env", "load_policy",
+           "observation_size", "parallel_env", "partial_observation_size", "vector_env"]

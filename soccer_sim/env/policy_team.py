@@ -139,11 +139,15 @@ class PolicyTeam:
         if self._translator is not None:
             if self.action_mask_in_observation and hasattr(self._translator, "action_mask"):
                 self._masks[:] = self._translator.action_mask(view, self._builder.slots)
+            if self.n == 0:
+                return self._translator.command_for(view, np.zeros(0, dtype=np.int64))
             try:
                 choices = check_choices(self._names, self._ask(observations), self._choices, self.action_mode)
             except ValueError as exc:
                 raise TeamError(self.name, str(exc)) from None
             return self._translator.command_for(view, choices)
+        if self.n == 0:  # a side a scenario leaves empty: nothing to ask (a network may refuse an empty batch)
+            return self._decoder.decode(self._actions, view)
         try:
             self._actions[:] = check_actions(self._names, self._rows(self._ask(observations)), self._size)
         except ValueError as exc:

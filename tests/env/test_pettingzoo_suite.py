@@ -4,6 +4,7 @@ subset runs by default; the full matrix is marked slow."""
 
 from __future__ import annotations
 
+import functools
 import itertools
 import warnings
 from dataclasses import replace
@@ -16,8 +17,8 @@ from pettingzoo.test import (api_test, max_cycles_test, parallel_api_test, paral
                              seed_test, state_test)
 
 import soccer_sim.env as soccer_env
-from soccer_sim.env import env, parallel_env
-from soccer_sim.scenarios import get_scenario, scenario_names
+from soccer_sim.env import EVENT_KIND_NAMES, env, parallel_env
+from soccer_sim.scenarios import get_scenario, library, scenario_names
 
 pytestmark = pytest.mark.filterwarnings("ignore::UserWarning")
 CONTROLLED = ("left", "right", "both")
@@ -126,3 +127,68 @@ def test_many_steps_are_determined_by_the_seed_and_actions() -> None:
     assert not np.array_equal(first[0], episode(6, "counter-attack", 400)[0])  # the start is drawn from the seed
     long_a, long_b = episode(2, "full-match", 800), episode(2, "full-match", 800)
     assert len(long_a) == 801 and all(np.array_equal(a, b) for a, b in zip(long_a, long_b))
+
+
+# ----------------------------------------------------------------------------- as a user calls them
+RERUNS = 20
+"""Each check as a user calls it is repeated this many times: no seed, so every rerun plays
+other episodes with other random actions."""
+ENDS_EARLY_BY_DESIGN = {"corner": "corner-until-goal"}
+"""Scenarios whose episodes random actions may end within the 4 cycles of ``max_cycles_test``
+by design (docs/scenarios.md, "Episodes that end early"), with the library variant that
+passes it in their place: a corner kicked out of play is over."""
+
+
+def _as_a_user(scenario: str) -> SimpleNamespace:
+    """The module form PettingZoo's ``max_cycles_test`` takes: the environment makers with the
+    scenario and nothing else (no seed, default options)."""
+    return SimpleNamespace(parallel_env=functools.partial(parallel_env, scenario=scenario),
+                           env=functools.partial(env, scenario=scenario))
+
+
+def _checks_as_a_user(scenario: str, num_cycles: int | None = None) -> None:
+    """PettingZoo's API, seed and max-cycles checks as a user calls them on ``scenario``."""
+    cycles = {} if num_cycles is None else {"num_cycles": num_cycles}
+    parallel_api_test(parallel_env(scenario=scenario), **cycles)
+    api_test(env(scenario=scenario), **cycles)
+    seed_test(functools.partial(env, scenario=scenario), **cycles)
+    parallel_seed_test(functools.partial(parallel_env, scenario=scenario), **cycles)
+    max_cycles_test(_as_a_user(ENDS_EARLY_BY_DESIGN.get(scenario, scenario)))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("scenario", scenario_names())
+def test_every_library_scenario_passes_pettingzoos_checks_as_a_user_calls_them(scenario: str) -> None:
+    for _ in range(RERUNS):
+        _checks_as_a_user(scenario)
+
+
+def test_pettingzoos_checks_as_a_user_calls_them_on_a_few_scenarios() -> None:
+    """The fast representative of the slow test above: one rerun each, shorter API checks."""
+    for scenario in ("3-vs-1-with-keeper", "corner"):
+        _checks_as_a_user(scenario, num_cycles=40)
+    for _ in range(3):
+        max_cycles_test(_as_a_user("corner-until-goal"))
+
+
+def test_a_corner_ends_early_only_when_the_ball_is_kicked_out() -> None:
+    """Why the corner is in ENDS_EARLY_BY_DESIGN: under random actions a fair share of its
+    episodes end within 4 cycles, every one of them by the ball going out of play (the taker
+    kicks it over a line from 1 m inside the corner); its variant plays on."""
+    early = []
+    for seed in range(40):
+        environment = parallel_env(scenario="corner")
+        environment.reset(seed=seed)
+        space = environment.action_space(environment.possible_agents[0])
+        space.seed(seed)
+        steps = 0
+        while environment.agents and steps < 4:
+            *_, infos = environment.step({a: space.sample() for a in environment.agents})
+            steps += 1
+        if not environment.agents:
+            events = next(iter(infos.values()))["events"]
+            early.append({kind for kind in ("out", "goal") if events[EVENT_KIND_NAMES.index(kind)]})
+    assert len(early) >= 5 and all(kinds == {"out"} for kinds in early)
+    corner, variant = library()["corner"], library()[ENDS_EARLY_BY_DESIGN["corner"]]
+    assert variant.end_on == ("goal",) and replace(variant, name=corner.name, description=corner.description,
+                                                   end_on=corner.end_on) == corner

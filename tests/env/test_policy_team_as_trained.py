@@ -109,3 +109,13 @@ def test_bad_actions_and_options_are_refused_naming_what_is_wrong() -> None:
         PolicyTeam(lambda o: 0, action_mask_in_observation=True)
     with pytest.raises(ValueError, match="max_cycles must be a positive integer"):
         PolicyTeam(lambda o: 0, max_cycles=0)
+
+
+@pytest.mark.parametrize("mode", ["low_level", "high_level"])
+def test_a_side_without_players_does_not_ask_the_policy(mode) -> None:
+    def refuse(batch):
+        raise AssertionError(f"asked for {len(batch)} players")
+
+    result = run_match("static", PolicyTeam(refuse, action_mode=mode, batched=True), seed=0, scenario="empty-goal",
+                       config=MatchConfig(max_cycles=30))
+    assert result.cycles > 0

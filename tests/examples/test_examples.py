@@ -78,3 +78,32 @@ def test_partial_team_plays_from_its_own_views_and_beats_idle() -> None:
     assert result.score[0] >= 1 and result.score[1] == 0
     with pytest.raises(TeamError, match="cannot play under full observation"):
         run_match(PartialTeam(), "idle", seed=1, config=replace(config, observation=ObservationConfig()))
+
+
+def test_self_play_enters_the_frozen_copy_as_the_opponent_and_refreshes_it(capsys) -> None:
+    from examples.self_play import FrozenPolicy, main, make_env
+
+    calls = {"first": [], "second": []}
+
+    def recording(key):
+        def act(observations):
+            calls[key].append(np.array(observations))
+            return np.zeros((len(observations), 5))
+        return act
+
+    frozen = FrozenPolicy(recording("first"))
+    env = make_env(frozen, max_cycles=6)
+    env.reset(seed=0)
+    while env.agents:
+        env.step({a: env.action_space(a).sample() for a in env.agents})
+    assert len(calls["first"]) == 6 and all(batch.shape == (3, env.observation_space("left_0").shape[0])
+                                            for batch in calls["first"])  # once a cycle, the right side's 3
+    frozen.refresh(recording("second"))
+    env.reset(seed=1)
+    env.step({a: env.action_space(a).sample() for a in env.agents})
+    assert len(calls["first"]) == 6 and len(calls["second"]) == 1 and frozen.version == 1
+
+    summary = main(["--smoke"])  # the whole loop without the rl extra
+    assert summary["episodes"] == 6 and len(summary["returns"]) == 6
+    assert summary["refreshes"] == summary["kept"] // 2
+    assert "self-play smoke" in capsys.readouterr().out

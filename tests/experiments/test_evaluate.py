@@ -105,3 +105,45 @@ def test_the_default_opponent_is_the_environments() -> None:
     from soccer_sim.env.options import DEFAULT_OPPONENT as ENVIRONMENTS
 
     assert DEFAULT_OPPONENT == ENVIRONMENTS
+
+
+def test_a_saved_checkpoint_is_evaluated_and_plays_in_a_tournament_by_its_own_name(tmp_path, monkeypatch,
+                                                                                  capsys) -> None:
+    """A checkpoint team name through the command line, its library a stand-in on the path that
+    the worker processes import too (tests/env/rl_standins.py): no RL library is installed."""
+    import numpy as np
+
+    from tests.env import rl_standins
+
+    module = rl_standins.sb3_module(tmp_path / "site")
+    monkeypatch.setitem(__import__("sys").modules, "stable_baselines3", module)
+    monkeypatch.syspath_prepend(str(tmp_path / "site"))  # spawned workers get the parent's path
+    weights = np.random.default_rng(0).normal(size=(136, 5)).astype(np.float32) * 0.2
+    path = rl_standins.write_sb3_checkpoint(tmp_path / "ppo.zip", weights, discrete=False)
+    team = f"checkpoint:sb3:{path}?scenario=empty-goal&name=ppo-standin"
+    out = tmp_path / "e.sqlite"
+    assert main(["evaluate", team, "--scenario", "empty-goal", "--episodes", "2", "--workers", "1", "--no-progress",
+                 "--out", str(out), "--tables", str(tmp_path / "t")]) == 0
+    assert "ppo-standin" in capsys.readouterr().out
+    with ResultStore.open(out) as store:
+        records = store.records()
+    assert len(records) == 2 and all(r.played and r.home == team for r in records)
+    assert main(["tournament", "--teams", f"static,{team}", "--scenario", "empty-goal", "--games", "2",
+                 "--workers", "1", "--no-progress", "--out", str(tmp_path / "r.sqlite")]) == 0
+    league = capsys.readouterr().out
+    assert "ppo-standin" in league and team not in league
+
+
+@pytest.mark.parametrize("team, message", [
+    ("checkpoint:sb3:nowhere.zip", "needs Stable-Baselines3 (module 'stable_baselines3')"),
+    ("checkpoint:onnx:model.onnx", "KIND one of sb3, torch"),
+])
+def test_a_checkpoint_that_cannot_load_is_one_line_before_any_episode(tmp_path, monkeypatch, capsys, team,
+                                                                       message) -> None:
+    monkeypatch.setitem(__import__("sys").modules, "stable_baselines3", None)  # not installed
+    out = tmp_path / "e.sqlite"
+    assert _status(["evaluate", team, "--scenario", "empty-goal", "--workers", "1", "--no-progress",
+                    "--out", str(out)]) == 2
+    error = capsys.readouterr().err
+    assert f"POLICY: team {team!r}: " in error and message in error and error.count("\n") == 1
+    assert not out.exists()

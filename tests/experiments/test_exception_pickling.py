@@ -15,6 +15,7 @@ PACKAGES = ("soccer_sim", "formations", "agents", "experiments")
 EXAMPLES: dict[str, tuple] = {
     "soccer_sim.team.TeamError": ("red", "act() raised ValueError: x", 3),
     "soccer_sim.registry.TeamNotFoundError": ("unknown team 'x'",),
+    "soccer_sim.env.checkpoints.CheckpointError": ("checkpoint 'm.zip': no such file",),
     "soccer_sim.config_checks.ConfigError": ("MatchConfig.max_cycles must be positive",),
     "soccer_sim.physics.PymunkChangedError": ("no Buffer",),
     "soccer_sim.state.StateError": ("WorldState.vel must have shape (4, 2), got (3, 2)",),
