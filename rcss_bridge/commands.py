@@ -57,7 +57,7 @@ from soccer_sim.kernels import one_body_command
 from soccer_sim.kick_rate import kick_angle_rate, kick_distance_rate, kick_effectiveness
 from soccer_sim.perception.views import PlayerViews
 from soccer_sim.player_types import PlayerType, check_choice, default_type
-from soccer_sim.team import TeamCommand, TeamError
+from soccer_sim.team import TeamCommand, TeamError, command_array
 
 from rcss_bridge.body_control import RUN_HORIZON, ServerRules, choose_run, clamp, neck_moment, turn_moment
 from rcss_bridge.errors import CommandError
@@ -233,17 +233,7 @@ class CommandTranslator:
         return dash, kick, move, tackle, foul, catch, say
 
     def _array(self, values: object, name: str, shape: tuple[int, ...]) -> np.ndarray:
-        if values is None:
-            raise CommandError(self.team_name, f"command.{name} is None; expected an array of shape {shape}")
-        if isinstance(values, np.ndarray) and values.dtype.kind not in "fiu":
-            raise CommandError(self.team_name, f"command.{name} must be numeric, got dtype {values.dtype}")
-        try:
-            array = np.array(values, dtype=np.float64)
-        except (TypeError, ValueError, OverflowError) as exc:
-            raise CommandError(self.team_name, f"command.{name} is not a numeric array ({exc})") from None
-        if array.shape != shape:
-            raise CommandError(self.team_name, f"command.{name} must have shape {shape}, got {array.shape}")
-        return array
+        return command_array(values, name, shape, lambda message: CommandError(self.team_name, message)).copy()
 
     def _vectors(self, values: object, name: str) -> np.ndarray:
         array = self._array(values, name, (self.n, 2))

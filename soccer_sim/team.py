@@ -10,7 +10,7 @@ metres per cycle² for accelerations.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 import numpy as np
@@ -41,6 +41,24 @@ class TeamError(SoccerSimError):
         """Pickle by the constructor's arguments, so the error crosses process boundaries
         (a process pool's worker to its parent) intact."""
         return type(self), (self.team_name, self.message, self.player)
+
+
+def command_array(values: object, field_name: str, shape: tuple[int, ...],
+                  fail: Callable[[str], Exception]) -> np.ndarray:
+    """One field of a :class:`TeamCommand` (``command.<field_name>``) as a float64 array of
+    ``shape``, or the exception ``fail(message)`` makes of what is wrong (None, not numeric,
+    another shape): the one check of a command's arrays, for the match and the rcssserver bridge."""
+    if values is None:
+        raise fail(f"command.{field_name} is None; expected an array of shape {shape}")
+    if isinstance(values, np.ndarray) and values.dtype.kind not in "fiu":
+        raise fail(f"command.{field_name} must be numeric, got dtype {values.dtype}")
+    try:
+        array = np.asarray(values, dtype=np.float64)
+    except (TypeError, ValueError, OverflowError) as exc:
+        raise fail(f"command.{field_name} is not a numeric array ({exc})") from exc
+    if array.shape != shape:
+        raise fail(f"command.{field_name} must have shape {shape}, got {array.shape}")
+    return array
 
 
 def team_failure(name: str, method: str, exc: BaseException) -> TeamError:

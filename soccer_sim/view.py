@@ -20,7 +20,7 @@ from soccer_sim.kernels import mirror_bodies, store_command
 from soccer_sim.perception.audio import AudioParams, check_coded_messages, check_team_messages
 from soccer_sim.perception.coded import CodedMessages
 from soccer_sim.state import NO_PLAYER, StateError, WorldState
-from soccer_sim.team import TeamCommand, TeamError, TeamView
+from soccer_sim.team import TeamCommand, TeamError, TeamView, command_array
 
 
 def _read_only(view: np.ndarray) -> np.ndarray:
@@ -191,17 +191,7 @@ class TeamFrame:
 
     def _as_array(self, values: object, field_name: str) -> np.ndarray:
         """``values`` as an (n, 2) float64 array, or a TeamError saying why it cannot be one."""
-        if values is None:
-            raise TeamError(self.name, f"command.{field_name} is None; expected an array of shape {self._shape}")
-        if isinstance(values, np.ndarray) and values.dtype.kind not in "fiu":
-            raise TeamError(self.name, f"command.{field_name} must be numeric, got dtype {values.dtype}")
-        try:
-            array = np.asarray(values, dtype=np.float64)
-        except (TypeError, ValueError, OverflowError) as exc:
-            raise TeamError(self.name, f"command.{field_name} is not a numeric array ({exc})") from exc
-        if array.shape != self._shape:
-            raise TeamError(self.name, f"command.{field_name} must have shape {self._shape}, got {array.shape}")
-        return array
+        return command_array(values, field_name, self._shape, lambda message: TeamError(self.name, message))
 
     def _check_finite(self, values: np.ndarray, field_name: str) -> None:
         bad = np.flatnonzero(~np.isfinite(values).all(axis=1))
