@@ -238,7 +238,11 @@ class Pipeline:
         self._mode_since = 0
         self.cycles = 0
         """Cycles this pipeline has acted (0: no assignment made yet)."""
-        self._play_on_cycles = self._conflict_cycles = self._unfilled_cycles = 0
+        self._play_on_cycles = self._conflict_cycles = self._unfilled_cycles = self._agreed_cycles = 0
+        self._spell_start = -1
+        """The play-on cycle the players stopped all following one assignment (-1: they do, or play stopped)."""
+        self._spells: list[int] = []
+        """Each completed spell of disagreement: cycles until they all followed one assignment again."""
         self._goal_kick_keeper = style.goalkeeper_goal_kicks and goalie >= 0
         sp, third = style.shape, model.half_length / 3.0
         arrays = ctx.arrays(TeamView(own_pos=np.zeros((n, 2)), own_vel=np.zeros((n, 2)), opp_pos=np.zeros((m, 2)),
@@ -357,7 +361,9 @@ class Pipeline:
         self._after_dashes(decided, view)
         if play_on and n_out:
             self.figures.add(switches, True, mean, largest, far)
-            self._count_conflicts(shared, empty)
+            self._count_conflicts(shared, empty, cycle)
+        else:
+            self._spell_start = -1  # a stoppage ends a spell uncounted
         self._remember_passes(beliefs, kicked, play_on, view)
         if world.talks:
             command.say = digit_messages(self._digits, senses.present)
@@ -543,24 +549,39 @@ class Pipeline:
             self.able[b][np.flatnonzero(self.command.kick.any(axis=1))] = True
         self.able[~self.in_flight] = True
 
-    def _count_conflicts(self, shared: int, empty: int) -> None:
-        """Count the play-on cycles whose believed roles clash: ``shared`` roles two players both
-        believe they hold, ``empty`` roles nobody believes they hold."""
+    def _count_conflicts(self, shared: int, empty: int, cycle: int) -> None:
+        """Count the play-on cycles whose believed roles clash (``shared`` roles two players both
+        believe they hold, ``empty`` roles nobody believes they hold) and those in which every
+        outfield player on the pitch follows one assignment, and time the spells in between."""
         self._play_on_cycles += 1
         self._conflict_cycles += shared > 0
         self._unfilled_cycles += empty > 0
+        on_pitch = self.outfield[self._deciding[self.outfield]]
+        followed = self.followed[self.world.belief_of[on_pitch]]
+        agreed = bool((followed == followed[0]).all()) if on_pitch.size else True
+        self._agreed_cycles += agreed
+        if agreed and self._spell_start >= 0:
+            self._spells.append(cycle - self._spell_start)
+            self._spell_start = -1
+        elif not agreed and self._spell_start < 0:
+            self._spell_start = cycle
 
     # ------------------------------------------------------------------ reporting
     def statistics(self) -> dict[str, float]:
         """The role figures (:class:`~agents.teams.reporting.RoleFigures`) and, when the players
         hold their own beliefs, the shares of play-on cycles with a role that two players both
-        believe they hold (``role_conflict_share``) or that nobody believes they hold
-        (``believed_unfilled_share``)."""
+        believe they hold (``role_conflict_share``), that nobody believes they hold
+        (``believed_unfilled_share``) and in which every outfield player follows one assignment
+        (``all_follow_one_share``), and the median number of play-on cycles from when they stop
+        following one assignment until they all follow one again (``agreement_latency_median``,
+        over the spells that ended before a stoppage; 0 without any)."""
         merged = self.figures.statistics()
         if self.world.talks:
             cycles = max(self._play_on_cycles, 1)
             merged["role_conflict_share"] = self._conflict_cycles / cycles
             merged["believed_unfilled_share"] = self._unfilled_cycles / cycles
+            merged["all_follow_one_share"] = self._agreed_cycles / cycles
+            merged["agreement_latency_median"] = float(np.median(self._spells)) if self._spells else 0.0
         return merged
 
     def situation(self, b: int) -> Situation:

@@ -44,10 +44,13 @@ BEHAVIOUR = (("role switches / min", "role_switches_per_minute", 1.0),
 """(column, statistic, scale) of the behaviour table."""
 PARTIAL_BEHAVIOUR = (("makespan (m)", "target_distance_max", 1.0),
                      ("role conflicts (share)", "role_conflict_share", 1.0),
-                     ("roles nobody believes held (share)", "believed_unfilled_share", 1.0))
+                     ("roles nobody believes held (share)", "believed_unfilled_share", 1.0),
+                     ("all follow one (share)", "all_follow_one_share", 1.0),
+                     ("agreement latency (cycles)", "agreement_latency_median", 1.0))
 """The columns added under partial observation: the makespan as the players believe it (the
-largest distance from a player to the target of the role it follows, per cycle), and the
-shares of play-on cycles with a role two players believe they hold, or one nobody does."""
+largest distance from a player to the target of the role it follows, per cycle), the shares
+of play-on cycles with a role two players believe they hold, or one nobody does, or in which
+all follow one assignment, and the median spell (cycles) until they all follow one again."""
 
 
 def behaviour_columns(params: dict) -> tuple:

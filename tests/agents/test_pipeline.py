@@ -71,6 +71,10 @@ def test_a_decentralised_match_plays_reports_conflicts_and_is_deterministic():
     assert home.kicks > 0 and home.distance_run > 1000.0
     reported = home.reported
     assert 0.0 <= reported["role_conflict_share"] <= 1.0 and "believed_unfilled_share" in reported
+    # a role two players believe they hold means they follow different assignments
+    assert 0.0 < reported["all_follow_one_share"] < 1.0
+    assert reported["all_follow_one_share"] + reported["role_conflict_share"] <= 1.0 + 1e-9
+    assert reported["agreement_latency_median"] >= 1.0
 
 
 _SCRIPT = """
