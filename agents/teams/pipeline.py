@@ -361,7 +361,9 @@ class Pipeline:
         self._after_dashes(decided, view)
         if play_on and n_out:
             self.figures.add(switches, True, mean, largest, far)
-            self._count_conflicts(shared, empty, cycle)
+            self._count_conflicts(shared, empty)
+            if world.talks:
+                self._track_agreement(cycle)
         else:
             self._spell_start = -1  # a stoppage ends a spell uncounted
         self._remember_passes(beliefs, kicked, play_on, view)
@@ -549,13 +551,17 @@ class Pipeline:
             self.able[b][np.flatnonzero(self.command.kick.any(axis=1))] = True
         self.able[~self.in_flight] = True
 
-    def _count_conflicts(self, shared: int, empty: int, cycle: int) -> None:
-        """Count the play-on cycles whose believed roles clash (``shared`` roles two players both
-        believe they hold, ``empty`` roles nobody believes they hold) and those in which every
-        outfield player on the pitch follows one assignment, and time the spells in between."""
+    def _count_conflicts(self, shared: int, empty: int) -> None:
+        """Count the play-on cycles whose believed roles clash: ``shared`` roles two players both
+        believe they hold, ``empty`` roles nobody believes they hold."""
         self._play_on_cycles += 1
         self._conflict_cycles += shared > 0
         self._unfilled_cycles += empty > 0
+
+    def _track_agreement(self, cycle: int) -> None:
+        """Count the play-on cycles in which every outfield player on the pitch follows one
+        assignment, and time the spells in between (players who hold their own beliefs only:
+        under the truth every player follows the one belief's)."""
         on_pitch = self.outfield[self._deciding[self.outfield]]
         followed = self.followed[self.world.belief_of[on_pitch]]
         agreed = bool((followed == followed[0]).all()) if on_pitch.size else True

@@ -33,14 +33,6 @@ def trace(name: str) -> dict:
     return json.loads((DATA / f"{name}.json").read_text())
 
 
-@pytest.fixture(scope="module")
-def parameters() -> ServerParameters:
-    texts = received("BRIDGE-1")[-1]
-    return ServerParameters.from_messages(
-        next(t for t in texts if t.startswith("(server_param")), next(t for t in texts if t.startswith("(player_param")),
-        [t for t in texts if t.startswith("(player_type")])
-
-
 @pytest.fixture()
 def translator(parameters) -> CommandTranslator:
     return CommandTranslator("BRIDGE", N, ServerRules.from_server(parameters.server), parameters.types,

@@ -13,14 +13,6 @@ from soccer_sim.player_types import PlayerType
 from tests.rcss_bridge.recorded import received
 
 
-@pytest.fixture(scope="module")
-def parameters() -> ServerParameters:
-    texts = received("BRIDGE-1")[-1]
-    return ServerParameters.from_messages(
-        next(t for t in texts if t.startswith("(server_param")), next(t for t in texts if t.startswith("(player_param")),
-        [t for t in texts if t.startswith("(player_type")])
-
-
 def test_every_mapped_parameter_lands_in_its_field(parameters):
     config = parameters.match_config()
     for name, path, convert in CONFIG_FIELDS:
