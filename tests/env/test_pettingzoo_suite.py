@@ -146,14 +146,16 @@ def _as_a_user(scenario: str) -> SimpleNamespace:
                            env=functools.partial(env, scenario=scenario))
 
 
-def _checks_as_a_user(scenario: str, num_cycles: int | None = None) -> None:
-    """PettingZoo's API, seed and max-cycles checks as a user calls them on ``scenario``."""
+def _checks_as_a_user(scenario: str, num_cycles: int | None = None, max_cycles: bool = True) -> None:
+    """PettingZoo's API, seed and (with ``max_cycles``) max-cycles checks as a user calls them
+    on ``scenario``."""
     cycles = {} if num_cycles is None else {"num_cycles": num_cycles}
     parallel_api_test(parallel_env(scenario=scenario), **cycles)
     api_test(env(scenario=scenario), **cycles)
     seed_test(functools.partial(env, scenario=scenario), **cycles)
     parallel_seed_test(functools.partial(parallel_env, scenario=scenario), **cycles)
-    max_cycles_test(_as_a_user(ENDS_EARLY_BY_DESIGN.get(scenario, scenario)))
+    if max_cycles:
+        max_cycles_test(_as_a_user(ENDS_EARLY_BY_DESIGN.get(scenario, scenario)))
 
 
 @pytest.mark.slow
@@ -164,9 +166,12 @@ def test_every_library_scenario_passes_pettingzoos_checks_as_a_user_calls_them(s
 
 
 def test_pettingzoos_checks_as_a_user_calls_them_on_a_few_scenarios() -> None:
-    """The fast representative of the slow test above: one rerun each, shorter API checks."""
-    for scenario in ("3-vs-1-with-keeper", "corner"):
-        _checks_as_a_user(scenario, num_cycles=40)
+    """The fast representative of the slow test above: one rerun each, shorter API checks; the
+    max-cycles check on the corner's variant only, which random actions cannot end within its
+    4 cycles (3-vs-1-with-keeper's random play ends that early in about 1 run of 60: the slow
+    test's 20 reruns meet it, a default run must not depend on chance)."""
+    _checks_as_a_user("3-vs-1-with-keeper", num_cycles=40, max_cycles=False)
+    _checks_as_a_user("corner", num_cycles=40)
     for _ in range(3):
         max_cycles_test(_as_a_user("corner-until-goal"))
 
