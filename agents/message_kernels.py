@@ -1,19 +1,25 @@
-"""The compiled arithmetic of the message encoding (:mod:`agents.messages`): a message is a
-base-71 number of 10 digits (below ``71 ** 10``, which fits a signed 64-bit integer), whose
-last base-2 digit is its kind. One message or a whole team's messages per cycle go through the
-same functions: :mod:`agents.messages` encodes and decodes single messages with them, and
-:func:`agents.messages.world_texts`, :func:`~agents.messages.vote_texts` and
-:func:`~agents.messages.decode_texts` a team's ten or eleven at a time (a plain-Python big-number loop
-costs about 15 us a message, ten times a compiled one).
+"""The compiled arithmetic of the team message (:mod:`agents.messages`): a message is a base-71
+number of 10 digits (below ``71 ** 10``, which fits a signed 64-bit integer). One message or a
+whole team's messages per cycle go through the same functions: :mod:`agents.messages` encodes
+and decodes single messages with them, the team's pipeline encodes its speaker's message and its
+world models decode a whole delivery (a plain-Python big-number loop costs about 15 us a message,
+ten times a compiled one).
 
-Digits are the indices of the characters in :data:`agents.messages.ALPHABET`; grid indices and
-sizes are those :mod:`agents.messages` documents. The ranges, steps and sizes travel as one named
-record (:data:`GRID_PARAMS`, :data:`agents.messages.WORLD_GRID`), read by field name.
+The number, most significant part first (mixed radix, each part's size in
+:data:`GRID_PARAMS`):
+
+``assignment code`` (the permutation: ``perm_offset(n) + rank``, ``rank`` its Lehmer-code rank,
+``perm_offset(n)`` the number of permutations of fewer than ``n`` roles), ``stamp`` (the cycle
+the assignment was computed for, modulo ``stamps``), ``settled`` (0 or 1), ``ball age``, ``ball x``, ``ball y``,
+``payload`` (the ball's velocity ``vx * nv + vy``, or the speaker's position ``sx * nsy + sy``),
+``layout`` (:data:`VELOCITY` or :data:`SENDER`: which of the two the payload holds).
+
+Digits are the indices of the characters in :data:`agents.messages.ALPHABET`; grid indices
+and values are those :mod:`agents.messages` documents. Decoded messages come out as rows of a
+:data:`DECODED` record array, read by field name.
 """
 
 from __future__ import annotations
-
-import math
 
 import numpy as np
 from numba import njit
@@ -22,19 +28,29 @@ BASE = 71
 """Symbols of the alphabet."""
 LENGTH = 10
 """Digits of a message."""
-KINDS, WORLD, VOTE = 2, 0, 1
-"""Kinds of message and their last digits (:mod:`agents.messages`)."""
-MAX_PLAYERS = 11
-FACTORIAL_MAX = math.factorial(MAX_PLAYERS)
-INVALID = -1
-"""A decoded kind that is no message of ours."""
+LAYOUTS, VELOCITY, SENDER = 2, 0, 1
+"""What a message carries besides its vote and ball position: the ball's velocity or the
+speaker's own position (its last digit in base ``LAYOUTS``)."""
+MAX_ROLES = 10
+"""The most roles an assignment in a message covers (a full side's outfield)."""
 
 GRID_PARAMS = np.dtype([("x_range", np.float64), ("y_range", np.float64), ("v_range", np.float64)]
-                       + [(name, np.int64) for name in ("per_m", "per_v", "max_age", "nx", "ny", "nv", "nage",
-                                                        "modulus")])
-"""The message grid: the largest |x|, |y| (m) and |velocity| (m/cycle) a world message holds,
-grid points per m and per m/cycle, the largest ball age (cycles), the grid sizes of a position
-coordinate, a velocity coordinate and an age, and the modulus of a vote's cycle."""
+                       + [(name, np.int64) for name in ("ball_per_m", "velocity_per", "sender_per_m", "max_age",
+                                                        "nbx", "nby", "nv", "nsx", "nsy", "nage", "stamps",
+                                                        "max_roles")])
+"""The message grid: the largest |x| and |y| (m) a position holds and the largest |velocity|
+(m/cycle); grid points per m of the ball's position, per m/cycle of its velocity and per m of
+the speaker's position; the largest ball age (cycles); the grid sizes of the ball's x and y,
+a velocity component, the speaker's x and y and the age; the stamp's modulus; the most roles."""
+
+DECODED = np.dtype([("valid", np.bool_), ("size", np.int64), ("stamp", np.int64), ("settled", np.bool_),
+                    ("ball_age", np.int64),
+                    ("layout", np.int64), ("ball_x", np.float64), ("ball_y", np.float64),
+                    ("velocity_x", np.float64), ("velocity_y", np.float64),
+                    ("sender_x", np.float64), ("sender_y", np.float64)])
+"""One decoded message: whether it is one of ours, the number of roles of its assignment, its
+stamp, whether the assignment is settled (:mod:`agents.teams.speaking`), the ball's age (cycles), its layout, the ball's position (m), and the ball's velocity
+(m/cycle, layout VELOCITY) or the speaker's position (m, layout SENDER); the other pair is 0."""
 
 
 @njit(cache=True, nogil=True)
@@ -44,17 +60,25 @@ def grid_index(value: float, half_range: float, per_unit: int) -> int:  # pragma
 
 
 @njit(cache=True, nogil=True)
-def world_number(bx: int, by: int, vx: int, vy: int, age: int, sx: int, sy: int, nx: int, ny: int, nv: int,
-                 nage: int) -> int:  # pragma: no cover - compiled
-    """The number of a world message of grid indices (most significant first)."""
-    payload = (((((bx * ny + by) * nv + vx) * nv + vy) * nage + age) * nx + sx) * ny + sy
-    return payload * KINDS + WORLD
+def grid_value(index: int, half_range: float, per_unit: int) -> float:  # pragma: no cover - compiled
+    """The value of grid index ``index`` (a division, so 0.1 m steps come out as 52.5, not
+    52.500000000000014)."""
+    return (index - half_range * per_unit) / per_unit
 
 
 @njit(cache=True, nogil=True)
-def vote_number(assignment: np.ndarray, cycle: int, modulus: int) -> int:  # pragma: no cover - compiled
-    """The number of a vote for the permutation ``assignment`` (n,) at ``cycle``: the cycle
-    modulo ``modulus``, n and the permutation's Lehmer-code rank."""
+def perm_offset(n: int) -> int:  # pragma: no cover - compiled
+    """How many permutations there are of fewer than ``n`` roles (0! + 1! + ... + (n-1)!)."""
+    total, factorial = 0, 1
+    for m in range(n):
+        total += factorial
+        factorial *= m + 1
+    return total
+
+
+@njit(cache=True, nogil=True)
+def assignment_code(assignment: np.ndarray) -> int:  # pragma: no cover - compiled
+    """The code of the permutation ``assignment`` (n,): ``perm_offset(n)`` plus its Lehmer-code rank."""
     n = assignment.shape[0]
     left = np.arange(n)
     size = n
@@ -67,8 +91,53 @@ def vote_number(assignment: np.ndarray, cycle: int, modulus: int) -> int:  # pra
         for j in range(i, size - 1):
             left[j] = left[j + 1]
         size -= 1
-    payload = ((cycle % modulus) * (MAX_PLAYERS + 1) + n) * FACTORIAL_MAX + rank
-    return payload * KINDS + VOTE
+    return perm_offset(n) + rank
+
+
+@njit(cache=True, nogil=True)
+def code_assignment(code: int, max_roles: int, out: np.ndarray) -> int:  # pragma: no cover - compiled
+    """The permutation of ``code`` into ``out`` (its first n entries); returns n, or -1 when no
+    permutation of at most ``max_roles`` roles has that code."""
+    n = 0
+    while n <= max_roles and perm_offset(n + 1) <= code:
+        n += 1
+    if n > max_roles:
+        return -1
+    rank = code - perm_offset(n)
+    lehmer = np.empty(max(n, 1), dtype=np.int64)
+    for size in range(1, n + 1):
+        lehmer[size - 1] = rank % size
+        rank //= size
+    left = np.arange(max(n, 1))
+    size = n
+    for j in range(n):
+        d = lehmer[n - 1 - j]
+        out[j] = left[d]
+        for t in range(d, size - 1):
+            left[t] = left[t + 1]
+        size -= 1
+    return n
+
+
+@njit(cache=True, nogil=True)
+def message_number(assignment: np.ndarray, cycle: int, settled: bool, ball: np.ndarray, ball_age: int,
+                   extra: np.ndarray, layout: int, grid: np.ndarray) -> int:  # pragma: no cover - compiled
+    """The number of one message: the permutation ``assignment`` (n,) computed at ``cycle``,
+    whether it is ``settled``, the ball (2,) m and its age (cycles), and ``extra`` (2,): the ball's velocity (m/cycle) for
+    layout VELOCITY or the speaker's position (m) for SENDER; every value clipped into its
+    range (``grid``: a :data:`GRID_PARAMS` record, :data:`agents.messages.MESSAGE_GRID`)."""
+    g = grid[0]
+    number = (assignment_code(assignment) * g.stamps + cycle % g.stamps) * 2 + (1 if settled else 0)
+    number = number * g.nage + min(max(ball_age, 0), g.max_age)
+    number = number * g.nbx + grid_index(ball[0], g.x_range, g.ball_per_m)
+    number = number * g.nby + grid_index(ball[1], g.y_range, g.ball_per_m)
+    if layout == VELOCITY:
+        payload = grid_index(extra[0], g.v_range, g.velocity_per) * g.nv + grid_index(extra[1], g.v_range,
+                                                                                        g.velocity_per)
+    else:
+        payload = grid_index(extra[0], g.x_range, g.sender_per_m) * g.nsy + grid_index(extra[1], g.y_range,
+                                                                                         g.sender_per_m)
+    return (number * g.nv * g.nv + payload) * LAYOUTS + layout
 
 
 @njit(cache=True, nogil=True)
@@ -91,93 +160,54 @@ def digits_number(digits: np.ndarray) -> int:  # pragma: no cover - compiled
 
 
 @njit(cache=True, nogil=True)
-def decode_digits(digits: np.ndarray, grid: np.ndarray, kind: np.ndarray, world: np.ndarray, values: np.ndarray,
-                  vote: np.ndarray, vote_size: np.ndarray, vote_cycle: np.ndarray) -> None:  # pragma: no cover
+def decode_digits(digits: np.ndarray, grid: np.ndarray, out: np.ndarray,
+                  assignment: np.ndarray) -> None:  # pragma: no cover - compiled
     """Decode messages given as digits (p, LENGTH) (a digit -1: a character outside the
-    alphabet, not a message) on the :data:`GRID_PARAMS` record ``grid``: ``kind`` (p,) WORLD,
-    VOTE or INVALID; a world message's grid indices into ``world`` (p, 7) (ball x, y, velocity
-    x, y, age, sender x, y) and their values into ``values`` (p, 7: m, m/cycle, cycles); a
-    vote's permutation into ``vote`` (p, MAX_PLAYERS), its size and cycle."""
+    alphabet, not a message) on the :data:`GRID_PARAMS` record ``grid`` into ``out`` (p,) of
+    :data:`DECODED` and each assignment into ``assignment`` (p, max_roles) (its first ``size``
+    entries); a row no encoder makes has ``valid`` False."""
     g = grid[0]
-    nx, ny, nv, nage, per_m, per_v, modulus = g.nx, g.ny, g.nv, g.nage, g.per_m, g.per_v, g.modulus
-    lehmer = np.empty(MAX_PLAYERS, dtype=np.int64)
-    left = np.empty(MAX_PLAYERS, dtype=np.int64)
     for p in range(digits.shape[0]):
+        row = out[p]
+        row.valid = False
         number = digits_number(digits[p])
-        kind[p] = INVALID
         if number < 0:
             continue
-        payload, k = number // KINDS, number % KINDS
-        if k == WORLD:
-            sizes = (ny, nx, nage, nv, nv, ny)  # the encoder's digits, last first
-            for j in range(6):
-                world[p, 6 - j] = payload % sizes[j]
-                payload //= sizes[j]
-            world[p, 0] = payload
-            if payload < nx:
-                kind[p] = WORLD
-                for j in (0, 5):  # a division, so 0.1 m steps come out as 52.5, not 52.500000000000014
-                    values[p, j] = (world[p, j] - nx // 2) / per_m
-                for j in (1, 6):
-                    values[p, j] = (world[p, j] - ny // 2) / per_m
-                for j in (2, 3):
-                    values[p, j] = (world[p, j] - nv // 2) / per_v
-                values[p, 4] = world[p, 4]
+        layout = number % LAYOUTS
+        number //= LAYOUTS
+        payload = number % (g.nv * g.nv)
+        number //= g.nv * g.nv
+        by = number % g.nby
+        number //= g.nby
+        bx = number % g.nbx
+        number //= g.nbx
+        age = number % g.nage
+        number //= g.nage
+        settled = number % 2 == 1
+        number //= 2
+        stamp = number % g.stamps
+        code = number // g.stamps
+        if bx >= g.nbx or (layout == SENDER and payload >= g.nsx * g.nsy):
             continue
-        rank = payload % FACTORIAL_MAX
-        payload //= FACTORIAL_MAX
-        n = payload % (MAX_PLAYERS + 1)
-        cycle = payload // (MAX_PLAYERS + 1)
-        factorial = 1
-        for j in range(2, n + 1):
-            factorial *= j
-        if cycle >= modulus or rank >= factorial:
+        size = code_assignment(code, g.max_roles, assignment[p])
+        if size < 0:
             continue
-        for size in range(1, n + 1):
-            lehmer[size - 1] = rank % size
-            rank //= size
-        for j in range(n):
-            left[j] = j
-        size = n
-        for j in range(n):
-            d = lehmer[n - 1 - j]
-            vote[p, j] = left[d]
-            for t in range(d, size - 1):
-                left[t] = left[t + 1]
-            size -= 1
-        vote_size[p] = n
-        vote_cycle[p] = cycle
-        kind[p] = VOTE
+        row.size, row.stamp, row.settled, row.ball_age, row.layout = size, stamp, settled, age, layout
+        row.ball_x = grid_value(bx, g.x_range, g.ball_per_m)
+        row.ball_y = grid_value(by, g.y_range, g.ball_per_m)
+        row.velocity_x = row.velocity_y = row.sender_x = row.sender_y = 0.0
+        if layout == VELOCITY:
+            row.velocity_x = grid_value(payload // g.nv, g.v_range, g.velocity_per)
+            row.velocity_y = grid_value(payload % g.nv, g.v_range, g.velocity_per)
+        else:
+            row.sender_x = grid_value(payload // g.nsy, g.x_range, g.sender_per_m)
+            row.sender_y = grid_value(payload % g.nsy, g.y_range, g.sender_per_m)
+        row.valid = True
 
 
 @njit(cache=True, nogil=True)
-def world_digits_rows(ball: np.ndarray, ball_vel: np.ndarray, ball_age: np.ndarray, sender: np.ndarray,
-                      grid: np.ndarray, out: np.ndarray) -> None:  # pragma: no cover - compiled
-    """Rows of world messages' digits into ``out`` (n, LENGTH): ball (n, 2), its velocity
-    (n, 2), ages (n,) and senders (n, 2), each clipped into its range (``grid``: a
-    :data:`GRID_PARAMS` record)."""
-    for i in range(ball.shape[0]):
-        number_digits(world_message_number(ball[i], ball_vel[i], ball_age[i], sender[i], grid), out[i])
-
-
-@njit(cache=True, nogil=True)
-def vote_digits_rows(assignments: np.ndarray, cycle: int, modulus: int,
-                     out: np.ndarray) -> None:  # pragma: no cover - compiled
-    """Rows of votes' digits into ``out`` (n, LENGTH), one per row of ``assignments`` (n, k)."""
-    for i in range(assignments.shape[0]):
-        number_digits(vote_number(assignments[i], cycle, modulus), out[i])
-
-
-@njit(cache=True, nogil=True)
-def world_message_number(ball: np.ndarray, ball_vel: np.ndarray, ball_age: int, sender: np.ndarray,
-                         grid: np.ndarray) -> int:  # pragma: no cover - compiled
-    """The number of one world message of ball (2,), velocity (2,), age and sender (2,), each
-    clipped into its range (``grid``: a :data:`GRID_PARAMS` record, :data:`agents.messages.WORLD_GRID`),
-    as :func:`world_digits_rows` makes it."""
-    g = grid[0]
-    x_range, y_range, v_range, per_m, per_v, max_age = g.x_range, g.y_range, g.v_range, g.per_m, g.per_v, g.max_age
-    nx, ny, nv, nage = g.nx, g.ny, g.nv, g.nage
-    return world_number(grid_index(ball[0], x_range, per_m), grid_index(ball[1], y_range, per_m),
-                        grid_index(ball_vel[0], v_range, per_v), grid_index(ball_vel[1], v_range, per_v),
-                        min(max(ball_age, 0), max_age), grid_index(sender[0], x_range, per_m),
-                        grid_index(sender[1], y_range, per_m), nx, ny, nv, nage)
+def stamp_cycle(stamp: int, heard_cycle: int, stamps: int) -> int:  # pragma: no cover - compiled
+    """The cycle an assignment stamped ``stamp`` was computed for, heard at ``heard_cycle``: the
+    latest cycle before it (a message said at ``t`` is heard at ``t + 1``) with that residue."""
+    said = heard_cycle - 1
+    return said - (said - stamp) % stamps

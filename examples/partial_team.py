@@ -1,9 +1,9 @@
 """A team for partial observation: each player decides from its own view and what it heard.
 
 Every player remembers where it last saw the ball, or where a team-mate said the ball was (a
-10-character ``WorldMessage``); the player who believes no team-mate it sees is nearer the ball
+10-character ``TeamMessage``); the player who believes no team-mate it sees is nearer the ball
 runs to it and kicks at goal; the others keep a 4-4-2 shape that follows the ball; players who
-see the ball tell the others.
+see the ball tell the others (several may speak, and each listener hears one of them).
 
     soccer-sim play examples.partial_team:PartialTeam chaser --observation partial
     soccer-sim tournament --teams chaser,examples.partial_team:PartialTeam --observation partial --games 4
@@ -11,7 +11,7 @@ see the ball tell the others.
 
 import numpy as np
 
-from agents.messages import WorldMessage, decode, encode
+from agents.messages import X_RANGE, Y_RANGE, TeamMessage, decode, encode
 from soccer_sim.perception.views import TEAMMATE, PlayerViews
 from soccer_sim.team import TeamCommand
 
@@ -35,8 +35,9 @@ class PartialTeam:
             me = views.player(i)
             if me.ball_seen:
                 self.ball[i] = me.ball
-                say[i] = encode(WorldMessage(tuple(np.clip(me.ball, -60, 60)), (0.0, 0.0), 0,
-                                             tuple(np.clip(me.position, -60, 60))))
+                say[i] = encode(TeamMessage((), 0, False, tuple(np.clip(me.ball, (-X_RANGE, -Y_RANGE), (X_RANGE, Y_RANGE))),
+                                            0, sender=tuple(np.clip(me.position, (-X_RANGE, -Y_RANGE),
+                                                                    (X_RANGE, Y_RANGE)))))
             elif me.heard_mates:                      # a team-mate's word about the ball
                 self.ball[i] = decode(me.heard_mates[0][1]).ball
             ball = self.ball[i]

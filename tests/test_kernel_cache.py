@@ -75,7 +75,7 @@ def test_the_projects_kernels_depend_on_the_kernels_they_call() -> None:
     assert type(mmdr_points._cache._impl._locator).__name__.startswith("Project")
     files = set(kernel_cache.dependencies(ROOT / "agents" / "teams" / "pipeline_kernels.py"))
     assert {"agents/teams/shape_kernels.py", "agents/skills/interception_kernels.py",
-            "formations/interpolation_kernels.py", "agents/roles/voting.py"} <= files
+            "formations/interpolation_kernels.py", "agents/roles/conflicts.py", "agents/teams/speaking.py"} <= files
     assert "agents/assignment/deletion.py" in kernel_cache.dependencies(ROOT / "agents" / "assignment" / "scram.py")
     assert "soccer_sim/match.py" not in files  # not imported by any kernel module on the way
     assert derive_worlds._cache._impl._locator.get_source_stamp() == kernel_cache.dependency_stamp(

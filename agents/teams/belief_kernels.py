@@ -20,6 +20,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numba import njit
 
+from agents.message_kernels import SENDER, VELOCITY
+
 if TYPE_CHECKING:
     from agents.teams.belief_record import BeliefRecord, SeeRecord
 
@@ -173,42 +175,43 @@ def see_players(r: BeliefRecord, see: SeeRecord) -> None:  # pragma: no cover - 
 
 
 @njit(cache=True, nogil=True)
-def hear_world(r: BeliefRecord, listener: np.ndarray, speaker: np.ndarray, kind: np.ndarray, world: np.ndarray,
-               world_kind: int) -> None:  # pragma: no cover - compiled
-    """Fold the team-mates' world messages heard this cycle into each listener's beliefs: rows
-    of (listener, speaker, kind, values (ball x, y, velocity x, y, age, sender x, y)); only
-    rows of ``world_kind`` from another team-mate count. The sender is where it said it was
-    (age 1) unless the listener knows fresher; the ball is taken when fresher than the
-    listener's, rolled on by the cycle the message took (slowing by ``r.ball_decay``)."""
-    mate_pos, mate_age, ball, ball_vel, ball_age, ball_decay = (r.mate_pos, r.mate_age, r.ball, r.ball_vel,
-                                                                r.ball_age, r.ball_decay)
+def hear_world(r: BeliefRecord, listener: np.ndarray, speaker: np.ndarray,
+               decoded: np.ndarray) -> None:  # pragma: no cover - compiled
+    """Fold the world information of the team messages heard this cycle into each listener's
+    beliefs: rows of (listener, speaker, ``decoded``: :data:`~agents.message_kernels.DECODED`
+    rows); only valid messages from another team-mate count. The ball is taken when the
+    speaker's is fresher than the listener's (its age one more than said: the message took a
+    cycle; the speaker said it where it expected it now), with the velocity when the message
+    carries it (else the listener keeps the velocity it believes); a speaker who said its own
+    position is there (age 1) unless the listener knows fresher."""
+    mate_pos, mate_age, ball, ball_vel, ball_age = r.mate_pos, r.mate_age, r.ball, r.ball_vel, r.ball_age
     n = ball.shape[0]
     for p in range(listener.shape[0]):
         i, j = listener[p], speaker[p]
-        if kind[p] != world_kind or j < 0 or j >= n or j == i:
+        m = decoded[p]
+        if not m.valid or j < 0 or j >= n or j == i:
             continue
-        if mate_age[i, j] > 1:
-            mate_pos[i, j, 0] = world[p, 5]
-            mate_pos[i, j, 1] = world[p, 6]
+        if m.layout == SENDER and mate_age[i, j] > 1:
+            mate_pos[i, j, 0] = m.sender_x
+            mate_pos[i, j, 1] = m.sender_y
             mate_age[i, j] = 1
-        age = int(world[p, 4]) + 1
+        age = m.ball_age + 1
         if age < ball_age[i]:
-            vx, vy = world[p, 2], world[p, 3]
-            ball[i, 0] = world[p, 0] + vx
-            ball[i, 1] = world[p, 1] + vy
-            ball_vel[i, 0] = vx * ball_decay
-            ball_vel[i, 1] = vy * ball_decay
+            ball[i, 0] = m.ball_x
+            ball[i, 1] = m.ball_y
+            if m.layout == VELOCITY:
+                ball_vel[i, 0] = m.velocity_x
+                ball_vel[i, 1] = m.velocity_y
             ball_age[i] = age
 
 
 @njit(cache=True, nogil=True)
-def believe(r: BeliefRecord, see: SeeRecord, listener: np.ndarray, speaker: np.ndarray, kind: np.ndarray,
-            world: np.ndarray, world_kind: int, cycle: int) -> None:  # pragma: no cover - compiled
+def believe(r: BeliefRecord, see: SeeRecord, listener: np.ndarray, speaker: np.ndarray, decoded: np.ndarray,
+            cycle: int) -> None:  # pragma: no cover - compiled
     """One cycle of every observer's beliefs ``r`` in one call: :func:`predict_beliefs`,
     :func:`see_ball` and :func:`see_players` with the sees of ``cycle`` (``see``), each
     observer's own position (its self-localisation, ``see.position``), then
-    :func:`hear_world` with the decoded messages heard (``listener``, ``speaker``, ``kind``,
-    ``world``; the world messages are those of ``world_kind``)."""
+    :func:`hear_world` with the team messages heard (``listener``, ``speaker``, ``decoded``)."""
     predict_beliefs(r)
     see_ball(r, see, cycle)
     see_players(r, see)
@@ -217,7 +220,7 @@ def believe(r: BeliefRecord, see: SeeRecord, listener: np.ndarray, speaker: np.n
         mate_pos[i, i, 0] = position[i, 0]
         mate_pos[i, i, 1] = position[i, 1]
         mate_age[i, i] = 0
-    hear_world(r, listener, speaker, kind, world, world_kind)
+    hear_world(r, listener, speaker, decoded)
 
 
 @njit(cache=True, nogil=True)

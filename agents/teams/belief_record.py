@@ -17,10 +17,9 @@ positional parameters cannot be read, so the kernels take three records (numba
   (:data:`CODE_FIELDS`, from :mod:`agents.messages`), one for every team (:func:`message_codes`).
 
 :func:`hear_and_believe` then does a team's whole intake of a cycle in one compiled call:
-decode the team-mates' messages (:func:`~agents.message_kernels.decode_digits`), update the
-world models (:func:`~agents.teams.belief_kernels.believe`) and store the votes heard
-(:func:`agents.roles.voting._store_votes`), what :func:`~agents.messages.heard_batch`, the
-world-model kernel and :meth:`~agents.roles.voting.VoteBook.hear` would do one after the other.
+decode the team messages heard (:func:`~agents.message_kernels.decode_digits`), update the
+world models (:func:`~agents.teams.belief_kernels.believe`) and keep each listener's newest
+assignment heard (:func:`store_assignments`).
 :meth:`~agents.teams.world_model.TeamBeliefs.update` makes the call.
 """
 
@@ -35,10 +34,10 @@ from numba import njit
 from numba.core import types
 from numba.experimental import structref
 
-from agents.message_kernels import decode_digits
-from agents.messages import CODES, DIGIT_OF_BYTE, WORLD_GRID
-from agents.roles.voting import _store_votes
+from agents.message_kernels import DECODED, decode_digits, stamp_cycle
+from agents.messages import DIGIT_OF_BYTE, MESSAGE_GRID
 from agents.teams.belief_kernels import believe
+from agents.teams.speaking import TurnMemory, take_proposal
 from soccer_sim.perception.views import PlayerViews
 
 BELIEF_FIELDS = ("ball", "ball_vel", "ball_age", "mate_pos", "mate_age", "opp_pos", "opp_age", "last_seen",
@@ -55,12 +54,10 @@ SEE_FIELDS = ("ball_seen", "ball", "ball_distance", "saw", "seen_count", "seen_p
 arrays of these names, what a cycle's intake reads of the players' sees (their
 self-localisation ``position`` included)."""
 
-CODE_FIELDS = ("digit_of_byte", "grid", "modulus", "world_kind", "vote_kind", "max_players")
+CODE_FIELDS = ("digit_of_byte", "grid")
 """The fields of :class:`MessageCodes`: each character byte's alphabet digit
 (:data:`agents.messages.DIGIT_OF_BYTE`), the message grid
-:func:`~agents.message_kernels.decode_digits` decodes with (:data:`agents.messages.WORLD_GRID`)
-and its votes' cycle modulus, the world and vote messages' kind codes and the most players a
-vote covers (:data:`agents.messages.CODES`)."""
+:func:`~agents.message_kernels.decode_digits` decodes with (:data:`agents.messages.MESSAGE_GRID`)."""
 
 
 class _Record(types.StructRef):
@@ -166,38 +163,50 @@ class SeeRecords:
 def message_codes() -> MessageCodes:
     """The :class:`MessageCodes` of :mod:`agents.messages` (one for every team: the tables never
     change)."""
-    tables = dict(grid=WORLD_GRID, modulus=int(WORLD_GRID[0]["modulus"]))
-    tables.update(zip(("world_kind", "vote_kind", "max_players"), CODES, strict=True))
-    return _by_name("MessageCodes", CODE_FIELDS, dict(tables, digit_of_byte=DIGIT_OF_BYTE), _new_message_codes)
+    tables = dict(grid=MESSAGE_GRID, digit_of_byte=DIGIT_OF_BYTE)
+    return _by_name("MessageCodes", CODE_FIELDS, tables, _new_message_codes)
 
 
 @njit(cache=True, nogil=True)
 def hear_and_believe(r: BeliefRecord, see: SeeRecord, listener: np.ndarray, speaker: np.ndarray, digits: np.ndarray,
-                     codes: MessageCodes, votes: np.ndarray, vote_cycle: np.ndarray,
+                     codes: MessageCodes, memory: TurnMemory, horizon: int,
                      cycle: int) -> None:  # pragma: no cover - compiled
     """A cycle's intake (module docstring): the messages ``digits`` (p, 10) that ``listener``
     (p,) heard from ``speaker`` (p,) decoded with ``codes``, the world models ``r`` updated
-    with the sees ``see`` of ``cycle`` and the world messages, the votes of the right size
-    stored in ``votes`` (n, n, k) and ``vote_cycle`` (n, n) (k = 0: none kept)."""
+    with the sees ``see`` of ``cycle`` and the messages' world information, and the proposals
+    of the right size each listener heard taken into ``memory``
+    (:func:`store_assignments`; no columns: none kept)."""
     p = digits.shape[0]
-    kind = np.full(p, -1, dtype=np.int64)
-    grid = np.zeros((p, 7), dtype=np.int64)
-    world = np.zeros((p, 7))
-    vote = np.zeros((p, codes.max_players), dtype=np.int64)
-    vote_size = np.zeros(p, dtype=np.int64)
-    vote_cycle_sent = np.zeros(p, dtype=np.int64)
+    decoded = np.zeros(p, dtype=DECODED)
+    assignment = np.zeros((p, codes.grid[0].max_roles), dtype=np.int64)
     if p > 0:
-        decode_digits(digits, codes.grid, kind, grid, world, vote, vote_size, vote_cycle_sent)
-    believe(r, see, listener, speaker, kind, world, codes.world_kind, cycle)
-    if p > 0 and votes.shape[2] > 0:
-        _store_votes(listener, speaker, kind, vote, vote_size, vote_cycle_sent, codes.vote_kind, cycle, codes.modulus,
-                     votes, vote_cycle)
+        decode_digits(digits, codes.grid, decoded, assignment)
+    believe(r, see, listener, speaker, decoded, cycle)
+    if p > 0 and memory.followed.shape[1] > 0:
+        store_assignments(listener, speaker, decoded, assignment, cycle, codes.grid[0].stamps, memory, horizon)
+
+
+@njit(cache=True, nogil=True)
+def store_assignments(listener: np.ndarray, speaker: np.ndarray, decoded: np.ndarray, assignment: np.ndarray,
+                      cycle: int, stamps: int, memory: TurnMemory, horizon: int) -> None:  # pragma: no cover
+    """Each proposal of the team's size (k) a listener heard from a team-mate at ``cycle``,
+    computed later than the last it heard (its cycle recovered from the stamp,
+    :func:`~agents.message_kernels.stamp_cycle`), taken into the listener's ``memory``
+    (:func:`~agents.teams.speaking.take_proposal`, with ``horizon``)."""
+    n, k = memory.followed.shape
+    for p in range(listener.shape[0]):
+        i, j = listener[p], speaker[p]
+        row = decoded[p]
+        if not row.valid or row.size != k or j < 0 or j >= n or j == i or i < 0 or i >= n:
+            continue
+        computed = stamp_cycle(row.stamp, cycle, stamps)
+        if computed > memory.proposal_cycle[i]:
+            take_proposal(i, assignment[p, :k], computed, row.settled, memory, horizon)
 
 
 @njit(cache=True, nogil=True)
 def hear_block_and_believe(r: BeliefRecord, see: SeeRecord, heard: np.ndarray, said: np.ndarray, codes: MessageCodes,
-                           votes: np.ndarray, vote_cycle: np.ndarray,
-                           cycle: int) -> None:  # pragma: no cover - compiled
+                           memory: TurnMemory, horizon: int, cycle: int) -> None:  # pragma: no cover - compiled
     """:func:`hear_and_believe` with the messages as the delivery has them: ``heard`` (n, n)
     bool, listener ``l`` heard team-mate ``s``; ``said`` (n, 10) uint8 the characters each
     team-mate said (any row for one that said nothing: it is never heard), each read as its
@@ -222,4 +231,4 @@ def hear_block_and_believe(r: BeliefRecord, see: SeeRecord, heard: np.ndarray, s
                 for d in range(said.shape[1]):
                     digits[k, d] = digit_of_byte[said[speaker, d]]
                 k += 1
-    hear_and_believe(r, see, listeners, speakers, digits, codes, votes, vote_cycle, cycle)
+    hear_and_believe(r, see, listeners, speakers, digits, codes, memory, horizon, cycle)

@@ -6,11 +6,13 @@ One pipeline for both observation modes; what differs is only the world model:
   one belief row, which every player takes its world from);
 * under **partial observation** each player believes what it saw and heard
   (:class:`~agents.teams.world_model.TeamBeliefs`: row ``i`` is player ``i``'s), and the players
-  talk (world messages and role votes) to keep their beliefs fresh and their roles agreed.
+  talk in turns (:mod:`agents.teams.speaking`: one team message a cycle, which every team-mate
+  in range hears) to keep their beliefs fresh and their roles agreed.
 
 Per cycle (team frame, we attack +x):
 
-1. **Beliefs.** The world model takes in the cycle's view (and the messages and votes heard).
+1. **Beliefs.** The world model takes in the cycle's view (and the team message heard: its
+   world information and its assignment).
 2. **Derived world, once per distinct belief** (:func:`~agents.teams.pipeline_kernels.derive_worlds`):
    its ball race (who of ours and theirs controls the ball first, where), attack or defend
    with hysteresis and the block moved at its pace, the formation queried, the targets
@@ -18,8 +20,10 @@ Per cycle (team frame, we attack +x):
    spots around our carrier.
 3. **Roles, once per distinct belief** (:meth:`Pipeline._assign`): the role assigner on the
    belief's team-mates and targets (under full observation once for the team, every row
-   agreeing; under partial observation on each player's own beliefs, at most every
-   ``assign_every`` cycles, the assignment followed being the one most of its votes agree on).
+   agreeing; under partial observation the speaker of the cycle on its own beliefs, and every
+   player follows the assignment it heard last, so the whole team changes assignment together
+   the cycle after it is said; a player who heard none lately assigns on its own beliefs, at
+   most every ``assign_every`` cycles).
 4. **Goals per player row** (:func:`~agents.teams.pipeline_kernels.player_goals`): the followed
    role's target, kept onside; the interception point for the one who goes for the ball and
    the pressers; a steering assigner's own field; the goalkeeper's guard point; follow-ups of
@@ -27,8 +31,8 @@ Per cycle (team frame, we attack +x):
 5. **Decisions on the ball and at set plays, per belief** (:mod:`agents.teams.decisions`), for
    a belief whose players include one on the ball by it.
 6. **Commands per player row**: the dash at the pace the stamina policy allows (or the
-   placement before a kick-off), the kick, catch or tackle decided in step 5, and what the
-   player says.
+   placement before a kick-off), the kick, catch or tackle decided in step 5, and the
+   speaker's team message.
 
 Row ``i``'s command depends on nothing but its belief and its own senses; under partial
 observation that is what player ``i`` alone saw and heard.
@@ -41,9 +45,8 @@ from collections.abc import Callable
 import numpy as np
 
 from agents import skills
-from agents.messages import CYCLE_MODULUS, MESSAGE_LENGTH, WORLD_GRID, digit_messages
+from agents.messages import MESSAGE_GRID, MESSAGE_LENGTH, digit_messages
 from agents.roles import RoleAssigner, RoleContext, offensive_order
-from agents.roles.voting import VoteBook
 from agents.skills.interception import UNREACHABLE, BallRace, Interception
 from agents.skills.movement import DEFAULT_PACING
 from agents.skills.player_kernels import Bodies
@@ -61,6 +64,7 @@ from agents.teams.reporting import RoleFigures
 from agents.teams.role_behaviours import RoleBehaviours
 from agents.teams.role_kernels import steered_goals
 from agents.teams.shape import Shape
+from agents.teams.speaking import speaker_of, turn_memory
 from agents.teams.style import TeamStyle
 from agents.teams.type_choice import time_scales
 from agents.teams.world_model import Senses, TeamBeliefs, TruthBeliefs
@@ -71,10 +75,10 @@ from soccer_sim.state import SET_PLAYS, PlayMode
 from soccer_sim.team import SideInfo, TeamCommand, TeamView
 
 ASSIGN_EVERY = 2
-"""Cycles between a belief's assignments at least (it assigns on the cycles its believer sees,
-and at once when the play mode changes): the players' votes travel every other cycle (world
-messages on the others), so an assignment made more often could not be agreed on any faster,
-and a belief's inputs move little in 0.2 s; the assignment it follows is kept between."""
+"""Cycles between the assignments of a belief that assigns for itself (under full observation,
+or a player who heard no assignment lately) at least: it assigns on the cycles its believer
+sees, and at once when the play mode changes; a belief's inputs move little in 0.2 s, and the
+assignment it follows is kept between."""
 
 RACE_NEAR = 20.0
 """A belief whose ball is within this (m) of one of its players runs its ball race again on
@@ -94,8 +98,9 @@ a back line steps up at about half a sprint (rcssserver's ``player_speed_max`` i
 GUARD_CYCLES = 6
 """... counted for at most this many cycles (3 m at most: a forward stays playable, not deep)."""
 
-VOTE_HORIZON = 20
-"""Cycles a heard vote counts (2 s: the assignment moves on with the ball)."""
+SAID_HORIZON = 20
+"""Cycles a heard assignment is followed (2 s: the assignment moves on with the ball; a player
+out of every speaker's range that long assigns for itself)."""
 
 PLACED = (PlayMode.KICK_OFF, PlayMode.AFTER_GOAL)
 """Play modes in which players are placed (``move``) rather than run."""
@@ -187,8 +192,13 @@ class Pipeline:
                            model.half_length, model.half_width)
         """The team's shape constants (:mod:`agents.teams.shape`)."""
         behaviours = RoleBehaviours(formation_set, model.half_length, model.half_width)
-        self.votes = VoteBook(n, VOTE_HORIZON, k) if world.talks and k else None
-        """The players' votes heard (None: the truth needs none, or no outfield roles)."""
+        self._talks = world.talks and k > 0
+        self._shared = style.shared_assignment and rows > 1 and k > 0
+        """Every player follows the first outfield player's belief's assignment (TeamStyle.shared_assignment)."""
+        self.turns = turn_memory(rows, k if self._talks and not self._shared else 0)
+        """What each belief keeps of the proposals heard (the speaking turns; no columns: the
+        truth needs no talk, no outfield roles, or the assignment is shared without a word)."""
+        self._speaks = np.zeros(n, dtype=bool)
         # arrays
         self.rank = np.full(n, -1, dtype=np.int64)
         self.rank[outfield] = np.arange(k)
@@ -250,8 +260,6 @@ class Pipeline:
                                      stamina=np.zeros(n), own_types=np.array(side_info.own_types or (0,) * n),
                                      opp_types=np.array(side_info.opponent_types or (0,) * m)))
         tables = {situation: formation_set.formation(situation).query_tables for situation in Situation}
-        votes = (self.votes.votes, self.votes.vote_cycle, int(self.votes.horizon)) if self.votes is not None else \
-            (np.zeros((n, n, 0), dtype=np.int64), np.zeros((n, n), dtype=np.int64), 0)
         shape = self.shape
         self.state: PipelineState = state_of(dict(
             ball=world.ball, ball_vel=world.ball_vel, ball_age=world.ball_age, mate_pos=world.mate_pos,
@@ -259,8 +267,8 @@ class Pipeline:
             opp_vel=world.opp_vel, opp_effort=np.ones(m), guard_x=np.zeros((rows, m)), guard_step=float(GUARD_STEP),
             guard_cycles=int(GUARD_CYCLES), belief_of=world.belief_of, able=self.able, ball_gap=np.zeros(rows),
             assigned_at=self._assigned_at, assigned_mode=self._assigned_mode, assign_every=int(ASSIGN_EVERY),
-            steers=bool(self._steers), first_outfield=int(outfield[0]) if k else -1, votes=votes[0],
-            vote_cycle=votes[1], vote_horizon=votes[2],
+            steers=bool(self._steers), first_outfield=int(outfield[0]) if k else -1, turns=self.turns,
+            said_horizon=int(SAID_HORIZON),
             radius=arrays.ours.radius, catch_radius=arrays.ours.catch_radius, opp_radius=arrays.theirs.radius,
             opp_catch_radius=arrays.theirs.catch_radius, reach=model.reach, ball_travel=model.ball_travel,
             coast=model.player_coast, race_constants=ctx.intercept_params,
@@ -295,7 +303,7 @@ class Pipeline:
             on_ball_distance=float(ON_BALL_DISTANCE),
             keeper_area_x=float(model.half_length - model.penalty_area_length - 2.0),
             keeper_area_y=float(model.penalty_area_half_width + 2.0),
-            world_grid=WORLD_GRID, vote_modulus=int(CYCLE_MODULUS)))
+            message_grid=MESSAGE_GRID, ball_decay=float(config.physics.ball_decay)))
         self._kickable = model.kickable_distance
 
     # ------------------------------------------------------------------ one cycle
@@ -304,8 +312,7 @@ class Pipeline:
         n, command, world, s = self.n, self.command, self.world, self.state
         self.cycles += 1
         cycle, mode, ours = view.cycle, view.play_mode, bool(view.mode_ours)
-        votes = (self.votes.votes, self.votes.vote_cycle) if self.votes is not None else None
-        senses = world.update(view, votes)
+        senses = world.update(view, self.turns, SAID_HORIZON)
         command.kick[:] = 0.0
         command.dash[:] = 0.0
         command.catch = False
@@ -324,7 +331,10 @@ class Pipeline:
         # 1. who decides on the ball, and who positions itself
         n_on_ball = self._who_decides(mode, ours, senses)
         # 2.-4. the derived world of each belief, its roles, every player's goal
-        n_rows, n_out, n_beliefs, n_due = plan_cycle(s, self._deciding, int(mode), placed, senses.saw, cycle)
+        speaker = speaker_of(cycle, n) if self._talks and senses.present[speaker_of(cycle, n)] else -1
+        assigning = int(self.outfield[0]) if self._shared else speaker
+        n_rows, n_out, n_beliefs, n_due = plan_cycle(s, self._deciding, int(mode), placed, senses.saw, cycle,
+                                                     assigning)
         beliefs = self._belief_rows[:n_beliefs]
         other = _OTHER.get(situation_of(mode, ours, False), NORMAL)  # (in play on each belief's own)
         derive_worlds(s, n_beliefs, play_on, mode == PlayMode.AFTER_GOAL, other,
@@ -336,6 +346,8 @@ class Pipeline:
         elif n_out:
             self._assign(self._due[:n_due], int(mode), cycle)
         follow_assignments(s, n_due, placed, cycle)
+        if self._shared and not placed:
+            self.following[beliefs] = self.following[self.world.belief_of[assigning]]
         player_goals(s, n_rows, n_beliefs, play_on)
         if self._steers and not self.style.stationary and n_out:
             self._steer(beliefs, play_on, cycle)
@@ -354,10 +366,9 @@ class Pipeline:
         if world.talks:  # a player knows what it just kicked
             world.kicked(command.kick, self._kickable + 0.2)
         # 6. dashes, what the players say, the figures
-        say_world = cycle % 2 == 0 or self.votes is None
         switches, mean, largest, far, shared, empty = dash_and_say(
             s, n_rows, n_out, play_on, Bodies(senses.position, senses.velocity, senses.effort, senses.stamina,
-                                              senses.capacity), cycle, view.half, command.dash, say_world, self._digits)
+                                              senses.capacity), cycle, view.half, command.dash, speaker, self._digits)
         self._after_dashes(decided, view)
         if play_on and n_out:
             self.figures.add(switches, True, mean, largest, far)
@@ -367,8 +378,10 @@ class Pipeline:
         else:
             self._spell_start = -1  # a stoppage ends a spell uncounted
         self._remember_passes(beliefs, kicked, play_on, view)
-        if world.talks:
-            command.say = digit_messages(self._digits, senses.present)
+        if speaker >= 0:
+            self._speaks[:] = False
+            self._speaks[speaker] = True
+            command.say = digit_messages(self._digits, self._speaks)
         return command
 
     def _who_decides(self, mode: PlayMode, ours: bool, senses: Senses) -> int:

@@ -25,13 +25,14 @@ import math
 import numpy as np
 from numba import njit
 
-from agents.message_kernels import number_digits, vote_number, world_message_number
-from agents.roles.voting import believed_conflicts, follow_votes
+from agents.message_kernels import number_digits
+from agents.roles.conflicts import believed_conflicts
 from agents.skills.interception_kernels import UNREACHABLE, MotionTables, Runners, race_kernel
 from agents.skills.player_kernels import Bodies, DashOut, paced_dash_rows
 from agents.teams.role_behaviours import adjust_role_targets
 from agents.teams.role_kernels import shape_targets
 from agents.teams.shape_kernels import advance_block, settle_targets, support_spots, switch_side
+from agents.teams.speaking import settles, speaker_message, take_proposal
 from formations.interpolation_kernels import value_kernel
 from soccer_sim.rules.offside import offside_line
 
@@ -40,21 +41,25 @@ OUR_SET_PLAY, THEIR_SET_PLAY, NORMAL = 0, 1, 2
 
 
 @njit(cache=True, nogil=True)
-def plan_cycle(s, deciding: np.ndarray, mode: int, placed: bool, saw: np.ndarray,
-               cycle: int) -> tuple[int, int, int, int]:  # pragma: no cover - compiled
+def plan_cycle(s, deciding: np.ndarray, mode: int, placed: bool, saw: np.ndarray, cycle: int,
+               assigning: int) -> tuple[int, int, int, int]:  # pragma: no cover - compiled
     """Who decides this cycle and what is derived: the ``deciding`` players into ``s.rows``,
     the outfield ones among them into ``s.outfield_rows``, the distinct beliefs they take
     their world from into ``s.belief_rows`` and, of those, the beliefs whose assignment is due
-    into ``s.due`` (at once when the play mode changed since the belief's last assignment,
-    else on a cycle its believer sees, at least ``s.assign_every`` cycles after it). Out of
-    the play modes that place players, the other beliefs follow the assignment their votes
-    agree on (into ``s.following``). ``s.full`` marks the beliefs that need every role's
+    into ``s.due``. The belief of player ``assigning`` (-1: none) is due every cycle and derived
+    even when that player does not position itself (with the speaking turns,
+    :mod:`agents.teams.speaking`, the speaker: its proposal is what it says). With the turns a
+    belief that holds an assignment heard within ``s.said_horizon`` cycles follows it (into
+    ``s.following``). A belief without one (no talk, or nothing heard lately) assigns for itself: at once when the play mode
+    changed since its last assignment, else on a cycle its believer sees, at least
+    ``s.assign_every`` cycles after it. ``s.full`` marks the beliefs that need every role's
     target (those that assign, all with a steering assigner, our first outfield player's,
     drawn). Returns the four counts."""
     n = deciding.shape[0]
     seen = np.zeros(n, dtype=np.bool_)
-    settled = np.empty(n, dtype=np.int64)
-    n_rows = n_out = n_beliefs = n_due = n_settled = 0
+    n_rows = n_out = n_beliefs = n_due = 0
+    talks = s.turns.followed.shape[1] > 0
+    speaker_belief = s.belief_of[assigning] if assigning >= 0 else -1
     for i in range(n):
         if not deciding[i]:
             continue
@@ -72,16 +77,22 @@ def plan_cycle(s, deciding: np.ndarray, mode: int, placed: bool, saw: np.ndarray
         s.ball_gap[b] = gap
         s.belief_rows[n_beliefs] = b
         n_beliefs += 1
-        if s.outfield.shape[0] == 0:
-            continue
-        if s.assigned_mode[b] != mode or (saw[b] and cycle - s.assigned_at[b] >= s.assign_every):
-            s.due[n_due] = b
-            n_due += 1
-        else:
-            settled[n_settled] = b
-            n_settled += 1
-    if not placed and s.votes.shape[2] > 0:
-        follow_votes(settled[:n_settled], s.votes, s.vote_cycle, s.proposals, cycle, s.vote_horizon, s.following)
+    if speaker_belief >= 0 and not seen[speaker_belief]:  # (a speaker on the ball still says an assignment)
+        seen[speaker_belief] = True
+        s.ball_gap[speaker_belief] = math.hypot(s.ball[speaker_belief, 0] - s.mate_pos[speaker_belief, assigning, 0],
+                                                s.ball[speaker_belief, 1] - s.mate_pos[speaker_belief, assigning, 1])
+        s.belief_rows[n_beliefs] = speaker_belief
+        n_beliefs += 1
+    if s.outfield.shape[0] > 0:
+        for d in range(n_beliefs):
+            b = s.belief_rows[d]
+            heard = talks and cycle - s.turns.heard_cycle[b] <= s.said_horizon
+            if heard and not placed:
+                s.following[b, :] = s.turns.followed[b, :]
+            if b == speaker_belief or (not heard and (s.assigned_mode[b] != mode
+                                                      or (saw[b] and cycle - s.assigned_at[b] >= s.assign_every))):
+                s.due[n_due] = b
+                n_due += 1
     s.full[:] = s.steers
     for d in range(n_due):
         s.full[s.due[d]] = True
@@ -295,17 +306,16 @@ def derive_worlds(s, n_beliefs: int, play_on: bool, after_goal: bool, other: int
 
 @njit(cache=True, nogil=True)
 def follow_assignments(s, n_due: int, placed: bool, cycle: int) -> None:  # pragma: no cover - compiled
-    """The end of the assignment: each belief that assigned this cycle (the first ``n_due`` of
-    ``s.due``) finds the assignment its votes agree on (without votes: its own proposal), out
-    of the play modes that place players; then every belief of this cycle follows what it
-    found (``following`` into ``followed``)."""
+    """The end of the assignment, out of the play modes that place players: each belief that
+    assigned this cycle (the first ``n_due`` of ``s.due``) follows its own proposal unless it
+    holds an assignment heard within ``s.said_horizon`` cycles (which :func:`plan_cycle` set
+    it to follow: a speaker's own proposal takes effect when it is heard)."""
     if placed:
         return
-    due = s.due[:n_due]
-    if s.votes.shape[2] > 0:
-        follow_votes(due, s.votes, s.vote_cycle, s.proposals, cycle, s.vote_horizon, s.following)
-    else:
-        for b in due:
+    talks = s.turns.followed.shape[1] > 0
+    for d in range(n_due):
+        b = s.due[d]
+        if not (talks and cycle - s.turns.heard_cycle[b] <= s.said_horizon):
             s.following[b, :] = s.proposals[b, :]
 
 
@@ -387,16 +397,15 @@ def ball_player(s, b: int) -> int:  # pragma: no cover - compiled
 
 @njit(cache=True, nogil=True)
 def dash_and_say(s, n_rows: int, n_out: int, play_on: bool, senses: Bodies, cycle: int, half: int, dash: np.ndarray,
-                 say_world: bool, digits: np.ndarray) -> tuple[int, float, float, int, int, int]:  # pragma: no cover
+                 speaker: int, digits: np.ndarray) -> tuple[int, float, float, int, int, int]:  # pragma: no cover
     """The end of a team's cycle in one call: each deciding player's pacing phase (1 its
     belief says we attack, 0 we defend, -1 not in play) and its dash to its goal into ``dash``
     (:func:`~agents.skills.player_kernels.paced_dash_rows`; ``senses``: every player's own
     position, velocity, effort, stamina and capacity as it senses them); in play on the role figures of the
-    outfield rows (:func:`_role_gaps`, the first four numbers returned); the digits of what
-    every player says into ``digits`` (rows, 10; none: no channel): with ``say_world`` its
-    world message (its believed ball, the ball's age and its own position), else its belief's
-    proposal as a vote; and in play on the believed role conflicts of the beliefs the players
-    follow (:func:`~agents.roles.voting.believed_conflicts`, the last two numbers)."""
+    outfield rows (:func:`_role_gaps`, the first four numbers returned); the team message of
+    the ``speaker`` (-1: nobody speaks) into its row of ``digits`` (:func:`say`); and in play on
+    the believed role conflicts of the beliefs the players follow
+    (:func:`~agents.roles.conflicts.believed_conflicts`, the last two numbers)."""
     rows = s.rows[:n_rows]
     position = senses.pos
     for i in rows:
@@ -408,17 +417,29 @@ def dash_and_say(s, n_rows: int, n_out: int, play_on: bool, senses: Bodies, cycl
     figures = (0, 0.0, 0.0, 0)
     if play_on and n_out > 0:
         figures = _role_gaps(s, s.outfield_rows[:n_out], position)
-    for i in range(digits.shape[0]):
-        b = s.belief_of[i]
-        if say_world:
-            number = world_message_number(s.ball[b], s.ball_vel[b], s.ball_age[b], s.mate_pos[b, i], s.world_grid)
-        else:
-            number = vote_number(s.proposals[b], cycle, s.vote_modulus)
-        number_digits(number, digits[i])
+    if speaker >= 0 and digits.shape[0] > 0:
+        say(s, speaker, cycle, digits[speaker])
     shared, empty = 0, 0
     if play_on and s.outfield.shape[0] > 0 and digits.shape[0] > 0:
         shared, empty = believed_conflicts(s.followed, s.outfield)
     return figures[0], figures[1], figures[2], figures[3], shared, empty
+
+
+@njit(cache=True, nogil=True)
+def say(s, speaker: int, cycle: int, digits: np.ndarray) -> None:  # pragma: no cover - compiled
+    """The ``speaker``'s team message of ``cycle`` into ``digits``
+    (:func:`~agents.teams.speaking.speaker_message`): the assignment its belief proposed this
+    cycle, settled or not (:func:`~agents.teams.speaking.settles`), and its world information.
+    The speaker knows what it said: its belief takes its own proposal as heard
+    (:func:`~agents.teams.speaking.take_proposal`), as its listeners do the next cycle."""
+    b = s.belief_of[speaker]
+    talks = s.turns.followed.shape[1] == s.proposals.shape[1]
+    settled = talks and settles(b, s.proposals[b], cycle, s.turns)
+    number_digits(speaker_message(s.proposals[b], cycle, settled, s.ball[b], s.ball_vel[b], s.ball_age[b],
+                                  s.mate_pos[b, speaker], s.belief_of.shape[0], s.ball_decay, s.message_grid),
+                  digits)
+    if talks:
+        take_proposal(b, s.proposals[b], cycle, settled, s.turns, s.said_horizon)
 
 
 @njit(cache=True, nogil=True)

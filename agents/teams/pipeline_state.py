@@ -23,8 +23,8 @@ FIELDS = (
     "opp_effort", "belief_of", "able", "ball_gap",
     # the offside line each belief keeps its players behind
     "guard_x", "guard_step", "guard_cycles",
-    # who assigns, and the votes heard
-    "assigned_at", "assigned_mode", "assign_every", "steers", "first_outfield", "votes", "vote_cycle", "vote_horizon",
+    # who assigns, and the assignments heard (the speaking turns)
+    "assigned_at", "assigned_mode", "assign_every", "steers", "first_outfield", "turns", "said_horizon",
     # the ball race
     "radius", "catch_radius", "opp_radius", "opp_catch_radius", "reach", "ball_travel", "coast", "race_constants",
     "raced", "race_near", "race_every",
@@ -48,8 +48,8 @@ FIELDS = (
     "half_length", "goals", "urgent", "phase", "row_ball", "pacing", "budgets", "last_role", "unfilled",
     # who decides on the ball
     "on_ball_distance", "keeper_area_x", "keeper_area_y",
-    # what the players say
-    "world_grid", "vote_modulus",
+    # what the speaker says
+    "message_grid", "ball_decay",
 )
 """The fields of :class:`PipelineState`, in the order :func:`new_state` takes them
 (:func:`state_of` takes them by name)."""

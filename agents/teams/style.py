@@ -59,6 +59,12 @@ class TeamStyle:
     tackling: TackleParams = field(default_factory=TackleParams)
     """When our players tackle an opponent on the ball, where they push it, and whether they
     ever foul on purpose (:mod:`agents.skills.tackling`)."""
+    shared_assignment: bool = False
+    """Under partial observation, every player follows one assignment, computed on one belief
+    (the first outfield player's) and known to all at once without a word: perfect agreement,
+    the ablation that takes the cost of disagreement out (``soccer-sim experiment ablation``).
+    A team that plays so no longer decides per player; under full observation it changes
+    nothing (every player believes the truth)."""
     goalkeeper_goal_kicks: bool = True
     """Our goalkeeper takes our goal kicks (as in real play; an outfield player when the
     goalkeeper's attempt was retaken, or when there is none)."""

@@ -13,13 +13,11 @@ m/cycle, cycles. Per cycle (:meth:`TeamBeliefs.update`):
    two sightings; players seen with a number update that player, those seen without one the
    nearest believed player of their side (or of either side) within a gate
    (:mod:`agents.teams.belief_kernels`). Each player's own position is its self-localisation.
-3. **Messages.** A team-mate's :class:`~agents.messages.WorldMessage` tells where it stands
-   (said last cycle: age 1) and where it believed the ball was, with the belief's age; the
-   listener takes the ball from it when that is fresher than its own belief, rolled on by the
-   cycle the message took.
-
-What a player says (:meth:`TeamBeliefs.world_messages`) is its own ball belief and position,
-which team-mates far from the ball use to keep theirs fresh.
+3. **Messages.** The team message heard (:class:`~agents.messages.TeamMessage`, said last
+   cycle by the team-mate whose turn it was, :mod:`agents.teams.speaking`) tells where the
+   speaker believed the ball would be now, with the belief's age and either the ball's velocity
+   or where the speaker stands (age 1); the listener takes the ball from it when that is
+   fresher than its own belief.
 """
 
 from __future__ import annotations
@@ -29,10 +27,12 @@ from typing import NamedTuple
 
 import numpy as np
 
-from agents.messages import heard_pairs, said_bytes, text_digits, world_texts
+from agents.message_kernels import number_digits
+from agents.messages import MESSAGE_GRID, MESSAGE_LENGTH, digit_texts, heard_pairs, said_bytes, text_digits
 from agents.teams.belief_kernels import AGE_NEVER, BELIEF_PARAMS, own_kicks
 from agents.teams.belief_record import (SeeRecords, belief_record, hear_and_believe, hear_block_and_believe,
                                         message_codes)
+from agents.teams.speaking import TurnMemory, speaker_message, turn_memory
 from soccer_sim.config import MatchConfig
 from soccer_sim.kernels import make_record
 from soccer_sim.perception.views import HeardLog, PlayerViews
@@ -108,7 +108,7 @@ class TruthBeliefs:
         self._holds = np.zeros(n, dtype=bool)
         self._saw = np.ones(n, dtype=bool)
 
-    def update(self, view: TeamView, votes: tuple[np.ndarray, np.ndarray] | None = None) -> Senses:
+    def update(self, view: TeamView, turns: TurnMemory | None = None, horizon: int = 0) -> Senses:
         """Row 0 becomes the team view's truth; returns the players' senses of this cycle."""
         self.view = view
         self.ball[0] = view.ball
@@ -132,17 +132,13 @@ class TruthBeliefs:
     def kicked(self, kick: np.ndarray, kickable: float) -> None:
         """The truth needs no telling what the players kicked."""
 
-    def world_messages(self, present: np.ndarray) -> list[str | None]:
-        """Nothing to say."""
-        return []
-
 
 class TeamBeliefs:
     """The world models of a team's ``n`` players about ``m`` opponents (module docstring)."""
 
     talks = True
-    """Whether the players keep their beliefs fresh through the say channel (yes: world messages
-    and role votes)."""
+    """Whether the players keep their beliefs fresh and their roles agreed through the say
+    channel (yes: the team message, in turns)."""
 
     def __init__(self, n: int, m: int, config: MatchConfig, params: BeliefParams = BeliefParams(),
                  side_info: SideInfo | None = None) -> None:
@@ -192,14 +188,14 @@ class TeamBeliefs:
         """The views' sees as a compiled record, kept while the views hand the same arrays."""
         self._codes = message_codes()
         """The say channel's decoding tables as a compiled record."""
-        self._no_votes = (np.zeros((n, n, 0), dtype=np.int64), np.zeros((n, n), dtype=np.int64))
-        """An empty vote book's arrays, for an update that keeps no votes."""
+        self._no_turns = turn_memory(n, 0)
+        """A memory that keeps no assignment heard, for an update without one."""
 
-    def update(self, views: PlayerViews, votes: tuple[np.ndarray, np.ndarray] | None = None) -> Senses:
-        """One cycle of every player's model from its own row of ``views`` and the team-mates'
-        messages it heard (module docstring). With ``votes`` (a
-        :class:`~agents.roles.voting.VoteBook`'s ``votes`` and ``vote_cycle``) the votes among
-        those messages are stored there too: one compiled call
+    def update(self, views: PlayerViews, turns: TurnMemory | None = None, horizon: int = 0) -> Senses:
+        """One cycle of every player's model from its own row of ``views`` and the team
+        message it heard (module docstring). With ``turns`` (the pipeline's memory of the
+        proposals heard, :class:`~agents.teams.speaking.TurnMemory`) the proposal heard is
+        taken into it too (a team assignment unheard for ``horizon`` cycles gives way at once): one compiled call
         (:func:`~agents.teams.belief_record.hear_and_believe`; for a match's
         :class:`~soccer_sim.perception.views.HeardLog` of messages all of our length,
         :func:`~agents.teams.belief_record.hear_block_and_believe` on the delivery itself).
@@ -209,15 +205,16 @@ class TeamBeliefs:
         self.mate_vel[rows, rows] = views.velocity
         self.mate_effort[:] = views.effort[:, None]
         log = views.heard_mates
-        kept_votes, vote_cycle = votes if votes is not None else self._no_votes
-        said = said_bytes(log.messages) if isinstance(log, HeardLog) else None
+        memory = turns if turns is not None else self._no_turns
+        characters = said_bytes(log.messages) if isinstance(log, HeardLog) else None
         see = self._sees.of(views)
-        if said is not None:  # (a match's delivery, decoded as it stands)
-            hear_block_and_believe(self.record, see, log.heard, said, self._codes, kept_votes, vote_cycle, views.cycle)
+        if characters is not None:  # (a match's delivery, decoded as it stands)
+            hear_block_and_believe(self.record, see, log.heard, characters, self._codes, memory, int(horizon),
+                                   views.cycle)
             return self._senses(views)
         listeners, speakers, texts = heard_pairs(log)
-        hear_and_believe(self.record, see, listeners, speakers, text_digits(texts), self._codes, kept_votes,
-                         vote_cycle, views.cycle)
+        hear_and_believe(self.record, see, listeners, speakers, text_digits(texts), self._codes, memory,
+                         int(horizon), views.cycle)
         return self._senses(views)
 
     @staticmethod
@@ -272,8 +269,14 @@ class TeamBeliefs:
         within ``kickable`` m: a player knows what it just did."""
         own_kicks(kick, float(kickable), self.ball, self.ball_vel, self.mate_pos, self._ball_speed_max)
 
-    def world_messages(self, present: np.ndarray) -> list[str | None]:
-        """Each present player's ball belief and own position as a 10-character message
-        (:func:`agents.messages.encode_world_clipped`); None for the absent."""
-        rows = self._rows
-        return world_texts(self.ball, self.ball_vel, self.ball_age, self.mate_pos[rows, rows], present)
+    def message(self, speaker: int, cycle: int, proposal: tuple[int, ...] = (), settled: bool = False) -> str:
+        """The team message ``speaker`` says at ``cycle`` from its beliefs
+        (:func:`~agents.teams.speaking.speaker_message`: its ball, and its velocity or the
+        speaker's position as the turn has it), with a role ``proposal`` (none by default), for
+        a team that speaks in turns (:func:`~agents.teams.speaking.speaker_of`)."""
+        digits = np.empty(MESSAGE_LENGTH, dtype=np.int64)
+        number_digits(speaker_message(np.array(proposal, dtype=np.int64), int(cycle), bool(settled),
+                                      self.ball[speaker], self.ball_vel[speaker], int(self.ball_age[speaker]),
+                                      self.mate_pos[speaker, speaker], self.n, self._ball_decay, MESSAGE_GRID),
+                      digits)
+        return digit_texts(digits[None], np.ones(1, dtype=bool))[0]

@@ -1,7 +1,7 @@
 """A team's intake in one compiled call (:mod:`agents.teams.belief_record`, made by
-:meth:`TeamBeliefs.update`): the same world models and votes as decoding the messages,
-updating the models and storing the votes one after the other, bad messages and a side
-without votes included; and the named records the kernels read (the sees' record kept while
+:meth:`TeamBeliefs.update`): the same world models and memory of proposals as decoding the
+messages, updating the models and taking the proposals one after the other, bad messages and a
+side that keeps no proposals included; and the named records the kernels read (the sees' record kept while
 the views hand the same arrays and made again when they hand others, the records built by
 field name, the belief parameters read by name)."""
 
@@ -13,51 +13,57 @@ from dataclasses import fields, replace
 import numpy as np
 import pytest
 
-from agents.messages import WORLD, WorldMessage, encode, heard_batch, vote_texts
-from agents.roles.voting import VoteBook
+from agents.messages import TeamMessage, encode, heard_batch
 from agents.teams.belief_kernels import BELIEF_PARAMS, believe
-from agents.teams.belief_record import SEE_FIELDS, SeeRecords, belief_record, see_record
+from agents.teams.belief_record import SEE_FIELDS, SeeRecords, belief_record, see_record, store_assignments
+from agents.teams.speaking import TurnMemory, turn_memory
 from agents.teams.world_model import BeliefParams, TeamBeliefs
 from soccer_sim.perception.views import PlayerViews
 from tests.agents.test_world_model import CONFIG, M, N, see_ball_at
 from tests.agents.test_world_model import views as hand_built_views
 
+HORIZON = 20
+
 
 def _heard(cycle: int) -> tuple:
-    """Team-mates' messages of a cycle: world messages, votes, and texts that are no message."""
-    world = encode(WorldMessage(ball=(3.0 + cycle, -2.0), ball_velocity=(0.4, 0.1), ball_age=cycle % 5,
-                                sender=(-4.0, 1.5)))
-    votes = vote_texts(np.array([[2, 0, 1], [1, 2, 0], [0, 1, 2]]), cycle - 1, np.ones(N, bool))
-    return (((1, votes[1]), (2, votes[2])), ((0, world), (2, "not a msg!")), ((0, votes[0]), (1, "(bad)")))
+    """Team-mates' messages of a cycle: team messages of both layouts, settled and not, and
+    texts that are no message."""
+    said = cycle - 1
+    with_velocity = encode(TeamMessage((2, 0, 1), said, cycle % 2 == 0, ball=(3.0 + cycle, -2.0), ball_age=cycle % 5,
+                                       ball_velocity=(0.4, 0.1)))
+    with_sender = encode(TeamMessage((1, 2, 0), said, True, ball=(2.0 + cycle, -1.0), ball_age=cycle % 3,
+                                     sender=(-4.0, 1.5)))
+    return (((1, with_sender), (2, with_velocity)), ((0, with_velocity), (2, "not a msg!")),
+            ((0, with_sender), (1, "(bad)")))
 
 
-def _three_steps(beliefs: TeamBeliefs, book: VoteBook | None, views) -> None:
-    """The intake one step after another: decode, the world-model kernel, the vote book."""
+def _three_steps(beliefs: TeamBeliefs, memory: TurnMemory | None, views) -> None:
+    """The intake one step after another: decode, the world-model kernel, the proposals taken."""
     heard = heard_batch(views.heard_mates)
-    believe(beliefs.record, see_record(views), heard.listener, heard.speaker, heard.decoded.kind, heard.decoded.world,
-            WORLD, views.cycle)
-    if book is not None:
-        book.hear(views.cycle, heard)
+    believe(beliefs.record, see_record(views), heard.listener, heard.speaker, heard.decoded.rows, views.cycle)
+    if memory is not None and heard.listener.size:
+        store_assignments(heard.listener, heard.speaker, heard.decoded.rows, heard.decoded.assignment, views.cycle,
+                          2, memory, HORIZON)
 
 
-@pytest.mark.parametrize("with_votes", [True, False])
-def test_one_call_gives_what_the_three_steps_give(with_votes: bool) -> None:
+@pytest.mark.parametrize("with_turns", [True, False])
+def test_one_call_gives_what_the_three_steps_give(with_turns: bool) -> None:
     apart, together = TeamBeliefs(N, M, CONFIG), TeamBeliefs(N, M, CONFIG)
-    book_apart = VoteBook(N, 20, N) if with_votes else None
-    book_together = VoteBook(N, 20, N) if with_votes else None
-    arrays = (book_together.votes, book_together.vote_cycle) if with_votes else None
+    memory_apart = turn_memory(N, N) if with_turns else None
+    memory_together = turn_memory(N, N) if with_turns else None
     for cycle in range(1, 9):
         views = see_ball_at({0: (1.0 * cycle, 0.5), 2: (1.1 * cycle, 0.4)} if cycle < 4 else {}, cycle)
         views.heard_mates = _heard(cycle) if cycle % 3 else ((),) * N  # some silent cycles
-        _three_steps(apart, book_apart, views)
-        together.update(views, arrays)
+        _three_steps(apart, memory_apart, views)
+        together.update(views, memory_together, HORIZON)
     for name in ("ball", "ball_vel", "ball_age", "mate_pos", "mate_age", "opp_pos", "opp_age"):
         np.testing.assert_array_equal(getattr(together, name), getattr(apart, name), err_msg=name)
     assert together.ball_age[1] <= 5  # player 1 saw nothing: the ball came from a message
-    if with_votes:
-        np.testing.assert_array_equal(book_together.votes, book_apart.votes)
-        np.testing.assert_array_equal(book_together.vote_cycle, book_apart.vote_cycle)
-        assert (book_together.votes[0, 1] == [1, 2, 0]).all() and (book_together.votes[2, 0] == [2, 0, 1]).all()
+    if with_turns:
+        for name, a, b in zip(TurnMemory._fields, memory_together, memory_apart):
+            np.testing.assert_array_equal(a, b, err_msg=name)
+        # player 0 took the settled proposal of cycle 7 it heard first (from player 1), not the later one
+        assert memory_together.followed[0].tolist() == [1, 2, 0] and memory_together.proposal_cycle[0] == 7
 
 
 def test_the_see_record_is_kept_while_the_views_hand_the_same_arrays_and_made_again_for_others() -> None:

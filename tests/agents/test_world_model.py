@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from agents.messages import WorldMessage, encode
+from agents.messages import TeamMessage, encode
+from agents.teams.speaking import speaker_of
 from agents.teams.belief_kernels import AGE_NEVER
 from agents.teams.world_model import TeamBeliefs
 from soccer_sim import MatchConfig
@@ -88,16 +89,26 @@ def test_players_by_number_then_the_nearest_of_their_side():
 def test_a_fresher_ball_from_a_team_mate_is_taken_a_staler_one_not():
     beliefs = TeamBeliefs(N, M, CONFIG)
     beliefs.update(see_ball_at({2: (30.0, 10.0)}, 0))
-    said = encode(WorldMessage(ball=(31.0, 10.0), ball_velocity=(0.5, 0.0), ball_age=0, sender=(12.0, -4.0)))
+    # the speaker says the ball where it expects it when heard, with its velocity then
+    said = encode(TeamMessage((), 0, False, ball=(31.5, 10.0), ball_age=0, ball_velocity=(0.45, 0.0)))
     heard = ((), ((2, said),), ((0, said),))   # player 1 hears player 2; player 2 hears "player 0"
     beliefs.update(views(1, heard_mates=heard))
-    np.testing.assert_allclose(beliefs.ball[1], [31.5, 10.0], atol=0.06)
-    np.testing.assert_allclose(beliefs.mate_pos[1, 2], [12.0, -4.0], atol=0.06)
+    np.testing.assert_allclose(beliefs.ball[1], [31.5, 10.0], atol=1e-9)
+    np.testing.assert_allclose(beliefs.ball_vel[1], [0.45, 0.0], atol=1e-9)
     assert beliefs.ball_age[1] == 1
     # player 2 saw the ball itself one cycle ago: the same message (age 1 when heard) is not fresher
     assert beliefs.ball_age[2] == 1 and abs(beliefs.ball[2, 0] - 31.5) > 0.2
-    # messages that are not world messages are ignored
-    beliefs.update(views(2, heard_mates=((), ((0, "not-a-msg!"),), ())))
+    # a message that carries the speaker's position places it (age 1), and the listener keeps
+    # the ball velocity it believes when taking a fresher ball without one
+    before = beliefs.ball_vel[1].copy() * CONFIG.physics.ball_decay
+    said = encode(TeamMessage((), 1, False, ball=(20.0, 3.0), ball_age=0, sender=(12.0, -4.0)))
+    beliefs.update(views(2, heard_mates=((), ((2, said),), ())))
+    np.testing.assert_allclose(beliefs.mate_pos[1, 2], [12.0, -4.0], atol=1e-9)
+    assert beliefs.mate_age[1, 2] == 1
+    np.testing.assert_allclose(beliefs.ball[1], [20.0, 3.0], atol=1e-9)
+    np.testing.assert_allclose(beliefs.ball_vel[1], before, atol=1e-9)
+    # texts that are not team messages are ignored
+    beliefs.update(views(3, heard_mates=((), ((0, "not-a-msg!"),), ())))
 
 
 def test_a_players_model_uses_only_its_own_observations():
@@ -131,9 +142,10 @@ class _Believer(ChaserTeam):
     def act(self, views):
         self.beliefs.update(views)
         command = super().act(views)
-        command.say = self.beliefs.world_messages(views.ball_seen)
-        if not self.talk:
-            command.say = None
+        speaker = speaker_of(views.cycle, len(views.present))
+        if self.talk:  # (in turns: one speaker a cycle)
+            command.say = [None] * len(views.present)
+            command.say[speaker] = self.beliefs.message(speaker, views.cycle)
         return command
 
 
@@ -165,7 +177,7 @@ def test_a_matchs_delivery_is_believed_as_the_same_messages_given_as_tuples():
     from dataclasses import replace
 
     from agents.messages import said_bytes
-    from agents.roles.voting import VoteBook
+    from agents.teams.speaking import turn_memory
     from soccer_sim.perception.views import HeardLog
     from soccer_sim.registry import resolve_team
 
@@ -183,7 +195,7 @@ def test_a_matchs_delivery_is_believed_as_the_same_messages_given_as_tuples():
             self.inner.reset(side_info, config, rng)
             n, m = side_info.players_per_team, side_info.opponents
             self.models = [TeamBeliefs(n, m, config) for _ in range(3)]
-            self.books = [VoteBook(n, 20, n - 1) for _ in range(3)]
+            self.books = [turn_memory(n, n - 1) for _ in range(3)]
 
         def act(self, views):
             assert isinstance(views.heard_mates, HeardLog)
@@ -191,12 +203,12 @@ def test_a_matchs_delivery_is_believed_as_the_same_messages_given_as_tuples():
             plain = replace(views, heard_mates=tuple(views.heard_mates))
             odd = tuple(tuple((s, "not ours!") if s == 1 else (s, t) for s, t in row) for row in views.heard_mates)
             for model, book, given in zip(self.models, self.books, (views, plain, replace(views, heard_mates=odd))):
-                model.update(given, (book.votes, book.vote_cycle))
+                model.update(given, book, 20)
             first, second, third = self.models
             for name in ("ball", "ball_vel", "ball_age", "mate_pos", "mate_age", "opp_pos", "opp_age"):
                 assert np.array_equal(getattr(first, name), getattr(second, name), equal_nan=True), name
-            assert np.array_equal(self.books[0].votes, self.books[1].votes)
-            assert np.array_equal(self.books[0].vote_cycle, self.books[1].vote_cycle)
+            for a, b in zip(self.books[0], self.books[1]):
+                assert np.array_equal(a, b)
             self.heard += sum(len(row) for row in views.heard_mates)
             self.compared += 1
             return self.inner.act(views)
@@ -204,7 +216,7 @@ def test_a_matchs_delivery_is_believed_as_the_same_messages_given_as_tuples():
     twin = Twin()
     Match(twin, "static", seed=5, config=MatchConfig(observation=ObservationConfig("partial"), max_cycles=200)).run()
     assert twin.compared == 200 and twin.heard > 1000
-    assert (twin.books[0].vote_cycle >= 0).any()  # votes were heard and stored
+    assert (twin.books[0].proposal_cycle >= 0).any()  # proposals were heard and taken
     assert not np.array_equal(twin.models[0].mate_age, twin.models[2].mate_age)  # the stranger's text was ignored
 
 
