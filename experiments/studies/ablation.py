@@ -208,19 +208,20 @@ def build_specs(params: dict) -> list:
     team, opponent and switch, the team named with its switch (:func:`ablated_name`)."""
     from experiments.runner.spec import paired_specs
 
-    specs = []
-    for team in params["teams"]:
-        for opponent in params["opponents"]:
-            pairs = paired_specs(team, opponent, params["games"], params["seed"], params["cycles"], "partial")
-            for switch in params["switches"]:
-                def named(side: str) -> str:
-                    return ablated_name(side, switch) if side == team else side
+    return [switched_spec(spec, team, switch)
+            for team in params["teams"] for opponent in params["opponents"]
+            for switch in params["switches"]
+            for spec in paired_specs(team, opponent, params["games"], params["seed"], params["cycles"], "partial")]
 
-                specs += [replace(spec, home=named(spec.home), away=named(spec.away), play=PLAY,
-                                  play_args=(("switch", switch), ("teams", (spec.home, spec.away))),
-                                  plays_teams=(spec.home, spec.away))
-                          for spec in pairs]
-    return specs
+
+def switched_spec(spec, team: str, switch: str):
+    """The case study's ``spec`` of ``team`` played by :func:`play_ablated` under ``switch``,
+    ``team`` named with the switch."""
+    def named(side: str) -> str:
+        return ablated_name(side, switch) if side == team else side
+
+    return replace(spec, home=named(spec.home), away=named(spec.away), play=PLAY,
+                   play_args=(("switch", switch), ("teams", (spec.home, spec.away))), plays_teams=(spec.home, spec.away))
 
 
 def play_ablated(spec, record, watch) -> None:
