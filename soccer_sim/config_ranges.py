@@ -187,10 +187,11 @@ FIELD_RANGES: dict[str, dict[str, FieldRange]] = {
     "SeeParams": {
         "visible_angle": FieldRange(0.0, 360.0, "degrees", low_open=True),
         "visible_distance": _length(positive=False),
-        "quantize_step": FieldRange(0.0, 10.0, "", low_open=True),
-        "quantize_step_l": FieldRange(0.0, 10.0, "", low_open=True),
-        "distance_step": _length(100.0),
-        "direction_step": FieldRange(0.0, 180.0, "degrees", low_open=True),
+        # 0: no quantisation (exact), SeeParams.without_noise
+        "quantize_step": FieldRange(0.0, 10.0, ""),
+        "quantize_step_l": FieldRange(0.0, 10.0, ""),
+        "distance_step": _length(100.0, positive=False),
+        "direction_step": FieldRange(0.0, 180.0, "degrees"),
         **{name: _length(10_000.0) for name in ("unum_far_length", "unum_too_far_length", "team_far_length",
                                                 "team_too_far_length", "max_observation_length")},
         "send_step": FieldRange(1, 60_000, "ms", integer=True),

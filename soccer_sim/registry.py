@@ -3,7 +3,8 @@
 A team is named either by a registered name (a Python entry point in the group
 ``soccer_sim.teams``, which any installed package can declare) or by a path
 ``package.module:Attribute`` (the attribute may be dotted). The attribute may be a Team
-instance, a class, or a factory called without arguments. The two built-in teams
+instance, a class, or a factory called without arguments (or with the team options a caller
+passes to :func:`resolve_team`). The two built-in teams
 (``idle``, ``chaser``) resolve even from a plain checkout where the package's entry points
 are not installed.
 """
@@ -14,7 +15,7 @@ import difflib
 import functools
 import importlib
 from importlib import metadata
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from typing import Any
 
 from soccer_sim.errors import SoccerSimError
@@ -118,17 +119,23 @@ def _origin(exc: BaseException) -> str:
     return f" (at {frame.tb_frame.f_code.co_filename}:{frame.tb_lineno})"
 
 
-def _instantiate(target: Any, name: str) -> Team:
+def _instantiate(target: Any, name: str, options: Mapping[str, Any] | None = None) -> Team:
+    """The team ``target`` (a Team, a class or a factory) names: the Team itself, or what
+    calling it gives, with ``options`` as keyword arguments (None or empty: no arguments)."""
+    how = "without arguments" if not options else "with " + ", ".join(f"{k}={v!r}" for k, v in options.items())
     if isinstance(target, Team) and not isinstance(target, type):
+        if options:
+            raise TeamNotFoundError(f"team {name!r} is a team object, not a class or factory: it takes no options "
+                                    f"({', '.join(options)})")
         return target
     if callable(target):
         try:
-            team = target()
+            team = target(**(options or {}))
         except SystemExit as exc:
-            raise TeamNotFoundError(f"team {name!r}: calling {target!r} without arguments called "
+            raise TeamNotFoundError(f"team {name!r}: calling {target!r} {how} called "
                                     f"sys.exit({exc.code!r})") from exc
         except Exception as exc:
-            raise TeamNotFoundError(f"team {name!r}: calling {target!r} without arguments failed: "
+            raise TeamNotFoundError(f"team {name!r}: calling {target!r} {how} failed: "
                                     f"{type(exc).__name__}: {_one_line(exc)}") from exc
         if isinstance(team, Team):
             return team
@@ -137,22 +144,25 @@ def _instantiate(target: Any, name: str) -> Team:
     raise TeamNotFoundError(f"team {name!r}: {target!r} is neither a Team nor a class/factory making one")
 
 
-def resolve_team(spec: Team | str | type) -> tuple[Team, str]:
+def resolve_team(spec: Team | str | type, options: Mapping[str, Any] | None = None) -> tuple[Team, str]:
     """Return (team instance, display name) for a Team object, a class, a registered name or a
     ``package.module:Attribute`` path. Unknown names raise :class:`TeamNotFoundError` naming
-    the closest registered ones (:func:`unknown_team_message`)."""
+    the closest registered ones (:func:`unknown_team_message`). ``options``: keyword arguments
+    for the class or factory (a team option such as a switch of a study; a
+    TeamNotFoundError, naming them, when it does not take them or ``spec`` is a Team object)."""
     if isinstance(spec, str):
         if ":" in spec:
-            return _instantiate(_load_path(spec), spec), spec
+            return _instantiate(_load_path(spec), spec, options), spec
         teams = available_teams()
         if spec not in teams:  # (perhaps installed since the names were read)
             teams = available_teams(refresh=True)
         if spec not in teams:
             raise TeamNotFoundError(unknown_team_message(spec, teams))
-        return _instantiate(_load_path(teams[spec], spec), spec), spec
+        return _instantiate(_load_path(teams[spec], spec), spec, options), spec
     if isinstance(spec, type):
-        return _instantiate(spec, spec.__name__), spec.__name__
+        return _instantiate(spec, spec.__name__, options), spec.__name__
     if isinstance(spec, Team):
-        return spec, str(getattr(spec, "name", type(spec).__name__))
+        name = str(getattr(spec, "name", type(spec).__name__))
+        return _instantiate(spec, name, options), name
     raise TeamNotFoundError(f"cannot use {spec!r} as a team: expected a team name, a path "
                             "'package.module:Attribute', a Team class or a Team object")

@@ -23,9 +23,11 @@ class RunInputError(ExperimentError):
     """Bad input to a command that runs matches; the message says what and how to fix it."""
 
 
-def add_run_arguments(parser: argparse.ArgumentParser, default_out: str, seed_help: str | None = None) -> None:
+def add_run_arguments(parser: argparse.ArgumentParser, default_out: str, seed_help: str | None = None,
+                      observation: bool = True) -> None:
     """(``seed_help``: the help of --seed where a command reads it otherwise) --games, --seed,
-    --cycles, --workers, --backend, --address, --out, --tables,
+    --cycles, --observation (not with ``observation`` False: a command that fixes it), --workers,
+    --backend, --address, --out, --tables,
     --match-timeout, --retry-errors, --record-dir, --rcg-dir, --record-every, --no-progress, --same-code."""
     from experiments.runner.run import BACKENDS, DEFAULT_MATCH_TIMEOUT
 
@@ -33,10 +35,11 @@ def add_run_arguments(parser: argparse.ArgumentParser, default_out: str, seed_he
                         help=seed_help or "first seed; a pairing plays seeds seed, seed+1, ... (default: 0)")
     parser.add_argument("--cycles", type=ranged("cycles"), default=None,
                         help="cycles per match (default: a regulation match of 6000); part of the configuration hash")
-    parser.add_argument("--observation", choices=("full", "partial"), default="full",
-                        help="what the teams perceive: the exact state (full, default) or each player's own noisy "
-                             "view and the say/hear channel (partial; teams must support it); part of the "
-                             "configuration hash")
+    if observation:
+        parser.add_argument("--observation", choices=("full", "partial"), default="full",
+                            help="what the teams perceive: the exact state (full, default) or each player's own "
+                                 "noisy view and the say/hear channel (partial; teams must support it); part of the "
+                                 "configuration hash")
     parser.add_argument("--workers", type=ranged("workers"), default=os.cpu_count() or 1,
                         help="worker processes (default: every core); with --backend ray: at most this many CPUs "
                              "of a local Ray instance")

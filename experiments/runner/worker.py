@@ -15,7 +15,7 @@ import signal
 import threading
 import time
 import traceback as tb
-from collections.abc import Callable, MutableSequence
+from collections.abc import Callable, Mapping, MutableSequence
 from typing import TYPE_CHECKING, Protocol
 
 from experiments.errors import ExperimentError
@@ -86,19 +86,24 @@ class _Watched:
         return marked
 
 
-def make_team(name: str) -> tuple[object, str]:
+def make_team(name: str, options: Mapping[str, object] | None = None) -> tuple[object, str]:
     """(team object, display name) for a registered name, a ``module:Attribute`` path, a
     mixed-team name (:mod:`experiments.mixed_team`) or a checkpoint team name
-    (``checkpoint:KIND:PATH?...``, :mod:`soccer_sim.env.checkpoint_teams`)."""
+    (``checkpoint:KIND:PATH?...``, :mod:`soccer_sim.env.checkpoint_teams`). ``options``: team
+    options passed to a registered or path team's factory as keyword arguments
+    (:func:`soccer_sim.resolve_team`); a mixed or checkpoint team takes none (ExperimentError)."""
     from experiments.mixed_team import is_mixed_name, mixed_team
     from soccer_sim import resolve_team
     from soccer_sim.env.checkpoint_teams import checkpoint_team, is_checkpoint_name
 
+    if options and (is_mixed_name(name) or is_checkpoint_name(name)):
+        raise ExperimentError(f"team {name!r} takes no team options ({', '.join(options)}): only a registered "
+                              "name or a package.module:Attribute path does")
     if is_mixed_name(name):
         return mixed_team(name), name
     if is_checkpoint_name(name):
         return checkpoint_team(name), name
-    return resolve_team(name)
+    return resolve_team(name, options)
 
 
 def play_spec(spec: MatchSpec, config_hash: str, code_version: str, timeout: float | None,
@@ -164,15 +169,20 @@ def _play_match(spec: MatchSpec, record: MatchRecord, deciding: MutableSequence[
         result = run_match(home, away, seed=spec.seed, config=spec.config(), recorders=[*recorders, *logs],
                            scenario=spec.scenario)
     disarm_timer(alarm)
-    record.home_goals, record.away_goals = (int(g) for g in result.score)
-    record.cycles = int(result.cycles)
-    record.home_stats, record.away_stats = (s.as_dict() for s in result.statistics)
+    record_result(record, result)
     if figures is not None:
         extra = recorders[0].figures()
         record.home_stats.update(extra)
         record.away_stats.update(extra)
     if report is not None:
         record.report = report(result)
+
+
+def record_result(record: MatchRecord, result: MatchResult) -> None:
+    """Fill ``record`` with a finished match's score, cycles and both teams' statistics."""
+    record.home_goals, record.away_goals = (int(g) for g in result.score)
+    record.cycles = int(result.cycles)
+    record.home_stats, record.away_stats = (s.as_dict() for s in result.statistics)
 
 
 def failure_text(exc: BaseException, spec: MatchSpec, side: int) -> str:

@@ -107,13 +107,19 @@ class Perception(NamedTuple):
 
 @njit(cache=True, nogil=True)
 def _quantize(value: float, step: float) -> float:  # pragma: no cover - compiled
-    """rcssserver's ``Quantize``: ``rint(value / step) * step``."""
+    """rcssserver's ``Quantize``: ``rint(value / step) * step``; ``value`` itself for ``step``
+    0 (no quantisation: :meth:`~.params.SeeParams.without_noise`)."""
+    if step == 0.0:
+        return value
     return np.rint(value / step) * step
 
 
 @njit(cache=True, nogil=True)
 def _reported_distance(distance: float, log_step: float, final_step: float) -> float:  # pragma: no cover - compiled
-    """``Quantize(exp(Quantize(log(d + EPS), log_step)), final_step)``."""
+    """``Quantize(exp(Quantize(log(d + EPS), log_step)), final_step)``; with ``log_step`` 0 the
+    logarithmic step is skipped (both 0: ``d`` itself, no quantisation)."""
+    if log_step == 0.0:
+        return _quantize(distance, final_step)
     return _quantize(math.exp(_quantize(math.log(distance + EPS), log_step)), final_step)
 
 

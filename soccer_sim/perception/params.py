@@ -14,7 +14,7 @@ with a see are ``0, 1, 3, 4, 6, 7, ...`` for offset 0: alternately one and two c
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
@@ -38,16 +38,16 @@ class SeeParams:
     """``visible_distance`` (m): objects outside the cone are still seen up to this distance,
     but only as anonymous ``(B)`` / ``(P)`` (no team, no number)."""
     quantize_step: float = 0.1
-    """``quantize_step``: step of the log-distance quantisation of the ball and players."""
+    """``quantize_step``: step of the log-distance quantisation of the ball and players (0: none)."""
     quantize_step_l: float = 0.01
     """``quantize_step_l``: step of the log-distance quantisation of the flags (landmarks),
-    used by the self-localisation model."""
+    used by the self-localisation model (0: none)."""
     distance_step: float = 0.1
     """The final rounding (m) of every observed distance: the ``Quantize(..., 0.1)`` of
-    ``QuantizeObservation::calcDistImpl``."""
+    ``QuantizeObservation::calcDistImpl`` (0: none)."""
     direction_step: float = 1.0
     """Rounding of observed directions (degrees): the integer degrees of the protocol (version
-    7 on rounds rather than truncates)."""
+    7 on rounds rather than truncates; 0: none)."""
     unum_far_length: float = 20.0
     """``unum_far_length`` (m): up to this observed distance a player's number is always seen."""
     unum_too_far_length: float = 40.0
@@ -80,6 +80,20 @@ class SeeParams:
         for near, far in (("unum_far_length", "unum_too_far_length"), ("team_far_length", "team_too_far_length")):
             if getattr(self, far) < getattr(self, near):
                 raise ConfigError(f"SeeParams.{far} ({getattr(self, far)}) must be >= {near} ({getattr(self, near)})")
+
+    def without_noise(self) -> SeeParams:
+        """These parameters with every source of observation noise off, the view's limits kept
+        (cone, ranges, see timing): distances and directions of the ball, players and flags
+        reported exactly (no quantisation: ``quantize_step``, ``quantize_step_l``,
+        ``distance_step`` and ``direction_step`` 0, so the self-localisation from flags is
+        exact on cycles with a see), and no player's team or number lost with distance (both
+        "far" lengths at ``max_observation_length``, beyond which nothing is seen). A player
+        within ``visible_distance`` but outside the cone stays anonymous (a limit of the view,
+        not noise), and ``sense_body``'s own speed keeps its 0.01 m/cycle resolution. Not an
+        rcssserver mode: for studies that separate the cost of noise from the view's limits."""
+        far = max(self.max_observation_length, self.team_too_far_length, self.unum_too_far_length)
+        return replace(self, quantize_step=0.0, quantize_step_l=0.0, distance_step=0.0, direction_step=0.0,
+                       unum_far_length=far, unum_too_far_length=far, team_far_length=far, team_too_far_length=far)
 
 
 def see_cycles(cycles: np.ndarray | int, params: SeeParams = SeeParams(),
