@@ -57,16 +57,26 @@ POSSESSION = TeamStyle(
 def _variant(assigner: str, ball_role: str = "keep") -> Callable[[], FormationTeam]:
     leave = ball_role == "leave"
 
-    def make() -> FormationTeam:
+    def make(**style_options: object) -> FormationTeam:
         if leave:
-            return FormationTeam(assigner, LEAVE_STYLE, name=f"{assigner}-leave")
-        return FormationTeam(assigner)
+            return FormationTeam(assigner, styled(LEAVE_STYLE, style_options), name=f"{assigner}-leave")
+        return FormationTeam(assigner, styled(TeamStyle(), style_options))
 
     stem = assigner.replace('+', '_').replace('-', '_')
     make.__name__ = make.__qualname__ = f"{stem}_leave_team" if leave else f"{stem}_team"
     make.__doc__ = (f"The built-in team with the {assigner!r} role assigner" +
                     (", its ball player out of the matching." if leave else "."))
     return make
+
+
+def styled(style: TeamStyle, options: dict[str, object]) -> TeamStyle:
+    """``style`` with the :class:`TeamStyle` fields ``options`` names changed (every built-in
+    team's factory takes them as keyword arguments, e.g. the ablation study's
+    ``shared_assignment=True``); a name that is not a field is a TypeError naming it."""
+    unknown = sorted(set(options) - set(TeamStyle.__dataclass_fields__))
+    if unknown:
+        raise TypeError(f"not a TeamStyle field: {', '.join(unknown)}")
+    return replace(style, **options) if options else style
 
 
 LEAVE_STYLE = TeamStyle(ball_role="leave")
@@ -92,21 +102,21 @@ msd2_leave_team = _variant("msd2", "leave")
 random_leave_team = _variant("random", "leave")
 
 
-def statues_team() -> FormationTeam:
+def statues_team(**style_options: object) -> FormationTeam:
     """Outfield players hold their kick-off spots (goalkeeper and skills as usual)."""
-    return FormationTeam("static", TeamStyle(stationary=True), name="statues")
+    return FormationTeam("static", styled(TeamStyle(stationary=True), style_options), name="statues")
 
 
-def counter_442_team() -> FormationTeam:
+def counter_442_team(**style_options: object) -> FormationTeam:
     """A deep, compact 4-4-2 that clears long and counter-attacks."""
-    return FormationTeam("static", COUNTER_442, name="counter-442")
+    return FormationTeam("static", styled(COUNTER_442, style_options), name="counter-442")
 
 
-def press_433_team() -> FormationTeam:
+def press_433_team(**style_options: object) -> FormationTeam:
     """A high 4-3-3 hunting the ball with two players."""
-    return FormationTeam("mmd+msd2", PRESS_433, name="press-433")
+    return FormationTeam("mmd+msd2", styled(PRESS_433, style_options), name="press-433")
 
 
-def possession_team() -> FormationTeam:
+def possession_team(**style_options: object) -> FormationTeam:
     """A 4-3-3 that keeps the ball with short passes and shoots only from close in."""
-    return FormationTeam("greedy-offense", POSSESSION, name="possession")
+    return FormationTeam("greedy-offense", styled(POSSESSION, style_options), name="possession")

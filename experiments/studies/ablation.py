@@ -104,6 +104,8 @@ SWITCHES: dict[str, Switch] = {switch.name: switch for switch in (
            _every_message_heard),
     Switch("no-noise", "observation noise: exact distances and directions, no identity lost with distance",
            _noiseless),
+    Switch("agreement", "disagreement: every player follows one assignment, computed on one player's belief "
+                        "and known to all at once", team_options=(("shared_assignment", True),)),
 )}
 """Every switch by name, in table order."""
 

@@ -292,3 +292,12 @@ def test_a_shared_assignment_leaves_no_player_disagreeing():
     stats = result.statistics[0].reported
     assert stats["role_conflict_share"] == 0.0 and stats["all_follow_one_share"] == 1.0
     assert home.pipeline.turns.followed.shape[1] == 0  # (no proposals said: nothing to agree on)
+
+
+def test_the_built_in_factories_take_style_fields_as_options():
+    from agents.teams.builtin import counter_442_team, mmdr_team
+
+    assert mmdr_team(shared_assignment=True).style.shared_assignment
+    assert counter_442_team(shared_assignment=True).style.system == "4-4-2"
+    with pytest.raises(TypeError, match="not a TeamStyle field: sharing"):
+        mmdr_team(sharing=True)

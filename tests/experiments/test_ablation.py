@@ -202,7 +202,7 @@ def test_the_study_runs_resumes_and_reports_one_row_per_team_and_switch(tmp_path
 
 
 @pytest.mark.parametrize("switches, words", [("baseline,omnii", "unknown switch 'omnii'; known switches: baseline, "
-                                                                 "exact-self, omni, all-heard, no-noise"),
+                                                                 "exact-self, omni, all-heard, no-noise, agreement"),
                                              ("omni", "must include baseline"),
                                              ("baseline,omni,omni", "named twice")])
 def test_bad_switches_fail_in_one_line_before_any_match(tmp_path, capsys, switches, words):
