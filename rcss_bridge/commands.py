@@ -32,8 +32,12 @@ the player's body (:class:`PlayerBodies`: what each player knows of itself from 
   faces (towards the ball, as far as the player's speed lets it turn), so that the real body
   and the modelled one agree as often as a free command allows.
 
-Then ``(turn_neck MOMENT)`` to keep the ball in view
-(:func:`~rcss_bridge.body_control.neck_moment`), and the say, sent quoted by the client layer.
+Then the neck: the command's own ``turn_neck`` when it has one (``(turn_neck MOMENT)`` within
+``minneckmoment`` / ``maxneckmoment``; none for NaN or 0: the simulator's rule, so a team that
+chooses where to look looks there on the server too), else a ``(turn_neck MOMENT)`` that keeps
+the ball in view (:func:`~rcss_bridge.body_control.neck_moment`: the simulator's players that
+never turn their neck look along a body that faces the ball). Then the say, sent quoted by the
+client layer.
 A player not present or frozen (after a tackle or a foul) sends no body command; one whose
 body direction is not known yet (no see with flags so far) only a move.
 
@@ -152,7 +156,7 @@ class CommandTranslator:
         """Each present player's order for this step (rows absent or sent off get none).
         ``server_mode``: the server's play mode as last heard
         (:attr:`~rcss_bridge.play_modes.RefereeState.server_mode`)."""
-        dash, kick, move, tackle, foul, catch, say = self._read(command)
+        dash, kick, move, tackle, foul, catch, say, turn_neck = self._read(command)
         self._check_bodies(bodies)
         holding = bool(bodies.holds_ball[self.goalie])
         if holding and not self._goalie_held:
@@ -197,7 +201,7 @@ class CommandTranslator:
                 body = ""
             if body:
                 self.sent[body[1:body.index(" ")]] += 1
-            neck = self._neck(row, turned, bodies)
+            neck = self._neck(row, turned, bodies) if turn_neck is None else self._turn_neck(float(turn_neck[row]))
             orders[row] = PlayerOrder(body + neck, None if say is None else say[row])
         return orders
 
@@ -230,7 +234,13 @@ class CommandTranslator:
         say = command.say
         if say is not None and (isinstance(say, str | bytes) or not hasattr(say, "__len__") or len(say) != self.n):
             raise CommandError(self.team_name, f"command.say must be a sequence of {self.n} messages (str or None)")
-        return dash, kick, move, tackle, foul, catch, say
+        turn_neck = None
+        if command.turn_neck is not None:
+            turn_neck = self._array(command.turn_neck, "turn_neck", (self.n,))
+            bad = np.flatnonzero(np.isinf(turn_neck))
+            if bad.size:
+                raise CommandError(self.team_name, f"command.turn_neck is infinite: {turn_neck[bad[0]]}", int(bad[0]))
+        return dash, kick, move, tackle, foul, catch, say, turn_neck
 
     def _array(self, values: object, name: str, shape: tuple[int, ...]) -> np.ndarray:
         return command_array(values, name, shape, lambda message: CommandError(self.team_name, message)).copy()
@@ -351,6 +361,14 @@ class CommandTranslator:
         moment that rounds to zero."""
         text = number(moment)
         return ("", 0.0) if text == "0" else (f"(turn {text})", float(text))
+
+    def _turn_neck(self, moment: float) -> str:
+        """The command's own neck turn (degrees; NaN or 0: none) as ``(turn_neck MOMENT)``
+        within ``minneckmoment`` / ``maxneckmoment``."""
+        if math.isnan(moment):
+            return ""
+        text = number(clamp(moment, self.rules.min_neck_moment, self.rules.max_neck_moment))
+        return "" if text == "0" else f"(turn_neck {text})"
 
     def _neck(self, row: int, turned: float, bodies: PlayerBodies) -> str:
         """The ``turn_neck`` that keeps the ball in view after this step's turn of moment

@@ -75,6 +75,11 @@ class TeamFrame:
         """(n,) the last command's tackle directions, absolute frame, radians (NaN: none)."""
         self.foul = np.zeros(n, dtype=bool)
         """(n,) the last command's foul flags."""
+        self.turns_neck = False
+        """Whether the last command read turned any player's neck (then :attr:`neck_turn` holds it)."""
+        self.neck_turn = np.zeros(n)
+        """(n,) the last command's neck turns (degrees; 0: none). A neck angle is relative to the
+        body, so it is the same in every frame."""
         self.said: Sequence[str | None] | None = None
         """The last command's messages (one per player, None: silent; a tuple, or the team's
         :class:`~soccer_sim.perception.coded.CodedMessages`), or None if nobody spoke."""
@@ -135,9 +140,33 @@ class TeamFrame:
             self.tackling = self._read_tackle(command.tackle, command.foul, sign)
         elif self.tackling:
             self.tackling = False
+        if command.turn_neck is not None:
+            self.turns_neck = self._read_turn_neck(command.turn_neck)
+        elif self.turns_neck:
+            self.turns_neck = False
         said = command.say
         self.said = None if said is None else self._read_say(said)
         return catch, move
+
+    def _read_turn_neck(self, turns: object) -> bool:
+        """Validate ``command.turn_neck`` (degrees, NaN for none) into :attr:`neck_turn` (NaN as
+        0); whether any player turns its neck."""
+        n = self.n
+        if isinstance(turns, np.ndarray) and turns.dtype.kind not in "fiu":
+            raise TeamError(self.name, f"command.turn_neck must be numeric, got dtype {turns.dtype}")
+        try:
+            degrees = np.asarray(turns, dtype=np.float64)
+        except (TypeError, ValueError) as exc:
+            raise TeamError(self.name, f"command.turn_neck is not a numeric array ({exc})") from exc
+        if degrees.shape != (n,):
+            raise TeamError(self.name, f"command.turn_neck must have shape {(n,)} (degrees per player), "
+                                       f"got {degrees.shape}")
+        bad = np.flatnonzero(np.isinf(degrees))
+        if bad.size:
+            raise TeamError(self.name, f"command.turn_neck is infinite: {degrees[bad[0]]}", player=int(bad[0]))
+        np.copyto(self.neck_turn, degrees)
+        self.neck_turn[np.isnan(degrees)] = 0.0
+        return bool(self.neck_turn.any())
 
     def _read_say(self, said: object) -> Sequence[str | None]:
         """The messages of ``command.say`` (one per player, str or None), each checked against

@@ -17,8 +17,10 @@ Per cycle ``t`` (:meth:`Observer.observe`, before the teams decide), in the abso
    coordinates are turned into positions with the player's own belief.
 4. **Hear**: the messages said at ``t - 1`` (:class:`~.audio.AudioChannel`).
 
-Then, after the teams decide, :meth:`Observer.say` records their messages with the positions
-at ``t``. All randomness (see phases, identity drops, the hearing order) comes from the one
+Each player looks along its face, the body direction plus its neck angle (:mod:`.neck`: 0 at
+the start, so a player that never turns its neck looks along its body). After the teams decide,
+:meth:`Observer.say` records their messages with the positions at ``t`` and
+:meth:`Observer.turn_necks` their ``turn_neck``, which the sees from ``t + 1`` on look through. All randomness (see phases, identity drops, the hearing order) comes from the one
 generator the match gives the observer, in a fixed order, so a match stays a pure function of
 its inputs. Nothing here runs under full observation.
 """
@@ -34,6 +36,7 @@ from soccer_sim.perception.audio import AudioChannel
 from soccer_sim.perception.config import ObservationConfig
 from soccer_sim.perception.kernels import ObserverRows, Perception, TrueBodies, perceive, see_record, senses_into
 from soccer_sim.perception.localise import DEFAULT_FLAGS
+from soccer_sim.perception.neck import turned_necks
 from soccer_sim.perception.params import see_cycles
 from soccer_sim.perception.views import HeardLog, PlayerViews
 from soccer_sim.state import WorldState
@@ -66,6 +69,8 @@ class Observer:
                                        first=np.where(team == 0, 0, sizes[0]).astype(np.int64))
         """Each player row's constants for :func:`~.kernels.perceive`."""
         self._belief = np.zeros((total, 2))
+        self.necks = np.zeros(total)
+        """(P,) each player's neck angle (degrees relative to its body; :meth:`turn_necks`)."""
         self._started = False
         self._half = 0
         k = max(total - 1, 0)
@@ -75,7 +80,7 @@ class Observer:
             frozen=np.empty(total, dtype=np.int64), cards=np.zeros(total, dtype=np.int64),
             present=np.empty(total, dtype=bool),
             holds_ball=np.zeros(total, dtype=bool), position=np.empty((total, 2)), velocity=np.empty((total, 2)),
-            body_direction=np.empty(total), localised=np.empty(total, dtype=bool), saw=np.empty(total, dtype=bool),
+            body_direction=np.empty(total), neck_angle=np.empty(total), localised=np.empty(total, dtype=bool), saw=np.empty(total, dtype=bool),
             ball_seen=np.empty(total, dtype=bool), ball=np.empty((total, 2)), ball_distance=np.empty(total),
             ball_direction=np.empty(total), seen_count=np.empty(total, dtype=np.int64),
             seen_position=np.empty((total, k, 2)), seen_distance=np.empty((total, k)),
@@ -106,7 +111,7 @@ class Observer:
         if not self._started:
             self._belief[:] = state.pos  # a player knows where it starts
         uniforms = self._rng.random((2, int(np.count_nonzero(seeing)), self._total + 1))
-        perceive(TrueBodies(state.pos, state.vel, state.ball, present), seeing, uniforms, self._started,
+        perceive(TrueBodies(state.pos, state.vel, state.ball, present, self.necks), seeing, uniforms, self._started,
                  float(state.home_attacks), self._constants, DEFAULT_FLAGS, self._prm, self._belief, self._perception)
         self._started = True
         senses_into(state.stamina, state.effort, state.capacity, state.frozen, present, int(state.ball_holder),
@@ -129,3 +134,10 @@ class Observer:
         with the players' ``positions`` (P, 2) m at ``cycle``; a bad one is a ``TeamError``
         (``checked``: :meth:`AudioChannel.say`'s, the caller checked them)."""
         self.channel.say(cycle, messages, positions, checked)
+
+    def turn_necks(self, moments: np.ndarray, present: np.ndarray) -> None:
+        """Apply every player's ``(turn_neck MOMENT)`` of this cycle: ``moments`` (P,) degrees
+        (NaN or 0: none), the players on the pitch (``present`` (P,)) only, by rcssserver's rule
+        (:func:`~.neck.turned_necks`)."""
+        turned = turned_necks(self.necks, moments, self.params)
+        np.copyto(self.necks, turned, where=np.asarray(present, dtype=bool))
