@@ -234,6 +234,14 @@ class TeamCommand:
     views report (:attr:`~soccer_sim.perception.views.PlayerViews.neck_angle`); under full
     observation the turns are checked and change nothing. An infinite or non-numeric turn, or
     an array of another shape, is a TeamError naming the player."""
+    change_view: np.ndarray | None = None
+    """(n,) integer view width codes, one per player: ``NARROW`` 0, ``NORMAL`` 1, ``WIDE`` 2
+    (:mod:`soccer_sim.perception.view_width`) or ``KEEP`` -1; None: nobody changes. rcssserver's
+    ``(change_view WIDTH)``, which goes with any body command: a cone of half, once or twice
+    ``SeeParams.visible_angle`` with a see every 75, 150 or 300 ms (``send_step`` / 2, 1, 2);
+    every player starts ``NORMAL``. Under partial observation the change holds from the next
+    cycle (:attr:`~soccer_sim.perception.views.PlayerViews.view_width`); under full observation
+    it is checked and changes nothing. Any other value or shape is a TeamError."""
 
 
 @runtime_checkable

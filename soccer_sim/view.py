@@ -19,6 +19,7 @@ import numpy as np
 from soccer_sim.kernels import mirror_bodies, store_command
 from soccer_sim.perception.audio import AudioParams, check_coded_messages, check_team_messages
 from soccer_sim.perception.coded import CodedMessages
+from soccer_sim.perception.view_width import KEEP, check_view_widths
 from soccer_sim.state import NO_PLAYER, StateError, WorldState
 from soccer_sim.team import TeamCommand, TeamError, TeamView, command_array
 
@@ -80,6 +81,11 @@ class TeamFrame:
         self.neck_turn = np.zeros(n)
         """(n,) the last command's neck turns (degrees; 0: none). A neck angle is relative to the
         body, so it is the same in every frame."""
+        self.changes_view = False
+        """Whether the last command read asked any player to change its view width (then
+        :attr:`view_width` holds it)."""
+        self.view_width = np.full(n, KEEP, dtype=np.int64)
+        """(n,) the last command's view width codes (``KEEP``: none)."""
         self.said: Sequence[str | None] | None = None
         """The last command's messages (one per player, None: silent; a tuple, or the team's
         :class:`~soccer_sim.perception.coded.CodedMessages`), or None if nobody spoke."""
@@ -144,9 +150,21 @@ class TeamFrame:
             self.turns_neck = self._read_turn_neck(command.turn_neck)
         elif self.turns_neck:
             self.turns_neck = False
+        if command.change_view is not None:
+            self.changes_view = self._read_change_view(command.change_view)
+        elif self.changes_view:
+            self.changes_view = False
         said = command.say
         self.said = None if said is None else self._read_say(said)
         return catch, move
+
+    def _read_change_view(self, widths: object) -> bool:
+        """Validate ``command.change_view`` into :attr:`view_width`; whether anybody asks for a width."""
+        codes = check_view_widths(widths, self.n)
+        if isinstance(codes, str):
+            raise TeamError(self.name, codes)
+        self.view_width[:] = codes
+        return bool((codes != KEEP).any())
 
     def _read_turn_neck(self, turns: object) -> bool:
         """Validate ``command.turn_neck`` (degrees, NaN for none) into :attr:`neck_turn` (NaN as

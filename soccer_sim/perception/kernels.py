@@ -65,14 +65,16 @@ class SightingRows(NamedTuple):
 
 class TrueBodies(NamedTuple):
     """This cycle's truth that :func:`perceive` perceives, absolute frame: the players' (P, 2)
-    positions (m) and velocities (m/cycle), the ball (2,) m, who is on the pitch (P,) and each
-    player's neck angle (P,) (degrees relative to its body, :mod:`.neck`)."""
+    positions (m) and velocities (m/cycle), the ball (2,) m, who is on the pitch (P,), each
+    player's neck angle (P,) (degrees relative to its body, :mod:`.neck`) and half its view
+    cone (P,) (degrees: its view width's, :mod:`.view_width`)."""
 
     pos: np.ndarray
     vel: np.ndarray
     ball: np.ndarray
     present: np.ndarray
     neck: np.ndarray
+    half_angle: np.ndarray
 
 
 class ObserverRows(NamedTuple):
@@ -240,13 +242,14 @@ def position_from_sightings(flags: np.ndarray, distances: np.ndarray, directions
 
 
 @njit(cache=True, nogil=True)
-def _localise_one(px: float, py: float, body: float, flags: np.ndarray,
+def _localise_one(px: float, py: float, body: float, half: float, flags: np.ndarray,
                   prm: np.ndarray) -> tuple[float, float, int]:  # pragma: no cover - compiled
-    """One player's position from the flags it sees, and how many it sees (NaN, NaN, 0 for none)."""
+    """One player's position from the flags it sees looking along ``body`` with a cone of half
+    angle ``half`` (degrees), and how many it sees (NaN, NaN, 0 for none)."""
     close, q_l, d_step, a_step = prm[0].visible_distance, prm[0].quantize_step_l, prm[0].distance_step, \
         prm[0].direction_step
     b = math.radians(body)
-    bx, by, cos_half = math.cos(b), math.sin(b), math.cos(math.radians(prm[0].half_angle))
+    bx, by, cos_half = math.cos(b), math.sin(b), math.cos(math.radians(half))
     close2, cos2 = _unseen_bounds(cos_half, close, prm)
     sx = 0.0
     sy = 0.0
@@ -275,22 +278,23 @@ def localise_into(pos: np.ndarray, body: np.ndarray, flags: np.ndarray, prm: np.
     """Each player's position from the flags it sees (mean of ``f - d_f (cos, sin)(b + a_f)``)
     into ``estimate`` (NaN when none is seen) and the number of flags into ``count``."""
     for i in range(pos.shape[0]):
-        estimate[i, 0], estimate[i, 1], count[i] = _localise_one(pos[i, 0], pos[i, 1], body[i], flags, prm)
+        estimate[i, 0], estimate[i, 1], count[i] = _localise_one(pos[i, 0], pos[i, 1], body[i], prm[0].half_angle,
+                                                                 flags, prm)
 
 
 @njit(cache=True, nogil=True)
-def _see_one(ox: float, oy: float, body: float, objects: np.ndarray, me: int, visible: np.ndarray,
+def _see_one(ox: float, oy: float, body: float, half: float, objects: np.ndarray, me: int, visible: np.ndarray,
              u_team: np.ndarray, u_unum: np.ndarray, prm: np.ndarray,
              out: SightingRows) -> None:  # pragma: no cover - compiled
-    """What one observer at ``(ox, oy)`` looking along ``body`` sees of ``objects`` (object 0 the
-    ball; ``me`` its own object row or -1; ``visible[j]`` False for objects that cannot be seen),
-    into its row ``out``; ``u_team``, ``u_unum``: its identity-drop draws; ``prm``: a
-    :data:`SEE_PARAMS` record."""
+    """What one observer at ``(ox, oy)`` looking along ``body`` with a cone of half angle
+    ``half`` (degrees) sees of ``objects`` (object 0 the ball; ``me`` its own object row or -1;
+    ``visible[j]`` False for objects that cannot be seen), into its row ``out``; ``u_team``,
+    ``u_unum``: its identity-drop draws; ``prm``: a :data:`SEE_PARAMS` record."""
     seen, distance, direction, identity, in_cone = out.seen, out.distance, out.direction, out.identity, out.in_cone
     close, q, d_step, a_step = prm[0].visible_distance, prm[0].quantize_step, prm[0].distance_step, \
         prm[0].direction_step
     b = math.radians(body)
-    bx, by, cos_half = math.cos(b), math.sin(b), math.cos(math.radians(prm[0].half_angle))
+    bx, by, cos_half = math.cos(b), math.sin(b), math.cos(math.radians(half))
     close2, cos2 = _unseen_bounds(cos_half, close, prm)
     for j in range(objects.shape[0]):
         dx, dy = objects[j, 0] - ox, objects[j, 1] - oy
@@ -333,8 +337,8 @@ def see_into(obs: np.ndarray, body: np.ndarray, objects: np.ndarray, self_index:
     record."""
     for i in range(obs.shape[0]):
         me = self_index[i] + 1 if self_index[i] >= 0 else -1
-        _see_one(obs[i, 0], obs[i, 1], body[i], objects, me, visible, uniforms[0, i], uniforms[1, i], prm,
-                 SightingRows(out.seen[i], out.distance[i], out.direction[i], out.identity[i], out.in_cone[i]))
+        _see_one(obs[i, 0], obs[i, 1], body[i], prm[0].half_angle, objects, me, visible, uniforms[0, i],
+                 uniforms[1, i], prm, SightingRows(out.seen[i], out.distance[i], out.direction[i], out.identity[i], out.in_cone[i]))
 
 
 @njit(cache=True, nogil=True)
@@ -418,12 +422,12 @@ def perceive(truth: TrueBodies, seeing: np.ndarray, uniforms: np.ndarray, advanc
             if exact_self:
                 localised[p] = True
             else:
-                x, y, flags_seen = _localise_one(pos[p, 0], pos[p, 1], face, flags, prm)
+                x, y, flags_seen = _localise_one(pos[p, 0], pos[p, 1], face, truth.half_angle[p], flags, prm)
                 if flags_seen > 0:
                     localised[p] = True
                     belief[p, 0], belief[p, 1] = x, y
-            _see_one(pos[p, 0], pos[p, 1], face, objects, p + 1, visible, uniforms[0, k], uniforms[1, k], prm,
-                     sighted)
+            _see_one(pos[p, 0], pos[p, 1], face, truth.half_angle[p], objects, p + 1, visible, uniforms[0, k],
+                     uniforms[1, k], prm, sighted)
             k += 1
             b = math.radians(face)
             if seen[0]:

@@ -37,6 +37,7 @@ from soccer_sim.perception.config import ObservationConfig
 from soccer_sim.perception.kernels import ObserverRows, Perception, TrueBodies, perceive, see_record, senses_into
 from soccer_sim.perception.localise import DEFAULT_FLAGS
 from soccer_sim.perception.neck import turned_necks
+from soccer_sim.perception.view_width import NORMAL, SeeTimer, view_angles
 from soccer_sim.perception.params import see_cycles
 from soccer_sim.perception.views import HeardLog, PlayerViews
 from soccer_sim.state import WorldState
@@ -71,6 +72,11 @@ class Observer:
         self._belief = np.zeros((total, 2))
         self.necks = np.zeros(total)
         """(P,) each player's neck angle (degrees relative to its body; :meth:`turn_necks`)."""
+        self.half_angles = np.full(total, params.visible_angle / 2.0)
+        """(P,) half of each player's view cone (degrees; its view width's, :meth:`change_views`)."""
+        self._timer: SeeTimer | None = None
+        """The players' see timers once a player has changed its view width (until then every
+        player sees at ``normal``'s pace, the table above)."""
         self._started = False
         self._half = 0
         k = max(total - 1, 0)
@@ -80,7 +86,8 @@ class Observer:
             frozen=np.empty(total, dtype=np.int64), cards=np.zeros(total, dtype=np.int64),
             present=np.empty(total, dtype=bool),
             holds_ball=np.zeros(total, dtype=bool), position=np.empty((total, 2)), velocity=np.empty((total, 2)),
-            body_direction=np.empty(total), neck_angle=np.empty(total), localised=np.empty(total, dtype=bool), saw=np.empty(total, dtype=bool),
+            body_direction=np.empty(total), neck_angle=np.empty(total),
+            view_width=np.full(total, NORMAL, dtype=np.int64), localised=np.empty(total, dtype=bool), saw=np.empty(total, dtype=bool),
             ball_seen=np.empty(total, dtype=bool), ball=np.empty((total, 2)), ball_distance=np.empty(total),
             ball_direction=np.empty(total), seen_count=np.empty(total, dtype=np.int64),
             seen_position=np.empty((total, k, 2)), seen_distance=np.empty((total, k)),
@@ -107,11 +114,14 @@ class Observer:
             self.channel.reset_capacity()
         present = state.present
         seeing = out["saw"]
-        np.logical_and(self._see_table[state.cycle % len(self._see_table)], present, out=seeing)
+        if self._timer is None:
+            np.logical_and(self._see_table[state.cycle % len(self._see_table)], present, out=seeing)
+        else:
+            np.logical_and(self._timer.sees(state.cycle, seeing), present, out=seeing)
         if not self._started:
             self._belief[:] = state.pos  # a player knows where it starts
         uniforms = self._rng.random((2, int(np.count_nonzero(seeing)), self._total + 1))
-        perceive(TrueBodies(state.pos, state.vel, state.ball, present, self.necks), seeing, uniforms, self._started,
+        perceive(TrueBodies(state.pos, state.vel, state.ball, present, self.necks, self.half_angles), seeing, uniforms, self._started,
                  float(state.home_attacks), self._constants, DEFAULT_FLAGS, self._prm, self._belief, self._perception)
         self._started = True
         senses_into(state.stamina, state.effort, state.capacity, state.frozen, present, int(state.ball_holder),
@@ -141,3 +151,16 @@ class Observer:
         (:func:`~.neck.turned_necks`)."""
         turned = turned_necks(self.necks, moments, self.params)
         np.copyto(self.necks, turned, where=np.asarray(present, dtype=bool))
+
+    def change_views(self, cycle: int, widths: np.ndarray, present: np.ndarray) -> None:
+        """Apply every player's ``(change_view WIDTH)`` asked at ``cycle``: ``widths`` (P,) codes
+        (:data:`~.view_width.KEEP` for none), the players on the pitch only; the cone and the
+        pace of the sees change from cycle ``cycle + 1`` on (:mod:`.view_width`)."""
+        asked = np.where(np.asarray(present, dtype=bool), widths, -1)
+        if self._timer is None:
+            if not ((asked >= 0) & (asked != NORMAL)).any():
+                return
+            self._timer = SeeTimer(self.params, self.offsets_ms, cycle + 1)
+        self._timer.change(asked, cycle + 1)
+        self._out["view_width"][:] = self._timer.widths
+        self.half_angles[:] = view_angles(self._timer.widths, self.params) / 2.0

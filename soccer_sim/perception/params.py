@@ -33,7 +33,8 @@ class SeeParams:
 
     visible_angle: float = 90.0
     """Total width of the view cone (degrees) around the face (the body direction plus the neck
-    angle): ``visible_angle`` with view width ``normal``. An object is in the cone when ``|direction| < visible_angle / 2``."""
+    angle): ``visible_angle`` with view width ``normal`` (half of it ``narrow``, twice ``wide``:
+    :mod:`.view_width`). An object is in the cone when ``|direction| < visible_angle / 2``."""
     visible_distance: float = 3.0
     """``visible_distance`` (m): objects outside the cone are still seen up to this distance,
     but only as anonymous ``(B)`` / ``(P)`` (no team, no number)."""

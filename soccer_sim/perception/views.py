@@ -229,6 +229,11 @@ class PlayerViews:
     cards: np.ndarray | None = None
     """(n,) each player's yellow cards (sense_body's ``card``: 0 or 1; 2 once sent off); None:
     nobody is carded."""
+    view_width: np.ndarray | None = None
+    """(n,) each player's view width (sense_body's ``view_mode``): ``NARROW`` 0, ``NORMAL`` 1 or
+    ``WIDE`` 2 (:mod:`soccer_sim.perception.view_width`: a cone of half, once or twice
+    ``visible_angle``, sees every 75, 150 or 300 ms), which only the player's own
+    ``TeamCommand.change_view`` changes. None in views built by hand: all ``NORMAL``."""
     neck_angle: np.ndarray | None = None
     """(n,) each player's neck (sense_body's ``head_angle``): the face's angle to the body
     (degrees, ``SeeParams.min_neck_angle`` .. ``max_neck_angle``), which only the player's own
@@ -240,6 +245,8 @@ class PlayerViews:
         n = len(self.stamina)
         if self.neck_angle is None:
             self.neck_angle = np.zeros(n)
+        if self.view_width is None:
+            self.view_width = np.ones(n, dtype=np.int64)
         if not self.heard_mates:
             self.heard_mates = ((),) * n
         if not self.heard_opponents:

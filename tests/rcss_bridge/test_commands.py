@@ -335,6 +335,25 @@ def test_a_commands_own_neck_turn_is_sent_as_it_is_within_the_servers_moments(tr
     assert body_of(orders[1]) == [("turn", [90.0]), ("turn_neck", [-40.0])]  # the body turns to the ball, the face too
 
 
+def test_a_commands_view_width_is_sent_when_it_differs_from_the_players(translator):
+    """``change_view`` codes (NARROW 0, NORMAL 1, WIDE 2, KEEP -1) become ``(change_view
+    WIDTH)`` only for a player whose sense_body told another width (nothing for KEEP), with
+    any body command and the neck."""
+    widths = np.full(N, -1)
+    widths[[1, 2, 3, 4]] = [0, 2, 1, 0]
+    told = np.ones(N, dtype=np.int64)
+    told[4] = 0  # already narrow
+    turns = np.zeros(N)
+    turns[1] = 30.0
+    orders = translator.translate(command(dash={2: (0.6, 0.0)}, change_view=widths, turn_neck=turns),
+                                  bodies(ball=(0.0, 5.0), view_width=told), "play_on")
+    assert "(change_view narrow)" in orders[1].commands and "(turn_neck 30)" in orders[1].commands
+    assert "(change_view wide)" in orders[2].commands and orders[2].commands.startswith("(dash ")
+    assert all("change_view" not in orders[row].commands for row in (0, 3, 4, 5))
+    with pytest.raises(CommandError, match=r"command.change_view\[0\] is 5: not a view width"):
+        translator.translate(command(change_view=np.full(N, 5)), bodies(), "play_on")
+
+
 @pytest.mark.parametrize("turns, message", [
     (np.full(N, np.inf), "command.turn_neck is infinite: inf"),
     (np.zeros(N + 1), r"command.turn_neck must have shape \(11,\)"),

@@ -120,3 +120,12 @@ def test_the_neck_angle_is_sense_bodys_head_angle():
     assert builder.necks[:2].tolist() == [-45.0, 0.0]
     views = builder.update(1, {1: [read_message(text)]})
     assert views.neck_angle[0] == -45.0
+
+
+def test_the_view_width_is_sense_bodys_view_mode():
+    text = next(t for t in received("BRIDGE-1")[42] if t.startswith("(sense_body"))
+    narrow = text.replace("(view_mode high normal)", "(view_mode high narrow)")
+    assert narrow != text
+    builder = ViewsBuilder("BRIDGE", "l", 11, DECAY)
+    views = builder.update(0, {0: [read_message(narrow)], 1: [read_message(text)]})
+    assert views.view_width[:3].tolist() == [0, 1, 1]  # NARROW, NORMAL, and NORMAL for a row not heard
