@@ -222,10 +222,7 @@ class CommandTranslator:
         move = None if command.move is None else self._vectors(command.move, "move")
         tackle = np.full(self.n, np.nan)
         if command.tackle is not None:
-            tackle = self._array(command.tackle, "tackle", (self.n,))
-            bad = np.flatnonzero(np.isinf(tackle))
-            if bad.size:
-                raise CommandError(self.team_name, f"command.tackle is infinite: {tackle[bad[0]]}", int(bad[0]))
+            tackle = self._angles(command.tackle, "tackle")
         foul = np.zeros(self.n, dtype=bool)
         if command.foul is not None:
             flags = np.asarray(command.foul)
@@ -241,12 +238,7 @@ class CommandTranslator:
         say = command.say
         if say is not None and (isinstance(say, str | bytes) or not hasattr(say, "__len__") or len(say) != self.n):
             raise CommandError(self.team_name, f"command.say must be a sequence of {self.n} messages (str or None)")
-        turn_neck = None
-        if command.turn_neck is not None:
-            turn_neck = self._array(command.turn_neck, "turn_neck", (self.n,))
-            bad = np.flatnonzero(np.isinf(turn_neck))
-            if bad.size:
-                raise CommandError(self.team_name, f"command.turn_neck is infinite: {turn_neck[bad[0]]}", int(bad[0]))
+        turn_neck = None if command.turn_neck is None else self._angles(command.turn_neck, "turn_neck")
         widths = None
         if command.change_view is not None:
             widths = check_view_widths(command.change_view, self.n)
@@ -256,6 +248,14 @@ class CommandTranslator:
 
     def _array(self, values: object, name: str, shape: tuple[int, ...]) -> np.ndarray:
         return command_array(values, name, shape, lambda message: CommandError(self.team_name, message)).copy()
+
+    def _angles(self, values: object, name: str) -> np.ndarray:
+        """One angle per player (degrees, NaN allowed), checked as the simulator checks them."""
+        array = self._array(values, name, (self.n,))
+        bad = np.flatnonzero(np.isinf(array))
+        if bad.size:
+            raise CommandError(self.team_name, f"command.{name} is infinite: {array[bad[0]]}", int(bad[0]))
+        return array
 
     def _vectors(self, values: object, name: str) -> np.ndarray:
         array = self._array(values, name, (self.n, 2))

@@ -169,19 +169,7 @@ class TeamFrame:
     def _read_turn_neck(self, turns: object) -> bool:
         """Validate ``command.turn_neck`` (degrees, NaN for none) into :attr:`neck_turn` (NaN as
         0); whether any player turns its neck."""
-        n = self.n
-        if isinstance(turns, np.ndarray) and turns.dtype.kind not in "fiu":
-            raise TeamError(self.name, f"command.turn_neck must be numeric, got dtype {turns.dtype}")
-        try:
-            degrees = np.asarray(turns, dtype=np.float64)
-        except (TypeError, ValueError) as exc:
-            raise TeamError(self.name, f"command.turn_neck is not a numeric array ({exc})") from exc
-        if degrees.shape != (n,):
-            raise TeamError(self.name, f"command.turn_neck must have shape {(n,)} (degrees per player), "
-                                       f"got {degrees.shape}")
-        bad = np.flatnonzero(np.isinf(degrees))
-        if bad.size:
-            raise TeamError(self.name, f"command.turn_neck is infinite: {degrees[bad[0]]}", player=int(bad[0]))
+        degrees = self._angles(turns, "turn_neck")
         np.copyto(self.neck_turn, degrees)
         self.neck_turn[np.isnan(degrees)] = 0.0
         return bool(self.neck_turn.any())
@@ -204,17 +192,7 @@ class TeamFrame:
         """Validate the tackle directions (degrees, own frame, NaN for none) and foul flags
         into :attr:`tackle` (radians, absolute frame) and :attr:`foul`; whether anybody tackles."""
         n = self.n
-        if isinstance(tackle, np.ndarray) and tackle.dtype.kind not in "fiu":
-            raise TeamError(self.name, f"command.tackle must be numeric, got dtype {tackle.dtype}")
-        try:
-            degrees = np.asarray(tackle, dtype=np.float64)
-        except (TypeError, ValueError) as exc:
-            raise TeamError(self.name, f"command.tackle is not a numeric array ({exc})") from exc
-        if degrees.shape != (n,):
-            raise TeamError(self.name, f"command.tackle must have shape {(n,)}, got {degrees.shape}")
-        bad = np.flatnonzero(np.isinf(degrees))
-        if bad.size:
-            raise TeamError(self.name, f"command.tackle is infinite: {degrees[bad[0]]}", player=int(bad[0]))
+        degrees = self._angles(tackle, "tackle")
         if foul is None:
             self.foul[:] = False
         else:
@@ -235,6 +213,16 @@ class TeamFrame:
         if isinstance(value, (int, np.integer)) and value in (0, 1):
             return bool(value)
         raise TeamError(self.name, f"command.{field_name} must be a bool, got {value!r} ({type(value).__name__})")
+
+    def _angles(self, values: object, field_name: str) -> np.ndarray:
+        """``values`` as one angle per player (an (n,) float64 array, degrees, NaN allowed), or a
+        TeamError saying why it cannot be one (:func:`~soccer_sim.team.command_array`; an
+        infinite angle names its player)."""
+        degrees = command_array(values, field_name, (self.n,), lambda message: TeamError(self.name, message))
+        bad = np.flatnonzero(np.isinf(degrees))
+        if bad.size:
+            raise TeamError(self.name, f"command.{field_name} is infinite: {degrees[bad[0]]}", player=int(bad[0]))
+        return degrees
 
     def _as_array(self, values: object, field_name: str) -> np.ndarray:
         """``values`` as an (n, 2) float64 array, or a TeamError saying why it cannot be one."""
