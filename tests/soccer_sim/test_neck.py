@@ -14,6 +14,7 @@ from soccer_sim.perception import SeeParams
 from soccer_sim.perception.config import ObservationConfig
 from soccer_sim.perception.neck import turned_necks
 from soccer_sim.perception.observer import Observer
+from soccer_sim.rcg import RcgRecorder, read_rcg
 from soccer_sim.state import WorldState
 from soccer_sim.team import TeamError
 from soccer_sim.trivial_teams import ChaserTeam
@@ -136,3 +137,15 @@ def test_sensed_velocity_is_relative_to_the_face_as_rcssservers():
         speeds.append(observer.observe(state)[0].velocity[0].copy())
     assert np.hypot(*speeds[0]) == pytest.approx(np.hypot(*speeds[1]))
     assert not np.allclose(speeds[0], speeds[1], atol=1e-6)
+
+
+def test_the_game_log_shows_each_players_neck(tmp_path):
+    """The .rcg's NECK is the neck after the cycle's turns: shirt 1 of the left side turns
+    +30 degrees a cycle up to the limit, the others never."""
+    path = tmp_path / "neck.rcg"
+    team = Turner(lambda cycle, n: np.r_[30.0, np.zeros(n - 1)])
+    Match(team, "chaser", seed=2, config=partial(8), recorders=[RcgRecorder(path)]).run()
+    shows = read_rcg(path).shows
+    necks = [(show.cycle, show.player("l", 1).neck) for show in shows]
+    assert necks[:5] == [(0, 0.0), (1, 30.0), (2, 60.0), (3, 90.0), (4, 90.0)]  # (the show at the start: 0)
+    assert all(show.player("l", 2).neck == 0.0 and show.player("r", 1).neck == 0.0 for show in shows)
