@@ -338,7 +338,8 @@ def see_into(obs: np.ndarray, body: np.ndarray, objects: np.ndarray, self_index:
     for i in range(obs.shape[0]):
         me = self_index[i] + 1 if self_index[i] >= 0 else -1
         _see_one(obs[i, 0], obs[i, 1], body[i], prm[0].half_angle, objects, me, visible, uniforms[0, i],
-                 uniforms[1, i], prm, SightingRows(out.seen[i], out.distance[i], out.direction[i], out.identity[i], out.in_cone[i]))
+                 uniforms[1, i], prm,
+                 SightingRows(out.seen[i], out.distance[i], out.direction[i], out.identity[i], out.in_cone[i]))
 
 
 @njit(cache=True, nogil=True)

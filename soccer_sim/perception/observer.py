@@ -18,9 +18,12 @@ Per cycle ``t`` (:meth:`Observer.observe`, before the teams decide), in the abso
 4. **Hear**: the messages said at ``t - 1`` (:class:`~.audio.AudioChannel`).
 
 Each player looks along its face, the body direction plus its neck angle (:mod:`.neck`: 0 at
-the start, so a player that never turns its neck looks along its body). After the teams decide,
-:meth:`Observer.say` records their messages with the positions at ``t`` and
-:meth:`Observer.turn_necks` their ``turn_neck``, which the sees from ``t + 1`` on look through. All randomness (see phases, identity drops, the hearing order) comes from the one
+the start, so a player that never turns its neck looks along its body), with the cone and the
+pace of sees of its view width (:mod:`.view_width`: ``normal`` at the start). After the teams
+decide, :meth:`Observer.say` records their messages with the positions at ``t``, and
+:meth:`Observer.turn_necks` and :meth:`Observer.change_views` their ``turn_neck`` and
+``change_view``, which the sees from ``t + 1`` on look through. All randomness (see phases,
+identity drops, the hearing order) comes from the one
 generator the match gives the observer, in a fixed order, so a match stays a pure function of
 its inputs. Nothing here runs under full observation.
 """
@@ -37,7 +40,7 @@ from soccer_sim.perception.config import ObservationConfig
 from soccer_sim.perception.kernels import ObserverRows, Perception, TrueBodies, perceive, see_record, senses_into
 from soccer_sim.perception.localise import DEFAULT_FLAGS
 from soccer_sim.perception.neck import turned_necks
-from soccer_sim.perception.view_width import NORMAL, SeeTimer, view_angles
+from soccer_sim.perception.view_width import KEEP, NORMAL, SeeTimer, view_angles
 from soccer_sim.perception.params import see_cycles
 from soccer_sim.perception.views import HeardLog, PlayerViews
 from soccer_sim.state import WorldState
@@ -87,7 +90,8 @@ class Observer:
             present=np.empty(total, dtype=bool),
             holds_ball=np.zeros(total, dtype=bool), position=np.empty((total, 2)), velocity=np.empty((total, 2)),
             body_direction=np.empty(total), neck_angle=np.empty(total),
-            view_width=np.full(total, NORMAL, dtype=np.int64), localised=np.empty(total, dtype=bool), saw=np.empty(total, dtype=bool),
+            view_width=np.full(total, NORMAL, dtype=np.int64), localised=np.empty(total, dtype=bool),
+            saw=np.empty(total, dtype=bool),
             ball_seen=np.empty(total, dtype=bool), ball=np.empty((total, 2)), ball_distance=np.empty(total),
             ball_direction=np.empty(total), seen_count=np.empty(total, dtype=np.int64),
             seen_position=np.empty((total, k, 2)), seen_distance=np.empty((total, k)),
@@ -121,8 +125,9 @@ class Observer:
         if not self._started:
             self._belief[:] = state.pos  # a player knows where it starts
         uniforms = self._rng.random((2, int(np.count_nonzero(seeing)), self._total + 1))
-        perceive(TrueBodies(state.pos, state.vel, state.ball, present, self.necks, self.half_angles), seeing, uniforms, self._started,
-                 float(state.home_attacks), self._constants, DEFAULT_FLAGS, self._prm, self._belief, self._perception)
+        perceive(TrueBodies(state.pos, state.vel, state.ball, present, self.necks, self.half_angles), seeing, uniforms,
+                 self._started, float(state.home_attacks), self._constants, DEFAULT_FLAGS, self._prm, self._belief,
+                 self._perception)
         self._started = True
         senses_into(state.stamina, state.effort, state.capacity, state.frozen, present, int(state.ball_holder),
                     out["stamina"], out["effort"], out["capacity"], out["frozen"], out["present"], out["holds_ball"])
@@ -156,9 +161,9 @@ class Observer:
         """Apply every player's ``(change_view WIDTH)`` asked at ``cycle``: ``widths`` (P,) codes
         (:data:`~.view_width.KEEP` for none), the players on the pitch only; the cone and the
         pace of the sees change from cycle ``cycle + 1`` on (:mod:`.view_width`)."""
-        asked = np.where(np.asarray(present, dtype=bool), widths, -1)
+        asked = np.where(np.asarray(present, dtype=bool), widths, KEEP)
         if self._timer is None:
-            if not ((asked >= 0) & (asked != NORMAL)).any():
+            if not ((asked != KEEP) & (asked != NORMAL)).any():
                 return
             self._timer = SeeTimer(self.params, self.offsets_ms, cycle + 1)
         self._timer.change(asked, cycle + 1)

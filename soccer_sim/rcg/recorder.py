@@ -283,7 +283,8 @@ class RcgRecorder:
         table[:, 1:3] = np.round(state.pos * turn, 4) + 0.0           # + 0.0: no "-0"
         table[:, 3:5] = np.round(state.vel * turn, 4) + 0.0
         table[:, 5] = np.round(np.degrees(np.arctan2(turned[:, 1], turned[:, 0])), 3) + 0.0
-        table[:, 6] = 0.0 if match.observer is None else np.round(match.observer.necks, 3) + 0.0  # (relative: any frame)
+        observer = match.observer  # (a neck is relative to the body: the same in every frame)
+        table[:, 6] = 0.0 if observer is None else np.round(observer.necks, 3) + 0.0
         table[:, 7] = state.stamina
         table[:, 8] = state.effort
         table[:, 9] = state.recovery
