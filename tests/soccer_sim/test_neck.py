@@ -35,29 +35,36 @@ def test_a_turn_is_clipped_to_the_moment_then_the_neck_to_its_range():
         [20.0, 60.0, -20.0]
 
 
-class Turner(ChaserTeam):
-    """A chaser whose players turn their necks by ``turns(cycle, n)`` and which records the
-    neck angles its views report."""
+class Asking(ChaserTeam):
+    """A chaser whose command sets ``field`` to ``values(cycle, n)`` every cycle; it keeps
+    what it asked and, under partial observation, copies of its views' ``recorded`` arrays."""
 
-    def __init__(self, turns) -> None:
-        self.turns = turns
-        self.reported: list[np.ndarray] = []
-        self.asked: list[np.ndarray] = []
+    def __init__(self, field: str, values, recorded: tuple[str, ...] = ()) -> None:
+        self.field, self.values = field, values
+        self.asked: list = []
+        self.views: dict[str, list[np.ndarray]] = {name: [] for name in recorded}
 
     def act(self, view):
         command = super().act(view)
         if hasattr(view, "neck_angle"):  # (partial observation's views)
-            self.reported.append(view.neck_angle.copy())
-        command.turn_neck = self.turns(view.cycle, len(view.stamina))
-        self.asked.append(command.turn_neck)
+            for name, kept in self.views.items():
+                kept.append(getattr(view, name).copy())
+        asked = self.values(view.cycle, len(view.stamina))
+        setattr(command, self.field, asked)
+        self.asked.append(asked)
         return command
+
+
+def turner(turns) -> Asking:
+    """A chaser whose players turn their necks by ``turns(cycle, n)``."""
+    return Asking("turn_neck", turns, ("neck_angle",))
 
 
 def test_wild_turns_keep_the_neck_within_the_servers_limits_by_rcssservers_rule():
     rng = np.random.default_rng(4)
-    team = Turner(lambda cycle, n: rng.uniform(-500.0, 500.0, n))
+    team = turner(lambda cycle, n: rng.uniform(-500.0, 500.0, n))
     Match(team, "chaser", seed=2, config=partial(120)).run()
-    reported = np.array(team.reported)
+    reported = np.array(team.views["neck_angle"])
     assert reported[0].tolist() == [0.0] * len(reported[0])  # every neck starts along the body
     assert reported.min() >= LIMITS.min_neck_angle and reported.max() <= LIMITS.max_neck_angle
     assert reported.min() == LIMITS.min_neck_angle and reported.max() == LIMITS.max_neck_angle
@@ -67,7 +74,7 @@ def test_wild_turns_keep_the_neck_within_the_servers_limits_by_rcssservers_rule(
 
 
 def test_under_full_observation_a_turn_is_checked_and_changes_nothing():
-    team = Turner(lambda cycle, n: np.full(n, 30.0))
+    team = turner(lambda cycle, n: np.full(n, 30.0))
     result = Match(team, "chaser", seed=2, config=MatchConfig(max_cycles=30)).run()
     assert result.cycles == 30
     plain = Match("chaser", "chaser", seed=2, config=MatchConfig(max_cycles=30)).run()
@@ -82,10 +89,10 @@ def test_under_full_observation_a_turn_is_checked_and_changes_nothing():
     (lambda n: [object()] * n, r"command.turn_neck is not a numeric array", None),
 ])
 def test_a_bad_neck_turn_is_a_team_error_naming_the_field(turns, message, player):
-    team = Turner(lambda cycle, n: turns(n))
+    team = turner(lambda cycle, n: turns(n))
     with pytest.raises(TeamError, match=message) as info:
         Match(team, "chaser", seed=1, config=partial(5)).run()
-    assert info.value.team_name == "Turner"
+    assert info.value.team_name == "Asking"
     assert info.value.player == (10 if player == "last" else player)
 
 
@@ -143,7 +150,7 @@ def test_the_game_log_shows_each_players_neck(tmp_path):
     """The .rcg's NECK is the neck after the cycle's turns: shirt 1 of the left side turns
     +30 degrees a cycle up to the limit, the others never."""
     path = tmp_path / "neck.rcg"
-    team = Turner(lambda cycle, n: np.r_[30.0, np.zeros(n - 1)])
+    team = turner(lambda cycle, n: np.r_[30.0, np.zeros(n - 1)])
     Match(team, "chaser", seed=2, config=partial(8), recorders=[RcgRecorder(path)]).run()
     shows = read_rcg(path).shows
     necks = [(show.cycle, show.player("l", 1).neck) for show in shows]

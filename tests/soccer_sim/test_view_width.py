@@ -13,8 +13,7 @@ from soccer_sim.perception.config import ObservationConfig
 from soccer_sim.perception.params import see_cycles
 from soccer_sim.perception.view_width import KEEP, NARROW, NORMAL, WIDE, SeeTimer
 from soccer_sim.team import TeamError
-from soccer_sim.trivial_teams import ChaserTeam
-from tests.soccer_sim.test_neck import one_runner_observer
+from tests.soccer_sim.test_neck import Asking, one_runner_observer
 
 PARAMS = SeeParams()
 
@@ -65,22 +64,9 @@ def test_the_cone_is_narrower_or_wider_with_the_view_width():
     assert seen == {NORMAL: True, NARROW: False, WIDE: True}
 
 
-class Viewer(ChaserTeam):
-    """A chaser whose players ask for the view widths ``widths(cycle, n)`` and which records
-    what its views report."""
-
-    def __init__(self, widths) -> None:
-        self.widths = widths
-        self.saw: list[np.ndarray] = []
-        self.reported: list[np.ndarray] = []
-
-    def act(self, view):
-        command = super().act(view)
-        if hasattr(view, "view_width"):
-            self.saw.append(view.saw.copy())
-            self.reported.append(view.view_width.copy())
-        command.change_view = self.widths(view.cycle, len(view.stamina))
-        return command
+def viewer(widths) -> Asking:
+    """A chaser whose players ask for the view widths ``widths(cycle, n)``."""
+    return Asking("change_view", widths, ("saw", "view_width"))
 
 
 def partial(cycles: int) -> MatchConfig:
@@ -93,9 +79,9 @@ def test_in_a_match_a_narrow_player_sees_every_cycle_and_a_wide_one_every_third(
         codes[0], codes[1] = NARROW, WIDE
         return codes
 
-    team = Viewer(widths)
+    team = viewer(widths)
     Match(team, "chaser", seed=3, config=partial(61)).run()
-    saw, reported = np.array(team.saw[1:]), np.array(team.reported[1:])  # (cycle 0: before the change)
+    saw, reported = np.array(team.views["saw"][1:]), np.array(team.views["view_width"][1:])  # (cycle 0: before the change)
     assert (reported[:, 0] == NARROW).all() and (reported[:, 1] == WIDE).all() and (reported[:, 2:] == NORMAL).all()
     assert saw[:, 0].all()
     assert saw[:, 1].sum() == 20 and saw[:, 2].sum() == 40, (saw[:, 1].sum(), saw[:, 2].sum())
@@ -104,7 +90,7 @@ def test_in_a_match_a_narrow_player_sees_every_cycle_and_a_wide_one_every_third(
 def test_asking_for_the_width_a_player_has_changes_nothing():
     config = partial(80)
     plain = Match("chaser", "chaser", seed=4, config=config).run()
-    asked = Match(Viewer(lambda cycle, n: np.full(n, NORMAL)), "chaser", seed=4, config=config).run()
+    asked = Match(viewer(lambda cycle, n: np.full(n, NORMAL)), "chaser", seed=4, config=config).run()
     assert np.array_equal(plain.state.pos, asked.state.pos)
 
 
@@ -116,5 +102,5 @@ def test_asking_for_the_width_a_player_has_changes_nothing():
 ])
 def test_a_bad_view_width_is_a_team_error_naming_the_field(widths, message):
     with pytest.raises(TeamError, match=message) as info:
-        Match(Viewer(lambda cycle, n: widths(n)), "chaser", seed=1, config=partial(5)).run()
-    assert info.value.team_name == "Viewer"
+        Match(viewer(lambda cycle, n: widths(n)), "chaser", seed=1, config=partial(5)).run()
+    assert info.value.team_name == "Asking"

@@ -146,3 +146,11 @@ def test_a_team_that_does_not_scan_never_turns_its_neck():
     Match(FormationTeam("mmdr", TeamStyle(), name="mmdr"), counter_442_team(), seed=5,
           config=replace(PARTIAL, max_cycles=100), recorders=[watch]).run()
     assert not np.array(watch.necks).any()
+
+
+def test_under_full_observation_scanning_changes_nothing():
+    config = MatchConfig(max_cycles=150)
+    plain = Match(FormationTeam("mmdr", TeamStyle(), name="mmdr"), counter_442_team(), seed=2, config=config).run()
+    scanning = Match(FormationTeam("mmdr", TeamStyle(scans=True), name="mmdr"), counter_442_team(), seed=2,
+                     config=config).run()
+    assert np.array_equal(plain.state.pos, scanning.state.pos)
