@@ -32,8 +32,14 @@ the player's body (:class:`PlayerBodies`: what each player knows of itself from 
   faces (towards the ball, as far as the player's speed lets it turn), so that the real body
   and the modelled one agree as often as a free command allows.
 
-Then ``(turn_neck MOMENT)`` to keep the ball in view
-(:func:`~rcss_bridge.body_control.neck_moment`), and the say, sent quoted by the client layer.
+Then the view width: ``(change_view narrow|normal|wide)`` when the command's ``change_view``
+asks a player for a width other than the one its last ``sense_body`` told. Then the neck: the
+command's own ``turn_neck`` when it has one (``(turn_neck MOMENT)`` within
+``minneckmoment`` / ``maxneckmoment``; none for NaN or 0: the simulator's rule, so a team that
+chooses where to look looks there on the server too), else a ``(turn_neck MOMENT)`` that keeps
+the ball in view (:func:`~rcss_bridge.body_control.neck_moment`: the simulator's players that
+never turn their neck look along a body that faces the ball). Then the say, sent quoted by the
+client layer.
 A player not present or frozen (after a tackle or a foul) sends no body command; one whose
 body direction is not known yet (no see with flags so far) only a move.
 
@@ -57,6 +63,7 @@ from soccer_sim.kernels import one_body_command
 from soccer_sim.kick_rate import kick_angle_rate, kick_distance_rate, kick_effectiveness
 from soccer_sim.perception.views import PlayerViews
 from soccer_sim.player_types import PlayerType, check_choice, default_type
+from soccer_sim.perception.view_width import KEEP, NORMAL, VIEW_WIDTHS, check_view_widths
 from soccer_sim.team import TeamCommand, TeamError, command_array
 
 from rcss_bridge.body_control import RUN_HORIZON, ServerRules, choose_run, clamp, neck_moment, turn_moment
@@ -102,6 +109,9 @@ class PlayerBodies:
     """(n,) steps each player still cannot act."""
     holds_ball: np.ndarray
     """(n,) bool: the goalkeeper holds the ball."""
+    view_width: np.ndarray | None = None
+    """(n,) each player's view width code as its last ``sense_body`` told it
+    (:mod:`soccer_sim.perception.view_width`; None: all ``normal``)."""
 
     @classmethod
     def from_views(cls, views: PlayerViews, necks: np.ndarray, ball: np.ndarray | None = None) -> PlayerBodies:
@@ -116,7 +126,7 @@ class PlayerBodies:
         return cls(body_direction=views.body_direction.copy(), neck=np.asarray(necks, dtype=np.float64).copy(),
                    velocity=velocity, ball_offset=ball - views.position, effort=effort,
                    types=views.player_types.copy(), present=views.present.copy(), frozen=views.frozen.copy(),
-                   holds_ball=views.holds_ball.copy())
+                   holds_ball=views.holds_ball.copy(), view_width=views.view_width.copy())
 
 
 class CommandTranslator:
@@ -152,7 +162,7 @@ class CommandTranslator:
         """Each present player's order for this step (rows absent or sent off get none).
         ``server_mode``: the server's play mode as last heard
         (:attr:`~rcss_bridge.play_modes.RefereeState.server_mode`)."""
-        dash, kick, move, tackle, foul, catch, say = self._read(command)
+        dash, kick, move, tackle, foul, catch, say, turn_neck, widths = self._read(command)
         self._check_bodies(bodies)
         holding = bool(bodies.holds_ball[self.goalie])
         if holding and not self._goalie_held:
@@ -197,8 +207,9 @@ class CommandTranslator:
                 body = ""
             if body:
                 self.sent[body[1:body.index(" ")]] += 1
-            neck = self._neck(row, turned, bodies)
-            orders[row] = PlayerOrder(body + neck, None if say is None else say[row])
+            neck = self._neck(row, turned, bodies) if turn_neck is None else self._turn_neck(float(turn_neck[row]))
+            view = "" if widths is None else self._change_view(row, int(widths[row]), bodies)
+            orders[row] = PlayerOrder(body + view + neck, None if say is None else say[row])
         return orders
 
     # ------------------------------------------------------------------------------ input
@@ -211,10 +222,7 @@ class CommandTranslator:
         move = None if command.move is None else self._vectors(command.move, "move")
         tackle = np.full(self.n, np.nan)
         if command.tackle is not None:
-            tackle = self._array(command.tackle, "tackle", (self.n,))
-            bad = np.flatnonzero(np.isinf(tackle))
-            if bad.size:
-                raise CommandError(self.team_name, f"command.tackle is infinite: {tackle[bad[0]]}", int(bad[0]))
+            tackle = self._angles(command.tackle, "tackle")
         foul = np.zeros(self.n, dtype=bool)
         if command.foul is not None:
             flags = np.asarray(command.foul)
@@ -230,10 +238,24 @@ class CommandTranslator:
         say = command.say
         if say is not None and (isinstance(say, str | bytes) or not hasattr(say, "__len__") or len(say) != self.n):
             raise CommandError(self.team_name, f"command.say must be a sequence of {self.n} messages (str or None)")
-        return dash, kick, move, tackle, foul, catch, say
+        turn_neck = None if command.turn_neck is None else self._angles(command.turn_neck, "turn_neck")
+        widths = None
+        if command.change_view is not None:
+            widths = check_view_widths(command.change_view, self.n)
+            if isinstance(widths, str):
+                raise CommandError(self.team_name, widths)
+        return dash, kick, move, tackle, foul, catch, say, turn_neck, widths
 
     def _array(self, values: object, name: str, shape: tuple[int, ...]) -> np.ndarray:
         return command_array(values, name, shape, lambda message: CommandError(self.team_name, message)).copy()
+
+    def _angles(self, values: object, name: str) -> np.ndarray:
+        """One angle per player (degrees, NaN allowed), checked as the simulator checks them."""
+        array = self._array(values, name, (self.n,))
+        bad = np.flatnonzero(np.isinf(array))
+        if bad.size:
+            raise CommandError(self.team_name, f"command.{name} is infinite: {array[bad[0]]}", int(bad[0]))
+        return array
 
     def _vectors(self, values: object, name: str) -> np.ndarray:
         array = self._array(values, name, (self.n, 2))
@@ -251,6 +273,9 @@ class CommandTranslator:
             shape_seen = np.shape(getattr(bodies, name))
             if shape_seen != shape:
                 raise CommandError(self.team_name, f"bodies.{name} must have shape {shape}, got {shape_seen}")
+        if bodies.view_width is not None and np.shape(bodies.view_width) != (self.n,):
+            raise CommandError(self.team_name, f"bodies.view_width must have shape {(self.n,)}, "
+                               f"got {np.shape(bodies.view_width)}")
         bad = [int(t) for t in bodies.types if not 0 <= int(t) < len(self.types)]
         if bad:
             raise CommandError(self.team_name, f"player type {bad[0]} is not one of the server's "
@@ -351,6 +376,21 @@ class CommandTranslator:
         moment that rounds to zero."""
         text = number(moment)
         return ("", 0.0) if text == "0" else (f"(turn {text})", float(text))
+
+    def _change_view(self, row: int, width: int, bodies: PlayerBodies) -> str:
+        """``(change_view WIDTH)`` for a width code other than :data:`KEEP` and the player's own."""
+        current = NORMAL if bodies.view_width is None else int(bodies.view_width[row])
+        if width == KEEP or width == current:
+            return ""
+        return f"(change_view {VIEW_WIDTHS[width]})"
+
+    def _turn_neck(self, moment: float) -> str:
+        """The command's own neck turn (degrees; NaN or 0: none) as ``(turn_neck MOMENT)``
+        within ``minneckmoment`` / ``maxneckmoment``."""
+        if math.isnan(moment):
+            return ""
+        text = number(clamp(moment, self.rules.min_neck_moment, self.rules.max_neck_moment))
+        return "" if text == "0" else f"(turn_neck {text})"
 
     def _neck(self, row: int, turned: float, bodies: PlayerBodies) -> str:
         """The ``turn_neck`` that keeps the ball in view after this step's turn of moment

@@ -7,7 +7,8 @@ Per step and player (rows: shirt number - 1; a shirt not connected is a row with
 
 * ``sense_body``: stamina, effort, capacity; ``frozen`` = the longer of the tackle's and the
   foul's remaining steps; ``cards`` from its ``card``; ``present`` False once shown a red card; the sensed velocity (the
-  speed's direction is relative to the face).
+  speed's direction is relative to the face); ``neck_angle`` from its ``head_angle`` and
+  ``view_width`` from its ``view_mode`` (both kept while a row hears no ``sense_body``).
 * ``see`` (``saw``): the self-localisation of :mod:`rcss_bridge.localisation` (``localised``
   when it found a position); the ball and the players at the reported distance and direction
   from that position, nearest first, with their side (``TEAMMATE`` when the team name is ours,
@@ -33,6 +34,7 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
+from soccer_sim.perception.view_width import NORMAL, VIEW_WIDTHS
 from soccer_sim.perception.views import OPPONENT, TEAMMATE, UNKNOWN_SIDE, PlayerViews
 
 from rcss_bridge.localisation import localise, wrap
@@ -61,7 +63,6 @@ class ViewsBuilder:
         self._goalie = goalie
         n, k = players, 2 * players - 1
         self._face = np.full(n, np.nan)
-        self._neck = np.zeros(n)
         self._belief = np.full((n, 2), np.nan)
         self.views = PlayerViews(
             stamina=np.full(n, np.nan), effort=np.full(n, np.nan), capacity=np.full(n, np.nan),
@@ -73,7 +74,7 @@ class ViewsBuilder:
             seen_count=np.zeros(n, dtype=np.int64), seen_position=np.full((n, k, 2), np.nan),
             seen_distance=np.full((n, k), np.nan), seen_direction=np.full((n, k), np.nan),
             seen_side=np.zeros((n, k), dtype=np.int8), seen_number=np.full((n, k), -1, dtype=np.int8),
-            cards=np.zeros(n, dtype=np.int64))
+            cards=np.zeros(n, dtype=np.int64), neck_angle=np.zeros(n), view_width=np.full(n, NORMAL, dtype=np.int64))
         """The views, overwritten by every :meth:`update` (as the simulator's are)."""
 
     @property
@@ -84,7 +85,7 @@ class ViewsBuilder:
     def necks(self) -> np.ndarray:
         """(n,) each player's neck as its last ``sense_body`` told it (``head_angle``: the
         face's angle to the body, degrees; a copy)."""
-        return self._neck.copy()
+        return self.views.neck_angle.copy()
 
     def update(self, step: int, inboxes: Mapping[int, Sequence[Message]]) -> PlayerViews:
         """The views after one step's messages: ``inboxes`` maps each connected player's row to
@@ -142,7 +143,9 @@ class ViewsBuilder:
         views.cards[row] = CARD_COUNTS.get(sense.card, 0)
         views.stamina[row], views.effort[row], views.capacity[row] = sense.stamina, sense.effort, sense.capacity
         views.frozen[row] = max(sense.tackle_expires, sense.foul_charged)
-        self._neck[row] = sense.head_angle
+        views.neck_angle[row] = sense.head_angle
+        if sense.view_width in VIEW_WIDTHS:
+            views.view_width[row] = VIEW_WIDTHS.index(sense.view_width)
         position_found = False
         if see is not None:
             fix = localise(see)

@@ -4,7 +4,9 @@ collisions, the referee judges, recorders observe.
 One cycle (100 ms of game time by default):
 
 1. each team gets its team-relative view and returns a command, validated and turned back
-   into the absolute frame (:mod:`soccer_sim.view`);
+   into the absolute frame (:mod:`soccer_sim.view`); under partial observation what its players
+   say goes into the channel and their neck turns and view widths to the observer (the sees of
+   the next cycles look through them);
 2. before a kick-off and in the pause after a goal, teams may place their players
    (``TeamCommand.move``);
 3. tackles (:mod:`soccer_sim.tackles`; players frozen after a tackle or sent off do nothing),
@@ -383,6 +385,12 @@ class Match:
         if observer is not None:
             said = [f.said if f.said is not None else (None,) * f.n for f in self.frames]
             observer.say(state.cycle, said, state.pos, checked=True)  # (read_command checked the messages)
+            home_frame, away_frame = self.frames
+            if home_frame.turns_neck or away_frame.turns_neck:
+                observer.turn_necks(np.concatenate([home_frame.neck_turn, away_frame.neck_turn]), state.present)
+            if home_frame.changes_view or away_frame.changes_view:
+                observer.change_views(state.cycle, np.concatenate([home_frame.view_width, away_frame.view_width]),
+                                      state.present)
         return moves
 
     def _tackles_asked(self) -> np.ndarray:

@@ -224,6 +224,24 @@ class TeamCommand:
     Under full observation messages are checked but reach nobody. A bad message is a TeamError
     naming the player. Messages of one width may come as a
     :class:`~soccer_sim.perception.coded.CodedMessages` (their characters as codes)."""
+    turn_neck: np.ndarray | None = None
+    """(n,) neck turns in degrees (positive counter-clockwise), NaN or 0 for players that keep
+    their neck; None: nobody turns it. rcssserver's ``(turn_neck MOMENT)``, which goes with any
+    body command: the moment is clipped to ``SeeParams.min_neck_moment`` / ``max_neck_moment``
+    and the neck angle (the face's angle to the body, 0 at the start) to ``min_neck_angle`` /
+    ``max_neck_angle`` (:mod:`soccer_sim.perception.neck`). Under partial observation the view
+    cone of every later see is centred on the body direction plus the neck angle, which the
+    views report (:attr:`~soccer_sim.perception.views.PlayerViews.neck_angle`); under full
+    observation the turns are checked and change nothing. An infinite or non-numeric turn, or
+    an array of another shape, is a TeamError naming the player."""
+    change_view: np.ndarray | None = None
+    """(n,) integer view width codes, one per player: ``NARROW`` 0, ``NORMAL`` 1, ``WIDE`` 2
+    (:mod:`soccer_sim.perception.view_width`) or ``KEEP`` -1; None: nobody changes. rcssserver's
+    ``(change_view WIDTH)``, which goes with any body command: a cone of half, once or twice
+    ``SeeParams.visible_angle`` with a see every 75, 150 or 300 ms (``send_step`` / 2, 1, 2);
+    every player starts ``NORMAL``. Under partial observation the change holds from the next
+    cycle (:attr:`~soccer_sim.perception.views.PlayerViews.view_width`); under full observation
+    it is checked and changes nothing. Any other value or shape is a TeamError."""
 
 
 @runtime_checkable

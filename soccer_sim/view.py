@@ -19,6 +19,7 @@ import numpy as np
 from soccer_sim.kernels import mirror_bodies, store_command
 from soccer_sim.perception.audio import AudioParams, check_coded_messages, check_team_messages
 from soccer_sim.perception.coded import CodedMessages
+from soccer_sim.perception.view_width import KEEP, check_view_widths
 from soccer_sim.state import NO_PLAYER, StateError, WorldState
 from soccer_sim.team import TeamCommand, TeamError, TeamView, command_array
 
@@ -75,6 +76,16 @@ class TeamFrame:
         """(n,) the last command's tackle directions, absolute frame, radians (NaN: none)."""
         self.foul = np.zeros(n, dtype=bool)
         """(n,) the last command's foul flags."""
+        self.turns_neck = False
+        """Whether the last command read turned any player's neck (then :attr:`neck_turn` holds it)."""
+        self.neck_turn = np.zeros(n)
+        """(n,) the last command's neck turns (degrees; 0: none). A neck angle is relative to the
+        body, so it is the same in every frame."""
+        self.changes_view = False
+        """Whether the last command read asked any player to change its view width (then
+        :attr:`view_width` holds it)."""
+        self.view_width = np.full(n, KEEP, dtype=np.int64)
+        """(n,) the last command's view width codes (``KEEP``: none)."""
         self.said: Sequence[str | None] | None = None
         """The last command's messages (one per player, None: silent; a tuple, or the team's
         :class:`~soccer_sim.perception.coded.CodedMessages`), or None if nobody spoke."""
@@ -135,9 +146,33 @@ class TeamFrame:
             self.tackling = self._read_tackle(command.tackle, command.foul, sign)
         elif self.tackling:
             self.tackling = False
+        if command.turn_neck is not None:
+            self.turns_neck = self._read_turn_neck(command.turn_neck)
+        elif self.turns_neck:
+            self.turns_neck = False
+        if command.change_view is not None:
+            self.changes_view = self._read_change_view(command.change_view)
+        elif self.changes_view:
+            self.changes_view = False
         said = command.say
         self.said = None if said is None else self._read_say(said)
         return catch, move
+
+    def _read_change_view(self, widths: object) -> bool:
+        """Validate ``command.change_view`` into :attr:`view_width`; whether anybody asks for a width."""
+        codes = check_view_widths(widths, self.n)
+        if isinstance(codes, str):
+            raise TeamError(self.name, codes)
+        self.view_width[:] = codes
+        return bool((codes != KEEP).any())
+
+    def _read_turn_neck(self, turns: object) -> bool:
+        """Validate ``command.turn_neck`` (degrees, NaN for none) into :attr:`neck_turn` (NaN as
+        0); whether any player turns its neck."""
+        degrees = self._angles(turns, "turn_neck")
+        np.copyto(self.neck_turn, degrees)
+        self.neck_turn[np.isnan(degrees)] = 0.0
+        return bool(self.neck_turn.any())
 
     def _read_say(self, said: object) -> Sequence[str | None]:
         """The messages of ``command.say`` (one per player, str or None), each checked against
@@ -157,17 +192,7 @@ class TeamFrame:
         """Validate the tackle directions (degrees, own frame, NaN for none) and foul flags
         into :attr:`tackle` (radians, absolute frame) and :attr:`foul`; whether anybody tackles."""
         n = self.n
-        if isinstance(tackle, np.ndarray) and tackle.dtype.kind not in "fiu":
-            raise TeamError(self.name, f"command.tackle must be numeric, got dtype {tackle.dtype}")
-        try:
-            degrees = np.asarray(tackle, dtype=np.float64)
-        except (TypeError, ValueError) as exc:
-            raise TeamError(self.name, f"command.tackle is not a numeric array ({exc})") from exc
-        if degrees.shape != (n,):
-            raise TeamError(self.name, f"command.tackle must have shape {(n,)}, got {degrees.shape}")
-        bad = np.flatnonzero(np.isinf(degrees))
-        if bad.size:
-            raise TeamError(self.name, f"command.tackle is infinite: {degrees[bad[0]]}", player=int(bad[0]))
+        degrees = self._angles(tackle, "tackle")
         if foul is None:
             self.foul[:] = False
         else:
@@ -188,6 +213,16 @@ class TeamFrame:
         if isinstance(value, (int, np.integer)) and value in (0, 1):
             return bool(value)
         raise TeamError(self.name, f"command.{field_name} must be a bool, got {value!r} ({type(value).__name__})")
+
+    def _angles(self, values: object, field_name: str) -> np.ndarray:
+        """``values`` as one angle per player (an (n,) float64 array, degrees, NaN allowed), or a
+        TeamError saying why it cannot be one (:func:`~soccer_sim.team.command_array`; an
+        infinite angle names its player)."""
+        degrees = command_array(values, field_name, (self.n,), lambda message: TeamError(self.name, message))
+        bad = np.flatnonzero(np.isinf(degrees))
+        if bad.size:
+            raise TeamError(self.name, f"command.{field_name} is infinite: {degrees[bad[0]]}", player=int(bad[0]))
+        return degrees
 
     def _as_array(self, values: object, field_name: str) -> np.ndarray:
         """``values`` as an (n, 2) float64 array, or a TeamError saying why it cannot be one."""

@@ -54,6 +54,7 @@ from agents.skills.pacing import pacing_constants
 from agents.teams import mechanism
 from agents.teams.ball_role import LeaveMatching
 from agents.teams.decisions import NO_SHOT, BeliefDecisions, follow_up_goals
+from agents.teams.looking import Looker
 from agents.teams.on_ball import ball_reach, make_tackling
 from agents.teams.pipeline_kernels import (NORMAL, OUR_SET_PLAY, THEIR_SET_PLAY, assignment_problems, ball_player,
                                            dash_and_say, derive_worlds, follow_assignments, on_ball_rows,
@@ -305,6 +306,8 @@ class Pipeline:
             keeper_area_y=float(model.penalty_area_half_width + 2.0),
             message_grid=MESSAGE_GRID, ball_decay=float(config.physics.ball_decay)))
         self._kickable = model.kickable_distance
+        self.looker = Looker(style.looking, n, config) if style.scans and world.talks else None
+        """Where the players look (:mod:`agents.teams.looking`; None: along their bodies)."""
 
     # ------------------------------------------------------------------ one cycle
     def act(self, view: TeamView | PlayerViews) -> TeamCommand:
@@ -382,6 +385,8 @@ class Pipeline:
             self._speaks[:] = False
             self._speaks[speaker] = True
             command.say = digit_messages(self._digits, self._speaks)
+        if self.looker is not None:
+            command.turn_neck = self.looker.turn_necks(view, world.ball, world.ball_age)
         return command
 
     def _who_decides(self, mode: PlayMode, ours: bool, senses: Senses) -> int:

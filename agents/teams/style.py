@@ -6,6 +6,7 @@ from dataclasses import dataclass, field
 
 from agents import skills
 from agents.skills.tackling import TackleParams
+from agents.teams.looking import LookParams
 from agents.teams.routines import RoutineParams
 from agents.teams.shape import ShapeParams
 
@@ -79,3 +80,10 @@ class TeamStyle:
     without lowering the share of unfilled role-time (0.56-0.60 either way). ``"keep"`` is
     also the problem the assigners were designed for (all players to all roles); the
     ``<assigner>-leave`` teams measure the other setting."""
+    scans: bool = False
+    """Under partial observation our players choose where to look, turning their necks as
+    helios-base's do (the ball when their belief of it is stale or it is near, else the field
+    they have seen least recently; :mod:`agents.teams.looking`). False: they never turn their
+    necks and look along their bodies, which face the ball."""
+    looking: LookParams = field(default_factory=LookParams)
+    """How the players choose where to look when ``scans`` is on."""

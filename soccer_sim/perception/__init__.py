@@ -8,7 +8,9 @@ from soccer_sim.perception.localise import SelfEstimate, field_flags, localise
 from soccer_sim.perception.params import SeeParams, see_cycles
 from soccer_sim.perception.see import (ANONYMOUS, FULL, TEAM_ONLY, UNSEEN, Sightings, body_directions,
                                        quantized_distance, see)
+from soccer_sim.perception.view_width import KEEP, NARROW, NORMAL, WIDE
 
-__all__ = ["ANONYMOUS", "FULL", "SAY_CHARACTERS", "TEAM_ONLY", "UNSEEN", "AudioChannel", "AudioParams", "Heard",
+__all__ = ["ANONYMOUS", "FULL", "KEEP", "NARROW", "NORMAL", "SAY_CHARACTERS", "TEAM_ONLY", "UNSEEN", "WIDE",
+           "AudioChannel", "AudioParams", "Heard",
            "SeeParams", "SelfEstimate", "Sightings", "body_directions", "check_message", "field_flags", "localise",
            "quantized_distance", "see", "see_cycles"]

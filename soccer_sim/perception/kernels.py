@@ -65,12 +65,16 @@ class SightingRows(NamedTuple):
 
 class TrueBodies(NamedTuple):
     """This cycle's truth that :func:`perceive` perceives, absolute frame: the players' (P, 2)
-    positions (m) and velocities (m/cycle), the ball (2,) m and who is on the pitch (P,)."""
+    positions (m) and velocities (m/cycle), the ball (2,) m, who is on the pitch (P,), each
+    player's neck angle (P,) (degrees relative to its body, :mod:`.neck`) and half its view
+    cone (P,) (degrees: its view width's, :mod:`.view_width`)."""
 
     pos: np.ndarray
     vel: np.ndarray
     ball: np.ndarray
     present: np.ndarray
+    neck: np.ndarray
+    half_angle: np.ndarray
 
 
 class ObserverRows(NamedTuple):
@@ -89,6 +93,7 @@ class Perception(NamedTuple):
     row behind each seen player (-1 padding, for tests and statistics)."""
 
     body_direction: np.ndarray
+    neck_angle: np.ndarray
     position: np.ndarray
     velocity: np.ndarray
     localised: np.ndarray
@@ -155,11 +160,11 @@ def body_degrees(pos: np.ndarray, vel: np.ndarray, ball: np.ndarray, inertia: np
 
 
 @njit(cache=True, nogil=True)
-def _sensed(vx: float, vy: float, body: float, direction_step: float) -> tuple[float, float]:  # pragma: no cover
+def _sensed(vx: float, vy: float, face: float, direction_step: float) -> tuple[float, float]:  # pragma: no cover
     """``sense_body``'s velocity: speed quantised to 0.01 m/cycle, direction relative to the
-    body (``body`` degrees) rounded to ``direction_step`` degrees."""
+    face (``face`` degrees: body plus neck) rounded to ``direction_step`` degrees."""
     speed = _quantize(math.hypot(vx, vy), 0.01)
-    heading = math.radians(body + _quantize(_wrap(math.degrees(math.atan2(vy, vx)) - body), direction_step))
+    heading = math.radians(face + _quantize(_wrap(math.degrees(math.atan2(vy, vx)) - face), direction_step))
     return speed * math.cos(heading), speed * math.sin(heading)
 
 
@@ -243,13 +248,14 @@ def position_from_sightings(flags: np.ndarray, distances: np.ndarray, directions
 
 
 @njit(cache=True, nogil=True)
-def _localise_one(px: float, py: float, body: float, flags: np.ndarray,
+def _localise_one(px: float, py: float, body: float, half: float, flags: np.ndarray,
                   prm: np.ndarray) -> tuple[float, float, int]:  # pragma: no cover - compiled
-    """One player's position from the flags it sees, and how many it sees (NaN, NaN, 0 for none)."""
+    """One player's position from the flags it sees looking along ``body`` with a cone of half
+    angle ``half`` (degrees), and how many it sees (NaN, NaN, 0 for none)."""
     close, q_l, d_step, a_step = prm[0].visible_distance, prm[0].quantize_step_l, prm[0].distance_step, \
         prm[0].direction_step
     b = math.radians(body)
-    bx, by, cos_half = math.cos(b), math.sin(b), math.cos(math.radians(prm[0].half_angle))
+    bx, by, cos_half = math.cos(b), math.sin(b), math.cos(math.radians(half))
     close2, cos2 = _unseen_bounds(cos_half, close, prm)
     sx = 0.0
     sy = 0.0
@@ -278,22 +284,23 @@ def localise_into(pos: np.ndarray, body: np.ndarray, flags: np.ndarray, prm: np.
     """Each player's position from the flags it sees (mean of ``f - d_f (cos, sin)(b + a_f)``)
     into ``estimate`` (NaN when none is seen) and the number of flags into ``count``."""
     for i in range(pos.shape[0]):
-        estimate[i, 0], estimate[i, 1], count[i] = _localise_one(pos[i, 0], pos[i, 1], body[i], flags, prm)
+        estimate[i, 0], estimate[i, 1], count[i] = _localise_one(pos[i, 0], pos[i, 1], body[i], prm[0].half_angle,
+                                                                 flags, prm)
 
 
 @njit(cache=True, nogil=True)
-def _see_one(ox: float, oy: float, body: float, objects: np.ndarray, me: int, visible: np.ndarray,
+def _see_one(ox: float, oy: float, body: float, half: float, objects: np.ndarray, me: int, visible: np.ndarray,
              u_team: np.ndarray, u_unum: np.ndarray, prm: np.ndarray,
              out: SightingRows) -> None:  # pragma: no cover - compiled
-    """What one observer at ``(ox, oy)`` looking along ``body`` sees of ``objects`` (object 0 the
-    ball; ``me`` its own object row or -1; ``visible[j]`` False for objects that cannot be seen),
-    into its row ``out``; ``u_team``, ``u_unum``: its identity-drop draws; ``prm``: a
-    :data:`SEE_PARAMS` record."""
+    """What one observer at ``(ox, oy)`` looking along ``body`` with a cone of half angle
+    ``half`` (degrees) sees of ``objects`` (object 0 the ball; ``me`` its own object row or -1;
+    ``visible[j]`` False for objects that cannot be seen), into its row ``out``; ``u_team``,
+    ``u_unum``: its identity-drop draws; ``prm``: a :data:`SEE_PARAMS` record."""
     seen, distance, direction, identity, in_cone = out.seen, out.distance, out.direction, out.identity, out.in_cone
     close, q, d_step, a_step = prm[0].visible_distance, prm[0].quantize_step, prm[0].distance_step, \
         prm[0].direction_step
     b = math.radians(body)
-    bx, by, cos_half = math.cos(b), math.sin(b), math.cos(math.radians(prm[0].half_angle))
+    bx, by, cos_half = math.cos(b), math.sin(b), math.cos(math.radians(half))
     close2, cos2 = _unseen_bounds(cos_half, close, prm)
     for j in range(objects.shape[0]):
         dx, dy = objects[j, 0] - ox, objects[j, 1] - oy
@@ -336,7 +343,8 @@ def see_into(obs: np.ndarray, body: np.ndarray, objects: np.ndarray, self_index:
     record."""
     for i in range(obs.shape[0]):
         me = self_index[i] + 1 if self_index[i] >= 0 else -1
-        _see_one(obs[i, 0], obs[i, 1], body[i], objects, me, visible, uniforms[0, i], uniforms[1, i], prm,
+        _see_one(obs[i, 0], obs[i, 1], body[i], prm[0].half_angle, objects, me, visible, uniforms[0, i],
+                 uniforms[1, i], prm,
                  SightingRows(out.seen[i], out.distance[i], out.direction[i], out.identity[i], out.in_cone[i]))
 
 
@@ -350,16 +358,20 @@ def perceive(truth: TrueBodies, seeing: np.ndarray, uniforms: np.ndarray, advanc
     place (advanced by the sensed velocity over its decay when ``advance``, replaced by the flag
     estimate from ``flags`` (F, 2) m on cycles with a see; the true position with the record
     ``prm``'s ``exact_self``). ``seeing`` (P,): who gets a see; ``uniforms`` (2, k, P + 1): the
-    identity draws of the k seeing players in row order. Outputs (``out``) are in each player's
+    identity draws of the k seeing players in row order. Each player looks along its face, the
+    body direction plus ``truth.neck`` (the cone, the flags and the reported directions are the
+    face's, as rcssserver's; the directions written are relative to the body: the face's plus
+    the neck). Outputs (``out``) are in each player's
     team frame (``home_attacks`` for the first team's players, its negative for the other's: each
-    team's attack direction): the body direction in degrees, the believed position and sensed
-    velocity, the ball's polar coordinates and position, and the seen players nearest first (ties
-    in row order) with position, side (+1 team-mate, -1 opponent, 0 unknown), number (-1 unknown)
-    and row. Rows of players without a see are cleared (NaN, 0, -1)."""
-    pos, vel, ball, present = truth.pos, truth.vel, truth.ball, truth.present
+    team's attack direction): the body direction in degrees, the neck angle, the believed position
+    and sensed velocity, the ball's polar coordinates and position, and the seen players nearest
+    first (ties in row order) with position, side (+1 team-mate, -1 opponent, 0 unknown), number
+    (-1 unknown) and row. Rows of players without a see are cleared (NaN, 0, -1)."""
+    pos, vel, ball, present, necks = truth.pos, truth.vel, truth.ball, truth.present, truth.neck
     inertia, decay, team, first = rows.inertia, rows.decay, rows.team, rows.first
     exact_self = prm[0].exact_self
-    body_out, pos_out, vel_out, localised = out.body_direction, out.position, out.velocity, out.localised
+    body_out, neck_out, pos_out, vel_out, localised = out.body_direction, out.neck_angle, out.position, out.velocity, \
+        out.localised
     ball_seen, ball_dist, ball_dir, ball_at = out.ball_seen, out.ball_distance, out.ball_direction, out.ball
     count, s_dist, s_dir, s_at = out.seen_count, out.seen_distance, out.seen_direction, out.seen_position
     s_side, s_num, s_obj = out.seen_side, out.seen_number, out.seen_rows
@@ -384,16 +396,19 @@ def perceive(truth: TrueBodies, seeing: np.ndarray, uniforms: np.ndarray, advanc
     for p in range(n):
         fx, fy = facing(vel[p, 0], vel[p, 1], ball[0] - pos[p, 0], ball[1] - pos[p, 1], inertia[p])
         body = math.degrees(math.atan2(fy, fx))
+        neck = necks[p]
+        face = body + neck  # (exactly the body when the neck is 0)
         if exact_self:
             vx, vy = vel[p, 0], vel[p, 1]
             belief[p, 0], belief[p, 1] = pos[p, 0], pos[p, 1]
         else:
-            vx, vy = _sensed(vel[p, 0], vel[p, 1], body, d_step)
+            vx, vy = _sensed(vel[p, 0], vel[p, 1], face, d_step)
             if advance:
                 belief[p, 0] += vx / decay[p]
                 belief[p, 1] += vy / decay[p]
         s = home_attacks if team[p] == 0 else -home_attacks
         body_out[p] = _wrap(body + (0.0 if s > 0 else 180.0))
+        neck_out[p] = neck
         vel_out[p, 0], vel_out[p, 1] = vx * s, vy * s
         localised[p] = False
         ball_seen[p] = False
@@ -414,19 +429,19 @@ def perceive(truth: TrueBodies, seeing: np.ndarray, uniforms: np.ndarray, advanc
             if exact_self:
                 localised[p] = True
             else:
-                x, y, flags_seen = _localise_one(pos[p, 0], pos[p, 1], body, flags, prm)
+                x, y, flags_seen = _localise_one(pos[p, 0], pos[p, 1], face, truth.half_angle[p], flags, prm)
                 if flags_seen > 0:
                     localised[p] = True
                     belief[p, 0], belief[p, 1] = x, y
-            _see_one(pos[p, 0], pos[p, 1], body, objects, p + 1, visible, uniforms[0, k], uniforms[1, k], prm,
-                     sighted)
+            _see_one(pos[p, 0], pos[p, 1], face, truth.half_angle[p], objects, p + 1, visible, uniforms[0, k],
+                     uniforms[1, k], prm, sighted)
             k += 1
-            b = math.radians(body)
+            b = math.radians(face)
             if seen[0]:
                 a = b + math.radians(direction[0])
                 ball_seen[p] = True
                 ball_dist[p] = distance[0]
-                ball_dir[p] = direction[0]
+                ball_dir[p] = direction[0] if neck == 0.0 else _wrap(direction[0] + neck)
                 ball_at[p, 0] = (belief[p, 0] + distance[0] * math.cos(a)) * s
                 ball_at[p, 1] = (belief[p, 1] + distance[0] * math.sin(a)) * s
             found = 0
@@ -445,7 +460,7 @@ def perceive(truth: TrueBodies, seeing: np.ndarray, uniforms: np.ndarray, advanc
                 q = j - 1  # player row
                 a = b + math.radians(direction[j])
                 s_dist[p, c] = distance[j]
-                s_dir[p, c] = direction[j]
+                s_dir[p, c] = direction[j] if neck == 0.0 else _wrap(direction[j] + neck)
                 s_at[p, c, 0] = (belief[p, 0] + distance[j] * math.cos(a)) * s
                 s_at[p, c, 1] = (belief[p, 1] + distance[j] * math.sin(a)) * s
                 if identity[j] >= TEAM_ONLY:

@@ -17,8 +17,13 @@ Per cycle ``t`` (:meth:`Observer.observe`, before the teams decide), in the abso
    coordinates are turned into positions with the player's own belief.
 4. **Hear**: the messages said at ``t - 1`` (:class:`~.audio.AudioChannel`).
 
-Then, after the teams decide, :meth:`Observer.say` records their messages with the positions
-at ``t``. All randomness (see phases, identity drops, the hearing order) comes from the one
+Each player looks along its face, the body direction plus its neck angle (:mod:`.neck`: 0 at
+the start, so a player that never turns its neck looks along its body), with the cone and the
+pace of sees of its view width (:mod:`.view_width`: ``normal`` at the start). After the teams
+decide, :meth:`Observer.say` records their messages with the positions at ``t``, and
+:meth:`Observer.turn_necks` and :meth:`Observer.change_views` their ``turn_neck`` and
+``change_view``, which the sees from ``t + 1`` on look through. All randomness (see phases,
+identity drops, the hearing order) comes from the one
 generator the match gives the observer, in a fixed order, so a match stays a pure function of
 its inputs. Nothing here runs under full observation.
 """
@@ -34,6 +39,8 @@ from soccer_sim.perception.audio import AudioChannel
 from soccer_sim.perception.config import ObservationConfig
 from soccer_sim.perception.kernels import ObserverRows, Perception, TrueBodies, perceive, see_record, senses_into
 from soccer_sim.perception.localise import DEFAULT_FLAGS
+from soccer_sim.perception.neck import turned_necks
+from soccer_sim.perception.view_width import KEEP, NORMAL, SeeTimer, view_angles
 from soccer_sim.perception.params import see_cycles
 from soccer_sim.perception.views import HeardLog, PlayerViews
 from soccer_sim.state import WorldState
@@ -66,6 +73,13 @@ class Observer:
                                        first=np.where(team == 0, 0, sizes[0]).astype(np.int64))
         """Each player row's constants for :func:`~.kernels.perceive`."""
         self._belief = np.zeros((total, 2))
+        self.necks = np.zeros(total)
+        """(P,) each player's neck angle (degrees relative to its body; :meth:`turn_necks`)."""
+        self.half_angles = np.full(total, params.visible_angle / 2.0)
+        """(P,) half of each player's view cone (degrees; its view width's, :meth:`change_views`)."""
+        self._timer: SeeTimer | None = None
+        """The players' see timers once a player has changed its view width (until then every
+        player sees at ``normal``'s pace, the table above)."""
         self._started = False
         self._half = 0
         k = max(total - 1, 0)
@@ -75,7 +89,9 @@ class Observer:
             frozen=np.empty(total, dtype=np.int64), cards=np.zeros(total, dtype=np.int64),
             present=np.empty(total, dtype=bool),
             holds_ball=np.zeros(total, dtype=bool), position=np.empty((total, 2)), velocity=np.empty((total, 2)),
-            body_direction=np.empty(total), localised=np.empty(total, dtype=bool), saw=np.empty(total, dtype=bool),
+            body_direction=np.empty(total), neck_angle=np.empty(total),
+            view_width=np.full(total, NORMAL, dtype=np.int64), localised=np.empty(total, dtype=bool),
+            saw=np.empty(total, dtype=bool),
             ball_seen=np.empty(total, dtype=bool), ball=np.empty((total, 2)), ball_distance=np.empty(total),
             ball_direction=np.empty(total), seen_count=np.empty(total, dtype=np.int64),
             seen_position=np.empty((total, k, 2)), seen_distance=np.empty((total, k)),
@@ -102,12 +118,16 @@ class Observer:
             self.channel.reset_capacity()
         present = state.present
         seeing = out["saw"]
-        np.logical_and(self._see_table[state.cycle % len(self._see_table)], present, out=seeing)
+        if self._timer is None:
+            np.logical_and(self._see_table[state.cycle % len(self._see_table)], present, out=seeing)
+        else:
+            np.logical_and(self._timer.sees(state.cycle, seeing), present, out=seeing)
         if not self._started:
             self._belief[:] = state.pos  # a player knows where it starts
         uniforms = self._rng.random((2, int(np.count_nonzero(seeing)), self._total + 1))
-        perceive(TrueBodies(state.pos, state.vel, state.ball, present), seeing, uniforms, self._started,
-                 float(state.home_attacks), self._constants, DEFAULT_FLAGS, self._prm, self._belief, self._perception)
+        perceive(TrueBodies(state.pos, state.vel, state.ball, present, self.necks, self.half_angles), seeing, uniforms,
+                 self._started, float(state.home_attacks), self._constants, DEFAULT_FLAGS, self._prm, self._belief,
+                 self._perception)
         self._started = True
         senses_into(state.stamina, state.effort, state.capacity, state.frozen, present, int(state.ball_holder),
                     out["stamina"], out["effort"], out["capacity"], out["frozen"], out["present"], out["holds_ball"])
@@ -129,3 +149,23 @@ class Observer:
         with the players' ``positions`` (P, 2) m at ``cycle``; a bad one is a ``TeamError``
         (``checked``: :meth:`AudioChannel.say`'s, the caller checked them)."""
         self.channel.say(cycle, messages, positions, checked)
+
+    def turn_necks(self, moments: np.ndarray, present: np.ndarray) -> None:
+        """Apply every player's ``(turn_neck MOMENT)`` of this cycle: ``moments`` (P,) degrees
+        (NaN or 0: none), the players on the pitch (``present`` (P,)) only, by rcssserver's rule
+        (:func:`~.neck.turned_necks`)."""
+        turned = turned_necks(self.necks, moments, self.params)
+        np.copyto(self.necks, turned, where=np.asarray(present, dtype=bool))
+
+    def change_views(self, cycle: int, widths: np.ndarray, present: np.ndarray) -> None:
+        """Apply every player's ``(change_view WIDTH)`` asked at ``cycle``: ``widths`` (P,) codes
+        (:data:`~.view_width.KEEP` for none), the players on the pitch only; the cone and the
+        pace of the sees change from cycle ``cycle + 1`` on (:mod:`.view_width`)."""
+        asked = np.where(np.asarray(present, dtype=bool), widths, KEEP)
+        if self._timer is None:
+            if not ((asked != KEEP) & (asked != NORMAL)).any():
+                return
+            self._timer = SeeTimer(self.params, self.offsets_ms, cycle + 1)
+        self._timer.change(asked, cycle + 1)
+        self._out["view_width"][:] = self._timer.widths
+        self.half_angles[:] = view_angles(self._timer.widths, self.params) / 2.0

@@ -32,8 +32,9 @@ class SeeParams:
     """What a player sees and how precisely (distances m, angles degrees, times ms)."""
 
     visible_angle: float = 90.0
-    """Total width of the view cone (degrees) around the body direction: ``visible_angle`` with
-    view width ``normal``. An object is in the cone when ``|direction| < visible_angle / 2``."""
+    """Total width of the view cone (degrees) around the face (the body direction plus the neck
+    angle): ``visible_angle`` with view width ``normal`` (half of it ``narrow``, twice ``wide``:
+    :mod:`.view_width`). An object is in the cone when ``|direction| < visible_angle / 2``."""
     visible_distance: float = 3.0
     """``visible_distance`` (m): objects outside the cone are still seen up to this distance,
     but only as anonymous ``(B)`` / ``(P)`` (no team, no number)."""
@@ -67,6 +68,15 @@ class SeeParams:
     exact_self: bool = False
     """Give each player its true position and velocity instead of the self-localisation model
     of :mod:`soccer_sim.perception.localise`."""
+    min_neck_angle: float = -90.0
+    """``minneckang`` (degrees): the smallest angle of the neck (the face's direction relative
+    to the body; ``TeamCommand.turn_neck``)."""
+    max_neck_angle: float = 90.0
+    """``maxneckang`` (degrees): the largest angle of the neck."""
+    min_neck_moment: float = -180.0
+    """``minneckmoment`` (degrees): the smallest neck turn of one cycle (a larger one is clipped)."""
+    max_neck_moment: float = 180.0
+    """``maxneckmoment`` (degrees): the largest neck turn of one cycle."""
     send_step: int = 150
     """``send_step`` (ms): time between two sees with view width ``normal``."""
     simulator_step: int = 100
@@ -80,6 +90,12 @@ class SeeParams:
         for near, far in (("unum_far_length", "unum_too_far_length"), ("team_far_length", "team_too_far_length")):
             if getattr(self, far) < getattr(self, near):
                 raise ConfigError(f"SeeParams.{far} ({getattr(self, far)}) must be >= {near} ({getattr(self, near)})")
+        if not self.min_neck_angle <= 0.0 <= self.max_neck_angle:  # a player starts with its neck at 0
+            raise ConfigError(f"SeeParams.min_neck_angle ({self.min_neck_angle}) must be <= 0 <= max_neck_angle "
+                              f"({self.max_neck_angle})")
+        if not self.min_neck_moment <= 0.0 <= self.max_neck_moment:
+            raise ConfigError(f"SeeParams.min_neck_moment ({self.min_neck_moment}) must be <= 0 <= max_neck_moment "
+                              f"({self.max_neck_moment})")
 
     def without_noise(self) -> SeeParams:
         """These parameters with every source of observation noise off, the view's limits kept

@@ -12,7 +12,7 @@ Three sources, as in rcssserver:
 
 * the **referee** (heard by every player every cycle): cycle, half, play mode, score;
 * **sense_body** (every cycle): stamina, effort, recovery capacity, frozen cycles, its card, the
-  player's own velocity (quantised) and body direction, whether it holds the ball;
+  player's own velocity (quantised), body direction and neck angle, whether it holds the ball;
 * the **see** (when one arrives: :attr:`PlayerViews.saw`; alternately after one and two cycles)
   with the ball and the players in view (:mod:`soccer_sim.perception.see`), and the
   **self-localisation** it allows (:mod:`soccer_sim.perception.localise`);
@@ -85,6 +85,9 @@ class PlayerObservation:
     """(team-mate index, message) pairs heard this cycle (said last cycle)."""
     heard_opponents: tuple[str, ...]
     """Opponents' messages heard this cycle (the speaker is not named)."""
+    neck_angle: float = 0.0
+    """The neck: the face's angle to the body (degrees); the player looks along
+    ``body_direction + neck_angle``."""
 
 
 class HeardLog(Sequence):
@@ -181,7 +184,8 @@ class PlayerViews:
     velocity: np.ndarray
     """(n, 2) each player's sensed own velocity (m/cycle; speed to 0.01, direction to 1°)."""
     body_direction: np.ndarray
-    """(n,) each player's body direction (degrees, team frame), along which it looks."""
+    """(n,) each player's body direction (degrees, team frame). A player looks along its face,
+    ``body_direction + neck_angle``."""
     localised: np.ndarray
     """(n,) True when this cycle's see showed at least one flag (False on cycles without a see)."""
     saw: np.ndarray
@@ -194,7 +198,8 @@ class PlayerViews:
     ball_distance: np.ndarray
     """(n,) the reported distance to the ball (m; NaN where not seen)."""
     ball_direction: np.ndarray
-    """(n,) the reported direction of the ball from the body (degrees; NaN where not seen)."""
+    """(n,) the reported direction of the ball from the body (degrees; NaN where not seen):
+    rcssserver's direction from the face plus the neck angle."""
     seen_count: np.ndarray
     """(n,) how many players each player sees (the valid rows of the seen_* arrays)."""
     seen_position: np.ndarray
@@ -224,9 +229,24 @@ class PlayerViews:
     cards: np.ndarray | None = None
     """(n,) each player's yellow cards (sense_body's ``card``: 0 or 1; 2 once sent off); None:
     nobody is carded."""
+    view_width: np.ndarray | None = None
+    """(n,) each player's view width (sense_body's ``view_mode``): ``NARROW`` 0, ``NORMAL`` 1 or
+    ``WIDE`` 2 (:mod:`soccer_sim.perception.view_width`: a cone of half, once or twice
+    ``visible_angle``, sees every 75, 150 or 300 ms), which only the player's own
+    ``TeamCommand.change_view`` changes. None in views built by hand: all ``NORMAL``."""
+    neck_angle: np.ndarray | None = None
+    """(n,) each player's neck (sense_body's ``head_angle``): the face's angle to the body
+    (degrees, ``SeeParams.min_neck_angle`` .. ``max_neck_angle``), which only the player's own
+    ``TeamCommand.turn_neck`` changes (:mod:`soccer_sim.perception.neck`); the view cone is
+    centred on ``body_direction + neck_angle``. rcssserver reports it in whole degrees (towards
+    zero), the simulator as it is. None in views built by hand: zeros."""
 
     def __post_init__(self) -> None:
         n = len(self.stamina)
+        if self.neck_angle is None:
+            self.neck_angle = np.zeros(n)
+        if self.view_width is None:
+            self.view_width = np.ones(n, dtype=np.int64)
         if not self.heard_mates:
             self.heard_mates = ((),) * n
         if not self.heard_opponents:
@@ -254,4 +274,4 @@ class PlayerViews:
             players=self.seen_position[i, :k].copy(), player_sides=self.seen_side[i, :k].copy(),
             player_numbers=self.seen_number[i, :k].copy(), player_distances=self.seen_distance[i, :k].copy(),
             player_directions=self.seen_direction[i, :k].copy(), heard_mates=self.heard_mates[i],
-            heard_opponents=self.heard_opponents[i])
+            heard_opponents=self.heard_opponents[i], neck_angle=float(self.neck_angle[i]))

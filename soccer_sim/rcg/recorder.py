@@ -15,7 +15,8 @@ What is written how (:mod:`soccer_sim.rcg.mapping` has the frame and the play mo
 - ``BODY``: soccer-sim's players have no body direction, so the log shows the one
   body-direction model of the simulator, :func:`soccer_sim.body.facing` with the ball
   (at rest: towards the ball; moving: the motion turned towards the ball by at most the
-  largest turn at that speed); ``NECK`` 0 (the head looks where the body faces);
+  largest turn at that speed); ``NECK`` the player's neck angle (degrees, relative to the
+  body: ``TeamCommand.turn_neck`` under partial observation; 0 under full observation);
 - ``TYPE`` 0 (every player is of the default type); ``STATE``: on the field (0x1), goalie
   (0x8), kicked in this cycle (0x2), caught the ball (0x10), the ball bounced off its body
   (0x400), and the tackle, foul-charge and card flags (:mod:`soccer_sim.rcg.marks`);
@@ -124,7 +125,7 @@ class RcgRecorder:
         self._counts = np.zeros((rows, COUNTERS), dtype=np.int64)
         self._count_texts = [self._count_text(r) for r in range(rows)]
         self._facing = np.zeros((rows, 2))
-        self._table = np.empty((rows, 11), dtype=object)
+        self._table = np.empty((rows, 12), dtype=object)
         self._format = self._show_format(match)
         self._names = tuple(team_name(name) for name in match.team_names)
         self._mark = len(match.events)
@@ -247,9 +248,9 @@ class RcgRecorder:
 
     def _show_format(self, match: Match) -> str:
         """The %-format of a show line after its cycle and ball: per player row its label,
-        then the state word, x, y, vx, vy, body, stamina, effort, recovery, capacity, counts;
+        then the state word, x, y, vx, vy, body, neck, stamina, effort, recovery, capacity, counts;
         the disabled players of shirt numbers the scenario does not field as fixed text."""
-        entry = f" %s%s %g %g %g %g %g 0 {VIEW} {FOCUS_POINT} (s %g %g %g %g) %s"
+        entry = f" %s%s %g %g %g %g %g %g {VIEW} {FOCUS_POINT} (s %g %g %g %g) %s"
         config = match.config
         stamina = " ".join(number(SERVER_PARAMETERS[name](config))
                            for name in ("stamina_max", "effort_init")) + " 1 " \
@@ -282,17 +283,19 @@ class RcgRecorder:
         table[:, 1:3] = np.round(state.pos * turn, 4) + 0.0           # + 0.0: no "-0"
         table[:, 3:5] = np.round(state.vel * turn, 4) + 0.0
         table[:, 5] = np.round(np.degrees(np.arctan2(turned[:, 1], turned[:, 0])), 3) + 0.0
-        table[:, 6] = state.stamina
-        table[:, 7] = state.effort
-        table[:, 8] = state.recovery
-        table[:, 9] = np.where(np.isinf(state.capacity), -1.0, state.capacity)  # rcssserver: negative = unlimited
-        table[:, 10] = self._count_texts
+        observer = match.observer  # (a neck is relative to the body: the same in every frame)
+        table[:, 6] = 0.0 if observer is None else np.round(observer.necks, 3) + 0.0
+        table[:, 7] = state.stamina
+        table[:, 8] = state.effort
+        table[:, 9] = state.recovery
+        table[:, 10] = np.where(np.isinf(state.capacity), -1.0, state.capacity)  # rcssserver: negative = unlimited
+        table[:, 11] = self._count_texts
         present = state.present
         if not present.all():                         # sent off: rcssserver's disabled player
             for row in np.flatnonzero(~present).tolist():
                 table[row, 0] = hex(DISCARD | RED_CARD) if state.cards[row] >= 2 else "0"
                 table[row, 1:3] = self._parked[row]
-                table[row, 3:6] = 0
+                table[row, 3:7] = 0
         b = (np.round(np.concatenate((ball * turn, state.ball_vel * turn)), 4) + 0.0).tolist()
         head = f"(show {state.cycle} ((b) {b[0]:g} {b[1]:g} {b[2]:g} {b[3]:g})"
         return head + self._format % tuple(table.ravel().tolist())

@@ -313,6 +313,57 @@ def test_the_neck_keeps_the_ball_in_view_within_the_servers_limits(translator):
     assert ("turn_neck", [110.0]) in body_of(orders[2])
 
 
+def test_a_commands_own_neck_turn_is_sent_as_it_is_within_the_servers_moments(translator):
+    """A team that turns the neck (TeamCommand.turn_neck) has that turn sent, not the ball
+    tracker's; NaN and 0 send none, as the simulator turns none; with any body command and
+    also for a frozen player (rcssserver takes turn_neck then too)."""
+    turns = np.full(N, np.nan)
+    turns[[1, 2, 3, 4, 5]] = [35.5, -500.0, 0.0, 250.0, -20.0]
+    frozen = np.zeros(N, dtype=np.int64)
+    frozen[5] = 3
+    orders = translator.translate(command(dash={2: (0.6, 0.0)}, kick={4: (1.0, 0.0)}, turn_neck=turns),
+                                  bodies(body=0.0, ball=(0.0, 5.0), neck=40.0, frozen=frozen), "play_on")
+    necks = {row: [c for c in body_of(orders[row]) if c[0] == "turn_neck"] for row in range(N)}
+    assert necks[1] == [("turn_neck", [35.5])]
+    assert necks[2] == [("turn_neck", [translator.rules.min_neck_moment])]  # -500 clipped to minneckmoment
+    assert only_body(orders[2])[0] == "dash"
+    assert necks[3] == [] and necks[0] == [] and necks[6] == []  # 0 and NaN: no turn, and no ball tracking
+    assert necks[4] == [("turn_neck", [180.0])] and only_body(orders[4])[0] == "kick"
+    assert orders[5].commands == "(turn_neck -20)"  # frozen: the neck only
+    # without a turn_neck the translation keeps the ball in view as before
+    orders = translator.translate(command(), bodies(body=0.0, ball=(0.0, 5.0), neck=40.0), "play_on")
+    assert body_of(orders[1]) == [("turn", [90.0]), ("turn_neck", [-40.0])]  # the body turns to the ball, the face too
+
+
+def test_a_commands_view_width_is_sent_when_it_differs_from_the_players(translator):
+    """``change_view`` codes (NARROW 0, NORMAL 1, WIDE 2, KEEP -1) become ``(change_view
+    WIDTH)`` only for a player whose sense_body told another width (nothing for KEEP), with
+    any body command and the neck."""
+    widths = np.full(N, -1)
+    widths[[1, 2, 3, 4]] = [0, 2, 1, 0]
+    told = np.ones(N, dtype=np.int64)
+    told[4] = 0  # already narrow
+    turns = np.zeros(N)
+    turns[1] = 30.0
+    orders = translator.translate(command(dash={2: (0.6, 0.0)}, change_view=widths, turn_neck=turns),
+                                  bodies(ball=(0.0, 5.0), view_width=told), "play_on")
+    assert "(change_view narrow)" in orders[1].commands and "(turn_neck 30)" in orders[1].commands
+    assert "(change_view wide)" in orders[2].commands and orders[2].commands.startswith("(dash ")
+    assert all("change_view" not in orders[row].commands for row in (0, 3, 4, 5))
+    with pytest.raises(CommandError, match=r"command.change_view\[0\] is 5: not a view width"):
+        translator.translate(command(change_view=np.full(N, 5)), bodies(), "play_on")
+
+
+@pytest.mark.parametrize("turns, message", [
+    (np.full(N, np.inf), "command.turn_neck is infinite: inf"),
+    (np.zeros(N + 1), r"command.turn_neck must have shape \(11,\)"),
+    (np.array(["up"] * N), "command.turn_neck must be numeric"),
+])
+def test_a_bad_neck_turn_is_a_command_error(translator, turns, message):
+    with pytest.raises(CommandError, match=message):
+        translator.translate(command(turn_neck=turns), bodies(ball=(0.0, 5.0)), "play_on")
+
+
 # --------------------------------------------------------------------------------- frames
 def test_the_right_sides_commands_are_relative_to_its_real_body():
     """Views of the right-hand player built from its recorded messages (team frame: turned by

@@ -105,3 +105,27 @@ def test_heard_messages_types_and_presence():
     assert views.present.tolist() == [True, True] + [False] * 9
     assert np.all(np.isnan(views.position[2:])) and views.stamina[0] == pytest.approx(8000.0, abs=1000)
     assert views.cycle == order.index(42)  # the builder's counter, not the server's clock
+
+
+def test_the_neck_angle_is_sense_bodys_head_angle():
+    """A recorded sense_body with its head_angle set (the recordings keep the neck at 0): the
+    views report it, directions stay relative to the body, and a row that hears nothing
+    keeps the last one told."""
+    text = next(t for t in received("BRIDGE-1")[42] if t.startswith("(sense_body"))
+    turned = text.replace("(head_angle 0)", "(head_angle -45)")
+    assert turned != text
+    builder = ViewsBuilder("BRIDGE", "l", 11, DECAY)
+    views = builder.update(0, {0: [read_message(turned)], 1: [read_message(text)]})
+    assert views.neck_angle[:2].tolist() == [-45.0, 0.0]
+    assert builder.necks[:2].tolist() == [-45.0, 0.0]
+    views = builder.update(1, {1: [read_message(text)]})
+    assert views.neck_angle[0] == -45.0
+
+
+def test_the_view_width_is_sense_bodys_view_mode():
+    text = next(t for t in received("BRIDGE-1")[42] if t.startswith("(sense_body"))
+    narrow = text.replace("(view_mode high normal)", "(view_mode high narrow)")
+    assert narrow != text
+    builder = ViewsBuilder("BRIDGE", "l", 11, DECAY)
+    views = builder.update(0, {0: [read_message(narrow)], 1: [read_message(text)]})
+    assert views.view_width[:3].tolist() == [0, 1, 1]  # NARROW, NORMAL, and NORMAL for a row not heard
