@@ -175,13 +175,14 @@ def see_players(r: BeliefRecord, see: SeeRecord) -> None:  # pragma: no cover - 
 
 
 @njit(cache=True, nogil=True)
-def hear_world(r: BeliefRecord, listener: np.ndarray, speaker: np.ndarray,
-               decoded: np.ndarray) -> None:  # pragma: no cover - compiled
+def hear_world(r: BeliefRecord, listener: np.ndarray, speaker: np.ndarray, decoded: np.ndarray,
+               max_age: int) -> None:  # pragma: no cover - compiled
     """Fold the world information of the team messages heard this cycle into each listener's
     beliefs: rows of (listener, speaker, ``decoded``: :data:`~agents.message_kernels.DECODED`
     rows); only valid messages from another team-mate count. The ball is taken when the
     speaker's is fresher than the listener's (its age one more than said: the message took a
-    cycle; the speaker said it where it expected it now), with the velocity when the message
+    cycle; the speaker said it where it expected it now; an age said as ``max_age``, the most
+    a message holds, may be any older and is never taken), with the velocity when the message
     carries it (else the listener keeps the velocity it believes); a speaker who said its own
     position is there (age 1) unless the listener knows fresher."""
     mate_pos, mate_age, ball, ball_vel, ball_age = r.mate_pos, r.mate_age, r.ball, r.ball_vel, r.ball_age
@@ -196,7 +197,7 @@ def hear_world(r: BeliefRecord, listener: np.ndarray, speaker: np.ndarray,
             mate_pos[i, j, 1] = m.sender_y
             mate_age[i, j] = 1
         age = m.ball_age + 1
-        if age < ball_age[i]:
+        if m.ball_age < max_age and age < ball_age[i]:
             ball[i, 0] = m.ball_x
             ball[i, 1] = m.ball_y
             if m.layout == VELOCITY:
@@ -207,11 +208,12 @@ def hear_world(r: BeliefRecord, listener: np.ndarray, speaker: np.ndarray,
 
 @njit(cache=True, nogil=True)
 def believe(r: BeliefRecord, see: SeeRecord, listener: np.ndarray, speaker: np.ndarray, decoded: np.ndarray,
-            cycle: int) -> None:  # pragma: no cover - compiled
+            max_age: int, cycle: int) -> None:  # pragma: no cover - compiled
     """One cycle of every observer's beliefs ``r`` in one call: :func:`predict_beliefs`,
     :func:`see_ball` and :func:`see_players` with the sees of ``cycle`` (``see``), each
     observer's own position (its self-localisation, ``see.position``), then
-    :func:`hear_world` with the team messages heard (``listener``, ``speaker``, ``decoded``)."""
+    :func:`hear_world` with the team messages heard (``listener``, ``speaker``, ``decoded``;
+    ``max_age``: the largest ball age a message holds)."""
     predict_beliefs(r)
     see_ball(r, see, cycle)
     see_players(r, see)
@@ -220,7 +222,7 @@ def believe(r: BeliefRecord, see: SeeRecord, listener: np.ndarray, speaker: np.n
         mate_pos[i, i, 0] = position[i, 0]
         mate_pos[i, i, 1] = position[i, 1]
         mate_age[i, i] = 0
-    hear_world(r, listener, speaker, decoded)
+    hear_world(r, listener, speaker, decoded, max_age)
 
 
 @njit(cache=True, nogil=True)

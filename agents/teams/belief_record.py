@@ -181,7 +181,7 @@ def hear_and_believe(r: BeliefRecord, see: SeeRecord, listener: np.ndarray, spea
     assignment = np.zeros((p, codes.grid[0].max_roles), dtype=np.int64)
     if p > 0:
         decode_digits(digits, codes.grid, decoded, assignment)
-    believe(r, see, listener, speaker, decoded, cycle)
+    believe(r, see, listener, speaker, decoded, codes.grid[0].max_age, cycle)
     if p > 0 and memory.followed.shape[1] > 0:
         store_assignments(listener, speaker, decoded, assignment, cycle, codes.grid[0].stamps, memory, horizon)
 

@@ -13,7 +13,7 @@ from dataclasses import fields, replace
 import numpy as np
 import pytest
 
-from agents.messages import TeamMessage, encode, heard_batch
+from agents.messages import MAX_AGE, TeamMessage, encode, heard_batch
 from agents.teams.belief_kernels import BELIEF_PARAMS, believe
 from agents.teams.belief_record import SEE_FIELDS, SeeRecords, belief_record, see_record, store_assignments
 from agents.teams.speaking import TurnMemory, turn_memory
@@ -40,7 +40,7 @@ def _heard(cycle: int) -> tuple:
 def _three_steps(beliefs: TeamBeliefs, memory: TurnMemory | None, views) -> None:
     """The intake one step after another: decode, the world-model kernel, the proposals taken."""
     heard = heard_batch(views.heard_mates)
-    believe(beliefs.record, see_record(views), heard.listener, heard.speaker, heard.decoded.rows, views.cycle)
+    believe(beliefs.record, see_record(views), heard.listener, heard.speaker, heard.decoded.rows, MAX_AGE, views.cycle)
     if memory is not None and heard.listener.size:
         store_assignments(heard.listener, heard.speaker, heard.decoded.rows, heard.decoded.assignment, views.cycle,
                           2, memory, HORIZON)

@@ -239,3 +239,18 @@ def test_a_players_own_kick_changes_the_ball_velocity_it_believes():
         expected[mine] *= np.minimum(1.0, speed_max / np.maximum(speed, 1e-9))[:, None]
         beliefs.kicked(kick, 1.2)
         np.testing.assert_array_equal(beliefs.ball_vel, expected)
+
+
+def test_a_ball_age_said_as_the_most_a_message_holds_is_never_taken():
+    """A speaker whose ball is MAX_AGE cycles old or older says MAX_AGE: the ball may be any
+    older, so a listener who has not seen the ball for longer still does not take it."""
+    from agents.messages import MAX_AGE
+
+    beliefs = TeamBeliefs(N, M, CONFIG)
+    beliefs.update(views(0))  # nobody has seen the ball
+    stale = encode(TeamMessage((), 0, False, ball=(20.0, 3.0), ball_age=MAX_AGE, ball_velocity=(0.0, 0.0)))
+    fresh = encode(TeamMessage((), 1, False, ball=(21.0, 3.0), ball_age=MAX_AGE - 1, ball_velocity=(0.0, 0.0)))
+    beliefs.update(views(1, heard_mates=((), ((2, stale),), ())))
+    assert beliefs.ball_age[1] > 1000 and not np.allclose(beliefs.ball[1], [20.0, 3.0])
+    beliefs.update(views(2, heard_mates=((), ((2, fresh),), ())))
+    assert beliefs.ball_age[1] == MAX_AGE and np.allclose(beliefs.ball[1], [21.0, 3.0])
