@@ -13,9 +13,10 @@ paired case study against the same opponents and seeds measures what that part i
   the ball (as every other assigner's team does) instead of the ball role's winner;
 * ``no_steer``: the supporters run straight to their role targets (no potential field);
 * ``no_hold``: no hysteresis (``min_hold=0``, ``switch_margin=0``);
-* ``no_angle``, ``no_cap``: the ball bid without its alignment term, without its cap;
+* ``no_angle``, ``no_cap``: the ball bid without its alignment term, without its cap (a cap of
+  200 m, beyond any reach on the field);
 * ``plain_ball_bid``: no hysteresis, no alignment term and no cap: the ball role goes to the
-  player who reaches the ball first;
+  player who reaches the ball first; ``no_hold_no_cap``, ``no_hold_no_angle``: two of them;
 * ``no_<term>``: the supporters' field without one of its terms (``teammate``, ``ball``,
   ``forward``, ``defensive``, ``side``) or without both shot-corridor terms (``corridors``).
 """
@@ -65,6 +66,8 @@ no_hold = _team("bidding-no-hold", min_hold=0, switch_margin=0.0)
 no_angle = _team("bidding-no-angle", angle_weight=0.0)
 no_cap = _team("bidding-no-cap", ball_cap=200.0)
 plain_ball_bid = _team("bidding-plain-ball-bid", min_hold=0, switch_margin=0.0, angle_weight=0.0, ball_cap=200.0)
+no_hold_no_cap = _team("bidding-no-hold-no-cap", min_hold=0, switch_margin=0.0, ball_cap=200.0)
+no_hold_no_angle = _team("bidding-no-hold-no-angle", min_hold=0, switch_margin=0.0, angle_weight=0.0)
 no_teammate = _team("bidding-no-teammate", teammate_weight=0.0)
 no_ball = _team("bidding-no-ball", ball_weight=0.0)
 no_forward = _team("bidding-no-forward", forward_weight=0.0)
@@ -73,7 +76,7 @@ no_side = _team("bidding-no-side", side_weight=0.0)
 no_corridors = _team("bidding-no-corridors", corridor_clear_weight=0.0, corridor_block_weight=0.0)
 
 ABLATIONS: tuple[Callable[[], FormationTeam], ...] = (
-    no_ball_role, no_steer, no_hold, no_angle, no_cap, plain_ball_bid, no_teammate, no_ball, no_forward,
-    no_defensive, no_side, no_corridors,
+    no_ball_role, no_steer, no_hold, no_angle, no_cap, plain_ball_bid, no_hold_no_cap, no_hold_no_angle,
+    no_teammate, no_ball, no_forward, no_defensive, no_side, no_corridors,
 )
 """Every ablation team factory of this module."""
