@@ -41,8 +41,10 @@ higher-priority role: winning the ball role always wins) and either
 * fewer than ``min_hold`` cycles (of ``context.cycle``) have passed since it won the role, or
 * no free player bids better than the holder by more than ``switch_margin`` metres.
 
-Otherwise the best free bidder wins and the role's clock restarts. With ``min_hold = 0`` and
-``switch_margin = 0`` the auction is memoryless.
+Otherwise the best free bidder wins and the role's clock restarts. The hold is there for
+bids that differ by little; a ball-role holder who cannot intercept the ball at all
+(``ball_reach`` inf) while another player can has no hold, and the auction goes to the best
+bidder at once. With ``min_hold = 0`` and ``switch_margin = 0`` the auction is memoryless.
 
 **Players of different speeds** (``context.time_scale``): a player's formation-role costs and
 its straight distance to the ball are multiplied by its time factor, so bids are times (in

@@ -175,11 +175,17 @@ def bidding_round(players: np.ndarray, targets: np.ndarray, order: np.ndarray, b
     """One cycle of bidding with ``params``
     (:meth:`~agents.roles.bidding.BiddingParams.as_record`): (role_of_player, the ball player,
     the covered formation role); updates the hysteresis memory (``holder``, ``since``) and
-    ``last_role`` (each player's role); ``scale`` as :func:`bid_costs`."""
+    ``last_role`` (each player's role); ``scale`` as :func:`bid_costs`. A ball-role holder
+    whose ``reach`` is inf while another player's is finite loses its hold first."""
     k = players.shape[0]
     p = params[0]
     min_hold, margin, slack = p.min_hold, p.switch_margin, p.cover_slack
     costs = bid_costs(players, targets, ball, goal, reach, params, scale)
+    if reach.shape[0] and 0 <= holder[k] < k and math.isinf(reach[holder[k]]):
+        for i in range(k):
+            if not math.isinf(reach[i]):  # the holder cannot intercept, another player can
+                holder[k] = -1
+                break
     taken = np.zeros(k, dtype=np.bool_)
     winners = np.full(k + 1, -1, dtype=np.int64)
     auction(costs, np.array([k]), taken, holder, since, cycle, min_hold, margin, winners)

@@ -107,3 +107,34 @@ def test_self_play_enters_the_frozen_copy_as_the_opponent_and_refreshes_it(capsy
     assert summary["episodes"] == 6 and len(summary["returns"]) == 6
     assert summary["refreshes"] == summary["kept"] // 2
     assert "self-play smoke" in capsys.readouterr().out
+
+
+def test_the_bidding_ablations_change_one_part_of_the_bidding_team_each() -> None:
+    from agents.roles import BiddingParams
+    from agents.roles.base import RoleAssigner
+    from examples import bidding_ablations as ablations
+
+    names = set()
+    for make in ablations.ABLATIONS:
+        team = make()
+        names.add(team.name)
+        assigner = team.assigner
+        assert team.assigner_name.startswith("bidding") and team.style == ablations.FormationTeam().style
+        unsteered = type(assigner).steer is RoleAssigner.steer
+        assert unsteered == (team.name == "bidding-no-steer")
+        assigner.reset(3, np.random.default_rng(0))
+        players = np.array([[0.0, 0.0], [10.0, 0.0], [-10.0, 0.0]])
+        assigner.assign(players, players.copy(), np.array([1, 0, 2]), None, _role_context())
+        assert (assigner.ball_player() is None) == (team.name == "bidding-no-ball-role")
+        changed = {f for f in ("min_hold", "switch_margin", "angle_weight", "ball_cap")
+                   if getattr(assigner.params, f) != getattr(BiddingParams(), f)}
+        changed |= {f"field.{f}" for f in vars(assigner.params.field)
+                    if getattr(assigner.params.field, f) != getattr(BiddingParams().field, f)}
+        assert bool(changed) != (team.name in ("bidding-no-steer", "bidding-no-ball-role")), team.name
+    assert len(names) == len(ablations.ABLATIONS)
+
+
+def _role_context():
+    from tests.agents.roles.role_situations import context
+
+    return context((5.0, 0.0))

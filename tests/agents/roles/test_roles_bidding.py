@@ -250,3 +250,34 @@ def test_a_player_who_cannot_intercept_never_outbids_one_who_can() -> None:
     nobody = replace(ctx, ball_reach=np.full(3, np.inf))
     costs = assigner.bids(players, targets, nobody)[:, 3]
     assert np.argmin(costs) == 1 and costs[0] - costs[1] == pytest.approx(1.0 + 3.0 * math.pi)
+
+
+def test_the_hold_does_not_keep_the_ball_role_with_a_player_who_can_no_longer_intercept() -> None:
+    """The hold guards against bids that differ by little; a holder who cannot get to the ball
+    at all (inf reach: the ball will leave the field first, or it stands offside) while a
+    team-mate can is no such case, and it loses the ball role at once, within ``min_hold``."""
+    from dataclasses import replace
+
+    ball = (10.0, 0.0)
+    players = np.array([[8.0, 0.0], [-5.0, 0.0], [-30.0, 0.0]])
+    targets = np.array([[-30.0, 0.0], [0.0, 0.0], [12.0, 0.0]])
+    assigner = ready(3, min_hold=10, switch_margin=1.0)
+    start = replace(context(ball, 0), ball_reach=np.array([2.0, 15.0, 40.0]))
+    assigner.assign(players, targets, offensive_order(targets), None, start)
+    assert assigner.ball_player() == 0
+    # Two cycles later player 0 could not reach the ball any more; player 1 could, in 15 m.
+    unable = replace(context(ball, 2), ball_reach=np.array([np.inf, 15.0, 40.0]))
+    assigner.assign(players, targets, offensive_order(targets), None, unable)
+    assert assigner.ball_player() == 1
+    # While it can still reach the ball, however slowly, the hold keeps it (the paper's rule).
+    assigner = ready(3, min_hold=10, switch_margin=1.0)
+    assigner.assign(players, targets, offensive_order(targets), None, start)
+    slow = replace(context(ball, 2), ball_reach=np.array([30.0, 15.0, 40.0]))
+    assigner.assign(players, targets, offensive_order(targets), None, slow)
+    assert assigner.ball_player() == 0
+    # Nobody can: the hold stands.
+    assigner = ready(3, min_hold=10, switch_margin=1.0)
+    assigner.assign(players, targets, offensive_order(targets), None, start)
+    nobody = replace(context(ball, 2), ball_reach=np.full(3, np.inf))
+    assigner.assign(players, targets, offensive_order(targets), None, nobody)
+    assert assigner.ball_player() == 0
