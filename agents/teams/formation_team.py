@@ -41,6 +41,7 @@ import numpy as np
 import formations
 from agents.roles import make_assigner
 from agents.teams.ball_role import LeaveMatching, check_ball_role
+from agents.teams.speaking import check_agreement
 from agents.teams.pipeline import Pipeline, TeamSetup
 from agents.teams.positions import current_labels, position_labels
 from agents.teams.reporting import team_drawing
@@ -78,6 +79,7 @@ class FormationTeam:
         self._outfield_roles = np.array([r for r in range(len(kinds)) if r != self._goalie_role], dtype=np.int64)
         forward_roles = np.array([r for r in range(len(kinds)) if kinds[r] == "forward"], dtype=np.int64)
         leave = check_ball_role(self.style.ball_role, assigner) == "leave"
+        check_agreement(self.style.agreement)
         params = dict(assigner_params)
         self._setup = TeamSetup(
             self.formation_set, self.style, make_assigner=lambda: make_assigner(assigner, **params),

@@ -196,9 +196,11 @@ class Pipeline:
         self._talks = world.talks and k > 0
         self._shared = style.shared_assignment and rows > 1 and k > 0
         """Every player follows the first outfield player's belief's assignment (TeamStyle.shared_assignment)."""
-        self.turns = turn_memory(rows, k if self._talks and not self._shared else 0)
+        agrees = style.agreement != "own" and not self._shared
+        self.turns = turn_memory(rows, k if self._talks and agrees else 0)
         """What each belief keeps of the proposals heard (the speaking turns; no columns: the
-        truth needs no talk, no outfield roles, or the assignment is shared without a word)."""
+        truth needs no talk, no outfield roles, each follows its own proposal, or the
+        assignment is shared without a word)."""
         self._speaks = np.zeros(n, dtype=bool)
         # arrays
         self.rank = np.full(n, -1, dtype=np.int64)
@@ -269,7 +271,7 @@ class Pipeline:
             guard_cycles=int(GUARD_CYCLES), belief_of=world.belief_of, able=self.able, ball_gap=np.zeros(rows),
             assigned_at=self._assigned_at, assigned_mode=self._assigned_mode, assign_every=int(ASSIGN_EVERY),
             steers=bool(self._steers), first_outfield=int(outfield[0]) if k else -1, turns=self.turns,
-            said_horizon=int(SAID_HORIZON),
+            said_horizon=int(SAID_HORIZON), settle_every=style.agreement == "speaker",
             radius=arrays.ours.radius, catch_radius=arrays.ours.catch_radius, opp_radius=arrays.theirs.radius,
             opp_catch_radius=arrays.theirs.catch_radius, reach=model.reach, ball_travel=model.ball_travel,
             coast=model.player_coast, race_constants=ctx.intercept_params,

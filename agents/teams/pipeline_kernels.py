@@ -429,12 +429,13 @@ def dash_and_say(s, n_rows: int, n_out: int, play_on: bool, senses: Bodies, cycl
 def say(s, speaker: int, cycle: int, digits: np.ndarray) -> None:  # pragma: no cover - compiled
     """The ``speaker``'s team message of ``cycle`` into ``digits``
     (:func:`~agents.teams.speaking.speaker_message`): the assignment its belief proposed this
-    cycle, settled or not (:func:`~agents.teams.speaking.settles`), and its world information.
+    cycle, settled or not (:func:`~agents.teams.speaking.settles`; every proposal with
+    ``s.settle_every``, the ``"speaker"`` agreement), and its world information.
     The speaker knows what it said: its belief takes its own proposal as heard
     (:func:`~agents.teams.speaking.take_proposal`), as its listeners do the next cycle."""
     b = s.belief_of[speaker]
     talks = s.turns.followed.shape[1] == s.proposals.shape[1]
-    settled = talks and settles(b, s.proposals[b], cycle, s.turns)
+    settled = talks and (s.settle_every or settles(b, s.proposals[b], cycle, s.turns))
     number_digits(speaker_message(s.proposals[b], cycle, settled, s.ball[b], s.ball_vel[b], s.ball_age[b],
                                   s.mate_pos[b, speaker], s.belief_of.shape[0], s.ball_decay, s.message_grid),
                   digits)

@@ -24,7 +24,7 @@ FIELDS = (
     # the offside line each belief keeps its players behind
     "guard_x", "guard_step", "guard_cycles",
     # who assigns, and the assignments heard (the speaking turns)
-    "assigned_at", "assigned_mode", "assign_every", "steers", "first_outfield", "turns", "said_horizon",
+    "assigned_at", "assigned_mode", "assign_every", "steers", "first_outfield", "turns", "said_horizon", "settle_every",
     # the ball race
     "radius", "catch_radius", "opp_radius", "opp_catch_radius", "reach", "ball_travel", "coast", "race_constants",
     "raced", "race_near", "race_every",

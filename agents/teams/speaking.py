@@ -31,6 +31,21 @@ from numba import njit
 
 from agents.message_kernels import SENDER, VELOCITY, message_number
 
+AGREEMENTS: tuple[str, ...] = ("settled", "speaker", "own")
+"""How a team's players under partial observation come to the assignment they follow
+(``TeamStyle.agreement``): ``"settled"`` (the default) the last settled proposal heard
+(:func:`settles`: two consecutive speakers alike, or the team's already); ``"speaker"`` every
+proposal heard, at once (no second view asked: the assignment may swap back and forth with
+the speakers' beliefs); ``"own"`` each its own proposal, on its own beliefs (the turns carry
+only the world information; players may disagree)."""
+
+
+def check_agreement(value: object) -> str:
+    """``value`` if it is one of :data:`AGREEMENTS`; a ValueError naming the problem otherwise."""
+    if value not in AGREEMENTS:
+        raise ValueError(f"agreement must be one of {', '.join(map(repr, AGREEMENTS))}, got {value!r}")
+    return str(value)
+
 
 class TurnMemory(NamedTuple):
     """What each belief row keeps of the team messages heard (the pipeline's arrays; k columns:

@@ -301,3 +301,39 @@ def test_the_built_in_factories_take_style_fields_as_options():
     assert counter_442_team(shared_assignment=True).style.system == "4-4-2"
     with pytest.raises(TypeError, match="not a TeamStyle field: sharing"):
         mmdr_team(sharing=True)
+
+
+@pytest.mark.parametrize("agreement", ["speaker", "own"])
+def test_each_agreement_follows_what_it_names(agreement, monkeypatch):
+    """``speaker``: every proposal said is settled; ``own``: no proposal is kept, each player
+    follows its own (the turns still carry the world information)."""
+    from agents.messages import decode
+    from agents.teams.builtin import mmdr_team
+    from agents.teams.pipeline import Pipeline
+
+    settled = []
+    original = Pipeline.act
+
+    def act(pipeline, views):
+        command = original(pipeline, views)
+        settled.extend(decode(text).settled for text in command.say if text is not None)
+        if agreement == "own" and pipeline.style.agreement == "own":
+            np.testing.assert_array_equal(pipeline.followed[pipeline.outfield], pipeline.proposals[pipeline.outfield])
+        return command
+
+    monkeypatch.setattr(Pipeline, "act", act)
+    home = mmdr_team(agreement=agreement)
+    run_match(home, "counter-442", seed=3, config=MatchConfig(observation=ObservationConfig("partial"),
+                                                              max_cycles=200))
+    assert len(settled) > 300
+    if agreement == "speaker":
+        assert home.pipeline.turns.followed.shape[1] == 10 and all(settled[::2])  # (home speaks first)
+    else:
+        assert home.pipeline.turns.followed.shape[1] == 0
+
+
+def test_an_unknown_agreement_is_a_clear_error():
+    from agents.teams.builtin import mmdr_team
+
+    with pytest.raises(ValueError, match="agreement must be one of 'settled', 'speaker', 'own', got 'vote'"):
+        mmdr_team(agreement="vote")
