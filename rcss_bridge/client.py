@@ -283,8 +283,7 @@ class TeamClient:
             orders = self.translator.translate(command, bodies, self.views.referee.server_mode)
             datagrams = self._datagrams(orders)
         except (CommandError, TeamError) as exc:
-            player = exc.player if exc.player is not None else -1
-            raise TeamFailure(self.team_name, player, step.step, step.server_time,
+            raise TeamFailure(self.team_name, exc.player, step.step, step.server_time,
                               f"bad command: {exc.message}") from exc
         for row, datagram in datagrams.items():
             self.players[row].send(datagram)

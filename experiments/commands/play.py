@@ -63,10 +63,24 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--match-timeout", type=ranged("match-timeout"), default=DEFAULT_MATCH_TIMEOUT, metavar="SECONDS",
                         help=f"stop the match with an error if it takes longer, e.g. a team that never returns "
                              f"from act() (default: {DEFAULT_MATCH_TIMEOUT:g}, as for tournaments)")
+    parser.add_argument("--engine", choices=("simulator", "rcssserver"), default="simulator",
+                        help="where the match is played: soccer-sim's simulator (default) or the real RoboCup 2D "
+                             "server from the reference kit's build (our teams play through the bridge under "
+                             "partial observation; a team may also be helios-base)")
+    parser.add_argument("--rcss-home", default=None, metavar="DIR",
+                        help="with --engine rcssserver: the kit's build (default: $RCSS_HOME, else "
+                             "~/.cache/rcss-reference)")
+    parser.add_argument("--rcss-logs", default=None, metavar="DIR",
+                        help="with --engine rcssserver: also keep the server's game and text logs and every "
+                             "process's output in DIR")
     parser.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
+    if getattr(args, "engine", "simulator") == "rcssserver":
+        from experiments.commands.play_rcss import run_rcss
+
+        return run_rcss(args)
     import contextlib
     import json
     import sys
