@@ -158,7 +158,10 @@ class MatchPlan:
     def server_argv(self, install: RcssInstall) -> list[str]:
         """rcssserver's command line: synchronous mode, ``auto_mode``, two halves of
         ``half_time`` and nothing after them, uncompressed game and text logs named
-        :data:`GAME_LOG` in the work directory."""
+        :data:`GAME_LOG` in the work directory, and ``player::allow_mult_default_type``: the
+        simulator's rule for player types (``pt_max`` limits each non-default type; without
+        it rcssserver 19 also limits the default type to ``pt_max`` players and gives the
+        others types of its own at kick-off, ``Team::assignPlayerTypes``)."""
         options = {
             "synch_mode": "true", "auto_mode": "true", "nr_normal_halfs": "2", "half_time": str(self.half_time),
             "nr_extra_halfs": "0", "penalty_shoot_outs": "false", "coach": "false",
@@ -169,8 +172,9 @@ class MatchPlan:
             "port": str(self.port), "coach_port": str(self.port + 1), "olcoach_port": str(self.port + 2),
             "connect_wait": str(NO_CONNECT_LIMIT),
         }
-        return [str(install.server)] + [f"server::{key}={value}" for key, value in options.items()] + list(
-            self.server_options)
+        player_options = {"allow_mult_default_type": "true"}
+        return ([str(install.server)] + [f"server::{key}={value}" for key, value in options.items()]
+                + [f"player::{key}={value}" for key, value in player_options.items()] + list(self.server_options))
 
 
 @dataclass(frozen=True)
