@@ -91,10 +91,11 @@ def play_rcss_match(home: str, away: str, seed: int, rcss_home: str | None = Non
     log of the match (game and text logs, the server's and the teams' output)."""
     from experiments.rcg_report import rcg_match_report
     from experiments.warmup import warm_kernels
+    from rcss_bridge.errors import BridgeError
     from rcss_bridge.install import RcssInstall
     from rcss_bridge.match import MatchPlan, play_in_namespace, server_team_name
     from rcss_bridge.textlog import missed_steps
-    from soccer_sim.rcg import read_rcg
+    from soccer_sim.rcg import RcgError, read_rcg
 
     install = RcssInstall.find(rcss_home)
     ours = check_teams(home, away, install)
@@ -113,7 +114,10 @@ def play_rcss_match(home: str, away: str, seed: int, rcss_home: str | None = Non
         finally:
             if logs is not None:
                 keep_logs(Path(work), Path(logs))
-        report = rcg_match_report(read_rcg(outcome.rcg), (home, away), seed)
+        try:
+            report = rcg_match_report(read_rcg(outcome.rcg), (home, away), seed)
+        except (RcgError, ValueError) as exc:
+            raise BridgeError(f"the server's game log cannot be read: {exc}") from None
         missed = {label: missed_steps(Path(outcome.rcl), name)
                   for label, name in ((home, home_name), (away, away_name)) if label not in EXTERNAL_TEAMS}
         server_score = final_score(Path(outcome.server_output))

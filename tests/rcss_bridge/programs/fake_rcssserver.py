@@ -3,7 +3,8 @@
 options the host gives, listens on 127.0.0.1 at ``server::port``, says ``A new (v19) player
 (NAME N) connected.`` for every ``(init NAME ...)`` as rcssserver does (numbering each team's
 players in order), and once two full teams are connected writes a game log and a text log
-named as asked after ``FAKE_RCSS_SECONDS`` (1 s: the match) and exits. ``FAKE_RCSS_MODE=hang`` never exits; ``FAKE_RCSS_MODE=crash`` exits
+named as asked after ``FAKE_RCSS_SECONDS`` (1 s: the match) and exits (the game log is a copy
+of ``FAKE_RCSS_RCG`` when set). ``FAKE_RCSS_MODE=hang`` never exits; ``FAKE_RCSS_MODE=crash`` exits
 with status 3 at once. Its process id goes to ``fake-server.pid`` in the game log directory."""
 
 import os
@@ -38,7 +39,8 @@ time.sleep(float(os.environ.get("FAKE_RCSS_SECONDS", "1.0")))  # the match
 name = options["game_log_fixed_name"]
 left, right = list(teams)
 with open(os.path.join(logs, name + ".rcg"), "w") as f:
-    f.write("ULG6\n")
+    recorded = os.environ.get("FAKE_RCSS_RCG")  # a game log to give as the match's
+    f.write(open(recorded).read() if recorded else "ULG6\n")
 with open(os.path.join(options["text_log_dir"], name + ".rcl"), "w") as f:
     f.write("")
-print(f"\tGame Results:\n\t{left} 0 - 0 {right}", flush=True)
+print(f"Game Results:\n\t'{left}' vs '{right}'\n\tScore: {os.environ.get('FAKE_RCSS_SCORE', '0 - 0')}", flush=True)
