@@ -52,6 +52,8 @@ class RcssMatchResult:
     report: MatchReport
     wall_time: float
     """Seconds from the server's start to its end."""
+    connect_seconds: float
+    """Of them, seconds until both teams were connected (our teams load their code first)."""
     missed: dict[str, dict[int, int]]
     """Per team of ours (its label), shirt number -> steps without its ``(done)`` after kick-off."""
     server_score: tuple[int, int] | None
@@ -123,7 +125,7 @@ def play_rcss_match(home: str, away: str, seed: int, rcss_home: str | None = Non
         server_score = final_score(Path(outcome.server_output))
         if rcg is not None:
             shutil.copyfile(outcome.rcg, rcg)
-    return RcssMatchResult(report, outcome.wall_time, missed, server_score)
+    return RcssMatchResult(report, outcome.wall_time, outcome.connect_seconds, missed, server_score)
 
 
 def side_program(label: str, server_name: str, opponent: str, seed: int, install, port: int = 6000):

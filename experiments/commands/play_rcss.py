@@ -56,6 +56,7 @@ def run_rcss(args: argparse.Namespace) -> int:
         if args.json:
             data = report.as_dict()
             data.update(engine="rcssserver", wall_time=round(result.wall_time, 2),
+                        connect_seconds=round(result.connect_seconds, 2),
                         missed_cycles={team: {str(k): v for k, v in shirts.items()}
                                        for team, shirts in result.missed.items()},
                         server_score=None if result.server_score is None else list(result.server_score))
@@ -71,6 +72,8 @@ def run_rcss(args: argparse.Namespace) -> int:
                     console.print(f"rcssserver: {team} missed no step")
             if result.server_score is not None:
                 console.print(f"rcssserver's result: {result.server_score[0]} - {result.server_score[1]}")
+            console.print(f"rcssserver: {result.wall_time:.1f} s from its start to its end, "
+                          f"{result.connect_seconds:.1f} s of them connecting the teams")
             if args.rcg is not None:
                 console.print(f"rcssserver game log written to {args.rcg}")
         sys.stdout.flush()
