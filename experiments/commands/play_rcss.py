@@ -26,7 +26,7 @@ import sys
 
 def run_rcss(args: argparse.Namespace) -> int:
     from experiments.commands.errors import fail
-    from experiments.commands.play import _print_report, _report_console
+    from experiments.commands.report_printing import print_report, report_console
     from experiments.commands.run_options import RunInputError
     from experiments.rcss_engine import play_rcss_match
     from experiments.recording import rcg_destination
@@ -62,8 +62,8 @@ def run_rcss(args: argparse.Namespace) -> int:
                         server_score=None if result.server_score is None else list(result.server_score))
             print(json.dumps(data, indent=2))
         else:
-            console = _report_console()
-            _print_report(console, report, result.wall_time)
+            console = report_console()
+            print_report(console, report, result.wall_time)
             for team, shirts in result.missed.items():
                 if shirts:
                     listed = ", ".join(f"#{shirt}: {count}" for shirt, count in sorted(shirts.items()))
