@@ -176,15 +176,25 @@ def team_main(argv: list[str] | None = None) -> int:
     parser.add_argument("--host", default="127.0.0.1")
     parser.add_argument("--port", type=int, default=6000)
     parser.add_argument("--coach-port", type=int, default=6002)
+    parser.add_argument("--transcript", default=None, metavar="FILE.jsonl.gz",
+                        help="record every datagram of the team's exchange (rcss_bridge.transcripts)")
     args = parser.parse_args(argv)
+    import contextlib
+    import gzip
+
     from rcss_bridge import BridgeError, ClientSettings, TeamClient
     from rcss_bridge.team_runner import play_team
+    from rcss_bridge.transcripts import TranscriptWriter
 
     try:
         team = prepare_team(args.team)
-        client = TeamClient(args.server_name, ClientSettings(host=args.host, port=args.port,
-                                                             coach_port=args.coach_port))
-        run = play_team(team, args.team, args.opponent, client, args.seed)
+        with contextlib.ExitStack() as stack:
+            recorder = None
+            if args.transcript is not None:
+                recorder = TranscriptWriter(stack.enter_context(gzip.open(args.transcript, "wt", encoding="utf-8")))
+            client = TeamClient(args.server_name, ClientSettings(host=args.host, port=args.port,
+                                                                 coach_port=args.coach_port), recorder)
+            run = play_team(team, args.team, args.opponent, client, args.seed)
     except BridgeError as exc:
         print(f"error: {exc}", file=sys.stderr, flush=True)
         return 1

@@ -282,6 +282,7 @@ class TeamClient:
             bodies = PlayerBodies.from_views(step.views, self.views.necks, ball)
             orders = self.translator.translate(command, bodies, self.views.referee.server_mode)
             datagrams = self._datagrams(orders)
+            self.views.turned(self.translator.turns)
         except (CommandError, TeamError) as exc:
             raise TeamFailure(self.team_name, exc.player, step.step, step.server_time,
                               f"bad command: {exc.message}") from exc

@@ -143,6 +143,10 @@ class CommandTranslator:
         self.sent: Counter[str] = Counter()
         """Commands sent so far by the server's names; ``dropped``: commands the one-body
         rule left out; ``unaimed``: commands not sent for want of a known body direction."""
+        self.turns = np.zeros(players)
+        """(n,) the body turn (degrees) each player's order of the last :meth:`translate`
+        makes (0 for none): ``MOMENT / (1 + inertia_moment x speed)``, what the views
+        builder turns the body by until the next see (:meth:`~rcss_bridge.views_builder.ViewsBuilder.turned`)."""
         self._goalie_moves = 0
         """Moves sent since the goalkeeper's last catch."""
         self._goalie_held = False
@@ -175,6 +179,7 @@ class CommandTranslator:
                          ignored)
         self.sent["dropped"] += int(ignored[0])
         orders: dict[int, PlayerOrder] = {}
+        self.turns = np.zeros(self.n)
         for row in range(self.n):
             if not bodies.present[row]:
                 continue
@@ -197,7 +202,9 @@ class CommandTranslator:
                 body = ""
             if body:
                 self.sent[body[1:body.index(" ")]] += 1
-            neck = self._neck(row, turned, bodies)
+            if turned:
+                self.turns[row] = self._turn_angle(row, turned, bodies)
+            neck = self._neck(row, self.turns[row], bodies)
             orders[row] = PlayerOrder(body + neck, None if say is None else say[row])
         return orders
 
@@ -352,15 +359,18 @@ class CommandTranslator:
         text = number(moment)
         return ("", 0.0) if text == "0" else (f"(turn {text})", float(text))
 
-    def _neck(self, row: int, turned: float, bodies: PlayerBodies) -> str:
-        """The ``turn_neck`` that keeps the ball in view after this step's turn of moment
-        ``turned`` (0: none)."""
+    def _turn_angle(self, row: int, moment: float, bodies: PlayerBodies) -> float:
+        """The body turn (degrees) a ``(turn MOMENT)`` makes at the player's speed."""
+        player = self.types[int(bodies.types[row])]
+        return turn_angle(moment, math.hypot(*(float(v) for v in bodies.velocity[row])), player.inertia_moment)
+
+    def _neck(self, row: int, turn: float, bodies: PlayerBodies) -> str:
+        """The ``turn_neck`` that keeps the ball in view after this step's body turn of
+        ``turn`` degrees (0: none)."""
         body = float(bodies.body_direction[row])
         if not math.isfinite(body):
             return ""
-        if turned:
-            player = self.types[int(bodies.types[row])]
-            body += turn_angle(turned, math.hypot(*(float(v) for v in bodies.velocity[row])), player.inertia_moment)
+        body += turn
         ball = self._ball(row, bodies)
         direction = math.nan if ball is None else math.degrees(math.atan2(ball[1], ball[0]))
         moment = neck_moment(float(bodies.neck[row]), body, direction, self.rules)
