@@ -279,7 +279,7 @@ class TeamClient:
         if self.translator is None or self.views is None:
             raise BridgeError("connect() first")
         try:
-            bodies = PlayerBodies.from_views(step.views, self.views.necks, ball)
+            bodies = PlayerBodies.from_views(step.views, self.views.necks, ball, self.views.ball_unseen)
             orders = self.translator.translate(command, bodies, self.views.referee.server_mode)
             datagrams = self._datagrams(orders)
             self.views.turned(self.translator.turns)

@@ -68,6 +68,10 @@ MOVE_MODES = frozenset({"before_kick_off", "goal_l", "goal_r"})
 """rcssserver's play modes in which every player may ``move`` (``Player::move``); besides
 them only the goalkeeper holding the ball may, ``goalie_max_moves`` times."""
 
+BALL_LOOK_STEPS = 4
+"""Steps after a player last saw the ball itself during which its neck follows the ball it
+believes in (two sees at the normal view width); later it looks around until it sees the ball."""
+
 DECIMALS = 2
 """Decimals of the numbers the translation writes (powers, degrees, metres)."""
 
@@ -102,12 +106,19 @@ class PlayerBodies:
     """(n,) steps each player still cannot act."""
     holds_ball: np.ndarray
     """(n,) bool: the goalkeeper holds the ball."""
+    ball_unseen: np.ndarray | None = None
+    """(n,) steps since each player last saw the ball itself (0: this step; None: all 0). The
+    neck follows the believed ball for :data:`BALL_LOOK_STEPS` steps after that, then looks
+    around: a belief nobody refreshes (the ball moved out of everybody's sight) must not keep
+    every eye away from the ball."""
 
     @classmethod
-    def from_views(cls, views: PlayerViews, necks: np.ndarray, ball: np.ndarray | None = None) -> PlayerBodies:
+    def from_views(cls, views: PlayerViews, necks: np.ndarray, ball: np.ndarray | None = None,
+                   ball_unseen: np.ndarray | None = None) -> PlayerBodies:
         """From a step's views (:class:`~rcss_bridge.views_builder.ViewsBuilder`), the necks it
-        keeps (:attr:`~rcss_bridge.views_builder.ViewsBuilder.necks`) and where each player
-        believes the ball is (``ball`` (n, 2) team frame; None: where it saw it this step)."""
+        keeps (:attr:`~rcss_bridge.views_builder.ViewsBuilder.necks`), where each player
+        believes the ball is (``ball`` (n, 2) team frame; None: where it saw it this step) and
+        the steps since each saw it (:attr:`~rcss_bridge.views_builder.ViewsBuilder.ball_unseen`)."""
         ball = views.ball if ball is None else np.asarray(ball, dtype=np.float64)
         if ball.shape != views.position.shape:
             raise CommandError("?", f"ball must have shape {views.position.shape}, got {ball.shape}")
@@ -116,7 +127,8 @@ class PlayerBodies:
         return cls(body_direction=views.body_direction.copy(), neck=np.asarray(necks, dtype=np.float64).copy(),
                    velocity=velocity, ball_offset=ball - views.position, effort=effort,
                    types=views.player_types.copy(), present=views.present.copy(), frozen=views.frozen.copy(),
-                   holds_ball=views.holds_ball.copy())
+                   holds_ball=views.holds_ball.copy(),
+                   ball_unseen=None if ball_unseen is None else np.asarray(ball_unseen, dtype=np.int64).copy())
 
 
 class CommandTranslator:
@@ -372,7 +384,8 @@ class CommandTranslator:
             return ""
         body += turn
         ball = self._ball(row, bodies)
-        direction = math.nan if ball is None else math.degrees(math.atan2(ball[1], ball[0]))
+        stale = bodies.ball_unseen is not None and bodies.ball_unseen[row] > BALL_LOOK_STEPS
+        direction = math.nan if ball is None or stale else math.degrees(math.atan2(ball[1], ball[0]))
         moment = neck_moment(float(bodies.neck[row]), body, direction, self.rules)
         return f"(turn_neck {number(moment)})" if number(moment) != "0" else ""
 

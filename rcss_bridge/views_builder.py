@@ -66,6 +66,8 @@ class ViewsBuilder:
         """Each player's body direction (degrees, the server's frame; NaN before its first see
         with flags): from a see, the face less the neck; between sees, turned by the turns
         its orders made (:meth:`turned`)."""
+        self._unseen = np.full(n, 1_000_000, dtype=np.int64)
+        """Steps since each player last saw the ball (a large number before it ever did)."""
         self._turns = np.zeros(n)
         """The body turns (degrees) of the orders sent since the last :meth:`update`."""
         self._neck = np.zeros(n)
@@ -86,6 +88,11 @@ class ViewsBuilder:
     @property
     def n(self) -> int:
         return self.views.n
+
+    @property
+    def ball_unseen(self) -> np.ndarray:
+        """(n,) steps since each player last saw the ball itself (0: at this step; a copy)."""
+        return self._unseen.copy()
 
     @property
     def necks(self) -> np.ndarray:
@@ -148,6 +155,7 @@ class ViewsBuilder:
         if self.referee.goalie_holds and views.present[self._goalie]:
             views.holds_ball[self._goalie] = True
         self._turns[:] = 0.0
+        self._unseen = np.where(views.ball_seen, 0, np.minimum(self._unseen + 1, 1_000_000))
         return views
 
     # ------------------------------------------------------------------------------------
