@@ -6,6 +6,9 @@ writes the match as a rerun replay (see :mod:`soccer_sim.replay`; watch it with
 ``soccer-sim replay FILE.rrd``); ``--rcg`` writes it as an rcssserver game log, which RoboCup's
 tools (rcssmonitor, soccerwindow2, log analysers) replay (see :mod:`soccer_sim.rcg`).
 
+``--engine rcssserver`` plays the match in the real RoboCup 2D server instead
+(:mod:`experiments.commands.play_rcss`; ``--rcss-home``, ``--rcss-logs``).
+
 ``--cycles`` up to a regulation match (2 x 3000 cycles) stops the match early; a longer count
 lengthens both halves to half of it each (half time stays in the middle).
 
