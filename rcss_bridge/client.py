@@ -279,12 +279,12 @@ class TeamClient:
         if self.translator is None or self.views is None:
             raise BridgeError("connect() first")
         try:
-            bodies = PlayerBodies.from_views(step.views, self.views.necks, ball)
+            bodies = PlayerBodies.from_views(step.views, self.views.necks, ball, self.views.ball_unseen)
             orders = self.translator.translate(command, bodies, self.views.referee.server_mode)
             datagrams = self._datagrams(orders)
+            self.views.turned(self.translator.turns)
         except (CommandError, TeamError) as exc:
-            player = exc.player if exc.player is not None else -1
-            raise TeamFailure(self.team_name, player, step.step, step.server_time,
+            raise TeamFailure(self.team_name, exc.player, step.step, step.server_time,
                               f"bad command: {exc.message}") from exc
         for row, datagram in datagrams.items():
             self.players[row].send(datagram)

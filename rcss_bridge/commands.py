@@ -75,6 +75,10 @@ MOVE_MODES = frozenset({"before_kick_off", "goal_l", "goal_r"})
 """rcssserver's play modes in which every player may ``move`` (``Player::move``); besides
 them only the goalkeeper holding the ball may, ``goalie_max_moves`` times."""
 
+BALL_LOOK_STEPS = 4
+"""Steps after a player last saw the ball itself during which its neck follows the ball it
+believes in (two sees at the normal view width); later it looks around until it sees the ball."""
+
 DECIMALS = 2
 """Decimals of the numbers the translation writes (powers, degrees, metres)."""
 
@@ -112,12 +116,19 @@ class PlayerBodies:
     view_width: np.ndarray | None = None
     """(n,) each player's view width code as its last ``sense_body`` told it
     (:mod:`soccer_sim.perception.view_width`; None: all ``normal``)."""
+    ball_unseen: np.ndarray | None = None
+    """(n,) steps since each player last saw the ball itself (0: this step; None: all 0). The
+    neck follows the believed ball for :data:`BALL_LOOK_STEPS` steps after that, then looks
+    around: a belief nobody refreshes (the ball moved out of everybody's sight) must not keep
+    every eye away from the ball."""
 
     @classmethod
-    def from_views(cls, views: PlayerViews, necks: np.ndarray, ball: np.ndarray | None = None) -> PlayerBodies:
+    def from_views(cls, views: PlayerViews, necks: np.ndarray, ball: np.ndarray | None = None,
+                   ball_unseen: np.ndarray | None = None) -> PlayerBodies:
         """From a step's views (:class:`~rcss_bridge.views_builder.ViewsBuilder`), the necks it
-        keeps (:attr:`~rcss_bridge.views_builder.ViewsBuilder.necks`) and where each player
-        believes the ball is (``ball`` (n, 2) team frame; None: where it saw it this step)."""
+        keeps (:attr:`~rcss_bridge.views_builder.ViewsBuilder.necks`), where each player
+        believes the ball is (``ball`` (n, 2) team frame; None: where it saw it this step) and
+        the steps since each saw it (:attr:`~rcss_bridge.views_builder.ViewsBuilder.ball_unseen`)."""
         ball = views.ball if ball is None else np.asarray(ball, dtype=np.float64)
         if ball.shape != views.position.shape:
             raise CommandError("?", f"ball must have shape {views.position.shape}, got {ball.shape}")
@@ -126,7 +137,8 @@ class PlayerBodies:
         return cls(body_direction=views.body_direction.copy(), neck=np.asarray(necks, dtype=np.float64).copy(),
                    velocity=velocity, ball_offset=ball - views.position, effort=effort,
                    types=views.player_types.copy(), present=views.present.copy(), frozen=views.frozen.copy(),
-                   holds_ball=views.holds_ball.copy(), view_width=views.view_width.copy())
+                   holds_ball=views.holds_ball.copy(), view_width=views.view_width.copy(),
+                   ball_unseen=None if ball_unseen is None else np.asarray(ball_unseen, dtype=np.int64).copy())
 
 
 class CommandTranslator:
@@ -153,6 +165,10 @@ class CommandTranslator:
         self.sent: Counter[str] = Counter()
         """Commands sent so far by the server's names; ``dropped``: commands the one-body
         rule left out; ``unaimed``: commands not sent for want of a known body direction."""
+        self.turns = np.zeros(players)
+        """(n,) the body turn (degrees) each player's order of the last :meth:`translate`
+        makes (0 for none): ``MOMENT / (1 + inertia_moment x speed)``, what the views
+        builder turns the body by until the next see (:meth:`~rcss_bridge.views_builder.ViewsBuilder.turned`)."""
         self._goalie_moves = 0
         """Moves sent since the goalkeeper's last catch."""
         self._goalie_held = False
@@ -185,6 +201,7 @@ class CommandTranslator:
                          ignored)
         self.sent["dropped"] += int(ignored[0])
         orders: dict[int, PlayerOrder] = {}
+        self.turns = np.zeros(self.n)
         for row in range(self.n):
             if not bodies.present[row]:
                 continue
@@ -207,7 +224,10 @@ class CommandTranslator:
                 body = ""
             if body:
                 self.sent[body[1:body.index(" ")]] += 1
-            neck = self._neck(row, turned, bodies) if turn_neck is None else self._turn_neck(float(turn_neck[row]))
+            if turned:
+                self.turns[row] = self._turn_angle(row, turned, bodies)
+            neck = (self._neck(row, self.turns[row], bodies) if turn_neck is None
+                    else self._turn_neck(float(turn_neck[row])))
             view = "" if widths is None else self._change_view(row, int(widths[row]), bodies)
             orders[row] = PlayerOrder(body + view + neck, None if say is None else say[row])
         return orders
@@ -392,17 +412,21 @@ class CommandTranslator:
         text = number(clamp(moment, self.rules.min_neck_moment, self.rules.max_neck_moment))
         return "" if text == "0" else f"(turn_neck {text})"
 
-    def _neck(self, row: int, turned: float, bodies: PlayerBodies) -> str:
-        """The ``turn_neck`` that keeps the ball in view after this step's turn of moment
-        ``turned`` (0: none)."""
+    def _turn_angle(self, row: int, moment: float, bodies: PlayerBodies) -> float:
+        """The body turn (degrees) a ``(turn MOMENT)`` makes at the player's speed."""
+        player = self.types[int(bodies.types[row])]
+        return turn_angle(moment, math.hypot(*(float(v) for v in bodies.velocity[row])), player.inertia_moment)
+
+    def _neck(self, row: int, turn: float, bodies: PlayerBodies) -> str:
+        """The ``turn_neck`` that keeps the ball in view after this step's body turn of
+        ``turn`` degrees (0: none)."""
         body = float(bodies.body_direction[row])
         if not math.isfinite(body):
             return ""
-        if turned:
-            player = self.types[int(bodies.types[row])]
-            body += turn_angle(turned, math.hypot(*(float(v) for v in bodies.velocity[row])), player.inertia_moment)
+        body += turn
         ball = self._ball(row, bodies)
-        direction = math.nan if ball is None else math.degrees(math.atan2(ball[1], ball[0]))
+        stale = bodies.ball_unseen is not None and bodies.ball_unseen[row] > BALL_LOOK_STEPS
+        direction = math.nan if ball is None or stale else math.degrees(math.atan2(ball[1], ball[0]))
         moment = neck_moment(float(bodies.neck[row]), body, direction, self.rules)
         return f"(turn_neck {number(moment)})" if number(moment) != "0" else ""
 

@@ -24,13 +24,14 @@ class ServerError(BridgeError, RuntimeError):
 class TeamFailure(BridgeError, RuntimeError):
     """A team's decision raised, or took longer than the server waits for a step.
 
-    ``player`` is the index (0-based, within the team) of the player being decided, ``step``
+    ``player`` is the index (0-based, within the team) of the player being decided (None for a
+    team whose one ``act()`` decides every player), ``step``
     the bridge's own step counter and ``server_time`` the server's clock at that step (which
     stands still before kick-off, after goals and at some stoppages, so both are given)."""
 
-    def __init__(self, team_name: str, player: int, step: int, server_time: int, message: str) -> None:
-        super().__init__(f"team {team_name!r}, player {player} (shirt {player + 1}), step {step} "
-                         f"(server time {server_time}): {message}")
+    def __init__(self, team_name: str, player: int | None, step: int, server_time: int, message: str) -> None:
+        who = "every player (one act() decides them all)" if player is None else f"player {player} (shirt {player + 1})"
+        super().__init__(f"team {team_name!r}, {who}, step {step} (server time {server_time}): {message}")
         self.team_name = team_name
         self.player = player
         self.step = step

@@ -15,7 +15,9 @@ Per step and player (rows: shirt number - 1; a shirt not connected is a row with
   ``OPPONENT`` when another, ``UNKNOWN_SIDE`` when not given) and index (shirt - 1, or -1).
   Directions in the views are relative to the body (the server's, relative to the face, plus
   the neck angle). On steps without a see the position is dead-reckoned as the simulator's
-  observer does (``pos += vel / player_decay`` of the player's type) and the face kept.
+  observer does (``pos += vel / player_decay`` of the player's type) and the body turned by
+  the turns the player's own orders made (:meth:`ViewsBuilder.turned`; the face is the body
+  plus ``sense_body``'s neck).
 * ``hear``: team-mates' messages as (index, text), opponents' as text (one's own left out).
 * the referee (:class:`~rcss_bridge.play_modes.RefereeState`): play mode, ``mode_ours``,
   half, score (ours, theirs); ``holds_ball`` for the goalkeeper's row while it holds the ball.
@@ -62,7 +64,14 @@ class ViewsBuilder:
         self._decay = np.asarray(decay, dtype=np.float64)
         self._goalie = goalie
         n, k = players, 2 * players - 1
-        self._face = np.full(n, np.nan)
+        self._body = np.full(n, np.nan)
+        """Each player's body direction (degrees, the server's frame; NaN before its first see
+        with flags): from a see, the face less the neck; between sees, turned by the turns
+        its orders made (:meth:`turned`)."""
+        self._unseen = np.full(n, 1_000_000, dtype=np.int64)
+        """Steps since each player last saw the ball (a large number before it ever did)."""
+        self._turns = np.zeros(n)
+        """The body turns (degrees) of the orders sent since the last :meth:`update`."""
         self._belief = np.full((n, 2), np.nan)
         self.views = PlayerViews(
             stamina=np.full(n, np.nan), effort=np.full(n, np.nan), capacity=np.full(n, np.nan),
@@ -82,10 +91,22 @@ class ViewsBuilder:
         return self.views.n
 
     @property
+    def ball_unseen(self) -> np.ndarray:
+        """(n,) steps since each player last saw the ball itself (0: at this step; a copy)."""
+        return self._unseen.copy()
+
+    @property
     def necks(self) -> np.ndarray:
         """(n,) each player's neck as its last ``sense_body`` told it (``head_angle``: the
         face's angle to the body, degrees; a copy)."""
         return self.views.neck_angle.copy()
+
+    def turned(self, angles: np.ndarray) -> None:
+        """The body turns (degrees, by row; 0 for none) the orders just sent will make: the
+        server tells no body direction between sees (``sense_body`` gives the neck, relative
+        to the body), so the body kept since the last see is turned by what the player itself
+        asked (:attr:`~rcss_bridge.commands.CommandTranslator.turns`)."""
+        self._turns += np.nan_to_num(np.asarray(angles, dtype=np.float64))
 
     def update(self, step: int, inboxes: Mapping[int, Sequence[Message]]) -> PlayerViews:
         """The views after one step's messages: ``inboxes`` maps each connected player's row to
@@ -134,6 +155,8 @@ class ViewsBuilder:
         views.holds_ball[:] = False
         if self.referee.goalie_holds and views.present[self._goalie]:
             views.holds_ball[self._goalie] = True
+        self._turns[:] = 0.0
+        self._unseen = np.where(views.ball_seen, 0, np.minimum(self._unseen + 1, 1_000_000))
         return views
 
     # ------------------------------------------------------------------------------------
@@ -147,14 +170,16 @@ class ViewsBuilder:
         if sense.view_width in VIEW_WIDTHS:
             views.view_width[row] = VIEW_WIDTHS.index(sense.view_width)
         position_found = False
+        if math.isfinite(self._body[row]):
+            self._body[row] = wrap(self._body[row] + self._turns[row])
         if see is not None:
             fix = localise(see)
             if math.isfinite(fix.face):
-                self._face[row] = fix.face
+                self._body[row] = wrap(fix.face - sense.head_angle)
             if fix.flags > 0 and np.all(np.isfinite(fix.position)):
                 self._belief[row] = fix.position
                 position_found = True
-        face = self._face[row]
+        face = self._body[row] + sense.head_angle
         heading = math.radians(face + sense.speed_direction) if math.isfinite(face) else math.nan
         velocity = np.array([sense.speed * math.cos(heading), sense.speed * math.sin(heading)])
         if not position_found and np.all(np.isfinite(self._belief[row])) and np.all(np.isfinite(velocity)):
@@ -162,7 +187,7 @@ class ViewsBuilder:
             self._belief[row] = self._belief[row] + velocity / decay
         views.velocity[row] = velocity * s
         views.position[row] = self._belief[row] * s
-        views.body_direction[row] = self._team_angle(face - sense.head_angle)
+        views.body_direction[row] = self._team_angle(self._body[row])
         views.saw[row] = see is not None
         views.localised[row] = position_found
         if see is not None and position_found and math.isfinite(face):

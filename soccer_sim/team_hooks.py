@@ -109,6 +109,19 @@ class ChoosesPlayerTypes(Protocol):
 
 
 @runtime_checkable
+class BelievesBall(Protocol):
+    """A team that can say where each of its players believes the ball is (its world model
+    under partial observation). The rcssserver bridge aims kicks, catches and the neck with
+    it on the steps without a see."""
+
+    def believed_ball(self) -> np.ndarray:
+        """(n, 2) where each player (row order) believes the ball is now, in the team's frame
+        (m), after the team's ``act`` of the cycle; NaN rows for players without any ball
+        information yet."""
+        ...
+
+
+@runtime_checkable
 class ReportsRoles(Protocol):
     """A team that can name the role each of its players is playing now."""
 

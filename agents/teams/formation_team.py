@@ -41,10 +41,11 @@ import numpy as np
 import formations
 from agents.roles import make_assigner
 from agents.teams.ball_role import LeaveMatching, check_ball_role
-from agents.teams.speaking import check_agreement
+from agents.teams.belief_kernels import AGE_NEVER
 from agents.teams.pipeline import Pipeline, TeamSetup
 from agents.teams.positions import current_labels, position_labels
 from agents.teams.reporting import team_drawing
+from agents.teams.speaking import check_agreement
 from agents.teams.style import ATTACKING_DECISIONS, TeamStyle
 from agents.teams.type_choice import choose_types
 from agents.teams.world_model import TeamBeliefs, TruthBeliefs
@@ -124,6 +125,19 @@ class FormationTeam:
         unfilled (its player farther than ``unfilled_distance``); under partial observation also
         the believed role conflicts (:meth:`~agents.teams.pipeline.Pipeline.statistics`)."""
         return self.pipeline.statistics() if self.pipeline is not None else {}
+
+    def believed_ball(self) -> np.ndarray:
+        """(n, 2) where each player believes the ball is after this cycle's ``act`` (team
+        frame, m): the ball of the belief it takes its world from; NaN for a player that has
+        had no ball information yet (:class:`~soccer_sim.team_hooks.BelievesBall`)."""
+        pipeline = self.pipeline
+        if pipeline is None:
+            return np.zeros((0, 2))
+        world = pipeline.world
+        rows = world.belief_of
+        ball = world.ball[rows].copy()
+        ball[world.ball_age[rows] >= AGE_NEVER] = np.nan
+        return ball
 
     def role_labels(self) -> list[str]:
         """Each player's current position as its belief has it (row order;

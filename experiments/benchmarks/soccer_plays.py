@@ -40,6 +40,10 @@ class PlayFigures:
         self.reach = 1.0 / (1.0 - ball_decay) if ball_decay < 1.0 else np.inf
         self.passes = 0
         self.shots = 0
+        self.team_passes = [0, 0]
+        """Passes of home and away (together :attr:`passes`)."""
+        self.team_shots = [0, 0]
+        """Shots of home and away (together :attr:`shots`)."""
         self._last = NOBODY
         """Row of the player whose kick or tackle the ball comes from, or NOBODY."""
 
@@ -56,10 +60,12 @@ class PlayFigures:
             last = self._last
             if last != NOBODY and last != row and self.team[last] == self.team[row]:
                 self.passes += 1
+                self.team_passes[int(self.team[row])] += 1
             caught = row in set(np.asarray(catches).tolist())
             self._last = NOBODY if caught else row
             if not caught and row in set(np.asarray(kicks).tolist()) and self.is_shot(int(self.team[row]), ball):
                 self.shots += 1
+                self.team_shots[int(self.team[row])] += 1
         elif plays.size > 1:
             self._last = NOBODY
         elif self._last != NOBODY and np.any(self.team[np.asarray(touches, dtype=np.intp)] != self.team[self._last]):

@@ -6,6 +6,9 @@ writes the match as a rerun replay (see :mod:`soccer_sim.replay`; watch it with
 ``soccer-sim replay FILE.rrd``); ``--rcg`` writes it as an rcssserver game log, which RoboCup's
 tools (rcssmonitor, soccerwindow2, log analysers) replay (see :mod:`soccer_sim.rcg`).
 
+``--engine rcssserver`` plays the match in the real RoboCup 2D server instead
+(:mod:`experiments.commands.play_rcss`; ``--rcss-home``, ``--rcss-logs``).
+
 ``--cycles`` up to a regulation match (2 x 3000 cycles) stops the match early; a longer count
 lengthens both halves to half of it each (half time stays in the middle).
 
@@ -63,10 +66,24 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--match-timeout", type=ranged("match-timeout"), default=DEFAULT_MATCH_TIMEOUT, metavar="SECONDS",
                         help=f"stop the match with an error if it takes longer, e.g. a team that never returns "
                              f"from act() (default: {DEFAULT_MATCH_TIMEOUT:g}, as for tournaments)")
+    parser.add_argument("--engine", choices=("simulator", "rcssserver"), default="simulator",
+                        help="where the match is played: soccer-sim's simulator (default) or the real RoboCup 2D "
+                             "server from the reference kit's build (our teams play through the bridge under "
+                             "partial observation; a team may also be helios-base)")
+    parser.add_argument("--rcss-home", default=None, metavar="DIR",
+                        help="with --engine rcssserver: the kit's build (default: $RCSS_HOME, else "
+                             "~/.cache/rcss-reference)")
+    parser.add_argument("--rcss-logs", default=None, metavar="DIR",
+                        help="with --engine rcssserver: also keep the server's game and text logs and every "
+                             "process's output in DIR")
     parser.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
+    if getattr(args, "engine", "simulator") == "rcssserver":
+        from experiments.commands.play_rcss import run_rcss
+
+        return run_rcss(args)
     import contextlib
     import json
     import sys
@@ -104,6 +121,8 @@ def run(args: argparse.Namespace) -> int:
         return _fail(_stopped_line(failed.error), 1)
     except (TeamNotFoundError, ConfigError, ValueError, ReplayError, RcgError, RunInputError) as exc:  # bad input
         return _fail(str(exc), 2)
+    from experiments.commands.report_printing import print_report, report_console
+
     report, elapsed = record.report, record.wall_time
     try:
         if args.json:
@@ -112,8 +131,8 @@ def run(args: argparse.Namespace) -> int:
                 data.update(scenario=report.scenario, end_reason=report.end_reason)
             print(json.dumps(data, indent=2))
         else:
-            console = _report_console()
-            _print_report(console, report, elapsed)
+            console = report_console()
+            print_report(console, report, elapsed)
             if scenario is not None:
                 console.print(f"scenario {escape(report.scenario)}: ended by {report.end_reason} after "
                               f"{report.cycles} cycles")
@@ -150,66 +169,3 @@ def _fail(message: str, status: int) -> int:
     from experiments.commands.errors import fail
 
     return fail(message, status)
-
-
-def _report_console():
-    """A rich console for the report that lets a closed stdout raise BrokenPipeError (rich's
-    own handling would exit with status 1 where ``--json`` exits with 0)."""
-    from rich.console import Console
-
-    class ReportConsole(Console):
-        def on_broken_pipe(self) -> None:
-            self.quiet = True
-            raise BrokenPipeError
-
-    return ReportConsole()
-
-
-def _print_report(console, report, elapsed: float) -> None:
-    """The report as a person reads it: the score line, then the goals and the statistics as
-    :class:`~experiments.reporting.Table` (drawn on a terminal, plain tab-separated text when
-    piped, as every table of the command line; team names escaped in the score line: rich would
-    take [..] for markup)."""
-    from rich.markup import escape
-
-    from experiments.match_report import SIDES
-    from experiments.reporting import Table
-
-    names = list(report.team_names)
-    half = report.half_time_score
-    half_text = f"half time {half[0]} - {half[1]}" if half is not None else "stopped before half time"
-    console.print(f"[bold]{escape(names[0])} {report.score[0]} - {report.score[1]} {escape(names[1])}[/bold]  "
-                  f"({half_text}; seed {report.seed}, {report.cycles} cycles, {elapsed:.2f} s)")
-    if report.goals:
-        goals = Table("Goals", ["cycle", "team", "scorer (shirt)", "score"], labels=0)
-        score = [0, 0]
-        for goal in report.goals:
-            score[goal.team] += 1
-            shirt = "-" if goal.shirt is None else f"#{goal.shirt}"
-            if goal.own_goal:
-                shirt = f"own goal by {SIDES[1 - goal.team]} {shirt}"
-            goals.rows.append([str(goal.cycle), f"{names[goal.team]} ({SIDES[goal.team]})", shirt,
-                               f"{score[0]} - {score[1]}"])
-        goals.print(console)
-    table = Table("Statistics", ["", f"{names[0]} (home)", f"{names[1]} (away)"])
-    home, away = report.statistics
-    for key in list(home) + [k for k in away if k not in home]:
-        table.rows.append([key.replace("_", " "), _format(key, home.get(key)), _format(key, away.get(key))])
-    for key in report.set_plays[0]:
-        table.rows.append([key.replace("_", " ") + "s", str(report.set_plays[0][key]), str(report.set_plays[1][key])])
-    table.rows.append(["offsides", str(report.offsides[0]), str(report.offsides[1])])
-    table.print(console)
-    if report.drop_balls:
-        console.print(f"{report.drop_balls} set play(s) not taken in time: ball dropped")
-
-
-def _format(key: str, value: float | None) -> str:
-    if value is None:
-        return "-"
-    if key == "possession":
-        return f"{100 * value:.1f} %"
-    if key == "distance_run":
-        return f"{value / 1000:.2f} km"
-    if float(value).is_integer():
-        return str(int(value))
-    return f"{value:.3g}"

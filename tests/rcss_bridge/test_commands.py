@@ -364,6 +364,20 @@ def test_a_bad_neck_turn_is_a_command_error(translator, turns, message):
         translator.translate(command(turn_neck=turns), bodies(ball=(0.0, 5.0)), "play_on")
 
 
+def test_the_neck_follows_a_belief_only_while_the_ball_was_seen_lately(translator):
+    """A ball believed at 60 degrees: followed for BALL_LOOK_STEPS steps after the player last
+    saw it, then the neck looks around (to the other end of its range) until it sees it."""
+    from rcss_bridge.commands import BALL_LOOK_STEPS
+
+    rules = translator.rules
+    for unseen, expected in ((0, 60.0), (BALL_LOOK_STEPS, 60.0), (BALL_LOOK_STEPS + 1, rules.max_neck_angle)):
+        state = bodies(body=0.0, ball=(0.5, 0.5 * math.sqrt(3.0)))
+        state.ball_unseen = np.full(N, unseen)
+        orders = translator.translate(command(dash={5: (0.6, 0.0)}), state, "play_on")  # a dash ahead: no turn
+        turn = dict(body_of(orders[5])).get("turn_neck", [0.0])[0]
+        assert turn == pytest.approx(expected, abs=0.01), unseen
+
+
 # --------------------------------------------------------------------------------- frames
 def test_the_right_sides_commands_are_relative_to_its_real_body():
     """Views of the right-hand player built from its recorded messages (team frame: turned by
