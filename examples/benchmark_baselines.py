@@ -56,6 +56,11 @@ OPPONENT = "static"
 RANDOM_TEAM = "examples.random_team:RandomTeam"
 """The random-actions baseline: uniform actions in the action box (``examples/random_team.py``)."""
 PPO = "ppo-shared"
+MAPPO = "mappo"
+ALGORITHMS = (PPO, MAPPO)
+"""The trained baselines, in the order their runs are planned."""
+CHECKPOINT_SUFFIX = {PPO: ".zip", MAPPO: ".pt"}
+"""A checkpoint's file type: a Stable-Baselines3 model, a torch file of the MAPPO run's state."""
 RANDOM = "random-actions"
 CHUNK_SEED_STRIDE = (1_000_000, 1_000)
 """Training seeds: chunk c of run seed s resets its matches with s * 1,000,000 + c * 1,000 (match
@@ -115,9 +120,12 @@ class RunSpec:
         return f"{self.algorithm}-{self.scenario}-s{self.seed}"
 
 
-def plan(scenarios: Sequence[str] = SCENARIOS, seeds: Sequence[int] = SEEDS) -> list[RunSpec]:
-    """The runs in the order they are trained: every seed of a scenario before the next scenario."""
-    return [RunSpec(PPO, scenario, seed) for scenario in scenarios for seed in seeds]
+def plan(scenarios: Sequence[str] = SCENARIOS, seeds: Sequence[int] = SEEDS,
+         algorithms: Sequence[str] = ALGORITHMS) -> list[RunSpec]:
+    """The runs in the order they are trained: every run of an algorithm before the next
+    algorithm's, every seed of a scenario before the next scenario."""
+    return [RunSpec(algorithm, scenario, seed) for algorithm in algorithms for scenario in scenarios
+            for seed in seeds]
 
 
 def checkpoint_targets(budget: int, every: int) -> list[int]:
@@ -137,14 +145,14 @@ CHECKPOINTS = "checkpoints"
 CHECKPOINT_PREFIX = "steps-"
 
 
-def checkpoint_path(run_dir: Path, env_steps: int) -> Path:
-    return run_dir / CHECKPOINTS / f"{CHECKPOINT_PREFIX}{env_steps:09d}.zip"
+def checkpoint_path(run_dir: Path, env_steps: int, algorithm: str = PPO) -> Path:
+    return run_dir / CHECKPOINTS / f"{CHECKPOINT_PREFIX}{env_steps:09d}{CHECKPOINT_SUFFIX[algorithm]}"
 
 
-def checkpoints(run_dir: Path) -> list[tuple[int, Path]]:
+def checkpoints(run_dir: Path, algorithm: str = PPO) -> list[tuple[int, Path]]:
     """The run's saved checkpoints, (environment steps, file), fewest steps first."""
     found = []
-    for path in (run_dir / CHECKPOINTS).glob(f"{CHECKPOINT_PREFIX}*.zip"):
+    for path in (run_dir / CHECKPOINTS).glob(f"{CHECKPOINT_PREFIX}*{CHECKPOINT_SUFFIX[algorithm]}"):
         digits = path.stem[len(CHECKPOINT_PREFIX):]
         if digits.isdigit():
             found.append((int(digits), path))
@@ -179,7 +187,7 @@ def run_status(spec: RunSpec, out: Path, budget: int) -> RunStatus:
     (its last checkpoint below the budget), trained (at the budget, not yet evaluated) or
     finished (that checkpoint evaluated)."""
     run_dir = spec.directory(out)
-    saved = checkpoints(run_dir)
+    saved = checkpoints(run_dir, spec.algorithm)
     if not saved:
         return RunStatus(spec, "pending", 0, None, 0.0)
     steps, path = saved[-1]
@@ -232,9 +240,19 @@ def check_settings(run_dir: Path, settings: Settings) -> None:
 
 
 # ----------------------------------------------------------------------------- evaluation
-def checkpoint_team(spec: RunSpec, checkpoint: Path) -> str:
-    """The checkpoint team name ``soccer-sim evaluate`` loads the run's policy by (docs/env.md)."""
-    return f"checkpoint:sb3:{checkpoint.resolve()}?scenario={spec.scenario}&name={spec.name}"
+def policy_file(spec: RunSpec, run_dir: Path, env_steps: int) -> Path:
+    """The file of the run's policy at ``env_steps`` that the evaluation loads: the PPO checkpoint
+    itself; MAPPO's actor saved whole beside its training state."""
+    if spec.algorithm == MAPPO:
+        return run_dir / "policies" / f"{CHECKPOINT_PREFIX}{env_steps:09d}.pt"
+    return checkpoint_path(run_dir, env_steps, spec.algorithm)
+
+
+def checkpoint_team(spec: RunSpec, policy: Path) -> str:
+    """The checkpoint team name ``soccer-sim evaluate`` loads the run's policy by (docs/env.md):
+    ``sb3`` for PPO, ``torchrl`` for MAPPO's actor."""
+    kind = "torchrl" if spec.algorithm == MAPPO else "sb3"
+    return f"checkpoint:{kind}:{policy.resolve()}?scenario={spec.scenario}&name={spec.name}"
 
 
 def evaluation_command(team: str, scenario: str, directory: Path, episodes: int) -> list[str]:
@@ -282,6 +300,16 @@ def settings_for(spec: RunSpec, args: argparse.Namespace) -> Settings:
                     checkpoint_every=args.checkpoint_every)
 
 
+def trainer(algorithm: str):
+    """The ``train(settings, run_dir, budget)`` of ``algorithm``, imported only when a run trains
+    (torch, and TorchRL for MAPPO)."""
+    if algorithm == MAPPO:
+        from examples.benchmark_mappo import train
+    else:
+        from examples.benchmark_training import train
+    return train
+
+
 def run(args: argparse.Namespace) -> int:
     """Random baselines, then every planned run to the budget and its evaluation (module docstring)."""
     failed = []
@@ -294,19 +322,18 @@ def run(args: argparse.Namespace) -> int:
                 except BenchmarkError as exc:
                     print(f"error: {exc}", flush=True)
                     failed.append(f"{RANDOM} on {scenario}")
-        for spec in plan(args.scenarios, args.seeds):
+        for spec in plan(args.scenarios, args.seeds, args.algorithms):
             status = run_status(spec, args.out, args.budget)
             if status.state == "finished":
                 print(f"{spec.name}: finished at {status.env_steps} steps", flush=True)
                 continue
+            run_dir = spec.directory(args.out)
             try:
                 if status.state in ("pending", "training"):
-                    from examples.benchmark_training import train  # torch: only when training
-
-                    train(settings_for(spec, args), spec.directory(args.out), args.budget)
+                    trainer(spec.algorithm)(settings_for(spec, args), run_dir, args.budget)
                     status = run_status(spec, args.out, args.budget)
-                evaluate(checkpoint_team(spec, status.checkpoint), spec.scenario,
-                         evaluation_dir(spec.directory(args.out), status.env_steps), args.episodes)
+                evaluate(checkpoint_team(spec, policy_file(spec, run_dir, status.env_steps)), spec.scenario,
+                         evaluation_dir(run_dir, status.env_steps), args.episodes)
             except BenchmarkError as exc:
                 print(f"error: {exc}", flush=True)
                 failed.append(spec.name)
@@ -318,25 +345,26 @@ def run(args: argparse.Namespace) -> int:
 
 
 def rates(statuses: Sequence[RunStatus]) -> dict[str, float]:
-    """Environment steps per second of training measured so far, per scenario (over its runs'
-    checkpoints)."""
-    steps: dict[str, float] = {}
-    seconds: dict[str, float] = {}
+    """Environment steps per second of training measured so far, per algorithm and scenario
+    (over their runs' checkpoints)."""
+    steps: dict[tuple[str, str], float] = {}
+    seconds: dict[tuple[str, str], float] = {}
     for status in statuses:
         if status.env_steps and status.wall_s > 0:
-            steps[status.spec.scenario] = steps.get(status.spec.scenario, 0) + status.env_steps
-            seconds[status.spec.scenario] = seconds.get(status.spec.scenario, 0.0) + status.wall_s
-    return {scenario: steps[scenario] / seconds[scenario] for scenario in steps}
+            key = (status.spec.algorithm, status.spec.scenario)
+            steps[key] = steps.get(key, 0) + status.env_steps
+            seconds[key] = seconds.get(key, 0.0) + status.wall_s
+    return {key: steps[key] / seconds[key] for key in steps}
 
 
 def status(args: argparse.Namespace) -> int:
     """One line per planned run, and the training wall time left at the speeds measured so far."""
-    statuses = [run_status(spec, args.out, args.budget) for spec in plan(args.scenarios, args.seeds)]
+    statuses = [run_status(spec, args.out, args.budget) for spec in plan(args.scenarios, args.seeds, args.algorithms)]
     measured = rates(statuses)
     left, unknown = 0.0, []
     print(f"{'run':<40} {'state':<9} {'env steps':>10} {'wall':>8}  steps/s")
     for item in statuses:
-        rate = measured.get(item.spec.scenario)
+        rate = measured.get((item.spec.algorithm, item.spec.scenario))
         print(f"{item.spec.name:<40} {item.state:<9} {item.env_steps:>10} {item.wall_s / 60:>6.1f} m  "
               f"{'-' if rate is None else f'{rate:.0f}'}")
         remaining = max(0, args.budget - item.env_steps)
@@ -352,7 +380,7 @@ def status(args: argparse.Namespace) -> int:
 def report(args: argparse.Namespace) -> int:
     from examples.benchmark_report import write_report
 
-    for path in write_report(args.out, args.docs, args.scenarios, args.seeds, args.budget):
+    for path in write_report(args.out, args.docs, args.scenarios, args.seeds, args.budget, args.algorithms):
         print(f"wrote {path}")
     return 0
 
@@ -364,6 +392,8 @@ def parse_args(argv: Sequence[str] | None = None) -> argparse.Namespace:
     parser.add_argument("--out", type=Path, required=True, help="the runs' folder (keep it outside the checkout)")
     parser.add_argument("--scenarios", nargs="+", default=list(SCENARIOS), choices=SCENARIOS, metavar="NAME",
                         help=f"scenarios (default: {' '.join(SCENARIOS)})")
+    parser.add_argument("--algorithms", nargs="+", default=list(ALGORITHMS), choices=ALGORITHMS, metavar="NAME",
+                        help=f"trained baselines (default: {' '.join(ALGORITHMS)})")
     parser.add_argument("--seeds", nargs="+", type=int, default=list(SEEDS), help="run seeds (default: 0 1 2)")
     parser.add_argument("--budget", type=int, default=BUDGET, help="environment steps per run (default: %(default)s)")
     parser.add_argument("--checkpoint-every", type=int, default=CHECKPOINT_EVERY,

@@ -2,15 +2,16 @@
 (``python examples/benchmark_baselines.py report --out DIR``; no torch needed).
 
 * **Table**: per scenario, random actions (one evaluation: Wilson's interval of the goal rate,
-  Student's t interval of the score difference over its episodes) and PPO over the seeds whose
-  run is *finished* (trained to the budget and evaluated): the mean of the runs' goal rates and
-  of their mean score differences with Student's t 95 % interval over seeds (none for a single
-  seed; a goal rate's cut to [0, 1]). Runs not finished are listed with where they stand, never counted. It replaces the part
-  of ``benchmark.md`` between :data:`BEGIN` and :data:`END`.
+  Student's t interval of the score difference over its episodes) and each trained baseline
+  (PPO, MAPPO) over the seeds whose run is *finished* (trained to the budget and evaluated): the
+  mean of the runs' goal rates and of their mean score differences with Student's t 95 %
+  interval over seeds (none for a single seed; a goal rate's cut to [0, 1]). Runs not finished
+  are listed with where they stand, never counted. It replaces the part of ``benchmark.md``
+  between :data:`BEGIN` and :data:`END`.
 * **Curves**: every run's ``curve.csv`` up to its last checkpoint, gathered into
   ``figures/benchmark_curves.csv`` and drawn in ``figures/benchmark_curves.png`` (share of
   training episodes with a goal and mean episode return against environment steps, one line a
-  seed, random actions' evaluated goal rate dashed).
+  run, a colour an algorithm; random actions' evaluated goal rate dashed).
 * ``figures/benchmark_evaluations.csv``: one row per evaluation the table uses.
 """
 
@@ -22,14 +23,17 @@ from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from examples.benchmark_baselines import (CURVE_FIELDS, PPO, RANDOM, BenchmarkError, RunStatus, evaluation_dir, plan,
-                                          read_curve, run_status)
+from examples.benchmark_baselines import (ALGORITHMS, CURVE_FIELDS, MAPPO, PPO, RANDOM, BenchmarkError, RunStatus,
+                                          evaluation_dir, plan, read_curve, run_status)
 from experiments.stats import Estimate, estimate
 
 BEGIN = "<!-- benchmark table: written by examples/benchmark_baselines.py report -->"
 END = "<!-- end of benchmark table -->"
 SMOOTHING = 10
 """Rollouts averaged (weighted by their episodes) in each point of the drawn curves."""
+COLOURS = {PPO: "tab:blue", MAPPO: "tab:orange"}
+LINES = ("-", "--", ":")
+"""Line styles of the seeds (seed modulo 3)."""
 
 
 @dataclass(frozen=True)
@@ -79,7 +83,8 @@ class Baselines:
     unfinished: list[RunStatus]
 
 
-def aggregate(out: Path, scenarios: Sequence[str], seeds: Sequence[int], budget: int) -> Baselines:
+def aggregate(out: Path, scenarios: Sequence[str], seeds: Sequence[int], budget: int,
+              algorithms: Sequence[str] = ALGORITHMS) -> Baselines:
     """The table's rows and the runs not finished (see the module docstring)."""
     rows, unfinished = [], []
     for scenario in scenarios:
@@ -87,19 +92,20 @@ def aggregate(out: Path, scenarios: Sequence[str], seeds: Sequence[int], budget:
         if baseline is not None:
             rows.append(TableRow(scenario, RANDOM, None, 1, baseline.goal_rate, baseline.score_difference,
                                  interval=f"{baseline.episodes} episodes"))
-        finished = []
-        for spec in plan([scenario], seeds):
-            status = run_status(spec, out, budget)
-            result = read_evaluation(evaluation_dir(spec.directory(out), status.env_steps)) \
-                if status.state == "finished" else None
-            if result is None:
-                unfinished.append(status)
-            else:
-                finished.append(result)
-        if finished:
-            rates = [result.goal_rate.mean for result in finished]
-            rows.append(TableRow(scenario, PPO, budget, len(finished), share_estimate(rates),
-                                 estimate(result.score_difference.mean for result in finished), tuple(rates)))
+        for algorithm in algorithms:
+            finished = []
+            for spec in plan([scenario], seeds, [algorithm]):
+                status = run_status(spec, out, budget)
+                result = read_evaluation(evaluation_dir(spec.directory(out), status.env_steps)) \
+                    if status.state == "finished" else None
+                if result is None:
+                    unfinished.append(status)
+                else:
+                    finished.append(result)
+            if finished:
+                rates = [result.goal_rate.mean for result in finished]
+                rows.append(TableRow(scenario, algorithm, budget, len(finished), share_estimate(rates),
+                                     estimate(result.score_difference.mean for result in finished), tuple(rates)))
     return Baselines(rows, unfinished)
 
 
@@ -160,10 +166,11 @@ def replace_table(document: str, table: str) -> str:
     return document[:start + len(BEGIN)] + "\n" + table + document[end:]
 
 
-def curve_rows(out: Path, scenarios: Sequence[str], seeds: Sequence[int], budget: int) -> list[dict]:
+def curve_rows(out: Path, scenarios: Sequence[str], seeds: Sequence[int], budget: int,
+               algorithms: Sequence[str] = ALGORITHMS) -> list[dict]:
     """Every run's curve up to its last checkpoint, with its algorithm, scenario and seed."""
     rows = []
-    for spec in plan(scenarios, seeds):
+    for spec in plan(scenarios, seeds, algorithms):
         status = run_status(spec, out, budget)
         for row in read_curve(spec.directory(out) / "curve.csv", status.env_steps):
             rows.append({"algorithm": spec.algorithm, "scenario": spec.scenario, "seed": spec.seed, **row})
@@ -196,11 +203,13 @@ def draw(rows: Sequence[dict], randoms: dict[str, float], scenarios: Sequence[st
     for column, scenario in enumerate(scenarios):
         top, bottom = axes[0][column], axes[1][column]
         mine = [row for row in rows if row["scenario"] == scenario]
-        for seed in sorted({row["seed"] for row in mine}):
-            run = [row for row in mine if row["seed"] == seed]
+        for (algorithm, seed) in sorted({(row["algorithm"], row["seed"]) for row in mine}):
+            run = [row for row in mine if (row["algorithm"], row["seed"]) == (algorithm, seed)]
+            style = {"color": COLOURS.get(algorithm, "black"), "linestyle": LINES[seed % len(LINES)], "linewidth": 1}
             args = ([row["env_steps"] for row in run], [row["episodes"] for row in run])
-            top.plot(*smoothed(args[0], [row["goal_rate"] for row in run], args[1], SMOOTHING), label=f"seed {seed}")
-            bottom.plot(*smoothed(args[0], [row["mean_return"] for row in run], args[1], SMOOTHING))
+            top.plot(*smoothed(args[0], [row["goal_rate"] for row in run], args[1], SMOOTHING),
+                     label=f"{algorithm} seed {seed}", **style)
+            bottom.plot(*smoothed(args[0], [row["mean_return"] for row in run], args[1], SMOOTHING), **style)
         if scenario in randoms:
             top.axhline(randoms[scenario], color="grey", linestyle="--", label="random (evaluated)")
         if not mine:
@@ -216,7 +225,7 @@ def draw(rows: Sequence[dict], randoms: dict[str, float], scenarios: Sequence[st
             bottom.set_ylabel("mean episode return")
         if top.get_legend_handles_labels()[0]:
             top.legend(fontsize=7)
-    figure.suptitle(f"PPO, shared policy (Stable-Baselines3 + SuperSuit), {SMOOTHING} rollouts a point")
+    figure.suptitle(f"Training curves, {SMOOTHING} rollouts a point")
     figure.tight_layout()
     write_file(path, lambda temporary: figure.savefig(temporary, dpi=90, format="png"))
     plt.close(figure)
@@ -232,15 +241,16 @@ def write_csv(path: Path, header: Sequence[str], rows: Sequence[dict]) -> Path:
     return path
 
 
-def evaluation_rows(out: Path, scenarios: Sequence[str], seeds: Sequence[int], budget: int) -> list[dict]:
+def evaluation_rows(out: Path, scenarios: Sequence[str], seeds: Sequence[int], budget: int,
+                    algorithms: Sequence[str] = ALGORITHMS) -> list[dict]:
     """One row per finished evaluation (random actions and the finished runs)."""
     rows = []
     for scenario in scenarios:
         found = [(RANDOM, "", "", evaluation_dir(out / RANDOM / scenario))]
-        for spec in plan([scenario], seeds):
+        for spec in plan([scenario], seeds, algorithms):
             status = run_status(spec, out, budget)
             if status.state == "finished":
-                found.append((PPO, spec.seed, status.env_steps, evaluation_dir(spec.directory(out), status.env_steps)))
+                found.append((spec.algorithm, spec.seed, status.env_steps, evaluation_dir(spec.directory(out), status.env_steps)))
         for policy, seed, steps, directory in found:
             result = read_evaluation(directory)
             if result is not None:
@@ -257,7 +267,8 @@ EVALUATION_FIELDS = ("policy", "scenario", "seed", "env_steps", "episodes", "goa
                      "goal_rate_high", "mean_score_diff", "score_diff_low", "score_diff_high")
 
 
-def write_report(out: Path, docs: Path, scenarios: Sequence[str], seeds: Sequence[int], budget: int) -> list[Path]:
+def write_report(out: Path, docs: Path, scenarios: Sequence[str], seeds: Sequence[int], budget: int,
+                 algorithms: Sequence[str] = ALGORITHMS) -> list[Path]:
     """The table in ``docs/benchmark.md``, the curves and the evaluations in ``docs/figures``."""
     from experiments.results.files import text_output
 
@@ -266,14 +277,14 @@ def write_report(out: Path, docs: Path, scenarios: Sequence[str], seeds: Sequenc
         raise BenchmarkError(f"{document} does not exist: give --docs the folder holding benchmark.md")
     if not out.is_dir():
         raise BenchmarkError(f"{out} does not exist: give --out the runs' folder of benchmark_baselines.py run")
-    baselines = aggregate(out, scenarios, seeds, budget)
+    baselines = aggregate(out, scenarios, seeds, budget, algorithms)
     updated = replace_table(document.read_text(), markdown(baselines, budget))
     figures = docs / "figures"
-    curves = curve_rows(out, scenarios, seeds, budget)
+    curves = curve_rows(out, scenarios, seeds, budget, algorithms)
     randoms = {row.scenario: row.goal_rate.mean for row in baselines.rows if row.policy == RANDOM}
     written = [write_csv(figures / "benchmark_curves.csv", ["algorithm", "scenario", "seed", *CURVE_FIELDS], curves),
                write_csv(figures / "benchmark_evaluations.csv", EVALUATION_FIELDS,
-                         evaluation_rows(out, scenarios, seeds, budget))]
+                         evaluation_rows(out, scenarios, seeds, budget, algorithms))]
     draw(curves, randoms, scenarios, budget, figures / "benchmark_curves.png")
     written.append(figures / "benchmark_curves.png")
     with text_output(document) as handle:

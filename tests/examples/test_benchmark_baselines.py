@@ -6,10 +6,9 @@ from __future__ import annotations
 
 import csv
 import math
-import sys
-import types
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from examples import benchmark_baselines as bb
@@ -47,12 +46,14 @@ def write_run(out: Path, scenario: str, seed: int, steps: list[int], wall_per_st
 
 
 # ----------------------------------------------------------------------------- plan and states
-def test_the_plan_trains_every_seed_of_a_scenario_before_the_next() -> None:
+def test_the_plan_trains_every_seed_of_a_scenario_before_the_next_and_ppo_first() -> None:
     runs = bb.plan()
     assert [(r.scenario, r.seed) for r in runs[:4]] == [("empty-goal", 0), ("empty-goal", 1), ("empty-goal", 2),
                                                          ("run-to-score-with-keeper", 0)]
-    assert len(runs) == len(bb.SCENARIOS) * len(bb.SEEDS) and {r.algorithm for r in runs} == {bb.PPO}
+    per_algorithm = len(bb.SCENARIOS) * len(bb.SEEDS)
+    assert [r.algorithm for r in runs] == [bb.PPO] * per_algorithm + [bb.MAPPO] * per_algorithm
     assert runs[0].directory(Path("o")) == Path("o/ppo-shared/empty-goal/seed-0")
+    assert runs[per_algorithm].directory(Path("o")) == Path("o/mappo/empty-goal/seed-0")
 
 
 def test_checkpoints_fall_every_interval_and_on_the_budget() -> None:
@@ -80,6 +81,21 @@ def test_a_runs_state_follows_its_files(tmp_path) -> None:
     write_evaluation(bb.evaluation_dir(run_dir, 501_760), 0.9, 0.8, 0.95, 0.9)
     assert bb.run_status(spec, tmp_path, BUDGET).state == "finished"
     assert bb.run_status(spec, tmp_path, 1_000_000).state == "training"  # a larger budget continues it
+
+
+def test_a_mappo_run_is_found_by_its_own_checkpoints_and_evaluated_through_torchrl(tmp_path) -> None:
+    spec = bb.RunSpec(bb.MAPPO, "3-vs-1-with-keeper", 0)
+    run_dir = spec.directory(tmp_path)
+    write_run(tmp_path, "empty-goal", 0, [51_200])  # a PPO run's .zip beside it changes nothing
+    (run_dir / bb.CHECKPOINTS).mkdir(parents=True)
+    bb.checkpoint_path(run_dir, 501_760).with_suffix(".zip").write_bytes(b"not mappo's")
+    assert bb.run_status(spec, tmp_path, BUDGET).state == "pending"
+    bb.checkpoint_path(run_dir, 501_760, bb.MAPPO).write_bytes(b"stand-in")
+    status = bb.run_status(spec, tmp_path, BUDGET)
+    assert (status.state, status.checkpoint.name) == ("trained", "steps-000501760.pt")
+    policy = bb.policy_file(spec, run_dir, 501_760)
+    assert policy == run_dir / "policies" / "steps-000501760.pt"
+    assert bb.checkpoint_team(spec, policy).startswith(f"checkpoint:torchrl:{policy}?scenario=3-vs-1-with-keeper&")
 
 
 def test_the_curve_ends_at_the_last_checkpoint(tmp_path) -> None:
@@ -140,8 +156,8 @@ def test_a_rerun_skips_finished_runs_evaluates_trained_ones_and_continues_the_re
         bb.checkpoint_path(run_dir, 501_760).write_bytes(b"stand-in")
 
     monkeypatch.setattr(bb, "evaluate", stand_in_evaluate)
-    monkeypatch.setitem(sys.modules, "examples.benchmark_training", types.SimpleNamespace(train=stand_in_train))
-    args = bb.parse_args(["run", "--out", str(out), "--scenarios", scenario])
+    monkeypatch.setattr(bb, "trainer", lambda algorithm: stand_in_train)
+    args = bb.parse_args(["run", "--out", str(out), "--scenarios", scenario, "--algorithms", bb.PPO])
     assert bb.run(args) == 0
     assert trained == [(2, BUDGET, 51_200)]                 # only the interrupted run trains, from its checkpoint
     assert [name for _, name in evaluated] == ["evaluation-000501760"] * 2   # seeds 1 and 2, not the random one
@@ -160,8 +176,7 @@ def test_a_failed_evaluation_is_reported_and_the_others_still_run(tmp_path, monk
         raise bb.BenchmarkError(f"soccer-sim evaluate of {team} on {scenario} failed (exit status 2)")
 
     monkeypatch.setattr(bb, "evaluate", failing)
-    monkeypatch.setitem(sys.modules, "examples.benchmark_training",
-                        types.SimpleNamespace(train=lambda *a: pytest.fail("no run is planned")))
+    monkeypatch.setattr(bb, "trainer", lambda algorithm: pytest.fail("no run is planned"))
     args = bb.parse_args(["run", "--out", str(out), "--scenarios", "empty-goal", "counter-attack"])
     args.seeds = []  # the random baselines alone
     assert bb.run(args) == 1
@@ -171,7 +186,8 @@ def test_a_failed_evaluation_is_reported_and_the_others_still_run(tmp_path, monk
 
 def test_status_shows_each_run_and_the_time_left_at_the_measured_speed(tmp_path, capsys) -> None:
     write_run(tmp_path, "empty-goal", 0, [250_000], wall_per_step=0.001)  # 250 s for 250,000 steps
-    assert bb.main(["status", "--out", str(tmp_path), "--scenarios", "empty-goal", "counter-attack"]) == 0
+    assert bb.main(["status", "--out", str(tmp_path), "--scenarios", "empty-goal", "counter-attack",
+                    "--algorithms", bb.PPO]) == 0
     printed = capsys.readouterr().out
     assert "ppo-shared-empty-goal-s0" in printed and "training" in printed and "1000" in printed
     # 250,000 + 2 x 500,000 steps left at 1,000 steps/s; counter-attack not measured yet
@@ -205,7 +221,7 @@ def finished_folder(out: Path) -> None:
 def test_the_table_averages_the_finished_seeds_and_lists_the_others(tmp_path) -> None:
     finished_folder(tmp_path)
     scenarios = ["empty-goal", "run-to-score-with-keeper"]
-    baselines = br.aggregate(tmp_path, scenarios, bb.SEEDS, BUDGET)
+    baselines = br.aggregate(tmp_path, scenarios, bb.SEEDS, BUDGET, [bb.PPO])
     rows = {(row.scenario, row.policy): row for row in baselines.rows}
     ppo = rows[("empty-goal", bb.PPO)]
     assert ppo.runs == 3 and ppo.per_seed == (0.9, 0.8, 1.0)
@@ -245,6 +261,7 @@ def test_the_report_rewrites_only_the_marked_part_of_benchmark_md(tmp_path) -> N
     assert text.startswith("# Benchmark\n\nbefore\n\n" + br.BEGIN + "\n| scenario |") and text.endswith(
         br.END + "\n\nafter\n")
     assert "old table" not in text and "- ppo-shared-counter-attack-s2: pending, 0 of 500,000" in text
+    assert "- mappo-empty-goal-s0: pending, 0 of 500,000" in text
     with open(docs / "figures" / "benchmark_curves.csv") as handle:
         curves = list(csv.DictReader(handle))
     assert {(row["scenario"], row["seed"]) for row in curves} == {("empty-goal", "0"), ("empty-goal", "1"),
@@ -299,3 +316,30 @@ def test_a_resumed_run_trains_exactly_as_an_uninterrupted_one(tmp_path) -> None:
     assert strip == [{k: v for k, v in row.items() if k != "wall_s"}
                      for row in bb.read_curve(tmp_path / "parts/curve.csv")]
     assert [row["env_steps"] for row in bb.read_curve(tmp_path / "whole/curve.csv")] == [128, 256]
+
+
+@pytest.mark.slow
+def test_a_resumed_mappo_run_trains_exactly_as_an_uninterrupted_one(tmp_path) -> None:
+    pytest.importorskip("torchrl")
+    import torch
+
+    from examples.benchmark_mappo import policy_path, train
+    from soccer_sim.env.checkpoints import load_policy
+
+    settings = bb.Settings("3-vs-1-with-keeper", seed=1, matches=2, n_steps=64, batch_size=64, checkpoint_every=128)
+    assert train(settings, tmp_path / "whole", 256) == 256
+    assert train(settings, tmp_path / "parts", 128) == 128
+    assert train(settings, tmp_path / "parts", 256) == 256
+    whole, parts = (torch.load(bb.checkpoint_path(tmp_path / run, 256, bb.MAPPO), weights_only=True)
+                    for run in ("whole", "parts"))
+    for part in ("actor", "critic"):
+        assert all(torch.equal(whole[part][key], parts[part][key]) for key in whole[part])
+    strip = [{k: v for k, v in row.items() if k != "wall_s"} for row in bb.read_curve(tmp_path / "whole/curve.csv")]
+    assert strip == [{k: v for k, v in row.items() if k != "wall_s"}
+                     for row in bb.read_curve(tmp_path / "parts/curve.csv")]
+    policy = load_policy("torchrl", policy_path(tmp_path / "whole", 256))  # as soccer-sim evaluate loads it
+    from soccer_sim.env import parallel_env
+
+    size = parallel_env(scenario="3-vs-1-with-keeper", controlled="left").observation_space("left_0").shape[0]
+    actions = policy.act_batch(np.zeros((3, size), dtype=np.float32))
+    assert actions.shape == (3, 5) and np.all(np.abs(actions) <= 1.0)
