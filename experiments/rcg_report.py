@@ -33,14 +33,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from experiments.benchmarks.soccer_cycles import CycleFigures
-from experiments.benchmarks.soccer_plays import PlayFigures
+from experiments.benchmarks.rcg_walk import CATCH, KEYS, KICK, TACKLE_COUNT, TEAM, log_figures, walk_shows
 from experiments.match_report import SET_PLAY_KINDS, Goal, MatchReport
 from rcss_bridge.play_modes import MODE_MAP, other
 from soccer_sim.analysis.possession import Possession
 from soccer_sim.config import STANDARD_FIELD
 from soccer_sim.rcg import GameLog
-from soccer_sim.rcg.mapping import BALL_COLLIDE, GOALIE, MAX_PLAYER, RED_CARD, STAND, TACKLE, TACKLE_FAULT, YELLOW_CARD
+from soccer_sim.rcg.mapping import MAX_PLAYER, RED_CARD, YELLOW_CARD
 from soccer_sim.state import SET_PLAYS, PlayMode
 
 SIDE_TEAM = {"l": 0, "r": 1}
@@ -50,8 +49,6 @@ FOULS = frozenset({"foul_charge", "foul_push", "foul_multiple_attack", "foul_bal
                    "free_kick_fault", "catch_fault", "illegal_defense"})
 """Play modes (without the side) that call a foul or a fault on the side they name."""
 
-_KICK, _CATCH, _TACKLE = 0, 3, 8
-"""Indices of the kick, catch and tackle counters in a player's ``(c ...)``."""
 
 NOT_IN_A_LOG = ("teammate_contacts", "ignored_commands")
 """Statistics of the simulator's report that a game log cannot give."""
@@ -60,82 +57,47 @@ NOT_IN_A_LOG = ("teammate_contacts", "ignored_commands")
 def rcg_match_report(log: GameLog, team_names: tuple[str, str], seed: int) -> MatchReport:
     """The report of the match in ``log``; ``team_names``: (left, right) as the report names
     them. A ValueError for a log without show lines or the server parameters it needs."""
-    if not log.shows:
-        raise ValueError("the game log has no show lines")
+    cycles, plays = log_figures(log, STANDARD_FIELD.half_length)
     params = log.server_params
     try:
         half_cycles = int(round(float(params["half_time"]) * 1000.0 / float(params.get("simulator_step", 100))))
-        relocation = 3.0 * float(params["player_speed_max"])
-        threshold = float(params["recover_dec_thr"]) * float(params["stamina_max"])
-        plays = PlayFigures(np.repeat([0, 1], MAX_PLAYER), STANDARD_FIELD.half_length, float(params["goal_width"]),
-                            float(params["ball_size"]), float(params["ball_decay"]))
     except (KeyError, ValueError) as exc:
         raise ValueError(f"the game log's server_param line lacks a number for {exc}") from None
-    keys = [(side, unum) for side in "lr" for unum in range(1, MAX_PLAYER + 1)]
-    index = {key: i for i, key in enumerate(keys)}
-    team = np.repeat([0, 1], MAX_PLAYER)
-    cycles = CycleFigures(team, relocation, threshold)
     possession = Possession(MAX_PLAYER)
-    modes = sorted(log.play_modes, key=lambda m: m[0])
     kicks, tackles, won = [0, 0], [0, 0], [0, 0]
     catches: set[tuple[str, int]] = set()
-    cards = {YELLOW_CARD: set(), RED_CARD: set()}
-    pos = np.zeros((len(keys), 2))
-    stamina = np.full(len(keys), np.inf)
-    outfield = np.zeros(len(keys), dtype=bool)
-    previous = np.zeros((len(keys), 3), dtype=np.int64)
+    cards: dict[int, set[int]] = {YELLOW_CARD: set(), RED_CARD: set()}
     last_on_ball = -1
     last_before: list[tuple[int, int]] = []  # (cycle, row of the last player on the ball after it)
-    next_mode, mode = 0, ""
-    for number, show in enumerate(log.shows):
-        while next_mode < len(modes) and modes[next_mode][0] <= show.cycle:
-            mode = modes[next_mode][1]
-            next_mode += 1
-            if mode.startswith(("kick_off_", "before_kick_off")):
-                last_on_ball = -1  # a kick-off forgets who had the ball
-        now = previous.copy()
-        touched, won_rows = [], []
-        outfield[:] = False
-        for p in show.players:
-            i = index[(p.side, p.unum)]
-            pos[i] = p.x, p.y
-            stamina[i] = p.stamina
-            outfield[i] = bool(p.state & STAND) and not p.state & GOALIE
-            now[i] = p.counts[_KICK], p.counts[_CATCH], p.counts[_TACKLE]
-            for flag, shown in cards.items():
-                if p.state & flag:
-                    shown.add(i)
-            if p.state & BALL_COLLIDE:
-                touched.append(i)
-            if number and now[i, 2] > previous[i, 2] and p.state & TACKLE and not p.state & TACKLE_FAULT:
-                won_rows.append(i)
-        if number == 0:
-            cycles.start(pos)
-            previous = now
+    for step in walk_shows(log):
+        if any(mode.startswith(("kick_off_", "before_kick_off")) for mode in step.entered):
+            last_on_ball = -1  # a kick-off forgets who had the ball
+        for flag, shown in cards.items():
+            shown.update(np.flatnonzero(step.states & flag).tolist())
+        if step.number == 0:
+            cycles.start(step.pos)
             continue
-        rise = now - previous
-        previous = now
+        rise = step.rise
         for t in (0, 1):
             rows = slice(t * MAX_PLAYER, (t + 1) * MAX_PLAYER)
-            kicks[t] += int(rise[rows, 0].sum())
-            tackles[t] += int(rise[rows, 2].sum())
-        for i in won_rows:
-            won[int(team[i])] += 1
-        for i in np.flatnonzero(rise[:, 1] > 0):
-            catches.add((keys[int(i)][0], show.cycle))
-        played = np.unique(np.concatenate([np.flatnonzero(rise[:, 0] > 0), np.flatnonzero(rise[:, 1] > 0),
-                                           np.array(won_rows, dtype=np.intp), np.array(touched, dtype=np.intp)]))
+            kicks[t] += int(rise[rows, KICK].sum())
+            tackles[t] += int(rise[rows, TACKLE_COUNT].sum())
+        for i in step.won:
+            won[int(TEAM[i])] += 1
+        kicked, caught = np.flatnonzero(rise[:, KICK] > 0), np.flatnonzero(rise[:, CATCH] > 0)
+        catches.update((KEYS[int(i)][0], step.cycle) for i in caught)
+        played = np.unique(np.concatenate([kicked, caught, step.won, step.touched]))
         if played.size:
             last_on_ball = int(played[-1]) if played.size == 1 else int(played[0])
         possession.add(last_on_ball)
-        last_before.append((show.cycle, last_on_ball))
-        play_on = mode == "play_on"
-        cycles.add(pos, np.array(show.ball[:2]), stamina, outfield, play_on)
-        plays.add(np.flatnonzero(rise[:, 0] > 0), np.flatnonzero(rise[:, 1] > 0), np.array(won_rows, dtype=np.intp),
-                  np.array(touched, dtype=np.intp), np.array(show.ball), play_on)
+        last_before.append((step.cycle, last_on_ball))
+        play_on = step.mode == "play_on"
+        cycles.add(step.pos, step.ball[:2], step.stamina, step.outfield, play_on)
+        plays.add(kicked, caught, step.won, step.touched, step.ball, play_on)
+    modes = sorted(log.play_modes, key=lambda m: m[0])
     set_plays, offsides, fouls, drop_balls, goal_cycles = _read_modes(modes, catches)
     score = (log.teams[-1][3], log.teams[-1][4]) if log.teams else (0, 0)
-    goals = _goals(goal_cycles, last_before, keys)
+    goals = _goals(goal_cycles, last_before, KEYS)
     end = log.shows[-1].cycle
     half_time = None
     if end >= half_cycles:
@@ -147,8 +109,8 @@ def rcg_match_report(log: GameLog, team_names: tuple[str, str], seed: int) -> Ma
             "goals": score[t], "shots": plays.team_shots[t], "kicks": kicks[t], "passes": plays.team_passes[t],
             "possession": possession.share(t), "teammate_contacts": None, "distance_run": float(cycles.distance[t]),
             "tackles": tackles[t], "tackles_won": won[t], "fouls": fouls[t],
-            "yellow_cards": sum(1 for i in cards[YELLOW_CARD] if team[i] == t),
-            "red_cards": sum(1 for i in cards[RED_CARD] if team[i] == t), "ignored_commands": None,
+            "yellow_cards": sum(1 for i in cards[YELLOW_CARD] if TEAM[i] == t),
+            "red_cards": sum(1 for i in cards[RED_CARD] if TEAM[i] == t), "ignored_commands": None,
         }
         statistics.append(figures)
     return MatchReport(team_names=tuple(team_names), seed=seed, cycles=end, score=(int(score[0]), int(score[1])),

@@ -38,20 +38,16 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
-from experiments.benchmarks.soccer_cycles import CycleFigures
+from experiments.benchmarks.rcg_walk import CATCH, KEYS, KICK, TACKLE_COUNT, log_figures, walk_shows
 from experiments.benchmarks.soccer_match import COUNTED, place_figures, role_figure
-from experiments.benchmarks.soccer_plays import PlayFigures
 from soccer_sim.config import STANDARD_FIELD
 from soccer_sim.rcg import GameLog
-from soccer_sim.rcg.mapping import BALL_COLLIDE, GOALIE, MAX_PLAYER, STAND, TACKLE, TACKLE_FAULT
 
 NOT_IN_A_LOG = ("shots", "shots ending on a body", "passes", "set-play retakes", "teammate contacts",
                "body commands dropped")
 """Counted figures a game log cannot give (see the module docstring)."""
 HALF_LENGTH = STANDARD_FIELD.half_length
 """Half the length of rcssserver's pitch (m; a constant of the server, not in the log)."""
-_KICK, _CATCH, _TACKLE = 0, 3, 8
-"""Indices of the kick, catch and tackle counters in a player's ``(c ...)``."""
 _MODE_FIGURES = {"corner_kick": "corners", "kick_in": "kick-ins", "goal_kick": "goal kicks",
                  "offside": "offside calls", "foul_charge": "fouls", "free_kick": "free kicks",
                  "indirect_free_kick": "free kicks"}
@@ -65,62 +61,27 @@ def rcg_figures(log: GameLog, labels: Mapping[str, Sequence[str]] | None = None,
     distance run by role; None leaves those figures out. ``groups`` (label -> group, e.g.
     position -> role kind): the distance run by group too. A ValueError for a log with no
     show line or without the server parameters the figures need."""
-    if not log.shows:
-        raise ValueError("the game log has no show lines")
-    params = log.server_params
-    try:
-        relocation = 3.0 * float(params["player_speed_max"])
-        threshold = float(params["recover_dec_thr"]) * float(params["stamina_max"])
-        plays = PlayFigures(np.repeat([0, 1], MAX_PLAYER), HALF_LENGTH, float(params["goal_width"]),
-                            float(params["ball_size"]), float(params["ball_decay"]))
-    except (KeyError, ValueError) as exc:
-        raise ValueError(f"the game log's server_param line lacks a number for {exc}") from None
-    keys = [(side, unum) for side in "lr" for unum in range(1, MAX_PLAYER + 1)]
-    index = {key: i for i, key in enumerate(keys)}
-    team = np.repeat([0, 1], MAX_PLAYER)
+    cycles, plays = log_figures(log, HALF_LENGTH)
     row_labels = None
     if labels is not None:
-        row_labels = [labels[side][unum - 1] for side, unum in keys]
-    cycles = CycleFigures(team, relocation, threshold)
+        row_labels = [labels[side][unum - 1] for side, unum in KEYS]
     counts = dict.fromkeys(COUNTED, 0.0)
-    pos = np.zeros((len(keys), 2))
-    stamina = np.full(len(keys), np.inf)
-    outfield = np.zeros(len(keys), dtype=bool)
-    previous_counts = np.zeros((len(keys), 3), dtype=np.int64)
     catches: set[tuple[str, int]] = set()
+    for step in walk_shows(log):
+        if step.number == 0:
+            cycles.start(step.pos)
+            continue
+        rise = step.rise
+        counts["kicks"] += float(rise[:, KICK].sum())
+        counts["goalkeeper catches"] += float(rise[:, CATCH].sum())
+        counts["tackles"] += float(rise[:, TACKLE_COUNT].sum())
+        counts["tackles won"] += float(step.won.size)
+        catches.update((KEYS[int(i)][0], step.cycle) for i in np.flatnonzero(rise[:, CATCH] > 0))
+        play_on = step.mode == "play_on"
+        cycles.add(step.pos, step.ball[:2], step.stamina, step.outfield, play_on, row_labels)
+        plays.add(np.flatnonzero(rise[:, KICK] > 0), np.flatnonzero(rise[:, CATCH] > 0), step.won, step.touched,
+                  step.ball, play_on)
     modes = sorted(log.play_modes, key=lambda m: m[0])  # file order is cycle order; stable
-    next_mode, mode = 0, ""
-    for number, show in enumerate(log.shows):
-        while next_mode < len(modes) and modes[next_mode][0] <= show.cycle:
-            mode = modes[next_mode][1]
-            next_mode += 1
-        outfield[:] = False
-        now = previous_counts.copy()
-        touched, won = [], []
-        for p in show.players:
-            i = index[(p.side, p.unum)]
-            pos[i] = p.x, p.y
-            stamina[i] = p.stamina
-            outfield[i] = bool(p.state & STAND) and not p.state & GOALIE
-            now[i] = p.counts[_KICK], p.counts[_CATCH], p.counts[_TACKLE]
-            if p.state & BALL_COLLIDE:
-                touched.append(i)
-            if number and now[i, 2] > previous_counts[i, 2] and p.state & TACKLE and not p.state & TACKLE_FAULT:
-                counts["tackles won"] += 1
-                won.append(i)
-            if number and now[i, 1] > previous_counts[i, 1]:
-                catches.add((p.side, show.cycle))
-        if number == 0:
-            cycles.start(pos)
-        else:
-            rise = now - previous_counts
-            counts["kicks"] += float(rise[:, 0].sum())
-            counts["goalkeeper catches"] += float(rise[:, 1].sum())
-            counts["tackles"] += float(rise[:, 2].sum())
-            cycles.add(pos, np.array(show.ball[:2]), stamina, outfield, mode == "play_on", row_labels)
-            plays.add(np.flatnonzero(rise[:, 0] > 0), np.flatnonzero(rise[:, 1] > 0), np.array(won, dtype=np.intp),
-                      np.array(touched, dtype=np.intp), np.array(show.ball), mode == "play_on")
-        previous_counts = now
     _count_modes(modes, catches, counts)
     if log.teams:
         counts["goals"] = float(log.teams[-1][3] + log.teams[-1][4])
