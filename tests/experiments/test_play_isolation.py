@@ -73,15 +73,21 @@ def test_what_a_team_prints_stays_out_of_the_json_report() -> None:
     assert "team says hello" in result.stderr and "team writes to fd 1" in result.stderr
 
 
-def test_ctrl_c_while_the_worker_plays_stops_it_and_exits_130(tmp_path) -> None:
+def test_ctrl_c_while_the_worker_plays_stops_it_and_exits_130(tmp_path, monkeypatch) -> None:
     import signal
 
+    monkeypatch.setenv("PYTHONFAULTHANDLER", "1")  # a play still alive at the bound shows where it is
     player = start_until_in_act([sys.executable, "-m", "experiments.cli", "play", "idle",
                                  SCRIPTED + "MarkingHangingTeam", "--cycles", "40"],
                                 tmp_path / "match-under-way", ROOT, HANG_BOUND)
     try:
         player.send_signal(signal.SIGINT)
-        out, err = player.communicate(timeout=HANG_BOUND)  # ends once play and its worker have ended
+        try:
+            out, err = player.communicate(timeout=HANG_BOUND)  # ends once play and its worker have ended
+        except subprocess.TimeoutExpired:
+            player.send_signal(signal.SIGABRT)  # faulthandler writes every thread's stack to stderr
+            _, err = player.communicate(timeout=60)
+            raise AssertionError(f"play did not end within {HANG_BOUND} s of Ctrl-C; its stacks:\n{err[-6000:]}")
     finally:
         if player.poll() is None:
             player.kill()
