@@ -12,6 +12,16 @@ def outcome(records) -> list[tuple]:
              r.away_stats, r.error, r.forfeit) for r in records]
 
 
+def _ctrl_c_as_at_a_terminal() -> None:
+    """In the child before it runs: SIGINT's default disposition, as a command started at a
+    terminal has it. A test run started in the background (``pytest &`` in a script) ignores
+    SIGINT, every process it starts inherits that, and Python then never turns Ctrl-C into
+    KeyboardInterrupt: a test of what Ctrl-C does would wait for nothing."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def start_until_in_act(argv: list[str], marker, root, bound: float):
     """Start ``argv`` (a subprocess with the project on its path and pipes for its output) whose
     team touches ``marker`` when its worker is inside ``act()`` (:data:`scripted_teams.MARKER_VARIABLE`),
@@ -25,7 +35,8 @@ def start_until_in_act(argv: list[str], marker, root, bound: float):
 
     env = {**os.environ, MARKER_VARIABLE: str(marker),
            "PYTHONPATH": os.pathsep.join([str(root), os.environ.get("PYTHONPATH", "")])}
-    process = subprocess.Popen(argv, cwd=root, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    process = subprocess.Popen(argv, cwd=root, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                               preexec_fn=_ctrl_c_as_at_a_terminal)
     deadline = time.monotonic() + bound
     while not marker.exists():
         if process.poll() is not None or time.monotonic() >= deadline:
