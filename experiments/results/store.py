@@ -353,11 +353,32 @@ def _refusal(path: Path, meta: dict[str, str], tables: list[str], kind: str, con
     if meta["kind"] != kind:
         return f"{path} holds the results of '{meta['kind']}', not '{kind}'; {fresh}"
     if meta.get("config_hash") not in (None, config_hash):
+        stored_engine, this_engine = _engine(meta.get("config", "")), _engine(config)
+        if stored_engine != this_engine:
+            return (f"{path} holds matches played in {_engine_text(stored_engine)}, and this run plays in "
+                    f"{_engine_text(this_engine)}; one results file never mixes engines: use another results file, "
+                    f"or resume it with --engine {stored_engine}")
         stored, this = _difference(meta.get("config", ""), config)
         return (f"{path} holds results of a different match configuration (hash {meta['config_hash']}{stored}; "
                 f"this run: hash {config_hash}{this}; e.g. another number of cycles); results of different "
                 f"configurations are never mixed; {fresh}")
     return None
+
+
+def _engine(description: str) -> str:
+    """The engine a configuration description names (its ``engine``; ``simulator`` when it
+    names none, as every description of the simulator's matches: see
+    :func:`experiments.runner.spec.config_description`)."""
+    try:
+        described = json.loads(description)
+    except (ValueError, TypeError):
+        return "simulator"
+    engine = described.get("engine") if isinstance(described, dict) else None
+    return "simulator" if engine is None else str(engine)
+
+
+def _engine_text(engine: str) -> str:
+    return "the simulator" if engine == "simulator" else engine
 
 
 def _difference(stored: str, this: str, limit: int = 4) -> tuple[str, str]:
