@@ -21,7 +21,7 @@ through the same runner and results store as the simulator's.
   into the configuration's hash (:func:`experiments.runner.spec.config_description`: one
   results file never mixes engines, a resume with the other engine is refused in one line),
   the configuration of partial observation, and :func:`play_in_server` as the function that
-  plays it. The runner compiles our teams' kernels before any worker starts, as for every run
+  plays it, ordered by seed (:func:`in_seed_order`). The runner compiles our teams' kernels before any worker starts, as for every run
   (``MatchSpec.plays_teams``: our teams only).
 * **A match** (:func:`play_in_server`, in a runner worker): played by
   :func:`experiments.rcss_engine.play_rcss_match` (server and both teams in a private network
@@ -181,7 +181,14 @@ def engine_run(args: argparse.Namespace, params: dict, specs: list) -> list:
         args.workers = DEFAULT_WORKERS
         print(f"rcssserver: {DEFAULT_WORKERS} match at a time (one keeps about {CORES_PER_MATCH} cores busy; "
               "--workers N plays N at once)", file=sys.stderr)
-    return [server_spec(spec, str(install.home), external) for spec in specs]
+    return [server_spec(spec, str(install.home), external) for spec in in_seed_order(specs)]
+
+
+def in_seed_order(specs: list) -> list:
+    """``specs`` ordered by seed (the command's order within a seed): the runner plays them in
+    this order, so a run in the server stopped after hours leaves every pairing with about as
+    many matches on the same seeds, ready for a paired comparison."""
+    return sorted(specs, key=lambda spec: spec.seed)
 
 
 def server_spec(spec, rcss_home: str, external: dict[str, str]):
