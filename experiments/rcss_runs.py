@@ -153,6 +153,7 @@ def engine_run(args: argparse.Namespace, params: dict, specs: list) -> list:
     ``args.workers`` when ``--workers`` was not given. A RunInputError (one line) for a
     missing build, an option the server cannot honour or a ``--cycles`` it cannot play."""
     from experiments.commands.run_options import RunInputError
+    from experiments.results.store import mixed_engines, stored_engine
     from rcss_bridge.install import MissingBuild, RcssInstall
 
     if params.get("engine") != RCSS:
@@ -174,6 +175,9 @@ def engine_run(args: argparse.Namespace, params: dict, specs: list) -> list:
             install.require_helios()
     except MissingBuild as exc:
         raise RunInputError(str(exc)) from None
+    stored = stored_engine(args.out)
+    if stored not in (None, RCSS):                            # refused before the workers' line below
+        raise RunInputError(mixed_engines(Path(args.out), stored, RCSS))
     if shutil.which("unshare") is None:
         raise RunInputError("--engine rcssserver runs the server in a private network namespace: the 'unshare' "
                             "command is missing")
