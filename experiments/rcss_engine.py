@@ -27,13 +27,14 @@ import shutil
 import sys
 import tempfile
 from dataclasses import dataclass
-from pathlib import Path
 from collections.abc import Mapping
+from pathlib import Path
 from typing import TextIO
 
 from experiments.match_report import MatchReport
+from rcss_bridge.install import HELIOS_TEAM
 
-HELIOS = "helios-base"
+HELIOS = HELIOS_TEAM
 """The external team found in the kit's build."""
 
 EXTERNAL_TEAMS = (HELIOS,)

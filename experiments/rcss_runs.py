@@ -37,16 +37,14 @@ from __future__ import annotations
 import argparse
 import shutil
 import sys
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from experiments.rcss_engine import EXTERNAL_TEAMS, HELIOS, half_time_seconds, is_external
+from experiments.rcss_engine import ENGINES, EXTERNAL_TEAMS, HELIOS, half_time_seconds, is_external
 
 RCSS = "rcssserver"
 """The engine's name (``--engine``, ``MatchSpec.engine``, the configuration's ``engine``)."""
-
-ENGINES = ("simulator", RCSS)
-"""What ``--engine`` chooses from."""
 
 PLAY = "experiments.rcss_runs:play_in_server"
 """The runner's ``MatchSpec.play`` for a match in the server."""
@@ -146,6 +144,17 @@ def _external_team(text: str) -> tuple[str, str]:
     except ValueError as exc:
         raise RunInputError(f"--external {text!r}: cannot read the command ({exc})") from None
     return name, command
+
+
+def engine_specs(args: argparse.Namespace, build_specs: Callable[[dict], list]) -> Callable[[dict], list]:
+    """A command's ``build_specs`` (parameters -> the run's specs) that, for parameters of a
+    run in the server (``engine``), also runs the pre-flight and makes the specs play there
+    (:func:`engine_run`); the simulator's specs as they were otherwise."""
+    def specs_of(params: dict) -> list:
+        specs = build_specs(params)
+        return specs if params.get("engine") is None else engine_run(args, params, specs)
+
+    return specs_of
 
 
 def engine_run(args: argparse.Namespace, params: dict, specs: list) -> list:

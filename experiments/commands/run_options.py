@@ -158,12 +158,7 @@ def run_command(args: argparse.Namespace, kind: str, params_of, build_specs, rep
     try:
         params = params_of(args)
         tables = tables_dir(args)
-        specs = build_specs(params)
-        if params.get("engine") is not None:      # matches played elsewhere than the simulator
-            from experiments.rcss_runs import engine_run
-
-            specs = engine_run(args, params, specs)
-        summary = execute(args, kind, specs, params, figures)
+        summary = execute(args, kind, build_specs(params), params, figures)
         try:
             tables.mkdir(parents=True, exist_ok=True)
             report(summary.records, params, tables)
@@ -204,7 +199,7 @@ def team_list(text: str, option: str, minimum: int = 1, external: Collection[str
     RunInputError naming the closest registered names, or what is wrong with the checkpoint,
     otherwise (:func:`soccer_sim.registry.unknown_team_message`), and one saying that
     helios-base plays only in the real server when it is named outside ``external``."""
-    from experiments.rcss_engine import EXTERNAL_TEAMS
+    from rcss_bridge.install import HELIOS_TEAM
     from soccer_sim import TeamNotFoundError, available_teams, resolve_team
     from soccer_sim.env.checkpoint_teams import CheckpointError, checkpoint_team, is_checkpoint_name
     from soccer_sim.registry import unknown_team_message
@@ -218,7 +213,7 @@ def team_list(text: str, option: str, minimum: int = 1, external: Collection[str
     for name in names:
         if name in external:
             continue
-        if name in EXTERNAL_TEAMS:
+        if name == HELIOS_TEAM:
             raise RunInputError(f"{option}: {name} plays only in the real server (rcssserver): add --engine "
                                 "rcssserver where the command offers it")
         if is_checkpoint_name(name):

@@ -66,8 +66,9 @@ def build_specs(params: dict) -> list:
 
 def run(args: argparse.Namespace) -> int:
     from experiments.commands.run_options import run_command
+    from experiments.rcss_runs import engine_specs
 
-    return run_command(args, KIND, _params, build_specs, report)
+    return run_command(args, KIND, _params, engine_specs(args, build_specs), report)
 
 
 def _params(args: argparse.Namespace) -> dict:
