@@ -44,8 +44,6 @@ WARM_UP_CYCLES = 60
 """Cycles of the simulator a team process plays with its team before connecting (kernels the
 manifest does not list are compiled or loaded there, not inside the server's step)."""
 
-ENGINES = ("simulator", "rcssserver")
-"""The engines ``--engine`` chooses from."""
 
 
 @dataclass(frozen=True)

@@ -41,10 +41,13 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from experiments.rcss_engine import ENGINES, EXTERNAL_TEAMS, HELIOS, half_time_seconds, is_external
+from experiments.runner.spec import SIMULATOR
 
 RCSS = "rcssserver"
 """The engine's name (``--engine``, ``MatchSpec.engine``, the configuration's ``engine``)."""
+
+ENGINES = (SIMULATOR, RCSS)
+"""What ``--engine`` chooses from."""
 
 PLAY = "experiments.rcss_runs:play_in_server"
 """The runner's ``MatchSpec.play`` for a match in the server."""
@@ -60,7 +63,7 @@ def add_engine_arguments(parser: argparse.ArgumentParser) -> None:
     """``--engine``, ``--rcss-home`` and ``--external`` (after the run's options: ``--workers``
     then defaults to None, read as every core in the simulator and :data:`DEFAULT_WORKERS` in
     the server)."""
-    parser.add_argument("--engine", choices=ENGINES, default="simulator",
+    parser.add_argument("--engine", choices=ENGINES, default=SIMULATOR,
                         help="where the matches are played: soccer-sim's simulator (default) or the real RoboCup 2D "
                              "server from the reference kit's build (our teams play through the bridge under partial "
                              f"observation; helios-base may be a team; --workers defaults to {DEFAULT_WORKERS} there, "
@@ -89,7 +92,7 @@ class EngineChoice:
         """The choice ``args`` make; a RunInputError naming the option for a bad one."""
         from experiments.commands.run_options import RunInputError
 
-        engine = getattr(args, "engine", "simulator")
+        engine = getattr(args, "engine", SIMULATOR)
         given = list(getattr(args, "external", None) or [])
         if engine != RCSS:
             for option in ("external", "rcss_home"):
@@ -108,10 +111,14 @@ class EngineChoice:
     @property
     def external_names(self) -> tuple[str, ...]:
         """The team names besides the project's teams the command's lists may hold."""
+        from experiments.rcss_engine import EXTERNAL_TEAMS
+
         return (*EXTERNAL_TEAMS, *self.external) if self.in_server else ()
 
     def ours(self, teams: list[str]) -> list[str]:
         """The project's teams among ``teams``."""
+        from experiments.rcss_engine import is_external
+
         return [team for team in teams if not is_external(team, self.external if self.in_server else {})]
 
     def observation(self, requested: str) -> str:
@@ -129,7 +136,7 @@ def _external_team(text: str) -> tuple[str, str]:
     """``NAME=COMMAND`` as (name, command); a RunInputError for a malformed one or a name that
     is one of the project's teams or helios-base."""
     from experiments.commands.run_options import RunInputError
-    from experiments.rcss_engine import external_argv
+    from experiments.rcss_engine import EXTERNAL_TEAMS, external_argv
     from soccer_sim import available_teams
 
     name, equals, command = text.partition("=")
@@ -162,6 +169,7 @@ def engine_run(args: argparse.Namespace, params: dict, specs: list) -> list:
     ``args.workers`` when ``--workers`` was not given. A RunInputError (one line) for a
     missing build, an option the server cannot honour or a ``--cycles`` it cannot play."""
     from experiments.commands.run_options import RunInputError
+    from experiments.rcss_engine import HELIOS, half_time_seconds
     from experiments.results.store import mixed_engines, stored_engine
     from rcss_bridge.install import MissingBuild, RcssInstall
 
@@ -209,6 +217,7 @@ def server_spec(spec, rcss_home: str, external: dict[str, str]):
     partial observation for its cycles, :data:`PLAY` with the build and the external teams'
     commands as its arguments, and our teams as the ones whose kernels the runner warms."""
     from experiments.configuration import match_config
+    from experiments.rcss_engine import is_external
 
     return replace(spec, engine=RCSS, configuration=match_config(spec.cycles, "partial"), play=PLAY,
                    play_args=(("rcss_home", rcss_home), ("external", tuple(sorted(external.items())))),
