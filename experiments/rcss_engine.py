@@ -22,16 +22,19 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import shutil
 import sys
 import tempfile
 from dataclasses import dataclass
+from collections.abc import Mapping
 from pathlib import Path
 from typing import TextIO
 
 from experiments.match_report import MatchReport
+from rcss_bridge.install import HELIOS_TEAM
 
-HELIOS = "helios-base"
+HELIOS = HELIOS_TEAM
 """The external team found in the kit's build."""
 
 EXTERNAL_TEAMS = (HELIOS,)
@@ -41,8 +44,6 @@ WARM_UP_CYCLES = 60
 """Cycles of the simulator a team process plays with its team before connecting (kernels the
 manifest does not list are compiled or loaded there, not inside the server's step)."""
 
-ENGINES = ("simulator", "rcssserver")
-"""The engines ``--engine`` chooses from."""
 
 
 @dataclass(frozen=True)
@@ -60,16 +61,17 @@ class RcssMatchResult:
     """The score the server printed at the end (None if it printed none)."""
 
 
-def check_teams(home: str, away: str, install) -> list[str]:
+def check_teams(home: str, away: str, install, external: Mapping[str, str] | None = None) -> list[str]:
     """Our teams among ``home`` and ``away`` (a RunInputError for a team that cannot play
     under partial observation, a TeamNotFoundError for an unknown one; a MissingBuild when
-    helios-base is asked for and not built)."""
+    helios-base is asked for and not built). ``external``: name -> command of the external
+    teams given by the user (:func:`external_argv`)."""
     from experiments.commands.run_options import check_observation
 
     install.require_server()
     if HELIOS in (home, away):
         install.require_helios()
-    ours = [team for team in (home, away) if team not in EXTERNAL_TEAMS]
+    ours = [team for team in (home, away) if not is_external(team, external)]
     check_observation(ours, "partial")
     return ours
 
@@ -87,10 +89,11 @@ def half_time_seconds(cycles: int | None) -> int:
 
 def play_rcss_match(home: str, away: str, seed: int, rcss_home: str | None = None, cycles: int | None = None,
                     rcg: Path | None = None, logs: str | None = None, match_timeout: float = 1800.0,
-                    stream: TextIO | None = None) -> RcssMatchResult:
+                    stream: TextIO | None = None, external: Mapping[str, str] | None = None) -> RcssMatchResult:
     """Play ``home`` (the server's left) v ``away`` in rcssserver and report it (module
     docstring). ``rcg``: where to copy the game log; ``logs``: a directory that keeps every
-    log of the match (game and text logs, the server's and the teams' output)."""
+    log of the match (game and text logs, the server's and the teams' output); ``external``:
+    name -> command of external teams other than helios-base (:func:`external_argv`)."""
     from experiments.rcg_report import rcg_match_report
     from experiments.warmup import warm_kernels
     from rcss_bridge.errors import BridgeError
@@ -100,7 +103,7 @@ def play_rcss_match(home: str, away: str, seed: int, rcss_home: str | None = Non
     from soccer_sim.rcg import RcgError, read_rcg
 
     install = RcssInstall.find(rcss_home)
-    ours = check_teams(home, away, install)
+    ours = check_teams(home, away, install, external)
     half_time = half_time_seconds(cycles)
     if ours:
         warm_kernels(ours, stream=stream, observation="partial")
@@ -108,8 +111,8 @@ def play_rcss_match(home: str, away: str, seed: int, rcss_home: str | None = Non
     away_name = server_team_name(away, taken=home_name)
     with tempfile.TemporaryDirectory(prefix="soccer-sim-rcss-") as work:
         plan = MatchPlan(rcss_home=str(install.home), workdir=work,
-                         home=side_program(home, home_name, away, seed, install),
-                         away=side_program(away, away_name, home, seed + 1, install),
+                         home=side_program(home, home_name, away, seed, install, external=external),
+                         away=side_program(away, away_name, home, seed + 1, install, external=external),
                          half_time=half_time, match_timeout=match_timeout)
         try:
             outcome = play_in_namespace(plan)
@@ -121,18 +124,48 @@ def play_rcss_match(home: str, away: str, seed: int, rcss_home: str | None = Non
         except (RcgError, ValueError) as exc:
             raise BridgeError(f"the server's game log cannot be read: {exc}") from None
         missed = {label: missed_steps(Path(outcome.rcl), name)
-                  for label, name in ((home, home_name), (away, away_name)) if label not in EXTERNAL_TEAMS}
+                  for label, name in ((home, home_name), (away, away_name)) if not is_external(label, external)}
         server_score = final_score(Path(outcome.server_output))
         if rcg is not None:
             shutil.copyfile(outcome.rcg, rcg)
     return RcssMatchResult(report, outcome.wall_time, outcome.connect_seconds, missed, server_score)
 
 
-def side_program(label: str, server_name: str, opponent: str, seed: int, install, port: int = 6000):
+def is_external(team: str, external: Mapping[str, str] | None = None) -> bool:
+    """Whether ``team`` is a program of its own (helios-base, or a name of ``external``), not
+    one of the project's teams."""
+    return team in EXTERNAL_TEAMS or team in (external or {})
+
+
+EXTERNAL_PLACEHOLDERS = ("{host}", "{port}", "{coach_port}", "{team}")
+"""What an external team's command may contain, replaced by the server's host, its players'
+port, its online coach's port and the name the team must give the server."""
+
+
+def external_argv(command: str, server_name: str, host: str = "127.0.0.1", port: int = 6000) -> tuple[str, ...]:
+    """The program and arguments of an external team's ``command`` (split as a POSIX shell
+    splits it, each of :data:`EXTERNAL_PLACEHOLDERS` replaced); a ValueError for a command
+    that is empty or cannot be split (an unclosed quote)."""
+    import shlex
+
+    values = dict(zip(EXTERNAL_PLACEHOLDERS, (host, str(port), str(port + 2), server_name)))
+    words = shlex.split(command)
+    if not words:
+        raise ValueError("the command is empty")
+    for placeholder, value in values.items():
+        words = [word.replace(placeholder, value) for word in words]
+    return tuple(words)
+
+
+def side_program(label: str, server_name: str, opponent: str, seed: int, install, port: int = 6000,
+                 external: Mapping[str, str] | None = None):
     """The program that connects ``label``'s team to the server's players' ``port``:
-    helios-base's ``start.sh`` in its build, or one of our teams as a process of its own
-    (:func:`team_main`)."""
+    helios-base's ``start.sh`` in its build, an external team's command (``external``, run
+    in the current directory), or one of our teams as a process of its own (:func:`team_main`)."""
     from rcss_bridge.match import SideProgram
+
+    if external and label in external:
+        return SideProgram(label, server_name, external_argv(external[label], server_name, port=port), cwd=os.getcwd())
 
     if label == HELIOS:
         return SideProgram(label, server_name, ("./start.sh", "-t", server_name, "-p", str(port),

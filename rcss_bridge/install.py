@@ -22,6 +22,9 @@ DEFAULT_HOME = "~/.cache/rcss-reference"
 BUILD_SCRIPT = "../shared/reference/rcssserver/build.sh"
 """The kit's build script, as the project's documentation names it."""
 
+HELIOS_TEAM = "helios-base"
+"""The name the team the kit builds (:attr:`RcssInstall.helios_bin`) plays under."""
+
 
 class MissingBuild(BridgeError, FileNotFoundError):
     """The server or helios-base is not built where the kit puts it."""

@@ -7,6 +7,7 @@ import argparse
 import os
 import sys
 import warnings
+from collections.abc import Collection
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -191,11 +192,14 @@ def incomplete(summary: RunSummary) -> int:
                 "again", 1)
 
 
-def team_list(text: str, option: str, minimum: int = 1) -> list[str]:
+def team_list(text: str, option: str, minimum: int = 1, external: Collection[str] = ()) -> list[str]:
     """Comma-separated team names, each resolvable (a registered name, an importable
-    ``module:Attribute`` path or a loadable checkpoint team ``checkpoint:KIND:PATH?...``); a
+    ``module:Attribute`` path or a loadable checkpoint team ``checkpoint:KIND:PATH?...``) or
+    one of ``external`` (programs that play in the real server, ``--engine rcssserver``); a
     RunInputError naming the closest registered names, or what is wrong with the checkpoint,
-    otherwise (:func:`soccer_sim.registry.unknown_team_message`)."""
+    otherwise (:func:`soccer_sim.registry.unknown_team_message`), and one saying that
+    helios-base plays only in the real server when it is named outside ``external``."""
+    from rcss_bridge.install import HELIOS_TEAM
     from soccer_sim import TeamNotFoundError, available_teams, resolve_team
     from soccer_sim.env.checkpoint_teams import CheckpointError, checkpoint_team, is_checkpoint_name
     from soccer_sim.registry import unknown_team_message
@@ -207,6 +211,11 @@ def team_list(text: str, option: str, minimum: int = 1) -> list[str]:
         raise RunInputError(f"{option}: needs at least {minimum} team(s), got {text!r}")
     known = available_teams()
     for name in names:
+        if name in external:
+            continue
+        if name == HELIOS_TEAM:
+            raise RunInputError(f"{option}: {name} plays only in the real server (rcssserver): add --engine "
+                                "rcssserver where the command offers it")
         if is_checkpoint_name(name):
             try:
                 checkpoint_team(name)

@@ -46,6 +46,9 @@ def _add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="play a scenario instead of the regular match: a name from `soccer-sim scenarios` or "
                              "a .json/.toml file (teams on the away side play the scenario's defence)")
     add_run_arguments(parser, "results.sqlite")
+    from experiments.rcss_runs import add_engine_arguments
+
+    add_engine_arguments(parser)
     add_json_option(parser)
     parser.set_defaults(func=table_command(run))
 
@@ -63,19 +66,25 @@ def build_specs(params: dict) -> list:
 
 def run(args: argparse.Namespace) -> int:
     from experiments.commands.run_options import run_command
+    from experiments.rcss_runs import engine_specs
 
-    return run_command(args, KIND, _params, build_specs, report)
+    return run_command(args, KIND, _params, engine_specs(args, build_specs), report)
 
 
 def _params(args: argparse.Namespace) -> dict:
-    from experiments.commands.run_options import check_observation, scenario_option, team_list
+    from experiments.commands.run_options import RunInputError, check_observation, scenario_option, team_list
     from experiments.configuration import match_config
+    from experiments.rcss_runs import EngineChoice
 
-    teams = team_list(args.teams, "--teams", minimum=2)
-    scenario_option(args.scenario, match_config(args.cycles, args.observation))
-    check_observation(teams, args.observation)
+    engine = EngineChoice.from_args(args)
+    teams = team_list(args.teams, "--teams", minimum=2, external=engine.external_names)
+    if args.scenario is not None and engine.in_server:
+        raise RunInputError("--scenario is not available with --engine rcssserver (the simulator's only)")
+    observation = engine.observation(args.observation)
+    scenario_option(args.scenario, match_config(args.cycles, observation))
+    check_observation(engine.ours(teams), observation)
     params = {"teams": teams, "games": args.games, "seed": args.seed, "cycles": args.cycles,
-              "observation": args.observation}
+              "observation": observation, **engine.params()}
     if args.scenario is not None:  # (without one the parameters stay as results files have always stored them)
         params["scenario"] = args.scenario
     return params

@@ -353,11 +353,48 @@ def _refusal(path: Path, meta: dict[str, str], tables: list[str], kind: str, con
     if meta["kind"] != kind:
         return f"{path} holds the results of '{meta['kind']}', not '{kind}'; {fresh}"
     if meta.get("config_hash") not in (None, config_hash):
+        stored_engine, this_engine = _engine(meta.get("config", "")), _engine(config)
+        if stored_engine != this_engine:
+            return mixed_engines(path, stored_engine, this_engine)
         stored, this = _difference(meta.get("config", ""), config)
         return (f"{path} holds results of a different match configuration (hash {meta['config_hash']}{stored}; "
                 f"this run: hash {config_hash}{this}; e.g. another number of cycles); results of different "
                 f"configurations are never mixed; {fresh}")
     return None
+
+
+def _engine(description: str) -> str:
+    """The engine a configuration description names (its ``engine``; ``simulator`` when it
+    names none, as every description of the simulator's matches: see
+    :func:`experiments.runner.spec.config_description`)."""
+    try:
+        described = json.loads(description)
+    except (ValueError, TypeError):
+        return "simulator"
+    engine = described.get("engine") if isinstance(described, dict) else None
+    return "simulator" if engine is None else str(engine)
+
+
+def mixed_engines(path: Path, stored: str, this: str) -> str:
+    """Why a results file of engine ``stored`` refuses a run in engine ``this``."""
+    def named(engine: str) -> str:
+        return "the simulator" if engine == "simulator" else engine
+
+    return (f"{path} holds matches played in {named(stored)}, and this run plays in {named(this)}; one results "
+            f"file never mixes engines: use another results file, or resume it with --engine {stored}")
+
+
+def stored_engine(path: str | os.PathLike) -> str | None:
+    """The engine of the matches in results file ``path`` (read-only), or None when there is
+    no results file there (or one that cannot be read: :meth:`ResultStore.create` says why)."""
+    path = Path(path)
+    if not path.is_file() or path.stat().st_size == 0:
+        return None
+    try:
+        with ResultStore.open(path) as store:
+            return _engine(store.meta().get("config", ""))
+    except (ResultsError, sqlite3.Error):
+        return None
 
 
 def _difference(stored: str, this: str, limit: int = 4) -> tuple[str, str]:

@@ -22,7 +22,7 @@ from experiments.results.leases import LEASE_SECONDS, SharedWork
 from experiments.results.record import FORFEIT_NONE, MatchRecord
 from experiments.results.store import ResultsError, ResultStore, StorageError
 from experiments.runner.progress import RunProgress
-from experiments.runner.spec import MatchSpec, code_version, config_description, config_for, config_hash
+from experiments.runner.spec import SIMULATOR, MatchSpec, code_version, config_description, config_for, config_hash
 
 if TYPE_CHECKING:  # annotations only
     from soccer_sim import MatchConfig
@@ -195,15 +195,15 @@ def run_matches(specs: Sequence[MatchSpec], path: str | os.PathLike, kind: str, 
     if backend not in BACKENDS:
         raise ValueError(f"unknown backend {backend!r}; choose one of {', '.join(BACKENDS)}")
     specs = list(dict.fromkeys(specs))
-    config, scenario = run_setting(specs, cycles)
+    config, scenario, engine = run_setting(specs, cycles)
     check_seeds(specs)
     if record_dir is not None or rcg_dir is not None:
         specs = with_replays(specs, None if record_dir is None else Path(record_dir), record_every,
                              None if rcg_dir is None else Path(rcg_dir))
-    digest, version = config_hash(config, scenario), code_version()
+    digest, version = config_hash(config, scenario, engine), code_version()
     start = time.monotonic()
     check_code_versions(path, kind, digest, version, specs, retry_errors, same_code)
-    with ResultStore.create(path, kind, digest, config_description(config, scenario), params) as store:
+    with ResultStore.create(path, kind, digest, config_description(config, scenario, engine), params) as store:
         keys = [spec.key for spec in specs]
         # A failure no team is blamed for (a worker that died, a lost Ray node) is played again;
         # a forfeit is a result (the same team would fail the same way) unless retry_errors.
@@ -274,17 +274,18 @@ def _note(message: str) -> None:
     print(message, file=sys.stderr, flush=True)
 
 
-def run_setting(specs: Sequence[MatchSpec], cycles: int | None) -> tuple[MatchConfig, Scenario | None]:
-    """The one (configuration, scenario) every spec of a run plays (that of ``cycles`` for no
-    specs): a results file holds the matches of one setting, keyed by teams and seed, so specs
-    of different settings, or different specs with the same teams and seed, are a ParameterError."""
-    settings = {(spec.config(), spec.scenario) for spec in specs}
+def run_setting(specs: Sequence[MatchSpec], cycles: int | None) -> tuple[MatchConfig, Scenario | None, str]:
+    """The one (configuration, scenario, engine) every spec of a run plays (that of ``cycles``
+    in the simulator for no specs): a results file holds the matches of one setting, keyed by
+    teams and seed, so specs of different settings, or different specs with the same teams and
+    seed, are a ParameterError."""
+    settings = {(spec.config(), spec.scenario, spec.engine) for spec in specs}
     if len(settings) > 1:
-        raise ParameterError("specs", "must all play one configuration and scenario: a results file holds the "
-                                      "matches of one")
+        raise ParameterError("specs", "must all play one configuration, scenario and engine: a results file holds "
+                                      "the matches of one")
     if len({spec.key for spec in specs}) < len(specs):
         raise ParameterError("specs", "must differ in teams or seed: a results file keys its matches by them")
-    return settings.pop() if settings else (config_for(cycles), None)
+    return settings.pop() if settings else (config_for(cycles), None, SIMULATOR)
 
 
 def check_seeds(specs: Sequence[MatchSpec]) -> None:

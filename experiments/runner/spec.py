@@ -15,6 +15,9 @@ from typing import TYPE_CHECKING
 
 from experiments.errors import ParameterError
 
+SIMULATOR = "simulator"
+"""The engine of a match played by this project's simulator (:attr:`MatchSpec.engine`)."""
+
 if TYPE_CHECKING:  # annotations only: importing the simulator is left to what plays matches
     from soccer_sim import MatchConfig
     from soccer_sim.scenarios import Scenario
@@ -59,8 +62,14 @@ class MatchSpec:
     ``cycles`` (:func:`config_for`)."""
     scenario: Scenario | None = None
     """A scenario to play instead of the regular match from the kick-off, or None."""
+    engine: str = SIMULATOR
+    """Where the match is played: :data:`SIMULATOR`, or another engine's name (``"rcssserver"``,
+    :mod:`experiments.rcss_runs`) whose ``play`` function plays it there. Part of the
+    configuration's hash (:func:`config_description`), so one results file never mixes engines."""
 
     def __post_init__(self) -> None:
+        if self.engine != SIMULATOR and self.play is None:
+            raise ParameterError("engine", f"{self.engine!r} needs the play function that plays the match there")
         if self.configuration is not None:
             if self.cycles is None:
                 object.__setattr__(self, "cycles", self.configuration.max_cycles)
@@ -78,7 +87,7 @@ class MatchSpec:
         the replay and game-log paths and ``plays_teams`` are not part of it."""
         described = {"home": self.home, "away": self.away, "seed": self.seed, "play": self.play,
                      "play_args": [list(pair) for pair in self.play_args],
-                     "setting": json.loads(config_description(self.config(), self.scenario))}
+                     "setting": json.loads(config_description(self.config(), self.scenario, self.engine))}
         return _digest(json.dumps(described, sort_keys=True, default=str))
 
     @property
@@ -104,9 +113,11 @@ def config_for(cycles: int | None) -> MatchConfig:
     return match_config(cycles)
 
 
-def config_description(config: MatchConfig, scenario: Scenario | None = None) -> str:
+def config_description(config: MatchConfig, scenario: Scenario | None = None, engine: str = SIMULATOR) -> str:
     """Every parameter of ``config`` as canonical JSON (sorted keys), with the whole content of
-    ``scenario`` under the key ``scenario`` when one is played."""
+    ``scenario`` under the key ``scenario`` when one is played, and ``engine`` under the key
+    ``engine`` when it is not the simulator (the simulator's descriptions, and hashes, stay as
+    results files have always stored them)."""
     described = asdict(config)
     from soccer_sim.perception.config import ObservationConfig
 
@@ -116,14 +127,17 @@ def config_description(config: MatchConfig, scenario: Scenario | None = None) ->
         from soccer_sim.scenarios import scenario_to_dict
 
         described["scenario"] = scenario_to_dict(scenario)
+    if engine != SIMULATOR:
+        described["engine"] = engine
     return json.dumps(described, sort_keys=True, default=str)
 
 
-def config_hash(config: MatchConfig, scenario: Scenario | None = None) -> str:
-    """A short stable hash (16 hex digits of SHA-256) of every parameter of ``config`` and the
-    content of ``scenario``: the configuration a results file holds matches of. Without a
-    scenario it is the hash of the configuration alone, as results files have always stored."""
-    return _digest(config_description(config, scenario))
+def config_hash(config: MatchConfig, scenario: Scenario | None = None, engine: str = SIMULATOR) -> str:
+    """A short stable hash (16 hex digits of SHA-256) of every parameter of ``config``, the
+    content of ``scenario`` and the ``engine``: the configuration a results file holds matches
+    of. Without a scenario, in the simulator, it is the hash of the configuration alone, as
+    results files have always stored."""
+    return _digest(config_description(config, scenario, engine))
 
 
 def _digest(text: str) -> str:

@@ -70,6 +70,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--games", type=ranged("games"), default=1000,
                         help="matches per pairing, rounded up to even: sides swapped on paired seeds (default: 1000)")
     add_run_arguments(parser, "case-study.sqlite")
+    from experiments.rcss_runs import add_engine_arguments
+
+    add_engine_arguments(parser)
 
 
 def build_specs(params: dict) -> list:
@@ -82,22 +85,27 @@ def build_specs(params: dict) -> list:
 
 def run(args: argparse.Namespace) -> int:
     from experiments.commands.run_options import run_command
+    from experiments.rcss_runs import engine_specs
 
-    return run_command(args, KIND, _params, build_specs, report)
+    return run_command(args, KIND, _params, engine_specs(args, build_specs), report)
 
 
 def _params(args: argparse.Namespace) -> dict:
     from experiments.commands.run_options import RunInputError, check_observation, team_list
+    from experiments.rcss_runs import EngineChoice
 
+    engine = EngineChoice.from_args(args)
     # Each list on its own first, so a bad --opponents is named as such before --baseline is
     # checked against --teams.
-    teams = team_list(args.teams, "--teams")
-    opponents = team_list(args.opponents, "--opponents")
+    teams = team_list(args.teams, "--teams", external=engine.external_names)
+    opponents = team_list(args.opponents, "--opponents", external=engine.external_names)
     if args.baseline not in teams:
         raise RunInputError(f"--baseline {args.baseline!r} must be one of --teams ({', '.join(teams)})")
-    check_observation(teams + [o for o in opponents if o not in teams], args.observation)
+    observation = engine.observation(args.observation)
+    check_observation(engine.ours(teams + [o for o in opponents if o not in teams]), observation)
     return {"teams": teams, "opponents": opponents, "baseline": args.baseline,
-            "games": args.games, "seed": args.seed, "cycles": args.cycles, "observation": args.observation}
+            "games": args.games, "seed": args.seed, "cycles": args.cycles, "observation": observation,
+            **engine.params()}
 
 
 def tables(records: Sequence, params: dict) -> tuple:
