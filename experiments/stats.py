@@ -224,3 +224,22 @@ def unblamed(record: MatchRecord) -> bool:
 def blamed_team(record: MatchRecord) -> str | None:
     """The team that forfeited ``record``, or None."""
     return None if record.forfeit == FORFEIT_NONE else record.names()[record.forfeit]
+
+
+def paired_cells(records: Sequence, team: str, baseline: str, opponents: Sequence[str]) -> tuple[list[str], list[float]]:
+    """A study row's paired difference from ``baseline`` (:func:`paired_comparison` over
+    ``opponents``): its printed cells (difference with its SE, p) and its numbers (difference,
+    SE, p); empty cells and NaN for the baseline's own row."""
+    if team == baseline:
+        return ["", ""], [float("nan")] * 3
+    paired = paired_comparison(records, team, baseline, opponents)
+    return [paired.difference.text(), p_text(paired.p_value)], [paired.difference.mean, paired.difference.se,
+                                                                 paired.p_value]
+
+
+def figure_cell(records: Sequence, team: str, figure: str, scale: float) -> tuple[str, float, float]:
+    """A team statistic's mean (SE) over ``team``'s matches, scaled: its printed cell (``-``
+    without matches), mean and SE."""
+    value = team_figure(records, team, figure)
+    text = "-" if value.n == 0 else f"{value.mean * scale:.2f} ({value.se * scale:.2f})"
+    return text, value.mean * scale, value.se * scale

@@ -254,7 +254,7 @@ def play_ablated(spec, record, watch) -> None:
 def tables(records: Sequence, params: dict) -> tuple:
     """(the table, its CSV rows): one row per team and switch."""
     from experiments.reporting import Table
-    from experiments.stats import p_text, paired_comparison, pairing_summary, team_figure
+    from experiments.stats import figure_cell, paired_cells, pairing_summary
 
     opponents, columns = params["opponents"], figure_columns()
     table = Table(f"ablation under partial observation: goal difference per match, mean (SE), {params['games']} games "
@@ -273,17 +273,13 @@ def tables(records: Sequence, params: dict) -> tuple:
             gd = overall.goal_difference
             row = [team, switch, overall.games, overall.wins, overall.draws, overall.losses, overall.forfeits,
                    gd.mean, gd.se]
-            if switch == BASELINE:
-                cells += ["", ""]
-                row += [float("nan")] * 3
-            else:
-                paired = paired_comparison(records, name, baseline, opponents)
-                cells += [paired.difference.text(), p_text(paired.p_value)]
-                row += [paired.difference.mean, paired.difference.se, paired.p_value]
+            paired_text, paired_numbers = paired_cells(records, name, baseline, opponents)
+            cells += paired_text
+            row += paired_numbers
             for _, figure, scale in columns:
-                value = team_figure(records, name, figure)
-                cells.append("-" if value.n == 0 else f"{value.mean * scale:.2f} ({value.se * scale:.2f})")
-                row += [value.mean * scale, value.se * scale]
+                text, mean, se = figure_cell(records, name, figure, scale)
+                cells.append(text)
+                row += [mean, se]
             table.rows.append(cells)
             rows.append(row)
     return table, rows

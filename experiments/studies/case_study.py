@@ -111,7 +111,7 @@ def _params(args: argparse.Namespace) -> dict:
 def tables(records: Sequence, params: dict) -> tuple:
     """(goal-difference table, behaviour table, CSV rows of each)."""
     from experiments.reporting import Table
-    from experiments.stats import p_text as _p_text, paired_comparison, pairing_summary, team_figure
+    from experiments.stats import figure_cell, paired_cells, pairing_summary
 
     teams, opponents, baseline = params["teams"], params["opponents"], params["baseline"]
     goal_table = Table(f"goal difference per match, mean (SE); {params['games']} games per pairing",
@@ -135,16 +135,12 @@ def tables(records: Sequence, params: dict) -> tuple:
     for team in teams:
         cells, row = [team], [team]
         for _, figure, scale in behaviour_columns(params):
-            value = team_figure(records, team, figure)
-            cells.append("-" if value.n == 0 else f"{value.mean * scale:.2f} ({value.se * scale:.2f})")
-            row += [value.mean * scale, value.se * scale]
-        if team == baseline:
-            cells += ["", ""]
-            row += [float("nan")] * 3
-        else:
-            paired = paired_comparison(records, team, baseline, references)
-            cells += [paired.difference.text(), _p_text(paired.p_value)]
-            row += [paired.difference.mean, paired.difference.se, paired.p_value]
+            text, mean, se = figure_cell(records, team, figure, scale)
+            cells.append(text)
+            row += [mean, se]
+        paired_text, paired_numbers = paired_cells(records, team, baseline, references)
+        cells += paired_text
+        row += paired_numbers
         behaviour.rows.append(cells)
         behaviour_rows.append(row)
     return goal_table, behaviour, goal_rows, behaviour_rows
