@@ -33,7 +33,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from experiments.benchmarks.rcg_walk import CATCH, KEYS, KICK, TACKLE_COUNT, TEAM, log_figures, walk_shows
+from experiments.benchmarks.rcg_walk import (CATCH, KEYS, KICK, TACKLE_COUNT, TEAM, log_figures, mode_changes,
+                                             walk_shows)
 from experiments.match_report import SET_PLAY_KINDS, Goal, MatchReport
 from rcss_bridge.play_modes import MODE_MAP, other
 from soccer_sim.analysis.possession import Possession
@@ -124,11 +125,7 @@ def _read_modes(modes: list[tuple[int, str]], catches: set[tuple[str, int]]):
     set_plays = tuple({**{k: 0 for k in SET_PLAY_KINDS}, "goal_kick_retake": 0} for _ in (0, 1))
     offsides, fouls, drop_balls = [0, 0], [0, 0], 0
     goals: list[tuple[int, str]] = []
-    previous = ""
-    for cycle, name in modes:
-        if name == previous:
-            continue
-        previous = name
+    for cycle, name in mode_changes(modes):
         if name == "drop_ball":
             drop_balls += 1
             continue

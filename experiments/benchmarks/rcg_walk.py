@@ -14,7 +14,7 @@ tackle flag without the fault flag; a show line is in the play mode of the last
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from typing import NamedTuple
 
 import numpy as np
@@ -123,3 +123,13 @@ def walk_shows(log: GameLog) -> Iterator[ShowStep]:
         previous = now
         yield ShowStep(number, show.cycle, mode, tuple(entered), np.array(show.ball), pos, stamina, outfield, states,
                        rise, np.array(touched, dtype=np.intp), np.array(won, dtype=np.intp))
+
+
+def mode_changes(modes: Iterable[tuple[int, str]]) -> Iterator[tuple[int, str]]:
+    """The changes of play mode among ``modes`` ((cycle, mode) of a log's ``(playmode ...)``
+    lines, in cycle order): a line repeating the previous mode is not a change."""
+    previous = ""
+    for cycle, name in modes:
+        if name != previous:
+            previous = name
+            yield cycle, name

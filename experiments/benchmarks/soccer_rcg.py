@@ -38,7 +38,7 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
-from experiments.benchmarks.rcg_walk import CATCH, KEYS, KICK, TACKLE_COUNT, log_figures, walk_shows
+from experiments.benchmarks.rcg_walk import CATCH, KEYS, KICK, TACKLE_COUNT, log_figures, mode_changes, walk_shows
 from experiments.benchmarks.soccer_match import COUNTED, place_figures, role_figure
 from soccer_sim.config import STANDARD_FIELD
 from soccer_sim.rcg import GameLog
@@ -100,11 +100,7 @@ def rcg_figures(log: GameLog, labels: Mapping[str, Sequence[str]] | None = None,
 
 def _count_modes(modes: list[tuple[int, str]], catches: set[tuple[str, int]], counts: dict[str, float]) -> None:
     """Add the set plays, calls and dropped balls of the play-mode changes to ``counts``."""
-    previous = ""
-    for cycle, name in modes:
-        if name == previous:
-            continue
-        previous = name
+    for cycle, name in mode_changes(modes):
         if name == "drop_ball":
             counts["dropped balls"] += 1
             continue
