@@ -19,7 +19,7 @@ import numpy as np
 
 from examples.benchmark_baselines import (CHECKPOINTS, Settings, checkpoint_path, checkpoint_targets, checkpoints, check_settings,
                                           chunk_seed, read_curve, write_curve)
-from examples.ppo_shared_policy import make_env
+from examples.ppo_shared_policy import make_env, record_episodes
 
 
 def _vector(settings: Settings):
@@ -52,10 +52,7 @@ def _curve_callback(players: int, wall_before: float):
             self.start = time.perf_counter()
 
         def _on_step(self) -> bool:
-            for info in self.locals["infos"]:
-                if "episode" in info:
-                    self.returns.append(float(info["episode"]["r"]))
-                    self.goals.append(int(info.get("goals_for", 0)))
+            record_episodes(self.locals["infos"], self.returns, self.goals)
             return True
 
         def _on_rollout_end(self) -> None:

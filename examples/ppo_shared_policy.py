@@ -47,6 +47,15 @@ class EpisodeGoals(BaseParallelWrapper):
         return observations, rewards, terminations, truncations, infos
 
 
+def record_episodes(infos, returns: list[float], goals: list[int]) -> None:
+    """Append the return and the goals of each episode that ended in this step's ``infos``
+    (Stable-Baselines3's monitor puts an ended episode's return under ``"episode"``)."""
+    for info in infos:
+        if "episode" in info:
+            returns.append(float(info["episode"]["r"]))
+            goals.append(int(info.get("goals_for", 0)))
+
+
 def make_env(scenario: str, action_mode: str, opponent: str | None = None) -> EpisodeGoals:
     """The scenario's attacking side (``left``) played by agents, with the dense rewards."""
     options = {"scenario": scenario, "controlled": "left", "rewards": "dense", "action_mode": action_mode}
@@ -82,10 +91,7 @@ def train(args: argparse.Namespace) -> tuple[object, list[dict]]:
             self.returns, self.goals, self.start = [], [], time.perf_counter()
 
         def _on_step(self) -> bool:
-            for info in self.locals["infos"]:
-                if "episode" in info:
-                    self.returns.append(float(info["episode"]["r"]))
-                    self.goals.append(int(info.get("goals_for", 0)))
+            record_episodes(self.locals["infos"], self.returns, self.goals)
             return True
 
         def _on_rollout_end(self) -> None:
