@@ -68,15 +68,21 @@ def add_engine_arguments(parser: argparse.ArgumentParser) -> None:
                              "server from the reference kit's build (our teams play through the bridge under partial "
                              f"observation; helios-base may be a team; --workers defaults to {DEFAULT_WORKERS} there, "
                              f"a match keeping about {CORES_PER_MATCH} cores busy; part of the configuration hash)")
+    add_server_arguments(parser)
+    parser.set_defaults(workers=None)
+
+
+def add_server_arguments(parser: argparse.ArgumentParser, when: str = "with --engine rcssserver") -> None:
+    """``--rcss-home`` and ``--external``: where the server's build is and the teams that are
+    programs of their own (:func:`add_engine_arguments`, and commands that play in both
+    engines); ``when``: when they apply, as their help says it."""
     parser.add_argument("--rcss-home", default=None, metavar="DIR",
-                        help="with --engine rcssserver: the kit's build (default: $RCSS_HOME, else "
-                             "~/.cache/rcss-reference)")
+                        help=f"{when}: the kit's build (default: $RCSS_HOME, else ~/.cache/rcss-reference)")
     parser.add_argument("--external", action="append", default=[], metavar="NAME=COMMAND",
-                        help="with --engine rcssserver: a team NAME that is a program of its own, started by COMMAND "
+                        help=f"{when}: a team NAME that is a program of its own, started by COMMAND "
                              "in the current directory to connect a full team; {host}, {port}, {coach_port} and {team} "
                              "in it become the server's host, players' port, online coach's port and the team name to "
                              "give the server (repeat for several teams)")
-    parser.set_defaults(workers=None)
 
 
 @dataclass(frozen=True)

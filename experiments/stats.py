@@ -243,3 +243,50 @@ def figure_cell(records: Sequence, team: str, figure: str, scale: float) -> tupl
     value = team_figure(records, team, figure)
     text = "-" if value.n == 0 else f"{value.mean * scale:.2f} ({value.se * scale:.2f})"
     return text, value.mean * scale, value.se * scale
+
+
+@dataclass(frozen=True)
+class RankAgreement:
+    """How far two rankings of the same teams agree: Kendall's tau-b (1: the same order, -1:
+    the reverse, 0: unrelated; ties count as tau-b counts them) over the ``n`` teams both rank,
+    with the two-sided p-value of no association (nan where undefined: fewer than two teams,
+    or a ranking with every team tied)."""
+
+    tau: float
+    p_value: float
+    n: int
+
+    def text(self) -> str:
+        """``+0.60 (p 0.23, 5 teams)``."""
+        if math.isnan(self.tau):
+            return f"- ({self.n} teams)"
+        return f"{self.tau:+.2f} (p {p_text(self.p_value)}, {self.n} teams)"
+
+
+def rank_agreement(first: Sequence[float], second: Sequence[float]) -> RankAgreement:
+    """Kendall's tau-b between two scores of the same teams (``first[k]`` and ``second[k]``
+    are team k's, e.g. its mean goal difference in two engines; a higher score ranks higher);
+    teams without a score in either (nan) are left out."""
+    import warnings
+
+    from scipy import stats
+
+    pairs = [(a, b) for a, b in zip(first, second, strict=True) if not (math.isnan(a) or math.isnan(b))]
+    if len(pairs) < 2:
+        return RankAgreement(math.nan, math.nan, len(pairs))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")   # a constant ranking: scipy warns and answers nan
+        result = stats.kendalltau([a for a, _ in pairs], [b for _, b in pairs])
+    return RankAgreement(float(result.statistic), float(result.pvalue), len(pairs))
+
+
+def ranking(scores: Sequence[float]) -> list[float]:
+    """Each team's rank by its score (1 the highest; tied teams share the mean of their ranks;
+    nan for a team without a score, which takes no rank)."""
+    from scipy import stats
+
+    known = [k for k, score in enumerate(scores) if not math.isnan(score)]
+    ranks = [math.nan] * len(scores)
+    for k, rank in zip(known, stats.rankdata([-scores[k] for k in known])):
+        ranks[k] = float(rank)
+    return ranks

@@ -2,7 +2,7 @@
 ``soccer-sim results show FILE``: a stored run's matches as a flat table, or its tables again.
 
 ``show`` prints the same tables as the command that made the file (``tournament``,
-``experiment case-study``, ``experiment ablation``, ``experiment drop-in``, ``experiment assigners``,
+``experiment case-study``, ``experiment transfer`` (one engine's half), ``experiment ablation``, ``experiment drop-in``, ``experiment assigners``,
 ``experiment penalty-shot``), from the stored
 matches alone.
 
@@ -23,6 +23,7 @@ REPORTERS: dict[str, str] = {
     "tournament": "experiments.commands.tournament",
     "evaluation": "experiments.commands.evaluate",
     "case-study": "experiments.studies.case_study",
+    "transfer": "experiments.studies.transfer",
     "ablation": "experiments.studies.ablation",
     "drop-in": "experiments.studies.drop_in",
     "assigners": "experiments.studies.assigners",

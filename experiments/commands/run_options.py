@@ -24,11 +24,13 @@ class RunInputError(ExperimentError):
     """Bad input to a command that runs matches; the message says what and how to fix it."""
 
 
-def add_run_arguments(parser: argparse.ArgumentParser, default_out: str, seed_help: str | None = None,
-                      observation: bool = True) -> None:
+def add_run_arguments(parser: argparse.ArgumentParser, default_out: str | None, seed_help: str | None = None,
+                      observation: bool = True, tables_default: str | None = None) -> None:
     """(``seed_help``: the help of --seed where a command reads it otherwise) --games, --seed,
     --cycles, --observation (not with ``observation`` False: a command that fixes it), --workers,
-    --backend, --address, --out, --tables,
+    --backend, --address, --out (not with ``default_out`` None: a command that names its results
+    files with options of its own), --tables (``tables_default``: what its help says the default
+    is, where it is not derived from --out),
     --match-timeout, --retry-errors, --record-dir, --rcg-dir, --record-every, --no-progress, --same-code."""
     from experiments.runner.run import BACKENDS, DEFAULT_MATCH_TIMEOUT
 
@@ -52,11 +54,12 @@ def add_run_arguments(parser: argparse.ArgumentParser, default_out: str, seed_he
     parser.add_argument("--ship-code", action=argparse.BooleanOptionalAction, default=True,
                         help="with --backend ray: send this machine's project code to every node with the job "
                              "(default: on); --no-ship-code: the nodes must have the same code installed")
-    parser.add_argument("--out", default=default_out,
-                        help=f"SQLite results file; re-running the same command continues it (default: {default_out})")
+    if default_out is not None:
+        parser.add_argument("--out", default=default_out,
+                            help=f"SQLite results file; re-running the same command continues it (default: {default_out})")
     parser.add_argument("--tables", default=None, metavar="DIR",
-                        help="where the CSV/Markdown tables and the PNG go (default: the --out name without its "
-                             "extension, plus '-tables')")
+                        help="where the CSV/Markdown tables and the PNG go (default: "
+                             f"{tables_default or 'the --out name without its extension, plus ' + repr('-tables')})")
     parser.add_argument("--match-timeout", type=ranged("match-timeout"), default=DEFAULT_MATCH_TIMEOUT, metavar="SECONDS",
                         help=f"a match taking longer is stopped and forfeited (default: {DEFAULT_MATCH_TIMEOUT:g})")
     parser.add_argument("--retry-errors", action="store_true", help="play stored forfeits again")

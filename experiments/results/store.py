@@ -177,6 +177,12 @@ class ResultStore:
         return self.meta()["kind"]
 
     @property
+    def engine(self) -> str:
+        """Where the file's matches were played: ``simulator`` or another engine's name (the
+        ``engine`` of its configuration's description)."""
+        return _engine(self.meta().get("config", ""))
+
+    @property
     def params(self) -> dict[str, object]:
         """The parameters of the command that made the file; ResultsError if they are damaged."""
         try:
@@ -392,7 +398,7 @@ def stored_engine(path: str | os.PathLike) -> str | None:
         return None
     try:
         with ResultStore.open(path) as store:
-            return _engine(store.meta().get("config", ""))
+            return store.engine
     except (ResultsError, sqlite3.Error):
         return None
 
