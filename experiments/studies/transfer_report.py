@@ -226,7 +226,7 @@ def transfer_tables(design: Design, halves: dict[str, EngineResults],
     the games per pairing asked for in each engine (default: what each engine's first file
     asked), to name the rows that hold fewer."""
     engines = [e for e in ENGINE_ORDER if e in halves] + [e for e in halves if e not in ENGINE_ORDER]
-    asked = {e: (asked or {}).get(e, halves[e].asked) for e in engines}
+    asked = {e: (asked or {}).get(e) or halves[e].asked for e in engines}
     out = TransferTables()
     _goal_table(design, halves, engines, asked, out)
     _paired_table(design, halves, engines, out)

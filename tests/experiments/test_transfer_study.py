@@ -179,6 +179,8 @@ def test_a_partial_file_reports_what_it_holds_and_says_how_many_games_each_row_h
     agreement = read_csv(tmp_path / "tables" / "transfer-rank-agreement.csv")
     assert int(next(r for r in agreement if r["opponent"] == "counter-442")["teams"]) == 2   # greedy unranked there
     assert "fewer games than asked" in (tmp_path / "tables" / "transfer.md").read_text()
+    assert report(tmp_path, sim, real) == 0          # without --games-real: the games the file's run asked for
+    assert "greedy v helios-base in rcssserver (0 of 2)" in capsys.readouterr().out
 
 
 def test_one_engine_alone(tmp_path, both, capsys):
