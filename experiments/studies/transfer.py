@@ -44,6 +44,11 @@ OPTIONS = {SIMULATOR: ("--out-sim", "--read-sim", "--games-sim"), RCSS: ("--out-
 """Each engine's options: its results file, the more files the report reads, its games."""
 
 
+def option_value(args: argparse.Namespace, option: str):
+    """The value of ``option`` (e.g. ``--out-sim``) in ``args``."""
+    return getattr(args, option[2:].replace("-", "_"))
+
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     from experiments.commands.run_options import add_run_arguments, add_team_option
     from experiments.limits import ranged
@@ -73,7 +78,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="another results file of the simulator's matches the report reads, never written "
                              "(repeatable)")
     parser.add_argument("--read-real", action="append", default=[], metavar="FILE",
-                        help="another results file of rcssserver's matches the report reads, never written (repeatable)")
+                        help="another results file of rcssserver's matches the report reads, never written "
+                             "(repeatable)")
     parser.add_argument("--engine-only", choices=ENGINES, default=None,
                         help="play (or, with --report-only, report) one engine's half only; the report still reads "
                              "the other engine's --out file when it exists")
@@ -98,7 +104,7 @@ def half_args(args: argparse.Namespace, engine: str) -> argparse.Namespace:
     two halves' logs have the same names)."""
     half = argparse.Namespace(**vars(args))
     half.engine = engine
-    half.out = args.out_real if engine == RCSS else args.out_sim
+    half.out = option_value(args, OPTIONS[engine][0])
     if args.rcg_dir is not None:
         half.rcg_dir = str(Path(args.rcg_dir) / engine)
     if engine == RCSS:
@@ -121,9 +127,10 @@ def plan_params(args: argparse.Namespace) -> dict[str, dict]:
         raise RunInputError(f"--teams: {foreign[0]} plays in rcssserver only, and the compared teams play in both "
                             "engines: name it in --opponents")
     opponents = team_list(args.opponents, "--opponents", minimum=0, external=real.external_names)
-    mirror = [] if args.no_mirror else [_mirror(text, real.external_names) for text in (args.mirror or [",".join(DEFAULT_MIRROR)])]
     if args.no_mirror and args.mirror:
         raise RunInputError("--no-mirror and --mirror contradict each other: give one")
+    given = [] if args.no_mirror else (args.mirror or [",".join(DEFAULT_MIRROR)])
+    mirror = [_mirror(text, real.external_names) for text in given]
     if args.baseline not in teams:
         raise RunInputError(f"--baseline {args.baseline!r} must be one of --teams ({', '.join(teams)})")
     if not opponents and not mirror:
@@ -156,7 +163,7 @@ def _mirror(text: str, external: Sequence[str]) -> list[str]:
 
 def games_of(args: argparse.Namespace, engine: str) -> int | None:
     """The games per pairing the options give ``engine`` (None: not given)."""
-    return args.games_real if engine == RCSS else args.games_sim
+    return option_value(args, OPTIONS[engine][2])
 
 
 def build_specs(params: dict) -> list:
@@ -238,7 +245,7 @@ def _tables_dir(args: argparse.Namespace) -> Path:
     from experiments.results.files import directory_problem, name_problem
 
     for option in ("--out-sim", "--out-real"):
-        value = getattr(args, option[2:].replace("-", "_"))
+        value = option_value(args, option)
         problem = name_problem(value)
         if problem:
             raise RunInputError(f"{option} {value!r}: {problem}")
@@ -325,8 +332,8 @@ def report_files(args: argparse.Namespace, params: dict[str, dict], out_dir: Pat
             if args.report_only and engine not in chosen:
                 continue
             out_option, read_option, _ = OPTIONS[engine]
-            out = getattr(args, out_option[2:].replace("-", "_"))
-            files = [(read_option, path) for path in getattr(args, read_option[2:].replace("-", "_"))]
+            out = option_value(args, out_option)
+            files = [(read_option, path) for path in option_value(args, read_option)]
             if args.report_only or Path(out).is_file():
                 files.insert(0, (out_option, out))
             if files:

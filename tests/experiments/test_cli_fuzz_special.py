@@ -48,6 +48,7 @@ TOURNAMENT = ("tournament", "--teams", "idle,chaser", "--games", "2", "--cycles"
 INCREMENTAL = ("experiment", "incremental", "--n", "8", "--trials", "1")
 LAZY = ("bench", "lazy-assignment", "--sizes", "8", "--robots", "3", "--densities", "0.1", "--sizes-3d", "",
         "--repeats", "1")
+TRANSFER = ("experiment", "transfer", "--report-only", "--engine-only")
 DISTRIBUTED = ("experiment", "distributed", "--grid-sizes", "", "--etsp-sizes", "4", "--worst-sizes", "4",
                "--sweep-areas", "", "--trials", "1")
 
@@ -76,6 +77,9 @@ SLOTS = [
     Slot("results export FILE", ("results", "export", "{p}", "--csv", "out.csv")),
     Slot("replay FILE", ("replay", "{p}", "--png", "out.png"), at="x.rrd"),
     Slot("replay --results", ("replay", "--results", "{p}", "--row", "0", "--out", "out.rrd")),
+    Slot("experiment transfer --out-real", (*TRANSFER, "rcssserver", "--out-real", "{p}"), at="x.sqlite"),
+    Slot("experiment transfer --read-sim", (*TRANSFER, "simulator", "--out-sim", "results.sqlite", "--read-sim", "{p}"),
+         at="x.sqlite"),
     # outputs
     Slot("formation show --out", ("formation", "show", "4-4-2", "--out", "{p}"), at="x.png", directory_ok=True),
     Slot("formation import OUT", ("formation", "import", "helios", "agent2d.conf", "{p}"), at="x.json"),

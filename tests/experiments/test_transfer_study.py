@@ -100,7 +100,8 @@ def expected_paired(engine: str, opponent: str, seeds) -> tuple[float, float, in
     """mmdr minus static on the same seed and side: mean, SE and pairs, computed by hand."""
     differences = [team_gd(engine, "mmdr", opponent, s, side) - team_gd(engine, "static", opponent, s, side)
                    for s in seeds for side in (0, 1)]
-    return float(np.mean(differences)), float(np.std(differences, ddof=1) / math.sqrt(len(differences))), len(differences)
+    n = len(differences)
+    return float(np.mean(differences)), float(np.std(differences, ddof=1) / math.sqrt(n)), n
 
 
 # ---------------------------------------------------------------------------------- the report
