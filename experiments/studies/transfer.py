@@ -25,6 +25,7 @@ helios-base's. Written as CSV and Markdown to ``--tables``.
 from __future__ import annotations
 
 import argparse
+import sys
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -99,7 +100,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def half_args(args: argparse.Namespace, engine: str) -> argparse.Namespace:
     """The options of one engine's run, as a command that plays in that engine reads them
     (``--engine``, ``--out``, ``--workers`` ...): the simulator's half takes ``--workers``,
-    ``--backend`` and ``--record-dir``; the server's ``--workers-real``, the local pool, the
+    ``--backend`` and ``--record-dir``; the server's ``--workers-real`` (default
+    :data:`~experiments.rcss_runs.DEFAULT_WORKERS`), the local pool, the
     server's build and the external teams. ``--rcg-dir`` gets a sub-directory per engine (the
     two halves' logs have the same names)."""
     half = argparse.Namespace(**vars(args))
@@ -108,7 +110,10 @@ def half_args(args: argparse.Namespace, engine: str) -> argparse.Namespace:
     if args.rcg_dir is not None:
         half.rcg_dir = str(Path(args.rcg_dir) / engine)
     if engine == RCSS:
-        half.workers, half.backend, half.address, half.record_dir = args.workers_real, "local", None, None
+        from experiments.rcss_runs import DEFAULT_WORKERS
+
+        half.workers = args.workers_real or DEFAULT_WORKERS
+        half.backend, half.address, half.record_dir = "local", None, None
     else:
         half.external, half.rcss_home = [], None
     return half
@@ -205,6 +210,9 @@ def run(args: argparse.Namespace) -> int:
             if args.plan:
                 print_plan(specs, halves)
                 return 0
+            if RCSS in halves and args.workers_real is None:
+                print(f"rcssserver: {halves[RCSS].workers} match at a time (one keeps about two cores busy; "
+                      "--workers-real N plays N at once)", file=sys.stderr)
             for engine, half in halves.items():
                 if not specs[engine]:
                     print(f"{engine}: no pairing to play")

@@ -273,8 +273,8 @@ def _paired_table(design: Design, halves: dict, engines: list[str], out: Transfe
     from experiments.stats import p_text, paired_comparison
 
     columns = [(e, o) for e in engines for o in design.references if design.plays(e, o)]
-    if design.baseline not in design.teams or not columns:
-        return
+    if design.baseline not in design.teams or len(design.teams) < 2 or not columns:
+        return                                              # nobody to compare with the baseline
     table = Table(f"goal difference minus {design.baseline}'s, paired on the same opponent, seed and side: "
                   "mean (SE), p, pairs", ["team", *(f"{e} v {o}" for e, o in columns)])
     for team in design.teams:
