@@ -125,6 +125,7 @@ def plan_params(args: argparse.Namespace) -> dict[str, dict]:
     option for bad input."""
     from experiments.commands.run_options import RunInputError, check_observation, team_list
     from experiments.rcss_runs import EngineChoice
+    from experiments.studies.transfer_report import Design
 
     real = EngineChoice.from_args(half_args(args, RCSS))
     teams = team_list(args.teams, "--teams", external=real.external_names)
@@ -145,12 +146,14 @@ def plan_params(args: argparse.Namespace) -> dict[str, dict]:
                             "engines, give each its own")
     if not args.report_only:
         check_observation(real.ours([*teams, *opponents, *(n for pair in mirror for n in pair)]), "partial")
+    design = Design(tuple(teams), tuple(opponents), tuple((a, b) for a, b in mirror), args.baseline,
+                    frozenset(real.external_names))
     params = {}
     for engine in ENGINES:
         choice = real if engine == RCSS else EngineChoice(SIMULATOR, {})
-        playable = [o for o in opponents if engine == RCSS or o in real.ours([o])]
-        params[engine] = {"teams": teams, "opponents": playable, "baseline": args.baseline,
-                          "mirror": [list(pair) for pair in mirror if engine == RCSS or real.ours(list(pair)) == pair],
+        params[engine] = {"teams": teams, "opponents": [o for o in opponents if design.plays(engine, o)],
+                          "baseline": args.baseline,
+                          "mirror": [[a, b] for a, b in mirror if design.plays(engine, a, b)],
                           "games": games_of(args, engine) or DEFAULT_GAMES[engine], "seed": args.seed,
                           "cycles": args.cycles, "observation": "partial", **choice.params()}
     return params
