@@ -37,6 +37,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from experiments.errors import ExperimentError
 from experiments.rcss_runs import RCSS
 from experiments.runner.spec import SIMULATOR
 
@@ -56,7 +57,7 @@ STATISTICS = (("goals", "goals", 1.0), ("shots", "shots", 1.0), ("passes", "pass
 server)."""
 
 
-class TransferInputError(ValueError):
+class TransferInputError(ExperimentError):
     """Results files the report cannot use together; the message names the option and file."""
 
 

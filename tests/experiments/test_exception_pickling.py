@@ -44,6 +44,7 @@ EXAMPLES: dict[str, tuple] = {
     "experiments.runner.local.MatchFailed": ("WorkerDied: the worker process ended with exit code 0", 1),
     "experiments.runner.ray_cluster.RayUnavailable": ("no ray",),
     "experiments.commands.run_options.RunInputError": ("--teams: unknown team",),
+    "experiments.studies.transfer_report.TransferInputError": ("--out-real r.sqlite: no such results file",),
     "experiments.errors.ParameterError": ("record_every", "must be at least 1, got 0"),
     "experiments.runner.run.MixedCodeVersions": ("r.sqlite", "0.0.1+old", "0.2.0+abc"),
     "experiments.runner.run.MixedCodeWarning": ("r.sqlite", "0.0.1+old", "0.2.0+abc"),
