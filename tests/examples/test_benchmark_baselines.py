@@ -51,9 +51,12 @@ def test_the_plan_trains_every_seed_of_a_scenario_before_the_next_and_ppo_first(
     assert [(r.scenario, r.seed) for r in runs[:4]] == [("empty-goal", 0), ("empty-goal", 1), ("empty-goal", 2),
                                                          ("run-to-score-with-keeper", 0)]
     per_algorithm = len(bb.SCENARIOS) * len(bb.SEEDS)
-    assert [r.algorithm for r in runs] == [bb.PPO] * per_algorithm + [bb.MAPPO] * per_algorithm
+    seeds = len(bb.SEEDS)
+    assert [r.algorithm for r in runs] == ([bb.PPO] * per_algorithm + [bb.MAPPO] * per_algorithm
+                                           + [bb.PPO] * seeds + [bb.MAPPO] * seeds)  # the full match last
     assert runs[0].directory(Path("o")) == Path("o/ppo-shared/empty-goal/seed-0")
     assert runs[per_algorithm].directory(Path("o")) == Path("o/mappo/empty-goal/seed-0")
+    assert all(r.opponent == bb.OPPONENT for r in runs[:2 * per_algorithm])  # the academy's folders and names as ever
 
 
 def test_checkpoints_fall_every_interval_and_on_the_budget() -> None:
@@ -147,7 +150,8 @@ def test_a_rerun_skips_finished_runs_evaluates_trained_ones_and_continues_the_re
     write_run(out, scenario, 2, [51_200])             # interrupted
     evaluated, trained = [], []
 
-    def stand_in_evaluate(team, scenario_name, directory, episodes):
+    def stand_in_evaluate(team, scenario_name, directory, episodes, opponent):
+        assert opponent == bb.OPPONENT
         evaluated.append((team, directory.name))
         write_evaluation(directory, 0.5, 0.4, 0.6, 0.5, episodes)
 
@@ -171,7 +175,7 @@ def test_a_failed_evaluation_is_reported_and_the_others_still_run(tmp_path, monk
     out = tmp_path / "runs"
     calls = []
 
-    def failing(team, scenario, directory, episodes):
+    def failing(team, scenario, directory, episodes, opponent):
         calls.append(scenario)
         raise bb.BenchmarkError(f"soccer-sim evaluate of {team} on {scenario} failed (exit status 2)")
 
