@@ -169,6 +169,8 @@ def markdown(baselines: Baselines, budget: int) -> str:
     if baselines.unfinished:
         lines += ["", "Runs not finished (not in the table):", ""]
         lines += [f"- {status.spec.name}: {status.state}, {status.env_steps:,} of {budget:,} environment steps"
+                  + (f", evaluated against {status.evaluations_done} of "
+                     f"{len(evaluations(status.spec.scenario, Path()))} opponents" if status.state == "trained" else "")
                   for status in baselines.unfinished]
     return "\n".join(lines) + "\n"
 
