@@ -1,21 +1,25 @@
 """The benchmark's baselines, trained and evaluated by one command: PPO with one policy shared by
 the controlled players (Stable-Baselines3 + SuperSuit, the recipe of ``ppo_shared_policy.py``)
-on the academy scenarios at a fixed budget of environment steps, 3 seeds each, every run
-checkpointed, resumable and evaluated by ``soccer-sim evaluate``; random actions evaluated the
-same way. The protocol and the table: docs/benchmark.md.
+and MAPPO (``benchmark_mappo.py``) on the academy scenarios and on the full match at a fixed
+budget of environment steps, 3 seeds each, every run checkpointed, resumable and evaluated by
+``soccer-sim evaluate``; random actions evaluated the same way. The full match is trained
+against one rung of a difficulty ladder of built-in teams (:data:`LADDER_TRAINING_OPPONENT`)
+and evaluated against every rung (:data:`LADDER`). The protocol and the table:
+docs/benchmark.md.
 
     pip install torch --index-url https://download.pytorch.org/whl/cpu
-    pip install stable-baselines3 supersuit
+    pip install stable-baselines3 supersuit torchrl
     nohup nice -n 15 python examples/benchmark_baselines.py run --out runs/rl > runs/rl.log 2>&1 &
     python examples/benchmark_baselines.py status --out runs/rl
     python examples/benchmark_baselines.py report --out runs/rl --docs docs
 
-``run`` evaluates the random-actions baseline on every scenario, then trains and evaluates the
-planned runs one at a time, in order (every seed of ``empty-goal``, then of
-``run-to-score-with-keeper``, ``3-vs-1-with-keeper``, ``counter-attack``). Re-running the same
-command skips finished runs, continues an unfinished one from its last checkpoint and an
-interrupted evaluation from its last stored episode; a larger ``--budget`` continues finished
-runs. Only one ``run`` works on an output folder at a time. ``status`` shows where every run is
+``run`` evaluates the random-actions baseline on every scenario (on the full match against every
+rung), then trains and evaluates the planned runs one at a time, in order (every seed of
+``empty-goal``, then of ``run-to-score-with-keeper``, ``3-vs-1-with-keeper``,
+``counter-attack``, PPO's runs before MAPPO's; then the full match's, PPO's before MAPPO's).
+Re-running the same command skips finished runs and evaluations, continues an unfinished run
+from its last checkpoint and an interrupted evaluation from its last stored episode; a larger
+``--budget`` continues finished runs. Only one ``run`` works on an output folder at a time. ``status`` shows where every run is
 and the wall time left at the speeds measured so far; ``report`` writes the table of finished
 runs and the learning curves (``examples/benchmark_report.py``).
 
@@ -50,12 +54,13 @@ PLANNED = (*SCENARIOS, FULL_MATCH)
 PLAYERS = {"empty-goal": 1, "run-to-score-with-keeper": 1, "3-vs-1-with-keeper": 3, "counter-attack": 4,
            FULL_MATCH: 11}
 """Controlled players (the home side) of each scenario: agent steps per environment step."""
-LADDER = ("idle", "chaser", "possession", "counter-442", "press-433", "static", "mmd+msd2")
-"""The full match's opponents, weakest first: the order of their mean goal difference in a round
-robin of the seven (docs/benchmark.md, "The difficulty ladder", gives the command and figures)."""
+LADDER = ("idle", "chaser", "counter-442", "possession", "static", "press-433", "mmd+msd2")
+"""The full match's opponents, weakest first: the order of their points in a round robin of the
+seven, each rung beating the one below it head to head (docs/benchmark.md, "The difficulty
+ladder", gives the commands and figures)."""
 LADDER_TRAINING_OPPONENT = "chaser"
-"""The away side the full-match runs train against: the lowest rung that plays the ball, so
-that the dense rewards for possession and progress are contested (docs/benchmark.md)."""
+"""The away side the full-match runs train against: the lowest rung that plays the ball and
+scores, so that both goal terms of the reward occur from the first episodes (docs/benchmark.md)."""
 FULL_MATCH_EPISODES = 10
 """Episodes (full matches) of each evaluation against a rung (``--full-match-episodes``)."""
 SEEDS = (0, 1, 2)
