@@ -235,6 +235,15 @@ def test_the_ladder_runs_from_idle_and_chaser_to_the_best_built_in_team() -> Non
     assert bb.LADDER_TRAINING_OPPONENT in bb.LADDER
 
 
+def test_the_documented_ladder_is_the_one_the_driver_evaluates_against() -> None:
+    import re
+
+    text = (Path(__file__).resolve().parents[2] / "docs" / "benchmark.md").read_text()
+    rows = re.findall(r"^\| (\d+) \| `([^`]+)` \|", text, flags=re.MULTILINE)
+    assert rows == [(str(k), rung) for k, rung in enumerate(bb.LADDER, start=1)]
+    assert f"trained against `{bb.LADDER_TRAINING_OPPONENT}`" in text
+
+
 def test_a_full_match_policy_is_evaluated_against_every_rung_in_its_own_folder(tmp_path) -> None:
     run_dir = tmp_path / "run"
     planned = bb.evaluations(bb.FULL_MATCH, run_dir, 501_760)
@@ -516,3 +525,23 @@ def test_a_resumed_mappo_run_trains_exactly_as_an_uninterrupted_one(tmp_path) ->
     size = parallel_env(scenario="3-vs-1-with-keeper", controlled="left").observation_space("left_0").shape[0]
     actions = policy.act_batch(np.zeros((3, size), dtype=np.float32))
     assert actions.shape == (3, 5) and np.all(np.abs(actions) <= 1.0)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("algorithm", [bb.PPO, bb.MAPPO])
+def test_a_full_match_run_trains_its_eleven_players_against_the_training_rung(tmp_path, algorithm) -> None:
+    pytest.importorskip("torchrl" if algorithm == bb.MAPPO else "stable_baselines3")
+    pytest.importorskip("supersuit")
+    import json
+    from dataclasses import replace
+
+    spec = next(spec for spec in bb.plan() if spec.scenario == bb.FULL_MATCH and spec.algorithm == algorithm)
+    args = bb.parse_args(["run", "--out", str(tmp_path), "--matches", "1", "--checkpoint-every", "64"])
+    settings = replace(bb.settings_for(spec, args), n_steps=64, batch_size=64)
+    assert bb.trainer(algorithm)(settings, spec.directory(tmp_path), 64) == 64
+    assert json.loads((spec.directory(tmp_path) / "run.json").read_text())["opponent"] == "chaser"
+    assert [(row["env_steps"], row["agent_steps"]) for row in bb.read_curve(spec.directory(tmp_path) / "curve.csv")] \
+        == [(64, 64 * 11)]
+    status = bb.run_status(spec, tmp_path, 64)
+    assert (status.state, status.evaluations_done) == ("trained", 0)
+    assert bb.policy_file(spec, spec.directory(tmp_path), 64).is_file()
