@@ -19,9 +19,10 @@ rung), then trains and evaluates the planned runs one at a time, in order (every
 ``counter-attack``, PPO's runs before MAPPO's; then the full match's, PPO's before MAPPO's).
 Re-running the same command skips finished runs and evaluations, continues an unfinished run
 from its last checkpoint and an interrupted evaluation from its last stored episode; a larger
-``--budget`` continues finished runs. Only one ``run`` works on an output folder at a time. ``status`` shows where every run is
-and the wall time left at the speeds measured so far; ``report`` writes the table of finished
-runs and the learning curves (``examples/benchmark_report.py``).
+``--budget`` continues finished runs. Only one ``run`` works on an output folder at a time.
+``status`` shows where every run is and the wall time left at the speeds measured so far;
+``report`` writes the table of finished runs and the learning curves
+(``examples/benchmark_report.py``).
 
 One *environment step* is one cycle of one match, whatever the number of controlled players;
 Stable-Baselines3 counts agent steps (environment steps times the players sharing the policy).

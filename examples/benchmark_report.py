@@ -27,8 +27,8 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from examples.benchmark_baselines import (ALGORITHMS, CURVE_FIELDS, FULL_MATCH, MAPPO, OPPONENT, PPO, RANDOM,
-                                          BenchmarkError, RunStatus, evaluations, plan, random_dir, read_curve,
-                                          run_status, training_opponent)
+                                          BenchmarkError, RunSpec, RunStatus, evaluations, plan, random_dir,
+                                          read_curve, run_status, training_opponent)
 from experiments.stats import Estimate, estimate
 
 BEGIN = "<!-- benchmark table: written by examples/benchmark_baselines.py report -->"
@@ -99,7 +99,7 @@ def aggregate(out: Path, scenarios: Sequence[str], seeds: Sequence[int], budget:
     """The table's rows and the runs not finished (see the module docstring)."""
     rows, unfinished = [], []
     for scenario in scenarios:
-        finished: dict[str, list[tuple[str, Path]]] = {}
+        finished: dict[str, list[tuple[RunSpec, int]]] = {}   # algorithm: (run, its environment steps)
         for algorithm in algorithms:
             finished[algorithm] = []
             for spec in plan([scenario], seeds, [algorithm]):
@@ -108,13 +108,13 @@ def aggregate(out: Path, scenarios: Sequence[str], seeds: Sequence[int], budget:
                     finished[algorithm].append((spec, status.env_steps))
                 else:
                     unfinished.append(status)
-        for index, (opponent, directory) in enumerate(evaluations(scenario, random_dir(out, scenario))):
+        for opponent, directory in evaluations(scenario, random_dir(out, scenario)):
             baseline = read_evaluation(directory)
             if baseline is not None:
                 rows.append(TableRow(scenario, RANDOM, None, 1, baseline.goal_rate, baseline.score_difference,
                                      interval=f"{baseline.episodes} episodes", opponent=opponent))
             for algorithm in algorithms:
-                results = [read_evaluation(evaluations(scenario, spec.directory(out), steps)[index][1])
+                results = [read_evaluation(dict(evaluations(scenario, spec.directory(out), steps))[opponent])
                            for spec, steps in finished[algorithm]]
                 if results:
                     rates = [result.goal_rate.mean for result in results]
