@@ -1,23 +1,28 @@
 """The benchmark's baselines, trained and evaluated by one command: PPO with one policy shared by
 the controlled players (Stable-Baselines3 + SuperSuit, the recipe of ``ppo_shared_policy.py``)
-on the academy scenarios at a fixed budget of environment steps, 3 seeds each, every run
-checkpointed, resumable and evaluated by ``soccer-sim evaluate``; random actions evaluated the
-same way. The protocol and the table: docs/benchmark.md.
+and MAPPO (``benchmark_mappo.py``) on the academy scenarios and on the full match at a fixed
+budget of environment steps, 3 seeds each, every run checkpointed, resumable and evaluated by
+``soccer-sim evaluate``; random actions evaluated the same way. The full match is trained
+against one rung of a difficulty ladder of built-in teams (:data:`LADDER_TRAINING_OPPONENT`)
+and evaluated against every rung (:data:`LADDER`). The protocol and the table:
+docs/benchmark.md.
 
     pip install torch --index-url https://download.pytorch.org/whl/cpu
-    pip install stable-baselines3 supersuit
+    pip install stable-baselines3 supersuit torchrl
     nohup nice -n 15 python examples/benchmark_baselines.py run --out runs/rl > runs/rl.log 2>&1 &
     python examples/benchmark_baselines.py status --out runs/rl
     python examples/benchmark_baselines.py report --out runs/rl --docs docs
 
-``run`` evaluates the random-actions baseline on every scenario, then trains and evaluates the
-planned runs one at a time, in order (every seed of ``empty-goal``, then of
-``run-to-score-with-keeper``, ``3-vs-1-with-keeper``, ``counter-attack``). Re-running the same
-command skips finished runs, continues an unfinished one from its last checkpoint and an
-interrupted evaluation from its last stored episode; a larger ``--budget`` continues finished
-runs. Only one ``run`` works on an output folder at a time. ``status`` shows where every run is
-and the wall time left at the speeds measured so far; ``report`` writes the table of finished
-runs and the learning curves (``examples/benchmark_report.py``).
+``run`` evaluates the random-actions baseline on every scenario (on the full match against every
+rung), then trains and evaluates the planned runs one at a time, in order (every seed of
+``empty-goal``, then of ``run-to-score-with-keeper``, ``3-vs-1-with-keeper``,
+``counter-attack``, PPO's runs before MAPPO's; then the full match's, PPO's before MAPPO's).
+Re-running the same command skips finished runs and evaluations, continues an unfinished run
+from its last checkpoint and an interrupted evaluation from its last stored episode; a larger
+``--budget`` continues finished runs. Only one ``run`` works on an output folder at a time.
+``status`` shows where every run is and the wall time left at the speeds measured so far;
+``report`` writes the table of finished runs and the learning curves
+(``examples/benchmark_report.py``).
 
 One *environment step* is one cycle of one match, whatever the number of controlled players;
 Stable-Baselines3 counts agent steps (environment steps times the players sharing the policy).
@@ -42,8 +47,23 @@ CHECKOUT = Path(__file__).resolve().parents[1]
 
 SCENARIOS = ("empty-goal", "run-to-score-with-keeper", "3-vs-1-with-keeper", "counter-attack")
 """The academy scenarios of the benchmark, in the order they are trained."""
-PLAYERS = {"empty-goal": 1, "run-to-score-with-keeper": 1, "3-vs-1-with-keeper": 3, "counter-attack": 4}
+FULL_MATCH = "full-match"
+"""The regular match (11 a side, 6000 cycles), trained against :data:`LADDER_TRAINING_OPPONENT`
+and evaluated against every rung of :data:`LADDER`; planned after the academy scenarios."""
+PLANNED = (*SCENARIOS, FULL_MATCH)
+"""Every scenario of the benchmark, in the order of the plan."""
+PLAYERS = {"empty-goal": 1, "run-to-score-with-keeper": 1, "3-vs-1-with-keeper": 3, "counter-attack": 4,
+           FULL_MATCH: 11}
 """Controlled players (the home side) of each scenario: agent steps per environment step."""
+LADDER = ("idle", "chaser", "counter-442", "possession", "static", "press-433", "mmd+msd2")
+"""The full match's opponents, weakest first: the order of their points in a round robin of the
+seven, each rung beating the one below it head to head (docs/benchmark.md, "The difficulty
+ladder", gives the commands and figures)."""
+LADDER_TRAINING_OPPONENT = "chaser"
+"""The away side the full-match runs train against: the lowest rung that plays the ball and
+scores, so that both goal terms of the reward occur from the first episodes (docs/benchmark.md)."""
+FULL_MATCH_EPISODES = 10
+"""Episodes (full matches) of each evaluation against a rung (``--full-match-episodes``)."""
 SEEDS = (0, 1, 2)
 BUDGET = 500_000
 """Environment steps of a run (rounded up to whole PPO rollouts)."""
@@ -103,29 +123,47 @@ class Settings:
         return self.n_steps * self.matches
 
 
+def training_opponent(scenario: str) -> str:
+    """The away side a run on ``scenario`` trains against: the ladder's training rung on the full
+    match, :data:`OPPONENT` on the academy scenarios."""
+    return LADDER_TRAINING_OPPONENT if scenario == FULL_MATCH else OPPONENT
+
+
+def scenario_label(scenario: str, opponent: str) -> str:
+    """``scenario`` when the away side is the default :data:`OPPONENT` (the academy's folders and
+    names), else ``scenario-v-opponent`` (``full-match-v-chaser``)."""
+    return scenario if opponent == OPPONENT else f"{scenario}-v-{opponent}"
+
+
 @dataclass(frozen=True)
 class RunSpec:
-    """One planned run: ``algorithm`` (:data:`PPO`) on ``scenario`` with ``seed``."""
+    """One planned run: ``algorithm`` (:data:`PPO`) on ``scenario`` with ``seed``, trained
+    against ``opponent``."""
 
     algorithm: str
     scenario: str
     seed: int
+    opponent: str = OPPONENT
 
     def directory(self, out: Path) -> Path:
-        return out / self.algorithm / self.scenario / f"seed-{self.seed}"
+        """``OUT/ALGORITHM/SCENARIO/seed-S`` (``OUT/ALGORITHM/full-match-v-chaser/seed-S``)."""
+        return out / self.algorithm / scenario_label(self.scenario, self.opponent) / f"seed-{self.seed}"
 
     @property
     def name(self) -> str:
         """The run's team name in evaluation tables."""
-        return f"{self.algorithm}-{self.scenario}-s{self.seed}"
+        return f"{self.algorithm}-{scenario_label(self.scenario, self.opponent)}-s{self.seed}"
 
 
-def plan(scenarios: Sequence[str] = SCENARIOS, seeds: Sequence[int] = SEEDS,
+def plan(scenarios: Sequence[str] = PLANNED, seeds: Sequence[int] = SEEDS,
          algorithms: Sequence[str] = ALGORITHMS) -> list[RunSpec]:
-    """The runs in the order they are trained: every run of an algorithm before the next
-    algorithm's, every seed of a scenario before the next scenario."""
-    return [RunSpec(algorithm, scenario, seed) for algorithm in algorithms for scenario in scenarios
-            for seed in seeds]
+    """The runs in the order they are trained: the academy scenarios first, every run of an
+    algorithm before the next algorithm's, every seed of a scenario before the next scenario;
+    then the full match's runs in the same order."""
+    stages = ([scenario for scenario in scenarios if scenario != FULL_MATCH],
+              [scenario for scenario in scenarios if scenario == FULL_MATCH])
+    return [RunSpec(algorithm, scenario, seed, training_opponent(scenario)) for stage in stages
+            for algorithm in algorithms for scenario in stage for seed in seeds]
 
 
 def checkpoint_targets(budget: int, every: int) -> list[int]:
@@ -159,9 +197,27 @@ def checkpoints(run_dir: Path, algorithm: str = PPO) -> list[tuple[int, Path]]:
     return sorted(found)
 
 
-def evaluation_dir(run_dir: Path, env_steps: int | None = None) -> Path:
-    """Where the evaluation of the checkpoint at ``env_steps`` goes (None: the random baseline's)."""
-    return run_dir / ("evaluation" if env_steps is None else f"evaluation-{env_steps:09d}")
+def evaluation_dir(run_dir: Path, env_steps: int | None = None, rung: str | None = None) -> Path:
+    """Where the evaluation of the checkpoint at ``env_steps`` goes (None: the random baseline's),
+    against the ladder's ``rung`` (``evaluation-N-v-RUNG``) or the academy's :data:`OPPONENT`
+    (None: ``evaluation-N``)."""
+    name = "evaluation" if env_steps is None else f"evaluation-{env_steps:09d}"
+    return run_dir / (name if rung is None else f"{name}-v-{rung}")
+
+
+def evaluations(scenario: str, run_dir: Path, env_steps: int | None = None) -> list[tuple[str, Path]]:
+    """The evaluations a policy on ``scenario`` gets, (opponent, folder): one against
+    :data:`OPPONENT` on an academy scenario, one against every rung of :data:`LADDER` on the full
+    match. ``run_dir`` is a run's folder, or random actions' ``OUT/random-actions/SCENARIO``
+    with ``env_steps`` None."""
+    if scenario == FULL_MATCH:
+        return [(rung, evaluation_dir(run_dir, env_steps, rung)) for rung in LADDER]
+    return [(OPPONENT, evaluation_dir(run_dir, env_steps))]
+
+
+def random_dir(out: Path, scenario: str) -> Path:
+    """Random actions' folder on ``scenario`` (they do not train: their evaluations alone)."""
+    return out / RANDOM / scenario
 
 
 def evaluated(directory: Path) -> bool:
@@ -180,12 +236,14 @@ class RunStatus:
     checkpoint: Path | None
     wall_s: float
     """Training wall time up to that checkpoint."""
+    evaluations_done: int = 0
+    """Evaluations of that checkpoint finished, of :func:`evaluations`' (at the budget only)."""
 
 
 def run_status(spec: RunSpec, out: Path, budget: int) -> RunStatus:
     """The status of ``spec``'s run in ``out`` for ``budget``: pending (no checkpoint), training
-    (its last checkpoint below the budget), trained (at the budget, not yet evaluated) or
-    finished (that checkpoint evaluated)."""
+    (its last checkpoint below the budget), trained (at the budget, not yet evaluated against
+    every opponent of :func:`evaluations`) or finished (that checkpoint evaluated against all)."""
     run_dir = spec.directory(out)
     saved = checkpoints(run_dir, spec.algorithm)
     if not saved:
@@ -194,10 +252,10 @@ def run_status(spec: RunSpec, out: Path, budget: int) -> RunStatus:
     wall = read_curve(run_dir / "curve.csv", steps)
     wall_s = float(wall[-1]["wall_s"]) if wall else 0.0
     if steps < budget:
-        state = "training"
-    else:
-        state = "finished" if evaluated(evaluation_dir(run_dir, steps)) else "trained"
-    return RunStatus(spec, state, steps, path, wall_s)
+        return RunStatus(spec, "training", steps, path, wall_s)
+    planned = evaluations(spec.scenario, run_dir, steps)
+    done = sum(evaluated(directory) for _, directory in planned)
+    return RunStatus(spec, "finished" if done == len(planned) else "trained", steps, path, wall_s, done)
 
 
 def read_curve(path: Path, up_to: int | None = None) -> list[dict]:
@@ -255,26 +313,50 @@ def checkpoint_team(spec: RunSpec, policy: Path) -> str:
     return f"checkpoint:{kind}:{policy.resolve()}?scenario={spec.scenario}&name={spec.name}"
 
 
-def evaluation_command(team: str, scenario: str, directory: Path, episodes: int) -> list[str]:
-    """``soccer-sim evaluate`` of ``team`` on ``scenario``, results and tables in ``directory``
-    (one worker: the benchmark runs one job at a time)."""
+def evaluation_command(team: str, scenario: str, directory: Path, episodes: int,
+                       opponent: str = OPPONENT) -> list[str]:
+    """``soccer-sim evaluate`` of ``team`` on ``scenario`` against ``opponent``, results and
+    tables in ``directory`` (one worker: the benchmark runs one job at a time)."""
     return [sys.executable, "-m", "experiments.cli", "evaluate", team, "--scenario", scenario,
-            "--episodes", str(episodes), "--opponent", OPPONENT, "--workers", "1", "--no-progress",
+            "--episodes", str(episodes), "--opponent", opponent, "--workers", "1", "--no-progress",
             "--out", str(directory / "evaluation.sqlite"), "--tables", str(directory)]
 
 
-def evaluate(team: str, scenario: str, directory: Path, episodes: int) -> None:
+def evaluate(team: str, scenario: str, directory: Path, episodes: int, opponent: str = OPPONENT) -> None:
     """Run the evaluation command (from the checkout, so that ``examples.*`` resolves); a
     :class:`BenchmarkError` when it fails."""
     directory.mkdir(parents=True, exist_ok=True)
     environment = {**os.environ, "PYTHONPATH": os.pathsep.join(filter(None, [str(CHECKOUT),
                                                                               os.environ.get("PYTHONPATH")]))}
-    print(f"evaluate {team} on {scenario} ({episodes} episodes) -> {directory}", flush=True)
-    finished = subprocess.run(evaluation_command(team, scenario, directory, episodes), cwd=CHECKOUT,
+    print(f"evaluate {team} on {scenario} against {opponent} ({episodes} episodes) -> {directory}", flush=True)
+    finished = subprocess.run(evaluation_command(team, scenario, directory, episodes, opponent), cwd=CHECKOUT,
                               env=environment, check=False)
     if finished.returncode != 0 or not evaluated(directory):
-        raise BenchmarkError(f"soccer-sim evaluate of {team} on {scenario} failed (exit status "
+        raise BenchmarkError(f"soccer-sim evaluate of {team} on {scenario} against {opponent} failed (exit status "
                              f"{finished.returncode}); its output is above")
+
+
+def evaluate_missing(team: str, scenario: str, run_dir: Path, env_steps: int | None, episodes: int,
+                     label: str) -> list[str]:
+    """Every evaluation of :func:`evaluations` not finished yet, in turn; returns the failed ones
+    (``label``, or ``label vs RUNG`` on the ladder), each reported on its line while the others
+    still run."""
+    failed = []
+    planned = evaluations(scenario, run_dir, env_steps)
+    for opponent, directory in planned:
+        if evaluated(directory):
+            continue
+        try:
+            evaluate(team, scenario, directory, episodes, opponent)
+        except BenchmarkError as exc:
+            print(f"error: {exc}", flush=True)
+            failed.append(label if len(planned) == 1 else f"{label} vs {opponent}")
+    return failed
+
+
+def episodes_for(scenario: str, args: argparse.Namespace) -> int:
+    """Evaluation episodes on ``scenario``: ``--full-match-episodes`` on the full match, else ``--episodes``."""
+    return args.full_match_episodes if scenario == FULL_MATCH else args.episodes
 
 
 # ----------------------------------------------------------------------------- driving
@@ -297,7 +379,7 @@ def exclusive(out: Path) -> Iterator[None]:
 
 def settings_for(spec: RunSpec, args: argparse.Namespace) -> Settings:
     return Settings(scenario=spec.scenario, seed=spec.seed, matches=args.matches,
-                    checkpoint_every=args.checkpoint_every)
+                    checkpoint_every=args.checkpoint_every, opponent=spec.opponent)
 
 
 def trainer(algorithm: str):
@@ -315,13 +397,8 @@ def run(args: argparse.Namespace) -> int:
     failed = []
     with exclusive(args.out):
         for scenario in args.scenarios:
-            directory = evaluation_dir(args.out / RANDOM / scenario)
-            if not evaluated(directory):
-                try:
-                    evaluate(RANDOM_TEAM, scenario, directory, args.episodes)
-                except BenchmarkError as exc:
-                    print(f"error: {exc}", flush=True)
-                    failed.append(f"{RANDOM} on {scenario}")
+            failed += evaluate_missing(RANDOM_TEAM, scenario, random_dir(args.out, scenario), None,
+                                       episodes_for(scenario, args), f"{RANDOM} on {scenario}")
         for spec in plan(args.scenarios, args.seeds, args.algorithms):
             status = run_status(spec, args.out, args.budget)
             if status.state == "finished":
@@ -332,11 +409,13 @@ def run(args: argparse.Namespace) -> int:
                 if status.state in ("pending", "training"):
                     trainer(spec.algorithm)(settings_for(spec, args), run_dir, args.budget)
                     status = run_status(spec, args.out, args.budget)
-                evaluate(checkpoint_team(spec, policy_file(spec, run_dir, status.env_steps)), spec.scenario,
-                         evaluation_dir(run_dir, status.env_steps), args.episodes)
             except BenchmarkError as exc:
                 print(f"error: {exc}", flush=True)
                 failed.append(spec.name)
+                continue
+            failed += evaluate_missing(checkpoint_team(spec, policy_file(spec, run_dir, status.env_steps)),
+                                       spec.scenario, run_dir, status.env_steps, episodes_for(spec.scenario, args),
+                                       spec.name)
     if failed:
         print(f"not done: {', '.join(failed)}", flush=True)
         return 1
@@ -362,11 +441,12 @@ def status(args: argparse.Namespace) -> int:
     statuses = [run_status(spec, args.out, args.budget) for spec in plan(args.scenarios, args.seeds, args.algorithms)]
     measured = rates(statuses)
     left, unknown = 0.0, []
-    print(f"{'run':<40} {'state':<9} {'env steps':>10} {'wall':>8}  steps/s")
+    print(f"{'run':<40} {'state':<9} {'env steps':>10} {'wall':>8}  {'steps/s':>7}  evaluated")
     for item in statuses:
         rate = measured.get((item.spec.algorithm, item.spec.scenario))
+        planned = len(evaluations(item.spec.scenario, item.spec.directory(args.out)))
         print(f"{item.spec.name:<40} {item.state:<9} {item.env_steps:>10} {item.wall_s / 60:>6.1f} m  "
-              f"{'-' if rate is None else f'{rate:.0f}'}")
+              f"{'-' if rate is None else f'{rate:.0f}':>7}  {item.evaluations_done}/{planned}")
         remaining = max(0, args.budget - item.env_steps)
         if remaining and rate:
             left += remaining / rate
@@ -390,8 +470,9 @@ def parse_args(argv: Sequence[str] | None = None) -> argparse.Namespace:
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("command", choices=("run", "status", "report"), help="train and evaluate; show; tabulate")
     parser.add_argument("--out", type=Path, required=True, help="the runs' folder (keep it outside the checkout)")
-    parser.add_argument("--scenarios", nargs="+", default=list(SCENARIOS), choices=SCENARIOS, metavar="NAME",
-                        help=f"scenarios (default: {' '.join(SCENARIOS)})")
+    parser.add_argument("--scenarios", nargs="+", default=list(PLANNED), choices=PLANNED, metavar="NAME",
+                        help=f"scenarios (default: {' '.join(PLANNED)}; {FULL_MATCH} is trained against "
+                             f"{LADDER_TRAINING_OPPONENT} and evaluated against {', '.join(LADDER)})")
     parser.add_argument("--algorithms", nargs="+", default=list(ALGORITHMS), choices=ALGORITHMS, metavar="NAME",
                         help=f"trained baselines (default: {' '.join(ALGORITHMS)})")
     parser.add_argument("--seeds", nargs="+", type=int, default=list(SEEDS), help="run seeds (default: 0 1 2)")
@@ -400,11 +481,13 @@ def parse_args(argv: Sequence[str] | None = None) -> argparse.Namespace:
                         help="environment steps between checkpoints (default: %(default)s)")
     parser.add_argument("--matches", type=int, default=8, help="matches played at once in training (default: 8)")
     parser.add_argument("--episodes", type=int, default=EVALUATION_EPISODES,
-                        help="evaluation episodes (default: %(default)s)")
+                        help="evaluation episodes on an academy scenario (default: %(default)s)")
+    parser.add_argument("--full-match-episodes", type=int, default=FULL_MATCH_EPISODES,
+                        help="evaluation episodes (full matches) against each rung of the ladder (default: %(default)s)")
     parser.add_argument("--docs", type=Path, default=CHECKOUT / "docs",
                         help="report: the docs folder holding benchmark.md and figures/ (default: the checkout's)")
     args = parser.parse_args(argv)
-    for option in ("budget", "checkpoint_every", "matches", "episodes"):
+    for option in ("budget", "checkpoint_every", "matches", "episodes", "full_match_episodes"):
         if getattr(args, option) < 1:
             parser.error(f"--{option.replace('_', '-')} must be positive, got {getattr(args, option)}")
     if any(seed < 0 or seed >= 4_000 for seed in args.seeds):

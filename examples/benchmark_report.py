@@ -6,12 +6,15 @@
   (PPO, MAPPO) over the seeds whose run is *finished* (trained to the budget and evaluated): the
   mean of the runs' goal rates and of their mean score differences with Student's t 95 %
   interval over seeds (none for a single seed; a goal rate's cut to [0, 1]). Runs not finished
-  are listed with where they stand, never counted. It replaces the part of ``benchmark.md``
-  between :data:`BEGIN` and :data:`END`.
+  are listed with where they stand, never counted. The full match has a row per rung of the
+  ladder and policy (``full-match v RUNG``): random actions and each baseline evaluated against
+  that rung, aggregated the same way. It replaces the part of ``benchmark.md`` between
+  :data:`BEGIN` and :data:`END`.
 * **Curves**: every run's ``curve.csv`` up to its last checkpoint, gathered into
   ``figures/benchmark_curves.csv`` and drawn in ``figures/benchmark_curves.png`` (share of
   training episodes with a goal and mean episode return against environment steps, one line a
-  run, a colour an algorithm; random actions' evaluated goal rate dashed).
+  run, a colour an algorithm; random actions' evaluated goal rate against the opponent the runs
+  trained against dashed).
 * ``figures/benchmark_evaluations.csv``: one row per evaluation the table uses.
 """
 
@@ -23,8 +26,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from examples.benchmark_baselines import (ALGORITHMS, CURVE_FIELDS, MAPPO, PPO, RANDOM, BenchmarkError, RunStatus,
-                                          evaluation_dir, plan, read_curve, run_status)
+from examples.benchmark_baselines import (ALGORITHMS, CURVE_FIELDS, FULL_MATCH, MAPPO, OPPONENT, PPO, RANDOM,
+                                          BenchmarkError, RunSpec, RunStatus, evaluations, plan, random_dir,
+                                          read_curve, run_status, training_opponent)
 from experiments.stats import Estimate, estimate
 
 BEGIN = "<!-- benchmark table: written by examples/benchmark_baselines.py report -->"
@@ -75,6 +79,13 @@ class TableRow:
     per_seed: tuple[float, ...] = ()
     """The finished seeds' goal rates."""
     interval: str = "over seeds"
+    opponent: str = OPPONENT
+    """The away side of the evaluations: :data:`OPPONENT`, or a rung of the full match's ladder."""
+
+    @property
+    def situation(self) -> str:
+        """The table's first cell: the scenario, with the rung on the full match (``full-match v idle``)."""
+        return f"{self.scenario} v {self.opponent}" if self.scenario == FULL_MATCH else self.scenario
 
 
 @dataclass(frozen=True)
@@ -88,24 +99,28 @@ def aggregate(out: Path, scenarios: Sequence[str], seeds: Sequence[int], budget:
     """The table's rows and the runs not finished (see the module docstring)."""
     rows, unfinished = [], []
     for scenario in scenarios:
-        baseline = read_evaluation(evaluation_dir(out / RANDOM / scenario))
-        if baseline is not None:
-            rows.append(TableRow(scenario, RANDOM, None, 1, baseline.goal_rate, baseline.score_difference,
-                                 interval=f"{baseline.episodes} episodes"))
+        finished: dict[str, list[tuple[RunSpec, int]]] = {}   # algorithm: (run, its environment steps)
         for algorithm in algorithms:
-            finished = []
+            finished[algorithm] = []
             for spec in plan([scenario], seeds, [algorithm]):
                 status = run_status(spec, out, budget)
-                result = read_evaluation(evaluation_dir(spec.directory(out), status.env_steps)) \
-                    if status.state == "finished" else None
-                if result is None:
-                    unfinished.append(status)
+                if status.state == "finished":
+                    finished[algorithm].append((spec, status.env_steps))
                 else:
-                    finished.append(result)
-            if finished:
-                rates = [result.goal_rate.mean for result in finished]
-                rows.append(TableRow(scenario, algorithm, budget, len(finished), share_estimate(rates),
-                                     estimate(result.score_difference.mean for result in finished), tuple(rates)))
+                    unfinished.append(status)
+        for opponent, directory in evaluations(scenario, random_dir(out, scenario)):
+            baseline = read_evaluation(directory)
+            if baseline is not None:
+                rows.append(TableRow(scenario, RANDOM, None, 1, baseline.goal_rate, baseline.score_difference,
+                                     interval=f"{baseline.episodes} episodes", opponent=opponent))
+            for algorithm in algorithms:
+                results = [read_evaluation(dict(evaluations(scenario, spec.directory(out), steps))[opponent])
+                           for spec, steps in finished[algorithm]]
+                if results:
+                    rates = [result.goal_rate.mean for result in results]
+                    rows.append(TableRow(scenario, algorithm, budget, len(results), share_estimate(rates),
+                                         estimate(result.score_difference.mean for result in results), tuple(rates),
+                                         opponent=opponent))
     return Baselines(rows, unfinished)
 
 
@@ -143,17 +158,19 @@ def markdown(baselines: Baselines, budget: int) -> str:
     """The table and the list of runs not finished, as Markdown."""
     lines = ["| scenario | policy | env steps | runs | goal rate [95 % CI] | score difference [95 % CI] | "
              "goal rate per seed | above random |", "| --- | --- | ---: | ---: | --- | --- | --- | --- |"]
-    randoms = {row.scenario: row for row in baselines.rows if row.policy == RANDOM}
+    randoms = {row.situation: row for row in baselines.rows if row.policy == RANDOM}
     for row in baselines.rows:
         steps = "-" if row.env_steps is None else f"{row.env_steps:,}"
         seeds = ", ".join(f"{rate:.2f}" for rate in row.per_seed) or "-"
         runs = f"{row.runs} ({row.interval})" if row.policy == RANDOM else str(row.runs)
-        lines.append(f"| {row.scenario} | {row.policy} | {steps} | {runs} | {interval_text(row.goal_rate)} | "
+        lines.append(f"| {row.situation} | {row.policy} | {steps} | {runs} | {interval_text(row.goal_rate)} | "
                      f"{interval_text(row.score_difference, signed=True)} | {seeds} | "
-                     f"{above_random(row, randoms.get(row.scenario))} |")
+                     f"{above_random(row, randoms.get(row.situation))} |")
     if baselines.unfinished:
         lines += ["", "Runs not finished (not in the table):", ""]
         lines += [f"- {status.spec.name}: {status.state}, {status.env_steps:,} of {budget:,} environment steps"
+                  + (f", evaluated against {status.evaluations_done} of "
+                     f"{len(evaluations(status.spec.scenario, Path()))} opponents" if status.state == "trained" else "")
                   for status in baselines.unfinished]
     return "\n".join(lines) + "\n"
 
@@ -246,16 +263,18 @@ def evaluation_rows(out: Path, scenarios: Sequence[str], seeds: Sequence[int], b
     """One row per finished evaluation (random actions and the finished runs)."""
     rows = []
     for scenario in scenarios:
-        found = [(RANDOM, "", "", evaluation_dir(out / RANDOM / scenario))]
+        found = [(RANDOM, "", "", opponent, directory)
+                 for opponent, directory in evaluations(scenario, random_dir(out, scenario))]
         for spec in plan([scenario], seeds, algorithms):
             status = run_status(spec, out, budget)
             if status.state == "finished":
-                found.append((spec.algorithm, spec.seed, status.env_steps, evaluation_dir(spec.directory(out), status.env_steps)))
-        for policy, seed, steps, directory in found:
+                found += [(spec.algorithm, spec.seed, status.env_steps, opponent, directory)
+                          for opponent, directory in evaluations(scenario, spec.directory(out), status.env_steps)]
+        for policy, seed, steps, opponent, directory in found:
             result = read_evaluation(directory)
             if result is not None:
-                rows.append({"policy": policy, "scenario": scenario, "seed": seed, "env_steps": steps,
-                             "episodes": result.episodes, "goal_rate": result.goal_rate.mean,
+                rows.append({"policy": policy, "scenario": scenario, "opponent": opponent, "seed": seed,
+                             "env_steps": steps, "episodes": result.episodes, "goal_rate": result.goal_rate.mean,
                              "goal_rate_low": result.goal_rate.low, "goal_rate_high": result.goal_rate.high,
                              "mean_score_diff": result.score_difference.mean,
                              "score_diff_low": result.score_difference.low,
@@ -263,7 +282,7 @@ def evaluation_rows(out: Path, scenarios: Sequence[str], seeds: Sequence[int], b
     return rows
 
 
-EVALUATION_FIELDS = ("policy", "scenario", "seed", "env_steps", "episodes", "goal_rate", "goal_rate_low",
+EVALUATION_FIELDS = ("policy", "scenario", "opponent", "seed", "env_steps", "episodes", "goal_rate", "goal_rate_low",
                      "goal_rate_high", "mean_score_diff", "score_diff_low", "score_diff_high")
 
 
@@ -281,7 +300,8 @@ def write_report(out: Path, docs: Path, scenarios: Sequence[str], seeds: Sequenc
     updated = replace_table(document.read_text(), markdown(baselines, budget))
     figures = docs / "figures"
     curves = curve_rows(out, scenarios, seeds, budget, algorithms)
-    randoms = {row.scenario: row.goal_rate.mean for row in baselines.rows if row.policy == RANDOM}
+    randoms = {row.scenario: row.goal_rate.mean for row in baselines.rows
+               if row.policy == RANDOM and row.opponent == training_opponent(row.scenario)}
     written = [write_csv(figures / "benchmark_curves.csv", ["algorithm", "scenario", "seed", *CURVE_FIELDS], curves),
                write_csv(figures / "benchmark_evaluations.csv", EVALUATION_FIELDS,
                          evaluation_rows(out, scenarios, seeds, budget, algorithms))]

@@ -33,12 +33,13 @@ def write_evaluation(directory: Path, goal_rate: float, low: float, high: float,
         writer.writerow(row)
 
 
-def write_run(out: Path, scenario: str, seed: int, steps: list[int], wall_per_step: float = 0.01) -> Path:
+def write_run(out: Path, scenario: str, seed: int, steps: list[int], wall_per_step: float = 0.01,
+              algorithm: str = bb.PPO) -> Path:
     """A run folder with checkpoints at ``steps`` and a curve with one row per checkpoint."""
-    run_dir = bb.RunSpec(bb.PPO, scenario, seed).directory(out)
+    run_dir = bb.RunSpec(algorithm, scenario, seed, bb.training_opponent(scenario)).directory(out)
     (run_dir / bb.CHECKPOINTS).mkdir(parents=True, exist_ok=True)
     for step in steps:
-        bb.checkpoint_path(run_dir, step).write_bytes(b"stand-in")
+        bb.checkpoint_path(run_dir, step, algorithm).write_bytes(b"stand-in")
     bb.write_curve(run_dir / "curve.csv", [
         {"env_steps": step, "agent_steps": step * bb.PLAYERS[scenario], "episodes": 10, "mean_return": 0.1 * k,
          "goal_rate": min(1.0, 0.2 * k), "wall_s": round(step * wall_per_step, 1)} for k, step in enumerate(steps)])
@@ -51,9 +52,12 @@ def test_the_plan_trains_every_seed_of_a_scenario_before_the_next_and_ppo_first(
     assert [(r.scenario, r.seed) for r in runs[:4]] == [("empty-goal", 0), ("empty-goal", 1), ("empty-goal", 2),
                                                          ("run-to-score-with-keeper", 0)]
     per_algorithm = len(bb.SCENARIOS) * len(bb.SEEDS)
-    assert [r.algorithm for r in runs] == [bb.PPO] * per_algorithm + [bb.MAPPO] * per_algorithm
+    seeds = len(bb.SEEDS)
+    assert [r.algorithm for r in runs] == ([bb.PPO] * per_algorithm + [bb.MAPPO] * per_algorithm
+                                           + [bb.PPO] * seeds + [bb.MAPPO] * seeds)  # the full match last
     assert runs[0].directory(Path("o")) == Path("o/ppo-shared/empty-goal/seed-0")
     assert runs[per_algorithm].directory(Path("o")) == Path("o/mappo/empty-goal/seed-0")
+    assert all(r.opponent == bb.OPPONENT for r in runs[:2 * per_algorithm])  # the academy's folders and names as ever
 
 
 def test_checkpoints_fall_every_interval_and_on_the_budget() -> None:
@@ -147,7 +151,8 @@ def test_a_rerun_skips_finished_runs_evaluates_trained_ones_and_continues_the_re
     write_run(out, scenario, 2, [51_200])             # interrupted
     evaluated, trained = [], []
 
-    def stand_in_evaluate(team, scenario_name, directory, episodes):
+    def stand_in_evaluate(team, scenario_name, directory, episodes, opponent):
+        assert opponent == bb.OPPONENT
         evaluated.append((team, directory.name))
         write_evaluation(directory, 0.5, 0.4, 0.6, 0.5, episodes)
 
@@ -171,7 +176,7 @@ def test_a_failed_evaluation_is_reported_and_the_others_still_run(tmp_path, monk
     out = tmp_path / "runs"
     calls = []
 
-    def failing(team, scenario, directory, episodes):
+    def failing(team, scenario, directory, episodes, opponent):
         calls.append(scenario)
         raise bb.BenchmarkError(f"soccer-sim evaluate of {team} on {scenario} failed (exit status 2)")
 
@@ -203,6 +208,123 @@ def test_bad_options_are_refused_on_one_line(argv, message, capsys) -> None:
     with pytest.raises(SystemExit) as refused:
         bb.parse_args(argv)
     assert refused.value.code == 2 and message in capsys.readouterr().err
+
+
+# ----------------------------------------------------------------------------- the full match's ladder
+def test_the_full_match_is_planned_last_trained_against_one_rung_in_folders_of_its_own() -> None:
+    ladder = [spec for spec in bb.plan() if spec.scenario == bb.FULL_MATCH]
+    assert [(spec.algorithm, spec.seed) for spec in ladder] == [(bb.PPO, 0), (bb.PPO, 1), (bb.PPO, 2),
+                                                                 (bb.MAPPO, 0), (bb.MAPPO, 1), (bb.MAPPO, 2)]
+    assert bb.plan()[-6:] == ladder
+    assert {spec.opponent for spec in ladder} == {bb.LADDER_TRAINING_OPPONENT} == {"chaser"}
+    assert ladder[1].directory(Path("o")) == Path("o/ppo-shared/full-match-v-chaser/seed-1")
+    assert ladder[3].name == "mappo-full-match-v-chaser-s0"
+    assert bb.PLAYERS[bb.FULL_MATCH] == 11
+    args = bb.parse_args(["run", "--out", "o"])
+    assert bb.settings_for(ladder[0], args).opponent == "chaser"
+    academy = bb.settings_for(bb.plan()[0], args)  # the academy's run.json stays what it was
+    assert academy == bb.Settings("empty-goal", seed=0) and academy.opponent == "static"
+
+
+def test_the_ladder_runs_from_idle_and_chaser_to_the_best_built_in_team() -> None:
+    from soccer_sim.registry import available_teams
+
+    assert bb.LADDER[:2] == ("idle", "chaser") and len(set(bb.LADDER)) == len(bb.LADDER)
+    assert {"counter-442", "press-433", "possession", "static", "mmd+msd2"} == set(bb.LADDER[2:])
+    assert set(bb.LADDER) <= set(available_teams())
+    assert bb.LADDER_TRAINING_OPPONENT in bb.LADDER
+
+
+def test_the_documented_ladder_is_the_one_the_driver_evaluates_against() -> None:
+    import re
+
+    text = (Path(__file__).resolve().parents[2] / "docs" / "benchmark.md").read_text()
+    rows = re.findall(r"^\| (\d+) \| `([^`]+)` \|", text, flags=re.MULTILINE)
+    assert rows == [(str(k), rung) for k, rung in enumerate(bb.LADDER, start=1)]
+    assert f"trained against `{bb.LADDER_TRAINING_OPPONENT}`" in text
+
+
+def test_a_full_match_policy_is_evaluated_against_every_rung_in_its_own_folder(tmp_path) -> None:
+    run_dir = tmp_path / "run"
+    planned = bb.evaluations(bb.FULL_MATCH, run_dir, 501_760)
+    assert [opponent for opponent, _ in planned] == list(bb.LADDER)
+    assert planned[0][1] == run_dir / "evaluation-000501760-v-idle"
+    assert bb.evaluations("empty-goal", run_dir, 501_760) == [("static", run_dir / "evaluation-000501760")]
+    assert bb.evaluations(bb.FULL_MATCH, run_dir)[-1][1] == run_dir / f"evaluation-v-{bb.LADDER[-1]}"
+    from experiments.cli import build_parser
+
+    for opponent, directory in planned:
+        command = bb.evaluation_command("some-team", bb.FULL_MATCH, directory, bb.FULL_MATCH_EPISODES, opponent)
+        parsed = build_parser().parse_args(command[3:])
+        assert (parsed.scenario, parsed.opponent, parsed.episodes, parsed.workers) == \
+            ("full-match", opponent, bb.FULL_MATCH_EPISODES, 1)
+        assert parsed.out == str(directory / "evaluation.sqlite") and parsed.tables == str(directory)
+
+
+def test_a_full_match_run_is_finished_only_once_evaluated_against_every_rung(tmp_path) -> None:
+    spec = next(spec for spec in bb.plan() if spec.scenario == bb.FULL_MATCH)
+    run_dir = write_run(tmp_path, bb.FULL_MATCH, 0, [51_200, 501_760])
+    assert run_dir == spec.directory(tmp_path)
+    for opponent, directory in bb.evaluations(bb.FULL_MATCH, run_dir, 501_760)[:-1]:
+        write_evaluation(directory, 0.5, 0.2, 0.8, 1.0, episodes=10)
+    status = bb.run_status(spec, tmp_path, BUDGET)
+    assert (status.state, status.evaluations_done) == ("trained", len(bb.LADDER) - 1)
+    write_evaluation(bb.evaluation_dir(run_dir, 501_760), 0.5, 0.2, 0.8, 1.0)  # the academy's name counts not
+    assert bb.run_status(spec, tmp_path, BUDGET).state == "trained"
+    write_evaluation(bb.evaluation_dir(run_dir, 501_760, bb.LADDER[-1]), 0.5, 0.2, 0.8, 1.0, episodes=10)
+    assert bb.run_status(spec, tmp_path, BUDGET).state == "finished"
+
+
+def test_run_trains_the_full_match_against_its_rung_and_evaluates_the_missing_rungs(tmp_path, monkeypatch,
+                                                                                     capsys) -> None:
+    out = tmp_path / "runs"
+    random_done = bb.evaluations(bb.FULL_MATCH, bb.random_dir(out, bb.FULL_MATCH))[0][1]
+    write_evaluation(random_done, 0.0, 0.0, 0.3, -20.0, episodes=4)          # random v idle already evaluated
+    trained_dir = write_run(out, bb.FULL_MATCH, 0, [51_200, 501_760])         # seed 0: trained,
+    write_evaluation(bb.evaluation_dir(trained_dir, 501_760, "idle"), 0.9, 0.6, 1.0, 3.0, episodes=4)  # 1 rung done
+    evaluated, trained = [], []
+
+    def stand_in_evaluate(team, scenario, directory, episodes, opponent):
+        evaluated.append((team.split("?")[-1] if team.startswith("checkpoint:") else team, opponent, episodes,
+                          directory.relative_to(out).as_posix()))
+        if opponent == "press-433" and "s1" in team:
+            raise bb.BenchmarkError("soccer-sim evaluate of it failed (exit status 1)")
+        write_evaluation(directory, 0.1, 0.0, 0.4, -1.0, episodes)
+
+    def stand_in_train(settings, run_dir, budget):
+        trained.append((settings.scenario, settings.seed, settings.opponent, run_dir.relative_to(out).as_posix()))
+        (run_dir / bb.CHECKPOINTS).mkdir(parents=True, exist_ok=True)
+        bb.checkpoint_path(run_dir, 501_760).write_bytes(b"stand-in")
+
+    monkeypatch.setattr(bb, "evaluate", stand_in_evaluate)
+    monkeypatch.setattr(bb, "trainer", lambda algorithm: stand_in_train)
+    args = bb.parse_args(["run", "--out", str(out), "--scenarios", bb.FULL_MATCH, "--algorithms", bb.PPO,
+                          "--seeds", "0", "1", "--full-match-episodes", "4"])
+    assert bb.run(args) == 1
+    assert trained == [("full-match", 1, "chaser", "ppo-shared/full-match-v-chaser/seed-1")]
+    rungs = list(bb.LADDER)
+    assert [(team, opponent) for team, opponent, _, _ in evaluated] == \
+        [(bb.RANDOM_TEAM, rung) for rung in rungs[1:]] + \
+        [("scenario=full-match&name=ppo-shared-full-match-v-chaser-s0", rung) for rung in rungs[1:]] + \
+        [("scenario=full-match&name=ppo-shared-full-match-v-chaser-s1", rung) for rung in rungs]
+    assert {episodes for _, _, episodes, _ in evaluated} == {4}
+    assert evaluated[0][3] == "random-actions/full-match/evaluation-v-chaser"
+    assert evaluated[-1][3] == f"ppo-shared/full-match-v-chaser/seed-1/evaluation-000501760-v-{rungs[-1]}"
+    assert "not done: ppo-shared-full-match-v-chaser-s1 vs press-433" in capsys.readouterr().out
+    evaluated.clear()
+    assert bb.run(args) == 1 and [(team, opponent) for team, opponent, _, _ in evaluated] == \
+        [("scenario=full-match&name=ppo-shared-full-match-v-chaser-s1", "press-433")]   # only the one that failed, again
+
+
+def test_status_lists_the_full_match_runs_with_their_evaluations(tmp_path, capsys) -> None:
+    run_dir = write_run(tmp_path, bb.FULL_MATCH, 2, [51_200, 501_760], wall_per_step=0.005, algorithm=bb.MAPPO)
+    write_evaluation(bb.evaluation_dir(run_dir, 501_760, "idle"), 0.9, 0.6, 1.0, 3.0, episodes=10)
+    assert bb.main(["status", "--out", str(tmp_path), "--scenarios", bb.FULL_MATCH]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    row = next(line for line in lines if line.startswith("mappo-full-match-v-chaser-s2"))
+    assert "trained" in row and "501760" in row and row.endswith(f"1/{len(bb.LADDER)}")
+    assert sum(line.startswith(("ppo-shared-full-match-v-chaser-s", "mappo-full-match-v-chaser-s"))
+               for line in lines) == 6
 
 
 # ----------------------------------------------------------------------------- report
@@ -240,6 +362,66 @@ def test_the_table_averages_the_finished_seeds_and_lists_the_others(tmp_path) ->
     assert "| empty-goal | random-actions | - | 1 (100 episodes) | 0.03 [0.01, 0.08] | +0.03 [+0.01, +0.05] | - | - |" \
            in lines
     assert "- ppo-shared-run-to-score-with-keeper-s1: training, 102,400 of 500,000 environment steps" in lines
+
+
+def ladder_folder(out: Path) -> None:
+    """The full match: random actions against every rung; PPO's 3 seeds finished (goal rates 0.9,
+    0.8, 1.0 against idle, falling by 0.1 a rung up the ladder); MAPPO's seed 0 trained and
+    evaluated against one rung only."""
+    for k, (rung, directory) in enumerate(bb.evaluations(bb.FULL_MATCH, bb.random_dir(out, bb.FULL_MATCH))):
+        write_evaluation(directory, 0.0, 0.0, 0.28, float(-2 * k), episodes=10)
+    for seed, rate in zip(bb.SEEDS, (0.9, 0.8, 1.0)):
+        run_dir = write_run(out, bb.FULL_MATCH, seed, [51_200, 501_760])
+        for k, (rung, directory) in enumerate(bb.evaluations(bb.FULL_MATCH, run_dir, 501_760)):
+            write_evaluation(directory, round(max(0.0, rate - 0.1 * k), 2), 0.0, 1.0, 3.0 - k, episodes=10)
+    run_dir = write_run(out, bb.FULL_MATCH, 0, [51_200, 501_760], algorithm=bb.MAPPO)
+    write_evaluation(bb.evaluation_dir(run_dir, 501_760, "idle"), 0.5, 0.2, 0.8, 1.0, episodes=10)
+
+
+def test_the_table_has_a_row_per_rung_and_policy_on_the_full_match(tmp_path) -> None:
+    ladder_folder(tmp_path)
+    baselines = br.aggregate(tmp_path, [bb.FULL_MATCH], bb.SEEDS, BUDGET)
+    assert [(row.opponent, row.policy) for row in baselines.rows] == \
+        [(rung, policy) for rung in bb.LADDER for policy in (bb.RANDOM, bb.PPO)]   # MAPPO: nothing finished
+    rows = {(row.opponent, row.policy): row for row in baselines.rows}
+    second = rows[(bb.LADDER[1], bb.PPO)]
+    assert second.runs == 3 and second.per_seed == (0.8, 0.7, 0.9) and second.situation == "full-match v chaser"
+    assert second.score_difference == estimate([2.0, 2.0, 2.0])
+    assert math.isclose(second.goal_rate.mean - second.goal_rate.low, 4.302653 * 0.1 / math.sqrt(3), rel_tol=1e-5)
+    assert [(s.spec.name, s.state, s.evaluations_done) for s in baselines.unfinished] == \
+        [("mappo-full-match-v-chaser-s0", "trained", 1), ("mappo-full-match-v-chaser-s1", "pending", 0),
+         ("mappo-full-match-v-chaser-s2", "pending", 0)]                       # a run once, not once a rung
+    lines = br.markdown(baselines, BUDGET).splitlines()
+    assert "| full-match v idle | random-actions | - | 1 (10 episodes) | 0.00 [0.00, 0.28] | +0.00 [-0.02, +0.02] " \
+           "| - | - |" in lines
+    assert "| full-match v idle | ppo-shared | 500,000 | 3 | 0.90 [0.65, 1.00] | +3.00 [+3.00, +3.00] | " \
+           "0.90, 0.80, 1.00 | yes |" in lines
+    assert f"| full-match v {bb.LADDER[-1]} | ppo-shared | 500,000 | 3 | 0.30 [0.05, 0.55] | -3.00 [-3.00, -3.00] | " \
+           "0.30, 0.20, 0.40 | no (intervals overlap) |" in lines
+    assert f"- mappo-full-match-v-chaser-s0: trained, 501,760 of 500,000 environment steps, evaluated against 1 of " \
+           f"{len(bb.LADDER)} opponents" in lines
+
+
+def test_the_report_writes_the_ladder_rows_and_each_evaluation_with_its_opponent(tmp_path) -> None:
+    ladder_folder(tmp_path / "runs")
+    finished_folder(tmp_path / "runs")
+    docs = tmp_path / "docs"
+    (docs / "figures").mkdir(parents=True)
+    (docs / "benchmark.md").write_text(f"{br.BEGIN}\n{br.END}\n")
+    assert bb.main(["report", "--out", str(tmp_path / "runs"), "--docs", str(docs)]) == 0
+    text = (docs / "benchmark.md").read_text()
+    assert text.index("| empty-goal | ppo-shared |") < text.index("| full-match v idle | random-actions |") \
+        < text.index("| full-match v idle | ppo-shared |") < text.index("| full-match v chaser | random-actions |")
+    assert sum(line.startswith("| full-match v ") for line in text.splitlines()) == 2 * len(bb.LADDER)
+    with open(docs / "figures" / "benchmark_evaluations.csv") as handle:
+        evaluations = [row for row in csv.DictReader(handle) if row["scenario"] == bb.FULL_MATCH]
+    assert [(row["policy"], row["seed"], row["opponent"]) for row in evaluations] == \
+        [(bb.RANDOM, "", rung) for rung in bb.LADDER] + \
+        [(bb.PPO, str(seed), rung) for seed in bb.SEEDS for rung in bb.LADDER]
+    with open(docs / "figures" / "benchmark_curves.csv") as handle:
+        curves = [row for row in csv.DictReader(handle) if row["scenario"] == bb.FULL_MATCH]
+    assert {(row["algorithm"], row["seed"]) for row in curves} == {(bb.PPO, "0"), (bb.PPO, "1"), (bb.PPO, "2"),
+                                                                  (bb.MAPPO, "0")}
 
 
 def test_the_sanity_bar_needs_disjoint_intervals() -> None:
@@ -343,3 +525,23 @@ def test_a_resumed_mappo_run_trains_exactly_as_an_uninterrupted_one(tmp_path) ->
     size = parallel_env(scenario="3-vs-1-with-keeper", controlled="left").observation_space("left_0").shape[0]
     actions = policy.act_batch(np.zeros((3, size), dtype=np.float32))
     assert actions.shape == (3, 5) and np.all(np.abs(actions) <= 1.0)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("algorithm", [bb.PPO, bb.MAPPO])
+def test_a_full_match_run_trains_its_eleven_players_against_the_training_rung(tmp_path, algorithm) -> None:
+    pytest.importorskip("torchrl" if algorithm == bb.MAPPO else "stable_baselines3")
+    pytest.importorskip("supersuit")
+    import json
+    from dataclasses import replace
+
+    spec = next(spec for spec in bb.plan() if spec.scenario == bb.FULL_MATCH and spec.algorithm == algorithm)
+    args = bb.parse_args(["run", "--out", str(tmp_path), "--matches", "1", "--checkpoint-every", "64"])
+    settings = replace(bb.settings_for(spec, args), n_steps=64, batch_size=64)
+    assert bb.trainer(algorithm)(settings, spec.directory(tmp_path), 64) == 64
+    assert json.loads((spec.directory(tmp_path) / "run.json").read_text())["opponent"] == "chaser"
+    assert [(row["env_steps"], row["agent_steps"]) for row in bb.read_curve(spec.directory(tmp_path) / "curve.csv")] \
+        == [(64, 64 * 11)]
+    status = bb.run_status(spec, tmp_path, 64)
+    assert (status.state, status.evaluations_done) == ("trained", 0)
+    assert bb.policy_file(spec, spec.directory(tmp_path), 64).is_file()
