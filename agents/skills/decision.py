@@ -12,16 +12,23 @@ plans it chooses between.
    in front of goal rather than passing back or sideways.
 3. **Pass** when the best safe pass (:mod:`agents.skills.passing`) scores at least
    ``pass_good``.
-4. **Dribble** when no opponent can reach the ball within ``pressure_cycles`` and the best
-   dribbling direction keeps ``dribble_clearance`` metres of clearance (never the
-   goalkeeper).
-5. **Pass** to whoever is safely available (any score).
-6. **Clear** when under pressure, for the goalkeeper, or in our own part of the field (ball
-   x below ``clear_line``; a fraction of the half length, so -1/3 is our third).
-7. **Dribble** otherwise (the direction with most clearance, even if small).
+4. **Dribble** when the best dribbling direction keeps ``dribble_clearance`` metres of
+   clearance (never the goalkeeper), pressed or not: a way past the man.
+5. **Pass** to whoever is safely available (any score) when under pressure, in our own part
+   of the field (ball x below ``clear_line``; a fraction of the half length, so -1/3 is our
+   third), or for the goalkeeper.
+6. **Clear** in our own part of the field or for the goalkeeper.
+7. **Dribble** otherwise (the direction with most clearance, even if small): a player free of
+   pressure keeps the ball rather than passing it on for want of space (step 3 takes the pass
+   that is clearly better).
 
 Under pressure means an opponent's interception of the ball (rolled with its current
-velocity) comes within ``pressure_cycles`` cycles.
+velocity) comes within ``pressure_cycles`` cycles. Steps 4, 5 and 7 make the ball carried
+rather than passed when no pass is clearly better: in 48 built-in matches (``soccer-sim bench
+soccer --compare``) passes fell from 550 to 381 a match (helios-base in the real server: 144),
+tackles rose from 30 to 46 (39) and shots from 10.8 to 14.3 (16.6), against the earlier order
+(a free player's dribble only with clearance, else any safe pass; no dribble under pressure)
+with ``pass_good`` 0.6 lower.
 
 **In play on** (``in_play=True``: the built-in team's player on the ball, not a set-play
 taker) three refinements follow the first choice, the first that applies:
@@ -29,9 +36,8 @@ taker) three refinements follow the first choice, the first that applies:
 a. **Finish** (:class:`FinishParams`): a dribble or clearance within ``shot_range`` of the
    opponents' goal, with an opponent on the ball or about to win it, becomes a full-power
    shot (:func:`finishing_shot`).
-b. **Carry** (:class:`CarryParams`): near the opponents' goal a pass back or square, or a
-   clearance, becomes a dribble on towards the goal, unless an opponent is on the ball
-   (:func:`carry_kick`).
+b. **Carry** (:class:`CarryParams`): near the opponents' goal a pass back or square becomes a
+   dribble on towards the goal, unless an opponent is on the ball (:func:`carry_kick`).
 c. **Keep safe** (:class:`SafetyParams`): a dribble or clearance with an opponent on the ball,
    or pressed deep in our half, goes behind, wide of our post, near our goal (``BLOCK``), and
    towards the nearer touchline elsewhere (``WING``; :func:`safe_kick`).
@@ -109,24 +115,17 @@ class CarryParams:
     ball on towards the goal and shoots from close."""
 
     carry_range: float = 32.0
-    """Within this distance of the opponents' goal centre (m) a pass back or a clearance
-    becomes a dribble: the final third's width of play around the box, beyond which passing
+    """Within this distance of the opponents' goal centre (m) a pass back or square becomes a
+    dribble: the final third's width of play around the box, beyond which passing
     back to build up is what real teams do (0: never). In 48 built-in matches 38 m scored a
     little more (goals 3.98 against 3.83) but sent more balls out (corners 1.75 -> 1.48,
     kick-ins 15.7 -> 17.7)."""
-    clear_range: float = 42.0
-    """Within this distance of the opponents' goal centre (m) a clearance becomes a dribble
-    (at least ``carry_range``): from there a long clearance mostly rolls to their goalkeeper.
-    In 48 built-in matches (seeds 0..2) 42 m against 32 m: goalkeeper catches 8.8 -> 7.0,
-    goal kicks 3.7 -> 2.8 (real server 5.4 and 2.8), goals unchanged (3.8), kick-ins 15.7 ->
-    20.3 (dribbles lost over the touchline); the whole opponents' half: catches 5.2,
-    kick-ins 21.2, shots 14.6 -> 12.6."""
     pass_gain: float = 3.0
     """A pass stands when its reception point is at least this much closer to the goal centre
     than the ball (m): a pass forward into the box beats carrying it there."""
 
     def __post_init__(self) -> None:
-        check_params(self, non_negative=("carry_range", "clear_range", "pass_gain"))
+        check_params(self, non_negative=("carry_range", "pass_gain"))
 
 
 @dataclass(frozen=True)
@@ -164,8 +163,10 @@ class SafetyParams:
 class DecisionParams:
     """Thresholds of the on-ball decision (see the module docstring) and each skill's own."""
 
-    pass_good: float = 1.2
-    """A pass scoring at least this is preferred to dribbling."""
+    pass_good: float = 1.8
+    """A pass scoring at least this is preferred to dribbling: a pass clearly better than
+    carrying the ball (forward, into space, with a lead; a square pass into space scores about
+    1.2-1.5)."""
     pressure_cycles: int = 3
     """Under pressure when an opponent can control the ball within this many cycles."""
     dribble_clearance: float = 1.0
@@ -253,14 +254,15 @@ def _first_choice(ctx: SkillContext, view: TeamView, player: int, params: Decisi
     pass_plan = best_pass(ctx, view, player, params.passing, holder)
     if pass_plan is not None and pass_plan.score >= params.pass_good:
         return BallDecision(OnBallAction.PASS, pass_plan.kick, None, pass_plan, pressure)
-    # A dribble is only ever chosen free of pressure and by an outfield player: not worked
-    # out otherwise (it is the dearest plan after the pass).
-    dribble_plan = None if under_pressure or goalie else dribble(ctx, view, player, params.dribbling)
+    # A dribble is only ever chosen by an outfield player: not worked out for the goalkeeper
+    # (it is the dearest plan after the pass).
+    dribble_plan = None if goalie else dribble(ctx, view, player, params.dribbling)
     if dribble_plan is not None and dribble_plan.clearance >= params.dribble_clearance:
         return BallDecision(OnBallAction.DRIBBLE, dribble_plan.kick, dribble_plan.dash, dribble_plan, pressure)
-    if pass_plan is not None:
+    deep = float(view.ball[0]) < params.clear_line * model.half_length
+    if pass_plan is not None and (dribble_plan is None or deep or under_pressure):
         return BallDecision(OnBallAction.PASS, pass_plan.kick, None, pass_plan, pressure)
-    if dribble_plan is None or float(view.ball[0]) < params.clear_line * model.half_length:
+    if dribble_plan is None or deep:
         clear = best_clearance(ctx, view, player, params.clearing, holder)
         return BallDecision(OnBallAction.CLEAR, clear.kick, None, clear, pressure)
     return BallDecision(OnBallAction.DRIBBLE, dribble_plan.kick, dribble_plan.dash, dribble_plan, pressure)
@@ -294,22 +296,19 @@ def carry_kick(ctx: SkillContext, view: TeamView, player: int, choice: BallDecis
     """Refinement b: ``player`` (outfield) carries the ball on towards the opponents' goal, or
     None when ``choice`` stands: within ``carrying.carry_range`` of the goal centre a pass whose
     reception point is not at least ``carrying.pass_gain`` metres closer to the goal, when the
-    best dribbling direction keeps at least ``dribble_clearance``; within
-    ``carrying.clear_range`` (further out), a clearance always."""
+    best dribbling direction keeps at least ``dribble_clearance``. (A clearance needs no such
+    refinement: outside our own part of the field the first choice never clears.)"""
     carry = params.carrying
-    if carry.carry_range <= 0.0 or choice.action not in (OnBallAction.PASS, OnBallAction.CLEAR):
+    if carry.carry_range <= 0.0 or choice.action != OnBallAction.PASS:
         return None
     gx = ctx.model.half_length
     dist = goal_distance(gx, view.ball)
-    if dist > (carry.carry_range if choice.action == OnBallAction.PASS
-               else max(carry.carry_range, carry.clear_range)):
+    if dist > carry.carry_range:
         return None
-    if choice.action == OnBallAction.PASS:
-        point = choice.plan.receive_point
-        if goal_distance(gx, point) <= dist - carry.pass_gain:
-            return None
+    if goal_distance(gx, choice.plan.receive_point) <= dist - carry.pass_gain:
+        return None
     plan = dribble(ctx, view, player, params.dribbling)
-    if choice.action == OnBallAction.PASS and plan.clearance < params.dribble_clearance:
+    if plan.clearance < params.dribble_clearance:
         return None
     return BallDecision(OnBallAction.DRIBBLE, plan.kick, plan.dash, plan, choice.pressure)
 

@@ -190,6 +190,7 @@ def test_a_matchs_delivery_is_believed_as_the_same_messages_given_as_tuples():
         def __init__(self) -> None:
             self.inner = resolve_team("mmdr")[0]
             self.compared = self.heard = 0
+            self.stranger_ignored = False
 
         def reset(self, side_info, config, rng):
             self.inner.reset(side_info, config, rng)
@@ -211,13 +212,14 @@ def test_a_matchs_delivery_is_believed_as_the_same_messages_given_as_tuples():
                 assert np.array_equal(a, b)
             self.heard += sum(len(row) for row in views.heard_mates)
             self.compared += 1
+            self.stranger_ignored |= not np.array_equal(first.mate_age, third.mate_age)
             return self.inner.act(views)
 
     twin = Twin()
     Match(twin, "static", seed=5, config=MatchConfig(observation=ObservationConfig("partial"), max_cycles=200)).run()
     assert twin.compared == 200 and twin.heard > 1000
     assert (twin.books[0].proposal_cycle >= 0).any()  # proposals were heard and taken
-    assert not np.array_equal(twin.models[0].mate_age, twin.models[2].mate_age)  # the stranger's text was ignored
+    assert twin.stranger_ignored  # the stranger's text was ignored: some team-mate was believed older
 
 
 def test_a_players_own_kick_changes_the_ball_velocity_it_believes():

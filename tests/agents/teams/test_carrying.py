@@ -76,28 +76,22 @@ def pressed_view(distance: float):
 
 
 def test_a_pressed_player_in_the_attacking_zone_dribbles_rather_than_clears() -> None:
-    far = pressed_view(50.0)  # beyond clear_range (42 m): the clearance stands
-    decision = skills.decide_on_ball(CTX, far, P, DECISIONS)
-    assert decision.action == skills.OnBallAction.CLEAR
-    assert carry_kick(CTX, far, P, decision, DECISIONS) is None
-    mid = pressed_view(38.0)  # beyond carry_range, within clear_range: a dribble
-    decision = skills.decide_on_ball(CTX, mid, P, DECISIONS)
-    assert decision.action == skills.OnBallAction.CLEAR
-    assert carry_kick(CTX, mid, P, decision, DECISIONS) is not None
-    assert carry_kick(CTX, mid, P, decision, replace(DECISIONS, carrying=CarryParams(clear_range=0.0))) is None
-    view = pressed_view(29.0)
+    for distance in (50.0, 38.0, 29.0):  # midfield, beyond and within carry_range: no pass, never a clearance
+        view = pressed_view(distance)
+        decision = skills.decide_on_ball(CTX, view, P, DECISIONS)
+        assert decision.action == skills.OnBallAction.DRIBBLE
+        np.testing.assert_allclose(decision.kick, skills.dribble(CTX, view, P, DECISIONS.dribbling).kick)
+        assert carry_kick(CTX, view, P, decision, DECISIONS) is None  # a dribble needs no carrying
+
+
+def test_a_pressed_player_deep_in_our_half_passes_rather_than_dribbles() -> None:
+    view = pressed_view(2 * HL - 10.0)  # 10 m from our own goal line, team-mates behind
     decision = skills.decide_on_ball(CTX, view, P, DECISIONS)
-    assert decision.action == skills.OnBallAction.CLEAR  # pressed, no pass: the decision clears
-    carried = carry_kick(CTX, view, P, decision, DECISIONS)
-    assert carried is not None
-    np.testing.assert_allclose(carried.kick, skills.dribble(CTX, view, P, DECISIONS.dribbling).kick)
-    assert float(np.hypot(*carried.kick)) < 0.5 * float(np.hypot(*decision.kick))  # a touch, not a long ball
+    assert decision.action == skills.OnBallAction.PASS
 
 
 def test_carry_params_reject_bad_values() -> None:
     with pytest.raises(ValueError, match="carry_range"):
         CarryParams(carry_range=-1.0)
-    with pytest.raises(ValueError, match="clear_range"):
-        CarryParams(clear_range=-1.0)
     with pytest.raises(ValueError, match="pass_gain"):
         CarryParams(pass_gain=-1.0)
