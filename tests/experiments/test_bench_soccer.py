@@ -95,7 +95,7 @@ def test_a_game_log_gives_the_same_figures_as_the_match_it_records(tmp_path) -> 
     from soccer_sim.rcg import RcgRecorder, read_rcg
 
     path = tmp_path / "match.rcg"
-    live = match_figures("mmdr", "counter-442", 10, 3000, recorders=(RcgRecorder(path),))  # (a half with goal kicks and fouls)
+    live = match_figures("mmdr", "counter-442", 11, 3000, recorders=(RcgRecorder(path),))  # (a half with goal kicks and fouls)
     logged = rcg_figures(read_rcg(path))
     assert live["kicks"] > 50 and live["kick-ins"] > 0 and live["goalkeeper catches"] > 0 and live["goal kicks"] > 0
     assert live["passes (kick to kick)"] > 10
