@@ -23,7 +23,8 @@ From the log:
   (:class:`~experiments.benchmarks.soccer_plays.PlayFigures`: kick to kick, and a kick whose
   ball path crosses the goal line between the posts); ``possession`` the share of the cycles
   whose last player on the ball was the team's (:class:`~soccer_sim.analysis.possession.Possession`,
-  a kick-off forgetting him); ``distance_run`` as ``bench soccer`` (relocations left out);
+  a kick-off forgetting him; a ball that bounced off a body counts in play on only, as the
+  simulator's referee hears touches then); ``distance_run`` as ``bench soccer`` (relocations left out);
   ``fouls`` the play-mode changes to a foul by the team; ``yellow_cards`` / ``red_cards`` the
   players shown with the card flag. ``teammate_contacts`` and ``ignored_commands`` are not
   in a log: None (shown as ``-``).
@@ -54,6 +55,9 @@ FOULS = frozenset({"foul_charge", "foul_push", "foul_multiple_attack", "foul_bal
 NOT_IN_A_LOG = ("teammate_contacts", "ignored_commands")
 """Statistics of the simulator's report that a game log cannot give."""
 
+
+_NOBODY = np.zeros(0, dtype=np.intp)
+"""No rows (a show line's touches outside play on)."""
 
 def rcg_match_report(log: GameLog, team_names: tuple[str, str], seed: int) -> MatchReport:
     """The report of the match in ``log``; ``team_names``: (left, right) as the report names
@@ -87,7 +91,8 @@ def rcg_match_report(log: GameLog, team_names: tuple[str, str], seed: int) -> Ma
             won[int(TEAM[i])] += 1
         kicked, caught = np.flatnonzero(rise[:, KICK] > 0), np.flatnonzero(rise[:, CATCH] > 0)
         catches.update((KEYS[int(i)][0], step.cycle) for i in caught)
-        played = np.unique(np.concatenate([kicked, caught, step.won, step.touched]))
+        touched = step.touched if step.mode == "play_on" else _NOBODY  # the simulator's referee: in play on
+        played = np.unique(np.concatenate([kicked, caught, step.won, touched]))
         if played.size:
             last_on_ball = int(played[-1]) if played.size == 1 else int(played[0])
         possession.add(last_on_ball)
