@@ -59,6 +59,7 @@ NOT_IN_A_LOG = ("teammate_contacts", "ignored_commands")
 _NOBODY = np.zeros(0, dtype=np.intp)
 """No rows (a show line's touches outside play on)."""
 
+
 def rcg_match_report(log: GameLog, team_names: tuple[str, str], seed: int) -> MatchReport:
     """The report of the match in ``log``; ``team_names``: (left, right) as the report names
     them. A ValueError for a log without show lines or the server parameters it needs."""
