@@ -38,17 +38,17 @@ LEAVE_VARIANTS: tuple[str, ...] = tuple(f"{a}-leave" for a in ASSIGNER_VARIANTS 
 COUNTER_442 = TeamStyle(
     system="4-4-2", depth=-6.0, pressers=1,
     tackling=TackleParams(min_probability=0.85, foul_tackles=False),
-    decision=replace(ATTACKING_DECISIONS, pass_good=1.6, dribble_clearance=2.0, clear_line=-0.1,
+    decision=replace(ATTACKING_DECISIONS, pass_good=2.4, dribble_clearance=2.0, clear_line=-0.1,
                      passing=PassParams(weight_forward=1.6, weight_space=0.4, max_distance=45.0)),
 )
 PRESS_433 = TeamStyle(
     system="4-3-3", depth=6.0, pressers=2,
     tackling=TackleParams(min_probability=0.7, danger_probability=0.5),
-    decision=replace(ATTACKING_DECISIONS, pass_good=1.7, pressure_cycles=4),
+    decision=replace(ATTACKING_DECISIONS, pass_good=2.5, pressure_cycles=4),
 )
 POSSESSION = TeamStyle(
     system="4-3-3", depth=0.0, pressers=1,
-    decision=replace(ATTACKING_DECISIONS, pass_good=1.4, dribble_clearance=3.0,
+    decision=replace(ATTACKING_DECISIONS, pass_good=2.2, dribble_clearance=3.0,
                      passing=PassParams(weight_forward=0.6, weight_space=1.0, max_distance=25.0),
                      shot=replace(ATTACKING_DECISIONS.shot, max_range=22.0)),
 )
