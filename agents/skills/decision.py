@@ -168,7 +168,7 @@ class DecisionParams:
     pass_good: float = 2.6
     """A pass scoring at least this is preferred to dribbling: a pass clearly better than
     carrying the ball (well forward, into space, with a lead; a square pass into space scores
-    about 1.2-1.5, and three quarters of the passes free players made at the old 1.2 scored
+    about 1.2-1.5, and three quarters of the passes free players make at a bar of 1.2 score
     under 2.1)."""
     pressure_cycles: int = 3
     """Under pressure when an opponent can control the ball within this many cycles."""
